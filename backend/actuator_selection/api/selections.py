@@ -1,0 +1,61 @@
+"""The selection flowchart over the catalogue, stored and retrievable."""
+
+from __future__ import annotations
+
+import uuid
+from datetime import UTC, datetime
+
+from fastapi import APIRouter, HTTPException
+
+from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.errors import FieldErrors, field_error
+from actuator_selection.core.selection import select
+from actuator_selection.db.repositories import (
+    ActuatorFilter,
+    CatalogueRepository,
+    SelectionRepository,
+)
+from actuator_selection.schemas.selections import RANKING_RULE, SelectionOut, SelectionRequest
+
+router = APIRouter(tags=["selections"])
+
+
+@router.post(
+    "/selections",
+    status_code=201,
+    responses={422: {"description": "invalid load case, or a model the catalogue lacks"}},
+    description="Runs the flowchart for every catalogue actuator (or the `models` listed) and "
+    f"stores the result. Ranking: {RANKING_RULE}.",
+)
+def create_selection(body: SelectionRequest, session: SessionDep) -> SelectionOut:
+    """Size the load case against the catalogue and store the selection."""
+    records = CatalogueRepository(session).actuators(ActuatorFilter(models=body.models))
+    if body.models is not None:
+        known = {r.actuator.model for r in records}
+        unknown = [
+            field_error(["body", "models", i], f"unknown actuator model {m!r}", "unknown_model")
+            for i, m in enumerate(body.models)
+            if m not in known
+        ]
+        if unknown:
+            raise FieldErrors(unknown)
+    selection = select([r.actuator for r in records], body.to_core())
+    out = SelectionOut.build(
+        id=str(uuid.uuid4()), created_at=datetime.now(UTC), request=body, selection=selection
+    )
+    SelectionRepository(session).add(
+        id=out.id,
+        created_at=out.created_at,
+        request=body.model_dump(mode="json"),
+        response=out.model_dump(mode="json"),
+    )
+    return out
+
+
+@router.get("/selections/{selection_id}", responses={404: {"description": "unknown selection"}})
+def get_selection(selection_id: str, session: SessionDep) -> SelectionOut:
+    """A stored selection, exactly as it was answered."""
+    stored = SelectionRepository(session).response(selection_id)
+    if stored is None:
+        raise HTTPException(status_code=404, detail=f"no selection {selection_id!r}")
+    return SelectionOut.model_validate(stored)

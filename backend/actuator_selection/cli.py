@@ -1,0 +1,69 @@
+"""Command line: ``python -m actuator_selection {migrate,seed,serve}``."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from actuator_selection.config import SEED_DIR, get_settings
+
+
+def _migrate(args: argparse.Namespace) -> int:
+    from actuator_selection.db.migrate import upgrade
+
+    upgrade(url=args.database_url)
+    print("database migrated to the newest revision")
+    return 0
+
+
+def _seed(args: argparse.Namespace) -> int:
+    from actuator_selection.db.csvio import CatalogueFileError
+    from actuator_selection.db.engine import make_engine, make_session_factory
+    from actuator_selection.db.seed import load_seed
+
+    engine = make_engine(args.database_url)
+    try:
+        with make_session_factory(engine).begin() as session:
+            report = load_seed(session, Path(args.directory))
+    except CatalogueFileError as exc:
+        print(f"seed: nothing loaded, {len(exc.problems)} problem(s):", file=sys.stderr)
+        for problem in exc.problems:
+            print(f"  {problem}", file=sys.stderr)
+        return 1
+    finally:
+        engine.dispose()
+    print(f"seed: {report}")
+    return 0
+
+
+def _serve(args: argparse.Namespace) -> int:
+    import uvicorn
+
+    from actuator_selection.main import create_app
+
+    uvicorn.run(create_app(), host=args.host, port=args.port, log_level="info")
+    return 0
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Parse ``argv`` and run the command; returns the exit status."""
+    settings = get_settings()
+    parser = argparse.ArgumentParser(prog="python -m actuator_selection")
+    parser.add_argument("--database-url", default=settings.database_url,
+                        help="SQLAlchemy URL (default: $DATABASE_URL or the embedded SQLite file)")
+    commands = parser.add_subparsers(dest="command", required=True)
+    commands.add_parser("migrate", help="create or upgrade the database schema").set_defaults(
+        run=_migrate
+    )
+    seed = commands.add_parser("seed", help="load the starter catalogue (idempotent)")
+    seed.add_argument("--directory", default=str(SEED_DIR), help="folder of the CSV files")
+    seed.set_defaults(run=_seed)
+    serve = commands.add_parser("serve", help="serve the API and the web page")
+    serve.add_argument("--host", default=settings.host)
+    serve.add_argument("--port", type=int, default=settings.port)
+    serve.set_defaults(run=_serve)
+    args = parser.parse_args(argv)
+    status: int = args.run(args)
+    return status

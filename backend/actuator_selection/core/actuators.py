@@ -1,0 +1,59 @@
+"""What the core knows of one catalogue actuator.
+
+Every field that a public source does not give is ``None``; the calculations
+that need it say "no data" instead of guessing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from actuator_selection.core.zones import ContinuousDutyZone
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Actuator:
+    """A servo actuator as the catalogue publishes it, values at the output shaft.
+
+    Parameters
+    ----------
+    model
+        Catalogue model, e.g. ``"CHA-25A-50"``.
+    family
+        Product family, e.g. ``"CHA"``.
+    gear_ratio
+        Harmonic Drive gear ratio i [-].
+    max_torque_nm
+        Repeated peak torque T_max [Nm].
+    max_speed_rpm
+        Maximum output speed n_max [rpm].
+    inertia_kgm2
+        Moment of inertia J_A at the output [kgm²].
+    stall_torque_nm
+        Continuous stall torque T_0 [Nm].
+    continuous_torque_nm
+        Allowable continuous torque where the catalogue gives that instead of T_0 [Nm].
+    zone
+        Continuous-duty zone of the speed/torque diagram, where published.
+    """
+
+    model: str
+    family: str
+    gear_ratio: float
+    max_torque_nm: float | None = None
+    max_speed_rpm: float | None = None
+    inertia_kgm2: float | None = None
+    stall_torque_nm: float | None = None
+    continuous_torque_nm: float | None = None
+    max_current_a: float | None = None
+    stall_current_a: float | None = None
+    torque_constant_nm_per_a: float | None = None
+    motor_voltage_constant_v_per_krpm: float | None = None
+    output_voltage_constant_v_per_rpm: float | None = None
+    resistance_line_ohm: float | None = None
+    resistance_phase_ohm: float | None = None
+    no_load_starting_current_a: float | None = None
+    no_load_current_constant_30c_a_per_rpm: float | None = None
+    no_load_current_constant_80c_a_per_rpm: float | None = None
+    thermal_time_constant_s: float | None = None
+    zone: ContinuousDutyZone | None = None

@@ -1,0 +1,185 @@
+"""All SQL of the service. Repositories flush at most; the request's session commits.
+
+They hand out core dataclasses, never ORM rows, so the engineering does not learn
+where its numbers came from.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from datetime import datetime
+from typing import Any
+
+from sqlalchemy import select
+from sqlalchemy.orm import Session, selectinload
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, SelectionRow
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class ActuatorRecord:
+    """A catalogue actuator with what the catalogue says besides the engineering values."""
+
+    actuator: Actuator
+    continuous_current_a: float | None
+    inductance_line_mh: float | None
+    inductance_phase_mh: float | None
+    motor_torque_constant_nm_per_a: float | None
+    mass_kg: float | None
+    max_dc_bus_voltage_v: float | None
+    supply_voltage: str | None
+    feedback: str | None
+    notes: str | None
+    source: str
+    zone_source: str | None
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class FamilyRecord:
+    """A product family with its temperature sensor and limits (Tables 518.1, 519.2)."""
+
+    name: str
+    description: str | None
+    temperature_sensors: str | None
+    warning_temperature_c: float | None
+    shutdown_temperature_c: float | None
+    temperature_tolerance_percent: float | None
+    warning_resistance_ohm: float | None
+    shutdown_resistance_ohm: float | None
+    resistance_tolerance_percent: float | None
+    source: str
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class ActuatorFilter:
+    """Catalogue query: every given criterion must hold."""
+
+    family: str | None = None
+    min_max_torque_nm: float | None = None
+    max_inertia_kgm2: float | None = None
+    min_max_speed_rpm: float | None = None
+    models: Sequence[str] | None = None
+
+
+def _to_record(row: ActuatorRow) -> ActuatorRecord:
+    zone = (
+        ContinuousDutyZone(
+            points=tuple(
+                ZonePoint(speed_rpm=p.speed_rpm, torque_nm=p.torque_nm) for p in row.zone_points
+            )
+        )
+        if row.zone_points
+        else None
+    )
+    actuator = Actuator(
+        model=row.model,
+        family=row.family.name,
+        gear_ratio=row.gear_ratio,
+        max_torque_nm=row.max_torque_nm,
+        max_speed_rpm=row.max_speed_rpm,
+        inertia_kgm2=row.inertia_kgm2,
+        stall_torque_nm=row.stall_torque_nm,
+        continuous_torque_nm=row.continuous_torque_nm,
+        max_current_a=row.max_current_a,
+        stall_current_a=row.stall_current_a,
+        torque_constant_nm_per_a=row.torque_constant_nm_per_a,
+        motor_voltage_constant_v_per_krpm=row.motor_voltage_constant_v_per_krpm,
+        output_voltage_constant_v_per_rpm=row.output_voltage_constant_v_per_rpm,
+        resistance_line_ohm=row.resistance_line_ohm,
+        resistance_phase_ohm=row.resistance_phase_ohm,
+        no_load_starting_current_a=row.no_load_starting_current_a,
+        no_load_current_constant_30c_a_per_rpm=row.no_load_current_constant_30c_a_per_rpm,
+        no_load_current_constant_80c_a_per_rpm=row.no_load_current_constant_80c_a_per_rpm,
+        thermal_time_constant_s=row.thermal_time_constant_s,
+        zone=zone,
+    )
+    return ActuatorRecord(
+        actuator=actuator,
+        continuous_current_a=row.continuous_current_a,
+        inductance_line_mh=row.inductance_line_mh,
+        inductance_phase_mh=row.inductance_phase_mh,
+        motor_torque_constant_nm_per_a=row.motor_torque_constant_nm_per_a,
+        mass_kg=row.mass_kg,
+        max_dc_bus_voltage_v=row.max_dc_bus_voltage_v,
+        supply_voltage=row.supply_voltage,
+        feedback=row.feedback,
+        notes=row.notes,
+        source=row.source,
+        zone_source="; ".join(sorted({p.source for p in row.zone_points})) or None,
+    )
+
+
+class CatalogueRepository:
+    """Reads of the actuator catalogue."""
+
+    def __init__(self, session: Session) -> None:
+        self._session = session
+
+    def actuators(self, query: ActuatorFilter | None = None) -> list[ActuatorRecord]:
+        """Actuators matching ``query``, ordered by model."""
+        query = query or ActuatorFilter()
+        stmt = (
+            select(ActuatorRow)
+            .join(ActuatorRow.family)
+            .options(selectinload(ActuatorRow.zone_points), selectinload(ActuatorRow.family))
+            .order_by(ActuatorRow.model)
+        )
+        if query.family is not None:
+            stmt = stmt.where(ActuatorFamilyRow.name == query.family)
+        if query.min_max_torque_nm is not None:
+            stmt = stmt.where(ActuatorRow.max_torque_nm >= query.min_max_torque_nm)
+        if query.max_inertia_kgm2 is not None:
+            stmt = stmt.where(ActuatorRow.inertia_kgm2 <= query.max_inertia_kgm2)
+        if query.min_max_speed_rpm is not None:
+            stmt = stmt.where(ActuatorRow.max_speed_rpm >= query.min_max_speed_rpm)
+        if query.models is not None:
+            stmt = stmt.where(ActuatorRow.model.in_(list(query.models)))
+        return [_to_record(row) for row in self._session.scalars(stmt)]
+
+    def actuator(self, model: str) -> ActuatorRecord | None:
+        """One actuator by its model, or None."""
+        found = self.actuators(ActuatorFilter(models=[model]))
+        return found[0] if found else None
+
+    def families(self) -> list[FamilyRecord]:
+        """All product families, ordered by name."""
+        rows = self._session.scalars(select(ActuatorFamilyRow).order_by(ActuatorFamilyRow.name))
+        return [
+            FamilyRecord(
+                name=r.name,
+                description=r.description,
+                temperature_sensors=r.temperature_sensors,
+                warning_temperature_c=r.warning_temperature_c,
+                shutdown_temperature_c=r.shutdown_temperature_c,
+                temperature_tolerance_percent=r.temperature_tolerance_percent,
+                warning_resistance_ohm=r.warning_resistance_ohm,
+                shutdown_resistance_ohm=r.shutdown_resistance_ohm,
+                resistance_tolerance_percent=r.resistance_tolerance_percent,
+                source=r.source,
+            )
+            for r in rows
+        ]
+
+
+class SelectionRepository:
+    """Stored selections: written once, read back unchanged."""
+
+    def __init__(self, session: Session) -> None:
+        self._session = session
+
+    def add(
+        self, *, id: str, created_at: datetime, request: dict[str, Any], response: dict[str, Any]
+    ) -> None:
+        """Store one selection."""
+        self._session.add(
+            SelectionRow(id=id, created_at=created_at, request=request, response=response)
+        )
+        self._session.flush()
+
+    def response(self, id: str) -> dict[str, Any] | None:
+        """The stored response of a selection, or None."""
+        row = self._session.get(SelectionRow, id)
+        return row.response if row else None

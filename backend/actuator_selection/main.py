@@ -1,0 +1,40 @@
+"""The ASGI application: API routers, error handlers, the static web page."""
+
+from __future__ import annotations
+
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from fastapi import FastAPI
+
+from actuator_selection import __version__
+from actuator_selection.api import actuators, errors, health, selections
+from actuator_selection.config import Settings, get_settings
+from actuator_selection.db.engine import make_engine, make_session_factory
+
+API_PREFIX = "/api/v1"
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    """Build the application for ``settings`` (default: from the environment)."""
+    settings = settings or get_settings()
+    engine = make_engine(settings.database_url)
+
+    @asynccontextmanager
+    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+        yield
+        engine.dispose()
+
+    app = FastAPI(
+        title="Actuator selection service",
+        version=__version__,
+        summary="Sizes Harmonic Drive servo actuators for a motion cycle "
+        "(Engineering Data for Harmonic Drive Servo Actuators, Eq. 514.1–522.3).",
+        lifespan=lifespan,
+    )
+    app.state.engine = engine
+    app.state.session_factory = make_session_factory(engine)
+    errors.install(app)
+    for module in (health, actuators, selections):
+        app.include_router(module.router, prefix=API_PREFIX)
+    return app

@@ -1,0 +1,1 @@
+"""The API contract: pydantic request and response models (never the ORM tables)."""

@@ -1,0 +1,123 @@
+"""Catalogue resources: actuators and their families."""
+
+from __future__ import annotations
+
+from pydantic import Field
+
+from actuator_selection.db.repositories import ActuatorRecord, FamilyRecord
+from actuator_selection.schemas.common import ResponseModel
+
+
+class ZonePointOut(ResponseModel):
+    """A corner of the continuous-duty zone's upper edge."""
+
+    speed_rpm: float
+    torque_nm: float
+
+
+class ActuatorOut(ResponseModel):
+    """A catalogue actuator; ``null`` where no public source gives the value."""
+
+    model: str
+    family: str
+    gear_ratio: float
+    max_torque_nm: float | None = Field(description="T_max, repeated peak torque [Nm]")
+    max_speed_rpm: float | None = Field(description="n_max, maximum output speed [rpm]")
+    inertia_kgm2: float | None = Field(description="J_A, moment of inertia at the output [kgm²]")
+    stall_torque_nm: float | None = Field(description="T_0, continuous stall torque [Nm]")
+    continuous_torque_nm: float | None = Field(description="allowable continuous torque [Nm]")
+    max_current_a: float | None = Field(description="I_max [A_rms]")
+    stall_current_a: float | None = Field(description="I_0, continuous stall current [A_rms]")
+    continuous_current_a: float | None = Field(description="allowable continuous current [A]")
+    torque_constant_nm_per_a: float | None = Field(description="k_T at the output [Nm/A]")
+    motor_torque_constant_nm_per_a: float | None = Field(description="k_TM of the motor [Nm/A]")
+    motor_voltage_constant_v_per_krpm: float | None = Field(
+        description="K_E of the motor, line-to-line [V per 1000 rpm motor speed]"
+    )
+    output_voltage_constant_v_per_rpm: float | None = Field(
+        description="k_E referred to the output [V per output rpm]"
+    )
+    resistance_line_ohm: float | None = Field(description="winding resistance, line-to-line [Ω]")
+    resistance_phase_ohm: float | None = Field(description="winding resistance per phase [Ω]")
+    inductance_line_mh: float | None
+    inductance_phase_mh: float | None
+    no_load_starting_current_a: float | None = Field(description="I_NLS (Eq. 522.2) [A]")
+    no_load_current_constant_30c_a_per_rpm: float | None = Field(
+        description="K_INL at 30 °C (Eq. 522.2) [A/rpm]"
+    )
+    no_load_current_constant_80c_a_per_rpm: float | None = Field(
+        description="K_INL at 80 °C [A/rpm]"
+    )
+    thermal_time_constant_s: float | None
+    mass_kg: float | None
+    max_dc_bus_voltage_v: float | None
+    supply_voltage: str | None
+    feedback: str | None
+    continuous_duty_zone: list[ZonePointOut] | None = Field(
+        description="upper edge of the continuous-duty zone, where published"
+    )
+    continuous_duty_zone_source: str | None
+    notes: str | None
+    source: str
+
+    @classmethod
+    def from_record(cls, record: ActuatorRecord) -> ActuatorOut:
+        """The response body of one catalogue record."""
+        a = record.actuator
+        return cls(
+            model=a.model,
+            family=a.family,
+            gear_ratio=a.gear_ratio,
+            max_torque_nm=a.max_torque_nm,
+            max_speed_rpm=a.max_speed_rpm,
+            inertia_kgm2=a.inertia_kgm2,
+            stall_torque_nm=a.stall_torque_nm,
+            continuous_torque_nm=a.continuous_torque_nm,
+            max_current_a=a.max_current_a,
+            stall_current_a=a.stall_current_a,
+            continuous_current_a=record.continuous_current_a,
+            torque_constant_nm_per_a=a.torque_constant_nm_per_a,
+            motor_torque_constant_nm_per_a=record.motor_torque_constant_nm_per_a,
+            motor_voltage_constant_v_per_krpm=a.motor_voltage_constant_v_per_krpm,
+            output_voltage_constant_v_per_rpm=a.output_voltage_constant_v_per_rpm,
+            resistance_line_ohm=a.resistance_line_ohm,
+            resistance_phase_ohm=a.resistance_phase_ohm,
+            inductance_line_mh=record.inductance_line_mh,
+            inductance_phase_mh=record.inductance_phase_mh,
+            no_load_starting_current_a=a.no_load_starting_current_a,
+            no_load_current_constant_30c_a_per_rpm=a.no_load_current_constant_30c_a_per_rpm,
+            no_load_current_constant_80c_a_per_rpm=a.no_load_current_constant_80c_a_per_rpm,
+            thermal_time_constant_s=a.thermal_time_constant_s,
+            mass_kg=record.mass_kg,
+            max_dc_bus_voltage_v=record.max_dc_bus_voltage_v,
+            supply_voltage=record.supply_voltage,
+            feedback=record.feedback,
+            continuous_duty_zone=(
+                [ZonePointOut(speed_rpm=p.speed_rpm, torque_nm=p.torque_nm) for p in a.zone.points]
+                if a.zone
+                else None
+            ),
+            continuous_duty_zone_source=record.zone_source,
+            notes=record.notes,
+            source=record.source,
+        )
+
+
+class FamilyOut(ResponseModel):
+    """A product family with its temperature sensor (Table 518.1) and limits (Table 519.2)."""
+
+    name: str
+    description: str | None
+    temperature_sensors: str | None
+    warning_temperature_c: float | None
+    shutdown_temperature_c: float | None
+    temperature_tolerance_percent: float | None
+    warning_resistance_ohm: float | None
+    shutdown_resistance_ohm: float | None
+    resistance_tolerance_percent: float | None
+    source: str
+
+    @classmethod
+    def from_record(cls, record: FamilyRecord) -> FamilyOut:
+        """The response body of one family."""
+        return cls.model_validate(record, from_attributes=True)

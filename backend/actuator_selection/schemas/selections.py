@@ -1,0 +1,275 @@
+"""The selection contract: what ERP systems and the web page send and receive.
+
+Field names are part of the public API (issue "Selection engine end to end"); keep them.
+"""
+
+from __future__ import annotations
+
+from datetime import datetime
+from typing import Annotated, Any, Literal
+
+from pydantic import Discriminator, Field, Tag
+
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
+from actuator_selection.core.selection import Application, Candidate, Check, Selection
+from actuator_selection.schemas.common import (
+    MAX_FRICTION_COEFFICIENT,
+    MAX_INERTIA_KGM2,
+    MAX_LENGTH_M,
+    MAX_MASS_KG,
+    MAX_SPEED_RPM,
+    MAX_TIME_S,
+    MAX_TORQUE_NM,
+    MIN_RAMP_S,
+    ResponseModel,
+    StrictModel,
+)
+
+SpeedRpm = Annotated[
+    float, Field(gt=0, le=MAX_SPEED_RPM, description="n_2, load speed at the output [rpm]")
+]
+Mass = Annotated[float, Field(ge=0, le=MAX_MASS_KG, description="moved mass m [kg]")]
+Friction = Annotated[
+    float, Field(ge=0, le=MAX_FRICTION_COEFFICIENT, description="coefficient of friction μ [-]")
+]
+Inertia = Annotated[float, Field(ge=0, le=MAX_INERTIA_KGM2)]
+
+
+class DirectLoad(StrictModel):
+    """T_L and J_L given directly, at the actuator output."""
+
+    type: Literal["direct"] = "direct"
+    speed_rpm: SpeedRpm
+    torque_nm: float = Field(
+        ge=0, le=MAX_TORQUE_NM, description="T_L, load torque opposing the motion [Nm]"
+    )
+    inertia_kgm2: Inertia = Field(description="J_L, load moment of inertia [kgm²]")
+
+    def to_core(self) -> Load:
+        """The load as the core sees it."""
+        return Load(torque_nm=self.torque_nm, inertia_kgm2=self.inertia_kgm2)
+
+
+class BallScrewLoad(StrictModel):
+    """Linear horizontal motion by a ball screw (Fig. 515.2, Eq. 515.4)."""
+
+    type: Literal["ball_screw"]
+    speed_rpm: SpeedRpm
+    mass_kg: Mass
+    lead_m: float = Field(gt=0, le=MAX_LENGTH_M, description="screw lead P [m/rev]")
+    friction_coefficient: Friction
+    efficiency: float = Field(gt=0, le=1, description="screw efficiency η [-], 0 < η ≤ 1")
+    screw_inertia_kgm2: Inertia = Field(default=0.0, description="J_S, screw inertia [kgm²]")
+
+    def to_core(self) -> Load:
+        """T_L and J_L by Eq. 515.4."""
+        return ball_screw_load(
+            BallScrew(
+                mass_kg=self.mass_kg,
+                lead_m=self.lead_m,
+                friction_coefficient=self.friction_coefficient,
+                efficiency=self.efficiency,
+                screw_inertia_kgm2=self.screw_inertia_kgm2,
+            )
+        )
+
+
+class RotaryTableLoad(StrictModel):
+    """A rotary table, a uniform disc (Fig. 515.3/515.5, Eq. 515.6)."""
+
+    type: Literal["rotary_table"]
+    speed_rpm: SpeedRpm
+    mass_kg: Mass
+    diameter_m: float = Field(gt=0, le=MAX_LENGTH_M, description="table diameter D [m]")
+    friction_coefficient: Friction
+    friction_radius_m: float = Field(
+        ge=0, le=MAX_LENGTH_M, description="radius r at which friction acts [m]"
+    )
+
+    def to_core(self) -> Load:
+        """T_L and J_L by Eq. 515.6."""
+        return rotary_table_load(
+            RotaryTable(
+                mass_kg=self.mass_kg,
+                diameter_m=self.diameter_m,
+                friction_coefficient=self.friction_coefficient,
+                friction_radius_m=self.friction_radius_m,
+            )
+        )
+
+
+def _load_kind(value: Any) -> str:
+    kind = value.get("type", "direct") if isinstance(value, dict) else getattr(value, "type", None)
+    return kind if isinstance(kind, str) else "direct"
+
+
+LoadIn = Annotated[
+    Annotated[DirectLoad, Tag("direct")]
+    | Annotated[BallScrewLoad, Tag("ball_screw")]
+    | Annotated[RotaryTableLoad, Tag("rotary_table")],
+    Discriminator(
+        _load_kind,
+        custom_error_type="load_type",
+        custom_error_message="type must be 'direct', 'ball_screw' or 'rotary_table'",
+    ),
+]
+
+
+class CycleIn(StrictModel):
+    """The speed pattern of Fig. 516.2."""
+
+    accel_s: float = Field(
+        ge=MIN_RAMP_S, le=MAX_TIME_S, description="t_1, acceleration time [s], > 0"
+    )
+    constant_s: float = Field(ge=0, le=MAX_TIME_S, description="t_2, time at speed n_2 [s]")
+    decel_s: float = Field(
+        ge=MIN_RAMP_S, le=MAX_TIME_S, description="t_3, deceleration time [s], > 0"
+    )
+    pause_s: float = Field(ge=0, le=MAX_TIME_S, description="t_p, standstill [s]")
+
+
+ModelName = Annotated[str, Field(min_length=1, max_length=60)]
+
+
+class SelectionRequest(StrictModel):
+    """A load case to size; ``models`` restricts the catalogue to those listed."""
+
+    load: LoadIn
+    cycle: CycleIn
+    high_dynamics: bool = Field(
+        default=True, description="J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise"
+    )
+    models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
+
+    def to_core(self) -> Application:
+        """The application as the core sees it."""
+        return Application(
+            pattern=SpeedPattern(
+                speed_rpm=self.load.speed_rpm,
+                accel_s=self.cycle.accel_s,
+                constant_s=self.cycle.constant_s,
+                decel_s=self.cycle.decel_s,
+                pause_s=self.cycle.pause_s,
+            ),
+            load=self.load.to_core(),
+            high_dynamics=self.high_dynamics,
+        )
+
+
+class ResolvedLoad(ResponseModel):
+    """The load at the output after a mechanism's conversion (Eq. 515.4/515.6)."""
+
+    speed_rpm: float
+    torque_nm: float
+    inertia_kgm2: float
+
+
+class CheckOut(ResponseModel):
+    """One step of the flowchart; ``value ≤ limit`` passes."""
+
+    name: str
+    status: Literal["pass", "fail", "warn", "no_data"]
+    value: float | None
+    limit: float | None
+    unit: str
+    reference: str = Field(description="the chapter's equation, table or figure")
+    message: str
+    approximate: bool = Field(description="true when a simplified limit stood in for the zone")
+    margin_percent: float | None = Field(description="(limit − value)/limit · 100")
+
+    @classmethod
+    def from_core(cls, check: Check) -> CheckOut:
+        """The response body of one check."""
+        return cls(
+            name=check.name,
+            status=check.status.value,
+            value=check.value,
+            limit=check.limit,
+            unit=check.unit,
+            reference=check.reference,
+            message=check.message,
+            approximate=check.approximate,
+            margin_percent=check.margin_percent,
+        )
+
+
+class CandidateOut(ResponseModel):
+    """The flowchart's result for one actuator."""
+
+    model: str
+    family: str
+    gear_ratio: float
+    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
+    accel_torque_nm: float | None = Field(description="T_1 (Eq. 514.1) [Nm]")
+    constant_torque_nm: float | None = Field(description="T_2 = T_L [Nm]")
+    decel_torque_nm: float | None = Field(description="T_3, usually negative [Nm]")
+    rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
+    reasons: list[str] = Field(description="messages of the checks that did not pass")
+    checks: list[CheckOut]
+
+    @classmethod
+    def from_core(cls, candidate: Candidate) -> CandidateOut:
+        """The response body of one candidate."""
+        t = candidate.torques
+        a = candidate.actuator
+        return cls(
+            model=a.model,
+            family=a.family,
+            gear_ratio=a.gear_ratio,
+            verdict=candidate.verdict.value,
+            accel_torque_nm=t.accel_torque_nm if t else None,
+            constant_torque_nm=t.constant_torque_nm if t else None,
+            decel_torque_nm=t.decel_torque_nm if t else None,
+            rms_torque_nm=t.rms_torque_nm if t else None,
+            reasons=list(candidate.reasons),
+            checks=[CheckOut.from_core(c) for c in candidate.checks],
+        )
+
+
+RANKING_RULE = (
+    "suitable first, then unconfirmed, then unsuitable; within each, the smallest actuator "
+    "first (lowest T_max, then lowest J_A, then model name)"
+)
+
+
+class SelectionOut(ResponseModel):
+    """A stored selection: the load case, cycle figures and the ranked candidates."""
+
+    id: str
+    created_at: datetime
+    load: ResolvedLoad
+    mechanism: dict[str, Any] | None = Field(description="the mechanism as sent, if any")
+    cycle: CycleIn
+    high_dynamics: bool
+    cycle_time_s: float = Field(description="t_0 = t_1 + t_2 + t_3 + t_p [s]")
+    mean_speed_rpm: float = Field(description="n_av (Eq. 514.3) [rpm]")
+    duty_cycle_percent: float = Field(description="ED (Eq. 514.4) [%]")
+    ranking: str = Field(default=RANKING_RULE, description="how candidates are ordered")
+    candidates: list[CandidateOut]
+
+    @classmethod
+    def build(
+        cls, *, id: str, created_at: datetime, request: SelectionRequest, selection: Selection
+    ) -> SelectionOut:
+        """The response body of a selection just run."""
+        app_load = request.load.to_core()
+        mechanism = (
+            None if isinstance(request.load, DirectLoad) else request.load.model_dump(mode="json")
+        )
+        return cls(
+            id=id,
+            created_at=created_at,
+            load=ResolvedLoad(
+                speed_rpm=request.load.speed_rpm,
+                torque_nm=app_load.torque_nm,
+                inertia_kgm2=app_load.inertia_kgm2,
+            ),
+            mechanism=mechanism,
+            cycle=request.cycle,
+            high_dynamics=request.high_dynamics,
+            cycle_time_s=selection.cycle_time_s,
+            mean_speed_rpm=selection.mean_speed_rpm,
+            duty_cycle_percent=selection.duty_cycle_percent,
+            candidates=[CandidateOut.from_core(c) for c in selection.candidates],
+        )
