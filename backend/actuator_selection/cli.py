@@ -51,8 +51,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Parse ``argv`` and run the command; returns the exit status."""
     settings = get_settings()
     parser = argparse.ArgumentParser(prog="python -m actuator_selection")
-    parser.add_argument("--database-url", default=settings.database_url,
-                        help="SQLAlchemy URL (default: $DATABASE_URL or the embedded SQLite file)")
+    parser.add_argument(
+        "--database-url",
+        default=settings.database_url,
+        help="SQLAlchemy URL (default: $DATABASE_URL or the embedded SQLite file)",
+    )
     commands = parser.add_subparsers(dest="command", required=True)
     commands.add_parser("migrate", help="create or upgrade the database schema").set_defaults(
         run=_migrate

@@ -6,10 +6,12 @@ from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
+from fastapi.middleware.gzip import GZipMiddleware
+from fastapi.staticfiles import StaticFiles
 
 from actuator_selection import __version__
-from actuator_selection.api import actuators, errors, health, selections
-from actuator_selection.config import Settings, get_settings
+from actuator_selection.api import actuators, errors, health, selections, static
+from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 
 API_PREFIX = "/api/v1"
@@ -37,4 +39,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     errors.install(app)
     for module in (health, actuators, selections):
         app.include_router(module.router, prefix=API_PREFIX)
+    app.include_router(static.router)
+    app.add_middleware(GZipMiddleware, minimum_size=1024)
+    if FRONTEND_DIR.is_dir():
+        app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
     return app

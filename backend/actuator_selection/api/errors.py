@@ -24,7 +24,7 @@ def field_error(loc: list[str | int], msg: str, type_: str) -> dict[str, Any]:
     return {"loc": loc, "msg": msg, "type": type_}
 
 
-class FieldErrors(Exception):
+class RequestFieldError(Exception):
     """Request errors found by an endpoint (e.g. models the catalogue lacks): 422."""
 
     def __init__(self, errors: list[dict[str, Any]]) -> None:
@@ -32,8 +32,8 @@ class FieldErrors(Exception):
         self.errors = errors
 
 
-def _field_errors(_: Request, exc: Exception) -> JSONResponse:
-    assert isinstance(exc, FieldErrors)
+def _request_field_error(_: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, RequestFieldError)
     return JSONResponse(status_code=422, content={"detail": exc.errors})
 
 
@@ -41,9 +41,7 @@ def _validation(_: Request, exc: Exception) -> JSONResponse:
     # Rebuilt rather than passed through: pydantic's entries echo the input, and an
     # input of NaN or ±Infinity cannot be written as JSON.
     assert isinstance(exc, RequestValidationError)
-    detail = [
-        field_error([*e["loc"]], str(e["msg"]), str(e["type"])) for e in exc.errors()
-    ]
+    detail = [field_error([*e["loc"]], str(e["msg"]), str(e["type"])) for e in exc.errors()]
     return JSONResponse(status_code=422, content={"detail": detail})
 
 
@@ -66,5 +64,5 @@ def install(app: FastAPI) -> None:
     """Register the handlers on ``app``."""
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(DomainError, _domain)
-    app.add_exception_handler(FieldErrors, _field_errors)
+    app.add_exception_handler(RequestFieldError, _request_field_error)
     app.add_exception_handler(Exception, _unexpected)

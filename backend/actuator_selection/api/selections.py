@@ -8,7 +8,7 @@ from datetime import UTC, datetime
 from fastapi import APIRouter, HTTPException
 
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import FieldErrors, field_error
+from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import (
     ActuatorFilter,
@@ -38,7 +38,7 @@ def create_selection(body: SelectionRequest, session: SessionDep) -> SelectionOu
             if m not in known
         ]
         if unknown:
-            raise FieldErrors(unknown)
+            raise RequestFieldError(unknown)
     selection = select([r.actuator for r in records], body.to_core())
     out = SelectionOut.build(
         id=str(uuid.uuid4()), created_at=datetime.now(UTC), request=body, selection=selection

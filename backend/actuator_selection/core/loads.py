@@ -50,13 +50,23 @@ class BallScrew:
     def __post_init__(self) -> None:
         _check("mass_kg", self.mass_kg, positive=False, rule="a mass")
         _check("lead_m", self.lead_m, positive=True, rule="the screw advances per revolution")
-        _check("friction_coefficient", self.friction_coefficient, positive=False,
-               rule="friction opposes motion")
+        _check(
+            "friction_coefficient",
+            self.friction_coefficient,
+            positive=False,
+            rule="friction opposes motion",
+        )
         _check("efficiency", self.efficiency, positive=True, rule="η divides Eq. 515.4")
         if self.efficiency > 1:
-            raise InvalidInputError("efficiency", "must be ≤ 1: no screw returns more than it takes")
-        _check("screw_inertia_kgm2", self.screw_inertia_kgm2, positive=False,
-               rule="a moment of inertia")
+            raise InvalidInputError(
+                "efficiency", "must be ≤ 1: no screw returns more than it takes"
+            )
+        _check(
+            "screw_inertia_kgm2",
+            self.screw_inertia_kgm2,
+            positive=False,
+            rule="a moment of inertia",
+        )
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -83,8 +93,12 @@ class RotaryTable:
     def __post_init__(self) -> None:
         _check("mass_kg", self.mass_kg, positive=False, rule="a mass")
         _check("diameter_m", self.diameter_m, positive=True, rule="a disc has a size")
-        _check("friction_coefficient", self.friction_coefficient, positive=False,
-               rule="friction opposes motion")
+        _check(
+            "friction_coefficient",
+            self.friction_coefficient,
+            positive=False,
+            rule="friction opposes motion",
+        )
         _check("friction_radius_m", self.friction_radius_m, positive=False, rule="a radius")
 
 
@@ -102,7 +116,10 @@ def ball_screw_load(screw: BallScrew, *, g: float = STANDARD_GRAVITY_M_PER_S2) -
     """
     radius_per_rad = screw.lead_m / (2 * math.pi)
     return Load(
-        torque_nm=screw.friction_coefficient * screw.mass_kg * g * radius_per_rad
+        torque_nm=screw.friction_coefficient
+        * screw.mass_kg
+        * g
+        * radius_per_rad
         / screw.efficiency,
         inertia_kgm2=screw.screw_inertia_kgm2 + screw.mass_kg * radius_per_rad**2,
     )

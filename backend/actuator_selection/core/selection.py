@@ -222,9 +222,7 @@ def check_decel_torque(actuator: Actuator, torques: CycleTorques | None) -> Chec
     )
 
 
-def check_continuous_duty(
-    actuator: Actuator, torques: CycleTorques | None, n_av: float
-) -> Check:
+def check_continuous_duty(actuator: Actuator, torques: CycleTorques | None, n_av: float) -> Check:
     """(n_av, T_rms) inside the continuous-duty zone (Fig. 517.1; Eq. 514.2, 514.3).
 
     With a published zone the torque limit is the zone's edge at n_av. Without
@@ -297,7 +295,9 @@ def _verdict(checks: Iterable[Check]) -> Verdict:
 def evaluate(actuator: Actuator, app: Application) -> Candidate:
     """Run the flowchart's checks for one actuator."""
     torques = (
-        cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=actuator.inertia_kgm2)
+        cycle_torques(
+            pattern=app.pattern, load=app.load, actuator_inertia_kgm2=actuator.inertia_kgm2
+        )
         if actuator.inertia_kgm2 is not None
         else None
     )

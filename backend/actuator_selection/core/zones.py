@@ -8,6 +8,7 @@ linearly interpolated between them.
 
 from __future__ import annotations
 
+import itertools
 import math
 from bisect import bisect_right
 from dataclasses import dataclass
@@ -51,7 +52,7 @@ class ContinuousDutyZone:
             if p.torque_nm < 0:
                 raise InvalidInputError("zone", "torques must be ≥ 0")
         speeds = [p.speed_rpm for p in self.points]
-        if any(b <= a for a, b in zip(speeds, speeds[1:], strict=False)):
+        if any(b <= a for a, b in itertools.pairwise(speeds)):
             raise InvalidInputError("zone", "speeds must rise strictly from point to point")
 
     @property

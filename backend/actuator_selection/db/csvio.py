@@ -91,24 +91,33 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
     text = raw.strip()
     if not text:
         if column.required:
-            return None, Problem(file=spec.file, line=line, column=column.name,
-                                 message="is required but empty")
+            return None, Problem(
+                file=spec.file, line=line, column=column.name, message="is required but empty"
+            )
         return None, None
     if not column.numeric:
         return text, None
     try:
         value = float(text)
     except ValueError:
-        return None, Problem(file=spec.file, line=line, column=column.name,
-                             message=f"must be {column.rule.value}, got {text!r}")
+        return None, Problem(
+            file=spec.file,
+            line=line,
+            column=column.name,
+            message=f"must be {column.rule.value}, got {text!r}",
+        )
     ok = math.isfinite(value) and (
         column.rule is Rule.ANY
         or (column.rule is Rule.POSITIVE and value > 0)
         or (column.rule is Rule.NON_NEGATIVE and value >= 0)
     )
     if not ok:
-        return None, Problem(file=spec.file, line=line, column=column.name,
-                             message=f"must be {column.rule.value}, got {text!r}")
+        return None, Problem(
+            file=spec.file,
+            line=line,
+            column=column.name,
+            message=f"must be {column.rule.value}, got {text!r}",
+        )
     return value * column.scale, None
 
 
@@ -123,17 +132,22 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
     known = {c.name: c for c in spec.columns}
     for name in header:
         if name not in known:
-            problems.append(Problem(
-                file=spec.file, line=1, column=name,
-                message="unknown column (columns name their unit, e.g. max_torque_nm; "
-                f"expected one of: {', '.join(known)})",
-            ))
+            problems.append(
+                Problem(
+                    file=spec.file,
+                    line=1,
+                    column=name,
+                    message="unknown column (columns name their unit, e.g. max_torque_nm; "
+                    f"expected one of: {', '.join(known)})",
+                )
+            )
     for name in known:
         if name not in header:
             problems.append(Problem(file=spec.file, line=1, column=name, message="column missing"))
     if len(set(header)) != len(header):
-        problems.append(Problem(file=spec.file, line=1, column=None,
-                                message="a column name appears twice"))
+        problems.append(
+            Problem(file=spec.file, line=1, column=None, message="a column name appears twice")
+        )
     if problems:
         return [], problems
     records: list[Record] = []
@@ -142,8 +156,14 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
         if not any(c.strip() for c in cells):
             continue
         if len(cells) != len(header):
-            problems.append(Problem(file=spec.file, line=line, column=None,
-                                    message=f"has {len(cells)} cells, the header {len(header)}"))
+            problems.append(
+                Problem(
+                    file=spec.file,
+                    line=line,
+                    column=None,
+                    message=f"has {len(cells)} cells, the header {len(header)}",
+                )
+            )
             continue
         values: dict[str, Any] = {}
         for name, raw in zip(header, cells, strict=True):
@@ -154,10 +174,14 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
             values[column.attribute] = value
         key = tuple(values[known[k].attribute] for k in spec.key)
         if key in seen:
-            problems.append(Problem(
-                file=spec.file, line=line, column=spec.key[0],
-                message=f"duplicates line {seen[key]} ({', '.join(map(str, key))})",
-            ))
+            problems.append(
+                Problem(
+                    file=spec.file,
+                    line=line,
+                    column=spec.key[0],
+                    message=f"duplicates line {seen[key]} ({', '.join(map(str, key))})",
+                )
+            )
         else:
             seen[key] = line
         records.append(Record(line=line, values=values))
@@ -172,7 +196,9 @@ def read(spec: CsvSpec, directory: Path) -> tuple[list[Record], list[Problem]]:
     except FileNotFoundError:
         return [], [Problem(file=spec.file, line=0, column=None, message="file not found")]
     except UnicodeDecodeError as exc:
-        return [], [Problem(file=spec.file, line=0, column=None,
-                            message=f"is not UTF-8 text ({exc.reason})")]
+        return [], [
+            Problem(
+                file=spec.file, line=0, column=None, message=f"is not UTF-8 text ({exc.reason})"
+            )
+        ]
     return parse(spec, text)
-

@@ -127,28 +127,42 @@ def _cross_check(
     models = {r.values["model"] for r in actuators}
     for r in actuators:
         if r.values["family"] not in family_names:
-            problems.append(Problem(
-                file=ACTUATORS.file, line=r.line, column="family",
-                message=f"unknown family {r.values['family']!r} (known: "
-                f"{', '.join(sorted(family_names))})",
-            ))
+            problems.append(
+                Problem(
+                    file=ACTUATORS.file,
+                    line=r.line,
+                    column="family",
+                    message=f"unknown family {r.values['family']!r} (known: "
+                    f"{', '.join(sorted(family_names))})",
+                )
+            )
     starts: dict[str, bool] = {}
     counts: dict[str, int] = {}
     first_line: dict[str, int] = {}
     for r in zones:
         model = r.values["actuator_model"]
         if model not in models:
-            problems.append(Problem(file=ZONE_POINTS.file, line=r.line, column="actuator_model",
-                                    message=f"unknown actuator model {model!r}"))
+            problems.append(
+                Problem(
+                    file=ZONE_POINTS.file,
+                    line=r.line,
+                    column="actuator_model",
+                    message=f"unknown actuator model {model!r}",
+                )
+            )
         counts[model] = counts.get(model, 0) + 1
         first_line.setdefault(model, r.line)
         starts[model] = starts.get(model, False) or r.values["speed_rpm"] == 0
     for model, count in counts.items():
         if count < 2 or not starts[model]:
-            problems.append(Problem(
-                file=ZONE_POINTS.file, line=first_line[model], column="speed_rpm",
-                message=f"the zone of {model} needs at least two points, one of them at 0 rpm",
-            ))
+            problems.append(
+                Problem(
+                    file=ZONE_POINTS.file,
+                    line=first_line[model],
+                    column="speed_rpm",
+                    message=f"the zone of {model} needs at least two points, one of them at 0 rpm",
+                )
+            )
     return problems
 
 
@@ -217,7 +231,9 @@ def load_seed(session: Session, directory: Path) -> SeedReport:
     wanted: dict[str, list[tuple[float, float, str]]] = {}
     for r in zones:
         v = r.values
-        wanted.setdefault(v["actuator_model"], []).append((v["speed_rpm"], v["torque_nm"], v["source"]))
+        wanted.setdefault(v["actuator_model"], []).append(
+            (v["speed_rpm"], v["torque_nm"], v["source"])
+        )
     for model, points in wanted.items():
         actuator = actuator_rows[model]
         have = sorted((p.speed_rpm, p.torque_nm, p.source) for p in actuator.zone_points)

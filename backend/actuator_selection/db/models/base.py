@@ -1,4 +1,4 @@
-"""Declarative base with a naming convention, so migrations name constraints alike on every database."""
+"""Declarative base; its naming convention gives constraints the same names on every database."""
 
 from __future__ import annotations
 

@@ -1,0 +1,55 @@
+# Two commands on a fresh machine: `make run` serves the app, `make test` runs every check.
+# Each installs what it needs into .venv from the hash-pinned requirements.lock.
+
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
+
+.PHONY: install run test lint typecheck pytest bench lock clean
+
+$(STAMP): requirements.lock
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check \
+		--require-hashes --no-deps -r requirements.lock
+	@# The package is used in place from backend/ (an editable install without a build backend).
+	$(BIN)/python -c "import pathlib, sysconfig; \
+		pathlib.Path(sysconfig.get_paths()['purelib'], 'actuator_selection.pth') \
+		.write_text(str(pathlib.Path('backend').resolve()) + '\n')"
+	rm -f $(VENV)/.installed-*
+	touch $@
+
+install: $(STAMP)
+
+## Serve on http://$HOST:$PORT (default 127.0.0.1:8000) with the embedded SQLite
+## database (or $DATABASE_URL), migrated and seeded with the starter catalogue.
+run: install
+	$(BIN)/python -m actuator_selection migrate
+	$(BIN)/python -m actuator_selection seed
+	$(BIN)/python -m actuator_selection serve
+
+## The whole suite: lint, format, strict types, unit/db/api/browser tests.
+test: install lint typecheck pytest
+
+lint: install
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check .
+
+typecheck: install
+	$(BIN)/mypy
+
+pytest: install
+	$(BIN)/python -m pytest
+
+## Throughput of the selection engine (not part of the tests).
+bench: install
+	$(BIN)/python -m bench.selection
+
+## Re-resolve requirements.lock from pyproject.toml (needs the registry).
+lock: install
+	$(BIN)/python -m pip install --quiet uv
+	$(BIN)/uv pip compile pyproject.toml --extra dev --generate-hashes --python-version 3.11 \
+		--python-platform x86_64-manylinux_2_28 --no-header --no-annotate -o requirements.lock
+
+clean:
+	rm -rf $(VENV) var .mypy_cache .ruff_cache .pytest_cache

@@ -1,0 +1,105 @@
+"""Throughput of the selection flowchart: the pure core against the whole HTTP path.
+
+Prints cases per second for each and their ratio, so a change can be judged on
+any machine: the ratio says how much of a request's time the engineering takes.
+Runs on a throw-away SQLite database seeded with the starter catalogue.
+"""
+
+from __future__ import annotations
+
+import random
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from fastapi.testclient import TestClient
+
+from actuator_selection.config import SEED_DIR, Settings
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.selection import Application, select
+from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.db.migrate import upgrade
+from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.db.seed import load_seed
+from actuator_selection.main import create_app
+
+
+def _cases(n: int, seed: int = 7) -> list[Application]:
+    rng = random.Random(seed)
+    return [
+        Application(
+            pattern=SpeedPattern(
+                speed_rpm=rng.uniform(5, 150),
+                accel_s=rng.uniform(0.05, 0.5),
+                constant_s=rng.uniform(0, 1),
+                decel_s=rng.uniform(0.05, 0.5),
+                pause_s=rng.uniform(0, 2),
+            ),
+            load=Load(torque_nm=rng.uniform(0, 50), inertia_kgm2=rng.uniform(0, 5)),
+            high_dynamics=rng.random() < 0.5,
+        )
+        for _ in range(n)
+    ]
+
+
+def _rate(label: str, n: int, run: Callable[[], None]) -> float:
+    start = time.perf_counter()
+    run()
+    elapsed = time.perf_counter() - start
+    print(f"{label:<44} {n:>6} cases in {elapsed:7.3f} s = {n / elapsed:10.0f} cases/s")
+    return n / elapsed
+
+
+def main() -> None:
+    """Run the benchmark and print its table."""
+    with tempfile.TemporaryDirectory() as tmp:
+        url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"
+        upgrade(url=url)
+        engine = make_engine(url)
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+        with make_session_factory(engine)() as session:
+            actuators = [r.actuator for r in CatalogueRepository(session).actuators()]
+        engine.dispose()
+
+        core_cases = _cases(2000)
+        core = _rate(
+            f"core select() over {len(actuators)} actuators",
+            len(core_cases),
+            lambda: [select(actuators, app) for app in core_cases] and None,
+        )
+
+        http_cases = _cases(200)
+        app = create_app(Settings(database_url=url))
+        with TestClient(app) as client:
+
+            def post_all() -> None:
+                for c in http_cases:
+                    p = c.pattern
+                    response = client.post(
+                        "/api/v1/selections",
+                        json={
+                            "load": {
+                                "speed_rpm": p.speed_rpm,
+                                "torque_nm": c.load.torque_nm,
+                                "inertia_kgm2": c.load.inertia_kgm2,
+                            },
+                            "cycle": {
+                                "accel_s": p.accel_s,
+                                "constant_s": p.constant_s,
+                                "decel_s": p.decel_s,
+                                "pause_s": p.pause_s,
+                            },
+                            "high_dynamics": c.high_dynamics,
+                        },
+                    )
+                    response.raise_for_status()
+
+            http = _rate("POST /api/v1/selections (stored)", len(http_cases), post_all)
+        print(f"ratio core / HTTP: {core / http:.1f}× (engineering share of a request "
+              f"≈ {http / core:.0%})")
+
+
+if __name__ == "__main__":
+    main()

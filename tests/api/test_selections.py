@@ -1,0 +1,268 @@
+"""POST/GET /api/v1/selections: the flowchart over the catalogue, its contract and its errors."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+WORKED_EXAMPLE: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+    "high_dynamics": True,
+    "models": ["FHA-25C-50-L"],
+}
+
+
+def post(client: TestClient, body: dict[str, Any]) -> Any:
+    return client.post("/api/v1/selections", json=body)
+
+
+def with_changes(path: str, value: Any) -> dict[str, Any]:
+    """The worked example with one dotted field replaced (``None`` deletes it)."""
+    body: dict[str, Any] = {
+        k: dict(v) if isinstance(v, dict) else v for k, v in WORKED_EXAMPLE.items()
+    }
+    *parents, leaf = path.split(".")
+    target = body
+    for p in parents:
+        target = target[p]
+    if value is None:
+        del target[leaf]
+    else:
+        target[leaf] = value
+    return body
+
+
+def test_worked_example_over_http(client: TestClient) -> None:
+    response = post(client, WORKED_EXAMPLE)
+    assert response.status_code == 201
+    body = response.json()
+    assert body["load"] == {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3}
+    assert body["mean_speed_rpm"] == pytest.approx(6.15, abs=0.005)
+    assert body["duty_cycle_percent"] == pytest.approx(23.08, abs=0.005)
+    (candidate,) = body["candidates"]
+    assert candidate["model"] == "FHA-25C-50-L"
+    assert candidate["verdict"] == "unconfirmed"  # no continuous-duty data is published
+    assert candidate["accel_torque_nm"] == pytest.approx(95.48, abs=0.005)
+    assert candidate["constant_torque_nm"] == 5.0
+    assert candidate["decel_torque_nm"] == pytest.approx(-85.48, abs=0.005)
+    assert candidate["rms_torque_nm"] == pytest.approx(35.57, abs=0.005)
+    checks = {c["name"]: c for c in candidate["checks"]}
+    assert checks["max_speed"] | {"message": None, "margin_percent": None} == {
+        "name": "max_speed",
+        "status": "pass",
+        "value": 40,
+        "limit": 90,
+        "unit": "rpm",
+        "reference": "Table 515.1",
+        "approximate": False,
+        "message": None,
+        "margin_percent": None,
+    }
+    assert checks["continuous_duty"]["status"] == "no_data"
+    assert candidate["reasons"] == [checks["continuous_duty"]["message"]]
+
+
+def test_stored_selection_is_returned_unchanged(client: TestClient) -> None:
+    created = post(client, WORKED_EXAMPLE).json()
+    fetched = client.get(f"/api/v1/selections/{created['id']}")
+    assert fetched.status_code == 200
+    assert fetched.json() == created
+
+
+def test_unknown_selection_is_404(client: TestClient) -> None:
+    assert client.get("/api/v1/selections/does-not-exist").status_code == 404
+
+
+def test_whole_catalogue_ranked(client: TestClient) -> None:
+    body = post(client, with_changes("models", None)).json()
+    candidates = body["candidates"]
+    assert len(candidates) == len(client.get("/api/v1/actuators").json())
+    order = {"suitable": 0, "unconfirmed": 1, "unsuitable": 2}
+    ranks = [order[c["verdict"]] for c in candidates]
+    assert ranks == sorted(ranks)
+    suitable = [c for c in candidates if c["verdict"] == "suitable"]
+    assert suitable, "the CHA series has T_0 data, so some actuator must be suitable"
+    torques = [
+        client.get(f"/api/v1/actuators/{c['model']}").json()["max_torque_nm"] for c in suitable
+    ]
+    assert torques == sorted(torques)
+    for c in suitable:
+        assert all(k["status"] in ("pass", "warn") for k in c["checks"])
+    for c in candidates:
+        if c["verdict"] == "unsuitable":
+            assert any(k["status"] == "fail" for k in c["checks"])
+            assert c["reasons"]
+
+
+def test_cha_25a_50_against_worked_example_and_gentler_cycle(client: TestClient) -> None:
+    """CHA-25A-50: T_max 98 Nm, n_max 112 rpm, J 0.97 kgm², T_0 55 Nm (CHA manual)."""
+    (c,) = post(client, with_changes("models", ["CHA-25A-50"])).json()["candidates"]
+    inertia_torque = 2 * math.pi / 60 * (0.97 + 1.3) * 40 / 0.1  # 95.08 Nm
+    assert c["accel_torque_nm"] == pytest.approx(5 + inertia_torque)
+    assert c["verdict"] == "unsuitable"  # T_1 = 100.08 Nm > 98 Nm
+    assert [k["name"] for k in c["checks"] if k["status"] == "fail"] == ["peak_torque"]
+
+    gentle = with_changes("models", ["CHA-25A-50"])
+    gentle["cycle"] = {"accel_s": 0.2, "constant_s": 0.1, "decel_s": 0.2, "pause_s": 1.0}
+    (c,) = post(client, gentle).json()["candidates"]
+    t1, t3 = 5 + inertia_torque / 2, 5 - inertia_torque / 2
+    t_rms = math.sqrt((t1**2 * 0.2 + 5**2 * 0.1 + t3**2 * 0.2) / 1.5)
+    assert c["rms_torque_nm"] == pytest.approx(t_rms)
+    assert c["verdict"] == "suitable"
+    duty = c["checks"][-1]
+    assert duty["approximate"] is True
+    assert duty["limit"] == 55
+
+
+def test_low_dynamics_turns_inertia_failure_into_warning(client: TestClient) -> None:
+    heavy = with_changes("load.inertia_kgm2", 3.0)  # > 3 · 0.86
+    (dynamic,) = post(client, heavy).json()["candidates"]
+    heavy["high_dynamics"] = False
+    (relaxed,) = post(client, heavy).json()["candidates"]
+    assert next(k for k in dynamic["checks"] if k["name"] == "inertia_ratio")["status"] == "fail"
+    assert next(k for k in relaxed["checks"] if k["name"] == "inertia_ratio")["status"] == "warn"
+
+
+def test_ball_screw_mechanism_is_resolved(client: TestClient) -> None:
+    mechanism = {
+        "type": "ball_screw",
+        "speed_rpm": 60,
+        "mass_kg": 200,
+        "lead_m": 0.01,
+        "friction_coefficient": 0.1,
+        "efficiency": 0.9,
+        "screw_inertia_kgm2": 0.002,
+    }
+    body = post(client, with_changes("load", mechanism)).json()
+    pitch = 0.01 / (2 * math.pi)
+    assert body["load"]["inertia_kgm2"] == pytest.approx(0.002 + 200 * pitch**2)
+    assert body["load"]["torque_nm"] == pytest.approx(0.1 * 200 * 9.81 * pitch / 0.9)
+    assert body["load"]["speed_rpm"] == 60
+    assert body["mechanism"] == mechanism
+
+
+def test_rotary_table_mechanism_is_resolved(client: TestClient) -> None:
+    mechanism = {
+        "type": "rotary_table",
+        "speed_rpm": 30,
+        "mass_kg": 50,
+        "diameter_m": 0.4,
+        "friction_coefficient": 0.02,
+        "friction_radius_m": 0.15,
+    }
+    body = post(client, with_changes("load", mechanism)).json()
+    assert body["load"]["inertia_kgm2"] == pytest.approx(1.0)
+    assert body["load"]["torque_nm"] == pytest.approx(1.4715)
+
+
+@pytest.mark.parametrize(
+    ("path", "value", "loc"),
+    [
+        ("cycle.accel_s", 0, ["body", "cycle", "accel_s"]),
+        ("cycle.decel_s", -0.1, ["body", "cycle", "decel_s"]),
+        ("cycle.constant_s", -1, ["body", "cycle", "constant_s"]),
+        ("cycle.pause_s", -1, ["body", "cycle", "pause_s"]),
+        ("cycle.pause_s", 1e9, ["body", "cycle", "pause_s"]),
+        ("cycle.accel_s", None, ["body", "cycle", "accel_s"]),
+        ("load.speed_rpm", 0, ["body", "load", "direct", "speed_rpm"]),
+        ("load.speed_rpm", 1e12, ["body", "load", "direct", "speed_rpm"]),
+        ("load.inertia_kgm2", -1, ["body", "load", "direct", "inertia_kgm2"]),
+        ("load.torque_nm", -5, ["body", "load", "direct", "torque_nm"]),
+        ("load.torque_nm", "five", ["body", "load", "direct", "torque_nm"]),
+        ("load.type", "crane", ["body", "load"]),
+        ("high_dynamics", "maybe", ["body", "high_dynamics"]),
+        ("models", [], ["body", "models"]),
+        ("cycle.acel_s", 0.1, ["body", "cycle", "acel_s"]),
+    ],
+)
+def test_bad_input_is_422_naming_the_field(
+    client: TestClient, path: str, value: Any, loc: list[str]
+) -> None:
+    response = post(client, with_changes(path, value))
+    assert response.status_code == 422, response.text
+    locs = [e["loc"] for e in response.json()["detail"]]
+    assert loc in locs, locs
+    assert all(e["msg"] for e in response.json()["detail"])
+
+
+@pytest.mark.parametrize("literal", ["NaN", "Infinity", "-Infinity", "1e999"])
+def test_non_finite_json_numbers_are_rejected(client: TestClient, literal: str) -> None:
+    raw = (
+        '{"load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},'
+        f' "cycle": {{"accel_s": {literal}, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1}}}}'
+    )
+    response = client.post(
+        "/api/v1/selections", content=raw, headers={"content-type": "application/json"}
+    )
+    assert response.status_code == 422
+    assert ["body", "cycle", "accel_s"] in [e["loc"] for e in response.json()["detail"]]
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [
+        ("efficiency", 0),
+        ("efficiency", 1.01),
+        ("lead_m", 0),
+        ("mass_kg", -1),
+        ("friction_coefficient", 11),
+    ],
+)
+def test_bad_mechanism_is_422(client: TestClient, field: str, value: float) -> None:
+    mechanism = {
+        "type": "ball_screw",
+        "speed_rpm": 60,
+        "mass_kg": 200,
+        "lead_m": 0.01,
+        "friction_coefficient": 0.1,
+        "efficiency": 0.9,
+    }
+    mechanism[field] = value
+    response = post(client, with_changes("load", mechanism))
+    assert response.status_code == 422
+    assert ["body", "load", "ball_screw", field] in [e["loc"] for e in response.json()["detail"]]
+
+
+def test_unknown_models_are_named(client: TestClient) -> None:
+    response = post(client, with_changes("models", ["FHA-25C-50-L", "NOPE-9", "CHA-99"]))
+    assert response.status_code == 422
+    detail = response.json()["detail"]
+    assert [e["loc"] for e in detail] == [["body", "models", 1], ["body", "models", 2]]
+    assert "NOPE-9" in detail[0]["msg"]
+
+
+@pytest.mark.parametrize(
+    "raw",
+    ["", "{", "[1, 2]", '"text"', "null", '{"load": 5, "cycle": []}'],
+)
+def test_malformed_bodies_are_422_json(client: TestClient, raw: str) -> None:
+    response = client.post(
+        "/api/v1/selections", content=raw, headers={"content-type": "application/json"}
+    )
+    assert response.status_code == 422
+    assert response.headers["content-type"].startswith("application/json")
+    assert response.json()["detail"]
+
+
+def test_extreme_but_allowed_values_stay_finite(client: TestClient) -> None:
+    """At every bound at once the response is still finite JSON, not a 500."""
+    body = {
+        "load": {"speed_rpm": 100_000, "torque_nm": 1e6, "inertia_kgm2": 1e6},
+        "cycle": {"accel_s": 1e-4, "constant_s": 86_400, "decel_s": 1e-4, "pause_s": 86_400},
+        "models": ["CHA-58A-160"],
+    }
+    response = post(client, body)
+    assert response.status_code == 201
+    (c,) = response.json()["candidates"]
+    assert math.isfinite(c["rms_torque_nm"])
+    assert c["verdict"] == "unsuitable"
+
+
+def test_failed_request_writes_nothing(client: TestClient) -> None:
+    before = post(client, WORKED_EXAMPLE).json()["id"]
+    assert post(client, with_changes("models", ["NOPE"])).status_code == 422
+    assert client.get(f"/api/v1/selections/{before}").status_code == 200

@@ -1,0 +1,152 @@
+"""The flowchart's checks, verdicts and ranking (chapter p. 514–517)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.selection import (
+    Application,
+    Status,
+    Verdict,
+    evaluate,
+    select,
+)
+from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+
+EXAMPLE = Application(
+    pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0),
+    load=Load(torque_nm=5, inertia_kgm2=1.3),
+)
+FHA = Actuator(
+    model="FHA-25C-50-L",
+    family="FHA-C",
+    gear_ratio=50,
+    max_torque_nm=151,
+    max_speed_rpm=90,
+    inertia_kgm2=0.86,
+)
+
+
+def status(actuator: Actuator, app: Application, name: str) -> Status:
+    return next(c for c in evaluate(actuator, app).checks if c.name == name).status
+
+
+def test_worked_example_passes_every_check_with_data() -> None:
+    c = evaluate(FHA, EXAMPLE)
+    by_name = {k.name: k for k in c.checks}
+    assert [k.name for k in c.checks] == [
+        "max_speed",
+        "inertia_ratio",
+        "peak_torque",
+        "decel_torque",
+        "continuous_duty",
+    ]
+    assert by_name["max_speed"].value == 40
+    assert by_name["max_speed"].limit == 90
+    assert by_name["inertia_ratio"].limit == pytest.approx(3 * 0.86)
+    assert by_name["peak_torque"].value == pytest.approx(95.478, abs=1e-3)
+    assert by_name["decel_torque"].value == pytest.approx(85.478, abs=1e-3)
+    assert by_name["continuous_duty"].status is Status.NO_DATA
+    assert c.verdict is Verdict.UNCONFIRMED
+    assert by_name["peak_torque"].reference == "Eq. 514.1"
+    assert by_name["max_speed"].reference == "Table 515.1"
+
+
+def test_max_speed_fails_above_n_max() -> None:
+    fast = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=91))
+    assert status(FHA, fast, "max_speed") is Status.FAIL
+    exact = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=90))
+    assert status(FHA, exact, "max_speed") is Status.PASS
+
+
+def test_inertia_ratio_fails_when_dynamic_and_warns_otherwise() -> None:
+    heavy = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=2.6))  # > 2.58
+    assert status(FHA, heavy, "inertia_ratio") is Status.FAIL
+    relaxed = dataclasses.replace(heavy, high_dynamics=False)
+    assert status(FHA, relaxed, "inertia_ratio") is Status.WARN
+
+
+def test_peak_torque_fails_when_t1_exceeds_t_max() -> None:
+    small = dataclasses.replace(FHA, max_torque_nm=95)
+    assert status(small, EXAMPLE, "peak_torque") is Status.FAIL
+    assert status(small, EXAMPLE, "decel_torque") is Status.PASS  # |T_3| = 85.48 ≤ 95
+    assert evaluate(small, EXAMPLE).verdict is Verdict.UNSUITABLE
+
+
+def test_decel_torque_fails_on_fast_braking_alone() -> None:
+    pattern = dataclasses.replace(EXAMPLE.pattern, decel_s=0.05)  # |T_3| = 180.96 − 5 = 175.96
+    app = dataclasses.replace(EXAMPLE, pattern=pattern)
+    assert status(FHA, app, "peak_torque") is Status.PASS
+    assert status(FHA, app, "decel_torque") is Status.FAIL
+
+
+def test_continuous_duty_with_zone_pass_and_fail() -> None:
+    # n_av = 6.1538 rpm; edge from 40 Nm at 0 rpm to 30 Nm at 90 rpm gives 39.316 Nm there.
+    z = ContinuousDutyZone(
+        points=(ZonePoint(speed_rpm=0, torque_nm=40), ZonePoint(speed_rpm=90, torque_nm=30))
+    )
+    check = next(
+        c
+        for c in evaluate(dataclasses.replace(FHA, zone=z), EXAMPLE).checks
+        if c.name == "continuous_duty"
+    )
+    assert check.status is Status.PASS
+    assert not check.approximate
+    assert check.limit == pytest.approx(40 - 10 * (8 / 1.3) / 90)
+    low = ContinuousDutyZone(
+        points=(ZonePoint(speed_rpm=0, torque_nm=35), ZonePoint(speed_rpm=90, torque_nm=30))
+    )
+    assert status(dataclasses.replace(FHA, zone=low), EXAMPLE, "continuous_duty") is Status.FAIL
+    short = ContinuousDutyZone(
+        points=(ZonePoint(speed_rpm=0, torque_nm=80), ZonePoint(speed_rpm=5, torque_nm=80))
+    )
+    assert status(dataclasses.replace(FHA, zone=short), EXAMPLE, "continuous_duty") is Status.FAIL
+
+
+def test_continuous_duty_approximate_with_stall_torque() -> None:
+    ok = evaluate(dataclasses.replace(FHA, stall_torque_nm=36), EXAMPLE)
+    check = ok.checks[-1]
+    assert check.status is Status.PASS
+    assert check.approximate
+    assert check.limit == 36
+    assert ok.verdict is Verdict.SUITABLE
+    assert status(dataclasses.replace(FHA, stall_torque_nm=35), EXAMPLE, "continuous_duty") is (
+        Status.FAIL
+    )
+    mini = dataclasses.replace(FHA, continuous_torque_nm=40)
+    assert evaluate(mini, EXAMPLE).checks[-1].limit == 40
+
+
+def test_missing_data_never_passes() -> None:
+    bare = Actuator(model="X", family="F", gear_ratio=50)
+    c = evaluate(bare, EXAMPLE)
+    assert {k.status for k in c.checks} == {Status.NO_DATA}
+    assert c.torques is None
+    assert c.verdict is Verdict.UNCONFIRMED
+    assert all(m.startswith("no data") for m in c.reasons)
+
+
+def test_margin_percent() -> None:
+    check = evaluate(FHA, EXAMPLE).checks[0]
+    assert check.margin_percent == pytest.approx((90 - 40) / 90 * 100)
+
+
+def test_ranking_suitable_smallest_first() -> None:
+    big = dataclasses.replace(FHA, model="BIG", max_torque_nm=300, stall_torque_nm=100)
+    small = dataclasses.replace(FHA, model="SMALL", max_torque_nm=151, stall_torque_nm=40)
+    unknown = dataclasses.replace(FHA, model="UNKNOWN")  # no continuous data
+    weak = dataclasses.replace(FHA, model="WEAK", max_torque_nm=50, stall_torque_nm=40)
+    result = select([weak, unknown, big, small], EXAMPLE)
+    assert [c.actuator.model for c in result.candidates] == ["SMALL", "BIG", "UNKNOWN", "WEAK"]
+    assert [c.verdict for c in result.candidates] == [
+        Verdict.SUITABLE,
+        Verdict.SUITABLE,
+        Verdict.UNCONFIRMED,
+        Verdict.UNSUITABLE,
+    ]
+    assert result.mean_speed_rpm == pytest.approx(8 / 1.3)
+    assert result.cycle_time_s == pytest.approx(1.3)

@@ -1,0 +1,222 @@
+"""Seeding the starter catalogue: complete, idempotent, atomic, precise about bad rows."""
+
+from __future__ import annotations
+
+import csv
+import io
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+from sqlalchemy import Engine, func, select
+from sqlalchemy.orm import Session
+
+from actuator_selection.cli import main
+from actuator_selection.config import SEED_DIR
+from actuator_selection.db.csvio import CatalogueFileError
+from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.db.migrate import upgrade
+from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
+from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.db.seed import load_seed
+
+
+@pytest.fixture
+def empty_engine(backend: str, new_database: Callable[[str], str]) -> Iterator[Engine]:
+    url = new_database(backend)
+    upgrade(url=url)
+    engine = make_engine(url)
+    yield engine
+    engine.dispose()
+
+
+def counts(engine: Engine) -> tuple[int, int, int]:
+    with Session(engine) as s:
+        return (
+            s.scalar(select(func.count()).select_from(ActuatorFamilyRow)) or 0,
+            s.scalar(select(func.count()).select_from(ActuatorRow)) or 0,
+            s.scalar(select(func.count()).select_from(ZonePointRow)) or 0,
+        )
+
+
+def csv_rows(name: str) -> int:
+    with (SEED_DIR / name).open(encoding="utf-8") as f:
+        return sum(1 for _ in csv.DictReader(f))
+
+
+def edit_cell(directory: Path, file: str, model_or_name: str, column: str, value: str) -> int:
+    """Set one cell of ``file``; returns the 1-based line of the edited row."""
+    path = directory / file
+    rows = list(csv.DictReader(io.StringIO(path.read_text(encoding="utf-8"))))
+    key = "model" if "model" in rows[0] else "name"
+    index = next(i for i, r in enumerate(rows) if r[key] == model_or_name)
+    rows[index][column] = value
+    out = io.StringIO()
+    writer = csv.DictWriter(out, fieldnames=list(rows[0]), lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(rows)
+    path.write_text(out.getvalue(), encoding="utf-8")
+    return index + 2
+
+
+def test_seed_loads_every_row_then_changes_nothing(empty_engine: Engine) -> None:
+    factory = make_session_factory(empty_engine)
+    with factory.begin() as s:
+        first = load_seed(s, SEED_DIR)
+    expected = (csv_rows("families.csv"), csv_rows("actuators.csv"), csv_rows("zone_points.csv"))
+    assert counts(empty_engine) == expected
+    assert first.inserted == sum(expected)
+    assert first.updated == 0
+    with factory.begin() as s:
+        second = load_seed(s, SEED_DIR)
+    assert (second.inserted, second.updated, second.unchanged) == (0, 0, sum(expected))
+    assert counts(empty_engine) == expected
+
+
+def test_seed_converts_units_and_keeps_sources(empty_engine: Engine) -> None:
+    with make_session_factory(empty_engine).begin() as s:
+        load_seed(s, SEED_DIR)
+    with Session(empty_engine) as s:
+        cha = CatalogueRepository(s).actuator("CHA-25A-50")
+        assert cha is not None
+        # The CHA catalogue prints K_INL in 10⁻³ A/rpm: 6 → 0.006 A/rpm.
+        assert cha.actuator.no_load_current_constant_30c_a_per_rpm == pytest.approx(0.006)
+        assert cha.actuator.max_torque_nm == 98
+        assert cha.actuator.max_speed_rpm == 112
+        assert "CHA" in cha.source
+        example = CatalogueRepository(s).actuator("FHA-25C-50-L")
+        assert example is not None
+        assert (example.actuator.max_torque_nm, example.actuator.inertia_kgm2) == (151, 0.86)
+        assert example.actuator.stall_torque_nm is None  # not published: stays empty
+        assert "Table 516.3" in example.source
+        assert all(r.source for r in CatalogueRepository(s).actuators())
+
+
+def test_seed_updates_a_changed_value(empty_engine: Engine, seed_dir: Path) -> None:
+    factory = make_session_factory(empty_engine)
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    edit_cell(seed_dir, "actuators.csv", "CHA-20A-30", "max_torque_nm", "28")
+    with factory.begin() as s:
+        report = load_seed(s, seed_dir)
+    assert report.updated == 1
+    assert report.inserted == 0
+    with Session(empty_engine) as s:
+        row = s.scalars(select(ActuatorRow).where(ActuatorRow.model == "CHA-20A-30")).one()
+        assert row.max_torque_nm == 28
+
+
+def test_seed_loads_and_replaces_zone_points(empty_engine: Engine, seed_dir: Path) -> None:
+    (seed_dir / "zone_points.csv").write_text(
+        "actuator_model,speed_rpm,torque_nm,source\n"
+        "FHA-25C-50-L,0,60,test\nFHA-25C-50-L,90,40,test\n",
+        encoding="utf-8",
+    )
+    factory = make_session_factory(empty_engine)
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    (seed_dir / "zone_points.csv").write_text(
+        "actuator_model,speed_rpm,torque_nm,source\n"
+        "FHA-25C-50-L,0,61,test\nFHA-25C-50-L,90,40,test\n",
+        encoding="utf-8",
+    )
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    with Session(empty_engine) as s:
+        record = CatalogueRepository(s).actuator("FHA-25C-50-L")
+        assert record is not None
+        assert record.actuator.zone is not None
+        assert [(p.speed_rpm, p.torque_nm) for p in record.actuator.zone.points] == [
+            (0, 61),
+            (90, 40),
+        ]
+
+
+@pytest.mark.parametrize(
+    ("file", "row", "column", "value", "rule"),
+    [
+        ("actuators.csv", "CHA-25A-50", "max_torque_nm", "-98", "> 0"),
+        ("actuators.csv", "CHA-25A-50", "inertia_kgm2", "nan", "> 0"),
+        ("actuators.csv", "CHA-25A-50", "max_speed_rpm", "fast", "> 0"),
+        ("actuators.csv", "CHA-25A-50", "gear_ratio", "", "required"),
+        ("actuators.csv", "CHA-25A-50", "source", "", "required"),
+        ("actuators.csv", "CHA-25A-50", "family", "CHX", "unknown family"),
+        ("families.csv", "CHA", "warning_resistance_ohm", "0", "> 0"),
+    ],
+)
+def test_bad_cell_loads_nothing_and_is_named(
+    empty_engine: Engine, seed_dir: Path, file: str, row: str, column: str, value: str, rule: str
+) -> None:
+    line = edit_cell(seed_dir, file, row, column, value)
+    with (
+        pytest.raises(CatalogueFileError) as caught,
+        make_session_factory(empty_engine).begin() as s,
+    ):
+        load_seed(s, seed_dir)
+    message = str(caught.value)
+    assert f"{file}, line {line}, column {column}" in message
+    assert rule in message
+    assert counts(empty_engine) == (0, 0, 0)
+
+
+def test_unknown_column_names_its_unit_rule(empty_engine: Engine, seed_dir: Path) -> None:
+    path = seed_dir / "actuators.csv"
+    text = path.read_text(encoding="utf-8")
+    path.write_text(text.replace("max_torque_nm", "max_torque_kgm", 1), encoding="utf-8")
+    with (
+        pytest.raises(CatalogueFileError) as caught,
+        make_session_factory(empty_engine).begin() as s,
+    ):
+        load_seed(s, seed_dir)
+    problems = {(p.file, p.line, p.column) for p in caught.value.problems}
+    assert ("actuators.csv", 1, "max_torque_kgm") in problems
+    assert ("actuators.csv", 1, "max_torque_nm") in problems  # missing now
+    assert counts(empty_engine) == (0, 0, 0)
+
+
+def test_duplicate_and_ragged_rows(empty_engine: Engine, seed_dir: Path) -> None:
+    path = seed_dir / "actuators.csv"
+    lines = path.read_text(encoding="utf-8").splitlines()
+    lines.append(lines[2])  # duplicate model
+    lines.append("CHA-99A-50,CHA,50")  # too few cells
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    with (
+        pytest.raises(CatalogueFileError) as caught,
+        make_session_factory(empty_engine).begin() as s,
+    ):
+        load_seed(s, seed_dir)
+    messages = [str(p) for p in caught.value.problems]
+    assert any(f"line {len(lines) - 1}" in m and "duplicates line 3" in m for m in messages)
+    assert any(f"line {len(lines)}" in m and "cells" in m for m in messages)
+
+
+def test_not_utf8_and_missing_file(empty_engine: Engine, seed_dir: Path) -> None:
+    (seed_dir / "families.csv").write_bytes(b"name,source\n\xff\xfe,x\n")
+    (seed_dir / "zone_points.csv").unlink()
+    with (
+        pytest.raises(CatalogueFileError) as caught,
+        make_session_factory(empty_engine).begin() as s,
+    ):
+        load_seed(s, seed_dir)
+    messages = " | ".join(str(p) for p in caught.value.problems)
+    assert "families.csv" in messages
+    assert "UTF-8" in messages
+    assert "zone_points.csv" in messages
+    assert "not found" in messages
+
+
+def test_cli_migrates_and_seeds(
+    backend: str,
+    new_database: Callable[[str], str],
+    seed_dir: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    url = new_database(backend)
+    assert main(["--database-url", url, "migrate"]) == 0
+    assert main(["--database-url", url, "seed"]) == 0
+    assert "inserted" in capsys.readouterr().out
+    edit_cell(seed_dir, "actuators.csv", "CHA-25A-50", "max_speed_rpm", "-1")
+    assert main(["--database-url", url, "seed", "--directory", str(seed_dir)]) == 1
+    err = capsys.readouterr().err
+    assert "nothing loaded" in err
+    assert "column max_speed_rpm" in err
