@@ -97,8 +97,10 @@ def main() -> None:
                     response.raise_for_status()
 
             http = _rate("POST /api/v1/selections (stored)", len(http_cases), post_all)
-        print(f"ratio core / HTTP: {core / http:.1f}× (engineering share of a request "
-              f"≈ {http / core:.0%})")
+        print(
+            f"ratio core / HTTP: {core / http:.1f}× (engineering share of a request "
+            f"≈ {http / core:.0%})"
+        )
 
 
 if __name__ == "__main__":
