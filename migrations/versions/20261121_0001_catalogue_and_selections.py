@@ -20,7 +20,6 @@ depends_on: str | Sequence[str] | None = None
 
 
 def upgrade() -> None:
-
     op.create_table(
         "actuator_families",
         sa.Column("id", sa.Integer(), nullable=False),
@@ -38,9 +37,17 @@ def upgrade() -> None:
         sa.UniqueConstraint("name", name=op.f("uq_actuator_families_name")),
     )
     op.create_table(
+        "catalogue_state",
+        sa.Column("id", sa.Integer(), nullable=False),
+        sa.Column("version", sa.Integer(), nullable=False),
+        sa.Column("changed_at", sa.DateTime(timezone=True), nullable=False),
+        sa.PrimaryKeyConstraint("id", name=op.f("pk_catalogue_state")),
+    )
+    op.create_table(
         "selections",
         sa.Column("id", sa.String(length=36), nullable=False),
         sa.Column("created_at", sa.DateTime(timezone=True), nullable=False),
+        sa.Column("catalogue_version", sa.Integer(), nullable=False),
         sa.Column(
             "request", sa.JSON().with_variant(postgresql.JSONB(), "postgresql"), nullable=False
         ),
@@ -111,11 +118,11 @@ def upgrade() -> None:
 
 
 def downgrade() -> None:
-
     op.drop_table("zone_points")
     with op.batch_alter_table("actuators", schema=None) as batch_op:
         batch_op.drop_index(batch_op.f("ix_actuators_family_id"))
 
     op.drop_table("actuators")
     op.drop_table("selections")
+    op.drop_table("catalogue_state")
     op.drop_table("actuator_families")

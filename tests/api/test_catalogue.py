@@ -60,3 +60,15 @@ def test_families_carry_sensor_limits(client: TestClient) -> None:
     assert (cha["warning_temperature_c"], cha["shutdown_temperature_c"]) == (80, 90)
     assert (cha["warning_resistance_ohm"], cha["shutdown_resistance_ohm"]) == (882, 940)
     assert families["FHA-C mini"]["shutdown_temperature_c"] is None
+
+
+def test_selection_records_the_catalogue_version(client: TestClient) -> None:
+    version = client.get("/api/v1/catalogue/version").json()["version"]
+    assert version >= 1  # the seed wrote the catalogue
+    body = {
+        "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+        "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+        "models": ["FHA-25C-50-L"],
+    }
+    created = client.post("/api/v1/selections", json=body).json()
+    assert created["catalogue_version"] == version

@@ -17,7 +17,7 @@ from actuator_selection.db.csvio import CatalogueFileError
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
-from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.seed import load_seed
 
 
@@ -220,3 +220,25 @@ def test_cli_migrates_and_seeds(
     err = capsys.readouterr().err
     assert "nothing loaded" in err
     assert "column max_speed_rpm" in err
+
+
+def test_seed_raises_the_catalogue_version_only_on_change(
+    empty_engine: Engine, seed_dir: Path
+) -> None:
+    factory = make_session_factory(empty_engine)
+
+    def version() -> int:
+        with Session(empty_engine) as s:
+            return CatalogueVersionRepository(s).current()
+
+    assert version() == 0
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    assert version() == 1
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    assert version() == 1
+    edit_cell(seed_dir, "actuators.csv", "CHA-20A-30", "mass_kg", "4.3")
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    assert version() == 2

@@ -7,7 +7,11 @@ from typing import Annotated
 from fastapi import APIRouter, HTTPException, Query
 
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.db.repositories import ActuatorFilter, CatalogueRepository
+from actuator_selection.db.repositories import (
+    ActuatorFilter,
+    CatalogueRepository,
+    CatalogueVersionRepository,
+)
 from actuator_selection.schemas.actuators import ActuatorOut, FamilyOut
 
 router = APIRouter(tags=["catalogue"])
@@ -52,3 +56,9 @@ def get_actuator(model: str, session: SessionDep) -> ActuatorOut:
 def list_families(session: SessionDep) -> list[FamilyOut]:
     """Product families with their temperature sensors and limits (Tables 518.1, 519.2)."""
     return [FamilyOut.from_record(f) for f in CatalogueRepository(session).families()]
+
+
+@router.get("/catalogue/version")
+def catalogue_version(session: SessionDep) -> dict[str, int]:
+    """The catalogue's version: raised by every change; each selection records the one it used."""
+    return {"version": CatalogueVersionRepository(session).current()}

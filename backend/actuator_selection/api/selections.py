@@ -13,6 +13,7 @@ from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import (
     ActuatorFilter,
     CatalogueRepository,
+    CatalogueVersionRepository,
     SelectionRepository,
 )
 from actuator_selection.schemas.selections import RANKING_RULE, SelectionOut, SelectionRequest
@@ -41,11 +42,16 @@ def create_selection(body: SelectionRequest, session: SessionDep) -> SelectionOu
             raise RequestFieldError(unknown)
     selection = select([r.actuator for r in records], body.to_core())
     out = SelectionOut.build(
-        id=str(uuid.uuid4()), created_at=datetime.now(UTC), request=body, selection=selection
+        id=str(uuid.uuid4()),
+        created_at=datetime.now(UTC),
+        catalogue_version=CatalogueVersionRepository(session).current(),
+        request=body,
+        selection=selection,
     )
     SelectionRepository(session).add(
         id=out.id,
         created_at=out.created_at,
+        catalogue_version=out.catalogue_version,
         request=body.model_dump(mode="json"),
         response=out.model_dump(mode="json"),
     )

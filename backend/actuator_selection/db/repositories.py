@@ -8,15 +8,20 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from datetime import datetime
+from datetime import UTC, datetime
 from typing import Any
 
-from sqlalchemy import select
+from sqlalchemy import select, update
 from sqlalchemy.orm import Session, selectinload
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
-from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, SelectionRow
+from actuator_selection.db.models import (
+    ActuatorFamilyRow,
+    ActuatorRow,
+    CatalogueStateRow,
+    SelectionRow,
+)
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -164,6 +169,35 @@ class CatalogueRepository:
         ]
 
 
+class CatalogueVersionRepository:
+    """The catalogue's version number: read by selections, raised by every catalogue change."""
+
+    def __init__(self, session: Session) -> None:
+        self._session = session
+
+    def current(self) -> int:
+        """The version now; 0 for a catalogue that was never written."""
+        version = self._session.scalar(select(CatalogueStateRow.version))
+        return version or 0
+
+    def bump(self) -> int:
+        """Raise the version by one inside the caller's transaction; returns the new number.
+
+        On PostgreSQL the UPDATE locks the row, so concurrent changes get distinct numbers.
+        """
+        now = datetime.now(UTC)
+        updated = self._session.execute(
+            update(CatalogueStateRow)
+            .values(version=CatalogueStateRow.version + 1, changed_at=now)
+            .returning(CatalogueStateRow.version)
+        ).scalar()
+        if updated is None:
+            self._session.add(CatalogueStateRow(id=1, version=1, changed_at=now))
+            self._session.flush()
+            return 1
+        return updated
+
+
 class SelectionRepository:
     """Stored selections: written once, read back unchanged."""
 
@@ -171,11 +205,23 @@ class SelectionRepository:
         self._session = session
 
     def add(
-        self, *, id: str, created_at: datetime, request: dict[str, Any], response: dict[str, Any]
+        self,
+        *,
+        id: str,
+        created_at: datetime,
+        catalogue_version: int,
+        request: dict[str, Any],
+        response: dict[str, Any],
     ) -> None:
         """Store one selection."""
         self._session.add(
-            SelectionRow(id=id, created_at=created_at, request=request, response=response)
+            SelectionRow(
+                id=id,
+                created_at=created_at,
+                catalogue_version=catalogue_version,
+                request=request,
+                response=response,
+            )
         )
         self._session.flush()
 

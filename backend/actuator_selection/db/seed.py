@@ -25,6 +25,7 @@ from actuator_selection.db.csvio import (
     read,
 )
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
+from actuator_selection.db.repositories import CatalogueVersionRepository
 
 _P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
 MILLI = 1e-3
@@ -252,4 +253,6 @@ def load_seed(session: Session, directory: Path) -> SeedReport:
         else:
             inserted += len(points)
     session.flush()
+    if inserted or updated:
+        CatalogueVersionRepository(session).bump()
     return SeedReport(inserted=inserted, updated=updated, unchanged=unchanged)

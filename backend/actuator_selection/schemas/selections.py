@@ -238,6 +238,7 @@ class SelectionOut(ResponseModel):
 
     id: str
     created_at: datetime
+    catalogue_version: int = Field(description="version of the catalogue the selection used")
     load: ResolvedLoad
     mechanism: dict[str, Any] | None = Field(description="the mechanism as sent, if any")
     cycle: CycleIn
@@ -250,7 +251,13 @@ class SelectionOut(ResponseModel):
 
     @classmethod
     def build(
-        cls, *, id: str, created_at: datetime, request: SelectionRequest, selection: Selection
+        cls,
+        *,
+        id: str,
+        created_at: datetime,
+        catalogue_version: int,
+        request: SelectionRequest,
+        selection: Selection,
     ) -> SelectionOut:
         """The response body of a selection just run."""
         app_load = request.load.to_core()
@@ -260,6 +267,7 @@ class SelectionOut(ResponseModel):
         return cls(
             id=id,
             created_at=created_at,
+            catalogue_version=catalogue_version,
             load=ResolvedLoad(
                 speed_rpm=request.load.speed_rpm,
                 torque_nm=app_load.torque_nm,

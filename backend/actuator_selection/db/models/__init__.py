@@ -1,7 +1,19 @@
 """All tables; importing this package registers every model on ``Base.metadata``."""
 
 from actuator_selection.db.models.base import Base
-from actuator_selection.db.models.catalogue import ActuatorFamilyRow, ActuatorRow, ZonePointRow
+from actuator_selection.db.models.catalogue import (
+    ActuatorFamilyRow,
+    ActuatorRow,
+    CatalogueStateRow,
+    ZonePointRow,
+)
 from actuator_selection.db.models.selections import SelectionRow
 
-__all__ = ["ActuatorFamilyRow", "ActuatorRow", "Base", "SelectionRow", "ZonePointRow"]
+__all__ = [
+    "ActuatorFamilyRow",
+    "ActuatorRow",
+    "Base",
+    "CatalogueStateRow",
+    "SelectionRow",
+    "ZonePointRow",
+]

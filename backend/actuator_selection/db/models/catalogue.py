@@ -6,7 +6,9 @@ may not publish the value; every row keeps its ``source``.
 
 from __future__ import annotations
 
-from sqlalchemy import Float, ForeignKey, String, Text, UniqueConstraint
+from datetime import datetime
+
+from sqlalchemy import DateTime, Float, ForeignKey, Integer, String, Text, UniqueConstraint
 from sqlalchemy.orm import Mapped, mapped_column, relationship
 
 from actuator_selection.db.models.base import Base
@@ -89,3 +91,13 @@ class ZonePointRow(Base):
     source: Mapped[str] = mapped_column(Text)
 
     actuator: Mapped[ActuatorRow] = relationship(back_populates="zone_points")
+
+
+class CatalogueStateRow(Base):
+    """The catalogue's version: one row, its number raised by every change of the catalogue."""
+
+    __tablename__ = "catalogue_state"
+
+    id: Mapped[int] = mapped_column(primary_key=True)
+    version: Mapped[int] = mapped_column(Integer)
+    changed_at: Mapped[datetime] = mapped_column(DateTime(timezone=True))
