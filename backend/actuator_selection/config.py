@@ -1,4 +1,4 @@
-"""Settings from the environment (``DATABASE_URL``, ``HOST``, ``PORT``)."""
+"""Settings from the environment (``DATABASE_URL``, ``HOST``, ``PORT``, ``REQUIRE_API_KEY``)."""
 
 from __future__ import annotations
 
@@ -23,6 +23,9 @@ class Settings(BaseSettings):
     database_url: str = DEFAULT_DATABASE_URL
     host: str = "127.0.0.1"
     port: int = 8000
+    require_api_key: bool = False
+    """When true, every endpoint needs an API key; otherwise catalogue reads and
+    selections are open and only admin and sales operations need one."""
 
 
 @lru_cache
