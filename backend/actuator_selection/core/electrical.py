@@ -1,0 +1,518 @@
+"""Controller output voltage (Eq. 521.2), output torque from current (Eq. 522.2, 522.3)
+and the direction of rotation (chapter, "Direction of Rotation").
+
+Worked example, CHA-25A-50 at its maximum output speed of 112 rpm (CHA catalogue:
+K_E = 37 V/1000 rpm motor-side, I_max = 4.0 A, R = 3.7 Ω line-to-line):
+
+>>> u = controller_output_voltage(output_speed_rpm=112, gear_ratio=50,
+...     motor_voltage_constant_v_per_krpm=37, max_current_a=4.0, resistance_line_ohm=3.7)
+>>> u.motor_speed_rpm, round(u.back_emf_v, 1), round(u.resistive_v, 1), round(u.total_v, 1)
+(-5600.0, 207.2, 14.8, 222.0)
+
+and its output torque at 2.0 A, 50 rpm, 30 °C (k_Tout = 26.0 Nm/A, I_NLS = 0.19 A,
+K_INL(30 °C) = 6·10⁻³ A/rpm):
+
+>>> t = output_torque_from_current(current_a=2.0, output_speed_rpm=50,
+...     torque_constant_nm_per_a=26.0, no_load_starting_current_a=0.19,
+...     no_load_current_constant_30c_a_per_rpm=6e-3)
+>>> round(t.no_load_running_current_a, 2), round(t.output_torque_nm, 2)
+(0.49, 39.26)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+from enum import StrEnum
+
+from actuator_selection.core.compatibility import BusClass
+from actuator_selection.core.errors import InvalidInputError, MissingDataError, OutOfRangeError
+from actuator_selection.core.units import per_krpm_to_per_rpm
+
+
+def _finite(field: str, value: float) -> None:
+    if not math.isfinite(value):
+        raise InvalidInputError(field, f"must be a finite number, got {value!r}")
+
+
+def _positive(field: str, value: float, rule: str) -> None:
+    _finite(field, value)
+    if value <= 0:
+        raise InvalidInputError(field, f"must be > 0: {rule}")
+
+
+def _non_negative(field: str, value: float, rule: str) -> None:
+    _finite(field, value)
+    if value < 0:
+        raise InvalidInputError(field, f"must be ≥ 0: {rule}")
+
+
+# --------------------------------------------------------------------------- direction
+
+OUTPUT_TURNS_OPPOSITE_TO_MOTOR = True
+"""The Harmonic Drive gear reverses the direction: motor shaft clockwise, output
+counter-clockwise (chapter, "Direction of Rotation")."""
+
+
+def motor_speed_rpm(*, output_speed_rpm: float, gear_ratio: float) -> float:
+    """Signed motor shaft speed [rpm] for a signed output speed (chapter, Direction of Rotation).
+
+    n_motor = −i·n_out: both speeds are signed in the same sense (e.g. positive =
+    counter-clockwise seen from the output flange); the minus sign is the
+    reversal by the Harmonic Drive gear (:data:`OUTPUT_TURNS_OPPOSITE_TO_MOTOR`).
+
+    >>> motor_speed_rpm(output_speed_rpm=112, gear_ratio=50)
+    -5600.0
+    """
+    _finite("output_speed_rpm", output_speed_rpm)
+    _positive("gear_ratio", gear_ratio, "the gear ratio i multiplies the output speed")
+    sign = -1.0 if OUTPUT_TURNS_OPPOSITE_TO_MOTOR else 1.0
+    return sign * gear_ratio * output_speed_rpm + 0.0  # + 0.0: standstill is 0.0, not -0.0
+
+
+def output_speed_rpm(*, motor_speed_rpm: float, gear_ratio: float) -> float:
+    """Signed output speed [rpm] for a signed motor speed: n_out = −n_motor/i.
+
+    >>> output_speed_rpm(motor_speed_rpm=-5600, gear_ratio=50)
+    112.0
+    """
+    _finite("motor_speed_rpm", motor_speed_rpm)
+    _positive("gear_ratio", gear_ratio, "the gear ratio i divides the motor speed")
+    sign = -1.0 if OUTPUT_TURNS_OPPOSITE_TO_MOTOR else 1.0
+    return sign * motor_speed_rpm / gear_ratio + 0.0  # + 0.0: standstill is 0.0, not -0.0
+
+
+# --------------------------------------------------------------------------- Eq. 521.2
+
+
+def line_resistance_from_phase_ohm(resistance_phase_ohm: float) -> float:
+    """Line-to-line resistance [Ω] of a star-connected winding from its phase resistance.
+
+    Derived, not catalogue data: between two terminals of a star winding two
+    phases are in series, R_LL = 2·R_ph. The FHA-C catalogue gives R per phase;
+    Eq. 521.2 with the CHA catalogue uses R line-to-line.
+
+    >>> line_resistance_from_phase_ohm(2.6)
+    5.2
+    """
+    _positive("resistance_phase_ohm", resistance_phase_ohm, "a winding resistance")
+    return 2.0 * resistance_phase_ohm
+
+
+def output_voltage_constant_v_per_rpm(
+    *, motor_voltage_constant_v_per_krpm: float, gear_ratio: float
+) -> float:
+    """Voltage constant per output rpm [V/rpm] from the motor's K_E per 1000 rpm.
+
+    k_E,out = i·K_E/1000, the form the FHA-C catalogue prints.
+
+    >>> round(output_voltage_constant_v_per_rpm(motor_voltage_constant_v_per_krpm=37,
+    ...                                         gear_ratio=50), 6)
+    1.85
+    """
+    _positive("gear_ratio", gear_ratio, "the gear ratio i")
+    _positive("motor_voltage_constant_v_per_krpm", motor_voltage_constant_v_per_krpm, "K_E")
+    return gear_ratio * per_krpm_to_per_rpm(motor_voltage_constant_v_per_krpm)
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class OutputVoltage:
+    """The terms of Eq. 521.2 [V, rpm].
+
+    ``motor_speed_rpm`` is signed (negative: the motor turns opposite to the
+    output, :func:`motor_speed_rpm`); the voltages use its magnitude n_OUT·i.
+    """
+
+    output_speed_rpm: float
+    motor_speed_rpm: float
+    back_emf_v: float
+    resistive_v: float
+    total_v: float
+    reference: str = "Eq. 521.2"
+
+
+def _output_voltage(
+    *,
+    output_speed_rpm: float,
+    gear_ratio: float,
+    back_emf_v: float,
+    max_current_a: float,
+    resistance_line_ohm: float,
+) -> OutputVoltage:
+    resistive = max_current_a * resistance_line_ohm
+    return OutputVoltage(
+        output_speed_rpm=output_speed_rpm,
+        motor_speed_rpm=motor_speed_rpm(output_speed_rpm=output_speed_rpm, gear_ratio=gear_ratio),
+        back_emf_v=back_emf_v,
+        resistive_v=resistive,
+        total_v=back_emf_v + resistive,
+    )
+
+
+def _check_current_and_resistance(max_current_a: float, resistance_line_ohm: float) -> None:
+    _non_negative("max_current_a", max_current_a, "I_MAX is a current magnitude (A rms)")
+    _positive("resistance_line_ohm", resistance_line_ohm, "the armature resistance R")
+
+
+def controller_output_voltage(
+    *,
+    output_speed_rpm: float,
+    gear_ratio: float,
+    motor_voltage_constant_v_per_krpm: float,
+    max_current_a: float,
+    resistance_line_ohm: float,
+) -> OutputVoltage:
+    """Minimum controller output voltage U_OUT (Eq. 521.2), motor-side K_E.
+
+    U_OUT = n_OUT·i·K_E + I_MAX·R, K_E per 1000 rpm of motor speed, converted
+    per rpm with :func:`~actuator_selection.core.units.per_krpm_to_per_rpm`.
+
+    The chapter labels U_OUT [V_DC], but the CHA's K_E is V_rms line-to-line
+    per 1000 rpm and I_MAX is A_rms, so U_OUT is an rms line-to-line voltage;
+    compare it with what a bus delivers through :func:`check_output_voltage`.
+    The equation adds the resistive drop arithmetically (no phase angle, no
+    inductive drop); with R line-to-line it is the chapter's conservative sum.
+
+    Parameters
+    ----------
+    output_speed_rpm
+        n_OUT [rpm], signed; the voltage needs its magnitude.
+    gear_ratio
+        i [-], > 0.
+    motor_voltage_constant_v_per_krpm
+        K_E [V_rms line-to-line per 1000 rpm of motor speed], > 0 (CHA: k_EM).
+    max_current_a
+        I_MAX [A_rms], ≥ 0.
+    resistance_line_ohm
+        R [Ω] line-to-line, > 0 (a phase value converts with
+        :func:`line_resistance_from_phase_ohm`).
+
+    >>> round(controller_output_voltage(output_speed_rpm=112, gear_ratio=50,
+    ...     motor_voltage_constant_v_per_krpm=37, max_current_a=4.0,
+    ...     resistance_line_ohm=3.7).total_v, 1)
+    222.0
+    """
+    _finite("output_speed_rpm", output_speed_rpm)
+    _positive("gear_ratio", gear_ratio, "the gear ratio i multiplies the output speed")
+    _positive(
+        "motor_voltage_constant_v_per_krpm",
+        motor_voltage_constant_v_per_krpm,
+        "K_E is the back-EMF per 1000 rpm of motor speed",
+    )
+    _check_current_and_resistance(max_current_a, resistance_line_ohm)
+    motor_rpm = abs(output_speed_rpm) * gear_ratio
+    return _output_voltage(
+        output_speed_rpm=output_speed_rpm,
+        gear_ratio=gear_ratio,
+        back_emf_v=motor_rpm * per_krpm_to_per_rpm(motor_voltage_constant_v_per_krpm),
+        max_current_a=max_current_a,
+        resistance_line_ohm=resistance_line_ohm,
+    )
+
+
+def controller_output_voltage_from_output_constant(
+    *,
+    output_speed_rpm: float,
+    gear_ratio: float,
+    output_voltage_constant_v_per_rpm: float,
+    max_current_a: float,
+    resistance_line_ohm: float,
+) -> OutputVoltage:
+    """Eq. 521.2 with a voltage constant per output rpm (FHA-C catalogue form).
+
+    U_OUT = |n_OUT|·k_E,out + I_MAX·R, with k_E,out = i·K_E/1000 [V/rpm]. The
+    FHA-C catalogue gives R per phase: pass
+    ``line_resistance_from_phase_ohm(R_phase)`` so that phase and line values
+    are never mixed silently. The constant must be in the same convention as
+    the bus comparison (rms line-to-line); check the catalogue before use.
+
+    >>> u = controller_output_voltage_from_output_constant(output_speed_rpm=90, gear_ratio=50,
+    ...     output_voltage_constant_v_per_rpm=2.5, max_current_a=7.3,
+    ...     resistance_line_ohm=line_resistance_from_phase_ohm(2.6))
+    >>> round(u.back_emf_v, 1), round(u.resistive_v, 2), round(u.total_v, 2)
+    (225.0, 37.96, 262.96)
+    """
+    _finite("output_speed_rpm", output_speed_rpm)
+    _positive("gear_ratio", gear_ratio, "the gear ratio i")
+    _positive(
+        "output_voltage_constant_v_per_rpm",
+        output_voltage_constant_v_per_rpm,
+        "k_E,out is the back-EMF per output rpm",
+    )
+    _check_current_and_resistance(max_current_a, resistance_line_ohm)
+    return _output_voltage(
+        output_speed_rpm=output_speed_rpm,
+        gear_ratio=gear_ratio,
+        back_emf_v=abs(output_speed_rpm) * output_voltage_constant_v_per_rpm,
+        max_current_a=max_current_a,
+        resistance_line_ohm=resistance_line_ohm,
+    )
+
+
+class Modulation(StrEnum):
+    """How the controller's inverter turns its DC bus into three-phase voltage."""
+
+    SPACE_VECTOR = "space_vector"
+    """Space-vector PWM (or sine PWM with third-harmonic injection): U_LL,rms ≤ U_DC/√2."""
+    SINE_TRIANGLE = "sine_triangle"
+    """Sine-triangle PWM without over-modulation: U_LL,rms ≤ √3·U_DC/(2√2) ≈ 0.612·U_DC."""
+
+
+def max_output_voltage_v(*, dc_bus_voltage_v: float, modulation: Modulation) -> float:
+    """Largest sinusoidal line-to-line rms voltage [V_rms] a three-phase inverter delivers.
+
+    In the linear range of the modulation, from a DC bus U_DC:
+
+    - sine-triangle PWM: phase peak U_DC/2, so U_LL,rms = √3·U_DC/(2·√2) ≈ 0.612·U_DC
+      (Mohan, Undeland, Robbins, *Power Electronics*, 3rd ed., 2003, sect. 8-6-1,
+      V_LL1 = 0.612·m_a·V_d for m_a ≤ 1);
+    - space-vector PWM: line-to-line peak U_DC, so U_LL,rms = U_DC/√2 ≈ 0.707·U_DC,
+      2/√3 of the sine-triangle limit (Holmes, Lipo, *Pulse Width Modulation for
+      Power Converters*, 2003, ch. 3 and 5).
+
+    Switch and dead-time drops of a real controller are not included.
+
+    >>> round(max_output_voltage_v(dc_bus_voltage_v=320, modulation=Modulation.SPACE_VECTOR), 1)
+    226.3
+    >>> round(max_output_voltage_v(dc_bus_voltage_v=320, modulation=Modulation.SINE_TRIANGLE), 1)
+    196.0
+    """
+    _positive("dc_bus_voltage_v", dc_bus_voltage_v, "the DC bus voltage feeds the inverter")
+    if modulation is Modulation.SPACE_VECTOR:
+        return dc_bus_voltage_v / math.sqrt(2.0)
+    return dc_bus_voltage_v * math.sqrt(3.0) / (2.0 * math.sqrt(2.0))
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class DcBusClass:
+    """A DC bus voltage class of Table 521.1 with its nominal voltage [V] (catalogue data)."""
+
+    bus_class: BusClass
+    nominal_voltage_v: float
+
+    def __post_init__(self) -> None:
+        _positive("nominal_dc_voltage_v", self.nominal_voltage_v, "a DC bus voltage")
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class OutputVoltageCheck:
+    """U_OUT (Eq. 521.2) against the output voltage a DC bus class delivers [V_rms]."""
+
+    bus_class: BusClass
+    dc_bus_voltage_v: float
+    modulation: Modulation
+    available_voltage_v: float
+    required_voltage_v: float
+    sufficient: bool
+    margin_percent: float
+    reference: str
+    message: str
+
+
+def check_output_voltage(
+    *, required_voltage_v: float, bus: DcBusClass, modulation: Modulation = Modulation.SPACE_VECTOR
+) -> OutputVoltageCheck:
+    """Does a DC bus class deliver U_OUT of Eq. 521.2? (Table 521.1 bus classes).
+
+    Like with like: U_OUT is V_rms line-to-line (K_E of the CHA is V_rms
+    line-to-line per 1000 rpm), and :func:`max_output_voltage_v` turns the bus
+    voltage into the largest V_rms line-to-line the inverter delivers. Sufficient
+    when U_OUT ≤ available; margin = (available − U_OUT)/available.
+
+    >>> c = check_output_voltage(required_voltage_v=222.0,
+    ...     bus=DcBusClass(bus_class=BusClass.V320, nominal_voltage_v=320))
+    >>> c.sufficient, round(c.available_voltage_v, 1), round(c.margin_percent, 1)
+    (True, 226.3, 1.9)
+    """
+    _non_negative("required_voltage_v", required_voltage_v, "U_OUT of Eq. 521.2")
+    available = max_output_voltage_v(dc_bus_voltage_v=bus.nominal_voltage_v, modulation=modulation)
+    ok = required_voltage_v <= available
+    margin = (available - required_voltage_v) / available * 100.0
+    relation = "≤" if ok else "exceeds"
+    return OutputVoltageCheck(
+        bus_class=bus.bus_class,
+        dc_bus_voltage_v=bus.nominal_voltage_v,
+        modulation=modulation,
+        available_voltage_v=available,
+        required_voltage_v=required_voltage_v,
+        sufficient=ok,
+        margin_percent=margin,
+        reference="Eq. 521.2, Table 521.1",
+        message=f"U_OUT = {required_voltage_v:.4g} V_rms {relation} {available:.4g} V_rms "
+        f"available from a {bus.nominal_voltage_v:g} V DC bus ({modulation.value} modulation)",
+    )
+
+
+def check_output_voltage_all(
+    *,
+    required_voltage_v: float,
+    buses: Iterable[DcBusClass],
+    modulation: Modulation = Modulation.SPACE_VECTOR,
+) -> tuple[OutputVoltageCheck, ...]:
+    """:func:`check_output_voltage` for every bus class, lowest voltage first."""
+    return tuple(
+        check_output_voltage(required_voltage_v=required_voltage_v, bus=b, modulation=modulation)
+        for b in sorted(buses, key=lambda b: b.nominal_voltage_v)
+    )
+
+
+# --------------------------------------------------------------------------- Eq. 522.2/3
+
+K_INL_LOW_TEMPERATURE_C = 30.0
+"""Temperature of the first published no-load current constant, K_INL(30 °C) (Eq. 522.2)."""
+K_INL_HIGH_TEMPERATURE_C = 80.0
+"""Temperature of the second published constant, K_INL(80 °C) (CHA catalogue)."""
+
+
+def no_load_current_constant_a_per_rpm(
+    *,
+    temperature_c: float,
+    constant_30c_a_per_rpm: float,
+    constant_80c_a_per_rpm: float | None,
+    extrapolate: bool = False,
+) -> float:
+    """K_INL [A/rpm] at ``temperature_c`` between the catalogue's 30 °C and 80 °C values.
+
+    The catalogue gives K_INL at 30 °C (Eq. 522.2) and 80 °C; in between it is
+    interpolated linearly in temperature (an assumption: two points give no
+    curvature). Outside 30…80 °C an :class:`OutOfRangeError` unless
+    ``extrapolate`` is set; then the same line is extended (never below 0).
+
+    >>> no_load_current_constant_a_per_rpm(temperature_c=55, constant_30c_a_per_rpm=6e-3,
+    ...                                    constant_80c_a_per_rpm=2e-3)
+    0.004
+    """
+    _finite("temperature_c", temperature_c)
+    _non_negative("no_load_current_constant_30c_a_per_rpm", constant_30c_a_per_rpm, "K_INL")
+    if temperature_c == K_INL_LOW_TEMPERATURE_C:
+        return constant_30c_a_per_rpm
+    if constant_80c_a_per_rpm is None:
+        raise MissingDataError(
+            "no_load_current_constant_80c_a_per_rpm",
+            f"no data: K_INL is published only at {K_INL_LOW_TEMPERATURE_C:g} °C for this "
+            f"actuator, so the torque at {temperature_c:g} °C cannot be computed",
+        )
+    _non_negative("no_load_current_constant_80c_a_per_rpm", constant_80c_a_per_rpm, "K_INL")
+    lo, hi = K_INL_LOW_TEMPERATURE_C, K_INL_HIGH_TEMPERATURE_C
+    if not extrapolate and not lo <= temperature_c <= hi:
+        raise OutOfRangeError(
+            "temperature_c",
+            f"{temperature_c:g} °C is outside {lo:g}…{hi:g} °C, where K_INL is published; "
+            "set extrapolate to extend the line",
+        )
+    share = (temperature_c - lo) / (hi - lo)
+    value = constant_30c_a_per_rpm + share * (constant_80c_a_per_rpm - constant_30c_a_per_rpm)
+    return max(value, 0.0)
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class OutputTorque:
+    """The terms of Eq. 522.2 and 522.3.
+
+    ``output_torque_nm`` is K_T·(I − I_NLR) as computed, not clamped: when the
+    measured current is below the no-load running current it is negative and
+    ``below_no_load_current`` is set (see :func:`output_torque_from_current`).
+    """
+
+    no_load_current_constant_a_per_rpm: float
+    no_load_running_current_a: float
+    torque_producing_current_a: float
+    output_torque_nm: float
+    below_no_load_current: bool
+    extrapolated: bool
+    reference: str
+    message: str
+
+
+def output_torque_from_current(
+    *,
+    current_a: float,
+    output_speed_rpm: float,
+    torque_constant_nm_per_a: float,
+    no_load_starting_current_a: float,
+    no_load_current_constant_30c_a_per_rpm: float,
+    no_load_current_constant_80c_a_per_rpm: float | None = None,
+    temperature_c: float = K_INL_LOW_TEMPERATURE_C,
+    extrapolate: bool = False,
+) -> OutputTorque:
+    """Output torque from the measured current (Eq. 522.2, 522.3).
+
+    I_NLR = I_NLS + K_INL·|n_out|                (Eq. 522.2)
+    T_out = K_T·(I − I_NLR)                      (Eq. 522.3)
+
+    K_INL at ``temperature_c`` comes from :func:`no_load_current_constant_a_per_rpm`.
+
+    When I < I_NLR the equation gives a negative torque. That is reported as
+    computed with ``below_no_load_current`` set, not clamped to 0 and not
+    refused: a current below the no-load current means that the load drives
+    the actuator (overhauling, braking) or that the actuator is warmer than
+    assumed (K_INL falls with temperature); the current alone cannot tell which.
+
+    Parameters
+    ----------
+    current_a
+        Measured current I, fundamental wave [A_rms], ≥ 0.
+    output_speed_rpm
+        n_out [rpm], signed; the no-load current depends on its magnitude.
+    torque_constant_nm_per_a
+        K_T at the output [Nm/A], > 0.
+    no_load_starting_current_a
+        I_NLS [A], ≥ 0.
+    no_load_current_constant_30c_a_per_rpm
+        K_INL(30 °C) [A/rpm] (catalogue value in 10⁻³ A/rpm divided by 1000).
+    no_load_current_constant_80c_a_per_rpm
+        K_INL(80 °C) [A/rpm]; needed for any temperature other than 30 °C.
+    temperature_c
+        Actuator temperature [°C]; 30…80 °C unless ``extrapolate``.
+    extrapolate
+        Extend the K_INL line outside 30…80 °C instead of refusing.
+
+    >>> t = output_torque_from_current(current_a=0.3, output_speed_rpm=50,
+    ...     torque_constant_nm_per_a=26.0, no_load_starting_current_a=0.19,
+    ...     no_load_current_constant_30c_a_per_rpm=6e-3)
+    >>> round(t.output_torque_nm, 2), t.below_no_load_current
+    (-4.94, True)
+    """
+    _non_negative(
+        "current_a", current_a, "the measured current is an rms magnitude (fundamental wave)"
+    )
+    _finite("output_speed_rpm", output_speed_rpm)
+    _positive("torque_constant_nm_per_a", torque_constant_nm_per_a, "K_T multiplies Eq. 522.3")
+    _non_negative("no_load_starting_current_a", no_load_starting_current_a, "I_NLS")
+    k_inl = no_load_current_constant_a_per_rpm(
+        temperature_c=temperature_c,
+        constant_30c_a_per_rpm=no_load_current_constant_30c_a_per_rpm,
+        constant_80c_a_per_rpm=no_load_current_constant_80c_a_per_rpm,
+        extrapolate=extrapolate,
+    )
+    extrapolated = not K_INL_LOW_TEMPERATURE_C <= temperature_c <= K_INL_HIGH_TEMPERATURE_C
+    i_nlr = no_load_starting_current_a + k_inl * abs(output_speed_rpm)
+    producing = current_a - i_nlr
+    torque = torque_constant_nm_per_a * producing
+    below = producing < 0
+    message = (
+        f"I_NLR = {i_nlr:.4g} A at {abs(output_speed_rpm):g} rpm and {temperature_c:g} °C; "
+        f"T_out = {torque_constant_nm_per_a:g} Nm/A · ({current_a:g} − {i_nlr:.4g}) A = "
+        f"{torque:.4g} Nm"
+    )
+    if below:
+        message += (
+            "; the measured current is below the no-load running current: the load drives "
+            "the actuator or the actuator is warmer than assumed (not clamped)"
+        )
+    if extrapolated:
+        message += (
+            f"; K_INL extrapolated outside {K_INL_LOW_TEMPERATURE_C:g}…"
+            f"{K_INL_HIGH_TEMPERATURE_C:g} °C"
+        )
+    return OutputTorque(
+        no_load_current_constant_a_per_rpm=k_inl,
+        no_load_running_current_a=i_nlr,
+        torque_producing_current_a=producing,
+        output_torque_nm=torque,
+        below_no_load_current=below,
+        extrapolated=extrapolated,
+        reference="Eq. 522.2, Eq. 522.3",
+        message=message,
+    )
