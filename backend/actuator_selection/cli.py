@@ -22,11 +22,13 @@ def _seed(args: argparse.Namespace) -> int:
     from actuator_selection.db.csvio import CatalogueFileError
     from actuator_selection.db.engine import make_engine, make_session_factory
     from actuator_selection.db.seed import load_seed
+    from actuator_selection.db.seed_controllers import load_controllers
 
     engine = make_engine(args.database_url)
     try:
         with make_session_factory(engine).begin() as session:
             report = load_seed(session, Path(args.directory))
+            protection = load_controllers(session, Path(args.directory))
     except CatalogueFileError as exc:
         print(f"seed: nothing loaded, {len(exc.problems)} problem(s):", file=sys.stderr)
         for problem in exc.problems:
@@ -34,7 +36,7 @@ def _seed(args: argparse.Namespace) -> int:
         return 1
     finally:
         engine.dispose()
-    print(f"seed: {report}")
+    print(f"seed: actuators {report}; controllers and sensors {protection}")
     return 0
 
 

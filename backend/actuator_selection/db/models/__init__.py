@@ -7,13 +7,25 @@ from actuator_selection.db.models.catalogue import (
     CatalogueStateRow,
     ZonePointRow,
 )
+from actuator_selection.db.models.controllers import (
+    ActuatorInterfaceRow,
+    ControllerRow,
+    DcBusClassRow,
+    SensorFittingRow,
+    SensorPointRow,
+)
 from actuator_selection.db.models.selections import SelectionRow
 
 __all__ = [
     "ActuatorFamilyRow",
+    "ActuatorInterfaceRow",
     "ActuatorRow",
     "Base",
     "CatalogueStateRow",
+    "ControllerRow",
+    "DcBusClassRow",
     "SelectionRow",
+    "SensorFittingRow",
+    "SensorPointRow",
     "ZonePointRow",
 ]

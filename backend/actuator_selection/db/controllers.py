@@ -1,0 +1,199 @@
+"""Reads of the controller catalogue and the winding-protection data, as core types."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TypeVar
+
+from sqlalchemy import select
+from sqlalchemy.orm import Session
+
+from actuator_selection.core.compatibility import (
+    MARK_COLUMNS,
+    ActuatorInterface,
+    BusClass,
+    Controller,
+    FeedbackSystem,
+    controller_from_record,
+    product_family,
+)
+from actuator_selection.core.electrical import DcBusClass
+from actuator_selection.core.errors import NotFoundError
+from actuator_selection.core.thermal import (
+    KtyCharacteristic,
+    SensorFitting,
+    TemperatureLimits,
+    TemperatureSensor,
+)
+from actuator_selection.db.models import (
+    ActuatorFamilyRow,
+    ActuatorInterfaceRow,
+    ActuatorRow,
+    ControllerRow,
+    DcBusClassRow,
+    SensorFittingRow,
+    SensorPointRow,
+)
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class ControllerRecord:
+    """A controller with its catalogue provenance."""
+
+    controller: Controller
+    source: str
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class InterfaceRecord:
+    """An actuator's matching data and how it was obtained."""
+
+    interface: ActuatorInterface
+    derivation: str | None
+    source: str | None
+
+
+_Option = TypeVar("_Option", BusClass, TemperatureSensor, FeedbackSystem)
+
+
+def _options(text: str | None, kind: type[_Option]) -> frozenset[_Option] | None:
+    return frozenset(kind(o) for o in text.split()) if text and text.strip() else None
+
+
+class ProtectionRepository:
+    """Controllers (Table 521.1), sensors (Tables 518.1, 519.2), bus classes, interfaces."""
+
+    def __init__(self, session: Session) -> None:
+        self._session = session
+
+    def controllers(self) -> list[ControllerRecord]:
+        """Every row of Table 521.1 in source order."""
+        rows = self._session.scalars(select(ControllerRow).order_by(ControllerRow.source_row))
+        columns = [column for _, _, column in MARK_COLUMNS]
+        return [
+            ControllerRecord(
+                controller=controller_from_record(
+                    {
+                        "source_row": r.source_row,
+                        "manufacturer": r.manufacturer,
+                        "type": r.type,
+                        "variant": r.variant,
+                        "correction": r.correction,
+                        **{c: getattr(r, c) for c in columns},
+                    }
+                ),
+                source=r.source,
+            )
+            for r in rows
+        ]
+
+    def interfaces(self, models: list[str] | None = None) -> dict[str, InterfaceRecord]:
+        """Matching data by actuator model (every listed model, with None where unknown)."""
+        stmt = (
+            select(ActuatorRow.model, ActuatorFamilyRow.name, ActuatorInterfaceRow)
+            .join(ActuatorFamilyRow, ActuatorRow.family_id == ActuatorFamilyRow.id)
+            .outerjoin(ActuatorInterfaceRow, ActuatorInterfaceRow.actuator_id == ActuatorRow.id)
+        )
+        if models is not None:
+            stmt = stmt.where(ActuatorRow.model.in_(models))
+        out: dict[str, InterfaceRecord] = {}
+        for model, family, row in self._session.execute(stmt).tuples():
+            try:
+                product = product_family(family)
+            except NotFoundError:
+                product = None
+            out[model] = InterfaceRecord(
+                interface=ActuatorInterface(
+                    family=product,
+                    bus_classes=_options(row.dc_bus_classes, BusClass) if row else None,
+                    temperature_sensors=(
+                        _options(row.temperature_sensors, TemperatureSensor) if row else None
+                    ),
+                    feedback_systems=_options(row.feedback_systems, FeedbackSystem)
+                    if row
+                    else None,
+                ),
+                derivation=row.derivation if row else None,
+                source=row.source if row else None,
+            )
+        return out
+
+    def bus_classes(self) -> list[DcBusClass]:
+        """The DC bus classes with their nominal voltages."""
+        rows = self._session.scalars(
+            select(DcBusClassRow).order_by(DcBusClassRow.nominal_dc_voltage_v)
+        )
+        return [
+            DcBusClass(bus_class=BusClass(r.bus_class), nominal_voltage_v=r.nominal_dc_voltage_v)
+            for r in rows
+        ]
+
+    def kty(self) -> KtyCharacteristic:
+        """The KTY 84-130 characteristic."""
+        rows = self._session.execute(
+            select(SensorPointRow.temperature_c, SensorPointRow.resistance_ohm)
+            .where(SensorPointRow.sensor == TemperatureSensor.KTY84_130.value)
+            .order_by(SensorPointRow.temperature_c)
+        ).tuples()
+        return KtyCharacteristic.from_points(rows)
+
+    def fittings(self, family: str) -> list[SensorFitting]:
+        """Sensors fitted to ``family`` (Table 518.1), empty when the table lists none."""
+        rows = self._session.scalars(
+            select(SensorFittingRow)
+            .join(ActuatorFamilyRow, SensorFittingRow.family_id == ActuatorFamilyRow.id)
+            .where(ActuatorFamilyRow.name == family)
+            .order_by(SensorFittingRow.id)
+        )
+        return [
+            SensorFitting(
+                family=family,
+                variant=r.variant,
+                sensor=TemperatureSensor(r.sensor),
+                sensor_count=r.sensor_count,
+                nominal_response_temperature_c=r.nominal_response_temperature_c,
+                designation=r.designation,
+            )
+            for r in rows
+        ]
+
+    def limits(self, family: str) -> TemperatureLimits | None:
+        """Warning and shutdown limits of ``family`` (Table 519.2); None when unpublished.
+
+        Raises
+        ------
+        NotFoundError
+            For a family the catalogue does not know.
+        """
+        row = self._session.scalars(
+            select(ActuatorFamilyRow).where(ActuatorFamilyRow.name == family)
+        ).one_or_none()
+        if row is None:
+            raise NotFoundError("family", f"unknown family {family!r}")
+        w_t, s_t, t_tol = (
+            row.warning_temperature_c,
+            row.shutdown_temperature_c,
+            row.temperature_tolerance_percent,
+        )
+        w_r, s_r, r_tol = (
+            row.warning_resistance_ohm,
+            row.shutdown_resistance_ohm,
+            row.resistance_tolerance_percent,
+        )
+        if (
+            w_t is None
+            or s_t is None
+            or t_tol is None
+            or w_r is None
+            or s_r is None
+            or r_tol is None
+        ):
+            return None
+        return TemperatureLimits(
+            warning_temperature_c=w_t,
+            shutdown_temperature_c=s_t,
+            temperature_tolerance_percent=t_tol,
+            warning_resistance_ohm=w_r,
+            shutdown_resistance_ohm=s_r,
+            resistance_tolerance_percent=r_tol,
+        )
