@@ -10,7 +10,15 @@ from fastapi.middleware.gzip import GZipMiddleware
 from fastapi.staticfiles import StaticFiles
 
 from actuator_selection import __version__
-from actuator_selection.api import actuators, errors, health, selections, static
+from actuator_selection.api import (
+    actuators,
+    controllers,
+    errors,
+    health,
+    selections,
+    static,
+    tools,
+)
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 
@@ -37,7 +45,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)
     errors.install(app)
-    for module in (health, actuators, selections):
+    for module in (health, actuators, controllers, selections, tools):
         app.include_router(module.router, prefix=API_PREFIX)
     app.include_router(static.router)
     app.add_middleware(GZipMiddleware, minimum_size=1024)

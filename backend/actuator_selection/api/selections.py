@@ -8,6 +8,7 @@ from datetime import UTC, datetime
 from fastapi import APIRouter, HTTPException
 
 from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.drive import DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import (
@@ -41,12 +42,15 @@ def create_selection(body: SelectionRequest, session: SessionDep) -> SelectionOu
         if unknown:
             raise RequestFieldError(unknown)
     selection = select([r.actuator for r in records], body.to_core())
+    drive = DriveContext(session, body.models)
+    speed = body.load.speed_rpm
     out = SelectionOut.build(
         id=str(uuid.uuid4()),
         created_at=datetime.now(UTC),
         catalogue_version=CatalogueVersionRepository(session).current(),
         request=body,
         selection=selection,
+        drives={r.actuator.model: drive.options(r.actuator, speed_rpm=speed) for r in records},
     )
     SelectionRepository(session).add(
         id=out.id,

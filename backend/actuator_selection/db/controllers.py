@@ -97,7 +97,7 @@ class ProtectionRepository:
         if models is not None:
             stmt = stmt.where(ActuatorRow.model.in_(models))
         out: dict[str, InterfaceRecord] = {}
-        for model, family, row in self._session.execute(stmt).tuples():
+        for model, family, row in self._session.execute(stmt):
             try:
                 product = product_family(family)
             except NotFoundError:
@@ -130,12 +130,12 @@ class ProtectionRepository:
 
     def kty(self) -> KtyCharacteristic:
         """The KTY 84-130 characteristic."""
-        rows = self._session.execute(
-            select(SensorPointRow.temperature_c, SensorPointRow.resistance_ohm)
+        rows = self._session.scalars(
+            select(SensorPointRow)
             .where(SensorPointRow.sensor == TemperatureSensor.KTY84_130.value)
             .order_by(SensorPointRow.temperature_c)
-        ).tuples()
-        return KtyCharacteristic.from_points(rows)
+        )
+        return KtyCharacteristic.from_points((r.temperature_c, r.resistance_ohm) for r in rows)
 
     def fittings(self, family: str) -> list[SensorFitting]:
         """Sensors fitted to ``family`` (Table 518.1), empty when the table lists none."""

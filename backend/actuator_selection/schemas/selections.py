@@ -5,14 +5,17 @@ Field names are part of the public API (issue "Selection engine end to end"); ke
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from datetime import datetime
 from typing import Annotated, Any, Literal
 
 from pydantic import Discriminator, Field, Tag
 
 from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.drive import DriveOptions
 from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
-from actuator_selection.core.selection import Application, Candidate, Check, Selection
+from actuator_selection.core.selection import Application, Candidate, Selection
+from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
     MAX_INERTIA_KGM2,
@@ -24,6 +27,11 @@ from actuator_selection.schemas.common import (
     MIN_RAMP_S,
     ResponseModel,
     StrictModel,
+)
+from actuator_selection.schemas.controllers import (
+    DriveOptionOut,
+    controllers_note,
+    drive_options_out,
 )
 
 SpeedRpm = Annotated[
@@ -165,35 +173,6 @@ class ResolvedLoad(ResponseModel):
     inertia_kgm2: float
 
 
-class CheckOut(ResponseModel):
-    """One step of the flowchart; ``value ≤ limit`` passes."""
-
-    name: str
-    status: Literal["pass", "fail", "warn", "no_data"]
-    value: float | None
-    limit: float | None
-    unit: str
-    reference: str = Field(description="the chapter's equation, table or figure")
-    message: str
-    approximate: bool = Field(description="true when a simplified limit stood in for the zone")
-    margin_percent: float | None = Field(description="(limit − value)/limit · 100")
-
-    @classmethod
-    def from_core(cls, check: Check) -> CheckOut:
-        """The response body of one check."""
-        return cls(
-            name=check.name,
-            status=check.status.value,
-            value=check.value,
-            limit=check.limit,
-            unit=check.unit,
-            reference=check.reference,
-            message=check.message,
-            approximate=check.approximate,
-            margin_percent=check.margin_percent,
-        )
-
-
 class CandidateOut(ResponseModel):
     """The flowchart's result for one actuator."""
 
@@ -207,10 +186,16 @@ class CandidateOut(ResponseModel):
     rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
     reasons: list[str] = Field(description="messages of the checks that did not pass")
     checks: list[CheckOut]
+    controllers: list[DriveOptionOut] = Field(
+        description="controllers of Table 521.1 not excluded for this actuator, best first, "
+        "each with its output-voltage check (Eq. 521.2) at n_2"
+    )
+    controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
+    controllers_note: str = Field(description="what the controller list rests on")
 
     @classmethod
-    def from_core(cls, candidate: Candidate) -> CandidateOut:
-        """The response body of one candidate."""
+    def from_core(cls, candidate: Candidate, drive: DriveOptions) -> CandidateOut:
+        """The response body of one candidate with its drive options."""
         t = candidate.torques
         a = candidate.actuator
         return cls(
@@ -224,6 +209,9 @@ class CandidateOut(ResponseModel):
             rms_torque_nm=t.rms_torque_nm if t else None,
             reasons=list(candidate.reasons),
             checks=[CheckOut.from_core(c) for c in candidate.checks],
+            controllers=drive_options_out(drive),
+            controllers_excluded=drive.excluded,
+            controllers_note=controllers_note(drive),
         )
 
 
@@ -258,6 +246,7 @@ class SelectionOut(ResponseModel):
         catalogue_version: int,
         request: SelectionRequest,
         selection: Selection,
+        drives: Mapping[str, DriveOptions],
     ) -> SelectionOut:
         """The response body of a selection just run."""
         app_load = request.load.to_core()
@@ -279,5 +268,7 @@ class SelectionOut(ResponseModel):
             cycle_time_s=selection.cycle_time_s,
             mean_speed_rpm=selection.mean_speed_rpm,
             duty_cycle_percent=selection.duty_cycle_percent,
-            candidates=[CandidateOut.from_core(c) for c in selection.candidates],
+            candidates=[
+                CandidateOut.from_core(c, drives[c.actuator.model]) for c in selection.candidates
+            ],
         )

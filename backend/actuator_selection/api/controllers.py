@@ -1,0 +1,74 @@
+"""Servo controllers (Table 521.1) and their matching against catalogue actuators."""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from fastapi import APIRouter, HTTPException, Query
+
+from actuator_selection.api.deps import SessionDep
+from actuator_selection.core.compatibility import (
+    BusClass,
+    FeedbackSystem,
+    Option,
+    SupportLevel,
+    match_controllers,
+    product_family,
+)
+from actuator_selection.core.thermal import TemperatureSensor
+from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.schemas.controllers import (
+    ActuatorControllersOut,
+    ControllerMatchOut,
+    ControllerOut,
+    InterfaceOut,
+)
+
+router = APIRouter(tags=["controllers"])
+
+
+@router.get("/controllers")
+def list_controllers(
+    session: SessionDep,
+    manufacturer: Annotated[str | None, Query(max_length=80, description="substring")] = None,
+    family: Annotated[
+        str | None, Query(max_length=40, description="actuator family, e.g. CHA or FHA-C mini")
+    ] = None,
+    bus_class: BusClass | None = None,
+    sensor: TemperatureSensor | None = None,
+    feedback: FeedbackSystem | None = None,
+    level: Annotated[
+        Literal["tested", "possible"],
+        Query(description="least level the given criteria need: 'possible' admits ● and ○"),
+    ] = "possible",
+) -> list[ControllerOut]:
+    """Rows of Table 521.1 that support every given criterion at the given level."""
+    options: list[Option] = [o for o in (bus_class, sensor, feedback) if o is not None]
+    if family is not None:
+        options.append(product_family(family))
+    wanted = {SupportLevel.TESTED} if level == "tested" else set(SupportLevel)
+    records = ProtectionRepository(session).controllers()
+    return [
+        ControllerOut.from_record(r)
+        for r in records
+        if (manufacturer is None or manufacturer.lower() in r.controller.manufacturer.lower())
+        and all(r.controller.level(o) in wanted for o in options)
+    ]
+
+
+@router.get("/actuators/{model}/controllers", responses={404: {"description": "unknown model"}})
+def actuator_controllers(model: str, session: SessionDep) -> ActuatorControllersOut:
+    """Every controller matched against the actuator, supported ones first."""
+    if CatalogueRepository(session).actuator(model) is None:
+        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+    repo = ProtectionRepository(session)
+    interface = repo.interfaces([model])[model]
+    result = match_controllers(
+        actuator=interface.interface, controllers=[r.controller for r in repo.controllers()]
+    )
+    return ActuatorControllersOut(
+        model=model,
+        interface=InterfaceOut.from_record(interface),
+        controllers=[ControllerMatchOut.from_core(m) for m in result.matches],
+    )

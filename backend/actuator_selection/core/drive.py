@@ -1,0 +1,153 @@
+"""From a chosen actuator to a working drive: compatible controllers and their voltage.
+
+Joins the matching of Table 521.1 with the controller output voltage of
+Eq. 521.2. The voltage is checked for each actuator–controller pair that has the
+data: the controller's bus classes that the actuator also runs on, the largest
+output voltage among them, against U_OUT at the load speed n_2; U_OUT at n_max
+is reported beside it, since a drive that cannot reach n_max still serves a
+slower load.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.compatibility import (
+    ActuatorInterface,
+    Controller,
+    ControllerMatch,
+    MatchVerdict,
+    match_controllers,
+)
+from actuator_selection.core.electrical import (
+    DcBusClass,
+    OutputVoltageCheck,
+    check_output_voltage,
+    controller_output_voltage,
+)
+from actuator_selection.core.selection import Check, Status
+
+VOLTAGE_REFERENCE = "Eq. 521.2"
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class DriveOption:
+    """A controller that is not excluded for the actuator, with its voltage check."""
+
+    match: ControllerMatch
+    voltage: Check
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class DriveOptions:
+    """The controllers for one actuator: usable ones best first, and how many are excluded."""
+
+    options: tuple[DriveOption, ...]
+    excluded: int
+
+
+def _no_voltage_data(reason: str) -> Check:
+    return Check(
+        name="controller_voltage",
+        status=Status.NO_DATA,
+        value=None,
+        limit=None,
+        unit="V",
+        reference=VOLTAGE_REFERENCE,
+        message=f"no data: {reason}",
+    )
+
+
+def voltage_check(
+    *,
+    actuator: Actuator,
+    interface: ActuatorInterface,
+    controller: Controller,
+    buses: Sequence[DcBusClass],
+    speed_rpm: float,
+) -> Check:
+    """U_OUT (Eq. 521.2) at ``speed_rpm`` against the best bus class the pair shares.
+
+    Only the CHA-style constants (motor K_E in V_rms line-to-line per 1000 rpm,
+    R line-to-line) are used: for catalogues that give k_E per output rpm without
+    saying whether it is rms or peak, comparing with an rms bus voltage would be
+    a guess, so those pairs say "no data".
+    """
+    k_e = actuator.motor_voltage_constant_v_per_krpm
+    i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
+    if k_e is None or i_max is None or r_line is None:
+        return _no_voltage_data(
+            "the catalogue gives no motor K_E (V_rms per 1000 rpm), I_max and line-to-line R"
+        )
+    if interface.bus_classes is None:
+        return _no_voltage_data("the actuator's DC bus class is not published")
+    shared = [
+        b
+        for b in buses
+        if b.bus_class in interface.bus_classes and controller.level(b.bus_class) is not None
+    ]
+    if not shared:
+        return _no_voltage_data("the controller and the actuator share no DC bus class")
+
+    def required(speed: float) -> float:
+        return controller_output_voltage(
+            output_speed_rpm=speed,
+            gear_ratio=actuator.gear_ratio,
+            motor_voltage_constant_v_per_krpm=k_e,
+            max_current_a=i_max,
+            resistance_line_ohm=r_line,
+        ).total_v
+
+    u_load = required(speed_rpm)
+    best: OutputVoltageCheck = max(
+        (check_output_voltage(required_voltage_v=u_load, bus=b) for b in shared),
+        key=lambda c: c.available_voltage_v,
+    )
+    message = best.message + f" at n_2 = {speed_rpm:.4g} rpm"
+    if actuator.max_speed_rpm is not None:
+        u_max = required(actuator.max_speed_rpm)
+        reach = "reaches" if u_max <= best.available_voltage_v else "does not reach"
+        message += (
+            f"; at n_max = {actuator.max_speed_rpm:.4g} rpm U_OUT = {u_max:.4g} V_rms, "
+            f"so this bus {reach} n_max"
+        )
+    return Check(
+        name="controller_voltage",
+        status=Status.PASS if best.sufficient else Status.FAIL,
+        value=u_load,
+        limit=best.available_voltage_v,
+        unit="V",
+        reference=f"{VOLTAGE_REFERENCE} ({best.bus_class.value} bus)",
+        message=message,
+    )
+
+
+def drive_options(
+    *,
+    actuator: Actuator,
+    interface: ActuatorInterface,
+    controllers: Sequence[Controller],
+    buses: Sequence[DcBusClass],
+    speed_rpm: float,
+) -> DriveOptions:
+    """Controllers not excluded by Table 521.1, tested first, each with its voltage check."""
+    result = match_controllers(actuator=interface, controllers=controllers)
+    usable = [m for m in result.matches if m.verdict is not MatchVerdict.EXCLUDED]
+    return DriveOptions(
+        options=tuple(
+            DriveOption(
+                match=m,
+                voltage=voltage_check(
+                    actuator=actuator,
+                    interface=interface,
+                    controller=m.controller,
+                    buses=buses,
+                    speed_rpm=speed_rpm,
+                ),
+            )
+            for m in usable
+        ),
+        excluded=len(result.matches) - len(usable),
+    )

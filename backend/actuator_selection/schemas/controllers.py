@@ -1,0 +1,172 @@
+"""Controllers of Table 521.1, their matching against actuators, and drive options."""
+
+from __future__ import annotations
+
+from enum import StrEnum
+from typing import Literal
+
+from pydantic import Field
+
+from actuator_selection.core.compatibility import (
+    MARK_COLUMNS,
+    ActuatorInterface,
+    Controller,
+    ControllerMatch,
+    CriterionResult,
+)
+from actuator_selection.core.drive import DriveOptions
+from actuator_selection.db.controllers import ControllerRecord, InterfaceRecord
+from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.common import ResponseModel
+
+Level = Literal["tested", "possible"]
+
+
+class ControllerOut(ResponseModel):
+    """One row of Table 521.1: marks by column, ``tested`` = ●, ``possible`` = ○."""
+
+    manufacturer: str
+    type: str
+    variant: str | None = Field(description="tells apart rows whose type name repeats")
+    source_row: int | None
+    marks: dict[str, Level]
+    correction: str | None = Field(description="what was changed against the source row")
+    source: str
+
+    @classmethod
+    def from_record(cls, record: ControllerRecord) -> ControllerOut:
+        """The response body of one controller."""
+        c = record.controller
+        marks: dict[str, Level] = {}
+        for _, option, column in MARK_COLUMNS:
+            level = c.level(option)
+            if level is not None:
+                marks[column] = level.value
+        return cls(
+            manufacturer=c.manufacturer,
+            type=c.type,
+            variant=c.variant,
+            source_row=c.source_row,
+            marks=marks,
+            correction=c.correction,
+            source=record.source,
+        )
+
+
+class CriterionOut(ResponseModel):
+    """One criterion of Table 521.1 for one actuator–controller pair."""
+
+    criterion: str
+    status: Literal["tested", "possible", "excluded", "no_data"]
+    option: str | None
+    message: str
+    reference: str
+
+    @classmethod
+    def from_core(cls, result: CriterionResult) -> CriterionOut:
+        """The response body of one criterion."""
+        return cls(
+            criterion=result.criterion.value,
+            status=result.status.value,
+            option=None if result.option is None else str(result.option.value),
+            message=result.message,
+            reference=result.reference,
+        )
+
+
+class ControllerMatchOut(ResponseModel):
+    """How one controller fits one actuator (Table 521.1)."""
+
+    manufacturer: str
+    type: str
+    variant: str | None
+    source_row: int | None
+    level: Literal["tested", "possible", "unconfirmed", "excluded"] = Field(
+        description="tested: every criterion practically tested; possible: some only "
+        "theoretically; unconfirmed: nothing excludes it but the actuator lacks data; "
+        "excluded: a criterion is not supported"
+    )
+    missing: list[str] = Field(description="criteria the actuator has no data for")
+    excluded_by: list[str]
+    criteria: list[CriterionOut]
+
+    @classmethod
+    def from_core(cls, match: ControllerMatch) -> ControllerMatchOut:
+        """The response body of one match."""
+        c: Controller = match.controller
+        return cls(
+            manufacturer=c.manufacturer,
+            type=c.type,
+            variant=c.variant,
+            source_row=c.source_row,
+            level=match.verdict.value,
+            missing=[r.criterion.value for r in match.no_data],
+            excluded_by=[r.criterion.value for r in match.excluded_by],
+            criteria=[CriterionOut.from_core(r) for r in match.criteria],
+        )
+
+
+class DriveOptionOut(ControllerMatchOut):
+    """A controller not excluded for a candidate, with its output-voltage check (Eq. 521.2)."""
+
+    voltage: CheckOut
+
+
+class InterfaceOut(ResponseModel):
+    """What matching knows of an actuator; ``null`` = no public source gives it."""
+
+    family_column: str | None
+    dc_bus_classes: list[str] | None
+    temperature_sensors: list[str] | None
+    feedback_systems: list[str] | None
+    derivation: str | None
+    source: str | None
+
+    @classmethod
+    def from_record(cls, record: InterfaceRecord) -> InterfaceOut:
+        """The response body of an actuator's matching data."""
+        i: ActuatorInterface = record.interface
+
+        def names(options: frozenset[StrEnum] | None) -> list[str] | None:
+            return None if options is None else sorted(o.value for o in options)
+
+        return cls(
+            family_column=None if i.family is None else i.family.value,
+            dc_bus_classes=names(i.bus_classes),
+            temperature_sensors=names(i.temperature_sensors),
+            feedback_systems=names(i.feedback_systems),
+            derivation=record.derivation,
+            source=record.source,
+        )
+
+
+class ActuatorControllersOut(ResponseModel):
+    """Every controller of Table 521.1 matched against one actuator, best first."""
+
+    model: str
+    interface: InterfaceOut
+    controllers: list[ControllerMatchOut]
+
+
+def drive_options_out(drive: DriveOptions) -> list[DriveOptionOut]:
+    """The candidate's ``controllers`` list."""
+    return [
+        DriveOptionOut(
+            **ControllerMatchOut.from_core(o.match).model_dump(),
+            voltage=CheckOut.from_core(o.voltage),
+        )
+        for o in drive.options
+    ]
+
+
+def controllers_note(drive: DriveOptions) -> str:
+    """One sentence on what the controller list rests on."""
+    if not drive.options:
+        return "no controller of Table 521.1 supports this actuator"
+    missing = sorted({r.criterion.value for o in drive.options for r in o.match.no_data})
+    if not missing:
+        return f"{len(drive.options)} controllers support this actuator ({drive.excluded} excluded)"
+    return (
+        f"{len(drive.options)} controllers are not excluded ({drive.excluded} are), but the "
+        f"catalogue has no data for: {', '.join(missing)}; those criteria stay unconfirmed"
+    )
