@@ -39,6 +39,7 @@ def test_get_actuator_with_source_and_empty_unpublished_values(client: TestClien
     assert body["stall_torque_nm"] is None
     assert body["continuous_duty_zone"] is None
     assert "Table 516.3" in body["source"]
+    assert body["output_turns_opposite_to_motor"] is True
 
 
 def test_unknown_model_is_404(client: TestClient) -> None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pydantic import Field
 
+from actuator_selection.core.electrical import OUTPUT_TURNS_OPPOSITE_TO_MOTOR
 from actuator_selection.db.repositories import ActuatorRecord, FamilyRecord
 from actuator_selection.schemas.common import ResponseModel
 
@@ -57,6 +58,12 @@ class ActuatorOut(ResponseModel):
         description="upper edge of the continuous-duty zone, where published"
     )
     continuous_duty_zone_source: str | None
+    output_turns_opposite_to_motor: bool = Field(
+        default=OUTPUT_TURNS_OPPOSITE_TO_MOTOR,
+        description="the integrated Harmonic Drive gear reverses the direction: the output "
+        "turns counter-clockwise when the motor shaft turns clockwise (chapter, Direction of "
+        "Rotation)",
+    )
     notes: str | None
     source: str
 
