@@ -1,0 +1,590 @@
+// The engineer's page: reads the form, asks the API, shows what it answers.
+// No engineering is computed here; see figures.js for how answers become charts.
+
+import { ApiError, createSelection, getActuator, getSelection, loadPlotly } from "./api.js";
+import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
+import { appendSymbols, num, qty } from "./format.js";
+import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "./i18n.js";
+import {
+  h,
+  notice,
+  renderDetail,
+  renderPermalink,
+  renderRanking,
+  renderSummary,
+  resultSentence,
+} from "./results.js";
+
+const LOAD_KINDS = ["direct", "ball_screw", "rotary_table"];
+const MECHANISM_FIELDS = {
+  ball_screw: ["mass_kg", "lead_m", "friction_coefficient", "efficiency", "screw_inertia_kgm2"],
+  rotary_table: ["mass_kg", "diameter_m", "friction_coefficient", "friction_radius_m"],
+};
+/** Table 516.1, the chapter's worked example. */
+const EXAMPLE = {
+  kind: "direct",
+  "load.speed_rpm": 40,
+  "load.torque_nm": 5,
+  "load.inertia_kgm2": 1.3,
+  "cycle.accel_s": 0.1,
+  "cycle.constant_s": 0.1,
+  "cycle.decel_s": 0.1,
+  "cycle.pause_s": 1,
+};
+
+const state = {
+  lang: "de",
+  selection: null,
+  chosen: null,
+  filter: "all",
+  stale: false,
+  busy: false,
+  /** the last thing the results area should say when there is no selection */
+  message: null,
+};
+
+const $ = (selector, root = document) => root.querySelector(selector);
+const form = () => $("#selection-form");
+const t = (key, params) => translate(state.lang, key, params);
+
+// ---------------------------------------------------------------- form
+
+function loadKind() {
+  const checked = $('input[name="load-kind"]:checked');
+  return LOAD_KINDS.includes(checked?.value) ? checked.value : "direct";
+}
+
+function setLoadKind(kind) {
+  for (const radio of document.querySelectorAll('input[name="load-kind"]')) {
+    radio.checked = radio.value === kind;
+  }
+  for (const fs of document.querySelectorAll("fieldset.mechanism")) {
+    const active = fs.dataset.kind === kind;
+    fs.hidden = !active;
+    fs.disabled = !active; // inactive fields are neither validated nor sent
+  }
+}
+
+/** The input for an API path among the active fields ("load.mass_kg" → #f-rt-mass …). */
+function fieldFor(path) {
+  for (const el of form().querySelectorAll(`[data-path="${CSS.escape(path)}"]`)) {
+    if (!el.closest("fieldset[disabled]")) return el;
+  }
+  return null;
+}
+
+function readNumber(path) {
+  const el = fieldFor(path);
+  if (!el || el.value.trim() === "") return null;
+  const value = Number(el.value);
+  return Number.isFinite(value) ? value : null;
+}
+
+/** The request body; empty fields go as null so that the API names them. */
+function readForm() {
+  const kind = loadKind();
+  let load;
+  if (kind === "direct") {
+    load = {
+      speed_rpm: readNumber("load.speed_rpm"),
+      torque_nm: readNumber("load.torque_nm"),
+      inertia_kgm2: readNumber("load.inertia_kgm2"),
+    };
+  } else {
+    load = { type: kind, speed_rpm: readNumber("load.speed_rpm") };
+    for (const field of MECHANISM_FIELDS[kind]) {
+      const value = readNumber(`load.${field}`);
+      // J_S may be left empty: the API's default (0) applies
+      if (value !== null || field !== "screw_inertia_kgm2") load[field] = value;
+    }
+  }
+  const body = {
+    load,
+    cycle: {
+      accel_s: readNumber("cycle.accel_s"),
+      constant_s: readNumber("cycle.constant_s"),
+      decel_s: readNumber("cycle.decel_s"),
+      pause_s: readNumber("cycle.pause_s"),
+    },
+    high_dynamics: $("#f-hd").checked,
+  };
+  const models = $("#f-models")
+    .value.split(/[,;\s]+/)
+    .map((m) => m.trim())
+    .filter(Boolean);
+  if (models.length) body.models = models;
+  return body;
+}
+
+function setField(path, value) {
+  const el = fieldFor(path);
+  if (el) el.value = typeof value === "number" && Number.isFinite(value) ? String(value) : "";
+}
+
+/** Refill the form from a stored selection's echo (load, mechanism, cycle, high_dynamics). */
+function fillForm(sel) {
+  const mech = sel.mechanism && typeof sel.mechanism === "object" ? sel.mechanism : null;
+  const kind = mech && LOAD_KINDS.includes(mech.type) ? mech.type : "direct";
+  setLoadKind(kind);
+  setField("load.speed_rpm", mech?.speed_rpm ?? sel.load.speed_rpm);
+  if (kind === "direct") {
+    setField("load.torque_nm", sel.load.torque_nm);
+    setField("load.inertia_kgm2", sel.load.inertia_kgm2);
+  } else {
+    for (const field of MECHANISM_FIELDS[kind]) setField(`load.${field}`, mech[field]);
+  }
+  setField("cycle.accel_s", sel.cycle.accel_s);
+  setField("cycle.constant_s", sel.cycle.constant_s);
+  setField("cycle.decel_s", sel.cycle.decel_s);
+  setField("cycle.pause_s", sel.cycle.pause_s);
+  $("#f-hd").checked = Boolean(sel.high_dynamics);
+  updateCycleSum();
+}
+
+function fillExample() {
+  setLoadKind(EXAMPLE.kind);
+  for (const [path, value] of Object.entries(EXAMPLE)) if (path !== "kind") setField(path, value);
+  $("#f-hd").checked = true;
+  $("#f-models").value = "";
+  clearErrors();
+  onFormEdited();
+  updateCycleSum();
+}
+
+/** t_1 + t_2 + t_3 + t_p of the inputs as typed: an echo, not a result. */
+function updateCycleSum() {
+  const parts = ["cycle.accel_s", "cycle.constant_s", "cycle.decel_s", "cycle.pause_s"].map(readNumber);
+  const out = $("#cycle-sum");
+  out.textContent = parts.every((p) => p !== null) ? num(parts.reduce((a, b) => a + b, 0), state.lang) : "–";
+}
+
+/** The server's T_L and J_L for a mechanism, shown inside its fieldset. */
+function updateResolved() {
+  for (const fs of document.querySelectorAll("fieldset.mechanism[data-kind]")) {
+    const box = $(".resolved-values", fs);
+    if (!box) continue;
+    box.replaceChildren();
+    const sel = state.selection;
+    const mech = sel?.mechanism && typeof sel.mechanism === "object" ? sel.mechanism : null;
+    if (!sel || mech?.type !== fs.dataset.kind) {
+      appendSymbols(box, t("resolved.pending"));
+      box.parentElement.classList.add("pending");
+      continue;
+    }
+    box.parentElement.classList.remove("pending");
+    const item = (symbol, value, unit, id) =>
+      h(
+        "span",
+        { class: "resolved-item" },
+        appendSymbols(h("span", { class: "sym" }), symbol),
+        " = ",
+        h("output", { id, "data-value": String(value) }, qty(value, unit, state.lang)),
+      );
+    box.append(
+      item("T_L", sel.load.torque_nm, "Nm", `resolved-${fs.dataset.kind}-torque`),
+      " ",
+      item("J_L", sel.load.inertia_kgm2, "kgm²", `resolved-${fs.dataset.kind}-inertia`),
+      state.stale ? h("span", { class: "muted" }, ` ${t("resolved.stale")}`) : null,
+    );
+  }
+}
+
+// ---------------------------------------------------------------- errors
+
+function clearErrors() {
+  $("#form-status").replaceChildren();
+  for (const el of form().querySelectorAll(".field-error")) {
+    el.hidden = true;
+    el.replaceChildren();
+  }
+  for (const el of form().querySelectorAll("[aria-invalid]")) el.removeAttribute("aria-invalid");
+  for (const el of form().querySelectorAll(".has-error")) el.classList.remove("has-error");
+}
+
+function errorElementFor(control) {
+  if (control.matches("fieldset")) {
+    const id = control.getAttribute("aria-describedby");
+    return id ? document.getElementById(id) : null;
+  }
+  const ids = (control.getAttribute("aria-describedby") ?? "").split(/\s+/);
+  return ids.map((id) => document.getElementById(id)).find((el) => el?.classList.contains("field-error"));
+}
+
+/** The control an error location names: ["body", "load", "ball_screw", "lead_m"] → lead field. */
+function controlForLoc(loc) {
+  const parts = loc.filter((p, i) => !(i === 0 && p === "body"));
+  // the union tag of a mechanism load is not a field
+  if (parts[0] === "load" && LOAD_KINDS.includes(parts[1])) parts.splice(1, 1);
+  const names = parts.filter((p) => typeof p === "string");
+  for (let n = names.length; n > 0; n -= 1) {
+    const path = names.slice(0, n).join(".");
+    const control = fieldFor(path) ?? form().querySelector(`fieldset[data-path="${CSS.escape(path)}"]`);
+    if (control) return control;
+  }
+  return null;
+}
+
+function showFieldErrors(errors) {
+  const unplaced = [];
+  let first = null;
+  for (const error of errors) {
+    const control = controlForLoc(error.loc);
+    const target = control && errorElementFor(control);
+    if (!target) {
+      unplaced.push(error);
+      continue;
+    }
+    const index = error.loc.at(-1);
+    const prefix = typeof index === "number" && error.loc.includes("models") ? `#${index + 1}: ` : "";
+    target.append(appendSymbols(h("span", { class: "error-line", lang: "en" }), `${prefix}${error.msg}`));
+    target.hidden = false;
+    if (!control.matches("fieldset")) control.setAttribute("aria-invalid", "true");
+    control.closest(".field")?.classList.add("has-error");
+    first ??= control;
+  }
+  const status = $("#form-status");
+  status.replaceChildren(
+    h("p", {}, t("form.errors"), " ", h("strong", {}, t("form.error.count", { n: errors.length }))),
+  );
+  if (unplaced.length) {
+    status.append(
+      h(
+        "ul",
+        {},
+        unplaced.map((e) => h("li", { lang: "en" }, `${e.loc.join(" › ")}: ${e.msg}`)),
+      ),
+    );
+  }
+  status.classList.add("is-error");
+  (first && !first.matches("fieldset") ? first : status).focus?.();
+}
+
+function describeFailure(error) {
+  if (!(error instanceof ApiError)) return t("results.badresponse");
+  if (error.kind === "network") return t("results.network");
+  if (error.kind === "bad_response") return t("results.badresponse");
+  const detail = error.detail ? `: ${error.detail}` : "";
+  if (error.status === 404) return `${t("results.notfound")}${detail}`;
+  return `${t("results.server")} (HTTP ${error.status})${detail}`;
+}
+
+// ---------------------------------------------------------------- results
+
+function chosenCandidate() {
+  const list = state.selection?.candidates ?? [];
+  return list.find((c) => c.model === state.chosen) ?? list[0] ?? null;
+}
+
+function permalinkUrl() {
+  const url = new URL(window.location.href);
+  url.search = "";
+  url.hash = "";
+  url.searchParams.set("selection", state.selection.id);
+  if (state.chosen && state.chosen !== state.selection.candidates[0]?.model) {
+    url.searchParams.set("model", state.chosen);
+  }
+  return url.toString();
+}
+
+function updateUrl() {
+  if (!state.selection) return;
+  const url = permalinkUrl();
+  window.history.replaceState({ selection: state.selection.id }, "", url);
+  const input = $("#permalink");
+  if (input) input.value = url;
+}
+
+async function copyLink() {
+  const input = $("#permalink");
+  const status = $("#copy-status");
+  if (!input) return;
+  let ok = false;
+  try {
+    await navigator.clipboard.writeText(input.value);
+    ok = true;
+  } catch {
+    input.focus();
+    input.select();
+    try {
+      ok = document.execCommand("copy");
+    } catch {
+      ok = false;
+    }
+  }
+  if (status) status.textContent = t(ok ? "permalink.copied" : "permalink.copyfail");
+}
+
+function renderResults() {
+  const body = $("#results-body");
+  purgeCharts();
+  body.replaceChildren();
+  const results = $("#results");
+  results.classList.toggle("is-stale", state.stale);
+  results.setAttribute("aria-busy", String(state.busy));
+  const sel = state.selection;
+  if (!sel) {
+    body.append(
+      state.busy
+        ? notice("info", h("p", { class: "loading" }, t(state.message ?? "results.loading")))
+        : notice("info", appendSymbols(h("p"), t("results.empty"))),
+    );
+    updateResolved();
+    return;
+  }
+  if (state.stale) body.append(notice("warn", h("p", {}, t("results.stale"))));
+  body.append(renderSummary(sel, state.lang), renderPermalink(permalinkUrl(), state.lang, copyLink));
+  if (!sel.candidates.length) {
+    body.append(notice("info", h("p", {}, t("results.none"))));
+    updateResolved();
+    return;
+  }
+  body.append(
+    renderRanking(sel, chosenCandidate().model, state.filter, state.lang, {
+      onChoose: choose,
+      onFilter: (f) => {
+        state.filter = f;
+        applyFilter();
+      },
+    }),
+    h("div", { id: "detail-slot" }),
+  );
+  renderChosen();
+  updateResolved();
+}
+
+function applyFilter() {
+  for (const row of document.querySelectorAll("#ranking-table tbody tr[data-model]")) {
+    row.hidden = state.filter !== "all" && row.dataset.verdict !== state.filter;
+  }
+  for (const button of document.querySelectorAll(".filter-button")) {
+    button.setAttribute("aria-pressed", String(button.dataset.filter === state.filter));
+  }
+}
+
+function renderChosen() {
+  const slot = $("#detail-slot");
+  const candidate = chosenCandidate();
+  if (!slot || !candidate) return;
+  purgeCharts();
+  slot.replaceChildren(renderDetail(state.selection, candidate, state.lang));
+  for (const row of document.querySelectorAll("#ranking-table tbody tr[data-model]")) {
+    const chosen = row.dataset.model === candidate.model;
+    row.classList.toggle("chosen", chosen);
+    if (chosen) row.setAttribute("aria-current", "true");
+    else row.removeAttribute("aria-current");
+    row.querySelector(".model-button")?.setAttribute("aria-pressed", String(chosen));
+  }
+  drawCharts();
+}
+
+function choose(model) {
+  if (!state.selection?.candidates.some((c) => c.model === model)) return;
+  state.chosen = model;
+  renderChosen();
+  updateUrl();
+  announce(resultSentence(state.selection, model, state.lang));
+}
+
+function announce(text) {
+  const status = $("#results-status");
+  status.textContent = "";
+  // a fresh text node makes screen readers announce even an identical sentence
+  window.setTimeout(() => {
+    status.textContent = text;
+  }, 30);
+}
+
+function showAlert(text) {
+  const alert = $("#results-alert");
+  alert.replaceChildren(text ? notice("error", h("p", {}, text)) : "");
+}
+
+// ---------------------------------------------------------------- charts
+
+let drawToken = 0;
+const PLOT_CONFIG = {
+  responsive: true,
+  displaylogo: false,
+  modeBarButtonsToRemove: ["select2d", "lasso2d", "autoScale2d"],
+};
+
+function purgeCharts() {
+  if (!window.Plotly) return;
+  for (const div of document.querySelectorAll(".chart.js-plotly-plot")) window.Plotly.purge(div);
+}
+
+function chartUnavailable(div, text) {
+  div.dataset.state = "error";
+  div.replaceChildren(h("p", { class: "chart-placeholder chart-error" }, text));
+}
+
+async function drawCharts() {
+  const token = ++drawToken;
+  const sel = state.selection;
+  const candidate = chosenCandidate();
+  const lang = state.lang;
+  const cycleDiv = $("#chart-cycle");
+  const diagramDiv = $("#chart-diagram");
+  if (!sel || !candidate || !cycleDiv || !diagramDiv) return;
+  $("#cycle-caption").replaceChildren(appendSymbols(h("span"), cycleCaption(sel, candidate, lang)));
+
+  let Plotly;
+  try {
+    Plotly = await loadPlotly();
+  } catch {
+    if (token !== drawToken) return;
+    chartUnavailable(cycleDiv, t("charts.unavailable"));
+    chartUnavailable(diagramDiv, t("charts.unavailable"));
+    return;
+  }
+  if (token !== drawToken) return;
+  const config = (name) => ({ ...PLOT_CONFIG, toImageButtonOptions: { filename: `${candidate.model}-${name}` } });
+
+  const cycle = cycleFigure(sel, candidate, lang);
+  cycleDiv.replaceChildren();
+  await Plotly.react(cycleDiv, cycle.data, cycle.layout, config("cycle"));
+  cycleDiv.dataset.model = candidate.model;
+  cycleDiv.dataset.state = "ready";
+
+  let actuator = null;
+  try {
+    actuator = await getActuator(candidate.model);
+  } catch {
+    actuator = null; // drawn without catalogue limits, and said so on the chart
+  }
+  if (token !== drawToken) return;
+  $("#diagram-caption").replaceChildren(
+    appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),
+  );
+  const diagram = diagramFigure(sel, candidate, actuator, lang);
+  diagramDiv.replaceChildren();
+  await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
+  diagramDiv.dataset.model = candidate.model;
+  diagramDiv.dataset.state = "ready";
+}
+
+// ---------------------------------------------------------------- flow
+
+function setBusy(busy, messageKey = "results.loading") {
+  state.busy = busy;
+  state.message = messageKey;
+  const submit = $("#submit");
+  submit.disabled = busy;
+  submit.textContent = t(busy ? "form.running" : "form.submit");
+  $("#results").setAttribute("aria-busy", String(busy));
+}
+
+function acceptSelection(sel, preferredModel) {
+  if (!sel || !Array.isArray(sel.candidates) || !sel.load || !sel.cycle) {
+    throw new ApiError({ status: 200, kind: "bad_response" });
+  }
+  state.selection = sel;
+  state.stale = false;
+  state.filter = "all";
+  const models = sel.candidates.map((c) => c.model);
+  state.chosen = models.includes(preferredModel) ? preferredModel : (models[0] ?? null);
+  renderResults();
+  updateUrl();
+  announce(resultSentence(sel, state.chosen, state.lang));
+}
+
+async function onSubmit(event) {
+  event.preventDefault();
+  if (state.busy) return;
+  clearErrors();
+  showAlert(null);
+  const body = readForm();
+  setBusy(true);
+  if (!state.selection) renderResults();
+  try {
+    const sel = await createSelection(body);
+    setBusy(false);
+    acceptSelection(sel);
+  } catch (error) {
+    setBusy(false);
+    if (error instanceof ApiError && error.fieldErrors.length && error.status === 422) {
+      showFieldErrors(error.fieldErrors);
+      showAlert(t("form.errors"));
+    } else {
+      showAlert(describeFailure(error));
+    }
+    if (state.selection) $("#results").setAttribute("aria-busy", "false");
+    else renderResults();
+  }
+}
+
+async function openPermalink(id, model) {
+  setBusy(true, "results.loading.permalink");
+  renderResults();
+  try {
+    const sel = await getSelection(id);
+    setBusy(false);
+    fillForm(sel);
+    acceptSelection(sel, model);
+  } catch (error) {
+    setBusy(false);
+    showAlert(describeFailure(error));
+    renderResults();
+  }
+}
+
+function onFormEdited() {
+  if (state.selection && !state.stale) {
+    state.stale = true;
+    $("#results").classList.add("is-stale");
+    const body = $("#results-body");
+    body.prepend(notice("warn", h("p", {}, t("results.stale"))));
+    updateResolved();
+  }
+}
+
+function applyLang(lang) {
+  state.lang = LANGS.includes(lang) ? lang : "de";
+  document.documentElement.lang = state.lang;
+  applyStaticTexts(document, state.lang);
+  for (const button of document.querySelectorAll(".lang-button")) {
+    button.setAttribute("aria-pressed", String(button.dataset.lang === state.lang));
+  }
+  document.title = `${t("app.title")} · Harmonic Drive`;
+  $("#submit").textContent = t(state.busy ? "form.running" : "form.submit");
+  updateCycleSum();
+  renderResults();
+  if (state.selection) updateUrl();
+}
+
+function init() {
+  applyLang(initialLang());
+  setLoadKind(loadKind());
+  const f = form();
+  f.addEventListener("submit", onSubmit);
+  f.addEventListener("input", (event) => {
+    const field = event.target.closest(".field");
+    if (field?.classList.contains("has-error")) {
+      field.classList.remove("has-error");
+      event.target.removeAttribute("aria-invalid");
+      const err = errorElementFor(event.target);
+      if (err) err.hidden = true;
+    }
+    if (event.target.matches('[data-path^="cycle."]')) updateCycleSum();
+    onFormEdited();
+  });
+  f.addEventListener("change", (event) => {
+    if (event.target.name === "load-kind") {
+      setLoadKind(loadKind());
+      onFormEdited();
+    }
+  });
+  $("#example").addEventListener("click", fillExample);
+  for (const button of document.querySelectorAll(".lang-button")) {
+    button.addEventListener("click", () => {
+      rememberLang(button.dataset.lang);
+      applyLang(button.dataset.lang);
+    });
+  }
+  const params = new URLSearchParams(window.location.search);
+  const id = params.get("selection");
+  if (id) openPermalink(id, params.get("model"));
+  else loadPlotly().catch(() => {}); // warm the cache while the engineer types
+}
+
+init();

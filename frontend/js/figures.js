@@ -1,0 +1,436 @@
+// The two charts of a chosen candidate, as plotly {data, layout} objects.
+// Pure functions: every number drawn comes from the API's answer (the selection,
+// its candidate, the catalogue actuator); nothing engineering is computed here.
+// Polylines are only the chapter's shapes (Fig. 516.2 steps and ramps, the
+// rectangle of an approximate zone) laid through those numbers.
+//
+// Trace uids name what a trace is, so tests and readers can find it:
+//   cycle:   "cycle-speed", "cycle-torque", "cycle-rms"
+//   diagram: "zone" | "zone-approx", "t-max", "n-max", "operating-point",
+//            "peak-accel", "peak-decel"
+
+import { PLOTLY_NUMBER, num, plotlySeparators, plotlySymbols, qty } from "./format.js";
+import { translate, unitText } from "./i18n.js";
+
+const COLORS = {
+  speed: "#1f5f99",
+  torque: "#b3471d",
+  rms: "#6b4fa0",
+  zone: "rgba(46, 139, 87, 0.22)",
+  zoneLine: "#2e8b57",
+  limit: "#444",
+  pass: "#1e7b3c",
+  fail: "#c0262d",
+  other: "#7a6a00",
+  grid: "#e4e6ea",
+};
+
+const FONT = { family: "system-ui, -apple-system, 'Segoe UI', Roboto, sans-serif", size: 12 };
+
+function isNum(x) {
+  return typeof x === "number" && Number.isFinite(x);
+}
+
+function baseLayout(lang) {
+  return {
+    separators: plotlySeparators(lang),
+    font: FONT,
+    margin: { l: 64, r: 16, t: 28, b: 48 },
+    paper_bgcolor: "#fff",
+    plot_bgcolor: "#fff",
+    showlegend: true,
+    legend: { orientation: "h", x: 0, xanchor: "left", y: -0.2, yanchor: "top" },
+    hovermode: "closest",
+    annotations: [],
+    shapes: [],
+  };
+}
+
+function axis(title, extra = {}) {
+  return {
+    title: { text: plotlySymbols(title), standoff: 6 },
+    zeroline: true,
+    zerolinecolor: "#999",
+    gridcolor: COLORS.grid,
+    linecolor: "#999",
+    ticks: "outside",
+    rangemode: "tozero",
+    ...extra,
+  };
+}
+
+function hover(lang, xUnit, yUnit) {
+  return (
+    `%{fullData.name}<br>` +
+    `%{x:${PLOTLY_NUMBER}} ${unitText(lang, xUnit)} · %{y:${PLOTLY_NUMBER}} ${unitText(lang, yUnit)}` +
+    "<extra></extra>"
+  );
+}
+
+/**
+ * Fig. 516.2: speed n(t) and torque T(t) over one period.
+ *
+ * Times from the request echo ``selection.cycle``, the period end from
+ * ``selection.cycle_time_s``, n_2 from ``selection.load.speed_rpm``, torques
+ * T_1, T_2, T_3 and T_rms from ``candidate``. Torques are absent (no J_A in the
+ * catalogue) → the torque panel says "no data".
+ */
+export function cycleFigure(selection, candidate, lang) {
+  const t = (key) => translate(lang, key);
+  const { accel_s: t1, constant_s: t2, decel_s: t3 } = selection.cycle;
+  const n2 = selection.load.speed_rpm;
+  // Phase boundaries on the time axis: where the chapter's figure changes segment.
+  const a = t1;
+  const b = t1 + t2;
+  const c = t1 + t2 + t3;
+  const end = selection.cycle_time_s;
+
+  const layout = baseLayout(lang);
+  layout.margin = { l: 64, r: 16, t: 24, b: 48 };
+  layout.xaxis = axis(t("fig.time"), { anchor: "y2", range: [0, end], rangemode: "normal" });
+  layout.yaxis = axis(t("fig.speed"), { domain: [0.58, 1], anchor: "x" });
+  layout.yaxis2 = axis(t("fig.torque"), { domain: [0, 0.46], anchor: "x", rangemode: "normal" });
+  layout.legend.y = -0.22;
+
+  const data = [
+    {
+      uid: "cycle-speed",
+      name: plotlySymbols(t("fig.speed_trace")),
+      type: "scatter",
+      mode: "lines",
+      x: [0, a, b, c, end],
+      y: [0, n2, n2, 0, 0],
+      xaxis: "x",
+      yaxis: "y",
+      line: { color: COLORS.speed, width: 2.5 },
+      hovertemplate: hover(lang, "s", "rpm"),
+    },
+  ];
+
+  const T1 = candidate.accel_torque_nm;
+  const T2 = candidate.constant_torque_nm;
+  const T3 = candidate.decel_torque_nm;
+  const Trms = candidate.rms_torque_nm;
+  if (isNum(T1) && isNum(T2) && isNum(T3)) {
+    data.push({
+      uid: "cycle-torque",
+      name: plotlySymbols(t("fig.torque_trace")),
+      type: "scatter",
+      mode: "lines",
+      x: [0, 0, a, a, b, b, c, c, end],
+      y: [0, T1, T1, T2, T2, T3, T3, 0, 0],
+      xaxis: "x",
+      yaxis: "y2",
+      line: { color: COLORS.torque, width: 2.5 },
+      hovertemplate: hover(lang, "s", "Nm"),
+    });
+    if (isNum(Trms)) {
+      data.push({
+        uid: "cycle-rms",
+        name: plotlySymbols(t("fig.rms_trace")),
+        type: "scatter",
+        mode: "lines",
+        x: [0, end],
+        y: [Trms, Trms],
+        xaxis: "x",
+        yaxis: "y2",
+        line: { color: COLORS.rms, width: 1.5, dash: "dash" },
+        hovertemplate: hover(lang, "s", "Nm"),
+      });
+    }
+    // Short labels centred on their segment; the values are in hover and caption.
+    const label = (x, y, symbol, yshift) => ({
+      x,
+      y,
+      xref: "x",
+      yref: "y2",
+      text: plotlySymbols(symbol),
+      showarrow: false,
+      yshift,
+      font: { size: 12, color: COLORS.torque },
+    });
+    layout.annotations.push(
+      label(a / 2, T1, "T_1", 10),
+      label((a + b) / 2, T2, "T_2", T2 >= 0 ? 10 : -10),
+      label((b + c) / 2, T3, "T_3", -10),
+    );
+  } else {
+    layout.annotations.push({
+      xref: "paper",
+      yref: "y2 domain",
+      x: 0.5,
+      y: 0.5,
+      text: plotlySymbols(t("fig.torques_nodata")),
+      showarrow: false,
+      font: { size: 14, color: COLORS.fail },
+    });
+    layout.yaxis2.range = [-1, 1];
+  }
+
+  // The phases t_1, t_2, t_3, t_p named above the speed panel, split by thin lines.
+  const phases = [
+    ["t_1", 0, a],
+    ["t_2", a, b],
+    ["t_3", b, c],
+    ["t_p", c, end],
+  ];
+  for (const [symbol, from, to] of phases) {
+    if (to > from) {
+      layout.annotations.push({
+        x: (from + to) / 2,
+        y: 1,
+        xref: "x",
+        yref: "paper",
+        yanchor: "bottom",
+        text: plotlySymbols(symbol),
+        showarrow: false,
+        font: { size: 11, color: "#555" },
+      });
+    }
+  }
+  for (const x of [a, b, c]) {
+    layout.shapes.push({
+      type: "line",
+      xref: "x",
+      yref: "paper",
+      x0: x,
+      x1: x,
+      y0: 0,
+      y1: 1,
+      line: { color: "#bbb", width: 1, dash: "dot" },
+    });
+  }
+  return { data, layout };
+}
+
+function sortedZone(points) {
+  return [...points]
+    .filter((p) => p && isNum(p.speed_rpm) && isNum(p.torque_nm))
+    .sort((p, q) => p.speed_rpm - q.speed_rpm);
+}
+
+function checkStatus(candidate, name) {
+  return candidate.checks?.find((c) => c.name === name)?.status ?? "no_data";
+}
+
+/**
+ * Fig. 517.1: the speed/torque diagram of ``actuator`` with the candidate's points.
+ *
+ * The continuous-duty zone from ``actuator.continuous_duty_zone`` where the
+ * catalogue has one; else the approximate rectangle up to T_0
+ * (``stall_torque_nm``, else ``continuous_torque_nm``) and n_max, marked
+ * approximate; else "no data". T_max and n_max as limit lines; the operating
+ * point (n_av, T_rms) and the peaks (n_2, T_1), (n_2, |T_3|). ``actuator`` may be
+ * null when the catalogue record could not be read.
+ */
+export function diagramFigure(selection, candidate, actuator, lang) {
+  const t = (key, params) => translate(lang, key, params);
+  const nMax = actuator?.max_speed_rpm;
+  const tMax = actuator?.max_torque_nm;
+  const n2 = selection.load.speed_rpm;
+  const nAv = selection.mean_speed_rpm;
+  const T1 = candidate.accel_torque_nm;
+  const T3 = candidate.decel_torque_nm;
+  const Trms = candidate.rms_torque_nm;
+  const zone = Array.isArray(actuator?.continuous_duty_zone)
+    ? sortedZone(actuator.continuous_duty_zone)
+    : [];
+  const stall = actuator?.stall_torque_nm;
+  const continuous = actuator?.continuous_torque_nm;
+  const approxTorque = isNum(stall) ? stall : continuous;
+  const approxWhat = isNum(stall) ? t("fig.stall") : t("fig.continuous");
+
+  const layout = baseLayout(lang);
+  layout.xaxis = axis(t("fig.speed"));
+  layout.yaxis = axis(t("fig.torque"));
+  const data = [];
+  const xs = [n2, nAv];
+  const ys = [];
+
+  if (zone.length >= 2) {
+    const last = zone[zone.length - 1];
+    data.push({
+      uid: "zone",
+      name: plotlySymbols(t("fig.zone")),
+      type: "scatter",
+      mode: "lines",
+      x: [...zone.map((p) => p.speed_rpm), last.speed_rpm],
+      y: [...zone.map((p) => p.torque_nm), 0],
+      fill: "tozeroy",
+      fillcolor: COLORS.zone,
+      line: { color: COLORS.zoneLine, width: 2 },
+      hovertemplate: hover(lang, "rpm", "Nm"),
+    });
+    xs.push(last.speed_rpm);
+    ys.push(...zone.map((p) => p.torque_nm));
+  } else if (isNum(approxTorque) && isNum(nMax)) {
+    data.push({
+      uid: "zone-approx",
+      name: plotlySymbols(t("fig.zone_approx", { what: approxWhat })),
+      type: "scatter",
+      mode: "lines",
+      x: [0, 0, nMax, nMax, 0],
+      y: [0, approxTorque, approxTorque, 0, 0],
+      fill: "toself",
+      fillcolor: COLORS.zone,
+      line: { color: COLORS.zoneLine, width: 2, dash: "dash" },
+      hovertemplate: hover(lang, "rpm", "Nm"),
+    });
+    ys.push(approxTorque);
+    layout.annotations.push({
+      x: nMax / 2,
+      y: approxTorque,
+      xref: "x",
+      yref: "y",
+      yanchor: "top",
+      text: plotlySymbols(`≈ ${approxWhat} = ${num(approxTorque, lang)} Nm (${t("detail.approximate")})`),
+      showarrow: false,
+      font: { size: 11, color: COLORS.zoneLine },
+    });
+  } else {
+    // Above the plot area, where it can never hide a point.
+    layout.margin = { ...layout.margin, t: 44 };
+    layout.annotations.push({
+      xref: "paper",
+      yref: "paper",
+      x: 0,
+      y: 1,
+      xanchor: "left",
+      yanchor: "bottom",
+      yshift: 8,
+      align: "left",
+      text: plotlySymbols(
+        actuator ? t("fig.zone_nodata") : `${t("fig.zone_nodata")} – ${t("charts.catalogue_missing")}`,
+      ),
+      showarrow: false,
+      bgcolor: "#f0f2f5",
+      bordercolor: "#999",
+      borderwidth: 1,
+      borderpad: 4,
+      font: { size: 13, color: "#333" },
+    });
+  }
+
+  if (isNum(T1)) ys.push(T1);
+  if (isNum(T3)) ys.push(Math.abs(T3));
+  if (isNum(Trms)) ys.push(Trms);
+  if (isNum(nMax)) xs.push(nMax);
+  if (isNum(tMax)) ys.push(tMax);
+  // Axis extents only frame what is drawn, with some room for labels.
+  const xTop = Math.max(...xs.filter(isNum), 1) * 1.1;
+  const yTop = Math.max(...ys.filter(isNum), 1) * 1.15;
+  layout.xaxis.range = [0, xTop];
+  layout.yaxis.range = [0, yTop];
+
+  if (isNum(tMax)) {
+    data.push({
+      uid: "t-max",
+      name: plotlySymbols(`${t("fig.t_max")} = ${num(tMax, lang)} Nm`),
+      type: "scatter",
+      mode: "lines",
+      x: [0, isNum(nMax) ? nMax : xTop],
+      y: [tMax, tMax],
+      line: { color: COLORS.limit, width: 2 },
+      hovertemplate: hover(lang, "rpm", "Nm"),
+    });
+  }
+  if (isNum(nMax)) {
+    data.push({
+      uid: "n-max",
+      name: plotlySymbols(`${t("fig.n_max")} = ${num(nMax, lang)} ${unitText(lang, "rpm")}`),
+      type: "scatter",
+      mode: "lines",
+      x: [nMax, nMax],
+      y: [0, isNum(tMax) ? tMax : yTop],
+      line: { color: COLORS.limit, width: 2, dash: "dot" },
+      hovertemplate: hover(lang, "rpm", "Nm"),
+    });
+  }
+
+  const statusColor = (status) =>
+    status === "pass" ? COLORS.pass : status === "fail" ? COLORS.fail : COLORS.other;
+  const point = (uid, label, x, y, status, symbol) => ({
+    uid,
+    name: plotlySymbols(label),
+    type: "scatter",
+    mode: "markers",
+    x: [x],
+    y: [y],
+    marker: { size: 12, symbol, color: statusColor(status), line: { color: "#000", width: 1 } },
+    hovertemplate: hover(lang, "rpm", "Nm"),
+  });
+  if (isNum(Trms)) {
+    data.push(
+      point(
+        "operating-point",
+        t("fig.operating"),
+        nAv,
+        Trms,
+        checkStatus(candidate, "continuous_duty"),
+        "circle",
+      ),
+    );
+  }
+  if (isNum(T1)) {
+    data.push(
+      point("peak-accel", t("fig.peak_accel"), n2, T1, checkStatus(candidate, "peak_torque"), "triangle-up"),
+    );
+  }
+  if (isNum(T3)) {
+    data.push(
+      point(
+        "peak-decel",
+        t("fig.peak_decel"),
+        n2,
+        Math.abs(T3),
+        checkStatus(candidate, "decel_torque"),
+        "triangle-down",
+      ),
+    );
+  }
+  return { data, layout };
+}
+
+/** A text alternative of the cycle chart, for the figure's caption. */
+export function cycleCaption(selection, candidate, lang) {
+  const q = (v, u) => qty(v, u, lang);
+  return translate(lang, "fig.caption.cycle", {
+    n2: q(selection.load.speed_rpm, "rpm"),
+    t1: q(candidate.accel_torque_nm, "Nm"),
+    t2: q(candidate.constant_torque_nm, "Nm"),
+    t3: q(candidate.decel_torque_nm, "Nm"),
+    trms: q(candidate.rms_torque_nm, "Nm"),
+    a: q(selection.cycle.accel_s, "s"),
+    c: q(selection.cycle.constant_s, "s"),
+    d: q(selection.cycle.decel_s, "s"),
+    p: q(selection.cycle.pause_s, "s"),
+    t0: q(selection.cycle_time_s, "s"),
+  });
+}
+
+/** A text alternative of the speed/torque diagram, for the figure's caption. */
+export function diagramCaption(selection, candidate, actuator, lang) {
+  const q = (v, u) => qty(v, u, lang);
+  const hasZone = Array.isArray(actuator?.continuous_duty_zone) && actuator.continuous_duty_zone.length >= 2;
+  const stall = actuator?.stall_torque_nm;
+  const approx = isNum(stall) ? stall : actuator?.continuous_torque_nm;
+  let zone;
+  if (hasZone) zone = translate(lang, "fig.caption.zone");
+  else if (isNum(approx) && isNum(actuator?.max_speed_rpm)) {
+    zone = translate(lang, "fig.caption.approx", {
+      what: isNum(stall) ? translate(lang, "fig.stall") : translate(lang, "fig.continuous"),
+      value: q(approx, "Nm"),
+    });
+  } else zone = translate(lang, "fig.caption.nodata");
+  const t3 = candidate.decel_torque_nm;
+  return translate(lang, "fig.caption.diagram", {
+    nav: q(selection.mean_speed_rpm, "rpm"),
+    trms: q(candidate.rms_torque_nm, "Nm"),
+    n2: q(selection.load.speed_rpm, "rpm"),
+    t1: q(candidate.accel_torque_nm, "Nm"),
+    t3: q(isNum(t3) ? Math.abs(t3) : null, "Nm"),
+    tmax: q(actuator?.max_torque_nm, "Nm"),
+    nmax: q(actuator?.max_speed_rpm, "rpm"),
+    zone,
+  });
+}

@@ -1,0 +1,48 @@
+// Number and symbol display. Precision rule, everywhere on the page and in the
+// charts' hover labels: 4 significant digits, trailing zeros dropped, no digit
+// grouping, a true minus sign (−), the decimal comma in German. This is the
+// precision of the API's own messages (Python's "{:.4g}"), so a value in a table
+// cell reads the same as in the message next to it.
+
+import { unitText } from "./i18n.js";
+
+const MINUS = "\u2212";
+const NARROW_NBSP = "\u202f";
+const formatters = new Map();
+
+export function localeOf(lang) {
+  return lang === "de" ? "de-DE" : "en-GB";
+}
+
+function formatter(lang) {
+  let f = formatters.get(lang);
+  if (!f) {
+    f = new Intl.NumberFormat(localeOf(lang), { maximumSignificantDigits: 4, useGrouping: false });
+    formatters.set(lang, f);
+  }
+  return f;
+}
+
+/** ``value`` with 4 significant digits in ``lang``; "–" for a missing value. */
+export function num(value, lang) {
+  if (typeof value !== "number" || !Number.isFinite(value)) return "–";
+  const text = formatter(lang).format(value === 0 ? 0 : value);
+  return text.replace("-", MINUS);
+}
+
+/** ``value`` and its unit, e.g. "95,48 Nm" or "40 min⁻¹". */
+export function qty(value, unit, lang) {
+  const n = num(value, lang);
+  if (n === "–" || !unit) return n;
+  return `${n}${NARROW_NBSP}${unitText(lang, unit)}`;
+}
+
+/** Plotly's separators: decimal mark, then thousands mark (unused: no grouping). */
+export function plotlySeparators(lang) {
+  return lang === "de" ? ",." : ".,";
+}
+
+/** Plotly's d3 format for hover labels with the same 4-significant-digit rule. */
+export const PLOTLY_NUMBER = ".4~g";
+
+export { appendSymbols, plainSymbols, plotlySymbols } from "./symbols.js";

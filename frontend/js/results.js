@@ -1,0 +1,613 @@
+// The result as DOM: summary of the load case, the permalink, the ranked
+// candidates and the chosen candidate's checks, controllers and chart frames.
+// API text is only ever set as text (never parsed as HTML).
+
+import { appendSymbols, localeOf, num, plainSymbols, qty } from "./format.js";
+import { translate, translateReference, unitText } from "./i18n.js";
+
+export const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
+const STATUS_MARK = { pass: "✓", fail: "✗", warn: "!", no_data: "?" };
+
+/** A DOM element: ``h("td", {class: "num"}, "1", child)``. */
+export function h(tag, props = {}, ...children) {
+  const el = document.createElement(tag);
+  for (const [key, value] of Object.entries(props)) {
+    if (value === undefined || value === null || value === false) continue;
+    if (key === "class") el.className = value;
+    else if (key === "dataset") Object.assign(el.dataset, value);
+    else if (key.startsWith("on") && typeof value === "function") {
+      el.addEventListener(key.slice(2), value);
+    } else el.setAttribute(key, value === true ? "" : String(value));
+  }
+  for (const child of children.flat(Infinity)) {
+    if (child === null || child === undefined || child === false) continue;
+    el.append(child instanceof Node ? child : String(child));
+  }
+  return el;
+}
+
+/** A span whose X_sub symbols are typeset as subscripts. */
+export function sym(text, props = {}) {
+  return appendSymbols(h("span", props), text);
+}
+
+function statusBadge(status, lang) {
+  return h(
+    "span",
+    { class: `badge status-${status}` },
+    h("span", { "aria-hidden": "true" }, STATUS_MARK[status] ?? "·"),
+    " ",
+    translate(lang, `status.${status}`),
+  );
+}
+
+function verdictBadge(verdict, lang) {
+  return h("span", { class: `badge verdict-${verdict}` }, translate(lang, `verdict.${verdict}`));
+}
+
+function approxBadge(lang) {
+  return h(
+    "span",
+    { class: "badge approx", title: translate(lang, "detail.approximate.long") },
+    h("span", { "aria-hidden": "true" }, "≈ "),
+    translate(lang, "detail.approximate"),
+  );
+}
+
+function checkLabel(name, lang) {
+  const key = `check.${name}`;
+  const text = translate(lang, key);
+  return text === key ? name : text;
+}
+
+function shortCheckLabel(name, lang) {
+  const key = `check.short.${name}`;
+  const text = translate(lang, key);
+  return text === key ? checkLabel(name, lang) : text;
+}
+
+/** A value with its unit; the number keeps the API's full value in data-value. */
+function valueCell(value, unit, lang, props = {}) {
+  return h(
+    "span",
+    { class: "value", "data-value": typeof value === "number" ? String(value) : null, ...props },
+    qty(value, unit, lang),
+  );
+}
+
+function definition(term, value, props = {}) {
+  return h("div", { class: "kv", ...props }, h("dt", {}, term), h("dd", {}, value));
+}
+
+function createdAt(iso, lang) {
+  const date = typeof iso === "string" ? new Date(iso) : null;
+  if (!date || Number.isNaN(date.getTime())) return null;
+  return new Intl.DateTimeFormat(localeOf(lang), { dateStyle: "medium", timeStyle: "short" }).format(date);
+}
+
+/** The load case as the API resolved it, and the cycle figures of Eq. 514.3/514.4. */
+export function renderSummary(sel, lang) {
+  const t = (k) => translate(lang, k);
+  const termWithSym = (key, symbol) => [t(key), " ", sym(symbol, { class: "sym" })];
+  const mech = sel.mechanism && typeof sel.mechanism === "object" ? sel.mechanism.type : null;
+  return h(
+    "section",
+    { class: "card summary", "aria-labelledby": "summary-heading" },
+    h("h3", { id: "summary-heading" }, t("summary.heading")),
+    h(
+      "dl",
+      { class: "kv-grid" },
+      definition(termWithSym("summary.speed", "n_2"), valueCell(sel.load.speed_rpm, "rpm", lang), {
+        id: "sum-speed",
+      }),
+      definition(termWithSym("summary.torque", "T_L"), valueCell(sel.load.torque_nm, "Nm", lang), {
+        id: "sum-torque",
+      }),
+      definition(
+        termWithSym("summary.inertia", "J_L"),
+        valueCell(sel.load.inertia_kgm2, "kgm²", lang),
+        { id: "sum-inertia" },
+      ),
+      definition(
+        termWithSym("summary.cycle_time", "t_0"),
+        valueCell(sel.cycle_time_s, "s", lang),
+        { id: "sum-cycle-time" },
+      ),
+      definition(
+        termWithSym("summary.mean_speed", "n_av"),
+        valueCell(sel.mean_speed_rpm, "rpm", lang),
+        { id: "sum-mean-speed" },
+      ),
+      definition(termWithSym("summary.duty", "ED"), valueCell(sel.duty_cycle_percent, "%", lang), {
+        id: "sum-duty",
+      }),
+      definition(t("summary.high_dynamics"), t(sel.high_dynamics ? "summary.yes" : "summary.no"), {
+        id: "sum-high-dynamics",
+      }),
+      mech
+        ? definition(t("summary.mechanism"), t(`load.${mech}`), { id: "sum-mechanism" })
+        : null,
+      typeof sel.catalogue_version === "number"
+        ? definition(t("summary.catalogue"), String(sel.catalogue_version), {
+            id: "sum-catalogue",
+            class: "kv meta",
+          })
+        : null,
+      createdAt(sel.created_at, lang)
+        ? definition(t("summary.created"), createdAt(sel.created_at, lang), {
+            id: "sum-created",
+            class: "kv meta",
+          })
+        : null,
+    ),
+    typeof sel.ranking === "string"
+      ? h(
+          "details",
+          { class: "ranking-rule" },
+          h("summary", {}, t("summary.ranking")),
+          sym(sel.ranking, { lang: "en" }),
+        )
+      : null,
+  );
+}
+
+/** The link that reopens this selection, with a copy button. */
+export function renderPermalink(url, lang, onCopy) {
+  const t = (k) => translate(lang, k);
+  return h(
+    "div",
+    { class: "permalink" },
+    h("label", { for: "permalink" }, t("permalink.label")),
+    h(
+      "div",
+      { class: "permalink-row" },
+      h("input", { id: "permalink", type: "text", readonly: true, value: url, spellcheck: "false" }),
+      h("button", { type: "button", class: "secondary", id: "copy-link", onclick: onCopy }, t("permalink.copy")),
+    ),
+    h("p", { id: "copy-status", class: "hint", role: "status", "aria-live": "polite" }),
+  );
+}
+
+function countVerdicts(candidates) {
+  const counts = { suitable: 0, unconfirmed: 0, unsuitable: 0 };
+  for (const c of candidates) if (Object.hasOwn(counts, c.verdict)) counts[c.verdict] += 1;
+  return counts;
+}
+
+function reasonList(candidate, lang, { short = false } = {}) {
+  const checks = Array.isArray(candidate.checks) ? candidate.checks : [];
+  const open = checks.filter((c) => c.status !== "pass");
+  if (open.length === 0 && Array.isArray(candidate.reasons) && candidate.reasons.length) {
+    return h("ul", { class: "reasons" }, candidate.reasons.map((r) => h("li", {}, sym(r, { lang: "en" }))));
+  }
+  if (open.length === 0) {
+    return h("span", { class: "muted" }, translate(lang, "table.reason.none"));
+  }
+  return h(
+    "ul",
+    { class: "reasons" },
+    open.map((c) =>
+      h(
+        "li",
+        { "data-check": c.name },
+        statusBadge(c.status, lang),
+        " ",
+        sym(short ? shortCheckLabel(c.name, lang) : checkLabel(c.name, lang), { class: "reason-check" }),
+        c.approximate ? [" ", approxBadge(lang)] : null,
+        short ? ": " : h("br"),
+        sym(c.message, { class: "api-message", lang: "en" }),
+      ),
+    ),
+  );
+}
+
+function checkMarks(candidate, lang) {
+  const checks = Array.isArray(candidate.checks) ? candidate.checks : [];
+  return h(
+    "ul",
+    { class: "marks" },
+    checks.map((c) => {
+      const against =
+        typeof c.value === "number" && typeof c.limit === "number"
+          ? ` (${qty(c.value, c.unit, lang)} / ${c.approximate ? "≈ " : ""}${qty(c.limit, c.unit, lang)})`
+          : "";
+      const text = `${plainSymbols(shortCheckLabel(c.name, lang))}: ${translate(lang, `status.${c.status}`)}${against}`;
+      return h(
+        "li",
+        { class: `mark status-${c.status}`, title: text },
+        h("span", { "aria-hidden": "true" }, STATUS_MARK[c.status] ?? "·"),
+        h("span", { class: "visually-hidden" }, text),
+      );
+    }),
+  );
+}
+
+/** The ranked candidates with a verdict filter; ``onChoose(model)`` when a row is picked. */
+export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilter }) {
+  const t = (k, p) => translate(lang, k, p);
+  const counts = countVerdicts(sel.candidates);
+  const filters = h(
+    "div",
+    { class: "filter", role: "group", "aria-label": t("filter.label") },
+    h("span", { class: "filter-label", "aria-hidden": "true" }, `${t("filter.label")}:`),
+    ["all", ...VERDICTS].map((v) =>
+      h(
+        "button",
+        {
+          type: "button",
+          class: `filter-button${v === "all" ? "" : ` verdict-${v}`}`,
+          "aria-pressed": String(filter === v),
+          "data-filter": v,
+          onclick: () => onFilter(v),
+        },
+        v === "all" ? t("filter.all") : t(`verdict.${v}`),
+        " ",
+        h("span", { class: "count" }, `(${v === "all" ? sel.candidates.length : counts[v]})`),
+      ),
+    ),
+  );
+
+  const header = (key, symbol, unit) =>
+    h(
+      "th",
+      { scope: "col", role: "columnheader", class: unit ? "num" : null },
+      key ? t(key) : null,
+      symbol ? sym(symbol, { class: "sym" }) : null,
+      unit ? h("span", { class: "unit" }, ` [${unitText(lang, unit)}]`) : null,
+    );
+
+  const rows = sel.candidates.map((c, i) => {
+    const chosen = c.model === chosenModel;
+    const labelled = (key, symbol) => plainSymbols(symbol ? `${symbol}` : t(key));
+    return h(
+      "tr",
+      {
+        role: "row",
+        class: `verdict-row verdict-${c.verdict}${chosen ? " chosen" : ""}`,
+        "data-model": c.model,
+        "data-verdict": c.verdict,
+        "aria-current": chosen ? "true" : null,
+        hidden: filter !== "all" && filter !== c.verdict,
+      },
+      h("td", { role: "cell", class: "num rank", "data-label": t("table.rank") }, String(i + 1)),
+      h(
+        "th",
+        { role: "rowheader", scope: "row", class: "model", "data-label": t("table.model") },
+        h(
+          "button",
+          {
+            type: "button",
+            class: "model-button",
+            "aria-pressed": String(chosen),
+            "aria-label": t("table.select", { model: c.model }),
+            onclick: () => onChoose(c.model),
+          },
+          c.model,
+        ),
+      ),
+      h(
+        "td",
+        { role: "cell", class: "verdict", "data-label": t("table.verdict") },
+        verdictBadge(c.verdict, lang),
+        checkMarks(c, lang),
+      ),
+      h(
+        "td",
+        { role: "cell", class: "num", "data-label": labelled(null, "T_1 [Nm]"), "data-field": "accel" },
+        valueCell(c.accel_torque_nm, null, lang),
+      ),
+      h(
+        "td",
+        { role: "cell", class: "num", "data-label": labelled(null, "T_3 [Nm]"), "data-field": "decel" },
+        valueCell(c.decel_torque_nm, null, lang),
+      ),
+      h(
+        "td",
+        { role: "cell", class: "num", "data-label": labelled(null, "T_rms [Nm]"), "data-field": "rms" },
+        valueCell(c.rms_torque_nm, null, lang),
+      ),
+      h("td", { role: "cell", class: "reason", "data-label": t("table.reason") }, reasonList(c, lang, { short: true })),
+    );
+  });
+
+  const table = h(
+    "table",
+    { class: "ranking", id: "ranking-table", role: "table" },
+    h("caption", {}, t("table.caption")),
+    h(
+      "thead",
+      { role: "rowgroup" },
+      h(
+        "tr",
+        { role: "row" },
+        header("table.rank"),
+        header("table.model"),
+        h("th", { scope: "col", role: "columnheader" }, `${t("table.verdict")} · ${t("table.checks")}`),
+        header(null, "T_1", "Nm"),
+        header(null, "T_3", "Nm"),
+        header(null, "T_rms", "Nm"),
+        header("table.reason"),
+      ),
+    ),
+    h(
+      "tbody",
+      {
+        role: "rowgroup",
+        // a click anywhere on a row chooses it; the model button serves the keyboard
+        onclick: (event) => {
+          if (event.target.closest("button, a, summary")) return;
+          const row = event.target.closest("tr[data-model]");
+          if (row) onChoose(row.dataset.model);
+        },
+      },
+      rows,
+    ),
+  );
+  return h(
+    "section",
+    { class: "card ranking-card", "aria-labelledby": "ranking-heading" },
+    h("h3", { id: "ranking-heading", class: "visually-hidden" }, t("table.caption")),
+    filters,
+    h(
+      "div",
+      { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("table.caption") },
+      table,
+    ),
+  );
+}
+
+const LEVEL_MARK = { tested: "●", possible: "○", unconfirmed: "?", excluded: "✗", no_data: "?" };
+const CRITERIA = ["family", "bus_class", "temperature_sensor", "feedback_system"];
+
+function levelBadge(level, lang) {
+  const known = Object.hasOwn(LEVEL_MARK, level);
+  return h(
+    "span",
+    { class: `badge level-${known ? level : "unknown"}` },
+    h("span", { "aria-hidden": "true" }, `${LEVEL_MARK[level] ?? "·"} `),
+    known ? translate(lang, `controller.${level}`) : String(level ?? ""),
+  );
+}
+
+function criteriaMarks(controller, lang) {
+  const criteria = Array.isArray(controller.criteria) ? controller.criteria : [];
+  if (!criteria.length) return null;
+  const order = (c) => {
+    const i = CRITERIA.indexOf(c.criterion);
+    return i < 0 ? CRITERIA.length : i;
+  };
+  return h(
+    "ul",
+    { class: "criteria" },
+    [...criteria]
+      .sort((a, b) => order(a) - order(b))
+      .map((c) => {
+        const key = `criterion.${c.criterion}`;
+        const label = translate(lang, key) === key ? String(c.criterion) : translate(lang, key);
+        const status = Object.hasOwn(LEVEL_MARK, c.status) ? c.status : "no_data";
+        return h(
+          "li",
+          { class: `criterion criterion-${status}`, title: c.message ?? "" },
+          h("span", { class: "criterion-mark", "aria-hidden": "true" }, LEVEL_MARK[status]),
+          " ",
+          label,
+          h("span", { class: "visually-hidden" }, `: ${translate(lang, `controller.${status}`)}`),
+        );
+      }),
+  );
+}
+
+function voltageCell(check, lang) {
+  if (!check || typeof check !== "object") return h("span", { class: "muted" }, "–");
+  const against =
+    typeof check.value === "number" && typeof check.limit === "number"
+      ? [" ", valueCell(check.value, check.unit, lang), " / ", valueCell(check.limit, check.unit, lang)]
+      : null;
+  return [
+    statusBadge(check.status, lang),
+    against,
+    check.status === "pass" ? null : sym(check.message, { class: "api-message block", lang: "en" }),
+  ];
+}
+
+/** Controllers of Table 521.1 for the candidate, when the API sends them (else nothing). */
+function controllerList(candidate, lang) {
+  if (!Array.isArray(candidate.controllers)) return null;
+  const t = (k, p) => translate(lang, k, p);
+  const controllers = candidate.controllers.filter((c) => c && typeof c === "object");
+  const excluded = Number.isInteger(candidate.controllers_excluded) ? candidate.controllers_excluded : null;
+  const summary = t("detail.controllers.count", { n: controllers.length });
+  const col = (key, extra) => h("th", { scope: "col", role: "columnheader" }, t(key), extra ?? null);
+  return h(
+    "section",
+    { class: "controllers", "aria-labelledby": "controllers-heading" },
+    h("h4", { id: "controllers-heading" }, t("detail.controllers")),
+    h(
+      "p",
+      { class: "controllers-summary" },
+      summary,
+      excluded !== null ? `, ${t("detail.controllers.excluded", { n: excluded })}` : "",
+      ". ",
+      h("span", { class: "legend" }, `● ${t("controller.tested")} · ○ ${t("controller.possible")} · ? ${t("controller.no_data")}`),
+    ),
+    typeof candidate.controllers_note === "string"
+      ? sym(candidate.controllers_note, { class: "api-message block", lang: "en" })
+      : null,
+    controllers.length
+      ? h(
+          "div",
+          { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("detail.controllers") },
+          h(
+            "table",
+            { class: "controller-table", id: "controllers-table", role: "table" },
+            h(
+              "thead",
+              { role: "rowgroup" },
+              h(
+                "tr",
+                { role: "row" },
+                col("controller.name"),
+                col("controller.level"),
+                col("controller.criteria"),
+                h("th", { scope: "col", role: "columnheader" }, sym(t("controller.voltage"))),
+              ),
+            ),
+            h(
+              "tbody",
+              { role: "rowgroup" },
+              controllers.map((c) =>
+                h(
+                  "tr",
+                  { role: "row", class: "controller", "data-level": c.level ?? "" },
+                  h(
+                    "th",
+                    { scope: "row", role: "rowheader", class: "controller-name", "data-label": t("controller.name") },
+                    [c.manufacturer, c.type, c.variant].filter((x) => typeof x === "string" && x).join(" "),
+                  ),
+                  h("td", { role: "cell", "data-label": t("controller.level") }, levelBadge(c.level, lang)),
+                  h("td", { role: "cell", "data-label": t("controller.criteria") }, criteriaMarks(c, lang)),
+                  h(
+                    "td",
+                    { role: "cell", class: "voltage", "data-label": plainSymbols(t("controller.voltage")) },
+                    voltageCell(c.voltage, lang),
+                  ),
+                ),
+              ),
+            ),
+          ),
+        )
+      : h("p", { class: "muted" }, t("detail.controllers.none")),
+  );
+}
+
+function checksTable(candidate, lang) {
+  const t = (k) => translate(lang, k);
+  const checks = Array.isArray(candidate.checks) ? candidate.checks : [];
+  const col = (key) => h("th", { scope: "col", role: "columnheader" }, t(key));
+  return h(
+    "div",
+    { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("detail.checks") },
+    h(
+      "table",
+      { class: "checks", id: "checks-table", role: "table" },
+      h("caption", {}, t("detail.checks")),
+      h(
+        "thead",
+        { role: "rowgroup" },
+        h(
+          "tr",
+          { role: "row" },
+          col("detail.check"),
+          col("detail.value"),
+          col("detail.limit"),
+          col("detail.status"),
+          col("detail.margin"),
+          col("detail.message"),
+        ),
+      ),
+      h(
+        "tbody",
+        { role: "rowgroup" },
+        checks.map((c) =>
+          h(
+            "tr",
+            { role: "row", "data-check": c.name, "data-status": c.status, class: `status-row-${c.status}` },
+            h(
+              "th",
+              { scope: "row", role: "rowheader", "data-label": t("detail.check") },
+              sym(checkLabel(c.name, lang)),
+              h("span", { class: "ref" }, translateReference(lang, c.reference)),
+            ),
+            h("td", { role: "cell", class: "num", "data-label": t("detail.value") }, valueCell(c.value, c.unit, lang)),
+            h(
+              "td",
+              { role: "cell", class: "num", "data-label": t("detail.limit") },
+              c.approximate && typeof c.limit === "number" ? h("span", { "aria-hidden": "true" }, "≈ ") : null,
+              valueCell(c.limit, c.unit, lang),
+            ),
+            h(
+              "td",
+              { role: "cell", class: "status-cell", "data-label": t("detail.status") },
+              statusBadge(c.status, lang),
+              c.approximate ? [" ", approxBadge(lang)] : null,
+            ),
+            h(
+              "td",
+              { role: "cell", class: "num", "data-label": t("detail.margin") },
+              valueCell(c.margin_percent, "%", lang),
+            ),
+            h("td", { role: "cell", class: "message", "data-label": t("detail.message") }, sym(c.message, { lang: "en" })),
+          ),
+        ),
+      ),
+    ),
+  );
+}
+
+/** The chosen candidate: key figures, every check, reasons, controllers, chart frames. */
+export function renderDetail(sel, candidate, lang) {
+  const t = (k) => translate(lang, k);
+  const termWithSym = (symbol, extra) => [sym(symbol, { class: "sym" }), extra ? ` ${extra}` : ""];
+  const open = (candidate.checks ?? []).filter((c) => c.status !== "pass");
+  return h(
+    "section",
+    { class: "card detail", id: "detail", "aria-labelledby": "detail-heading", "data-model": candidate.model },
+    h(
+      "h3",
+      { id: "detail-heading" },
+      h("span", { class: "detail-kicker" }, `${t("detail.heading")}: `),
+      h("span", { class: "detail-model" }, candidate.model),
+      " ",
+      verdictBadge(candidate.verdict, lang),
+    ),
+    h(
+      "dl",
+      { class: "kv-grid key-figures" },
+      definition(t("detail.family"), candidate.family),
+      definition([t("detail.ratio"), " ", h("span", { class: "sym" }, h("var", {}, "i"))], num(candidate.gear_ratio, lang)),
+      definition(termWithSym("T_1", `(${translateReference(lang, "Eq. 514.1")})`), valueCell(candidate.accel_torque_nm, "Nm", lang), { id: "fig-t1" }),
+      definition(termWithSym("T_2"), valueCell(candidate.constant_torque_nm, "Nm", lang), { id: "fig-t2" }),
+      definition(termWithSym("T_3"), valueCell(candidate.decel_torque_nm, "Nm", lang), { id: "fig-t3" }),
+      definition(termWithSym("T_rms", `(${translateReference(lang, "Eq. 514.2")})`), valueCell(candidate.rms_torque_nm, "Nm", lang), { id: "fig-trms" }),
+      definition(termWithSym("n_av", `(${translateReference(lang, "Eq. 514.3")})`), valueCell(sel.mean_speed_rpm, "rpm", lang), { id: "fig-nav" }),
+      definition(termWithSym("ED", `(${translateReference(lang, "Eq. 514.4")})`), valueCell(sel.duty_cycle_percent, "%", lang), { id: "fig-ed" }),
+    ),
+    checksTable(candidate, lang),
+    open.length
+      ? h(
+          "section",
+          { class: "detail-reasons", "aria-labelledby": "detail-reasons-heading" },
+          h("h4", { id: "detail-reasons-heading" }, t("detail.reasons")),
+          reasonList(candidate, lang),
+        )
+      : null,
+    h(
+      "div",
+      { class: "charts" },
+      h(
+        "figure",
+        { class: "chart-figure" },
+        h("figcaption", {}, h("strong", {}, t("charts.cycle")), h("span", { class: "chart-text", id: "cycle-caption" })),
+        h("div", { class: "chart", id: "chart-cycle", "data-state": "loading" }, h("p", { class: "chart-placeholder" }, t("charts.loading"))),
+      ),
+      h(
+        "figure",
+        { class: "chart-figure" },
+        h("figcaption", {}, h("strong", {}, t("charts.diagram")), h("span", { class: "chart-text", id: "diagram-caption" })),
+        h("div", { class: "chart", id: "chart-diagram", "data-state": "loading" }, h("p", { class: "chart-placeholder" }, t("charts.loading"))),
+      ),
+    ),
+    controllerList(candidate, lang),
+  );
+}
+
+/** The summary sentence announced to screen readers after a result arrives. */
+export function resultSentence(sel, chosenModel, lang) {
+  const counts = countVerdicts(sel.candidates);
+  return translate(lang, "results.done", { ...counts, model: chosenModel ?? "–" });
+}
+
+/** A notice box: ``kind`` is "info", "error" or "warn". */
+export function notice(kind, ...children) {
+  return h("div", { class: `notice notice-${kind}` }, ...children);
+}

@@ -1,0 +1,1 @@
+"""Browser tests of the engineer's web page (Playwright + Debian's Chromium)."""

@@ -1,0 +1,648 @@
+"""The engineer's web page in a real browser: form → API → tables and charts.
+
+Reference values come from the chapter (Table 516.1 with the FHA-25C-50-L of
+Table 516.3) and from first principles (Eq. 514.1–514.4, 515.6), computed here
+by hand rather than read back from the service.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from pathlib import Path
+from typing import Any, cast
+
+import pytest
+from playwright.sync_api import Browser, Page, Route, ViewportSize, expect
+
+from .conftest import DESKTOP, PHONE, Traffic
+
+pytestmark = pytest.mark.browser
+
+# ---------------------------------------------------------------- reference values
+
+G = 9.81  # [m/s²], as Eq. 515.6 states it
+
+# Table 516.1 (load, speed pattern) and Table 516.3 (FHA-25C-50-L)
+N_2 = 40.0  # [rpm]
+T_L = 5.0  # [Nm]
+J_L = 1.3  # [kgm²]
+T1_S, T2_S, T3_S, TP_S = 0.1, 0.1, 0.1, 1.0  # [s]
+FHA = "FHA-25C-50-L"
+J_A = 0.86  # [kgm²]
+T_MAX = 151.0  # [Nm]
+N_MAX = 90.0  # [rpm]
+
+T_0_S = T1_S + T2_S + T3_S + TP_S
+ACCEL = 2 * math.pi / 60 * (J_A + J_L) * N_2  # [Nm·s], the inertia term of Eq. 514.1
+EXPECTED_T1 = T_L + ACCEL / T1_S  # Eq. 514.1 → 95.48 Nm
+EXPECTED_T3 = T_L - ACCEL / T3_S  # braking: T_L minus the inertia term → −85.48 Nm
+EXPECTED_TRMS = math.sqrt(
+    (EXPECTED_T1**2 * T1_S + T_L**2 * T2_S + EXPECTED_T3**2 * T3_S) / T_0_S
+)  # Eq. 514.2 → 35.57 Nm
+EXPECTED_NAV = (N_2 / 2 * T1_S + N_2 * T2_S + N_2 / 2 * T3_S) / T_0_S  # Eq. 514.3 → 6.154 rpm
+EXPECTED_ED = (T1_S + T2_S + T3_S) / T_0_S * 100  # Eq. 514.4 → 23.08 %
+
+TRACES_JS = """id => {
+  const gd = document.getElementById(id);
+  return (gd.data || []).map(t => ({
+    uid: t.uid ?? null,
+    name: t.name ?? null,
+    x: Array.from(t.x ?? [], Number),
+    y: Array.from(t.y ?? [], Number),
+  }));
+}"""
+ANNOTATIONS_JS = (
+    """id => (document.getElementById(id).layout.annotations || []).map(a => String(a.text))"""
+)
+
+
+def shown(text: str) -> float:
+    """The number in a displayed text: "−85,48 Nm" → -85.48 (minus sign, decimal comma)."""
+    match = re.search(r"[−-]?\d+(?:[.,]\d+)?(?:e[−-]?\d+)?", text)
+    assert match, f"no number in {text!r}"
+    return float(match.group(0).replace("−", "-").replace(",", "."))
+
+
+def fill_worked_example(page: Page) -> None:
+    """Type Table 516.1 into the form, field by field."""
+    page.locator("#f-speed").fill("40")
+    page.locator("#f-torque").fill("5")
+    page.locator("#f-inertia").fill("1.3")
+    fill_cycle(page, "0.1", "0.1", "0.1", "1")
+
+
+def fill_cycle(page: Page, t1: str, t2: str, t3: str, tp: str) -> None:
+    for field, value in (("#f-t1", t1), ("#f-t2", t2), ("#f-t3", t3), ("#f-tp", tp)):
+        page.locator(field).fill(value)
+
+
+def post_selection(page: Page) -> tuple[int, dict[str, Any]]:
+    """Press the submit button; the API's status and body once the page shows them."""
+    with page.expect_response(
+        lambda r: r.url.endswith("/api/v1/selections") and r.request.method == "POST"
+    ) as info:
+        page.locator("#submit").click()
+    response = info.value
+    body = cast(dict[str, Any], response.json())
+    if response.status == 201:
+        page.wait_for_function(
+            "id => (document.querySelector('#permalink')?.value ?? '').includes(id)",
+            arg=body["id"],
+        )
+        wait_for_charts(page)
+    return response.status, body
+
+
+def assert_no_leaked_values(page: Page) -> None:
+    """No JavaScript artefact reached the screen."""
+    text = page.locator("body").inner_text()
+    for artefact in ("[object", "undefined", "NaN", "Traceback"):
+        assert artefact not in text, artefact
+
+
+def wait_for_charts(page: Page, model: str | None = None) -> None:
+    """Both plotly charts drawn (for ``model`` when given)."""
+    which = f'[data-model="{model}"]' if model else ""
+    for chart in ("#chart-cycle", "#chart-diagram"):
+        page.wait_for_selector(f'{chart}[data-state="ready"]{which}')
+
+
+def choose(page: Page, model: str, *, by_keyboard: bool = False) -> None:
+    """Pick a candidate by clicking its row, or by its model button and Enter."""
+    row = page.locator(f'#ranking-table tr[data-model="{model}"]')
+    if by_keyboard:
+        row.locator(".model-button").focus()
+        page.keyboard.press("Enter")
+    else:
+        row.locator('td[data-field="rms"]').click()
+    page.wait_for_selector(f'#detail[data-model="{model}"]')
+    wait_for_charts(page, model)
+
+
+def traces(page: Page, chart_id: str) -> dict[str, dict[str, Any]]:
+    """The chart's plotly traces by uid, read from the graph div's ``.data``."""
+    data = cast(list[dict[str, Any]], page.evaluate(TRACES_JS, chart_id))
+    return {str(t["uid"]): t for t in data}
+
+
+def plot_annotations(page: Page, chart_id: str) -> list[str]:
+    return cast(list[str], page.evaluate(ANNOTATIONS_JS, chart_id))
+
+
+def row_value(page: Page, model: str, field: str) -> str:
+    return page.locator(
+        f'#ranking-table tr[data-model="{model}"] td[data-field="{field}"]'
+    ).inner_text()
+
+
+@pytest.fixture(scope="session")
+def screenshot_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Where screenshots go: $E2E_SCREENSHOT_DIR, else a pytest temp dir under /tmp."""
+    configured = os.environ.get("E2E_SCREENSHOT_DIR")
+    if configured:
+        path = Path(configured)
+        path.mkdir(parents=True, exist_ok=True)
+        return path
+    return tmp_path_factory.mktemp("screenshots")
+
+
+# ---------------------------------------------------------------- tests
+
+
+def test_worked_example_gives_the_chapters_numbers(page: Page, traffic: Traffic) -> None:
+    page.goto("/")
+    expect(page.locator("#results-body")).to_contain_text("No calculation yet")
+    fill_worked_example(page)
+    expect(page.locator("#cycle-sum")).to_have_text("1.3")  # the input echo t_1+t_2+t_3+t_p
+    status, _ = post_selection(page)
+    assert status == 201
+
+    # the selection-wide figures of Eq. 514.3 and 514.4 and t_0
+    assert shown(page.locator("#sum-cycle-time .value").inner_text()) == pytest.approx(T_0_S)
+    expect(page.locator("#sum-mean-speed .value")).to_have_text("6.154\u202frpm")
+    expect(page.locator("#sum-duty .value")).to_have_text("23.08\u202f%")
+    assert shown(page.locator("#sum-mean-speed .value").inner_text()) == pytest.approx(
+        EXPECTED_NAV, rel=1e-3
+    )
+
+    # the chapter's actuator, chosen by clicking its row
+    choose(page, FHA)
+    expect(page.locator(f'#ranking-table tr[data-model="{FHA}"]')).to_have_attribute(
+        "aria-current", "true"
+    )
+    assert row_value(page, FHA, "accel") == "95.48"
+    assert row_value(page, FHA, "decel") == "−85.48"
+    assert row_value(page, FHA, "rms") == "35.57"
+    for selector, expected in (
+        ("#fig-t1", EXPECTED_T1),
+        ("#fig-t3", EXPECTED_T3),
+        ("#fig-trms", EXPECTED_TRMS),
+        ("#fig-nav", EXPECTED_NAV),
+        ("#fig-ed", EXPECTED_ED),
+    ):
+        assert shown(page.locator(f"{selector} .value").inner_text()) == pytest.approx(
+            expected, rel=1e-3
+        ), selector
+    expect(page.locator("#fig-t1 .value")).to_have_text("95.48\u202fNm")
+    expect(page.locator("#fig-t3 .value")).to_have_text("−85.48\u202fNm")
+
+    # every check with value, limit, status and the chapter's reference
+    checks = page.locator("#checks-table tbody tr")
+    expect(checks).to_have_count(5)
+    peak = page.locator('#checks-table tr[data-check="peak_torque"]')
+    expect(peak).to_contain_text("95.48\u202fNm")
+    expect(peak).to_contain_text("151\u202fNm")
+    expect(peak).to_contain_text("pass")
+    expect(peak).to_contain_text("Eq. 514.1")
+    # no zone and no continuous torque in the catalogue: "no data", verdict unconfirmed
+    duty = page.locator('#checks-table tr[data-check="continuous_duty"]')
+    expect(duty).to_have_attribute("data-status", "no_data")
+    expect(duty).to_contain_text("no data")
+    expect(duty).to_contain_text("Fig. 517.1")
+    expect(page.locator("#detail-heading")).to_contain_text("unconfirmed")
+    expect(page.locator(f'#ranking-table tr[data-model="{FHA}"] .reasons')).to_contain_text(
+        "no data"
+    )
+
+    # Fig. 516.2: the speed pattern and the torques over one period
+    cycle = traces(page, "chart-cycle")
+    speed = cycle["cycle-speed"]
+    assert speed["x"] == pytest.approx([0, T1_S, T1_S + T2_S, T1_S + T2_S + T3_S, T_0_S])
+    assert speed["y"] == pytest.approx([0, N_2, N_2, 0, 0])
+    torque = cycle["cycle-torque"]["y"]
+    assert max(torque) == pytest.approx(EXPECTED_T1, abs=0.005)
+    assert min(torque) == pytest.approx(EXPECTED_T3, abs=0.005)
+    assert T_L in torque
+    assert torque[-1] == 0  # standstill in the pause
+    assert cycle["cycle-rms"]["y"][0] == pytest.approx(EXPECTED_TRMS, abs=0.005)
+
+    # Fig. 517.1: operating point, peaks, limits; no zone data for this actuator
+    diagram = traces(page, "chart-diagram")
+    operating = diagram["operating-point"]
+    assert operating["x"][0] == pytest.approx(EXPECTED_NAV, abs=0.005)
+    assert operating["y"][0] == pytest.approx(EXPECTED_TRMS, abs=0.005)
+    assert (diagram["peak-accel"]["x"][0], diagram["peak-accel"]["y"][0]) == pytest.approx(
+        (N_2, EXPECTED_T1), abs=0.005
+    )
+    assert (diagram["peak-decel"]["x"][0], diagram["peak-decel"]["y"][0]) == pytest.approx(
+        (N_2, abs(EXPECTED_T3)), abs=0.005
+    )
+    assert set(diagram["t-max"]["y"]) == {T_MAX}
+    assert set(diagram["n-max"]["x"]) == {N_MAX}
+    assert "zone" not in diagram
+    assert "zone-approx" not in diagram
+    assert any("no data" in text for text in plot_annotations(page, "chart-diagram"))
+    assert_no_leaked_values(page)
+    assert not traffic.console_errors
+
+
+def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> None:
+    page.goto("/")
+    fill_worked_example(page)
+    _, body = post_selection(page)
+    best = body["candidates"][0]
+    assert best["verdict"] == "suitable"
+    expect(page.locator("#detail")).to_have_attribute("data-model", best["model"])
+    first_row = page.locator("#ranking-table tbody tr").first
+    expect(first_row).to_have_attribute("aria-current", "true")
+    expect(first_row).to_contain_text("suitable")
+
+    catalogue = page.request.get(f"/api/v1/actuators/{best['model']}").json()
+    assert catalogue["continuous_duty_zone"] is None
+    stall = catalogue["stall_torque_nm"] or catalogue["continuous_torque_nm"]
+    zone = traces(page, "chart-diagram")["zone-approx"]
+    assert max(zone["y"]) == pytest.approx(stall)
+    assert max(zone["x"]) == pytest.approx(catalogue["max_speed_rpm"])
+    assert any("approximate" in text for text in plot_annotations(page, "chart-diagram"))
+    # the approximate check is shown as approximate, with ≈ before its limit
+    duty = page.locator('#checks-table tr[data-check="continuous_duty"]')
+    expect(duty).to_contain_text("approximate")
+    expect(duty).to_contain_text("≈")
+
+    # verdict filter: only the unsuitable rows, each with its reason in words
+    page.locator('.filter-button[data-filter="unsuitable"]').click()
+    visible = page.locator("#ranking-table tbody tr:visible")
+    unsuitable = [c for c in body["candidates"] if c["verdict"] == "unsuitable"]
+    expect(visible).to_have_count(len(unsuitable))
+    expect(visible.first.locator(".reasons li").first).to_contain_text("fail")
+
+
+def test_rotary_table_shows_the_converted_load(page: Page) -> None:
+    mass, diameter, mu, radius = 50.0, 0.4, 0.02, 0.15
+    expected_inertia = mass / 8 * diameter**2  # Eq. 515.6 → 1.0 kgm²
+    expected_torque = mu * mass * G * radius  # Eq. 515.6 → 1.4715 Nm
+    page.goto("/")
+    page.get_by_label("Rotary motion (rotary table)").check()
+    expect(page.locator("#mech-rotary_table")).to_be_visible()
+    expect(page.locator("#f-torque")).to_be_hidden()
+    page.locator("#f-speed").fill("40")
+    page.locator("#f-rt-mass").fill("50")
+    page.locator("#f-rt-diameter").fill("0.4")
+    page.locator("#f-rt-friction").fill("0.02")
+    page.locator("#f-rt-radius").fill("0.15")
+    fill_cycle(page, "0.1", "0.1", "0.1", "1")
+    status, body = post_selection(page)
+    assert status == 201
+    assert body["mechanism"]["type"] == "rotary_table"
+
+    torque = page.locator("#resolved-rotary_table-torque")
+    inertia = page.locator("#resolved-rotary_table-inertia")
+    assert float(torque.get_attribute("data-value") or "nan") == pytest.approx(expected_torque)
+    assert float(inertia.get_attribute("data-value") or "nan") == pytest.approx(expected_inertia)
+    assert shown(torque.inner_text()) == pytest.approx(expected_torque, rel=1e-3)
+    assert shown(inertia.inner_text()) == pytest.approx(expected_inertia, rel=1e-3)
+    expect(torque).to_have_text("1.472\u202fNm")
+    expect(inertia).to_have_text("1\u202fkgm²")
+    assert shown(page.locator("#sum-torque .value").inner_text()) == pytest.approx(
+        expected_torque, rel=1e-3
+    )
+    expect(page.locator("#sum-mechanism")).to_contain_text("rotary table")
+
+    # editing the input marks the result as belonging to the previous input
+    page.locator("#f-rt-mass").fill("60")
+    expect(page.locator("#results-body .notice-warn")).to_contain_text("inputs have changed")
+
+
+def test_api_errors_appear_at_their_fields(page: Page) -> None:
+    page.goto("/")
+    page.get_by_label("Linear horizontal motion (ball screw)").check()
+    page.locator("#f-speed").fill("40")
+    page.locator("#f-bs-mass").fill("20")
+    page.locator("#f-bs-lead").fill("0.01")
+    page.locator("#f-bs-friction").fill("11")  # HTML allows it, the API's bound is μ ≤ 10
+    page.locator("#f-bs-eff").fill("1.5")  # η ≤ 1
+    fill_cycle(page, "0", "0.1", "0.1", "1")  # t_1 = 0: HTML min=0 allows it, the API not
+    status, body = post_selection(page)
+    assert status == 422
+    locs = {tuple(e["loc"]) for e in body["detail"]}
+    assert ("body", "load", "ball_screw", "friction_coefficient") in locs
+
+    for field, error, text in (
+        ("#f-bs-friction", "#err-bs-friction", "less than or equal to 10"),
+        ("#f-bs-eff", "#err-bs-eff", "less than or equal to 1"),
+        ("#f-t1", "#err-t1", "greater than or equal to 0.0001"),
+    ):
+        expect(page.locator(error)).to_be_visible()
+        expect(page.locator(error)).to_contain_text(text)
+        expect(page.locator(field)).to_have_attribute("aria-invalid", "true")
+    expect(page.locator("#err-bs-lead")).to_be_hidden()
+    expect(page.locator("#form-status")).to_contain_text("3 input(s) rejected")
+    # the first rejected field gets the focus; no result is lost or left blank
+    expect(page.locator("#f-bs-friction")).to_be_focused()
+    expect(page.locator("#results-body")).to_contain_text("No calculation yet")
+    expect(page.locator("body")).not_to_contain_text("Traceback")
+
+    # correcting a field clears its message; an unknown model is named at its field
+    page.locator("#f-bs-friction").fill("0.1")
+    expect(page.locator("#err-bs-friction")).to_be_hidden()
+    page.locator("#f-bs-eff").fill("0.9")
+    page.locator("#f-t1").fill("0.1")
+    page.locator("#f-models").fill("FHA-25C-50-L, NO-SUCH-MODEL")
+    status, body = post_selection(page)
+    assert status == 422
+    assert body["detail"][0]["loc"] == ["body", "models", 1]
+    expect(page.locator("#err-models")).to_contain_text("unknown actuator model 'NO-SUCH-MODEL'")
+    expect(page.locator("#f-models")).to_have_attribute("aria-invalid", "true")
+
+    # and with the models restricted correctly the API has the final, positive word
+    page.locator("#f-models").fill("FHA-25C-50-L CHA-25A-50")
+    status, body = post_selection(page)
+    assert status == 201
+    expect(page.locator("#ranking-table tbody tr")).to_have_count(2)
+    expect(page.locator("#err-models")).to_be_hidden()
+
+
+def test_permalink_reopens_the_selection(page: Page, browser: Browser, base_url: str) -> None:
+    page.goto("/")
+    page.get_by_label("Rotary motion (rotary table)").check()
+    page.locator("#f-speed").fill("30")
+    page.locator("#f-rt-mass").fill("50")
+    page.locator("#f-rt-diameter").fill("0.4")
+    page.locator("#f-rt-friction").fill("0.02")
+    page.locator("#f-rt-radius").fill("0.15")
+    fill_cycle(page, "0.2", "0.5", "0.25", "2")
+    page.locator("#f-hd").uncheck()
+    _, body = post_selection(page)
+    selection_id = body["id"]
+    assert f"selection={selection_id}" in page.url
+    second = body["candidates"][1]["model"]
+    choose(page, second, by_keyboard=True)
+    link = page.locator("#permalink").input_value()
+    assert link.startswith(base_url)
+    assert f"selection={selection_id}" in link
+    assert page.url == link
+    page.context.grant_permissions(["clipboard-read", "clipboard-write"], origin=base_url)
+    page.locator("#copy-link").click()
+    expect(page.locator("#copy-status")).to_have_text("Link copied.")
+    assert page.evaluate("navigator.clipboard.readText()") == link
+
+    colleague = browser.new_context(viewport=DESKTOP, locale="en-US")
+    try:
+        other = colleague.new_page()
+        other.goto(link)
+        wait_for_charts(other, second)
+        expect(other.locator("#detail")).to_have_attribute("data-model", second)
+        expect(other.locator('input[name="load-kind"][value="rotary_table"]')).to_be_checked()
+        for field, value in (
+            ("#f-speed", 30),
+            ("#f-rt-mass", 50),
+            ("#f-rt-diameter", 0.4),
+            ("#f-rt-friction", 0.02),
+            ("#f-rt-radius", 0.15),
+            ("#f-t1", 0.2),
+            ("#f-t2", 0.5),
+            ("#f-t3", 0.25),
+            ("#f-tp", 2),
+        ):
+            assert float(other.locator(field).input_value()) == pytest.approx(value), field
+        expect(other.locator("#f-hd")).not_to_be_checked()
+        expect(other.locator("#sum-high-dynamics")).to_contain_text("no")
+        expect(other.locator("#ranking-table tbody tr")).to_have_count(len(body["candidates"]))
+        assert traces(other, "chart-cycle")["cycle-speed"]["x"][-1] == pytest.approx(2.95)
+
+        # the bare link chooses the best candidate
+        other.goto(f"{base_url}/?selection={selection_id}")
+        wait_for_charts(other, body["candidates"][0]["model"])
+
+        # an unknown selection says so instead of showing a blank page
+        other.goto(f"{base_url}/?selection=00000000-0000-0000-0000-000000000000")
+        expect(other.locator("#results-alert")).to_contain_text("Stored selection not found")
+        expect(other.locator("#results-body")).to_contain_text("No calculation yet")
+    finally:
+        colleague.close()
+
+
+def test_language_switch_is_remembered(page: Page) -> None:
+    page.goto("/")
+    expect(page.locator("html")).to_have_attribute("lang", "en")
+    expect(page.get_by_label("Load rotation speed")).to_be_visible()
+    page.get_by_role("button", name="Deutsch").click()
+    expect(page.locator("html")).to_have_attribute("lang", "de")
+    expect(page.get_by_role("button", name="Deutsch")).to_have_attribute("aria-pressed", "true")
+    expect(page.locator('label[for="f-speed"]')).to_contain_text("Drehzahl der Last")
+    expect(page.locator("#u-speed")).to_have_text("min⁻¹")
+    expect(page.locator("#submit")).to_have_text("Antriebe auswählen")
+
+    fill_worked_example(page)
+    expect(page.locator("#cycle-sum")).to_have_text("1,3")
+    post_selection(page)
+    expect(page.locator("#sum-mean-speed .value")).to_have_text("6,154\u202fmin⁻¹")
+    expect(page.locator("#sum-duty .value")).to_have_text("23,08\u202f%")
+    choose(page, FHA)
+    assert row_value(page, FHA, "accel") == "95,48"
+    assert row_value(page, FHA, "decel") == "−85,48"
+    duty = page.locator('#checks-table tr[data-check="continuous_duty"]')
+    expect(duty).to_contain_text("keine Daten")
+    expect(duty).to_contain_text("Abb. 517.1")
+    expect(page.locator('#checks-table tr[data-check="peak_torque"]')).to_contain_text("erfüllt")
+    expect(page.locator("#detail-heading")).to_contain_text("nicht bestätigt")
+    assert page.evaluate("document.getElementById('chart-diagram').layout.separators") == ",."
+    assert any("keine Daten" in text for text in plot_annotations(page, "chart-diagram"))
+
+    # remembered: a reload (the permalink) comes back in German, charts included
+    page.reload()
+    wait_for_charts(page, FHA)
+    expect(page.locator("html")).to_have_attribute("lang", "de")
+    expect(page.locator('label[for="f-speed"]')).to_contain_text("Drehzahl der Last")
+    expect(page.locator("#sum-duty .value")).to_have_text("23,08\u202f%")
+    page.get_by_role("button", name="English").click()
+    expect(page.locator("#sum-duty .value")).to_have_text("23.08\u202f%")
+    expect(page.locator('#checks-table tr[data-check="continuous_duty"]')).to_contain_text(
+        "no data"
+    )
+    assert page.evaluate("localStorage.getItem('actuator-selection.lang')") == "en"
+
+
+def test_controllers_of_the_api_are_listed(page: Page) -> None:
+    page.goto("/")
+    page.locator("#example").click()
+    _, body = post_selection(page)
+    choose(page, FHA)
+    candidate = next(c for c in body["candidates"] if c["model"] == FHA)
+    if not isinstance(candidate.get("controllers"), list):
+        pytest.skip("this API version sends no controllers with its candidates")
+    rows = page.locator("#controllers-table tbody tr")
+    expect(rows).to_have_count(len(candidate["controllers"]))
+    for i, controller in enumerate(candidate["controllers"]):
+        name = " ".join(
+            str(controller[k]) for k in ("manufacturer", "type", "variant") if controller.get(k)
+        )
+        expect(rows.nth(i).locator(".controller-name")).to_have_text(name)
+        expect(rows.nth(i)).to_have_attribute("data-level", controller["level"])
+    if "controllers_note" in candidate:
+        expect(page.locator(".controllers")).to_contain_text(candidate["controllers_note"])
+
+
+def test_controller_levels_in_german_and_absent_controllers(page: Page) -> None:
+    controllers = [
+        {"manufacturer": "SIEMENS", "type": "SINAMICS S120", "variant": None, "level": "tested"},
+        {"manufacturer": "Beckhoff", "type": "AX 5000", "variant": "AX5101", "level": "possible"},
+    ]
+
+    def rewrite(route: Route) -> None:
+        response = route.fetch()
+        body = response.json()
+        body["candidates"][0]["controllers"] = controllers
+        for key in ("controllers", "controllers_excluded", "controllers_note"):
+            body["candidates"][1].pop(key, None)  # as a selection stored before controllers
+        # status and body only: the original headers name a gzip encoding
+        route.fulfill(status=response.status, json=body)
+
+    page.route("**/api/v1/selections", rewrite)
+    page.goto("/")
+    page.get_by_role("button", name="Deutsch").click()
+    page.locator("#example").click()
+    _, body = post_selection(page)
+    rows = page.locator("#controllers-table tbody tr")
+    expect(rows).to_have_count(2)
+    expect(rows.nth(0)).to_contain_text("SIEMENS SINAMICS S120")
+    expect(rows.nth(0)).to_contain_text("praktisch erprobt")
+    expect(rows.nth(1)).to_contain_text("Beckhoff AX 5000 AX5101")
+    expect(rows.nth(1)).to_contain_text("theoretisch machbar")
+
+    choose(page, body["candidates"][1]["model"])
+    expect(page.locator(".controllers")).to_have_count(0)  # absent field: nothing shown
+
+
+def test_keyboard_and_screen_reader_affordances(page: Page) -> None:
+    page.goto("/")
+    page.keyboard.press("Tab")
+    expect(page.locator(".skip-link")).to_be_focused()
+    unlabelled = page.evaluate(
+        """() => [...document.querySelectorAll('#selection-form input')]
+              .filter(el => el.labels.length === 0 && !el.getAttribute('aria-label'))
+              .map(el => el.id)"""
+    )
+    assert unlabelled == []
+    expect(page.locator("#results-status")).to_have_attribute("role", "status")
+    expect(page.locator("#form-status")).to_have_attribute("role", "alert")
+
+    page.locator("#example").focus()
+    page.keyboard.press("Enter")
+    page.locator("#f-tp").focus()
+    with page.expect_response("**/api/v1/selections"):
+        page.keyboard.press("Enter")  # Enter in a field submits the form
+    wait_for_charts(page)
+    expect(page.locator("#results-status")).to_contain_text("suitable")
+    expect(page.locator("#ranking-table thead th")).to_have_count(7)
+    expect(page.locator("#checks-table thead th")).to_have_count(6)
+    choose(page, FHA, by_keyboard=True)
+    expect(page.locator(f'#ranking-table tr[data-model="{FHA}"] .model-button')).to_have_attribute(
+        "aria-pressed", "true"
+    )
+    expect(page.locator("#results-status")).to_contain_text(FHA)
+
+
+def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffic) -> None:
+    page.goto("/")
+    page.locator("#example").click()
+    post_selection(page)
+    choose(page, FHA)
+    page.get_by_role("button", name="Deutsch").click()
+    wait_for_charts(page, FHA)
+    assert traffic.requests, "no request recorded"
+    foreign = [url for url in traffic.requests if not url.startswith(f"{base_url}/")]
+    assert foreign == []
+    assert any(re.search(r"/vendor/plotly-[\d.]+\.min\.js$", url) for url in traffic.requests)
+    assert page.evaluate("typeof window.Plotly.react") == "function"
+    assert not traffic.console_errors
+
+
+def test_figures_module_draws_a_published_zone_and_says_no_data(page: Page) -> None:
+    """figures.js is pure: the zone case (no catalogue zone is seeded yet) and the gaps."""
+    page.goto("/")
+    result = cast(
+        dict[str, Any],
+        page.evaluate(
+            """async () => {
+      const f = await import('/js/figures.js');
+      const sel = {cycle: {accel_s: 0.1, constant_s: 0.1, decel_s: 0.1, pause_s: 1},
+                   cycle_time_s: 1.3, load: {speed_rpm: 40, torque_nm: 5, inertia_kgm2: 1.3},
+                   mean_speed_rpm: 6.15, duty_cycle_percent: 23.08};
+      const cand = {model: 'X', accel_torque_nm: 95.48, constant_torque_nm: 5,
+                    decel_torque_nm: -85.48, rms_torque_nm: 35.57,
+                    checks: [{name: 'continuous_duty', status: 'pass'}]};
+      const zoneAct = {max_torque_nm: 151, max_speed_rpm: 90, stall_torque_nm: 58,
+                       continuous_torque_nm: null,
+                       continuous_duty_zone: [{speed_rpm: 90, torque_nm: 30},
+                                              {speed_rpm: 0, torque_nm: 60},
+                                              {speed_rpm: 60, torque_nm: 50}]};
+      const before = JSON.stringify([sel, cand, zoneAct]);
+      const zone = f.diagramFigure(sel, cand, zoneAct, 'en');
+      const unchanged = JSON.stringify([sel, cand, zoneAct]) === before;
+      const contAct = {max_torque_nm: 8.3, max_speed_rpm: 116, stall_torque_nm: null,
+                       continuous_torque_nm: 2.9, continuous_duty_zone: null};
+      const approx = f.diagramFigure(sel, cand, contAct, 'de');
+      const none = f.diagramFigure(sel, cand, {max_torque_nm: 151, max_speed_rpm: 90}, 'en');
+      const noActuator = f.diagramFigure(sel, cand, null, 'en');
+      const noTorques = f.cycleFigure(sel, {model: 'Y', accel_torque_nm: null,
+        constant_torque_nm: null, decel_torque_nm: null, rms_torque_nm: null, checks: []}, 'de');
+      return {zone, approx, none, noActuator, noTorques, unchanged};
+    }"""
+        ),
+    )
+    assert result["unchanged"], "figure functions must not change their inputs"
+
+    def by_uid(fig: dict[str, Any]) -> dict[str, dict[str, Any]]:
+        return {t["uid"]: t for t in fig["data"]}
+
+    zone = by_uid(result["zone"])
+    assert zone["zone"]["x"] == [0, 60, 90, 90]  # sorted by speed, closed down to T = 0
+    assert zone["zone"]["y"] == [60, 50, 30, 0]
+    assert "zone-approx" not in zone
+    assert zone["operating-point"]["x"] == [6.15]
+
+    approx = by_uid(result["approx"])
+    assert approx["zone-approx"]["y"] == [0, 2.9, 2.9, 0, 0]
+    assert approx["zone-approx"]["x"] == [0, 0, 116, 116, 0]
+    assert "näherungsweise" in approx["zone-approx"]["name"]
+    assert result["approx"]["layout"]["separators"] == ",."
+
+    for case in ("none", "noActuator"):
+        fig = result[case]
+        uids = {t["uid"] for t in fig["data"]}
+        assert not uids & {"zone", "zone-approx"}, case
+        assert any("no data" in a["text"] for a in fig["layout"]["annotations"]), case
+    assert {"t-max", "n-max"} <= {t["uid"] for t in result["none"]["data"]}
+    assert not {"t-max", "n-max"} & {t["uid"] for t in result["noActuator"]["data"]}
+
+    no_torques = by_uid(result["noTorques"])
+    assert set(no_torques) == {"cycle-speed"}
+    assert any("keine Daten" in a["text"] for a in result["noTorques"]["layout"]["annotations"])
+
+
+@pytest.mark.parametrize("viewport", [DESKTOP, PHONE], ids=["1280px", "375px"])
+def test_layout_fits_and_screenshots(
+    viewport: ViewportSize, browser: Browser, base_url: str, screenshot_dir: Path
+) -> None:
+    width = viewport["width"]
+    context = browser.new_context(viewport=viewport, locale="en-US", base_url=base_url)
+    try:
+        view = context.new_page()
+        view.goto("/")
+        view.locator("#example").click()
+        post_selection(view)
+        # nothing wider than the window: no sideways scrolling of the whole page,
+        # neither for the best candidate (approximate zone, many controllers) nor FHA's
+        assert view.evaluate("document.documentElement.scrollWidth") <= width
+        assert_no_leaked_values(view)
+        choose(view, FHA)
+        assert view.evaluate("document.documentElement.scrollWidth") <= width
+        for chart in ("#chart-cycle", "#chart-diagram"):
+            view.locator(chart).scroll_into_view_if_needed()
+            box = view.locator(chart).bounding_box()
+            assert box is not None
+            assert box["width"] > 250
+            assert box["height"] > 250
+            assert box["x"] >= 0
+            assert box["x"] + box["width"] <= width
+        # the chapter's numbers are readable at this width
+        expect(view.locator(f'#ranking-table tr[data-model="{FHA}"]')).to_contain_text("95.48")
+        view.evaluate("window.scrollTo(0, 0)")
+        view.screenshot(path=str(screenshot_dir / f"page-{width}.png"), full_page=True)
+        view.locator("#detail").screenshot(path=str(screenshot_dir / f"detail-{width}.png"))
+        view.locator(".ranking-card").screenshot(path=str(screenshot_dir / f"ranking-{width}.png"))
+    finally:
+        context.close()
