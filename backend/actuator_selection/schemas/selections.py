@@ -231,6 +231,9 @@ class SelectionOut(ResponseModel):
     mechanism: dict[str, Any] | None = Field(description="the mechanism as sent, if any")
     cycle: CycleIn
     high_dynamics: bool
+    models: list[str] | None = Field(
+        default=None, description="the catalogue restriction as sent; null = whole catalogue"
+    )
     cycle_time_s: float = Field(description="t_0 = t_1 + t_2 + t_3 + t_p [s]")
     mean_speed_rpm: float = Field(description="n_av (Eq. 514.3) [rpm]")
     duty_cycle_percent: float = Field(description="ED (Eq. 514.4) [%]")
@@ -265,6 +268,7 @@ class SelectionOut(ResponseModel):
             mechanism=mechanism,
             cycle=request.cycle,
             high_dynamics=request.high_dynamics,
+            models=request.models,
             cycle_time_s=selection.cycle_time_s,
             mean_speed_rpm=selection.mean_speed_rpm,
             duty_cycle_percent=selection.duty_cycle_percent,
