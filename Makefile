@@ -44,6 +44,7 @@ pytest: install
 ## Throughput of the selection engine (not part of the tests).
 bench: install
 	$(BIN)/python -m bench.selection
+	$(BIN)/python -m bench.batch
 
 ## Re-resolve requirements.lock from pyproject.toml (needs the registry).
 lock: install

@@ -12,6 +12,7 @@ from fastapi.staticfiles import StaticFiles
 from actuator_selection import __version__
 from actuator_selection.api import (
     actuators,
+    batch,
     controllers,
     errors,
     health,
@@ -45,10 +46,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)
     errors.install(app)
-    for module in (health, actuators, controllers, selections, tools):
+    # batch before selections: /selections/batch must not read as a selection id.
+    for module in (health, actuators, controllers, batch, selections, tools):
         app.include_router(module.router, prefix=API_PREFIX)
     app.include_router(static.router)
-    app.add_middleware(GZipMiddleware, minimum_size=1024)
+    # Level 1: on a 58.5 MB batch answer 0.2 s for 7.2 MB, against 0.64 s for 4.9 MB at 9.
+    app.add_middleware(GZipMiddleware, minimum_size=1024, compresslevel=1)
     if FRONTEND_DIR.is_dir():
         app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
     return app

@@ -1,0 +1,578 @@
+"""The selection flowchart for many load cases at once, vectorised with numpy.
+
+An ERP sizes thousands of load cases against the same catalogue. This module runs
+the flowchart of :mod:`actuator_selection.core.selection` for every case × actuator
+as arrays: the cycle figures (Eq. 514.1–514.4), the status of each of the five
+checks, the verdicts and the ranking (:func:`~actuator_selection.core.selection.ranking_key`),
+and then builds the detailed :class:`~actuator_selection.core.selection.Candidate` of
+only the best ``top`` actuators of each case with the scalar
+:func:`~actuator_selection.core.selection.evaluate`, so their numbers and messages are
+those of a single selection by construction.
+
+That is only right if the arrays decide exactly as the scalar code does. They do,
+bit for bit, for three reasons:
+
+- every expression performs the same IEEE operations in the same order as
+  ``core/cycle.py`` and ``core/zones.py`` (numpy adds no fused multiply-add);
+- a catalogue value that is ``None`` is NaN here and masked: its check is
+  ``no_data``, whatever the NaN arithmetic gives;
+- ``x**2`` in ``core/cycle.py`` is the C library's ``pow(x, 2)``, which glibc does
+  *not* always round like ``x * x`` (about one square in 1,200 differs by one ulp,
+  measured on glibc 2.36). :func:`_python_square` squares with ``x * x`` and calls
+  Python's own ``**`` for the elements where the two may disagree. Ranking, which
+  needs only the statuses, squares with ``x * x`` and recomputes exactly just the
+  T_rms that lie within 1e-12 of their limit.
+
+The tests compare every array with the scalar flowchart with ``==``.
+
+Worked example (Table 516.1 against the FHA-25C-50-L of Table 516.3), two cases:
+
+>>> from actuator_selection.core.cycle import Load, SpeedPattern
+>>> fha = Actuator(model="FHA-25C-50-L", family="FHA-C", gear_ratio=50,
+...                max_torque_nm=151, max_speed_rpm=90, inertia_kgm2=0.86)
+>>> pattern = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1)
+>>> apps = [Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3)),
+...         Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=3.0))]
+>>> ev = evaluate_batch([fha], apps)
+>>> [round(t, 2) for t in ev.accel_torque_nm[:, 0].tolist()]
+[95.48, 166.69]
+>>> [ev.verdict(i, 0).value for i in range(2)]
+['unconfirmed', 'unsuitable']
+>>> [s.candidates[0].verdict.value for s in select_batch([fha], apps, top=1)]
+['unconfirmed', 'unsuitable']
+"""
+
+from __future__ import annotations
+
+import math
+import operator
+from collections.abc import Collection, Sequence, Sized
+from dataclasses import dataclass, fields
+from itertools import repeat
+
+import numpy as np
+import numpy.typing as npt
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.selection import (
+    INERTIA_RATIO_LIMIT,
+    Application,
+    Selection,
+    Status,
+    Verdict,
+    evaluate,
+)
+from actuator_selection.core.units import RAD_PER_S_PER_RPM
+
+FloatArray = npt.NDArray[np.float64]
+BoolArray = npt.NDArray[np.bool_]
+CodeArray = npt.NDArray[np.int8]
+IndexArray = npt.NDArray[np.intp]
+
+CHECK_NAMES = ("max_speed", "inertia_ratio", "peak_torque", "decel_torque", "continuous_duty")
+"""The checks in flowchart order, as the scalar ``evaluate`` runs them."""
+
+STATUS_BY_CODE = (Status.PASS, Status.WARN, Status.NO_DATA, Status.FAIL)
+"""Status codes of :attr:`BatchEvaluation.statuses`, ordered so that the largest code of
+a candidate's checks decides its verdict (any fail, else any no data)."""
+
+VERDICT_BY_CODE = (Verdict.SUITABLE, Verdict.UNCONFIRMED, Verdict.UNSUITABLE)
+"""Verdict codes of :attr:`BatchEvaluation.verdicts`, in ranking order."""
+
+_PASS, _WARN, _NO_DATA, _FAIL = (np.int8(c) for c in range(4))
+
+_BLOCK_CELLS = 1 << 16
+"""Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
+and memory stays bounded whatever the number of cases."""
+
+_SPLITTER = 134_217_729.0
+"""2**27 + 1: Veltkamp's constant that splits a float64 into two 26-bit halves."""
+_SPLIT_SAFE = (2.0**-400, 2.0**400)
+"""|x| range in which the split and the products of :func:`_python_square` are exact."""
+_ROUNDING_RISK_ULP = 0.44
+"""Where x² lies closer than this many ulps to the midpoint between two doubles, a pow()
+accurate to 0.54 ulp (glibc's documented bound; misroundings measured only within 0.007
+ulp of the midpoint) may round differently from ``x * x``: such squares are recomputed."""
+_NEAR_LIMIT = 1e-12
+"""Relative distance of T_rms from its limit below which ranking recomputes T_rms exactly:
+squares as ``x * x`` put T_rms within a few ulps (~1e-15) of Python's value."""
+_NEAR_ZERO = 1e-280
+"""Absolute floor of that distance, for limits so small that relative means nothing."""
+
+
+def _python_square(x: FloatArray) -> FloatArray:
+    """x² rounded exactly as CPython's ``x**2`` rounds it (the C library's ``pow``).
+
+    ``x * x`` is correctly rounded; ``pow`` may round the other way only when the
+    exact square lies near the midpoint of two doubles. Dekker's exact product
+    (with Veltkamp's split, no fused multiply-add needed) gives the rounding error
+    of ``x * x``; where it is near half an ulp, Python squares the element itself.
+    NaN stays NaN (a missing J_A, masked later).
+    """
+    square: FloatArray = x * x
+    with np.errstate(all="ignore"):
+        scaled = x * _SPLITTER
+        high = scaled - (scaled - x)
+        low = x - high
+        error = ((high * high - square) + 2.0 * high * low) + low * low
+        # At a power of two the ulp below is half the ulp above: take the smaller.
+        ulp = np.spacing(np.nextafter(square, 0.0))
+        magnitude = np.abs(x)
+        exact_split = (magnitude > _SPLIT_SAFE[0]) & (magnitude < _SPLIT_SAFE[1])
+        risky = np.where(
+            exact_split, np.abs(error) >= _ROUNDING_RISK_ULP * ulp, ~np.isnan(x)
+        ).ravel()
+    where = np.flatnonzero(risky)
+    if where.size:
+        values = x.ravel()[where].tolist()
+        np.put(square, where, list(map(operator.pow, values, repeat(2))))
+    return square
+
+
+def _optional(values: Sequence[float | None]) -> FloatArray:
+    return np.array([math.nan if v is None else v for v in values], dtype=np.float64)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class _Catalogue:
+    """The actuators as columns; NaN where the catalogue gives no value."""
+
+    max_torque: FloatArray
+    max_speed: FloatArray
+    inertia: FloatArray
+    inertia_missing: BoolArray
+    torque_check_missing: BoolArray
+    speed_missing: BoolArray
+    inertia_limit: FloatArray
+    duty_limit: FloatArray
+    duty_missing: BoolArray
+    duty_speed_limit: FloatArray
+    zone_columns: IndexArray
+    rank_position: npt.NDArray[np.int32]
+
+
+def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
+    max_torque = _optional([a.max_torque_nm for a in actuators])
+    max_speed = _optional([a.max_speed_rpm for a in actuators])
+    inertia = _optional([a.inertia_kgm2 for a in actuators])
+    stall = _optional([a.stall_torque_nm for a in actuators])
+    continuous = _optional([a.continuous_torque_nm for a in actuators])
+    has_zone = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
+    inertia_missing = np.isnan(inertia)
+    speed_missing = np.isnan(max_speed)
+    # check_continuous_duty: with a zone the zone's edge decides; otherwise T_0, else the
+    # allowable continuous torque, with n_max, bound an approximate rectangle.
+    rectangle_torque = np.where(np.isnan(stall), continuous, stall)
+    duty_missing = inertia_missing | (~has_zone & (np.isnan(rectangle_torque) | speed_missing))
+    # ranking_key after the verdict: T_max, then J_A (unknown last), then the model name;
+    # the column index mirrors sorted()'s stability for equal keys.
+    inf = math.inf
+    order = sorted(
+        range(len(actuators)),
+        key=lambda j: (
+            inf if actuators[j].max_torque_nm is None else actuators[j].max_torque_nm,
+            inf if actuators[j].inertia_kgm2 is None else actuators[j].inertia_kgm2,
+            actuators[j].model,
+            j,
+        ),
+    )
+    rank_position = np.empty(len(actuators), dtype=np.int32)
+    rank_position[order] = np.arange(len(actuators), dtype=np.int32)
+    return _Catalogue(
+        max_torque=max_torque,
+        max_speed=max_speed,
+        inertia=inertia,
+        inertia_missing=inertia_missing,
+        torque_check_missing=inertia_missing | np.isnan(max_torque),
+        speed_missing=speed_missing,
+        inertia_limit=INERTIA_RATIO_LIMIT * inertia,
+        duty_limit=rectangle_torque,
+        duty_missing=duty_missing,
+        # A zone bounds the speed itself (beyond its last point the limit is NaN).
+        duty_speed_limit=np.where(has_zone, inf, max_speed),
+        zone_columns=np.flatnonzero(has_zone),
+        rank_position=rank_position,
+    )
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class _Cases:
+    """The load cases as columns, with their cycle figures (Eq. 514.3, 514.4)."""
+
+    speed: FloatArray
+    accel: FloatArray
+    constant: FloatArray
+    decel: FloatArray
+    load_torque: FloatArray
+    load_torque_squared: FloatArray
+    load_inertia: FloatArray
+    inertia_fail_code: CodeArray
+    cycle: FloatArray
+    mean_speed: FloatArray
+    duty: FloatArray
+
+    def rows(self, start: int, stop: int) -> _Cases:
+        """The cases ``start:stop``."""
+        return _Cases(**{f.name: getattr(self, f.name)[start:stop] for f in fields(self)})
+
+
+def _cases(apps: Sequence[Application]) -> _Cases:
+    def column(values: Sequence[float]) -> FloatArray:
+        return np.array(values, dtype=np.float64)
+
+    speed = column([a.pattern.speed_rpm for a in apps])
+    accel = column([a.pattern.accel_s for a in apps])
+    constant = column([a.pattern.constant_s for a in apps])
+    decel = column([a.pattern.decel_s for a in apps])
+    pause = column([a.pattern.pause_s for a in apps])
+    load_torque = column([a.load.torque_nm for a in apps])
+    high_dynamics = np.array([a.high_dynamics for a in apps], dtype=np.bool_)
+    with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
+        # SpeedPattern.moving_s and .cycle_s, Eq. 514.3 and 514.4, in cycle.py's order.
+        moving = accel + constant + decel
+        cycle = moving + pause
+        half = speed / 2
+        mean_speed = (half * accel + speed * constant + half * decel) / cycle
+        duty = moving / cycle * 100.0
+    return _Cases(
+        speed=speed,
+        accel=accel,
+        constant=constant,
+        decel=decel,
+        load_torque=load_torque,
+        load_torque_squared=_python_square(load_torque),
+        load_inertia=column([a.load.inertia_kgm2 for a in apps]),
+        inertia_fail_code=np.where(high_dynamics, _FAIL, _WARN),
+        cycle=cycle,
+        mean_speed=mean_speed,
+        duty=duty,
+    )
+
+
+def _zone_limits(
+    actuators: Sequence[Actuator], columns: IndexArray, mean_speed: FloatArray
+) -> FloatArray:
+    """ContinuousDutyZone.torque_limit_nm(n_av) per case × zone column; NaN beyond the zone."""
+    limits = np.full((mean_speed.size, columns.size), math.nan)
+    for k, j in enumerate(columns.tolist()):
+        zone = actuators[j].zone
+        assert zone is not None
+        speeds = np.array([p.speed_rpm for p in zone.points], dtype=np.float64)
+        torques = np.array([p.torque_nm for p in zone.points], dtype=np.float64)
+        last = speeds.size - 1
+        i = np.searchsorted(speeds, mean_speed, side="right")  # bisect_right
+        b = np.minimum(i, last)
+        a = b - 1
+        with np.errstate(all="ignore"):  # rows outside the zone are masked below
+            share = (mean_speed - speeds[a]) / (speeds[b] - speeds[a])
+            edge = torques[a] + share * (torques[b] - torques[a])
+        edge = np.where(i > last, torques[last], edge)
+        inside = (mean_speed >= 0) & (mean_speed <= speeds[last])
+        limits[:, k] = np.where(inside, edge, math.nan)
+    return limits
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class _Block:
+    accel_torque: FloatArray
+    decel_torque: FloatArray
+    rms_torque: FloatArray
+    statuses: tuple[CodeArray, CodeArray, CodeArray, CodeArray, CodeArray]
+
+    def verdicts(self) -> CodeArray:
+        first, *rest = self.statuses
+        worst = first.copy()
+        for codes in rest:
+            np.maximum(worst, codes, out=worst)
+        # PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable.
+        np.subtract(worst, _WARN, out=worst)
+        np.maximum(worst, 0, out=worst)
+        return worst
+
+
+def _square(x: FloatArray) -> FloatArray:
+    return x * x
+
+
+def _settle_near_limits(
+    rms: FloatArray, limit: FloatArray, accel: FloatArray, decel: FloatArray, cases: _Cases
+) -> None:
+    """Replace T_rms by the exact value (Python's squares) where it is near its limit.
+
+    With squares as ``x * x`` T_rms is within a few ulps of Python's value, so only a
+    T_rms within :data:`_NEAR_LIMIT` of the continuous-duty limit can compare differently.
+    """
+    with np.errstate(all="ignore"):
+        band = np.maximum(_NEAR_LIMIT * np.abs(limit), _NEAR_ZERO)
+        rows, cols = np.nonzero(np.abs(rms - limit) <= band)
+    if rows.size:
+        energy = (
+            _python_square(accel[rows, cols]) * cases.accel[rows]
+            + (cases.load_torque_squared * cases.constant)[rows]
+            + _python_square(decel[rows, cols]) * cases.decel[rows]
+        )
+        rms[rows, cols] = np.sqrt(energy / cases.cycle[rows])
+
+
+def _evaluate_block(
+    cat: _Catalogue, cases: _Cases, zone_limits: FloatArray, *, exact: bool
+) -> _Block:
+    """The flowchart for ``cases`` × every actuator (rows × columns).
+
+    ``exact``: T_rms bit for bit as Python computes it. Otherwise its squares are
+    ``x * x`` and only the T_rms near a limit are made exact: the statuses are the
+    same, at about half the cost.
+    """
+    col = np.newaxis
+    square = _python_square if exact else _square
+    with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
+        # Eq. 514.1 as cycle.py writes it: (n_2·2π/60)/t, then T_L ± (J_A + J_L)·that.
+        angular = cases.speed * RAD_PER_S_PER_RPM
+        inertia = cat.inertia + cases.load_inertia[:, col]
+        accel_torque = cases.load_torque[:, col] + inertia * (angular / cases.accel)[:, col]
+        decel_torque = cases.load_torque[:, col] - inertia * (angular / cases.decel)[:, col]
+        # Eq. 514.2: (T_1²·t_1 + T_2²·t_2 + T_3²·t_3) / t_0, left to right, then √.
+        energy = (
+            square(accel_torque) * cases.accel[:, col]
+            + (cases.load_torque_squared * cases.constant)[:, col]
+            + square(decel_torque) * cases.decel[:, col]
+        )
+        rms_torque = np.sqrt(energy / cases.cycle[:, col])
+
+    def status(ok: BoolArray, missing: BoolArray) -> CodeArray:
+        return np.where(missing, _NO_DATA, np.where(ok, _PASS, _FAIL))
+
+    max_speed = status(cases.speed[:, col] <= cat.max_speed, cat.speed_missing)
+    inertia_ratio = np.where(
+        cat.inertia_missing,
+        _NO_DATA,
+        np.where(
+            cases.load_inertia[:, col] <= cat.inertia_limit,
+            _PASS,
+            cases.inertia_fail_code[:, col],
+        ),
+    )
+    peak = status(accel_torque <= cat.max_torque, cat.torque_check_missing)
+    decel = status(np.abs(decel_torque) <= cat.max_torque, cat.torque_check_missing)
+    duty_limit = np.broadcast_to(cat.duty_limit, rms_torque.shape).copy()
+    duty_limit[:, cat.zone_columns] = zone_limits
+    if not exact:
+        _settle_near_limits(rms_torque, duty_limit, accel_torque, decel_torque, cases)
+    duty_ok = (rms_torque <= duty_limit) & (cases.mean_speed[:, col] <= cat.duty_speed_limit)
+    duty = status(duty_ok, cat.duty_missing)
+    return _Block(
+        accel_torque=accel_torque,
+        decel_torque=decel_torque,
+        rms_torque=rms_torque,
+        statuses=(max_speed, inertia_ratio, peak, decel, duty),
+    )
+
+
+def _blocks(actuators: Sequence[Actuator], apps: Sized) -> list[tuple[int, int]]:
+    rows = max(1, _BLOCK_CELLS // max(1, len(actuators)))
+    return [(start, min(start + rows, len(apps))) for start in range(0, len(apps), rows)]
+
+
+@dataclass(frozen=True, slots=True, eq=False, kw_only=True)
+class BatchEvaluation:
+    """The flowchart for every case (rows) × actuator (columns), as arrays.
+
+    Torques are NaN where the actuator has no J_A (the scalar ``torques`` is None).
+    Every number equals, bit for bit, what the scalar functions give.
+    """
+
+    mean_speed_rpm: FloatArray
+    """n_av per case (Eq. 514.3) [rpm]."""
+    duty_cycle_percent: FloatArray
+    """ED per case (Eq. 514.4) [%]."""
+    cycle_time_s: FloatArray
+    """t_0 per case [s]."""
+    accel_torque_nm: FloatArray
+    """T_1 per case × actuator (Eq. 514.1) [Nm]."""
+    decel_torque_nm: FloatArray
+    """T_3 per case × actuator [Nm]."""
+    rms_torque_nm: FloatArray
+    """T_rms per case × actuator (Eq. 514.2) [Nm]."""
+    statuses: CodeArray
+    """Status codes (:data:`STATUS_BY_CODE`), case × actuator × check (:data:`CHECK_NAMES`)."""
+    verdicts: CodeArray
+    """Verdict codes (:data:`VERDICT_BY_CODE`), case × actuator."""
+
+    def status(self, case: int, actuator: int, check: str) -> Status:
+        """The status of one check of one case and actuator."""
+        return STATUS_BY_CODE[int(self.statuses[case, actuator, CHECK_NAMES.index(check)])]
+
+    def verdict(self, case: int, actuator: int) -> Verdict:
+        """The verdict of one case and actuator."""
+        return VERDICT_BY_CODE[int(self.verdicts[case, actuator])]
+
+
+def evaluate_batch(actuators: Sequence[Actuator], apps: Sequence[Application]) -> BatchEvaluation:
+    """Run the flowchart for every case × actuator and keep every array.
+
+    Parameters
+    ----------
+    actuators
+        The catalogue, columns in this order.
+    apps
+        The load cases, rows in this order.
+
+    Memory grows with cases × actuators (about 40 bytes a cell); for ranking alone
+    use :func:`select_batch`, which keeps only the best of each case.
+    """
+    cat = _catalogue(actuators)
+    cases = _cases(apps)
+    zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    shape = (len(apps), len(actuators))
+    accel, decel, rms = (np.empty(shape) for _ in range(3))
+    statuses = np.empty((*shape, len(CHECK_NAMES)), dtype=np.int8)
+    verdicts = np.empty(shape, dtype=np.int8)
+    for start, stop in _blocks(actuators, apps):
+        block = _evaluate_block(cat, cases.rows(start, stop), zone_limits[start:stop], exact=True)
+        accel[start:stop] = block.accel_torque
+        decel[start:stop] = block.decel_torque
+        rms[start:stop] = block.rms_torque
+        statuses[start:stop] = np.stack(block.statuses, axis=-1)
+        verdicts[start:stop] = block.verdicts()
+    return BatchEvaluation(
+        mean_speed_rpm=cases.mean_speed,
+        duty_cycle_percent=cases.duty,
+        cycle_time_s=cases.cycle,
+        accel_torque_nm=accel,
+        decel_torque_nm=decel,
+        rms_torque_nm=rms,
+        statuses=statuses,
+        verdicts=verdicts,
+    )
+
+
+def _allowed_columns(
+    actuators: Sequence[Actuator], models: Sequence[Collection[str] | None]
+) -> list[BoolArray | None]:
+    """Per case, the columns its ``models`` list allows (None: every one)."""
+    column_of: dict[str, list[int]] = {}
+    for j, a in enumerate(actuators):
+        column_of.setdefault(a.model, []).append(j)
+    masks: dict[frozenset[str], BoolArray] = {}
+    allowed: list[BoolArray | None] = []
+    for names in models:
+        if names is None:
+            allowed.append(None)
+            continue
+        key = frozenset(names)
+        if key not in masks:
+            mask = np.zeros(len(actuators), dtype=np.bool_)
+            mask[[j for name in key for j in column_of.get(name, ())]] = True
+            masks[key] = mask
+        allowed.append(masks[key])
+    return allowed
+
+
+def _rank(
+    actuators: Sequence[Actuator],
+    cat: _Catalogue,
+    cases: _Cases,
+    zone_limits: FloatArray,
+    top: int,
+    models: Sequence[Collection[str] | None] | None,
+) -> list[list[int]]:
+    n = len(actuators)
+    allowed = _allowed_columns(actuators, models) if models is not None else None
+    excluded = np.int32(len(VERDICT_BY_CODE) * n)  # a key beyond every verdict
+    keep = min(top, n)
+    chosen: list[list[int]] = []
+    for start, stop in _blocks(actuators, range(cases.speed.size)):
+        block = _evaluate_block(cat, cases.rows(start, stop), zone_limits[start:stop], exact=False)
+        # ranking_key as one integer: verdict, then the actuator's place in the static order.
+        key = block.verdicts().astype(np.int32) * np.int32(n) + cat.rank_position
+        if allowed is not None:
+            for row, mask in enumerate(allowed[start:stop]):
+                if mask is not None:
+                    key[row, ~mask] += excluded
+        if keep < n:
+            part = np.argpartition(key, keep - 1, axis=1)[:, :keep]
+            part_key = np.take_along_axis(key, part, axis=1)
+        else:
+            part, part_key = np.broadcast_to(np.arange(n), key.shape), key
+        order = np.argsort(part_key, axis=1)
+        best = np.take_along_axis(part, order, axis=1).tolist()
+        best_key = np.take_along_axis(part_key, order, axis=1).tolist()
+        chosen.extend(
+            [j for j, k in zip(row, row_key, strict=True) if k < excluded]
+            for row, row_key in zip(best, best_key, strict=True)
+        )
+    return chosen
+
+
+def _check_arguments(
+    apps: Sequence[Application], top: int, models: Sequence[Collection[str] | None] | None
+) -> None:
+    if top < 1:
+        raise InvalidInputError("top", "must be ≥ 1: the number of candidates kept per case")
+    if models is not None and len(models) != len(apps):
+        raise InvalidInputError("models", "needs one entry (or None) per load case")
+
+
+def rank_batch(
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    top: int = 3,
+    models: Sequence[Collection[str] | None] | None = None,
+) -> list[list[int]]:
+    """Per case, the indexes into ``actuators`` of its best ``top``, best first.
+
+    The ranking of :func:`select` (:func:`~actuator_selection.core.selection.ranking_key`)
+    without building the candidates; arguments as for :func:`select_batch`.
+    """
+    _check_arguments(apps, top, models)
+    cat = _catalogue(actuators)
+    cases = _cases(apps)
+    zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    return _rank(actuators, cat, cases, zone_limits, top, models)
+
+
+def select_batch(
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    top: int = 3,
+    models: Sequence[Collection[str] | None] | None = None,
+) -> list[Selection]:
+    """The best ``top`` candidates of every load case, ranked as :func:`select` ranks them.
+
+    Equal to ``select(actuators, app)`` with its candidates cut to ``top``, case by case
+    (and to ``select`` over the actuators named in ``models[i]``, where given): the
+    arrays rank, and :func:`~actuator_selection.core.selection.evaluate` details the
+    chosen few.
+
+    Parameters
+    ----------
+    actuators
+        The catalogue.
+    apps
+        The load cases.
+    top
+        Candidates kept per case, ≥ 1.
+    models
+        Per case, the model names it may use (None: the whole catalogue); names not in
+        ``actuators`` are ignored. None: every case uses the whole catalogue.
+    """
+    _check_arguments(apps, top, models)
+    cat = _catalogue(actuators)
+    cases = _cases(apps)
+    zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    chosen = _rank(actuators, cat, cases, zone_limits, top, models)
+    mean_speed = cases.mean_speed.tolist()
+    duty = cases.duty.tolist()
+    cycle = cases.cycle.tolist()
+    return [
+        Selection(
+            mean_speed_rpm=mean_speed[i],
+            duty_cycle_percent=duty[i],
+            cycle_time_s=cycle[i],
+            candidates=tuple(evaluate(actuators[j], app) for j in columns),
+        )
+        for i, (app, columns) in enumerate(zip(apps, chosen, strict=True))
+    ]

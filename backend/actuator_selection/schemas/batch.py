@@ -1,0 +1,196 @@
+"""The batch selection contract: thousands of load cases in one request (ERP integration).
+
+Each case is a :class:`~actuator_selection.schemas.selections.SelectionRequest`; each
+candidate has the names and values of a single selection's
+:class:`~actuator_selection.schemas.selections.CandidateOut`, less the detail lists the
+request leaves out (``include_checks``, ``include_controllers``). The response models
+document the contract (OpenAPI) and validate it in the tests; the endpoint writes the
+same JSON from plain dicts (:func:`result_body`), because building a pydantic model per
+candidate and check would cost more than the engineering of the whole batch.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import Field
+
+from actuator_selection.core.cycle import Load
+from actuator_selection.core.selection import Candidate, Check, Selection, Status, Verdict
+from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.common import ResponseModel, StrictModel
+from actuator_selection.schemas.controllers import DriveOptionOut
+from actuator_selection.schemas.selections import (
+    RANKING_RULE,
+    ResolvedLoad,
+    SelectionRequest,
+)
+
+MAX_BATCH_CASES = 20_000
+"""Load cases per request: two ERP planning runs of 10,000; ~1–2 s of work, ~120 MB of
+answer with checks (``include_checks``) at the default top 3."""
+MAX_TOP = 10
+"""Candidates per case at most: a short list to choose from, not the catalogue."""
+MAX_BATCH_CANDIDATES = 60_000
+"""Candidates per response (cases × top): ~2 kB each with checks, so ≤ ~120 MB."""
+MAX_CANDIDATES_WITH_CONTROLLERS = 1_000
+"""Candidates per response with ``include_controllers``: each lists every controller of
+Table 521.1 not excluded, with its criteria and voltage check (~10–30 kB, ~1 ms each)."""
+MAX_STORED_CASES = 50
+"""Cases per request with ``store: true``: each is a whole selection of the catalogue with
+the drive options of every actuator, as POST /selections stores it (measured ~1.1 MB of
+JSON and ~0.14 s a case on the starter catalogue), all written in one transaction."""
+
+
+class BatchSelectionRequest(StrictModel):
+    """Many load cases sized against the catalogue in one request."""
+
+    cases: list[SelectionRequest] = Field(
+        min_length=1,
+        max_length=MAX_BATCH_CASES,
+        description=f"load cases, each exactly as for POST /selections; at most {MAX_BATCH_CASES}",
+    )
+    top: int = Field(
+        default=3,
+        ge=1,
+        le=MAX_TOP,
+        description=f"best candidates returned per case; cases × top ≤ {MAX_BATCH_CANDIDATES}",
+    )
+    include_checks: bool = Field(
+        default=True,
+        description="false leaves each candidate's `checks` out (`reasons` stay)",
+    )
+    include_controllers: bool = Field(
+        default=False,
+        description="true adds each candidate's `controllers` list (Table 521.1, Eq. 521.2) "
+        f"as a single selection gives it; cases × top ≤ {MAX_CANDIDATES_WITH_CONTROLLERS}. "
+        "`controllers_excluded` and `controllers_note` are always given",
+    )
+    store: bool = Field(
+        default=False,
+        description="true stores each case as a selection (GET /selections/{id}) and returns "
+        f"its id; at most {MAX_STORED_CASES} cases",
+    )
+
+
+class BatchCandidateOut(ResponseModel):
+    """A candidate as in a single selection (CandidateOut); detail lists only if asked for."""
+
+    model: str
+    family: str
+    gear_ratio: float
+    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
+    accel_torque_nm: float | None = Field(description="T_1 (Eq. 514.1) [Nm]")
+    constant_torque_nm: float | None = Field(description="T_2 = T_L [Nm]")
+    decel_torque_nm: float | None = Field(description="T_3, usually negative [Nm]")
+    rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
+    reasons: list[str] = Field(description="messages of the checks that did not pass")
+    checks: list[CheckOut] | None = Field(
+        default=None, description="the flowchart's checks; left out unless include_checks"
+    )
+    controllers: list[DriveOptionOut] | None = Field(
+        default=None,
+        description="controllers of Table 521.1 not excluded, best first, each with its "
+        "output-voltage check (Eq. 521.2) at n_2; left out unless include_controllers",
+    )
+    controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
+    controllers_note: str = Field(description="what the controller list rests on")
+
+
+class BatchResultOut(ResponseModel):
+    """One load case: its cycle figures and its best candidates, ranked."""
+
+    id: str | None = Field(description="the stored selection (store: true), else null")
+    load: ResolvedLoad
+    cycle_time_s: float = Field(description="t_0 = t_1 + t_2 + t_3 + t_p [s]")
+    mean_speed_rpm: float = Field(description="n_av (Eq. 514.3) [rpm]")
+    duty_cycle_percent: float = Field(description="ED (Eq. 514.4) [%]")
+    candidates: list[BatchCandidateOut] = Field(description="the best `top` candidates")
+
+
+class BatchSelectionOut(ResponseModel):
+    """The results of a batch, in the order of the cases sent."""
+
+    catalogue_version: int = Field(description="version of the catalogue the batch used")
+    ranking: str = Field(default=RANKING_RULE, description="how candidates are ordered")
+    results: list[BatchResultOut]
+
+
+def _number(x: float | None) -> float | None:
+    # What a pydantic float field makes of a value: an int becomes a float.
+    return None if x is None else float(x)
+
+
+_TEXT: dict[Status | Verdict, str] = {e: e.value for e in (*Status, *Verdict)}
+"""Enum values by member: a dict lookup is several times cheaper than ``.value``."""
+
+
+def check_body(check: Check) -> dict[str, Any]:
+    """``CheckOut.from_core(check).model_dump(mode="json")``, without building the model."""
+    value, limit, margin = check.value, check.limit, check.margin_percent
+    return {
+        "name": check.name,
+        "status": _TEXT[check.status],
+        "value": None if value is None else float(value),
+        "limit": None if limit is None else float(limit),
+        "unit": check.unit,
+        "reference": check.reference,
+        "message": check.message,
+        "approximate": check.approximate,
+        "margin_percent": None if margin is None else float(margin),
+    }
+
+
+def candidate_body(
+    candidate: Candidate,
+    *,
+    include_checks: bool,
+    controllers: list[dict[str, Any]] | None,
+    controllers_excluded: int,
+    controllers_note: str,
+) -> dict[str, Any]:
+    """``CandidateOut.from_core(...)`` as a JSON-ready dict; ``checks`` and ``controllers``
+    only when given."""
+    t = candidate.torques
+    a = candidate.actuator
+    body: dict[str, Any] = {
+        "model": a.model,
+        "family": a.family,
+        "gear_ratio": float(a.gear_ratio),
+        "verdict": _TEXT[candidate.verdict],
+        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
+        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
+        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
+        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
+        "reasons": list(candidate.reasons),
+    }
+    if include_checks:
+        body["checks"] = [check_body(c) for c in candidate.checks]
+    if controllers is not None:
+        body["controllers"] = controllers
+    body["controllers_excluded"] = controllers_excluded
+    body["controllers_note"] = controllers_note
+    return body
+
+
+def result_body(
+    *,
+    id: str | None,
+    request: SelectionRequest,
+    load: Load,
+    selection: Selection,
+    candidates: list[dict[str, Any]],
+) -> dict[str, Any]:
+    """One entry of ``results`` (:class:`BatchResultOut`) as a JSON-ready dict."""
+    return {
+        "id": id,
+        "load": {
+            "speed_rpm": float(request.load.speed_rpm),
+            "torque_nm": float(load.torque_nm),
+            "inertia_kgm2": float(load.inertia_kgm2),
+        },
+        "cycle_time_s": selection.cycle_time_s,
+        "mean_speed_rpm": selection.mean_speed_rpm,
+        "duty_cycle_percent": selection.duty_cycle_percent,
+        "candidates": candidates,
+    }

@@ -1,0 +1,235 @@
+"""Throughput of batch selection: the scalar flowchart per case against the vectorised batch.
+
+Prints cases per second of ``core.selection.select`` run case by case and of
+``core.batch.select_batch`` (best 3 per case) on the starter catalogue and on a
+synthetic catalogue of 1,000 actuators, their ratio, and the end-to-end time of
+POST /api/v1/selections/batch for 10,000 cases with and without checks (JSON both
+ways included). Runs on a throw-away SQLite database seeded with the starter catalogue.
+
+The synthetic actuators are made up (model names ``SYN-…``): plausible magnitudes
+only, so that the scaling with catalogue size can be measured. They are not data.
+"""
+
+from __future__ import annotations
+
+import gc
+import json
+import math
+import random
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from fastapi import FastAPI
+from fastapi.testclient import TestClient
+
+from actuator_selection.api import batch
+from actuator_selection.config import SEED_DIR, Settings
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.batch import evaluate_batch, rank_batch, select_batch
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.selection import Application, select
+from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.db.migrate import upgrade
+from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.db.seed import load_seed
+from actuator_selection.db.seed_controllers import load_controllers
+from actuator_selection.main import API_PREFIX, create_app
+
+TOP = 3
+BATCH_CASES = 10_000
+
+
+def _cases(n: int, seed: int = 7) -> list[Application]:
+    rng = random.Random(seed)
+    return [
+        Application(
+            pattern=SpeedPattern(
+                speed_rpm=rng.uniform(5, 150),
+                accel_s=rng.uniform(0.05, 0.5),
+                constant_s=rng.uniform(0, 1),
+                decel_s=rng.uniform(0.05, 0.5),
+                pause_s=rng.uniform(0, 2),
+            ),
+            load=Load(torque_nm=rng.uniform(0, 50), inertia_kgm2=rng.uniform(0, 5)),
+            high_dynamics=rng.random() < 0.5,
+        )
+        for _ in range(n)
+    ]
+
+
+def synthetic_catalogue(n: int, seed: int = 11) -> list[Actuator]:
+    """``n`` made-up actuators: sizes log-uniform, inertia and continuous torque scaled with
+    the peak torque, a third with a continuous-duty zone, a few without J_A or T_0."""
+    rng = random.Random(seed)
+    out = []
+    for k in range(n):
+        t_max = math.exp(rng.uniform(math.log(5), math.log(2000)))
+        n_max = rng.uniform(20, 500)
+        stall = t_max * rng.uniform(0.3, 0.6)
+        zone = None
+        if rng.random() < 1 / 3:
+            zone = ContinuousDutyZone(
+                points=(
+                    ZonePoint(speed_rpm=0.0, torque_nm=stall),
+                    ZonePoint(speed_rpm=n_max * 0.6, torque_nm=stall * 0.9),
+                    ZonePoint(speed_rpm=n_max, torque_nm=stall * 0.5),
+                )
+            )
+        out.append(
+            Actuator(
+                model=f"SYN-{k:04d}",
+                family="SYNTHETIC",
+                gear_ratio=rng.choice([30.0, 50.0, 80.0, 100.0, 120.0, 160.0]),
+                max_torque_nm=t_max,
+                max_speed_rpm=n_max,
+                inertia_kgm2=None if rng.random() < 0.05 else t_max * rng.uniform(1e-3, 1e-2),
+                stall_torque_nm=None if rng.random() < 0.1 else stall,
+                zone=zone,
+            )
+        )
+    return out
+
+
+def _timed(run: Callable[[], object]) -> float:
+    start = time.perf_counter()
+    run()
+    return time.perf_counter() - start
+
+
+def _line(label: str, n: int, seconds: float) -> float:
+    print(f"  {label:<46} {n:>6} cases in {seconds:7.3f} s = {n / seconds:10.0f} cases/s")
+    return n / seconds
+
+
+def _gc_paused(run: Callable[[], object]) -> Callable[[], object]:
+    def paused() -> object:
+        gc.disable()
+        try:
+            return run()
+        finally:
+            gc.enable()
+
+    return paused
+
+
+def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
+    """Scalar select() per case against the batch functions on one catalogue."""
+    print(f"{name}: {len(actuators)} actuators")
+    apps = _cases(BATCH_CASES)
+    scalar_apps = apps[:scalar_cases]
+
+    def scalar_run() -> None:
+        for app in scalar_apps:  # each result dropped, as a server answering case by case
+            select(actuators, app)
+
+    scalar = _line("scalar select() per case", len(scalar_apps), _timed(scalar_run))
+    _line(
+        "evaluate_batch(): all arrays, every cell",
+        len(apps),
+        _timed(lambda: evaluate_batch(actuators, apps)),
+    )
+    ranking = _line(
+        f"rank_batch(top={TOP}): flowchart + ranking",
+        len(apps),
+        _timed(lambda: rank_batch(actuators, apps, top=TOP)),
+    )
+    vectorised = _line(
+        f"select_batch(top={TOP}): + {TOP} candidates a case",
+        len(apps),
+        _timed(lambda: select_batch(actuators, apps, top=TOP)),
+    )
+    _line(
+        "  the same, cyclic GC paused (as the endpoint)",
+        len(apps),
+        _timed(_gc_paused(lambda: select_batch(actuators, apps, top=TOP))),
+    )
+    print(
+        f"  ratio to scalar select(): select_batch {vectorised / scalar:.0f}×, "
+        f"rank_batch {ranking / scalar:.0f}×"
+    )
+
+
+def _http_case(app: Application) -> dict[str, Any]:
+    p = app.pattern
+    return {
+        "load": {
+            "speed_rpm": p.speed_rpm,
+            "torque_nm": app.load.torque_nm,
+            "inertia_kgm2": app.load.inertia_kgm2,
+        },
+        "cycle": {
+            "accel_s": p.accel_s,
+            "constant_s": p.constant_s,
+            "decel_s": p.decel_s,
+            "pause_s": p.pause_s,
+        },
+        "high_dynamics": app.high_dynamics,
+    }
+
+
+def _with_batch_route(app: FastAPI) -> FastAPI:
+    """Mount the batch router first unless main.py already does."""
+    path = f"{API_PREFIX}/selections/batch"
+    if not any(getattr(route, "path", None) == path for route in app.router.routes):
+        before = len(app.router.routes)
+        app.include_router(batch.router, prefix=API_PREFIX)
+        added = app.router.routes[before:]
+        del app.router.routes[before:]
+        app.router.routes[0:0] = added
+    return app
+
+
+def http(url: str) -> None:
+    """POST /selections/batch with 10,000 cases, end to end through the ASGI app."""
+    print(
+        f"HTTP POST {API_PREFIX}/selections/batch, {BATCH_CASES} cases, top {TOP} "
+        "(TestClient: JSON out and back in included; 'gzip' adds the app's GZipMiddleware)"
+    )
+    payload = [_http_case(a) for a in _cases(BATCH_CASES, seed=8)]
+    with TestClient(_with_batch_route(create_app(Settings(database_url=url)))) as client:
+        for include_checks in (False, True):
+            for encoding in ("identity", "gzip"):
+                body = json.dumps(
+                    {"cases": payload, "top": TOP, "include_checks": include_checks}
+                ).encode()
+                start = time.perf_counter()
+                response = client.post(
+                    f"{API_PREFIX}/selections/batch",
+                    content=body,
+                    headers={"content-type": "application/json", "accept-encoding": encoding},
+                )
+                response.raise_for_status()
+                results = response.json()["results"]
+                seconds = time.perf_counter() - start
+                assert len(results) == BATCH_CASES
+                label = (
+                    f"checks {'yes' if include_checks else 'no ':<3} {encoding:<8} "
+                    f"{len(body) / 1e6:3.1f} MB in, {len(response.content) / 1e6:4.1f} MB out"
+                )
+                _line(label, BATCH_CASES, seconds)
+
+
+def main() -> None:
+    """Run the benchmark and print its table."""
+    with tempfile.TemporaryDirectory() as tmp:
+        url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"
+        upgrade(url=url)
+        engine = make_engine(url)
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+            load_controllers(session, SEED_DIR)
+        with make_session_factory(engine)() as session:
+            starter = [r.actuator for r in CatalogueRepository(session).actuators()]
+        engine.dispose()
+
+        compare("starter catalogue", starter, scalar_cases=2_000)
+        compare("synthetic catalogue", synthetic_catalogue(1_000), scalar_cases=200)
+        http(url)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,394 @@
+"""POST /api/v1/selections/batch: many load cases, the same answers as single selections."""
+
+from __future__ import annotations
+
+import gc
+import json
+import random
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+from sqlalchemy import Connection, Engine, func, select
+from sqlalchemy.orm import sessionmaker
+
+from actuator_selection.api import batch
+from actuator_selection.config import Settings
+from actuator_selection.core.batch import select_batch
+from actuator_selection.db.models import SelectionRow
+from actuator_selection.main import API_PREFIX, create_app
+from actuator_selection.schemas.batch import (
+    MAX_BATCH_CANDIDATES,
+    MAX_BATCH_CASES,
+    MAX_CANDIDATES_WITH_CONTROLLERS,
+    MAX_STORED_CASES,
+    BatchCandidateOut,
+    BatchSelectionOut,
+)
+from actuator_selection.schemas.selections import CandidateOut
+
+URL = f"{API_PREFIX}/selections/batch"
+BATCH_PATH = URL
+DETAIL_KEYS = ("checks", "controllers")
+
+WORKED_EXAMPLE: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+}
+
+
+@pytest.fixture
+def batch_client(seeded_engine: Engine, connection: Connection) -> Iterator[TestClient]:
+    """The ``client`` fixture's app, with the batch router mounted if main.py does not yet.
+
+    The router goes first so that no catch-all (the static frontend at "/") shadows it.
+    """
+    app = create_app(Settings(database_url=seeded_engine.url.render_as_string(hide_password=False)))
+    if not any(getattr(route, "path", None) == BATCH_PATH for route in app.router.routes):
+        before = len(app.router.routes)
+        app.include_router(batch.router, prefix=API_PREFIX)
+        added = app.router.routes[before:]
+        del app.router.routes[before:]
+        app.router.routes[0:0] = added
+    app.state.session_factory = sessionmaker(
+        bind=connection, join_transaction_mode="create_savepoint", expire_on_commit=False
+    )
+    with TestClient(app, raise_server_exceptions=False) as test_client:
+        yield test_client
+
+
+def catalogue_models(client: TestClient) -> list[str]:
+    return [a["model"] for a in client.get(f"{API_PREFIX}/actuators").json()]
+
+
+def random_cases(n: int, models: list[str], seed: int) -> list[dict[str, Any]]:
+    """Load cases of every kind the API takes: direct loads, ball screws, rotary tables."""
+    rng = random.Random(seed)
+    cases = []
+    for i in range(n):
+        speed = rng.choice([rng.uniform(1, 300), float(rng.randint(5, 120))])
+        kind = rng.choice(["direct", "direct", "ball_screw", "rotary_table"])
+        if kind == "direct":
+            load: dict[str, Any] = {
+                "speed_rpm": speed,
+                "torque_nm": rng.choice([0.0, rng.uniform(0, 80)]),
+                "inertia_kgm2": rng.uniform(0, 6),
+            }
+        elif kind == "ball_screw":
+            load = {
+                "type": "ball_screw",
+                "speed_rpm": speed,
+                "mass_kg": rng.uniform(1, 500),
+                "lead_m": rng.choice([0.005, 0.01, 0.02]),
+                "friction_coefficient": rng.uniform(0, 0.2),
+                "efficiency": rng.uniform(0.5, 1),
+                "screw_inertia_kgm2": rng.uniform(0, 0.01),
+            }
+        else:
+            load = {
+                "type": "rotary_table",
+                "speed_rpm": speed,
+                "mass_kg": rng.uniform(1, 300),
+                "diameter_m": rng.uniform(0.1, 1.5),
+                "friction_coefficient": rng.uniform(0, 0.1),
+                "friction_radius_m": rng.uniform(0, 0.5),
+            }
+        case: dict[str, Any] = {
+            "load": load,
+            "cycle": {
+                "accel_s": rng.uniform(0.01, 1),
+                "constant_s": rng.choice([0.0, rng.uniform(0, 2)]),
+                "decel_s": rng.uniform(0.01, 1),
+                "pause_s": rng.choice([0.0, rng.uniform(0, 3)]),
+            },
+            "high_dynamics": rng.random() < 0.6,
+        }
+        if i % 4 == 3:
+            case["models"] = rng.sample(models, rng.randint(1, 8))
+        cases.append(case)
+    return cases
+
+
+def post(client: TestClient, cases: list[dict[str, Any]], **options: Any) -> Any:
+    return client.post(URL, json={"cases": cases, **options})
+
+
+def without(candidate: dict[str, Any], *keys: str) -> dict[str, Any]:
+    return {k: v for k, v in candidate.items() if k not in keys}
+
+
+# --- the same answers as single selections ---------------------------------------------------
+
+
+def test_batch_equals_single_selections(batch_client: TestClient) -> None:
+    """N random cases posted one by one and as one batch: equal candidates and figures."""
+    cases = random_cases(24, catalogue_models(batch_client), seed=1)
+    full = post(batch_client, cases, top=3, include_controllers=True)
+    brief = post(batch_client, cases, top=4, include_checks=False)
+    assert full.status_code == 200, full.text
+    assert brief.status_code == 200, brief.text
+    full_results = full.json()["results"]
+    brief_results = brief.json()["results"]
+    assert len(full_results) == len(brief_results) == len(cases)
+    for case, got, got_brief in zip(cases, full_results, brief_results, strict=True):
+        response = batch_client.post(f"{API_PREFIX}/selections", json=case)
+        assert response.status_code == 201, response.text
+        single = response.json()
+        for key in ("load", "mean_speed_rpm", "duty_cycle_percent", "cycle_time_s"):
+            assert got[key] == single[key], key
+            assert got_brief[key] == single[key], key
+        assert got["id"] is None
+        assert got["candidates"] == single["candidates"][:3]
+        assert got_brief["candidates"] == [
+            without(c, *DETAIL_KEYS) for c in single["candidates"][:4]
+        ]
+        assert full.json()["catalogue_version"] == single["catalogue_version"]
+
+
+def test_batch_response_validates_against_its_schema(batch_client: TestClient) -> None:
+    cases = random_cases(12, catalogue_models(batch_client), seed=2)
+    for options in (
+        {"include_checks": True, "include_controllers": True},
+        {"include_checks": True},
+        {"include_checks": False},
+        {"include_checks": False, "include_controllers": True},
+    ):
+        response = post(batch_client, cases, **options)
+        assert response.status_code == 200, response.text
+        assert response.headers["content-type"] == "application/json"
+        body = response.json()
+        parsed = BatchSelectionOut.model_validate(body)
+        assert parsed.model_dump(mode="json", exclude_unset=True) == body
+        for result in body["results"]:
+            for c in result["candidates"]:
+                assert ("checks" in c) is options["include_checks"]
+                assert ("controllers" in c) is options.get("include_controllers", False)
+                if "checks" in c and "controllers" in c:
+                    assert CandidateOut.model_validate(c).model_dump(mode="json") == c
+
+
+def test_batch_candidate_schema_has_candidate_out_fields() -> None:
+    """BatchCandidateOut copies CandidateOut's fields; a field added there must come here."""
+    assert list(BatchCandidateOut.model_fields) == list(CandidateOut.model_fields)
+    for name, field in CandidateOut.model_fields.items():
+        batch_field = BatchCandidateOut.model_fields[name]
+        assert batch_field.is_required() is (field.is_required() and name not in DETAIL_KEYS)
+
+
+def test_openapi_documents_the_batch_contract(batch_client: TestClient) -> None:
+    spec = batch_client.get("/openapi.json").json()
+    operation = spec["paths"][URL]["post"]
+    schema = operation["responses"]["200"]["content"]["application/json"]["schema"]
+    assert schema == {"$ref": "#/components/schemas/BatchSelectionOut"}
+    assert "201" in operation["responses"]
+    request = spec["components"]["schemas"]["BatchSelectionRequest"]
+    assert request["properties"]["cases"]["maxItems"] == MAX_BATCH_CASES
+    assert request["properties"]["top"]["default"] == 3
+
+
+def test_worked_example_in_a_batch(batch_client: TestClient) -> None:
+    case = {**WORKED_EXAMPLE, "models": ["FHA-25C-50-L", "FHA-25C-50-L"]}
+    response = post(batch_client, [case, WORKED_EXAMPLE], top=2)
+    assert response.status_code == 200
+    first, second = response.json()["results"]
+    (c,) = first["candidates"]  # one model named twice: one candidate
+    assert c["model"] == "FHA-25C-50-L"
+    assert c["verdict"] == "unconfirmed"
+    assert c["accel_torque_nm"] == pytest.approx(95.48, abs=0.005)
+    assert first["mean_speed_rpm"] == pytest.approx(6.15, abs=0.005)
+    assert first["load"] == {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3}
+    assert len(second["candidates"]) == 2
+    assert second["candidates"][0]["verdict"] == "suitable"
+
+
+def test_ten_thousand_cases_in_one_request(batch_client: TestClient) -> None:
+    cases = random_cases(10_000, catalogue_models(batch_client), seed=3)
+    response = post(batch_client, cases, include_checks=False)
+    assert response.status_code == 200, response.text[:500]
+    results = response.json()["results"]
+    assert len(results) == 10_000
+    assert all(1 <= len(r["candidates"]) <= 3 for r in results)
+    for i in (0, 4_999, 9_999):  # the order of the cases is kept
+        single = batch_client.post(f"{API_PREFIX}/selections", json=cases[i]).json()
+        assert results[i]["load"] == single["load"]
+        assert results[i]["candidates"] == [
+            without(c, *DETAIL_KEYS) for c in single["candidates"][:3]
+        ]
+
+
+def test_cyclic_gc_is_paused_during_a_batch_and_resumed_after(
+    batch_client: TestClient, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    seen: list[bool] = []
+
+    def spy(*args: Any, **kwargs: Any) -> Any:
+        seen.append(gc.isenabled())
+        return select_batch(*args, **kwargs)
+
+    monkeypatch.setattr(batch, "select_batch", spy)
+    assert gc.isenabled()
+    assert post(batch_client, [WORKED_EXAMPLE]).status_code == 200
+    assert locs(post(batch_client, [{"load": {}}]))  # a failed validation resumes it too
+    assert seen == [False]
+    assert gc.isenabled()
+
+
+def test_overlapping_pauses_resume_once_the_last_ends() -> None:
+    pause = batch._CyclicGcPause()
+    first, second = pause(), pause()
+    next(first)
+    next(second)
+    assert not gc.isenabled()
+    first.close()
+    assert not gc.isenabled()
+    second.close()
+    assert gc.isenabled()
+
+
+# --- storing -------------------------------------------------------------------------------
+
+
+def stored_count(connection: Connection) -> int:
+    return int(connection.execute(select(func.count()).select_from(SelectionRow)).scalar_one())
+
+
+def test_nothing_is_stored_unless_asked(batch_client: TestClient, connection: Connection) -> None:
+    before = stored_count(connection)
+    response = post(batch_client, random_cases(5, catalogue_models(batch_client), seed=4))
+    assert response.status_code == 200
+    assert stored_count(connection) == before
+
+
+def test_store_keeps_each_case_as_a_selection(
+    batch_client: TestClient, connection: Connection
+) -> None:
+    cases = random_cases(4, catalogue_models(batch_client), seed=5)
+    before = stored_count(connection)
+    response = post(batch_client, cases, store=True, include_controllers=True)
+    assert response.status_code == 201, response.text
+    results = response.json()["results"]
+    assert stored_count(connection) == before + len(cases)
+    assert len({r["id"] for r in results}) == len(cases)
+    for case, result in zip(cases, results, strict=True):
+        stored = batch_client.get(f"{API_PREFIX}/selections/{result['id']}")
+        assert stored.status_code == 200
+        body = stored.json()
+        assert body["candidates"][:3] == result["candidates"]
+        assert body["cycle"] == case["cycle"]
+        assert body["load"] == result["load"]
+
+
+# --- validation ------------------------------------------------------------------------------
+
+
+def locs(response: Any) -> list[list[str | int]]:
+    assert response.status_code == 422, response.text[:500]
+    assert response.headers["content-type"].startswith("application/json")
+    detail = response.json()["detail"]
+    assert all(e["msg"] for e in detail)
+    return [e["loc"] for e in detail]
+
+
+@pytest.mark.parametrize(
+    ("path", "value", "loc"),
+    [
+        ("cycle.accel_s", 0, ["cycle", "accel_s"]),
+        ("cycle.pause_s", -1, ["cycle", "pause_s"]),
+        ("cycle.accel_s", None, ["cycle", "accel_s"]),
+        ("load.speed_rpm", 0, ["load", "direct", "speed_rpm"]),
+        ("load.torque_nm", "five", ["load", "direct", "torque_nm"]),
+        ("load.type", "crane", ["load"]),
+        ("high_dynamics", "maybe", ["high_dynamics"]),
+        ("models", [], ["models"]),
+        ("cycle.acel_s", 0.1, ["cycle", "acel_s"]),
+    ],
+)
+def test_a_bad_case_is_named_by_its_index(
+    batch_client: TestClient, path: str, value: Any, loc: list[str]
+) -> None:
+    cases = [json.loads(json.dumps(WORKED_EXAMPLE)) for _ in range(20)]
+    *parents, leaf = path.split(".")
+    target = cases[17]
+    for p in parents:
+        target = target[p]
+    if value is None:
+        del target[leaf]
+    else:
+        target[leaf] = value
+    assert ["body", "cases", 17, *loc] in locs(post(batch_client, cases))
+
+
+def test_unknown_models_are_named_by_case_and_position(batch_client: TestClient) -> None:
+    cases = [
+        WORKED_EXAMPLE,
+        {**WORKED_EXAMPLE, "models": ["FHA-25C-50-L", "NOPE-9"]},
+        {**WORKED_EXAMPLE, "models": ["CHA-99"]},
+    ]
+    response = post(batch_client, cases)
+    assert locs(response) == [["body", "cases", 1, "models", 1], ["body", "cases", 2, "models", 0]]
+    assert "NOPE-9" in response.json()["detail"][0]["msg"]
+
+
+@pytest.mark.parametrize(
+    ("options", "loc"),
+    [
+        ({"top": 0}, ["body", "top"]),
+        ({"top": 11}, ["body", "top"]),
+        ({"top": "three"}, ["body", "top"]),
+        ({"include_checks": "maybe"}, ["body", "include_checks"]),
+        ({"store": "perhaps"}, ["body", "store"]),
+        ({"colour": "red"}, ["body", "colour"]),
+    ],
+)
+def test_bad_options_are_422(
+    batch_client: TestClient, options: dict[str, Any], loc: list[str]
+) -> None:
+    assert loc in locs(post(batch_client, [WORKED_EXAMPLE], **options))
+
+
+def test_limits(batch_client: TestClient) -> None:
+    assert ["body", "cases"] in locs(post(batch_client, []))
+    assert ["body", "store"] in locs(
+        post(batch_client, [WORKED_EXAMPLE] * (MAX_STORED_CASES + 1), store=True)
+    )
+    too_many_with_controllers = MAX_CANDIDATES_WITH_CONTROLLERS // 3 + 1
+    assert ["body", "include_controllers"] in locs(
+        post(batch_client, [WORKED_EXAMPLE] * too_many_with_controllers, include_controllers=True)
+    )
+    assert ["body", "top"] in locs(
+        post(batch_client, [WORKED_EXAMPLE] * (MAX_BATCH_CANDIDATES // 10 + 1), top=10)
+    )
+
+
+def test_more_cases_than_the_limit_are_422(batch_client: TestClient) -> None:
+    response = post(batch_client, [WORKED_EXAMPLE] * (MAX_BATCH_CASES + 1), include_checks=False)
+    assert ["body", "cases"] in locs(response)
+
+
+@pytest.mark.parametrize(
+    "raw",
+    [
+        "",
+        "{",
+        "[]",
+        '{"cases": {}}',
+        '{"cases": [null]}',
+        '{"cases": [{"load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": NaN},'
+        ' "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1}}]}',
+    ],
+)
+def test_malformed_bodies_are_422_json(batch_client: TestClient, raw: str) -> None:
+    response = batch_client.post(URL, content=raw, headers={"content-type": "application/json"})
+    assert locs(response)
+
+
+def test_extreme_but_allowed_values_stay_finite(batch_client: TestClient) -> None:
+    case = {
+        "load": {"speed_rpm": 100_000, "torque_nm": 1e6, "inertia_kgm2": 1e6},
+        "cycle": {"accel_s": 1e-4, "constant_s": 86_400, "decel_s": 1e-4, "pause_s": 86_400},
+    }
+    response = post(batch_client, [case, WORKED_EXAMPLE], top=10, include_controllers=True)
+    assert response.status_code == 200, response.text
+    (first, _) = response.json()["results"]
+    assert all(c["verdict"] == "unsuitable" for c in first["candidates"])

@@ -1,0 +1,487 @@
+"""The vectorised flowchart equals the scalar one exactly: numbers, statuses, verdicts, ranking.
+
+Every comparison is ``==``: the batch path promises the same IEEE results as
+``core/cycle.py`` and ``core/selection.py``, not results within a tolerance.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import random
+from collections.abc import Sequence
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.batch import (
+    CHECK_NAMES,
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    _python_square,
+    evaluate_batch,
+    rank_batch,
+    select_batch,
+)
+from actuator_selection.core.cycle import (
+    Load,
+    SpeedPattern,
+    cycle_torques,
+    mean_speed_rpm,
+)
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.selection import (
+    Application,
+    Candidate,
+    Selection,
+    Status,
+    Verdict,
+    evaluate,
+    ranking_key,
+    select,
+)
+from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+
+EXAMPLE = Application(
+    pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0),
+    load=Load(torque_nm=5, inertia_kgm2=1.3),
+)
+FHA = Actuator(
+    model="FHA-25C-50-L",
+    family="FHA-C",
+    gear_ratio=50,
+    max_torque_nm=151,
+    max_speed_rpm=90,
+    inertia_kgm2=0.86,
+)
+
+
+# --- the oracle -------------------------------------------------------------------------
+
+
+def assert_matches_scalar(actuators: Sequence[Actuator], apps: Sequence[Application]) -> None:
+    """Every array cell of evaluate_batch equals the scalar flowchart, bit for bit."""
+    ev = evaluate_batch(actuators, apps)
+    assert ev.statuses.shape == (len(apps), len(actuators), len(CHECK_NAMES))
+    for i, app in enumerate(apps):
+        assert ev.mean_speed_rpm[i] == mean_speed_rpm(app.pattern)
+        scalar = select([], app)
+        assert ev.duty_cycle_percent[i] == scalar.duty_cycle_percent
+        assert ev.cycle_time_s[i] == scalar.cycle_time_s
+        for j, actuator in enumerate(actuators):
+            c = evaluate(actuator, app)
+            where = f"case {i} {app}, actuator {actuator}"
+            assert [ev.status(i, j, k.name) for k in c.checks] == [k.status for k in c.checks], (
+                where
+            )
+            assert ev.verdict(i, j) is c.verdict, where
+            if c.torques is None:
+                assert math.isnan(ev.accel_torque_nm[i, j])
+                assert math.isnan(ev.rms_torque_nm[i, j])
+            else:
+                assert ev.accel_torque_nm[i, j] == c.torques.accel_torque_nm, where
+                assert ev.decel_torque_nm[i, j] == c.torques.decel_torque_nm, where
+                assert ev.rms_torque_nm[i, j] == c.torques.rms_torque_nm, where
+
+
+def truncated(selection: Selection, top: int) -> Selection:
+    return dataclasses.replace(selection, candidates=selection.candidates[:top])
+
+
+def assert_selects_like_scalar(
+    actuators: Sequence[Actuator], apps: Sequence[Application], top: int
+) -> None:
+    """select_batch equals select() cut to ``top``, case by case (dataclass ==, exact floats)."""
+    batch = select_batch(actuators, apps, top=top)
+    ranks = rank_batch(actuators, apps, top=top)
+    assert len(batch) == len(ranks) == len(apps)
+    for app, got, columns in zip(apps, batch, ranks, strict=True):
+        expected = truncated(select(actuators, app), top)
+        assert got == expected
+        assert [actuators[j] for j in columns] == [c.actuator for c in expected.candidates]
+
+
+# --- generators ---------------------------------------------------------------------------
+
+
+def random_zone(rng: random.Random) -> ContinuousDutyZone:
+    speeds = [0.0, *sorted(rng.sample(range(1, 400), rng.randint(1, 5)))]
+    torque = rng.uniform(5, 500)
+    points = []
+    for s in speeds:
+        points.append(ZonePoint(speed_rpm=float(s), torque_nm=torque))
+        torque = max(0.0, torque - rng.uniform(0, torque / 2))
+    return ContinuousDutyZone(points=tuple(points))
+
+
+def random_actuator(rng: random.Random, k: int) -> Actuator:
+    def maybe(value: float, missing: float = 0.12) -> float | None:
+        return None if rng.random() < missing else value
+
+    continuous_kind = rng.choice(["stall", "continuous", "both", "neither", "zone", "zone"])
+    stall = rng.uniform(1, 800) if continuous_kind in ("stall", "both", "zone") else None
+    return Actuator(
+        model=f"SYN-{rng.randint(0, 40):02d}-{k}",  # shared prefixes: names break ties
+        family="SYN",
+        gear_ratio=rng.choice([30.0, 50.0, 100.0, 160.0]),
+        # A few T_max values only: ties go to J_A, then to the model name.
+        max_torque_nm=maybe(rng.choice([50.0, 100.0, rng.uniform(5, 2000)])),
+        max_speed_rpm=maybe(rng.uniform(10, 300)),
+        inertia_kgm2=maybe(rng.choice([0.5, rng.uniform(0.001, 10)]), missing=0.2),
+        stall_torque_nm=stall,
+        continuous_torque_nm=(
+            rng.uniform(1, 800) if continuous_kind in ("continuous", "both") else None
+        ),
+        zone=random_zone(rng) if continuous_kind == "zone" else None,
+    )
+
+
+def random_case(rng: random.Random, actuators: Sequence[Actuator]) -> Application:
+    other = rng.choice(actuators)
+    speed = rng.uniform(1, 300)
+    if other.max_speed_rpm is not None and rng.random() < 0.2:
+        speed = other.max_speed_rpm  # n_2 exactly n_max
+    inertia = rng.choice([0.0, rng.uniform(0, 30), rng.uniform(0, 1)])
+    if other.inertia_kgm2 is not None and rng.random() < 0.2:
+        inertia = 3.0 * other.inertia_kgm2  # J_L exactly 3·J_A
+    return Application(
+        pattern=SpeedPattern(
+            speed_rpm=speed,
+            accel_s=rng.uniform(1e-3, 1),
+            constant_s=rng.choice([0.0, rng.uniform(0, 2)]),
+            decel_s=rng.uniform(1e-3, 1),
+            pause_s=rng.choice([0.0, rng.uniform(0, 5)]),
+        ),
+        load=Load(torque_nm=rng.choice([0.0, rng.uniform(0, 200)]), inertia_kgm2=inertia),
+        high_dynamics=rng.random() < 0.6,
+    )
+
+
+def rounding_trap(edge: float) -> float:
+    """A torque a > edge for which a + (edge − a) rounds below ``edge``.
+
+    A zone point of torque a before a point of torque ``edge`` at n_av: the limit at
+    n_av is ``edge`` only if the interpolation picks the same segment as bisect_right.
+    """
+    for k in range(1, 5000):
+        a = edge * (2 + k / 97)
+        if a + (edge - a) < edge:
+            return a
+    return 2 * edge
+
+
+def boundary_actuators(apps: Sequence[Application]) -> list[Actuator]:
+    """Actuators whose limits equal a case's own figures: every ``≤`` is decided at equality."""
+    out = []
+    for k, app in enumerate(apps):
+        t = cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=0.7)
+        n_av = mean_speed_rpm(app.pattern)
+        exact = Actuator(
+            model=f"EDGE-{k}",
+            family="EDGE",
+            gear_ratio=50.0,
+            max_torque_nm=t.accel_torque_nm,
+            max_speed_rpm=app.pattern.speed_rpm,
+            inertia_kgm2=0.7,
+            stall_torque_nm=t.rms_torque_nm,
+        )
+        ends_at_n_av = dataclasses.replace(
+            exact,
+            model=f"EDGE-Z-{k}",
+            max_torque_nm=abs(t.decel_torque_nm),
+            zone=ContinuousDutyZone(
+                points=(
+                    ZonePoint(speed_rpm=0.0, torque_nm=rounding_trap(t.rms_torque_nm)),
+                    ZonePoint(speed_rpm=n_av, torque_nm=t.rms_torque_nm),
+                )
+            ),
+        )
+        corner_at_n_av = dataclasses.replace(
+            ends_at_n_av,
+            model=f"EDGE-C-{k}",
+            zone=ContinuousDutyZone(
+                points=(
+                    ZonePoint(speed_rpm=0.0, torque_nm=rounding_trap(t.rms_torque_nm)),
+                    ZonePoint(speed_rpm=n_av, torque_nm=t.rms_torque_nm),
+                    ZonePoint(speed_rpm=2 * n_av, torque_nm=0.0),
+                )
+            ),
+        )
+        just_short = dataclasses.replace(
+            ends_at_n_av,
+            model=f"EDGE-S-{k}",
+            zone=ContinuousDutyZone(
+                points=(
+                    ZonePoint(speed_rpm=0.0, torque_nm=1e4),
+                    ZonePoint(speed_rpm=math.nextafter(n_av, 0.0), torque_nm=1e4),
+                )
+            ),
+        )
+        out += [exact, ends_at_n_av, corner_at_n_av, just_short]
+    return out
+
+
+# --- equality with the scalar flowchart -----------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_seeded_random_catalogues_match_scalar_exactly(seed: int) -> None:
+    rng = random.Random(seed)
+    actuators = [random_actuator(rng, k) for k in range(40)]
+    apps = [random_case(rng, actuators) for _ in range(150)]
+    actuators += boundary_actuators(apps[:10])
+    assert_matches_scalar(actuators, apps)
+    assert_selects_like_scalar(actuators, apps, top=3)
+
+
+def test_boundaries_are_met_at_equality() -> None:
+    """The limits built from a case's own numbers pass there: the arrays equal the scalar."""
+    rng = random.Random(99)
+    apps = [random_case(rng, [FHA]) for _ in range(20)]
+    actuators = boundary_actuators(apps)
+    ev = evaluate_batch(actuators, apps)
+    for k in range(len(apps)):
+        exact, ends, corner, short = (4 * k + m for m in range(4))
+        assert ev.status(k, exact, "max_speed") is Status.PASS
+        assert ev.status(k, exact, "peak_torque") is Status.PASS
+        assert ev.status(k, exact, "continuous_duty") is Status.PASS
+        assert ev.status(k, ends, "decel_torque") is Status.PASS
+        assert ev.status(k, ends, "continuous_duty") is Status.PASS
+        assert ev.status(k, corner, "continuous_duty") is Status.PASS
+        assert ev.status(k, short, "continuous_duty") is Status.FAIL
+    assert_matches_scalar(actuators, apps)
+
+
+def test_edge_cases_named_in_the_issue() -> None:
+    zone = ContinuousDutyZone(
+        points=(ZonePoint(speed_rpm=0, torque_nm=40), ZonePoint(speed_rpm=90, torque_nm=30))
+    )
+    actuators = [
+        FHA,
+        dataclasses.replace(FHA, model="NO-JA", inertia_kgm2=None),
+        dataclasses.replace(FHA, model="ZONE", zone=zone),
+        dataclasses.replace(FHA, model="T0", stall_torque_nm=36),
+        dataclasses.replace(FHA, model="TC", continuous_torque_nm=40),
+        dataclasses.replace(FHA, model="TC-NO-NMAX", continuous_torque_nm=40, max_speed_rpm=None),
+        dataclasses.replace(FHA, model="NO-TMAX", max_torque_nm=None, stall_torque_nm=36),
+        dataclasses.replace(FHA, model="TIE-A", stall_torque_nm=36),  # ties T0 on T_max and J_A
+        Actuator(model="BARE", family="F", gear_ratio=50),
+    ]
+    at_ratio = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=3 * 0.86))
+    at_speed = dataclasses.replace(
+        EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=90)
+    )
+    heavy = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=2.6))
+    apps = [
+        EXAMPLE,
+        at_ratio,
+        at_speed,
+        heavy,
+        dataclasses.replace(heavy, high_dynamics=False),
+    ]
+    assert_matches_scalar(actuators, apps)
+    for top in (1, 3, len(actuators), len(actuators) + 5):
+        assert_selects_like_scalar(actuators, apps, top=top)
+    ev = evaluate_batch(actuators, apps)
+    assert ev.status(1, 0, "inertia_ratio") is Status.PASS  # J_L = 3·J_A exactly
+    assert ev.status(2, 0, "max_speed") is Status.PASS  # n_2 = n_max exactly
+    assert ev.status(3, 0, "inertia_ratio") is Status.FAIL
+    assert ev.status(4, 0, "inertia_ratio") is Status.WARN
+    assert ev.status(0, 1, "peak_torque") is Status.NO_DATA
+    assert ev.verdict(0, 3) is Verdict.SUITABLE
+    ranked = [c.actuator.model for c in select_batch(actuators, [EXAMPLE], top=9)[0].candidates]
+    assert ranked[:3] == ["T0", "TC", "TIE-A"]  # equal T_max and J_A: the name decides
+
+
+finite = st.floats(allow_nan=False, allow_infinity=False)
+optional_value = st.none() | st.floats(min_value=1e-3, max_value=3000) | st.sampled_from([50.0])
+
+
+@st.composite
+def zones(draw: st.DrawFn) -> ContinuousDutyZone:
+    speeds = draw(
+        st.lists(st.floats(min_value=1e-3, max_value=500), min_size=1, max_size=4, unique=True)
+    )
+    torques = draw(
+        st.lists(
+            st.floats(min_value=0, max_value=1000),
+            min_size=len(speeds) + 1,
+            max_size=len(speeds) + 1,
+        )
+    )
+    points = zip([0.0, *sorted(speeds)], torques, strict=True)
+    return ContinuousDutyZone(points=tuple(ZonePoint(speed_rpm=s, torque_nm=t) for s, t in points))
+
+
+@st.composite
+def catalogues(draw: st.DrawFn) -> list[Actuator]:
+    n = draw(st.integers(min_value=0, max_value=7))
+    return [
+        Actuator(
+            model=draw(st.sampled_from(["A", "B", "C"])) + str(k),
+            family="H",
+            gear_ratio=50.0,
+            max_torque_nm=draw(optional_value),
+            max_speed_rpm=draw(optional_value),
+            inertia_kgm2=draw(st.none() | st.floats(min_value=0, max_value=20)),
+            stall_torque_nm=draw(optional_value),
+            continuous_torque_nm=draw(optional_value),
+            zone=draw(st.none() | zones()),
+        )
+        for k in range(n)
+    ]
+
+
+applications = st.builds(
+    Application,
+    pattern=st.builds(
+        SpeedPattern,
+        speed_rpm=st.floats(min_value=1e-3, max_value=1e5),
+        accel_s=st.floats(min_value=1e-4, max_value=100),
+        constant_s=st.floats(min_value=0, max_value=100),
+        decel_s=st.floats(min_value=1e-4, max_value=100),
+        pause_s=st.floats(min_value=0, max_value=100),
+    ),
+    load=st.builds(
+        Load,
+        torque_nm=st.floats(min_value=0, max_value=1e6),
+        inertia_kgm2=st.floats(min_value=0, max_value=1e6),
+    ),
+    high_dynamics=st.booleans(),
+)
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    actuators=catalogues(),
+    apps=st.lists(applications, min_size=0, max_size=6),
+    top=st.integers(min_value=1, max_value=9),
+)
+def test_hypothesis_batch_equals_scalar(
+    actuators: list[Actuator], apps: list[Application], top: int
+) -> None:
+    assert_matches_scalar(actuators, apps)
+    assert_selects_like_scalar(actuators, apps, top=top)
+
+
+def test_ranking_makes_rms_exact_near_its_limit() -> None:
+    """Ranking squares as x·x, which can put T_rms an ulp off; near a limit it must not."""
+    rng = random.Random(21)
+    found: list[tuple[Application, float, float]] = []
+    while len(found) < 4:
+        app = random_case(rng, [FHA])
+        t = cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=0.7)
+        p = app.pattern
+        energy = (
+            (t.accel_torque_nm * t.accel_torque_nm) * p.accel_s
+            + t.constant_torque_nm**2 * p.constant_s
+            + (t.decel_torque_nm * t.decel_torque_nm) * p.decel_s
+        )
+        fast = math.sqrt(energy / p.cycle_s)
+        if fast != t.rms_torque_nm:
+            found.append((app, t.rms_torque_nm, fast))
+    for app, exact, fast in found:
+        actuators = [
+            Actuator(
+                model=f"AT-{name}",
+                family="EDGE",
+                gear_ratio=50.0,
+                max_torque_nm=1e9,
+                max_speed_rpm=1e9,
+                inertia_kgm2=0.7,
+                stall_torque_nm=limit,
+            )
+            for name, limit in (("EXACT", exact), ("FAST", fast))
+        ]
+        assert_selects_like_scalar(actuators, [app], top=2)
+
+
+# --- the squares --------------------------------------------------------------------------
+
+
+def test_python_square_is_pythons_pow_where_x_times_x_is_not() -> None:
+    """CPython's ``x**2`` is libm's pow(); it rounds some squares unlike ``x * x``."""
+    rng = np.random.default_rng(5)
+    x = rng.uniform(0, 1, 400_000) * 10.0 ** rng.integers(-8, 9, 400_000)
+    x = np.concatenate([x, -x[:1000], [0.0, 2.0**-600, 2.0**500, 1.0, math.nan]])
+    python = np.array([v**2 for v in x.tolist()])
+    got = _python_square(x)
+    finite = ~np.isnan(x)
+    assert (got[finite] == python[finite]).all()
+    assert math.isnan(got[-1])
+    # Were x * x always right, the test above could not fail; on glibc it would.
+    differs = int(((x * x)[finite] != python[finite]).sum())
+    if differs == 0:
+        pytest.skip("this C library's pow rounds x**2 like x * x; nothing to tell apart")
+
+
+def test_python_square_keeps_shape_of_two_dimensional_views() -> None:
+    x = np.arange(12, dtype=np.float64).reshape(3, 4) * 1.1
+    assert _python_square(x).tolist() == [[v**2 for v in row] for row in x.tolist()]
+
+
+# --- ranking and restriction ----------------------------------------------------------------
+
+
+def test_verdict_codes_follow_ranking_key() -> None:
+    def rank(v: Verdict) -> int:
+        return ranking_key(Candidate(actuator=FHA, verdict=v, torques=None, checks=()))[0]
+
+    assert [rank(v) for v in VERDICT_BY_CODE] == [0, 1, 2]
+    assert set(STATUS_BY_CODE) == set(Status)
+
+
+def test_models_restrict_each_case() -> None:
+    rng = random.Random(3)
+    actuators = [random_actuator(rng, k) for k in range(20)]
+    apps = [random_case(rng, actuators) for _ in range(30)]
+    names = [a.model for a in actuators]
+    models: list[list[str] | None] = [
+        None if i % 3 == 0 else [*rng.sample(names, rng.randint(1, 6)), "NOT-IN-CATALOGUE"]
+        for i in range(len(apps))
+    ]
+    batch = select_batch(actuators, apps, top=4, models=models)
+    for app, allowed, got in zip(apps, models, batch, strict=True):
+        subset = actuators if allowed is None else [a for a in actuators if a.model in allowed]
+        assert got == truncated(select(subset, app), 4)
+
+
+def test_equal_keys_keep_catalogue_order_like_a_stable_sort() -> None:
+    """Two entries of one model (equal ranking keys): select() keeps their input order."""
+    twins = [
+        dataclasses.replace(FHA, model="TWIN", gear_ratio=ratio, stall_torque_nm=36)
+        for ratio in (50.0, 100.0, 30.0)
+    ]
+    for actuators in (twins, twins[::-1], [FHA, *twins]):
+        assert_selects_like_scalar(actuators, [EXAMPLE], top=len(actuators))
+        (got,) = select_batch(actuators, [EXAMPLE], top=2)
+        assert [c.actuator for c in got.candidates] == [a for a in actuators if a.model == "TWIN"][
+            :2
+        ]
+
+
+def test_empty_inputs() -> None:
+    assert select_batch([FHA], []) == []
+    (empty,) = select_batch([], [EXAMPLE])
+    assert empty == select([], EXAMPLE)
+    assert evaluate_batch([], [EXAMPLE]).statuses.shape == (1, 0, 5)
+
+
+def test_bad_arguments_are_domain_errors() -> None:
+    with pytest.raises(InvalidInputError, match="top"):
+        select_batch([FHA], [EXAMPLE], top=0)
+    with pytest.raises(InvalidInputError, match="models"):
+        select_batch([FHA], [EXAMPLE], models=[None, None])
+
+
+def test_many_cases_span_several_blocks() -> None:
+    """More cells than one block holds: the blocks join in order."""
+    rng = random.Random(11)
+    actuators = [random_actuator(rng, k) for k in range(7)]
+    apps = [random_case(rng, actuators) for _ in range(12_000)]
+    batch = select_batch(actuators, apps, top=2)
+    for i in range(0, len(apps), 997):
+        assert batch[i] == truncated(select(actuators, apps[i]), 2)
