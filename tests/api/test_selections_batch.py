@@ -5,19 +5,16 @@ from __future__ import annotations
 import gc
 import json
 import random
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
-from sqlalchemy import Connection, Engine, func, select
-from sqlalchemy.orm import sessionmaker
+from sqlalchemy import Connection, func, select
 
 from actuator_selection.api import batch
-from actuator_selection.config import Settings
 from actuator_selection.core.batch import select_batch
 from actuator_selection.db.models import SelectionRow
-from actuator_selection.main import API_PREFIX, create_app
+from actuator_selection.main import API_PREFIX
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_BATCH_CASES,
@@ -29,7 +26,6 @@ from actuator_selection.schemas.batch import (
 from actuator_selection.schemas.selections import CandidateOut
 
 URL = f"{API_PREFIX}/selections/batch"
-BATCH_PATH = URL
 DETAIL_KEYS = ("checks", "controllers")
 
 WORKED_EXAMPLE: dict[str, Any] = {
@@ -39,23 +35,9 @@ WORKED_EXAMPLE: dict[str, Any] = {
 
 
 @pytest.fixture
-def batch_client(seeded_engine: Engine, connection: Connection) -> Iterator[TestClient]:
-    """The ``client`` fixture's app, with the batch router mounted if main.py does not yet.
-
-    The router goes first so that no catch-all (the static frontend at "/") shadows it.
-    """
-    app = create_app(Settings(database_url=seeded_engine.url.render_as_string(hide_password=False)))
-    if not any(getattr(route, "path", None) == BATCH_PATH for route in app.router.routes):
-        before = len(app.router.routes)
-        app.include_router(batch.router, prefix=API_PREFIX)
-        added = app.router.routes[before:]
-        del app.router.routes[before:]
-        app.router.routes[0:0] = added
-    app.state.session_factory = sessionmaker(
-        bind=connection, join_transaction_mode="create_savepoint", expire_on_commit=False
-    )
-    with TestClient(app, raise_server_exceptions=False) as test_client:
-        yield test_client
+def batch_client(client: TestClient) -> TestClient:
+    """The app as main.py builds it (the batch router is mounted there)."""
+    return client
 
 
 def catalogue_models(client: TestClient) -> list[str]:
