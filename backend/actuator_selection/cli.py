@@ -7,6 +7,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from actuator_selection.cli_keys import register as register_sales_commands
 from actuator_selection.config import SEED_DIR, get_settings
 
 
@@ -59,6 +60,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         help="SQLAlchemy URL (default: $DATABASE_URL or the embedded SQLite file)",
     )
     commands = parser.add_subparsers(dest="command", required=True)
+    register_sales_commands(commands)
     commands.add_parser("migrate", help="create or upgrade the database schema").set_defaults(
         run=_migrate
     )

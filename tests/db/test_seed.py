@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 from collections.abc import Callable, Iterator
+from datetime import UTC, datetime
 from pathlib import Path
 
 import pytest
@@ -13,12 +14,18 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.cli import main
 from actuator_selection.config import SEED_DIR
-from actuator_selection.db.csvio import CatalogueFileError
+from actuator_selection.db.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
-from actuator_selection.db.seed import load_seed
+from actuator_selection.db.seed import (
+    ACTUATORS,
+    FAMILIES,
+    apply_catalogue,
+    load_seed,
+    read_catalogue,
+)
 
 
 @pytest.fixture
@@ -242,3 +249,105 @@ def test_seed_raises_the_catalogue_version_only_on_change(
     with factory.begin() as s:
         load_seed(s, seed_dir)
     assert version() == 2
+
+
+def test_seed_never_retires_and_keeps_what_was_retired(
+    empty_engine: Engine, seed_dir: Path
+) -> None:
+    factory = make_session_factory(empty_engine)
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    with factory.begin() as s:
+        row = s.scalars(select(ActuatorRow).where(ActuatorRow.model == "CHA-20A-30")).one()
+        row.retired_at = datetime.now(UTC)
+    path = seed_dir / "actuators.csv"
+    lines = path.read_text(encoding="utf-8").splitlines()
+    path.write_text(
+        "\n".join(line for line in lines if not line.startswith("CHA-25A-50,")) + "\n",
+        encoding="utf-8",
+    )
+    with factory.begin() as s:
+        report = load_seed(s, seed_dir)
+    assert (report.inserted, report.updated) == (0, 0)
+    with Session(empty_engine) as s:
+        retired = set(
+            s.scalars(select(ActuatorRow.model).where(ActuatorRow.retired_at.is_not(None)))
+        )
+    assert retired == {"CHA-20A-30"}  # still retired; CHA-25A-50 is missing but not retired
+
+
+def test_import_mode_retires_brings_back_and_removes_zones(
+    empty_engine: Engine, seed_dir: Path
+) -> None:
+    (seed_dir / "zone_points.csv").write_text(
+        "actuator_model,speed_rpm,torque_nm,source\n"
+        "FHA-25C-50-L,0,60,test\nFHA-25C-50-L,90,40,test\n",
+        encoding="utf-8",
+    )
+    factory = make_session_factory(empty_engine)
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    (seed_dir / "zone_points.csv").write_text(
+        "actuator_model,speed_rpm,torque_nm,source\n", encoding="utf-8"
+    )
+    path = seed_dir / "actuators.csv"
+    full = path.read_text(encoding="utf-8")
+    path.write_text(
+        "\n".join(line for line in full.splitlines() if not line.startswith("CHA-25A-50,")) + "\n",
+        encoding="utf-8",
+    )
+    with factory.begin() as s:
+        changes = apply_catalogue(s, read_catalogue(seed_dir), replace=True)
+    assert changes.files["actuators.csv"].retired == 1
+    assert changes.files["zone_points.csv"].retired == 2
+    with Session(empty_engine) as s:
+        row = s.scalars(select(ActuatorRow).where(ActuatorRow.model == "CHA-25A-50")).one()
+        assert row.retired_at is not None
+        assert s.scalar(select(func.count()).select_from(ZonePointRow)) == 0
+    path.write_text(full, encoding="utf-8")
+    with factory.begin() as s:
+        changes = apply_catalogue(s, read_catalogue(seed_dir), replace=True)
+    assert (changes.files["actuators.csv"].updated, changes.files["actuators.csv"].retired) == (
+        1,
+        0,
+    )
+    with Session(empty_engine) as s:
+        row = s.scalars(select(ActuatorRow).where(ActuatorRow.model == "CHA-25A-50")).one()
+        assert row.retired_at is None
+
+
+def test_written_csv_reads_back_to_the_same_values() -> None:
+    """Export writes published units; reading them back gives the stored SI values exactly."""
+    for spec in (FAMILIES, ACTUATORS):
+        records, problems = read(spec, SEED_DIR)
+        assert not problems
+        again, problems = parse(spec, write(spec, [r.values for r in records]))
+        assert not problems
+        assert [r.values for r in again] == [r.values for r in records]
+
+
+def test_check_values_shares_the_rules_and_messages_of_the_files() -> None:
+    values, problems = check_values(
+        ACTUATORS,
+        {"model": "X", "family": "CHA", "gear_ratio": 50, "max_torque_nm": -1, "source": "s"},
+    )
+    (problem,) = problems
+    assert (problem.column, problem.message) == (
+        "max_torque_nm",
+        "must be a finite number > 0, got '-1'",
+    )
+    values, problems = check_values(
+        ACTUATORS,
+        {
+            "model": "X",
+            "family": "CHA",
+            "gear_ratio": "50",
+            "no_load_current_constant_30c_ma_per_rpm": 6,
+            "source": "s",
+        },
+    )
+    assert not problems
+    assert values["no_load_current_constant_30c_a_per_rpm"] == pytest.approx(0.006)
+    assert values["mass_kg"] is None
+    _, problems = check_values(ACTUATORS, {"model": ["X"], "unit": 1})
+    assert {p.column for p in problems} >= {"model", "unit", "family", "gear_ratio", "source"}

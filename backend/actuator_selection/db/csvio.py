@@ -9,11 +9,16 @@ from __future__ import annotations
 import csv
 import io
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from datetime import date
+from decimal import Decimal
 from enum import Enum
 from pathlib import Path
 from typing import Any
+
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.money import check_currency, parse_amount
 
 
 class Rule(Enum):
@@ -30,7 +35,10 @@ class Column:
 
     ``scale`` converts the published unit into the stored SI unit once, at the
     edge (e.g. 10⁻³ A/rpm → A/rpm); ``target`` names the stored attribute when it
-    differs from the column name.
+    differs from the column name. ``max_length`` bounds a text cell (the column's
+    width in the database). ``convert`` turns a non-empty text cell into its value
+    (a date, a decimal amount, a choice, ...) and raises ``ValueError("must be
+    ...")`` naming the rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`.
     """
 
     name: str
@@ -39,6 +47,8 @@ class Column:
     rule: Rule = Rule.ANY
     scale: float = 1.0
     target: str | None = None
+    max_length: int | None = None
+    convert: Callable[[str], Any] | None = None
 
     @property
     def attribute(self) -> str:
@@ -87,6 +97,51 @@ class Record:
     values: dict[str, Any]
 
 
+def iso_date(text: str) -> date:
+    """A calendar date written YYYY-MM-DD."""
+    try:
+        return date.fromisoformat(text)
+    except ValueError:
+        raise ValueError("must be a date written YYYY-MM-DD") from None
+
+
+def amount(text: str) -> Decimal:
+    """A money amount: a decimal number ≥ 0 with at most two decimal places."""
+    try:
+        return parse_amount(text)
+    except InvalidInputError as exc:
+        raise ValueError(
+            f"{exc.message} (a decimal amount ≥ 0 with at most 2 decimal places)"
+        ) from None
+
+
+def currency(text: str) -> str:
+    """An ISO 4217 code of three capital letters."""
+    try:
+        return check_currency(text)
+    except InvalidInputError:
+        raise ValueError("must be an ISO 4217 code of three capital letters such as EUR") from None
+
+
+def boolean(text: str) -> bool:
+    """``true`` or ``false`` (any case)."""
+    lowered = text.lower()
+    if lowered not in {"true", "false"}:
+        raise ValueError("must be true or false")
+    return lowered == "true"
+
+
+def one_of(*choices: str) -> Callable[[str], str]:
+    """A converter accepting exactly one of ``choices``."""
+
+    def convert(text: str) -> str:
+        if text not in choices:
+            raise ValueError(f"must be one of: {', '.join(choices)}")
+        return text
+
+    return convert
+
+
 def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Problem | None]:
     text = raw.strip()
     if not text:
@@ -95,7 +150,21 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
                 file=spec.file, line=line, column=column.name, message="is required but empty"
             )
         return None, None
+    if column.convert is not None:
+        try:
+            return column.convert(text), None
+        except ValueError as exc:
+            return None, Problem(
+                file=spec.file, line=line, column=column.name, message=f"{exc}, got {text!r}"
+            )
     if not column.numeric:
+        if column.max_length is not None and len(text) > column.max_length:
+            return None, Problem(
+                file=spec.file,
+                line=line,
+                column=column.name,
+                message=f"must be at most {column.max_length} characters, got {len(text)}",
+            )
         return text, None
     try:
         value = float(text)
@@ -119,6 +188,174 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
             message=f"must be {column.rule.value}, got {text!r}",
         )
     return value * column.scale, None
+
+
+def _row(
+    spec: CsvSpec, cells: Iterable[tuple[str, str]], line: int
+) -> tuple[dict[str, Any], list[Problem]]:
+    """Validate the (column name, raw text) pairs of one row; names are known columns."""
+    known = {c.name: c for c in spec.columns}
+    values: dict[str, Any] = {}
+    problems: list[Problem] = []
+    for name, raw in cells:
+        column = known[name]
+        value, problem = _cell(spec, column, raw, line)
+        if problem:
+            problems.append(problem)
+        values[column.attribute] = value
+    return values, problems
+
+
+def _as_text(value: object) -> str | None:
+    """A JSON value as the text a CSV cell would hold; None for lists, objects and the like."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str | int | float | Decimal):
+        return str(value)
+    if isinstance(value, date):
+        return value.isoformat()
+    return None
+
+
+def check_values(
+    spec: CsvSpec, values: Mapping[str, object], *, line: int = 0
+) -> tuple[dict[str, Any], list[Problem]]:
+    """Validate one row given as a mapping (e.g. a JSON object) by the rules of ``spec``.
+
+    Keys are the CSV column names; a missing key is an empty cell, an unknown key
+    is a problem. Numbers, text and booleans are checked as the text a CSV cell
+    would hold, so the API and the seed files share one rulebook and one set of
+    messages. Returns the values under their stored names, and the problems.
+    """
+    known = {c.name for c in spec.columns}
+    problems = [
+        Problem(
+            file=spec.file,
+            line=line,
+            column=name,
+            message="unknown column (columns name their unit, e.g. max_torque_nm; "
+            f"expected one of: {', '.join(c.name for c in spec.columns)})",
+        )
+        for name in values
+        if name not in known
+    ]
+    pairs: list[tuple[str, str]] = []
+    for column in spec.columns:
+        text = _as_text(values.get(column.name))
+        if text is None:
+            problems.append(
+                Problem(
+                    file=spec.file,
+                    line=line,
+                    column=column.name,
+                    message="must be text, a number or null",
+                )
+            )
+            text = ""
+        pairs.append((column.name, text))
+    checked, cell_problems = _row(spec, pairs, line)
+    return checked, problems + cell_problems
+
+
+def to_cells(spec: CsvSpec, values: Mapping[str, Any]) -> dict[str, str]:
+    """The CSV cells of stored ``values`` (the inverse of :func:`parse` for one row).
+
+    Scaled columns are divided back into their published unit; ``repr`` keeps
+    floats exact, so writing and reading again gives the same stored numbers.
+    """
+    cells: dict[str, str] = {}
+    for column in spec.columns:
+        value = values.get(column.attribute)
+        if value is None:
+            cells[column.name] = ""
+        elif isinstance(value, bool):
+            cells[column.name] = "true" if value else "false"
+        elif isinstance(value, float):
+            shown = value / column.scale if column.scale != 1.0 else value
+            cells[column.name] = _float_text(shown, value, column)
+        elif isinstance(value, date):
+            cells[column.name] = value.isoformat()
+        else:
+            cells[column.name] = str(value)
+    return cells
+
+
+def to_json_values(spec: CsvSpec, values: Mapping[str, Any]) -> dict[str, Any]:
+    """Stored ``values`` as a JSON object keyed by column name, numbers in the published unit.
+
+    Reading the object back with :func:`check_values` gives the same stored values.
+    """
+    out: dict[str, Any] = {}
+    for column, (name, text) in zip(spec.columns, to_cells(spec, values).items(), strict=True):
+        value = values.get(column.attribute)
+        if value is None:
+            out[name] = None
+        elif column.numeric:
+            out[name] = float(text)
+        elif isinstance(value, str | bool | int | float):
+            out[name] = value
+        else:
+            out[name] = text
+    return out
+
+
+def _float_text(shown: float, stored: float, column: Column) -> str:
+    """The shortest text of ``shown`` that reads back (after scaling) to ``stored``."""
+    text = repr(shown)
+    if text.endswith(".0"):
+        text = text[:-2]
+    if float(text) * column.scale != stored:
+        # Division by the scale and multiplication back are not always inverse in
+        # binary floating point; fall back to the digits that round-trip.
+        for digits in range(1, 18):
+            candidate = f"{shown:.{digits}g}"
+            if float(candidate) * column.scale == stored:
+                return candidate
+    return text
+
+
+def write(spec: CsvSpec, rows: Iterable[Mapping[str, Any]]) -> str:
+    """CSV text of ``spec`` (header first) for rows of stored values."""
+    out = io.StringIO()
+    writer = csv.DictWriter(out, fieldnames=[c.name for c in spec.columns], lineterminator="\n")
+    writer.writeheader()
+    for row in rows:
+        writer.writerow(to_cells(spec, row))
+    return out.getvalue()
+
+
+def _duplicate(spec: CsvSpec, record: Record, seen: dict[tuple[Any, ...], int]) -> Problem | None:
+    """A problem when ``record`` repeats the key of an earlier row (remembered in ``seen``)."""
+    known = {c.name: c for c in spec.columns}
+    key = tuple(record.values[known[k].attribute] for k in spec.key)
+    if key in seen:
+        return Problem(
+            file=spec.file,
+            line=record.line,
+            column=spec.key[0],
+            message=f"duplicates line {seen[key]} ({', '.join(map(str, key))})",
+        )
+    seen[key] = record.line
+    return None
+
+
+def parse_rows(
+    spec: CsvSpec, rows: Sequence[Mapping[str, object]]
+) -> tuple[list[Record], list[Problem]]:
+    """Validate rows given as mappings (a JSON array); a row's ``line`` is its array index."""
+    records: list[Record] = []
+    problems: list[Problem] = []
+    seen: dict[tuple[Any, ...], int] = {}
+    for index, row in enumerate(rows):
+        values, row_problems = check_values(spec, row, line=index)
+        problems.extend(row_problems)
+        record = Record(line=index, values=values)
+        if not row_problems and (duplicate := _duplicate(spec, record, seen)):
+            problems.append(duplicate)
+        records.append(record)
+    return records, problems
 
 
 def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
@@ -165,26 +402,12 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
                 )
             )
             continue
-        values: dict[str, Any] = {}
-        for name, raw in zip(header, cells, strict=True):
-            column = known[name]
-            value, problem = _cell(spec, column, raw, line)
-            if problem:
-                problems.append(problem)
-            values[column.attribute] = value
-        key = tuple(values[known[k].attribute] for k in spec.key)
-        if key in seen:
-            problems.append(
-                Problem(
-                    file=spec.file,
-                    line=line,
-                    column=spec.key[0],
-                    message=f"duplicates line {seen[key]} ({', '.join(map(str, key))})",
-                )
-            )
-        else:
-            seen[key] = line
-        records.append(Record(line=line, values=values))
+        values, row_problems = _row(spec, zip(header, cells, strict=True), line)
+        problems.extend(row_problems)
+        record = Record(line=line, values=values)
+        if duplicate := _duplicate(spec, record, seen):
+            problems.append(duplicate)
+        records.append(record)
     return records, problems
 
 

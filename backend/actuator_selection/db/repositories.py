@@ -130,6 +130,7 @@ class CatalogueRepository:
             select(ActuatorRow)
             .join(ActuatorRow.family)
             .options(selectinload(ActuatorRow.zone_points), selectinload(ActuatorRow.family))
+            .where(ActuatorRow.retired_at.is_(None))
             .order_by(ActuatorRow.model)
         )
         if query.family is not None:

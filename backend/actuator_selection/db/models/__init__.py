@@ -14,16 +14,30 @@ from actuator_selection.db.models.controllers import (
     SensorFittingRow,
     SensorPointRow,
 )
+from actuator_selection.db.models.sales import (
+    ApiKeyRow,
+    PriceListRow,
+    PriceRow,
+    QuoteCounterRow,
+    QuoteItemRow,
+    QuoteRow,
+)
 from actuator_selection.db.models.selections import SelectionRow
 
 __all__ = [
     "ActuatorFamilyRow",
     "ActuatorInterfaceRow",
     "ActuatorRow",
+    "ApiKeyRow",
     "Base",
     "CatalogueStateRow",
     "ControllerRow",
     "DcBusClassRow",
+    "PriceListRow",
+    "PriceRow",
+    "QuoteCounterRow",
+    "QuoteItemRow",
+    "QuoteRow",
     "SelectionRow",
     "SensorFittingRow",
     "SensorPointRow",

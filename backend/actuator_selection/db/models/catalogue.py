@@ -69,6 +69,8 @@ class ActuatorRow(Base):
     feedback: Mapped[str | None] = mapped_column(String(80))
     notes: Mapped[str | None] = mapped_column(Text)
     source: Mapped[str] = mapped_column(Text)
+    retired_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True))
+    """Set when the actuator is withdrawn: it leaves listings and selections, stays for quotes."""
 
     family: Mapped[ActuatorFamilyRow] = relationship(back_populates="actuators")
     zone_points: Mapped[list[ZonePointRow]] = relationship(
