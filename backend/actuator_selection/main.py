@@ -5,21 +5,26 @@ from __future__ import annotations
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
-from fastapi import FastAPI
+from fastapi import Depends, FastAPI
 from fastapi.middleware.gzip import GZipMiddleware
 from fastapi.staticfiles import StaticFiles
 
 from actuator_selection import __version__
 from actuator_selection.api import (
     actuators,
+    admin,
+    auth,
     batch,
     controllers,
     errors,
     health,
+    prices,
+    quotes,
     selections,
     static,
     tools,
 )
+from actuator_selection.api.auth import require_reader
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 
@@ -45,9 +50,15 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)
+    app.state.settings = settings  # require_reader reads REQUIRE_API_KEY from here
     errors.install(app)
-    # batch before selections: /selections/batch must not read as a selection id.
-    for module in (health, actuators, controllers, batch, selections, tools):
+    app.include_router(health.router, prefix=API_PREFIX)
+    # Catalogue reads, selections and tools: open unless REQUIRE_API_KEY; batch before
+    # selections so that /selections/batch is not read as a selection id.
+    for module in (actuators, controllers, batch, selections, tools):
+        app.include_router(module.router, prefix=API_PREFIX, dependencies=[Depends(require_reader)])
+    # Keys, catalogue changes, prices, quotes: each route names the role it needs.
+    for module in (auth, admin, prices, quotes):
         app.include_router(module.router, prefix=API_PREFIX)
     app.include_router(static.router)
     # Level 1: on a 58.5 MB batch answer 0.2 s for 7.2 MB, against 0.64 s for 4.9 MB at 9.

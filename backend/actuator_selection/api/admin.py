@@ -1,0 +1,273 @@
+"""Catalogue management for admin keys: actuators, their zones, whole-catalogue import/export.
+
+Writes are validated by the seed files' rules (``db/seed.py``), so an actuator the
+API accepts is one the seed loader accepts and vice versa. Every change raises
+the catalogue version. Retiring is a soft delete: the actuator leaves listings
+and selections, and stays for the quotes that name it.
+
+Import and export use the seed format: a ZIP of ``families.csv``,
+``actuators.csv`` and ``zone_points.csv`` (``Content-Type: application/zip``), or
+JSON ``{"families": [...], "actuators": [...], "zone_points": [...]}`` of objects
+keyed by the CSV column names (``application/json``). An import is the whole
+catalogue: actuators it lacks are retired, zones it lacks removed; it runs in
+one transaction, and ``?dry_run=true`` reports the changes and writes nothing.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import zipfile
+from datetime import UTC, datetime
+from typing import Annotated, Any, Literal
+
+from fastapi import APIRouter, Body, Depends, HTTPException, Query, Response
+
+from actuator_selection.api.auth import AdminDep
+from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.uploads import (
+    Upload,
+    file_errors,
+    raw_upload,
+    text_of,
+    unsupported,
+    unzip_csv,
+)
+from actuator_selection.db.admin import CatalogueAdminRepository
+from actuator_selection.db.csvio import CatalogueFileError, Problem, to_json_values, write
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+from actuator_selection.db.seed import (
+    CATALOGUE_SPECS,
+    JSON_KEYS,
+    catalogue_from_json,
+    parse_catalogue,
+)
+from actuator_selection.schemas.actuators import ActuatorOut
+from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, actuator_json_schema
+
+router = APIRouter(tags=["catalogue management"])
+
+_ACTUATOR_BODY: dict[str, Any] = {
+    "requestBody": {
+        "required": True,
+        "content": {"application/json": {"schema": actuator_json_schema()}},
+    }
+}
+_ERRORS: dict[int | str, dict[str, Any]] = {
+    401: {"description": "no or a bad API key"},
+    403: {"description": "the key lacks the admin role"},
+    422: {"description": "a value breaks a rule of actuators.csv; the entry names the column"},
+}
+
+
+def _field_errors(exc: CatalogueFileError, *prefix: str | int, rows: bool = False) -> Exception:
+    """422 entries at ``body.<prefix>.<column>`` (or ``<prefix>.<index>.<column>`` for rows)."""
+    entries = []
+    for p in exc.problems:
+        loc: list[str | int] = ["body", *prefix]
+        if rows:
+            loc.append(p.line)
+        if p.column:
+            loc.append(p.column)
+        entries.append(field_error(loc, f"{p.column or 'value'} {p.message}", "invalid_value"))
+    return RequestFieldError(entries)
+
+
+def _actuator_out(session: SessionDep, model: str) -> ActuatorOut:
+    record = CatalogueRepository(session).actuator(model)
+    if record is None:
+        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+    return ActuatorOut.from_record(record)
+
+
+def _known(session: SessionDep, model: str, *, active: bool = False) -> None:
+    state = CatalogueAdminRepository(session).state(model)
+    if state is None:
+        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+    if active and state.retired_at is not None:
+        raise HTTPException(
+            status_code=409,
+            detail=f"actuator {model!r} is retired; PUT /actuators/{model} brings it back first",
+        )
+
+
+@router.post(
+    "/actuators", status_code=201, openapi_extra=_ACTUATOR_BODY, responses={**_ERRORS, 409: {}}
+)
+def create_actuator(
+    _: AdminDep, session: SessionDep, response: Response, body: Annotated[dict[str, Any], Body()]
+) -> ActuatorOut:
+    """Add an actuator (the columns of actuators.csv, units in the names)."""
+    repository = CatalogueAdminRepository(session)
+    try:
+        values = repository.validate_actuator(body)
+    except CatalogueFileError as exc:
+        raise _field_errors(exc) from None
+    if repository.state(values["model"]) is not None:
+        raise HTTPException(
+            status_code=409,
+            detail=f"actuator {values['model']!r} exists (retired ones too); "
+            "PUT /actuators/{model} replaces it",
+        )
+    repository.save_actuator(values)
+    response.headers["Location"] = f"/api/v1/actuators/{values['model']}"
+    return _actuator_out(session, values["model"])
+
+
+@router.put(
+    "/actuators/{model}",
+    openapi_extra=_ACTUATOR_BODY,
+    responses={**_ERRORS, 404: {"description": "unknown model"}},
+)
+def replace_actuator(
+    model: str, _: AdminDep, session: SessionDep, body: Annotated[dict[str, Any], Body()]
+) -> ActuatorOut:
+    """Replace an actuator's values (every column; a missing one becomes empty).
+
+    A retired actuator is brought back.
+    """
+    _known(session, model)
+    if body.get("model", model) != model:
+        raise RequestFieldError(
+            [field_error(["body", "model"], f"must be {model!r}, as in the path", "mismatch")]
+        )
+    repository = CatalogueAdminRepository(session)
+    try:
+        values = repository.validate_actuator({**body, "model": model})
+    except CatalogueFileError as exc:
+        raise _field_errors(exc) from None
+    repository.save_actuator(values)
+    return _actuator_out(session, model)
+
+
+@router.delete(
+    "/actuators/{model}",
+    status_code=204,
+    responses={**_ERRORS, 404: {"description": "unknown model"}},
+)
+def retire_actuator(model: str, _: AdminDep, session: SessionDep) -> Response:
+    """Retire an actuator: gone from listings and selections, kept for quotes (idempotent)."""
+    _known(session, model)
+    CatalogueAdminRepository(session).retire(model, now=datetime.now(UTC))
+    return Response(status_code=204)
+
+
+@router.put(
+    "/actuators/{model}/zone",
+    responses={**_ERRORS, 404: {"description": "unknown model"}, 409: {"description": "retired"}},
+)
+def set_zone(model: str, body: ZoneIn, _: AdminDep, session: SessionDep) -> ActuatorOut:
+    """Replace the continuous-duty zone's edge (Fig. 517.1) of an actuator."""
+    _known(session, model, active=True)
+    repository = CatalogueAdminRepository(session)
+    points = [p.model_dump() for p in body.points]
+    try:
+        checked = repository.validate_zone(model, points, body.source)
+    except CatalogueFileError as exc:
+        source = [p for p in exc.problems if p.column == "source"]
+        if source:
+            raise _field_errors(CatalogueFileError(source[:1])) from None
+        raise _field_errors(exc, "points", rows=True) from None
+    repository.set_zone(model, checked, source=str(body.source).strip())
+    return _actuator_out(session, model)
+
+
+@router.delete(
+    "/actuators/{model}/zone",
+    status_code=204,
+    responses={**_ERRORS, 404: {"description": "unknown model"}},
+)
+def delete_zone(model: str, _: AdminDep, session: SessionDep) -> Response:
+    """Remove an actuator's zone (its continuous-duty check then uses T₀ or says no data)."""
+    _known(session, model, active=True)
+    CatalogueAdminRepository(session).set_zone(model, [], source=None)
+    return Response(status_code=204)
+
+
+@router.get(
+    "/catalogue/export",
+    responses={
+        200: {
+            "content": {"application/zip": {}, "application/json": {}},
+            "description": "the seed files as a ZIP, or their JSON form",
+        }
+    },
+)
+def export_catalogue(
+    _: AdminDep,
+    session: SessionDep,
+    format: Annotated[
+        Literal["zip", "json"], Query(description="zip of CSV files or JSON")
+    ] = "zip",
+) -> Response:
+    """The active catalogue in the seed format (retired actuators left out)."""
+    stored = CatalogueAdminRepository(session).export()
+    version = CatalogueVersionRepository(session).current()
+    headers = {"X-Catalogue-Version": str(version)}
+    if format == "json":
+        body = {
+            JSON_KEYS[spec.file]: [to_json_values(spec, row) for row in stored[spec.file]]
+            for spec in CATALOGUE_SPECS
+        }
+        return Response(
+            json.dumps(body, ensure_ascii=False, allow_nan=False),
+            media_type="application/json",
+            headers=headers,
+        )
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", compression=zipfile.ZIP_DEFLATED) as archive:
+        for spec in CATALOGUE_SPECS:
+            archive.writestr(spec.file, write(spec, stored[spec.file]))
+    headers["Content-Disposition"] = f'attachment; filename="catalogue-v{version}.zip"'
+    return Response(buffer.getvalue(), media_type="application/zip", headers=headers)
+
+
+@router.post(
+    "/catalogue/import",
+    responses={
+        **_ERRORS,
+        415: {"description": "neither application/zip nor application/json"},
+        422: {"description": "every problem with file, line, column and rule; nothing changed"},
+    },
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {
+                "application/zip": {"schema": {"type": "string", "format": "binary"}},
+                "application/json": {"schema": {"type": "object"}},
+            },
+        }
+    },
+)
+def import_catalogue(
+    _: AdminDep,
+    upload: Annotated[Upload, Depends(raw_upload)],
+    session: SessionDep,
+    dry_run: Annotated[bool, Query(description="report what would change, change nothing")] = False,
+) -> CatalogueImportOut:
+    """Replace the whole catalogue from the seed files, atomically."""
+    try:
+        if upload.media_type == "application/zip":
+            files = parse_catalogue(
+                unzip_csv(upload.body, wanted=tuple(s.file for s in CATALOGUE_SPECS))
+            )
+        elif upload.media_type == "application/json":
+            try:
+                document = json.loads(text_of(upload.body, file="(body)"))
+            except ValueError:
+                document = None
+            if not isinstance(document, dict):
+                problem = Problem(
+                    file="(body)", line=0, column=None, message="must be a JSON object"
+                )
+                raise CatalogueFileError([problem])
+            files = catalogue_from_json(document)
+        else:
+            raise unsupported(upload.media_type, ("application/zip", "application/json"))
+        changes = CatalogueAdminRepository(session).import_catalogue(files, dry_run=dry_run)
+    except CatalogueFileError as exc:
+        raise file_errors(exc) from None
+    return CatalogueImportOut.build(
+        changes, dry_run=dry_run, version=CatalogueVersionRepository(session).current()
+    )

@@ -1,0 +1,102 @@
+"""API keys on requests: ``Authorization: Bearer <key>``, roles ``admin`` and ``sales``.
+
+- No key: anonymous. Anonymous callers may read the catalogue and run selections
+  unless ``Settings.require_api_key`` (``REQUIRE_API_KEY``) is set.
+- A key that is unknown, revoked or malformed: 401 with ``WWW-Authenticate:
+  Bearer`` and one and the same body, so the answer never tells whether a key
+  exists. A bad key is refused even on open endpoints.
+- A valid key without the role an endpoint needs: 403. Roles do not include
+  each other: an ``admin`` key manages the catalogue, prices and keys; a
+  ``sales`` key makes quotes.
+
+Mount ``dependencies=[Depends(require_reader)]`` on the open routers and use
+``require_role("admin")`` / ``require_role("sales")`` on the others.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Annotated, Literal, cast
+
+from fastapi import APIRouter, Depends, HTTPException, Request
+
+from actuator_selection.api.deps import SessionDep
+from actuator_selection.config import Settings, get_settings
+from actuator_selection.db.sales import ApiKeyRecord, ApiKeyRepository
+from actuator_selection.schemas.auth import PrincipalOut
+
+router = APIRouter(tags=["auth"])
+
+UNAUTHORIZED = "a valid API key is required: send Authorization: Bearer <key>"
+CHALLENGE = {"WWW-Authenticate": 'Bearer realm="actuator-selection"'}
+
+
+def _unauthorized() -> HTTPException:
+    return HTTPException(status_code=401, detail=UNAUTHORIZED, headers=CHALLENGE)
+
+
+def request_settings(request: Request) -> Settings:
+    """The settings the app was built with (``app.state.settings``), else the environment's."""
+    settings = getattr(request.app.state, "settings", None)
+    return settings if isinstance(settings, Settings) else get_settings()
+
+
+def get_principal(request: Request, session: SessionDep) -> ApiKeyRecord | None:
+    """The caller's API key; None without an Authorization header; 401 for a bad key."""
+    header = request.headers.get("authorization")
+    if header is None:
+        return None
+    scheme, _, key = header.partition(" ")
+    if scheme.lower() != "bearer" or not key.strip():
+        raise _unauthorized()
+    principal = ApiKeyRepository(session).authenticate(key.strip())
+    if principal is None:
+        raise _unauthorized()
+    return principal
+
+
+PrincipalDep = Annotated[ApiKeyRecord | None, Depends(get_principal)]
+
+
+def require_reader(request: Request, principal: PrincipalDep) -> ApiKeyRecord | None:
+    """Catalogue reads and selections: anyone, unless the settings require a key."""
+    if principal is None and request_settings(request).require_api_key:
+        raise _unauthorized()
+    return principal
+
+
+def require_role(*roles: str) -> Callable[..., ApiKeyRecord]:
+    """A dependency admitting only keys of one of ``roles`` (401 without a key, 403 otherwise)."""
+
+    def dependency(principal: PrincipalDep) -> ApiKeyRecord:
+        if principal is None:
+            raise _unauthorized()
+        if principal.role not in roles:
+            raise HTTPException(
+                status_code=403,
+                detail=f"this API key has the role {principal.role!r}; "
+                f"this needs {' or '.join(repr(r) for r in roles)}",
+            )
+        return principal
+
+    dependency.__name__ = f"require_{'_or_'.join(roles)}"
+    return dependency
+
+
+AdminDep = Annotated[ApiKeyRecord, Depends(require_role("admin"))]
+SalesDep = Annotated[ApiKeyRecord, Depends(require_role("sales"))]
+PriceReaderDep = Annotated[ApiKeyRecord, Depends(require_role("admin", "sales"))]
+
+
+@router.get("/auth/me", responses={401: {"description": "a bad API key"}})
+def who_am_i(
+    request: Request, principal: Annotated[ApiKeyRecord | None, Depends(require_reader)]
+) -> PrincipalOut:
+    """The caller's key (its public id, name and role), or anonymous."""
+    return PrincipalOut(
+        authenticated=principal is not None,
+        key_id=principal.prefix if principal else None,
+        name=principal.name if principal else None,
+        role=cast(Literal["admin", "sales"], principal.role) if principal else None,
+        require_api_key=request_settings(request).require_api_key,
+    )

@@ -1,0 +1,113 @@
+"""Uploaded files for imports: raw request bodies (CSV, ZIP, JSON), bounded in size.
+
+Files are sent as the request body itself with their media type (no multipart),
+so ``curl --data-binary @prices.csv -H 'Content-Type: text/csv'`` suffices and
+no form parser is needed. Problems in a file become one 422 whose entries name
+file, line, column and rule: ``{"loc": ["body", file, line, column], "msg": ...,
+"type": "invalid_file", "file": ..., "line": ..., "column": ...}``.
+"""
+
+from __future__ import annotations
+
+import io
+import zipfile
+from dataclasses import dataclass
+from pathlib import PurePosixPath
+from typing import Any
+
+from fastapi import HTTPException, Request
+
+from actuator_selection.api.errors import RequestFieldError
+from actuator_selection.db.csvio import CatalogueFileError, Problem
+
+MAX_UPLOAD_BYTES = 20 * 1024 * 1024
+"""Largest body or unpacked ZIP member accepted [bytes]: the starter catalogue is < 50 kB."""
+
+
+@dataclass(frozen=True, slots=True)
+class Upload:
+    """A request body and its media type (parameters such as charset stripped)."""
+
+    media_type: str
+    body: bytes
+
+
+async def raw_upload(request: Request) -> Upload:
+    """The request body, at most ``MAX_UPLOAD_BYTES`` (413 beyond)."""
+    declared = request.headers.get("content-length")
+    if declared is not None and declared.isdigit() and int(declared) > MAX_UPLOAD_BYTES:
+        raise HTTPException(status_code=413, detail=f"at most {MAX_UPLOAD_BYTES} bytes")
+    chunks: list[bytes] = []
+    size = 0
+    async for chunk in request.stream():
+        size += len(chunk)
+        if size > MAX_UPLOAD_BYTES:
+            raise HTTPException(status_code=413, detail=f"at most {MAX_UPLOAD_BYTES} bytes")
+        chunks.append(chunk)
+    media_type = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    return Upload(media_type=media_type, body=b"".join(chunks))
+
+
+def unsupported(media_type: str, accepted: tuple[str, ...]) -> HTTPException:
+    """415 naming what is accepted."""
+    return HTTPException(
+        status_code=415,
+        detail=f"Content-Type {media_type or '(none)'} is not accepted here; "
+        f"send {' or '.join(accepted)}",
+    )
+
+
+def problem_entry(problem: Problem) -> dict[str, Any]:
+    """One entry of a 422 body for a file problem."""
+    loc: list[str | int] = ["body", problem.file, problem.line]
+    if problem.column:
+        loc.append(problem.column)
+    return {
+        "loc": loc,
+        "msg": str(problem),
+        "type": "invalid_file",
+        "file": problem.file,
+        "line": problem.line,
+        "column": problem.column,
+    }
+
+
+def file_errors(exc: CatalogueFileError) -> RequestFieldError:
+    """The 422 for every problem of a file (raise it)."""
+    return RequestFieldError([problem_entry(p) for p in exc.problems])
+
+
+def text_of(body: bytes, *, file: str) -> str:
+    """``body`` as UTF-8 text (a byte-order mark is dropped); 422 naming ``file`` otherwise."""
+    try:
+        return body.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        problem = Problem(file=file, line=0, column=None, message=f"is not UTF-8 ({exc.reason})")
+        raise file_errors(CatalogueFileError([problem])) from None
+
+
+def unzip_csv(body: bytes, *, wanted: tuple[str, ...]) -> dict[str, str | None]:
+    """The ``wanted`` CSV files of a ZIP archive as text, by file name (None: not in it).
+
+    Files may sit at the archive's root or in one folder; other CSV files are
+    returned too (so that the caller can name them as unknown).
+    """
+    try:
+        archive = zipfile.ZipFile(io.BytesIO(body))
+    except zipfile.BadZipFile:
+        problem = Problem(file="(upload)", line=0, column=None, message="is not a ZIP archive")
+        raise file_errors(CatalogueFileError([problem])) from None
+    texts: dict[str, str | None] = dict.fromkeys(wanted)
+    with archive:
+        for info in archive.infolist():
+            path = PurePosixPath(info.filename)
+            if info.is_dir() or path.suffix.lower() != ".csv" or "__MACOSX" in path.parts:
+                continue
+            if info.file_size > MAX_UPLOAD_BYTES:
+                raise HTTPException(status_code=413, detail=f"{path.name} is too large unpacked")
+            with archive.open(info) as member:
+                data = member.read(MAX_UPLOAD_BYTES + 1)
+            if len(data) > MAX_UPLOAD_BYTES:
+                raise HTTPException(status_code=413, detail=f"{path.name} is too large unpacked")
+            texts[path.name] = text_of(data, file=path.name)
+    return texts

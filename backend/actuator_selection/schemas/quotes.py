@@ -1,0 +1,274 @@
+"""The quote contract: what sales engineers and ERP systems send and receive.
+
+Money and percentages are exact decimals: in requests a JSON string (``"7.5"``)
+or an integer, never a JSON number with a fraction (a binary float cannot hold
+most cents exactly); in responses always a string with two decimal places
+(``"2561.30"``).
+"""
+
+from __future__ import annotations
+
+from datetime import date, datetime
+from decimal import Decimal
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, StrictInt, StringConstraints
+
+from actuator_selection.core.money import MAX_QUANTITY, ROUNDING_RULE
+from actuator_selection.core.quote_status import (
+    QuoteStatus,
+    allowed_transitions,
+    effective_status,
+)
+from actuator_selection.db.sales import QuoteRecord
+from actuator_selection.schemas.common import ResponseModel, StrictModel
+
+
+def _no_float(value: Any) -> Any:
+    if isinstance(value, float):
+        raise ValueError('give decimals as a string such as "7.5", not as a JSON number')
+    if isinstance(value, bool):
+        raise ValueError("must be a decimal number")
+    return value
+
+
+DecimalIn = Annotated[Decimal, BeforeValidator(_no_float)]
+Text = Annotated[str, StringConstraints(strip_whitespace=True)]
+Quantity = Annotated[StrictInt, Field(ge=1, le=MAX_QUANTITY, description="pieces, ≥ 1")]
+
+
+class CustomerIn(StrictModel):
+    """Who the quote is for; free text, shown escaped on the document."""
+
+    name: Annotated[Text, Field(min_length=1, max_length=200)]
+    address: Annotated[Text, Field(max_length=2000)] | None = None
+    reference: Annotated[Text, Field(max_length=200)] | None = Field(
+        default=None, description="the customer's enquiry or order reference"
+    )
+
+
+class ActuatorItemIn(StrictModel):
+    """The chosen actuator: one of the selection's candidates, priced by its model."""
+
+    model: Annotated[str, Field(min_length=1, max_length=60)]
+    quantity: Quantity = 1
+
+
+class ControllerItemIn(StrictModel):
+    """A servo controller: its type as the customer should read it, priced by ``item_code``."""
+
+    type_name: Annotated[Text, Field(min_length=1, max_length=200)] = Field(
+        description="free text, e.g. 'SINAMICS S120, 400 V, 5 A'"
+    )
+    item_code: Annotated[str, Field(min_length=1, max_length=80)] = Field(
+        description="the controller's code in the price list"
+    )
+    quantity: Quantity = 1
+
+
+class QuoteCreate(StrictModel):
+    """A quote for the selection ``selection_id``; prices come from ``price_list``."""
+
+    selection_id: Annotated[str, Field(min_length=1, max_length=36)]
+    customer: CustomerIn
+    actuator: ActuatorItemIn
+    controller: ControllerItemIn | None = None
+    price_list: Annotated[str, Field(min_length=1, max_length=120)]
+    currency: Annotated[str, Field(pattern=r"^[A-Z]{3}$")] | None = Field(
+        default=None,
+        description="ISO 4217 code; needed only when the price list prices an item in several",
+    )
+    discount_percent: DecimalIn = Field(
+        default=Decimal(0), ge=0, le=100, decimal_places=2, description='0–100, e.g. "7.5"'
+    )
+    valid_until: date = Field(description="last day the customer may accept (inclusive)")
+    notes: Annotated[Text, Field(max_length=4000)] | None = None
+
+
+class QuoteStatusIn(StrictModel):
+    """A status change: ``sent``, ``accepted`` or ``rejected`` (``expired`` happens by date)."""
+
+    status: Literal["sent", "accepted", "rejected"]
+
+
+class CustomerOut(ResponseModel):
+    """Who the quote is for."""
+
+    name: str
+    address: str | None
+    reference: str | None
+
+
+class QuoteItemOut(ResponseModel):
+    """One priced line."""
+
+    position: int
+    kind: Literal["actuator", "controller"]
+    item_code: str
+    description: str
+    quantity: int
+    unit_price: Decimal = Field(description="decimal string, from the price list")
+    line_total: Decimal = Field(description="unit_price × quantity, rounded to cents half up")
+
+
+class PriceListRef(ResponseModel):
+    """The price list the quote was priced from, and the day it was priced."""
+
+    name: str
+    is_example: bool = Field(description="true: example prices, not real ones")
+    priced_on: date
+
+
+class QuoteOut(ResponseModel):
+    """A quote: its figures, its status as of today, and the engineering it rests on."""
+
+    number: str = Field(description="Q-<year>-<5 digits>, sequential per year")
+    status: QuoteStatus = Field(description="as of today: draft or sent quotes expire by date")
+    allowed_transitions: list[QuoteStatus]
+    created_at: datetime
+    status_changed_at: datetime
+    valid_until: date
+    customer: CustomerOut
+    selection_id: str
+    selection_catalogue_version: int = Field(description="catalogue version the selection used")
+    catalogue_version: int = Field(description="catalogue version when the quote was made")
+    actuator_model: str
+    verdict: Literal["suitable", "unconfirmed"]
+    unconfirmed: bool = Field(description="true: some check lacked catalogue data")
+    verdict_reasons: list[str]
+    price_list: PriceListRef
+    currency: str
+    items: list[QuoteItemOut]
+    subtotal: Decimal
+    discount_percent: Decimal
+    discount_amount: Decimal
+    total: Decimal
+    rounding: str = Field(default=ROUNDING_RULE)
+    notes: str | None
+    document_url: str
+
+    @classmethod
+    def from_record(cls, record: QuoteRecord, *, today: date, prefix: str) -> QuoteOut:
+        """The response body of a stored quote as of ``today``; ``prefix`` is the API's path."""
+        return cls(
+            number=record.number,
+            status=effective_status(record.status, valid_until=record.valid_until, today=today),
+            allowed_transitions=list(
+                allowed_transitions(record.status, valid_until=record.valid_until, today=today)
+            ),
+            created_at=record.created_at,
+            status_changed_at=record.status_changed_at,
+            valid_until=record.valid_until,
+            customer=CustomerOut(
+                name=record.customer_name,
+                address=record.customer_address,
+                reference=record.customer_reference,
+            ),
+            selection_id=record.selection_id,
+            selection_catalogue_version=record.selection_catalogue_version,
+            catalogue_version=record.catalogue_version,
+            actuator_model=record.actuator_model,
+            verdict="suitable" if record.verdict == "suitable" else "unconfirmed",
+            unconfirmed=record.verdict == "unconfirmed",
+            verdict_reasons=list(record.verdict_reasons),
+            price_list=PriceListRef(
+                name=record.price_list_name,
+                is_example=record.price_list_is_example,
+                priced_on=record.price_date,
+            ),
+            currency=record.currency,
+            items=[
+                QuoteItemOut(
+                    position=i.position,
+                    kind="actuator" if i.item_kind == "actuator" else "controller",
+                    item_code=i.item_code,
+                    description=i.description,
+                    quantity=i.quantity,
+                    unit_price=i.unit_price,
+                    line_total=i.line_total,
+                )
+                for i in record.items
+            ],
+            subtotal=record.subtotal,
+            discount_percent=record.discount_percent,
+            discount_amount=record.discount_amount,
+            total=record.total,
+            notes=record.notes,
+            document_url=f"{prefix}/quotes/{record.number}/document",
+        )
+
+
+class QuoteListOut(ResponseModel):
+    """A page of quotes, newest first."""
+
+    total: int = Field(description="how many quotes match in all")
+    quotes: list[QuoteOut]
+
+
+class _Stored(BaseModel):
+    """A part of a stored selection response, read leniently: fields added to the
+    selection contract later are ignored, so old and new selections both read."""
+
+    model_config = ConfigDict(extra="ignore", frozen=True)
+
+
+class StoredCheck(_Stored):
+    """A flowchart check as stored with the selection."""
+
+    name: str
+    status: str
+    value: float | None = None
+    limit: float | None = None
+    unit: str = ""
+    reference: str = ""
+    message: str = ""
+    approximate: bool = False
+    margin_percent: float | None = None
+
+
+class StoredCandidate(_Stored):
+    """A candidate as stored with the selection."""
+
+    model: str
+    family: str
+    gear_ratio: float
+    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
+    accel_torque_nm: float | None = None
+    constant_torque_nm: float | None = None
+    decel_torque_nm: float | None = None
+    rms_torque_nm: float | None = None
+    reasons: list[str] = []
+    checks: list[StoredCheck] = []
+
+
+class StoredLoad(_Stored):
+    """The resolved load at the output."""
+
+    speed_rpm: float
+    torque_nm: float
+    inertia_kgm2: float
+
+
+class StoredCycle(_Stored):
+    """The speed pattern's times [s]."""
+
+    accel_s: float
+    constant_s: float
+    decel_s: float
+    pause_s: float
+
+
+class StoredSelection(_Stored):
+    """What a quote needs of a stored selection (``GET /selections/{id}``'s body)."""
+
+    id: str
+    created_at: datetime
+    catalogue_version: int
+    load: StoredLoad
+    mechanism: dict[str, Any] | None = None
+    cycle: StoredCycle
+    high_dynamics: bool = True
+    cycle_time_s: float
+    mean_speed_rpm: float
+    duty_cycle_percent: float
+    candidates: list[StoredCandidate]
