@@ -25,7 +25,7 @@ install: $(STAMP)
 ## database (or $DATABASE_URL), migrated and seeded with the starter catalogue.
 run: install
 	$(BIN)/python -m actuator_selection migrate
-	$(BIN)/python -m actuator_selection seed
+	$(BIN)/python -m actuator_selection seed --if-empty
 	$(BIN)/python -m actuator_selection serve
 
 ## The whole suite: lint, format, strict types, unit/db/api/browser tests.

@@ -22,12 +22,16 @@ def _migrate(args: argparse.Namespace) -> int:
 def _seed(args: argparse.Namespace) -> int:
     from actuator_selection.db.csvio import CatalogueFileError
     from actuator_selection.db.engine import make_engine, make_session_factory
+    from actuator_selection.db.repositories import CatalogueVersionRepository
     from actuator_selection.db.seed import load_seed
     from actuator_selection.db.seed_controllers import load_controllers
 
     engine = make_engine(args.database_url)
     try:
         with make_session_factory(engine).begin() as session:
+            if args.if_empty and CatalogueVersionRepository(session).current() > 0:
+                print("seed: the catalogue has been written before; left as it is (--if-empty)")
+                return 0
             report = load_seed(session, Path(args.directory))
             protection = load_controllers(session, Path(args.directory))
     except CatalogueFileError as exc:
@@ -66,6 +70,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     seed = commands.add_parser("seed", help="load the starter catalogue (idempotent)")
     seed.add_argument("--directory", default=str(SEED_DIR), help="folder of the CSV files")
+    seed.add_argument(
+        "--if-empty",
+        action="store_true",
+        help="seed only a catalogue never written before, so changes made through the "
+        "admin API survive a restart",
+    )
     seed.set_defaults(run=_seed)
     serve = commands.add_parser("serve", help="serve the API and the web page")
     serve.add_argument("--host", default=settings.host)

@@ -351,3 +351,27 @@ def test_check_values_shares_the_rules_and_messages_of_the_files() -> None:
     assert values["mass_kg"] is None
     _, problems = check_values(ACTUATORS, {"model": ["X"], "unit": 1})
     assert {p.column for p in problems} >= {"model", "unit", "family", "gear_ratio", "source"}
+
+
+def test_cli_seed_if_empty_keeps_a_written_catalogue(
+    backend: str,
+    new_database: Callable[[str], str],
+    seed_dir: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """`make run` seeds with --if-empty: an admin's later changes survive a restart."""
+    url = new_database(backend)
+    assert main(["--database-url", url, "migrate"]) == 0
+    assert main(["--database-url", url, "seed", "--if-empty"]) == 0
+    assert "inserted" in capsys.readouterr().out
+    edit_cell(seed_dir, "actuators.csv", "CHA-25A-50", "max_torque_nm", "1")
+    assert main(["--database-url", url, "seed", "--if-empty", "--directory", str(seed_dir)]) == 0
+    assert "left as it is" in capsys.readouterr().out
+    engine = make_engine(url)
+    try:
+        with Session(engine) as s:
+            record = CatalogueRepository(s).actuator("CHA-25A-50")
+            assert record is not None
+            assert record.actuator.max_torque_nm == 98
+    finally:
+        engine.dispose()
