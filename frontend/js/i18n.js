@@ -10,6 +10,7 @@ const STORAGE_KEY = "actuator-selection.lang";
 const TEXTS = {
   de: {
     "app.title": "Antriebsauslegung",
+    "app.sales": "Angebote (Vertrieb)",
     "app.subtitle": "Harmonic Drive Servoantriebe · Flussdiagramm, Gl. 514.1–514.4, Abb. 516.2 und 517.1",
     "lang.group": "Sprache",
     "skip": "Zum Ergebnis springen",
@@ -191,6 +192,7 @@ const TEXTS = {
   },
   en: {
     "app.title": "Actuator selection",
+    "app.sales": "Quotes (sales)",
     "app.subtitle": "Harmonic Drive servo actuators · flowchart, Eq. 514.1–514.4, Fig. 516.2 and 517.1",
     "lang.group": "Language",
     "skip": "Skip to results",
