@@ -20,45 +20,19 @@ import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
-from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
-from actuator_selection.api import batch
-from actuator_selection.config import SEED_DIR, Settings
+from actuator_selection.config import Settings
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import evaluate_batch, rank_batch, select_batch
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.selection import Application, select
+from actuator_selection.core.selection import select
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
-from actuator_selection.db.engine import make_engine, make_session_factory
-from actuator_selection.db.migrate import upgrade
-from actuator_selection.db.repositories import CatalogueRepository
-from actuator_selection.db.seed import load_seed
-from actuator_selection.db.seed_controllers import load_controllers
 from actuator_selection.main import API_PREFIX, create_app
+from bench.selection import http_case, random_cases, starter_catalogue
 
 TOP = 3
 BATCH_CASES = 10_000
-
-
-def _cases(n: int, seed: int = 7) -> list[Application]:
-    rng = random.Random(seed)
-    return [
-        Application(
-            pattern=SpeedPattern(
-                speed_rpm=rng.uniform(5, 150),
-                accel_s=rng.uniform(0.05, 0.5),
-                constant_s=rng.uniform(0, 1),
-                decel_s=rng.uniform(0.05, 0.5),
-                pause_s=rng.uniform(0, 2),
-            ),
-            load=Load(torque_nm=rng.uniform(0, 50), inertia_kgm2=rng.uniform(0, 5)),
-            high_dynamics=rng.random() < 0.5,
-        )
-        for _ in range(n)
-    ]
 
 
 def synthetic_catalogue(n: int, seed: int = 11) -> list[Actuator]:
@@ -119,7 +93,7 @@ def _gc_paused(run: Callable[[], object]) -> Callable[[], object]:
 def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
     """Scalar select() per case against the batch functions on one catalogue."""
     print(f"{name}: {len(actuators)} actuators")
-    apps = _cases(BATCH_CASES)
+    apps = random_cases(BATCH_CASES)
     scalar_apps = apps[:scalar_cases]
 
     def scalar_run() -> None:
@@ -153,44 +127,14 @@ def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
     )
 
 
-def _http_case(app: Application) -> dict[str, Any]:
-    p = app.pattern
-    return {
-        "load": {
-            "speed_rpm": p.speed_rpm,
-            "torque_nm": app.load.torque_nm,
-            "inertia_kgm2": app.load.inertia_kgm2,
-        },
-        "cycle": {
-            "accel_s": p.accel_s,
-            "constant_s": p.constant_s,
-            "decel_s": p.decel_s,
-            "pause_s": p.pause_s,
-        },
-        "high_dynamics": app.high_dynamics,
-    }
-
-
-def _with_batch_route(app: FastAPI) -> FastAPI:
-    """Mount the batch router first unless main.py already does."""
-    path = f"{API_PREFIX}/selections/batch"
-    if not any(getattr(route, "path", None) == path for route in app.router.routes):
-        before = len(app.router.routes)
-        app.include_router(batch.router, prefix=API_PREFIX)
-        added = app.router.routes[before:]
-        del app.router.routes[before:]
-        app.router.routes[0:0] = added
-    return app
-
-
 def http(url: str) -> None:
     """POST /selections/batch with 10,000 cases, end to end through the ASGI app."""
     print(
         f"HTTP POST {API_PREFIX}/selections/batch, {BATCH_CASES} cases, top {TOP} "
         "(TestClient: JSON out and back in included; 'gzip' adds the app's GZipMiddleware)"
     )
-    payload = [_http_case(a) for a in _cases(BATCH_CASES, seed=8)]
-    with TestClient(_with_batch_route(create_app(Settings(database_url=url)))) as client:
+    payload = [http_case(a) for a in random_cases(BATCH_CASES, seed=8)]
+    with TestClient(create_app(Settings(database_url=url))) as client:
         for include_checks in (False, True):
             for encoding in ("identity", "gzip"):
                 body = json.dumps(
@@ -217,14 +161,7 @@ def main() -> None:
     """Run the benchmark and print its table."""
     with tempfile.TemporaryDirectory() as tmp:
         url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"
-        upgrade(url=url)
-        engine = make_engine(url)
-        with make_session_factory(engine).begin() as session:
-            load_seed(session, SEED_DIR)
-            load_controllers(session, SEED_DIR)
-        with make_session_factory(engine)() as session:
-            starter = [r.actuator for r in CatalogueRepository(session).actuators()]
-        engine.dispose()
+        starter = starter_catalogue(url)
 
         compare("starter catalogue", starter, scalar_cases=2_000)
         compare("synthetic catalogue", synthetic_catalogue(1_000), scalar_cases=200)

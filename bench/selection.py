@@ -12,20 +12,24 @@ import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from fastapi.testclient import TestClient
 
 from actuator_selection.config import SEED_DIR, Settings
+from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.selection import Application, select
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.db.seed import load_seed
+from actuator_selection.db.seed_controllers import load_controllers
 from actuator_selection.main import create_app
 
 
-def _cases(n: int, seed: int = 7) -> list[Application]:
+def random_cases(n: int, seed: int = 7) -> list[Application]:
+    """``n`` plausible load cases, the same for the same seed."""
     rng = random.Random(seed)
     return [
         Application(
@@ -43,6 +47,39 @@ def _cases(n: int, seed: int = 7) -> list[Application]:
     ]
 
 
+def http_case(app: Application) -> dict[str, Any]:
+    """The JSON body of a selection request for ``app``."""
+    p = app.pattern
+    return {
+        "load": {
+            "speed_rpm": p.speed_rpm,
+            "torque_nm": app.load.torque_nm,
+            "inertia_kgm2": app.load.inertia_kgm2,
+        },
+        "cycle": {
+            "accel_s": p.accel_s,
+            "constant_s": p.constant_s,
+            "decel_s": p.decel_s,
+            "pause_s": p.pause_s,
+        },
+        "high_dynamics": app.high_dynamics,
+    }
+
+
+def starter_catalogue(url: str) -> list[Actuator]:
+    """Migrate and seed the database at ``url``; its actuators."""
+    upgrade(url=url)
+    engine = make_engine(url)
+    try:
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+            load_controllers(session, SEED_DIR)
+        with make_session_factory(engine)() as session:
+            return [r.actuator for r in CatalogueRepository(session).actuators()]
+    finally:
+        engine.dispose()
+
+
 def _rate(label: str, n: int, run: Callable[[], None]) -> float:
     start = time.perf_counter()
     run()
@@ -55,15 +92,9 @@ def main() -> None:
     """Run the benchmark and print its table."""
     with tempfile.TemporaryDirectory() as tmp:
         url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"
-        upgrade(url=url)
-        engine = make_engine(url)
-        with make_session_factory(engine).begin() as session:
-            load_seed(session, SEED_DIR)
-        with make_session_factory(engine)() as session:
-            actuators = [r.actuator for r in CatalogueRepository(session).actuators()]
-        engine.dispose()
+        actuators = starter_catalogue(url)
 
-        core_cases = _cases(2000)
+        core_cases = random_cases(2000)
 
         def select_all() -> None:
             for app in core_cases:
@@ -71,30 +102,13 @@ def main() -> None:
 
         core = _rate(f"core select() over {len(actuators)} actuators", len(core_cases), select_all)
 
-        http_cases = _cases(200)
+        http_cases = random_cases(200)
         app = create_app(Settings(database_url=url))
         with TestClient(app) as client:
 
             def post_all() -> None:
                 for c in http_cases:
-                    p = c.pattern
-                    response = client.post(
-                        "/api/v1/selections",
-                        json={
-                            "load": {
-                                "speed_rpm": p.speed_rpm,
-                                "torque_nm": c.load.torque_nm,
-                                "inertia_kgm2": c.load.inertia_kgm2,
-                            },
-                            "cycle": {
-                                "accel_s": p.accel_s,
-                                "constant_s": p.constant_s,
-                                "decel_s": p.decel_s,
-                                "pause_s": p.pause_s,
-                            },
-                            "high_dynamics": c.high_dynamics,
-                        },
-                    )
+                    response = client.post("/api/v1/selections", json=http_case(c))
                     response.raise_for_status()
 
             http = _rate("POST /api/v1/selections (stored)", len(http_cases), post_all)
