@@ -463,39 +463,17 @@ class NewQuote:
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
-class QuoteRecord:
-    """A stored quote; ``status`` is the stored one (``expired`` is computed by the caller)."""
+class QuoteRecord(NewQuote):
+    """A stored quote: the new quote with its number and stored status.
+
+    ``status`` is the stored one (``expired`` is computed by the caller).
+    """
 
     number: str
     year: int
     sequence: int
     status: QuoteStatus
-    created_at: datetime
     status_changed_at: datetime
-    valid_until: date
-    api_key_id: int
-    idempotency_key: str | None
-    request_sha256: str
-    selection_id: str
-    selection_catalogue_version: int
-    catalogue_version: int
-    customer_name: str
-    customer_address: str | None
-    customer_reference: str | None
-    notes: str | None
-    actuator_model: str
-    verdict: str
-    verdict_reasons: tuple[str, ...]
-    actuator_snapshot: Mapping[str, Any]
-    price_list_name: str
-    price_list_is_example: bool
-    price_date: date
-    currency: str
-    subtotal: Decimal
-    discount_percent: Decimal
-    discount_amount: Decimal
-    total: Decimal
-    items: tuple[QuoteItem, ...]
 
 
 class IdempotencyKeyReusedError(Exception):
