@@ -21,6 +21,7 @@ from fastapi.staticfiles import StaticFiles
 from fastapi.testclient import TestClient
 from sqlalchemy import Connection, Engine
 from sqlalchemy.orm import Session, sessionmaker
+from tests import worked_example
 
 from actuator_selection.api import actuators, errors, health, selections, static
 from actuator_selection.api import admin as admin_api
@@ -35,11 +36,7 @@ from actuator_selection.main import API_PREFIX, create_app
 
 EXAMPLE_PRICE_LIST = "EXAMPLE — not real prices"
 
-WORKED_EXAMPLE: dict[str, Any] = {
-    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
-    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
-    "high_dynamics": True,
-}
+WORKED_EXAMPLE: dict[str, Any] = {**worked_example.request(), "high_dynamics": True}
 """The chapter's worked example (Table 516.1), without a model restriction."""
 
 

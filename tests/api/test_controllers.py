@@ -6,11 +6,9 @@ from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
+from tests import worked_example
 
-WORKED_EXAMPLE: dict[str, Any] = {
-    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
-    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
-}
+WORKED_EXAMPLE: dict[str, Any] = worked_example.request()
 
 
 def test_all_rows_of_table_521_1_with_corrections(client: TestClient) -> None:

@@ -10,6 +10,7 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 from sqlalchemy import Connection, func, select
+from tests import worked_example
 
 from actuator_selection.api import batch
 from actuator_selection.core.batch import select_batch
@@ -28,10 +29,7 @@ from actuator_selection.schemas.selections import CandidateOut
 URL = f"{API_PREFIX}/selections/batch"
 DETAIL_KEYS = ("checks", "controllers")
 
-WORKED_EXAMPLE: dict[str, Any] = {
-    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
-    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
-}
+WORKED_EXAMPLE: dict[str, Any] = worked_example.request()
 
 
 @pytest.fixture

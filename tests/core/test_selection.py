@@ -5,9 +5,10 @@ from __future__ import annotations
 import dataclasses
 
 import pytest
+from tests import worked_example
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.cycle import Load
 from actuator_selection.core.selection import (
     Application,
     Status,
@@ -17,18 +18,8 @@ from actuator_selection.core.selection import (
 )
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 
-EXAMPLE = Application(
-    pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0),
-    load=Load(torque_nm=5, inertia_kgm2=1.3),
-)
-FHA = Actuator(
-    model="FHA-25C-50-L",
-    family="FHA-C",
-    gear_ratio=50,
-    max_torque_nm=151,
-    max_speed_rpm=90,
-    inertia_kgm2=0.86,
-)
+EXAMPLE = worked_example.APPLICATION
+FHA = worked_example.FHA_25C_50_L
 
 
 def status(actuator: Actuator, app: Application, name: str) -> Status:
