@@ -1,10 +1,7 @@
-"""Fixtures of the sales tests (auth, admin, prices, quotes): the app with every router wired.
+"""Fixtures of the sales tests (auth, admin, prices, quotes): the app with API keys and prices.
 
-``build_app`` returns ``create_app(settings)`` as it is once ``main.py`` wires the
-sales routers; until then it builds the same app with the wiring lines that
-``main.py`` is to receive (see the README's "Wiring"), so the tests describe the
-finished service either way. Requests run in the test's rolled-back transaction,
-as with ``tests/conftest.py``'s ``client``.
+Requests run in the test's rolled-back transaction, as with ``tests/conftest.py``'s
+``client``.
 """
 
 from __future__ import annotations
@@ -15,24 +12,16 @@ from datetime import UTC, date, datetime, timedelta
 from typing import Any
 
 import pytest
-from fastapi import Depends, FastAPI
-from fastapi.middleware.gzip import GZipMiddleware
-from fastapi.staticfiles import StaticFiles
+from fastapi import FastAPI
 from fastapi.testclient import TestClient
 from sqlalchemy import Connection, Engine
 from sqlalchemy.orm import Session, sessionmaker
 from tests import worked_example
 
-from actuator_selection.api import actuators, errors, health, selections, static
-from actuator_selection.api import admin as admin_api
-from actuator_selection.api import auth as auth_api
-from actuator_selection.api import prices as prices_api
-from actuator_selection.api import quotes as quotes_api
-from actuator_selection.api.auth import require_reader
 from actuator_selection.api.quotes import Clock, get_clock
-from actuator_selection.config import FRONTEND_DIR, SEED_DIR, Settings
+from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.sales import ApiKeyRepository, PriceRepository, parse_prices
-from actuator_selection.main import API_PREFIX, create_app
+from actuator_selection.main import create_app
 
 EXAMPLE_PRICE_LIST = "EXAMPLE — not real prices"
 
@@ -41,29 +30,8 @@ WORKED_EXAMPLE: dict[str, Any] = {**worked_example.request(), "high_dynamics": T
 
 
 def build_app(settings: Settings) -> FastAPI:
-    """The service with the sales routers and the reader dependency on the open routers."""
-    app = create_app(settings)
-    app.state.settings = settings
-    if f"{API_PREFIX}/quotes" in {getattr(r, "path", None) for r in app.routes}:
-        return app
-    # main.py does not wire the sales routers yet: the same app, wired as it will be.
-    wired = FastAPI(title=app.title, version=app.version)
-    wired.state.engine = app.state.engine
-    wired.state.session_factory = app.state.session_factory
-    wired.state.settings = settings
-    errors.install(wired)
-    wired.include_router(health.router, prefix=API_PREFIX)
-    for module in (actuators, selections):
-        wired.include_router(
-            module.router, prefix=API_PREFIX, dependencies=[Depends(require_reader)]
-        )
-    for module in (auth_api, admin_api, prices_api, quotes_api):
-        wired.include_router(module.router, prefix=API_PREFIX)
-    wired.include_router(static.router)
-    wired.add_middleware(GZipMiddleware, minimum_size=1024)
-    if FRONTEND_DIR.is_dir():
-        wired.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
-    return wired
+    """The service as ``main.py`` builds it, every router wired."""
+    return create_app(settings)
 
 
 class FakeClock(Clock):
