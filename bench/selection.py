@@ -24,7 +24,6 @@ from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.db.seed import load_seed
-from actuator_selection.db.seed_controllers import load_controllers
 from actuator_selection.main import create_app
 
 
@@ -73,7 +72,6 @@ def starter_catalogue(url: str) -> list[Actuator]:
     try:
         with make_session_factory(engine).begin() as session:
             load_seed(session, SEED_DIR)
-            load_controllers(session, SEED_DIR)
         with make_session_factory(engine)() as session:
             return [r.actuator for r in CatalogueRepository(session).actuators()]
     finally:

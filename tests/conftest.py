@@ -28,7 +28,6 @@ from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory, normalise_url
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.seed import load_seed
-from actuator_selection.db.seed_controllers import load_controllers
 from actuator_selection.main import create_app
 
 POSTGRES_URL = normalise_url(
@@ -93,7 +92,6 @@ def seeded_engine(backend: str, new_database: Callable[[str], str]) -> Iterator[
     engine = make_engine(url)
     with make_session_factory(engine).begin() as session:
         load_seed(session, SEED_DIR)
-        load_controllers(session, SEED_DIR)
     yield engine
     engine.dispose()
 

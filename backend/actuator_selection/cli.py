@@ -24,7 +24,6 @@ def _seed(args: argparse.Namespace) -> int:
     from actuator_selection.db.engine import make_engine, make_session_factory
     from actuator_selection.db.repositories import CatalogueVersionRepository
     from actuator_selection.db.seed import load_seed
-    from actuator_selection.db.seed_controllers import load_controllers
 
     engine = make_engine(args.database_url)
     try:
@@ -33,7 +32,6 @@ def _seed(args: argparse.Namespace) -> int:
                 print("seed: the catalogue has been written before; left as it is (--if-empty)")
                 return 0
             report = load_seed(session, Path(args.directory))
-            protection = load_controllers(session, Path(args.directory))
     except CatalogueFileError as exc:
         print(f"seed: nothing loaded, {len(exc.problems)} problem(s):", file=sys.stderr)
         for problem in exc.problems:
@@ -41,7 +39,7 @@ def _seed(args: argparse.Namespace) -> int:
         return 1
     finally:
         engine.dispose()
-    print(f"seed: actuators {report}; controllers and sensors {protection}")
+    print(f"seed: catalogue rows {report}")
     return 0
 
 

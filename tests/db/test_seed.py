@@ -14,13 +14,24 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.cli import main
 from actuator_selection.config import SEED_DIR
+from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
-from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
+from actuator_selection.db.models import (
+    ActuatorFamilyRow,
+    ActuatorInterfaceRow,
+    ActuatorRow,
+    ControllerRow,
+    DcBusClassRow,
+    SensorFittingRow,
+    SensorPointRow,
+    ZonePointRow,
+)
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.seed import (
     ACTUATORS,
+    CATALOGUE_SPECS,
     FAMILIES,
     apply_catalogue,
     load_seed,
@@ -37,6 +48,18 @@ def empty_engine(backend: str, new_database: Callable[[str], str]) -> Iterator[E
     engine.dispose()
 
 
+TABLES = {
+    "families.csv": ActuatorFamilyRow,
+    "actuators.csv": ActuatorRow,
+    "zone_points.csv": ZonePointRow,
+    "controllers.csv": ControllerRow,
+    "temperature_sensors.csv": SensorFittingRow,
+    "kty84_130.csv": SensorPointRow,
+    "dc_bus_classes.csv": DcBusClassRow,
+    "actuator_interfaces.csv": ActuatorInterfaceRow,
+}
+
+
 def counts(engine: Engine) -> tuple[int, int, int]:
     with Session(engine) as s:
         return (
@@ -44,6 +67,14 @@ def counts(engine: Engine) -> tuple[int, int, int]:
             s.scalar(select(func.count()).select_from(ActuatorRow)) or 0,
             s.scalar(select(func.count()).select_from(ZonePointRow)) or 0,
         )
+
+
+def rows_per_file(engine: Engine) -> dict[str, int]:
+    with Session(engine) as s:
+        return {
+            file: s.scalar(select(func.count()).select_from(model)) or 0
+            for file, model in TABLES.items()
+        }
 
 
 def csv_rows(name: str) -> int:
@@ -66,18 +97,32 @@ def edit_cell(directory: Path, file: str, model_or_name: str, column: str, value
     return index + 2
 
 
+DROPPED_FROM = ("actuators.csv", "actuator_interfaces.csv")
+
+
+def drop_model(directory: Path, model: str) -> None:
+    """Remove ``model`` from the files that list it by name first (its row and interface)."""
+    for file in DROPPED_FROM:
+        path = directory / file
+        lines = path.read_text(encoding="utf-8").splitlines()
+        kept = [line for line in lines if not line.startswith(f"{model},")]
+        assert len(kept) == len(lines) - 1
+        path.write_text("\n".join(kept) + "\n", encoding="utf-8")
+
+
 def test_seed_loads_every_row_then_changes_nothing(empty_engine: Engine) -> None:
+    assert set(TABLES) == {spec.file for spec in CATALOGUE_SPECS}
     factory = make_session_factory(empty_engine)
     with factory.begin() as s:
         first = load_seed(s, SEED_DIR)
-    expected = (csv_rows("families.csv"), csv_rows("actuators.csv"), csv_rows("zone_points.csv"))
-    assert counts(empty_engine) == expected
-    assert first.inserted == sum(expected)
+    expected = {file: csv_rows(file) for file in TABLES}
+    assert rows_per_file(empty_engine) == expected
+    assert first.inserted == sum(expected.values())
     assert first.updated == 0
     with factory.begin() as s:
         second = load_seed(s, SEED_DIR)
-    assert (second.inserted, second.updated, second.unchanged) == (0, 0, sum(expected))
-    assert counts(empty_engine) == expected
+    assert (second.inserted, second.updated, second.unchanged) == (0, 0, sum(expected.values()))
+    assert rows_per_file(empty_engine) == expected
 
 
 def test_seed_converts_units_and_keeps_sources(empty_engine: Engine) -> None:
@@ -260,12 +305,7 @@ def test_seed_never_retires_and_keeps_what_was_retired(
     with factory.begin() as s:
         row = s.scalars(select(ActuatorRow).where(ActuatorRow.model == "CHA-20A-30")).one()
         row.retired_at = datetime.now(UTC)
-    path = seed_dir / "actuators.csv"
-    lines = path.read_text(encoding="utf-8").splitlines()
-    path.write_text(
-        "\n".join(line for line in lines if not line.startswith("CHA-25A-50,")) + "\n",
-        encoding="utf-8",
-    )
+    drop_model(seed_dir, "CHA-25A-50")
     with factory.begin() as s:
         report = load_seed(s, seed_dir)
     assert (report.inserted, report.updated) == (0, 0)
@@ -290,12 +330,8 @@ def test_import_mode_retires_brings_back_and_removes_zones(
     (seed_dir / "zone_points.csv").write_text(
         "actuator_model,speed_rpm,torque_nm,source\n", encoding="utf-8"
     )
-    path = seed_dir / "actuators.csv"
-    full = path.read_text(encoding="utf-8")
-    path.write_text(
-        "\n".join(line for line in full.splitlines() if not line.startswith("CHA-25A-50,")) + "\n",
-        encoding="utf-8",
-    )
+    full = {f: (seed_dir / f).read_text(encoding="utf-8") for f in DROPPED_FROM}
+    drop_model(seed_dir, "CHA-25A-50")
     with factory.begin() as s:
         changes = apply_catalogue(s, read_catalogue(seed_dir), replace=True)
     assert changes.files["actuators.csv"].retired == 1
@@ -304,7 +340,8 @@ def test_import_mode_retires_brings_back_and_removes_zones(
         row = s.scalars(select(ActuatorRow).where(ActuatorRow.model == "CHA-25A-50")).one()
         assert row.retired_at is not None
         assert s.scalar(select(func.count()).select_from(ZonePointRow)) == 0
-    path.write_text(full, encoding="utf-8")
+    for file, text in full.items():
+        (seed_dir / file).write_text(text, encoding="utf-8")
     with factory.begin() as s:
         changes = apply_catalogue(s, read_catalogue(seed_dir), replace=True)
     assert (changes.files["actuators.csv"].updated, changes.files["actuators.csv"].retired) == (
@@ -375,3 +412,66 @@ def test_cli_seed_if_empty_keeps_a_written_catalogue(
             assert record.actuator.max_torque_nm == 98
     finally:
         engine.dispose()
+
+
+def _drop_lines(directory: Path, file: str, starts: str) -> None:
+    path = directory / file
+    lines = path.read_text(encoding="utf-8").splitlines()
+    kept = [line for line in lines if not line.startswith(starts)]
+    assert len(kept) == len(lines) - 1, (file, starts)
+    path.write_text("\n".join(kept) + "\n", encoding="utf-8")
+
+
+def test_controller_files_follow_the_same_two_modes(empty_engine: Engine, seed_dir: Path) -> None:
+    """Seeding never withdraws a controller-side row; an import retires controllers (kept,
+    brought back later) and removes the other rows it lacks, except a retired actuator's
+    interface, which waits for the actuator."""
+    factory = make_session_factory(empty_engine)
+    with factory.begin() as s:
+        load_seed(s, seed_dir)
+    full = {f: (seed_dir / f).read_text(encoding="utf-8") for f in TABLES}
+    _drop_lines(seed_dir, "controllers.csv", "5,NUM AG,MDLU,")
+    _drop_lines(seed_dir, "dc_bus_classes.csv", "24vdc,")
+    _drop_lines(seed_dir, "kty84_130.csv", "-40,")
+    _drop_lines(seed_dir, "temperature_sensors.csv", "FHA-C,L,ptc,")
+    drop_model(seed_dir, "CHA-25A-50")
+    _drop_lines(seed_dir, "actuator_interfaces.csv", "CHA-20A-30,")
+    before = rows_per_file(empty_engine)
+
+    with factory.begin() as s:
+        assert load_seed(s, seed_dir).inserted == 0
+    assert rows_per_file(empty_engine) == before
+
+    with factory.begin() as s:
+        changes = apply_catalogue(s, read_catalogue(seed_dir), replace=True)
+    withdrawn = {f: c.retired for f, c in changes.files.items() if c.retired}
+    assert withdrawn == {
+        "actuators.csv": 1,
+        "controllers.csv": 1,
+        "dc_bus_classes.csv": 1,
+        "kty84_130.csv": 1,
+        "temperature_sensors.csv": 1,
+        "actuator_interfaces.csv": 1,  # CHA-20A-30's; the retired CHA-25A-50 keeps its own
+    }
+    after = rows_per_file(empty_engine)
+    assert after == {
+        **before,
+        "dc_bus_classes.csv": before["dc_bus_classes.csv"] - 1,
+        "kty84_130.csv": before["kty84_130.csv"] - 1,
+        "temperature_sensors.csv": before["temperature_sensors.csv"] - 1,
+        "actuator_interfaces.csv": before["actuator_interfaces.csv"] - 1,
+    }
+    with Session(empty_engine) as s:
+        mdlu = s.scalars(select(ControllerRow).where(ControllerRow.source_row == 5)).one()
+        assert mdlu.retired_at is not None
+        assert 5 not in {r.controller.source_row for r in ProtectionRepository(s).controllers()}
+
+    for file, text in full.items():
+        (seed_dir / file).write_text(text, encoding="utf-8")
+    with factory.begin() as s:
+        changes = apply_catalogue(s, read_catalogue(seed_dir), replace=True)
+    assert changes.files["controllers.csv"].updated == 1  # brought back
+    assert changes.files["actuator_interfaces.csv"].inserted == 1  # CHA-20A-30's again
+    assert rows_per_file(empty_engine) == before
+    with Session(empty_engine) as s:
+        assert len(ProtectionRepository(s).controllers()) == csv_rows("controllers.csv")

@@ -37,7 +37,6 @@ from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.seed import load_seed
-from actuator_selection.db.seed_controllers import load_controllers
 from actuator_selection.main import create_app
 
 CHROMIUM_ARGS = [
@@ -102,7 +101,6 @@ def _seeded_database(directory: Path) -> str:
     try:
         with make_session_factory(engine).begin() as session:
             load_seed(session, SEED_DIR)
-            load_controllers(session, SEED_DIR)
     finally:
         engine.dispose()
     return url

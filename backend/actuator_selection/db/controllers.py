@@ -60,6 +60,22 @@ def _options(text: str | None, kind: type[_Option]) -> frozenset[_Option] | None
     return frozenset(kind(o) for o in text.split()) if text and text.strip() else None
 
 
+def _controller_record(row: ControllerRow) -> ControllerRecord:
+    return ControllerRecord(
+        controller=controller_from_record(
+            {
+                "source_row": row.source_row,
+                "manufacturer": row.manufacturer,
+                "type": row.type,
+                "variant": row.variant,
+                "correction": row.correction,
+                **{column: getattr(row, column) for _, _, column in MARK_COLUMNS},
+            }
+        ),
+        source=row.source,
+    )
+
+
 class ProtectionRepository:
     """Controllers (Table 521.1), sensors (Tables 518.1, 519.2), bus classes, interfaces."""
 
@@ -67,25 +83,22 @@ class ProtectionRepository:
         self._session = session
 
     def controllers(self) -> list[ControllerRecord]:
-        """Every row of Table 521.1 in source order."""
-        rows = self._session.scalars(select(ControllerRow).order_by(ControllerRow.source_row))
-        columns = [column for _, _, column in MARK_COLUMNS]
-        return [
-            ControllerRecord(
-                controller=controller_from_record(
-                    {
-                        "source_row": r.source_row,
-                        "manufacturer": r.manufacturer,
-                        "type": r.type,
-                        "variant": r.variant,
-                        "correction": r.correction,
-                        **{c: getattr(r, c) for c in columns},
-                    }
-                ),
-                source=r.source,
+        """Every active row of the compatibility matrix (Table 521.1 and later rows) in order."""
+        rows = self._session.scalars(
+            select(ControllerRow)
+            .where(ControllerRow.retired_at.is_(None))
+            .order_by(ControllerRow.source_row)
+        )
+        return [_controller_record(r) for r in rows]
+
+    def controller(self, source_row: int) -> ControllerRecord | None:
+        """One active row of the compatibility matrix; None when unknown or retired."""
+        row = self._session.scalar(
+            select(ControllerRow).where(
+                ControllerRow.source_row == source_row, ControllerRow.retired_at.is_(None)
             )
-            for r in rows
-        ]
+        )
+        return None if row is None else _controller_record(row)
 
     def interfaces(self, models: list[str] | None = None) -> dict[str, InterfaceRecord]:
         """Matching data by actuator model (every listed model, with None where unknown)."""

@@ -131,6 +131,18 @@ def boolean(text: str) -> bool:
     return lowered == "true"
 
 
+WHOLE_NUMBER_MAX = 1_000_000
+
+
+def whole_number(text: str) -> int:
+    """A whole number from 1 to 10⁶ written in digits (a row number, a count)."""
+    if not (
+        text.isascii() and text.isdigit() and len(text) <= 7 and 1 <= int(text) <= WHOLE_NUMBER_MAX
+    ):
+        raise ValueError(f"must be a whole number from 1 to {WHOLE_NUMBER_MAX}")
+    return int(text)
+
+
 def one_of(*choices: str) -> Callable[[str], str]:
     """A converter accepting exactly one of ``choices``."""
 

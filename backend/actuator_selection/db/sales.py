@@ -29,6 +29,7 @@ from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, selectinload
 
 from actuator_selection.core.quote_status import QuoteStatus
+from actuator_selection.db.changes import FileChanges
 from actuator_selection.db.csvio import (
     CatalogueFileError,
     Column,
@@ -51,7 +52,6 @@ from actuator_selection.db.models.sales import (
     QuoteItemRow,
     QuoteRow,
 )
-from actuator_selection.db.seed import FileChanges
 
 # --- API keys -------------------------------------------------------------------------
 

@@ -1,17 +1,21 @@
-"""Loading the catalogue (families, actuators, zones) idempotently and atomically.
+"""Loading the whole catalogue idempotently and atomically.
 
+The catalogue is the files of :data:`CATALOGUE_SPECS`: families, actuators and
+their zones (this module), and Table 521.1's controllers, sensor data, bus
+classes and actuator interfaces (:mod:`actuator_selection.db.seed_controllers`).
 Every file is validated before anything is written; one bad cell loads nothing
 and the error names file, line and column. Loading the same files again changes
-nothing: rows are matched by their natural key (family name, actuator model) and
-updated only where a value differs.
+nothing: rows are matched by their natural key (family name, actuator model,
+controller row, ...) and updated only where a value differs. The catalogue
+version rises once per load that changed anything.
 
 Two modes share one code path and one rulebook (the ``CsvSpec`` below):
 
 - **seed** (:func:`load_seed`, the ``seed`` command): adds and updates, never
   retires, so seeding again keeps what an administrator added or retired;
 - **import** (:func:`apply_catalogue` with ``replace=True``, the admin API): the
-  files are the whole catalogue, so an actuator missing from them is retired
-  (soft delete) and a zone missing from them is removed.
+  files are the whole catalogue, so an actuator or controller missing from them
+  is retired (soft delete) and other rows missing from them are removed.
 """
 
 from __future__ import annotations
@@ -23,8 +27,9 @@ from pathlib import Path
 from typing import Any
 
 from sqlalchemy import select
-from sqlalchemy.orm import Session
+from sqlalchemy.orm import Session, selectinload
 
+from actuator_selection.db.changes import FileChanges, retire_at, sync_rows
 from actuator_selection.db.csvio import (
     CatalogueFileError,
     Column,
@@ -38,6 +43,11 @@ from actuator_selection.db.csvio import (
 )
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
 from actuator_selection.db.repositories import CatalogueVersionRepository
+from actuator_selection.db.seed_controllers import (
+    PROTECTION_SPECS,
+    apply_protection,
+    protection_problems,
+)
 
 _P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
 MILLI = 1e-3
@@ -119,8 +129,11 @@ ZONE_POINTS = CsvSpec(
 )
 
 
-CATALOGUE_SPECS = (FAMILIES, ACTUATORS, ZONE_POINTS)
+CATALOGUE_SPECS = (FAMILIES, ACTUATORS, ZONE_POINTS, *PROTECTION_SPECS)
 """The files of a whole catalogue, in loading order."""
+
+JSON_KEYS = {spec.file: spec.file.removesuffix(".csv") for spec in CATALOGUE_SPECS}
+"""The key of each file's rows in the JSON form of a catalogue (the file's stem)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -136,29 +149,6 @@ class SeedReport:
 
 
 @dataclass(slots=True)
-class FileChanges:
-    """What loading one file did (or, in a dry run, would do) to the stored rows.
-
-    ``retired``: actuators withdrawn (soft delete) for ``actuators.csv``; zone
-    points removed for ``zone_points.csv``.
-    """
-
-    inserted: int = 0
-    updated: int = 0
-    unchanged: int = 0
-    retired: int = 0
-
-    def count(self, *, is_new: bool, changed: bool, n: int = 1) -> None:
-        """Count ``n`` rows as inserted, updated or unchanged."""
-        if is_new:
-            self.inserted += n
-        elif changed:
-            self.updated += n
-        else:
-            self.unchanged += n
-
-
-@dataclass(slots=True)
 class CatalogueChanges:
     """What a catalogue load changed, per file."""
 
@@ -169,16 +159,17 @@ class CatalogueChanges:
     @property
     def changed(self) -> bool:
         """True when anything was inserted, updated or retired."""
-        return any(c.inserted or c.updated or c.retired for c in self.files.values())
+        return any(c.changed for c in self.files.values())
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
+@dataclass(frozen=True, slots=True)
 class CatalogueFiles:
-    """The validated rows of a whole catalogue."""
+    """The validated rows of a whole catalogue, by file name (every file of CATALOGUE_SPECS)."""
 
-    families: list[Record]
-    actuators: list[Record]
-    zone_points: list[Record]
+    rows: Mapping[str, list[Record]]
+
+    def __getitem__(self, spec: CsvSpec) -> list[Record]:
+        return self.rows[spec.file]
 
 
 def zone_problems(
@@ -215,14 +206,12 @@ def zone_problems(
     return problems
 
 
-def _cross_check(
-    families: list[Record], actuators: list[Record], zones: list[Record]
-) -> list[Problem]:
-    """Problems that need more than one file: unknown families and models, bad zones."""
+def _cross_check(files: CatalogueFiles) -> list[Problem]:
+    """Problems that need more than one file: unknown families and models, bad zones, ..."""
     problems: list[Problem] = []
-    family_names = {r.values["name"] for r in families}
-    models = {r.values["model"] for r in actuators}
-    for r in actuators:
+    family_names = {r.values["name"] for r in files[FAMILIES]}
+    models = {r.values["model"] for r in files[ACTUATORS]}
+    for r in files[ACTUATORS]:
         if r.values["family"] not in family_names:
             problems.append(
                 Problem(
@@ -234,7 +223,7 @@ def _cross_check(
                 )
             )
     per_model: dict[str, list[tuple[float, int]]] = {}
-    for r in zones:
+    for r in files[ZONE_POINTS]:
         model = r.values["actuator_model"]
         if model not in models:
             problems.append(
@@ -249,12 +238,14 @@ def _cross_check(
     for model, points in per_model.items():
         # Duplicates were already reported by the file's key check.
         problems.extend(p for p in zone_problems(model, points) if "duplicates" not in p.message)
+    problems.extend(protection_problems(files.rows, families=family_names, models=models))
     return problems
 
 
-def _checked(files: CatalogueFiles, problems: list[Problem]) -> CatalogueFiles:
+def _checked(rows: dict[str, list[Record]], problems: list[Problem]) -> CatalogueFiles:
+    files = CatalogueFiles(rows)
     if not problems:
-        problems = _cross_check(files.families, files.actuators, files.zone_points)
+        problems = _cross_check(files)
     if problems:
         raise CatalogueFileError(problems)
     return files
@@ -262,68 +253,57 @@ def _checked(files: CatalogueFiles, problems: list[Problem]) -> CatalogueFiles:
 
 def read_catalogue(directory: Path) -> CatalogueFiles:
     """Validate the catalogue files in ``directory``; :class:`CatalogueFileError` lists problems."""
-    families, p1 = read(FAMILIES, directory)
-    actuators, p2 = read(ACTUATORS, directory)
-    zones, p3 = read(ZONE_POINTS, directory)
-    files = CatalogueFiles(families=families, actuators=actuators, zone_points=zones)
-    return _checked(files, p1 + p2 + p3)
+    rows: dict[str, list[Record]] = {}
+    problems: list[Problem] = []
+    for spec in CATALOGUE_SPECS:
+        rows[spec.file], found = read(spec, directory)
+        problems.extend(found)
+    return _checked(rows, problems)
 
 
 def parse_catalogue(texts: Mapping[str, str | None]) -> CatalogueFiles:
     """Validate the catalogue files given as text by file name (None: the file is missing)."""
+    rows: dict[str, list[Record]] = {}
     problems: list[Problem] = []
-    parsed: list[list[Record]] = []
     for spec in CATALOGUE_SPECS:
         text = texts.get(spec.file)
         if text is None:
             problems.append(Problem(file=spec.file, line=0, column=None, message="file missing"))
-            parsed.append([])
+            rows[spec.file] = []
             continue
-        records, file_problems = parse(spec, text)
-        parsed.append(records)
-        problems.extend(file_problems)
-    for name in texts:
-        if name not in {spec.file for spec in CATALOGUE_SPECS}:
-            problems.append(
-                Problem(
-                    file=name,
-                    line=0,
-                    column=None,
-                    message="unknown file (expected: "
-                    f"{', '.join(spec.file for spec in CATALOGUE_SPECS)})",
-                )
-            )
-    families, actuators, zones = parsed
-    files = CatalogueFiles(families=families, actuators=actuators, zone_points=zones)
-    return _checked(files, problems)
-
-
-JSON_KEYS = {
-    FAMILIES.file: "families",
-    ACTUATORS.file: "actuators",
-    ZONE_POINTS.file: "zone_points",
-}
-"""The key of each file's rows in the JSON form of a catalogue."""
+        rows[spec.file], found = parse(spec, text)
+        problems.extend(found)
+    problems.extend(
+        Problem(
+            file=name,
+            line=0,
+            column=None,
+            message=f"unknown file (expected: {', '.join(spec.file for spec in CATALOGUE_SPECS)})",
+        )
+        for name in texts
+        if name not in JSON_KEYS
+    )
+    return _checked(rows, problems)
 
 
 def catalogue_from_json(body: Mapping[str, object]) -> CatalogueFiles:
-    """Validate a catalogue given as ``{"families": [...], "actuators": [...], "zone_points":
-    [...]}`` of objects keyed by the CSV column names; problems name the array and its index.
+    """Validate a catalogue given as ``{"families": [...], "actuators": [...], ...}`` (one
+    array per file, keyed by its stem, of objects keyed by the CSV column names); problems
+    name the array and its index.
     """
+    rows: dict[str, list[Record]] = {}
     problems: list[Problem] = []
-    parsed: list[list[Record]] = []
     for spec in CATALOGUE_SPECS:
         key = JSON_KEYS[spec.file]
-        rows = body.get(key)
-        if not isinstance(rows, list) or not all(isinstance(r, dict) for r in rows):
+        given = body.get(key)
+        if not isinstance(given, list) or not all(isinstance(r, dict) for r in given):
             problems.append(
                 Problem(file=key, line=0, column=None, message="must be an array of objects")
             )
-            parsed.append([])
+            rows[spec.file] = []
             continue
-        records, row_problems = parse_rows(spec, rows)
-        parsed.append(records)
-        problems.extend(replace(p, file=key) for p in row_problems)
+        rows[spec.file], found = parse_rows(spec, given)
+        problems.extend(replace(p, file=key) for p in found)
     problems.extend(
         Problem(
             file=name,
@@ -334,82 +314,89 @@ def catalogue_from_json(body: Mapping[str, object]) -> CatalogueFiles:
         for name in body
         if name not in JSON_KEYS.values()
     )
-    families, actuators, zones = parsed
-    files = CatalogueFiles(families=families, actuators=actuators, zone_points=zones)
     try:
-        return _checked(files, problems)
+        return _checked(rows, problems)
     except CatalogueFileError as exc:
         raise CatalogueFileError(
             [replace(p, file=JSON_KEYS.get(p.file, p.file)) for p in exc.problems]
         ) from None
 
 
-def _apply(row: Any, values: dict[str, Any]) -> bool:
-    """Set ``values`` on ``row``; True when anything changed."""
-    changed = False
-    for name, value in values.items():
-        if getattr(row, name) != value:
-            setattr(row, name, value)
-            changed = True
-    return changed
-
-
 def apply_catalogue(
     session: Session, files: CatalogueFiles, *, replace: bool, now: datetime | None = None
 ) -> CatalogueChanges:
-    """Upsert validated catalogue files (the caller commits); raises the version on change.
+    """Upsert validated catalogue files (the caller commits); raises the version once on change.
 
-    With ``replace`` the files are the whole catalogue: actuators they lack are
-    retired (and those they hold are brought back), zones they lack are removed.
-    Without it, nothing is retired or brought back and absent zones stay.
+    With ``replace`` the files are the whole catalogue: actuators and
+    controllers they lack are retired (and those they hold are brought back);
+    zones, sensor data, bus classes and interfaces they lack are removed (see
+    :func:`~actuator_selection.db.seed_controllers.apply_protection`). Without
+    it, nothing is retired, brought back or removed.
     """
     now = now or datetime.now(UTC)
     changes = CatalogueChanges()
-    fam, act, zon = (changes.files[spec.file] for spec in CATALOGUE_SPECS)
 
-    family_rows = {f.name: f for f in session.scalars(select(ActuatorFamilyRow))}
-    for r in files.families:
-        family = family_rows.get(r.values["name"])
-        is_new = family is None
-        if family is None:
-            family = ActuatorFamilyRow()
-            session.add(family)
-            family_rows[r.values["name"]] = family
-        fam.count(is_new=is_new, changed=_apply(family, r.values))
-    session.flush()
+    sync_rows(
+        session,
+        ActuatorFamilyRow,
+        ("name",),
+        [r.values for r in files[FAMILIES]],
+        changes.files[FAMILIES.file],
+    )
+    family_ids = {f.name: f.id for f in session.scalars(select(ActuatorFamilyRow))}
 
-    actuator_rows = {a.model: a for a in session.scalars(select(ActuatorRow))}
-    for r in files.actuators:
-        values = dict(r.values)
-        values["family_id"] = family_rows[values.pop("family")].id
+    def actuator(values: dict[str, Any]) -> dict[str, Any]:
+        values["family_id"] = family_ids[values.pop("family")]
         if replace:
             values["retired_at"] = None
-        actuator = actuator_rows.get(values["model"])
-        is_new = actuator is None
-        if actuator is None:
-            actuator = ActuatorRow()
-            session.add(actuator)
-            actuator_rows[values["model"]] = actuator
-        act.count(is_new=is_new, changed=_apply(actuator, values))
-    if replace:
-        listed = {r.values["model"] for r in files.actuators}
-        for model, actuator in actuator_rows.items():
-            if model not in listed and actuator.retired_at is None:
-                actuator.retired_at = now
-                act.retired += 1
-    session.flush()
+        return values
 
+    sync_rows(
+        session,
+        ActuatorRow,
+        ("model",),
+        [actuator(dict(r.values)) for r in files[ACTUATORS]],
+        changes.files[ACTUATORS.file],
+        withdraw=retire_at(now) if replace else None,
+    )
+    _apply_zones(session, files, changes.files[ZONE_POINTS.file], replace=replace)
+    apply_protection(
+        session,
+        files.rows,
+        changes.files,
+        replace=replace,
+        now=now,
+        listed_models=[r.values["model"] for r in files[ACTUATORS]],
+    )
+    if changes.changed:
+        CatalogueVersionRepository(session).bump()
+    return changes
+
+
+def _apply_zones(
+    session: Session, files: CatalogueFiles, zon: FileChanges, *, replace: bool
+) -> None:
+    """Replace the zone of every actuator the zone file names (with ``replace``: that the
+    actuator file lists, so a listed actuator without points loses its zone)."""
     wanted: dict[str, list[tuple[float, float, str]]] = {}
-    for r in files.zone_points:
+    for r in files[ZONE_POINTS]:
         v = r.values
         wanted.setdefault(v["actuator_model"], []).append(
             (v["speed_rpm"], v["torque_nm"], v["source"])
         )
     if replace:
-        for r in files.actuators:
+        for r in files[ACTUATORS]:
             wanted.setdefault(r.values["model"], [])
+    actuators = {
+        a.model: a
+        for a in session.scalars(
+            select(ActuatorRow)
+            .options(selectinload(ActuatorRow.zone_points))
+            .where(ActuatorRow.model.in_(wanted))
+        )
+    }
     for model, points in wanted.items():
-        actuator = actuator_rows[model]
+        actuator = actuators[model]
         have = sorted((p.speed_rpm, p.torque_nm, p.source) for p in actuator.zone_points)
         if have == sorted(points):
             zon.unchanged += len(points)
@@ -428,15 +415,13 @@ def apply_catalogue(
         else:
             zon.inserted += len(points)
     session.flush()
-    if changes.changed:
-        CatalogueVersionRepository(session).bump()
-    return changes
 
 
 def load_seed(session: Session, directory: Path) -> SeedReport:
     """Validate every file in ``directory``, then upsert them (the caller commits).
 
-    Never retires an actuator: seeding again keeps what was added or retired since.
+    Never retires or removes anything: seeding again keeps what was added or
+    retired since.
 
     Raises
     ------

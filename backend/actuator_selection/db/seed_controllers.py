@@ -1,13 +1,20 @@
-"""Loading controllers (Table 521.1), sensors (Tables 518.1, 519.2) and actuator interfaces.
+"""The controller files of the catalogue: Table 521.1, sensors (Tables 518.1, 519.2), interfaces.
 
-Works like :mod:`actuator_selection.db.seed`: every file is validated first (with
-the same CSV rules), one bad cell loads nothing, loading again changes nothing.
-Runs after the families and actuators are loaded, in the same transaction.
+Their rules (``CsvSpec``) serve the seed loader, the catalogue import and the
+admin API alike, as the actuator files' rules in :mod:`actuator_selection.db.seed`
+do; that module reads, checks and writes all catalogue files together, this
+one knows what the controller-side files hold and how they are stored.
+
+Rows of ``controllers.csv`` are numbered by ``source_row``: Table 521.1's rows
+keep their printed numbers (1 below the heading), rows added later take
+further numbers, and ``source`` says where each row comes from.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
+from collections.abc import Callable, Collection, Mapping, Sequence
+from datetime import datetime
+from enum import StrEnum
 from typing import Any
 
 from sqlalchemy import select
@@ -21,14 +28,15 @@ from actuator_selection.core.compatibility import (
 )
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.thermal import TemperatureSensor
+from actuator_selection.db.changes import FileChanges, delete_in, retire_at, sync_rows
 from actuator_selection.db.csvio import (
-    CatalogueFileError,
     Column,
     CsvSpec,
     Problem,
     Record,
     Rule,
-    read,
+    one_of,
+    whole_number,
 )
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -39,18 +47,46 @@ from actuator_selection.db.models import (
     SensorFittingRow,
     SensorPointRow,
 )
-from actuator_selection.db.repositories import CatalogueVersionRepository
-from actuator_selection.db.seed import SeedReport
+
+
+def mark(text: str) -> str:
+    """A mark of Table 521.1, stored as ``tested`` (●) or ``possible`` (○)."""
+    try:
+        level = parse_support_level(text, field="mark")
+    except DomainError:
+        raise ValueError("must be tested (●), possible (○) or empty") from None
+    assert level is not None, "an empty cell never reaches a converter"
+    return level.value
+
+
+def options(kind: type[StrEnum]) -> Callable[[str], str]:
+    """A converter for a space-separated list of distinct ``kind`` values."""
+    allowed = [o.value for o in kind]
+
+    def convert(text: str) -> str:
+        given = text.split()
+        unknown = [o for o in given if o not in allowed]
+        if unknown:
+            raise ValueError(
+                f"must be space-separated options of {', '.join(allowed)} (unknown: "
+                f"{', '.join(unknown)})"
+            )
+        if len(set(given)) != len(given):
+            raise ValueError("must name each option once")
+        return " ".join(given)
+
+    return convert
+
 
 CONTROLLERS = CsvSpec(
     file="controllers.csv",
     key=("source_row",),
     columns=(
-        Column(name="source_row", numeric=True, required=True, rule=Rule.POSITIVE),
-        Column(name="manufacturer", required=True),
-        Column(name="type", required=True),
-        Column(name="variant"),
-        *(Column(name=column) for _, _, column in MARK_COLUMNS),
+        Column(name="source_row", required=True, convert=whole_number),
+        Column(name="manufacturer", required=True, max_length=80),
+        Column(name="type", required=True, max_length=80),
+        Column(name="variant", max_length=40),
+        *(Column(name=column, convert=mark) for _, _, column in MARK_COLUMNS),
         Column(name="correction"),
         Column(name="source", required=True),
     ),
@@ -60,11 +96,11 @@ SENSOR_FITTINGS = CsvSpec(
     file="temperature_sensors.csv",
     key=("family", "variant", "sensor"),
     columns=(
-        Column(name="family", required=True),
-        Column(name="variant"),
-        Column(name="sensor", required=True),
-        Column(name="designation"),
-        Column(name="sensor_count", numeric=True, required=True, rule=Rule.POSITIVE),
+        Column(name="family", required=True, max_length=40),
+        Column(name="variant", max_length=40),
+        Column(name="sensor", required=True, convert=one_of(*TemperatureSensor)),
+        Column(name="designation", max_length=60),
+        Column(name="sensor_count", required=True, convert=whole_number),
         Column(name="nominal_response_temperature_c", numeric=True),
         Column(name="note"),
         Column(name="source", required=True),
@@ -85,8 +121,8 @@ BUS_CLASSES = CsvSpec(
     file="dc_bus_classes.csv",
     key=("bus_class",),
     columns=(
-        Column(name="bus_class", required=True),
-        Column(name="label", required=True),
+        Column(name="bus_class", required=True, convert=one_of(*BusClass)),
+        Column(name="label", required=True, max_length=40),
         Column(name="nominal_dc_voltage_v", numeric=True, required=True, rule=Rule.POSITIVE),
         Column(name="derivation"),
         Column(name="source", required=True),
@@ -97,157 +133,141 @@ INTERFACES = CsvSpec(
     file="actuator_interfaces.csv",
     key=("actuator_model",),
     columns=(
-        Column(name="actuator_model", required=True),
-        Column(name="dc_bus_classes"),
-        Column(name="temperature_sensors"),
-        Column(name="feedback_systems"),
+        Column(name="actuator_model", required=True, max_length=60),
+        Column(name="dc_bus_classes", convert=options(BusClass)),
+        Column(name="temperature_sensors", convert=options(TemperatureSensor)),
+        Column(name="feedback_systems", convert=options(FeedbackSystem)),
         Column(name="derivation"),
         Column(name="source", required=True),
     ),
 )
 
-_OPTION_TYPES: dict[str, type[BusClass] | type[TemperatureSensor] | type[FeedbackSystem]] = {
-    "dc_bus_classes": BusClass,
-    "temperature_sensors": TemperatureSensor,
-    "feedback_systems": FeedbackSystem,
-}
+PROTECTION_SPECS = (CONTROLLERS, SENSOR_FITTINGS, KTY_POINTS, BUS_CLASSES, INTERFACES)
+"""The controller-side files, in loading order (after the actuator files)."""
 
 
-def _problem(spec: CsvSpec, record: Record, column: str, message: str) -> Problem:
-    return Problem(file=spec.file, line=record.line, column=column, message=message)
-
-
-def _check_rows(
-    session: Session,
-    controllers: list[Record],
-    fittings: list[Record],
-    buses: list[Record],
-    interfaces: list[Record],
+def controller_name_problems(
+    records: Sequence[Record], *, others: Mapping[tuple[str, str, str | None], int] | None = None
 ) -> list[Problem]:
-    """The rules that plain CSV typing cannot express: marks, option names, known keys."""
+    """Rows naming the same controller (manufacturer, type and variant) twice.
+
+    ``others``: rows already stored, by name → ``source_row`` (the admin API's case).
+    """
+    seen = dict(others or {})
     problems: list[Problem] = []
-    for r in controllers:
-        for _, _, column in MARK_COLUMNS:
-            try:
-                parse_support_level(r.values[column], field=column)
-            except DomainError as exc:
-                problems.append(_problem(CONTROLLERS, r, column, exc.message))
-    families = set(session.scalars(select(ActuatorFamilyRow.name)))
-    sensors = {s.value for s in TemperatureSensor}
-    for r in fittings:
-        if r.values["family"] not in families:
-            problems.append(_problem(SENSOR_FITTINGS, r, "family", "unknown family"))
-        if r.values["sensor"] not in sensors:
+    for r in records:
+        v = r.values
+        name = (v["manufacturer"], v["type"], v["variant"])
+        row = seen.setdefault(name, v["source_row"])
+        if row != v["source_row"]:
+            label = " ".join(n for n in name if n)
             problems.append(
-                _problem(
-                    SENSOR_FITTINGS, r, "sensor", f"must be one of {', '.join(sorted(sensors))}"
+                Problem(
+                    file=CONTROLLERS.file,
+                    line=r.line,
+                    column="type",
+                    message=f"{label} is row {row} already; a variant tells rows apart",
                 )
             )
-    bus_names = {b.value for b in BusClass}
-    for r in buses:
-        if r.values["bus_class"] not in bus_names:
-            problems.append(
-                _problem(
-                    BUS_CLASSES, r, "bus_class", f"must be one of {', '.join(sorted(bus_names))}"
-                )
-            )
-    models = set(session.scalars(select(ActuatorRow.model)))
-    for r in interfaces:
-        if r.values["actuator_model"] not in models:
-            problems.append(_problem(INTERFACES, r, "actuator_model", "unknown actuator model"))
-        for column, option_type in _OPTION_TYPES.items():
-            allowed = {o.value for o in option_type}
-            for option in (r.values[column] or "").split():
-                if option not in allowed:
-                    problems.append(
-                        _problem(
-                            INTERFACES,
-                            r,
-                            column,
-                            f"unknown option {option!r} (one of {', '.join(sorted(allowed))})",
-                        )
-                    )
     return problems
 
 
-def _upsert(
-    session: Session, model: type[Any], key: tuple[str, ...], rows: list[dict[str, Any]]
-) -> tuple[int, int, int]:
-    """Insert or update ``rows`` of ``model`` matched on ``key``; (inserted, updated, unchanged)."""
-    existing = {tuple(getattr(o, k) for k in key): o for o in session.scalars(select(model))}
-    inserted = updated = unchanged = 0
-    for values in rows:
-        row = existing.get(tuple(values[k] for k in key))
-        if row is None:
-            session.add(model(**values))
-            inserted += 1
-            continue
-        changed = [k for k, v in values.items() if getattr(row, k) != v]
-        for k in changed:
-            setattr(row, k, values[k])
-        if changed:
-            updated += 1
-        else:
-            unchanged += 1
-    session.flush()
-    return inserted, updated, unchanged
+def protection_problems(
+    rows: Mapping[str, Sequence[Record]], *, families: Collection[str], models: Collection[str]
+) -> list[Problem]:
+    """Problems that need another file: unknown families and actuators, repeated controllers."""
+    problems = controller_name_problems(rows[CONTROLLERS.file])
+    for r in rows[SENSOR_FITTINGS.file]:
+        if r.values["family"] not in families:
+            problems.append(
+                Problem(
+                    file=SENSOR_FITTINGS.file,
+                    line=r.line,
+                    column="family",
+                    message=f"unknown family {r.values['family']!r}",
+                )
+            )
+    for r in rows[INTERFACES.file]:
+        if r.values["actuator_model"] not in models:
+            problems.append(
+                Problem(
+                    file=INTERFACES.file,
+                    line=r.line,
+                    column="actuator_model",
+                    message=f"unknown actuator model {r.values['actuator_model']!r}",
+                )
+            )
+    return problems
 
 
-def load_controllers(session: Session, directory: Path) -> SeedReport:
-    """Validate and upsert the controller and winding-protection files (the caller commits).
+def apply_protection(
+    session: Session,
+    rows: Mapping[str, Sequence[Record]],
+    changes: Mapping[str, FileChanges],
+    *,
+    replace: bool,
+    now: datetime,
+    listed_models: Collection[str] = (),
+) -> None:
+    """Upsert the validated controller-side files (after the actuator files; the caller commits).
 
-    Raises
-    ------
-    CatalogueFileError
-        Listing every problem; nothing has been written then.
+    With ``replace`` the files are the whole catalogue: controllers they lack are
+    retired (listed ones brought back), sensor fittings, KTY points and bus
+    classes they lack are removed, and so are the interfaces of the actuators
+    they list (``listed_models``) without one; a retired actuator keeps its
+    interface for when it comes back. Without ``replace`` nothing is retired or removed.
     """
-    results = [
-        read(spec, directory)
-        for spec in (CONTROLLERS, SENSOR_FITTINGS, KTY_POINTS, BUS_CLASSES, INTERFACES)
-    ]
-    problems = [p for _, found in results for p in found]
-    (controllers, _), (fittings, _), (kty, _), (buses, _), (interfaces, _) = results
-    if not problems:
-        problems = _check_rows(session, controllers, fittings, buses, interfaces)
-    if problems:
-        raise CatalogueFileError(problems)
-
     family_ids = {f.name: f.id for f in session.scalars(select(ActuatorFamilyRow))}
     actuator_ids = {a.model: a.id for a in session.scalars(select(ActuatorRow))}
 
-    def controller(values: dict[str, Any]) -> dict[str, Any]:
-        return {**values, "source_row": int(values["source_row"])}
+    def stored(spec: CsvSpec, convert: Callable[[dict[str, Any]], dict[str, Any]]) -> list[Any]:
+        return [convert(dict(r.values)) for r in rows[spec.file]]
 
-    def fitting(values: dict[str, Any]) -> dict[str, Any]:
-        out = {k: v for k, v in values.items() if k != "family"}
-        return {
-            **out,
-            "family_id": family_ids[values["family"]],
-            "sensor_count": int(values["sensor_count"]),
-        }
+    def controller(v: dict[str, Any]) -> dict[str, Any]:
+        return {**v, "retired_at": None} if replace else v
 
-    def interface(values: dict[str, Any]) -> dict[str, Any]:
-        out = {k: v for k, v in values.items() if k != "actuator_model"}
-        return {**out, "actuator_id": actuator_ids[values["actuator_model"]]}
+    def fitting(v: dict[str, Any]) -> dict[str, Any]:
+        v["family_id"] = family_ids[v.pop("family")]
+        return v
 
-    totals = [0, 0, 0]
-    for model, key, rows in (
-        (ControllerRow, ("source_row",), [controller(r.values) for r in controllers]),
+    def kty_point(v: dict[str, Any]) -> dict[str, Any]:
+        return {**v, "sensor": TemperatureSensor.KTY84_130.value}
+
+    def interface(v: dict[str, Any]) -> dict[str, Any]:
+        v["actuator_id"] = actuator_ids[v.pop("actuator_model")]
+        return v
+
+    listed = {actuator_ids[m] for m in listed_models}
+    for spec, model, key, convert, withdraw in (
+        (CONTROLLERS, ControllerRow, ("source_row",), controller, retire_at(now)),
         (
+            SENSOR_FITTINGS,
             SensorFittingRow,
             ("family_id", "variant", "sensor"),
-            [fitting(r.values) for r in fittings],
+            fitting,
+            delete_in(session),
         ),
         (
+            KTY_POINTS,
             SensorPointRow,
             ("sensor", "temperature_c"),
-            [{**r.values, "sensor": TemperatureSensor.KTY84_130.value} for r in kty],
+            kty_point,
+            delete_in(session, keep=lambda r: r.sensor != TemperatureSensor.KTY84_130.value),
         ),
-        (DcBusClassRow, ("bus_class",), [r.values for r in buses]),
-        (ActuatorInterfaceRow, ("actuator_id",), [interface(r.values) for r in interfaces]),
+        (BUS_CLASSES, DcBusClassRow, ("bus_class",), lambda v: v, delete_in(session)),
+        (
+            INTERFACES,
+            ActuatorInterfaceRow,
+            ("actuator_id",),
+            interface,
+            delete_in(session, keep=lambda r: r.actuator_id not in listed),
+        ),
     ):
-        for i, n in enumerate(_upsert(session, model, key, rows)):
-            totals[i] += n
-    if totals[0] or totals[1]:
-        CatalogueVersionRepository(session).bump()
-    return SeedReport(inserted=totals[0], updated=totals[1], unchanged=totals[2])
+        sync_rows(
+            session,
+            model,
+            key,
+            stored(spec, convert),
+            changes[spec.file],
+            withdraw=withdraw if replace else None,
+        )

@@ -2,12 +2,15 @@
 
 Table 521.1 is kept as printed: one row per source row, its 16 mark columns
 (``tested`` = ●, ``possible`` = ○, NULL = empty cell), and a ``correction``
-column that records every change against the source.
+column that records every change against the source. Rows an administrator
+adds continue the numbering; a retired row (soft delete) leaves the matching.
 """
 
 from __future__ import annotations
 
-from sqlalchemy import Float, ForeignKey, Integer, String, Text, UniqueConstraint
+from datetime import datetime
+
+from sqlalchemy import DateTime, Float, ForeignKey, Integer, String, Text, UniqueConstraint
 from sqlalchemy.orm import Mapped, mapped_column
 
 from actuator_selection.db.models.base import Base
@@ -43,6 +46,7 @@ class ControllerRow(Base):
     feedback_ttl: Mapped[str | None] = mapped_column(Mark)
     correction: Mapped[str | None] = mapped_column(Text)
     source: Mapped[str] = mapped_column(Text)
+    retired_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True))
 
 
 class SensorFittingRow(Base):
