@@ -13,7 +13,7 @@ from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
 from actuator_selection.config import SEED_DIR
 from actuator_selection.db.csvio import parse
-from actuator_selection.db.seed import ACTUATORS
+from actuator_selection.db.seed import ACTUATORS, CATALOGUE_SPECS
 
 __all__ = ["api", "sales_api_with"]
 
@@ -277,10 +277,12 @@ def unchanged(files: dict[str, Any]) -> bool:
 
 def test_export_is_the_seed_format_and_imports_unchanged(api: SalesApi) -> None:
     files = export_zip(api)
-    assert set(files) == {"families.csv", "actuators.csv", "zone_points.csv"}
+    assert set(files) == {spec.file for spec in CATALOGUE_SPECS}
+    assert set(files) == {p.name for p in SEED_DIR.glob("*.csv")} - {"example_prices.csv"}
     for name, text in files.items():
-        seed_header = (SEED_DIR / name).read_text(encoding="utf-8").splitlines()[0]
-        assert text.splitlines()[0] == seed_header
+        seed = (SEED_DIR / name).read_text(encoding="utf-8")
+        assert text.splitlines()[0] == seed.splitlines()[0]
+        assert _rows(text) == _rows(seed), name
     seed_rows = sum(1 for _ in csv.DictReader(io.StringIO(files["actuators.csv"])))
     assert seed_rows == len(api.get("/api/v1/actuators", role=None).json())
     before = version(api)
@@ -292,6 +294,18 @@ def test_export_is_the_seed_format_and_imports_unchanged(api: SalesApi) -> None:
     assert as_json.status_code == 200, as_json.text
     assert unchanged(as_json.json()["files"])
     assert version(api) == before
+
+
+def _rows(text: str) -> list[list[tuple[str, str]]]:
+    """The rows of a CSV text in any order, numbers compared as numbers (0.86 = .86)."""
+
+    def cell(value: str) -> str:
+        try:
+            return repr(float(value))
+        except ValueError:
+            return value
+
+    return sorted([(k, cell(v)) for k, v in r.items()] for r in csv.DictReader(io.StringIO(text)))
 
 
 def _json(document: dict[str, Any]) -> bytes:
@@ -310,14 +324,25 @@ def edited(files: dict[str, str]) -> dict[str, str]:
     writer.writeheader()
     writer.writerows(rows)
     zones = files["zone_points.csv"] + "FHA-25C-50-L,0,60,test\nFHA-25C-50-L,90,40,test\n"
-    return {**files, "actuators.csv": out.getvalue(), "zone_points.csv": zones}
+    interfaces = "".join(
+        line
+        for line in files["actuator_interfaces.csv"].splitlines(keepends=True)
+        if not line.startswith("CHA-20A-50,")
+    )
+    return {
+        **files,
+        "actuators.csv": out.getvalue(),
+        "zone_points.csv": zones,
+        "actuator_interfaces.csv": interfaces,
+    }
 
 
 def test_dry_run_reports_and_changes_nothing_then_import_applies(api: SalesApi) -> None:
     files = edited(export_zip(api))
     before = version(api)
+    nothing = {"inserted": 0, "updated": 0, "retired": 0}
     expected = {
-        "families.csv": {"inserted": 0, "updated": 0, "retired": 0},
+        **{spec.file: nothing for spec in CATALOGUE_SPECS},
         "actuators.csv": {"inserted": 0, "updated": 1, "retired": 1},
         "zone_points.csv": {"inserted": 2, "updated": 0, "retired": 0},
     }

@@ -1,16 +1,21 @@
-"""Catalogue management for admin keys: actuators, their zones, whole-catalogue import/export.
+"""Catalogue management for admin keys: actuators, zones, controllers, import/export.
 
-Writes are validated by the seed files' rules (``db/seed.py``), so an actuator the
-API accepts is one the seed loader accepts and vice versa. Every change raises
-the catalogue version. Retiring is a soft delete: the actuator leaves listings
-and selections, and stays for the quotes that name it.
+Writes are validated by the seed files' rules (``db/seed.py``,
+``db/seed_controllers.py``), so an actuator or controller the API accepts is one
+the seed loader accepts and vice versa. Every change raises the catalogue
+version. Retiring is a soft delete: a retired actuator leaves listings and
+selections and stays for the quotes that name it; a retired controller leaves
+the compatibility matrix (Table 521.1) and every candidate's controller list.
 
-Import and export use the seed format: a ZIP of ``families.csv``,
-``actuators.csv`` and ``zone_points.csv`` (``Content-Type: application/zip``), or
-JSON ``{"families": [...], "actuators": [...], "zone_points": [...]}`` of objects
+Import and export use the seed format: a ZIP of the eight files of
+``seed_data/`` (families, actuators, zone points, controllers, temperature
+sensors, KTY 84-130 points, DC bus classes, actuator interfaces;
+``Content-Type: application/zip``), or JSON with one array per file, keyed by
+the file's stem (``{"families": [...], "actuators": [...], ...}``), of objects
 keyed by the CSV column names (``application/json``). An import is the whole
-catalogue: actuators it lacks are retired, zones it lacks removed; it runs in
-one transaction, and ``?dry_run=true`` reports the changes and writes nothing.
+catalogue: actuators and controllers it lacks are retired, other rows it lacks
+removed; it runs in one transaction, and ``?dry_run=true`` reports the changes
+and writes nothing.
 """
 
 from __future__ import annotations
@@ -21,7 +26,7 @@ import zipfile
 from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
 
-from fastapi import APIRouter, Body, Depends, HTTPException, Query, Response
+from fastapi import APIRouter, Body, Depends, HTTPException, Path, Query, Response
 
 from actuator_selection.api.auth import AdminDep
 from actuator_selection.api.deps import SessionDep
@@ -35,30 +40,46 @@ from actuator_selection.api.uploads import (
     unzip_csv,
 )
 from actuator_selection.db.admin import CatalogueAdminRepository
-from actuator_selection.db.csvio import CatalogueFileError, Problem, to_json_values, write
+from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.csvio import (
+    WHOLE_NUMBER_MAX,
+    CatalogueFileError,
+    Problem,
+    to_json_values,
+    write,
+)
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.seed import (
+    ACTUATORS,
     CATALOGUE_SPECS,
     JSON_KEYS,
     catalogue_from_json,
     parse_catalogue,
 )
+from actuator_selection.db.seed_controllers import CONTROLLERS, INTERFACES
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, actuator_json_schema
+from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, write_json_schema
+from actuator_selection.schemas.controllers import ControllerOut, InterfaceOut
 
 router = APIRouter(tags=["catalogue management"])
 
-_ACTUATOR_BODY: dict[str, Any] = {
-    "requestBody": {
-        "required": True,
-        "content": {"application/json": {"schema": actuator_json_schema()}},
-    }
-}
+
+def _body(schema: dict[str, Any]) -> dict[str, Any]:
+    return {"requestBody": {"required": True, "content": {"application/json": {"schema": schema}}}}
+
+
+_ACTUATOR_BODY = _body(write_json_schema(ACTUATORS))
+_CONTROLLER_BODY = _body(write_json_schema(CONTROLLERS, optional=("source_row",)))
+_INTERFACE_BODY = _body(write_json_schema(INTERFACES, without=("actuator_model",)))
 _ERRORS: dict[int | str, dict[str, Any]] = {
     401: {"description": "no or a bad API key"},
     403: {"description": "the key lacks the admin role"},
-    422: {"description": "a value breaks a rule of actuators.csv; the entry names the column"},
+    422: {"description": "a value breaks a rule of the seed file; the entry names the column"},
 }
+Row = Annotated[
+    int,
+    Path(ge=1, le=WHOLE_NUMBER_MAX, description="the controller's row (`source_row`)"),
+]
 
 
 def _field_errors(exc: CatalogueFileError, *prefix: str | int, rows: bool = False) -> Exception:
@@ -185,6 +206,136 @@ def delete_zone(model: str, _: AdminDep, session: SessionDep) -> Response:
     return Response(status_code=204)
 
 
+def _interface_out(session: SessionDep, model: str) -> InterfaceOut:
+    return InterfaceOut.from_record(ProtectionRepository(session).interfaces([model])[model])
+
+
+@router.put(
+    "/actuators/{model}/interface",
+    openapi_extra=_INTERFACE_BODY,
+    responses={**_ERRORS, 404: {"description": "unknown model"}, 409: {"description": "retired"}},
+)
+def set_interface(
+    model: str, _: AdminDep, session: SessionDep, body: Annotated[dict[str, Any], Body()]
+) -> InterfaceOut:
+    """Replace what the controller matching knows of an actuator (actuator_interfaces.csv).
+
+    Options are space-separated text as in the file, or JSON arrays of names; an
+    empty or missing one is "no data" (the criterion is then neither confirmed nor
+    excluded).
+    """
+    _known(session, model, active=True)
+    given = {
+        k: " ".join(v) if isinstance(v, list) and all(isinstance(o, str) for o in v) else v
+        for k, v in body.items()
+    }
+    if "actuator_model" in given:
+        raise RequestFieldError(
+            [field_error(["body", "actuator_model"], "the path names the actuator", "extra")]
+        )
+    repository = CatalogueAdminRepository(session)
+    try:
+        values = repository.validate_interface(model, given)
+    except CatalogueFileError as exc:
+        raise _field_errors(exc) from None
+    repository.set_interface(model, values)
+    return _interface_out(session, model)
+
+
+@router.delete(
+    "/actuators/{model}/interface",
+    status_code=204,
+    responses={**_ERRORS, 404: {"description": "unknown model"}, 409: {"description": "retired"}},
+)
+def delete_interface(model: str, _: AdminDep, session: SessionDep) -> Response:
+    """Forget an actuator's interface: its bus, sensor and feedback criteria say no data."""
+    _known(session, model, active=True)
+    CatalogueAdminRepository(session).set_interface(model, None)
+    return Response(status_code=204)
+
+
+def _controller_out(session: SessionDep, row: int) -> ControllerOut:
+    record = ProtectionRepository(session).controller(row)
+    assert record is not None, "written in this request"
+    return ControllerOut.from_record(record)
+
+
+def _known_controller(session: SessionDep, row: int) -> None:
+    if CatalogueAdminRepository(session).controller_state(row) is None:
+        raise HTTPException(status_code=404, detail=f"no controller in row {row}")
+
+
+@router.post(
+    "/controllers",
+    status_code=201,
+    openapi_extra=_CONTROLLER_BODY,
+    responses={**_ERRORS, 409: {"description": "the row exists"}},
+)
+def create_controller(
+    _: AdminDep, session: SessionDep, response: Response, body: Annotated[dict[str, Any], Body()]
+) -> ControllerOut:
+    """Add a row to the compatibility matrix (the columns of controllers.csv).
+
+    Marks are ``tested`` (●), ``possible`` (○) or empty. Without ``source_row``
+    the row takes the next free number; Table 521.1's rows keep 1–28.
+    """
+    repository = CatalogueAdminRepository(session)
+    if body.get("source_row") is None:
+        body = {**body, "source_row": repository.next_controller_row()}
+    try:
+        values = repository.validate_controller(body)
+    except CatalogueFileError as exc:
+        raise _field_errors(exc) from None
+    row = values["source_row"]
+    if repository.controller_state(row) is not None:
+        raise HTTPException(
+            status_code=409,
+            detail=f"controller row {row} exists (retired ones too); "
+            f"PUT /controllers/{row} replaces it",
+        )
+    repository.save_controller(values)
+    response.headers["Location"] = f"/api/v1/controllers/{row}"
+    return _controller_out(session, row)
+
+
+@router.put(
+    "/controllers/{row}",
+    openapi_extra=_CONTROLLER_BODY,
+    responses={**_ERRORS, 404: {"description": "unknown row"}},
+)
+def replace_controller(
+    row: Row, _: AdminDep, session: SessionDep, body: Annotated[dict[str, Any], Body()]
+) -> ControllerOut:
+    """Replace a controller's values (every column; a missing one becomes empty).
+
+    A retired controller is brought back.
+    """
+    _known_controller(session, row)
+    if body.get("source_row", row) not in (row, str(row)):
+        raise RequestFieldError(
+            [field_error(["body", "source_row"], f"must be {row}, as in the path", "mismatch")]
+        )
+    repository = CatalogueAdminRepository(session)
+    try:
+        values = repository.validate_controller({**body, "source_row": row})
+    except CatalogueFileError as exc:
+        raise _field_errors(exc) from None
+    repository.save_controller(values)
+    return _controller_out(session, row)
+
+
+@router.delete(
+    "/controllers/{row}",
+    status_code=204,
+    responses={**_ERRORS, 404: {"description": "unknown row"}},
+)
+def retire_controller(row: Row, _: AdminDep, session: SessionDep) -> Response:
+    """Retire a controller: gone from the matrix and from selections (idempotent)."""
+    _known_controller(session, row)
+    CatalogueAdminRepository(session).retire_controller(row, now=datetime.now(UTC))
+    return Response(status_code=204)
+
+
 @router.get(
     "/catalogue/export",
     responses={
@@ -201,7 +352,7 @@ def export_catalogue(
         Literal["zip", "json"], Query(description="zip of CSV files or JSON")
     ] = "zip",
 ) -> Response:
-    """The active catalogue in the seed format (retired actuators left out)."""
+    """The active catalogue in the seed format (retired actuators and controllers left out)."""
     stored = CatalogueAdminRepository(session).export()
     version = CatalogueVersionRepository(session).current()
     headers = {"X-Catalogue-Version": str(version)}

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from fastapi import APIRouter, HTTPException, Query
+from fastapi import APIRouter, HTTPException, Path, Query
 
 from actuator_selection.api.deps import SessionDep
 from actuator_selection.core.compatibility import (
@@ -17,6 +17,7 @@ from actuator_selection.core.compatibility import (
 )
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.csvio import WHOLE_NUMBER_MAX
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.controllers import (
     ActuatorControllersOut,
@@ -55,6 +56,18 @@ def list_controllers(
         if (manufacturer is None or manufacturer.lower() in r.controller.manufacturer.lower())
         and all(r.controller.level(o) in wanted for o in options)
     ]
+
+
+@router.get("/controllers/{row}", responses={404: {"description": "unknown or retired row"}})
+def get_controller(
+    row: Annotated[int, Path(ge=1, le=WHOLE_NUMBER_MAX, description="`source_row`")],
+    session: SessionDep,
+) -> ControllerOut:
+    """One row of the compatibility matrix (Table 521.1's rows keep their printed number)."""
+    record = ProtectionRepository(session).controller(row)
+    if record is None:
+        raise HTTPException(status_code=404, detail=f"no controller in row {row}")
+    return ControllerOut.from_record(record)
 
 
 @router.get("/actuators/{model}/controllers", responses={404: {"description": "unknown model"}})

@@ -1,9 +1,10 @@
-"""Catalogue writes for administrators: actuators, their zones, whole-catalogue import/export.
+"""Catalogue writes for administrators: actuators, their zones, controllers, import/export.
 
-Every write is validated by the rules of the seed files (``db/seed.py``'s
-``CsvSpec``s through :func:`~actuator_selection.db.csvio.check_values`), so the
-API and the seed loader cannot disagree on what a valid actuator is. Every
-change raises the catalogue version; repositories flush, the request commits.
+Every write is validated by the rules of the seed files (the ``CsvSpec``s of
+``db/seed.py`` and ``db/seed_controllers.py`` through
+:func:`~actuator_selection.db.csvio.check_values`), so the API and the seed
+loader cannot disagree on what a valid actuator or controller is. Every change
+raises the catalogue version; repositories flush, the request commits.
 """
 
 from __future__ import annotations
@@ -13,11 +14,22 @@ from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
 
-from sqlalchemy import select
+from sqlalchemy import func, select
 from sqlalchemy.orm import Session, selectinload
 
-from actuator_selection.db.csvio import CatalogueFileError, Problem, check_values
-from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
+from actuator_selection.core.thermal import TemperatureSensor
+from actuator_selection.db.changes import set_values
+from actuator_selection.db.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
+from actuator_selection.db.models import (
+    ActuatorFamilyRow,
+    ActuatorInterfaceRow,
+    ActuatorRow,
+    ControllerRow,
+    DcBusClassRow,
+    SensorFittingRow,
+    SensorPointRow,
+    ZonePointRow,
+)
 from actuator_selection.db.repositories import CatalogueVersionRepository
 from actuator_selection.db.seed import (
     ACTUATORS,
@@ -28,6 +40,14 @@ from actuator_selection.db.seed import (
     apply_catalogue,
     zone_problems,
 )
+from actuator_selection.db.seed_controllers import (
+    BUS_CLASSES,
+    CONTROLLERS,
+    INTERFACES,
+    KTY_POINTS,
+    SENSOR_FITTINGS,
+    controller_name_problems,
+)
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -35,6 +55,14 @@ class ActuatorState:
     """Whether a model exists and whether it is retired."""
 
     model: str
+    retired_at: datetime | None
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class ControllerState:
+    """Whether a row of the compatibility matrix exists and whether it is retired."""
+
+    source_row: int
     retired_at: datetime | None
 
 
@@ -89,24 +117,70 @@ class CatalogueAdminRepository:
         )
         assert family is not None, "validate_actuator checks the family"
         stored["family_id"] = family.id
-        stored["retired_at"] = None
-        row = self._session.scalar(select(ActuatorRow).where(ActuatorRow.model == stored["model"]))
+        return self._save(ActuatorRow, ActuatorRow.model == stored["model"], stored)
+
+    def retire(self, model: str, *, now: datetime) -> bool:
+        """Retire an active actuator (soft delete); False when it already was retired."""
+        return self._retire(ActuatorRow, ActuatorRow.model == model, now)
+
+    def controller_state(self, source_row: int) -> ControllerState | None:
+        """The row's existence and retirement, or None when the matrix never held it."""
+        row = self._session.scalar(
+            select(ControllerRow).where(ControllerRow.source_row == source_row)
+        )
+        return (
+            ControllerState(source_row=row.source_row, retired_at=row.retired_at) if row else None
+        )
+
+    def next_controller_row(self) -> int:
+        """The first row number after every row the matrix holds or held."""
+        return (self._session.scalar(select(func.max(ControllerRow.source_row))) or 0) + 1
+
+    def validate_controller(self, values: Mapping[str, object]) -> dict[str, Any]:
+        """Stored values of a controller given by its CSV column names, or
+        :class:`CatalogueFileError` with the seed loader's problems (and a name that
+        another active row already has).
+        """
+        checked, problems = check_values(CONTROLLERS, values)
+        if not problems:
+            others = {
+                (r.manufacturer, r.type, r.variant): r.source_row
+                for r in self._session.scalars(
+                    select(ControllerRow).where(
+                        ControllerRow.retired_at.is_(None),
+                        ControllerRow.source_row != checked["source_row"],
+                    )
+                )
+            }
+            problems = controller_name_problems([Record(line=0, values=checked)], others=others)
+        if problems:
+            raise CatalogueFileError(problems)
+        return checked
+
+    def save_controller(self, values: Mapping[str, Any]) -> bool:
+        """Insert or replace a row of the matrix from validated ``values``; brings a
+        retired one back. True when anything changed (and the version was raised).
+        """
+        return self._save(ControllerRow, ControllerRow.source_row == values["source_row"], values)
+
+    def retire_controller(self, source_row: int, *, now: datetime) -> bool:
+        """Retire an active controller (soft delete); False when it already was retired."""
+        return self._retire(ControllerRow, ControllerRow.source_row == source_row, now)
+
+    def _save(self, model: type[Any], where: Any, values: Mapping[str, Any]) -> bool:
+        row = self._session.scalar(select(model).where(where))
         changed = row is None
         if row is None:
-            row = ActuatorRow()
+            row = model()
             self._session.add(row)
-        for name, value in stored.items():
-            if getattr(row, name) != value:
-                setattr(row, name, value)
-                changed = True
+        changed = set_values(row, {**values, "retired_at": None}) or changed
         self._session.flush()
         if changed:
             CatalogueVersionRepository(self._session).bump()
         return changed
 
-    def retire(self, model: str, *, now: datetime) -> bool:
-        """Retire an active actuator (soft delete); False when it already was retired."""
-        row = self._session.scalar(select(ActuatorRow).where(ActuatorRow.model == model))
+    def _retire(self, model: type[Any], where: Any, now: datetime) -> bool:
+        row = self._session.scalar(select(model).where(where))
         if row is None or row.retired_at is not None:
             return False
         row.retired_at = now
@@ -157,6 +231,40 @@ class CatalogueAdminRepository:
         CatalogueVersionRepository(self._session).bump()
         return True
 
+    @staticmethod
+    def validate_interface(model: str, values: Mapping[str, object]) -> dict[str, Any]:
+        """Stored values of an actuator's interface (the columns of actuator_interfaces.csv
+        but ``actuator_model``), or :class:`CatalogueFileError` with the seed loader's problems.
+        """
+        checked, problems = check_values(INTERFACES, {**values, "actuator_model": model})
+        if problems:
+            raise CatalogueFileError(problems)
+        return checked
+
+    def set_interface(self, model: str, values: Mapping[str, Any] | None) -> bool:
+        """Replace (None: remove) the interface of ``model``; True when anything changed."""
+        actuator_id = self._session.scalar(select(ActuatorRow.id).where(ActuatorRow.model == model))
+        assert actuator_id is not None, "the caller checks the model"
+        row = self._session.scalar(
+            select(ActuatorInterfaceRow).where(ActuatorInterfaceRow.actuator_id == actuator_id)
+        )
+        if values is None:
+            if row is None:
+                return False
+            self._session.delete(row)
+            changed = True
+        else:
+            stored = {k: v for k, v in values.items() if k != "actuator_model"}
+            changed = row is None
+            if row is None:
+                row = ActuatorInterfaceRow(actuator_id=actuator_id)
+                self._session.add(row)
+            changed = set_values(row, stored) or changed
+        self._session.flush()
+        if changed:
+            CatalogueVersionRepository(self._session).bump()
+        return changed
+
     def import_catalogue(self, files: CatalogueFiles, *, dry_run: bool) -> CatalogueChanges:
         """Replace the catalogue by ``files`` (see ``apply_catalogue(replace=True)``).
 
@@ -176,35 +284,66 @@ class CatalogueAdminRepository:
         return changes
 
     def export(self) -> dict[str, list[dict[str, Any]]]:
-        """The active catalogue as stored values per file (retired actuators left out)."""
-        families = self._session.scalars(select(ActuatorFamilyRow).order_by(ActuatorFamilyRow.name))
+        """The active catalogue as stored values per file (retired actuators and
+        controllers, and what belongs to retired actuators, left out)."""
+        session = self._session
+        families = session.scalars(select(ActuatorFamilyRow).order_by(ActuatorFamilyRow.name))
         actuators = list(
-            self._session.scalars(
+            session.scalars(
                 select(ActuatorRow)
                 .options(selectinload(ActuatorRow.family), selectinload(ActuatorRow.zone_points))
                 .where(ActuatorRow.retired_at.is_(None))
                 .order_by(ActuatorRow.model)
             )
         )
+        controllers = session.scalars(
+            select(ControllerRow)
+            .where(ControllerRow.retired_at.is_(None))
+            .order_by(ControllerRow.source_row)
+        )
+        fittings = session.execute(
+            select(SensorFittingRow, ActuatorFamilyRow.name)
+            .join(ActuatorFamilyRow, SensorFittingRow.family_id == ActuatorFamilyRow.id)
+            .order_by(
+                ActuatorFamilyRow.name,
+                SensorFittingRow.variant.nulls_first(),
+                SensorFittingRow.sensor,
+            )
+        )
+        kty_points = session.scalars(
+            select(SensorPointRow)
+            .where(SensorPointRow.sensor == TemperatureSensor.KTY84_130.value)
+            .order_by(SensorPointRow.temperature_c)
+        )
+        bus_classes = session.scalars(
+            select(DcBusClassRow).order_by(DcBusClassRow.nominal_dc_voltage_v)
+        )
+        interfaces = session.execute(
+            select(ActuatorInterfaceRow, ActuatorRow.model)
+            .join(ActuatorRow, ActuatorInterfaceRow.actuator_id == ActuatorRow.id)
+            .where(ActuatorRow.retired_at.is_(None))
+            .order_by(ActuatorRow.model)
+        )
         return {
-            FAMILIES.file: [
-                {c.attribute: getattr(f, c.attribute) for c in FAMILIES.columns} for f in families
-            ],
-            ACTUATORS.file: [
-                {
-                    c.attribute: a.family.name if c.name == "family" else getattr(a, c.attribute)
-                    for c in ACTUATORS.columns
-                }
-                for a in actuators
-            ],
+            FAMILIES.file: [_values(FAMILIES, f) for f in families],
+            ACTUATORS.file: [_values(ACTUATORS, a, family=a.family.name) for a in actuators],
             ZONE_POINTS.file: [
-                {
-                    "actuator_model": a.model,
-                    "speed_rpm": p.speed_rpm,
-                    "torque_nm": p.torque_nm,
-                    "source": p.source,
-                }
+                _values(ZONE_POINTS, p, actuator_model=a.model)
                 for a in actuators
                 for p in a.zone_points
             ],
+            CONTROLLERS.file: [_values(CONTROLLERS, c) for c in controllers],
+            SENSOR_FITTINGS.file: [_values(SENSOR_FITTINGS, f, family=n) for f, n in fittings],
+            KTY_POINTS.file: [_values(KTY_POINTS, p) for p in kty_points],
+            BUS_CLASSES.file: [_values(BUS_CLASSES, b) for b in bus_classes],
+            INTERFACES.file: [_values(INTERFACES, i, actuator_model=m) for i, m in interfaces],
         }
+
+
+def _values(spec: CsvSpec, row: Any, **given: Any) -> dict[str, Any]:
+    """A stored row as the values of ``spec``'s columns; ``given`` supplies the ones a row
+    holds by reference (a family's or actuator's name instead of its id)."""
+    return {
+        c.attribute: given[c.name] if c.name in given else getattr(row, c.attribute)
+        for c in spec.columns
+    }

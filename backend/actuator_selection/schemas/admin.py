@@ -1,8 +1,10 @@
 """Catalogue management: zone writes and what an import changed.
 
-Actuators are written as JSON objects keyed by the columns of ``actuators.csv``
-(units in the names, e.g. ``max_torque_nm``); they are validated by the seed
-files' own rules, not by a second schema, so their body is a free-form object here.
+Actuators and controllers are written as JSON objects keyed by the columns of
+``actuators.csv`` and ``controllers.csv`` (units in the names, e.g.
+``max_torque_nm``); they are validated by the seed files' own rules, not by a
+second schema, so their body is a free-form object here, documented by a
+schema derived from those rules.
 """
 
 from __future__ import annotations
@@ -11,25 +13,46 @@ from typing import Any
 
 from pydantic import Field
 
-from actuator_selection.db.seed import ACTUATORS, CatalogueChanges
+from actuator_selection.db.csvio import WHOLE_NUMBER_MAX, CsvSpec, whole_number
+from actuator_selection.db.seed import CatalogueChanges
+from actuator_selection.db.seed_controllers import mark
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.prices import ChangesOut
 
 
-def actuator_json_schema() -> dict[str, Any]:
-    """OpenAPI schema of an actuator write, derived from the ``actuators.csv`` columns."""
+def write_json_schema(
+    spec: CsvSpec, *, optional: tuple[str, ...] = (), without: tuple[str, ...] = ()
+) -> dict[str, Any]:
+    """OpenAPI schema of a row write, derived from the columns of ``spec``'s file.
+
+    ``optional``: required columns the endpoint fills in when they are left out;
+    ``without``: columns the path gives instead.
+    """
     properties: dict[str, Any] = {}
-    for column in ACTUATORS.columns:
-        kind = "number" if column.numeric else "string"
-        properties[column.name] = {
-            "type": kind if column.required else [kind, "null"],
-            "description": f"as the column {column.name} of actuators.csv"
-            + (f"; must be {column.rule.value}" if column.numeric else ""),
-        }
+    columns = [c for c in spec.columns if c.name not in without]
+    for column in columns:
+        described = f"as the column {column.name} of {spec.file}"
+        if column.numeric:
+            kind: dict[str, Any] = {"type": "number"}
+            described += f"; must be {column.rule.value}"
+        elif column.convert is whole_number:
+            kind = {"type": "integer", "minimum": 1, "maximum": WHOLE_NUMBER_MAX}
+        elif column.convert is mark:
+            kind = {"enum": ["tested", "possible", "●", "○", ""]}
+        else:
+            kind = {"type": "string"}
+            if column.max_length is not None:
+                kind["maxLength"] = column.max_length
+        nullable = not column.required or column.name in optional
+        properties[column.name] = (
+            {"anyOf": [kind, {"type": "null"}], "description": described}
+            if nullable
+            else {**kind, "description": described}
+        )
     return {
         "type": "object",
         "properties": properties,
-        "required": [c.name for c in ACTUATORS.columns if c.required],
+        "required": [c.name for c in columns if c.required and c.name not in optional],
         "additionalProperties": False,
     }
 
@@ -54,8 +77,8 @@ class CatalogueImportOut(ResponseModel):
     dry_run: bool
     catalogue_version: int = Field(description="the version after the import (unchanged if dry)")
     files: dict[str, ChangesOut] = Field(
-        description="per file; `retired`: actuators withdrawn (actuators.csv) or zone points "
-        "removed (zone_points.csv)"
+        description="per file; `retired`: actuators and controllers withdrawn (soft delete, "
+        "actuators.csv and controllers.csv), other rows removed"
     )
 
     @classmethod
