@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import logging
 from typing import Any
+from urllib.parse import parse_qsl
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
+from starlette.types import ASGIApp, Receive, Scope, Send
 
 from actuator_selection.core.errors import DomainError, NotFoundError
 
@@ -60,8 +62,43 @@ def _unexpected(_: Request, exc: Exception) -> JSONResponse:
     return JSONResponse(status_code=500, content={"detail": "internal error; it has been logged"})
 
 
+NUL_RULE = "must not contain the NUL character (U+0000)"
+"""Text is stored in SQL, and PostgreSQL's text types cannot hold U+0000."""
+
+
+class RejectNulInUrl:
+    """422 for a path or query parameter holding U+0000 (``%00``), before any route runs.
+
+    Bodies are guarded where they are parsed (``schemas.common.StrictModel`` and the
+    catalogue files' cell rules), so that the error names the field.
+    """
+
+    def __init__(self, app: ASGIApp) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] == "http":
+            loc = self._nul_at(scope)
+            if loc is not None:
+                body = {"detail": [field_error(loc, NUL_RULE, "value_error")]}
+                await JSONResponse(status_code=422, content=body)(scope, receive, send)
+                return
+        await self.app(scope, receive, send)
+
+    @staticmethod
+    def _nul_at(scope: Scope) -> list[str | int] | None:
+        if "\x00" in scope["path"]:
+            return ["path"]
+        query = scope.get("query_string", b"").decode("latin-1")
+        for name, value in parse_qsl(query, keep_blank_values=True):
+            if "\x00" in name or "\x00" in value:
+                return ["query", name.replace("\x00", "")]
+        return None
+
+
 def install(app: FastAPI) -> None:
-    """Register the handlers on ``app``."""
+    """Register the handlers (and the URL guard) on ``app``."""
+    app.add_middleware(RejectNulInUrl)
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(DomainError, _domain)
     app.add_exception_handler(RequestFieldError, _request_field_error)

@@ -156,6 +156,14 @@ def one_of(*choices: str) -> Callable[[str], str]:
 
 def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Problem | None]:
     text = raw.strip()
+    if "\x00" in text:
+        # PostgreSQL's text types cannot hold U+0000, and no catalogue value needs it.
+        return None, Problem(
+            file=spec.file,
+            line=line,
+            column=column.name,
+            message="must not contain the NUL character (U+0000)",
+        )
     if not text:
         if column.required:
             return None, Problem(

@@ -7,7 +7,9 @@ the largest catalogue actuator delivers under 2 kNm at under 300 rpm.
 
 from __future__ import annotations
 
-from pydantic import BaseModel, ConfigDict
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, field_validator
 
 MAX_SPEED_RPM = 100_000.0
 """n_2 bound [rpm]: ten times the fastest servo motor shaft."""
@@ -27,10 +29,30 @@ MAX_FRICTION_COEFFICIENT = 10.0
 """μ bound [-]: dry rubber on rubber stays below 2."""
 
 
+def holds_nul(value: object) -> bool:
+    """True when ``value`` (text, or lists and objects of it, keys too) holds U+0000."""
+    if isinstance(value, str):
+        return "\x00" in value
+    if isinstance(value, list | tuple):
+        return any(holds_nul(v) for v in value)
+    if isinstance(value, dict):
+        return any(holds_nul(k) or holds_nul(v) for k, v in value.items())
+    return False
+
+
 class StrictModel(BaseModel):
-    """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞."""
+    """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞;
+    no U+0000 in text (PostgreSQL cannot store it, and no valid input needs it)."""
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
+
+    # After each field's own validation, so a nested model has already named its field.
+    @field_validator("*", mode="after")
+    @classmethod
+    def _no_nul(cls, value: Any) -> Any:
+        if holds_nul(value):
+            raise ValueError("must not contain the NUL character (U+0000)")
+        return value
 
 
 class ResponseModel(BaseModel):
