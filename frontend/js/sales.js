@@ -2,12 +2,33 @@
 // Every figure comes from the API (prices, totals, verdicts); money stays the
 // decimal text the API sends and is never turned into a float. Text from the
 // server is put into the page with textContent only, never as markup.
+// Labels come from i18n.js in the language chosen on either page; messages of
+// the API are shown as they come (English, marked lang="en").
+
+import { appendSymbols, localeOf, qty } from "./format.js";
+import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "./i18n.js";
 
 const API = "/api/v1";
 const KEY_STORAGE = "actuatorSelection.salesApiKey";
 const PAGE_SIZE = 20;
+const QUOTE_STATUSES = ["draft", "sent", "accepted", "rejected", "expired"];
+const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
 
 const $ = (id) => document.getElementById(id);
+
+const state = {
+  lang: "en",
+  selection: null,
+  idempotencyKey: newIdempotencyKey(),
+  priceLists: [],
+  /** the quotes listed, in the order shown */
+  quotes: [],
+  offset: 0,
+  /** what the list's status line says after the next search instead of the count */
+  listNote: null,
+};
+
+const t = (key, params) => translate(state.lang, key, params);
 
 /** A failed request: status (0: server not reached), field errors of a 422, or a message. */
 class ApiError extends Error {
@@ -39,7 +60,7 @@ async function call(method, path, { body, headers = {}, accept = "application/js
   try {
     response = await fetch(`${API}${path}`, init);
   } catch {
-    throw new ApiError(0, "the server cannot be reached");
+    throw new ApiError(0, null);
   }
   if (accept === "text/html" && response.ok) return response.text();
   let data = null;
@@ -50,7 +71,7 @@ async function call(method, path, { body, headers = {}, accept = "application/js
     data = null;
   }
   if (!response.ok) {
-    if (response.status === 401) signedOut("The API key was not accepted. Enter a valid key.");
+    if (response.status === 401) signedOut(() => t("sales.key.rejected"));
     throw new ApiError(response.status, data && data.detail);
   }
   return data;
@@ -72,18 +93,83 @@ function el(tag, props = {}, ...children) {
   return node;
 }
 
-/** "8861.50", "EUR" → "8,861.50 EUR", by string (no float on the way). */
-function money(amount, currency) {
-  const [whole, cents = "00"] = String(amount).split(".");
-  const sign = whole.startsWith("-") ? "−" : "";
-  const digits = whole.replace("-", "").replace(/\B(?=(\d{3})+(?!\d))/g, ",");
-  return `${sign}${digits}.${cents} ${currency}`;
+/** Text as the API wrote it: English whatever the page's language. */
+function english(text) {
+  return el("span", { lang: "en" }, text);
 }
 
-function number(value, unit) {
-  if (typeof value !== "number" || !Number.isFinite(value)) return "—";
-  const text = Math.abs(value) >= 100 ? value.toFixed(1) : value.toFixed(2);
-  return unit ? `${text} ${unit}` : text;
+/** What to show for a failed request: our words when the server was not reached, else its own. */
+function errorText(error) {
+  return error.status === 0 ? t("sales.network") : english(error.message);
+}
+
+// Every text the page writes is given as a function of the language, so that a
+// switch of language rewrites it in place: node → () => its children.
+const localized = new Map();
+
+function children(render) {
+  return [render()].flat(Infinity).filter((c) => c !== null && c !== undefined && c !== false);
+}
+
+/** Fill ``node`` with ``render()`` now, and again whenever the language changes. */
+function show(node, render) {
+  localized.set(node, render);
+  node.replaceChildren(...children(render));
+}
+
+function clear(node) {
+  localized.delete(node);
+  node.replaceChildren();
+}
+
+/** ``t(key, params)`` with the placeholders named in ``nodes`` filled by DOM nodes. */
+function withNodes(key, nodes, params = {}) {
+  return t(key, params)
+    .split(/\{(\w+)\}/)
+    .map((part, i) => (i % 2 ? (nodes[part] ?? `{${part}}`) : part));
+}
+
+// --- numbers, money and dates in the page's language -----------------------------------
+
+/** The group and decimal marks of the page's locale, as Intl writes them. */
+function separators() {
+  const parts = new Intl.NumberFormat(localeOf(state.lang)).formatToParts(1234567.5);
+  const mark = (type, fallback) => parts.find((p) => p.type === type)?.value ?? fallback;
+  return { group: mark("group", ","), decimal: mark("decimal", ".") };
+}
+
+/** "8861.50", "EUR" → "8,861.50 EUR" or "8.861,50 EUR", by string (no float on the way). */
+function money(amount, currency) {
+  const { group, decimal } = separators();
+  const [whole, cents = "00"] = String(amount).split(".");
+  const sign = whole.startsWith("-") ? "−" : "";
+  const digits = whole.replace("-", "").replace(/\B(?=(\d{3})+(?!\d))/g, group);
+  return `${sign}${digits}${decimal}${cents} ${currency}`;
+}
+
+function count(n) {
+  return new Intl.NumberFormat(localeOf(state.lang)).format(n);
+}
+
+/** A calendar day of the API ("2025-07-31") as "31.07.2025" or "31 Jul 2025". */
+function day(iso) {
+  const date = new Date(`${iso}T00:00:00Z`);
+  if (Number.isNaN(date.getTime())) return iso;
+  const options = { dateStyle: "medium", timeZone: "UTC" };
+  return new Intl.DateTimeFormat(localeOf(state.lang), options).format(date);
+}
+
+/** A moment of the API, in the browser's time zone, as the engineer's page shows it. */
+function moment(iso) {
+  const date = new Date(iso);
+  if (Number.isNaN(date.getTime())) return iso;
+  const options = { dateStyle: "medium", timeStyle: "short" };
+  return new Intl.DateTimeFormat(localeOf(state.lang), options).format(date);
+}
+
+/** A decimal as typed: "7,5" (German) → "7.5", as the API reads decimals. */
+function decimalText(value) {
+  return /^\d+,\d+$/.test(value) ? value.replace(",", ".") : value;
 }
 
 function isoDate(daysFromToday) {
@@ -97,14 +183,24 @@ function newIdempotencyKey() {
   return `q-${Date.now().toString(36)}-${Math.random().toString(36).slice(2)}`;
 }
 
+function statusName(status) {
+  return QUOTE_STATUSES.includes(status) ? t(`quote.status.${status}`) : status;
+}
+
+function verdictName(verdict) {
+  return VERDICTS.includes(verdict) ? t(`verdict.${verdict}`) : verdict;
+}
+
 // --- sign in ----------------------------------------------------------------------------
 
+/** Back to the key prompt; ``message`` renders why (or null for none). */
 function signedOut(message) {
   sessionStorage.removeItem(KEY_STORAGE);
   for (const id of ["create-panel", "list-panel", "who", "sign-out"]) $(id).hidden = true;
   $("key-panel").hidden = false;
   const error = $("key-error");
-  error.textContent = message || "";
+  if (message) show(error, message);
+  else clear(error);
   error.hidden = !message;
   $("api-key").focus();
 }
@@ -115,19 +211,17 @@ async function signIn(key) {
   try {
     me = await call("GET", "/auth/me");
   } catch (error) {
-    if (error.status !== 401) signedOut(`The key could not be checked: ${error.message}`);
+    if (error.status !== 401) signedOut(() => [t("sales.key.unchecked"), errorText(error)]);
     return false;
   }
   if (me.role !== "sales") {
-    signedOut(
-      me.authenticated
-        ? `This is a${me.role === "admin" ? "n" : ""} ${me.role} key; quotes need a sales key.`
-        : "Enter a sales API key.",
+    signedOut(() =>
+      me.authenticated ? t("sales.key.wrong_role", { role: me.role }) : t("sales.key.anonymous"),
     );
     return false;
   }
   $("key-panel").hidden = true;
-  $("who").textContent = `${me.name} (sales key ${me.key_id})`;
+  show($("who"), () => t("sales.who", { name: me.name, key: me.key_id }));
   $("who").hidden = false;
   $("sign-out").hidden = false;
   $("create-panel").hidden = false;
@@ -137,17 +231,10 @@ async function signIn(key) {
 
 // --- the selection and the form ---------------------------------------------------------
 
-const state = {
-  selection: null,
-  idempotencyKey: newIdempotencyKey(),
-  priceLists: [],
-  offset: 0,
-};
-
-function showFieldError(id, message) {
+function showFieldError(id, render) {
   const node = $(id);
   if (!node) return false;
-  node.textContent = message;
+  show(node, render);
   node.hidden = false;
   const input = document.querySelector(`[aria-describedby~="${id}"]`);
   if (input) input.setAttribute("aria-invalid", "true");
@@ -157,62 +244,81 @@ function showFieldError(id, message) {
 function clearErrors() {
   for (const node of document.querySelectorAll(".field-error")) {
     node.hidden = true;
-    node.textContent = "";
+    clear(node);
   }
   for (const node of document.querySelectorAll("[aria-invalid]")) node.removeAttribute("aria-invalid");
-  $("form-status").textContent = "";
+  clear($("form-status"));
   $("form-status").className = "form-status";
 }
 
-function formStatus(message, kind = "error") {
+function formStatus(render, kind = "error") {
   const node = $("form-status");
-  node.textContent = message;
+  show(node, render);
   node.className = `form-status notice notice-${kind}`;
   node.focus();
 }
 
 function summary(selection) {
   const { load, cycle } = selection;
+  const lang = state.lang;
   const counts = { suitable: 0, unconfirmed: 0, unsuitable: 0 };
   for (const c of selection.candidates) counts[c.verdict] += 1;
+  const seconds = (value) => qty(value, "s", lang);
   return el(
     "dl",
     { className: "facts" },
-    el("dt", {}, "Load"),
+    el("dt", {}, t("sales.summary.load")),
+    appendSymbols(
+      el("dd"),
+      `n_2 = ${qty(load.speed_rpm, "rpm", lang)}, T_L = ${qty(load.torque_nm, "Nm", lang)}, ` +
+        `J_L = ${qty(load.inertia_kgm2, "kgm²", lang)}`,
+    ),
+    el("dt", {}, t("sales.summary.cycle")),
+    appendSymbols(
+      el("dd"),
+      `t_1 = ${seconds(cycle.accel_s)}, t_2 = ${seconds(cycle.constant_s)}, ` +
+        `t_3 = ${seconds(cycle.decel_s)}, t_p = ${seconds(cycle.pause_s)} — ` +
+        `${t("summary.duty")} ${qty(selection.duty_cycle_percent, "%", lang)}`,
+    ),
+    el("dt", {}, t("sales.summary.candidates")),
+    el("dd", {}, VERDICTS.map((v) => `${counts[v]} ${verdictName(v)}`).join(", ")),
+    el("dt", {}, t("sales.summary.catalogue")),
     el(
       "dd",
       {},
-      `n₂ ${number(load.speed_rpm, "rpm")}, T_L ${number(load.torque_nm, "Nm")}, J_L ${number(load.inertia_kgm2, "kgm²")}`,
+      t("sales.summary.catalogue.value", {
+        version: selection.catalogue_version,
+        date: moment(selection.created_at),
+      }),
     ),
-    el("dt", {}, "Cycle"),
-    el(
-      "dd",
-      {},
-      `t₁ ${cycle.accel_s} s, t₂ ${cycle.constant_s} s, t₃ ${cycle.decel_s} s, t_p ${cycle.pause_s} s — ED ${number(selection.duty_cycle_percent, "%")}`,
-    ),
-    el("dt", {}, "Candidates"),
-    el(
-      "dd",
-      {},
-      `${counts.suitable} suitable, ${counts.unconfirmed} unconfirmed, ${counts.unsuitable} unsuitable`,
-    ),
-    el("dt", {}, "Catalogue"),
-    el("dd", {}, `version ${selection.catalogue_version}, selection of ${selection.created_at.slice(0, 16).replace("T", " ")} UTC`),
   );
 }
 
-function fillCandidates(selection) {
+const quotable = (candidate) => candidate.verdict !== "unsuitable";
+
+/** The selection's candidates as options, in the page's language; keeps the choice. */
+function renderCandidates() {
   const select = $("f-model");
-  select.replaceChildren();
-  for (const c of selection.candidates) {
-    const label =
-      c.verdict === "unsuitable"
-        ? `${c.model} — unsuitable, cannot be quoted`
-        : `${c.model} — ${c.verdict}`;
-    select.append(el("option", { value: c.model, disabled: c.verdict === "unsuitable" }, label));
-  }
-  const first = selection.candidates.find((c) => c.verdict !== "unsuitable");
-  if (first) select.value = first.model;
+  const chosen = select.value;
+  select.replaceChildren(
+    ...state.selection.candidates.map((c) =>
+      el(
+        "option",
+        { value: c.model, disabled: !quotable(c) },
+        quotable(c)
+          ? `${c.model} — ${verdictName(c.verdict)}`
+          : t("sales.actuator.option.unsuitable", { model: c.model }),
+      ),
+    ),
+  );
+  if (chosen) select.value = chosen;
+}
+
+function fillCandidates(selection) {
+  $("f-model").value = "";
+  renderCandidates();
+  const first = selection.candidates.find(quotable);
+  if (first) $("f-model").value = first.model;
   describeCandidate();
   return Boolean(first);
 }
@@ -221,16 +327,18 @@ function describeCandidate() {
   const model = $("f-model").value;
   const candidate = state.selection?.candidates.find((c) => c.model === model);
   const hint = $("hint-model");
-  hint.className = "hint";
+  hint.className = candidate?.verdict === "unconfirmed" ? "hint hint-warn" : "hint";
   if (!candidate) {
-    hint.textContent = "";
-    return;
-  }
-  if (candidate.verdict === "unconfirmed") {
-    hint.textContent = `Unconfirmed — the quote will say so: ${candidate.reasons.join("; ")}`;
-    hint.className = "hint hint-warn";
+    clear(hint);
+  } else if (candidate.verdict === "unconfirmed") {
+    show(hint, () => [t("sales.actuator.unconfirmed"), english(candidate.reasons.join("; "))]);
   } else {
-    hint.textContent = `Suitable: every check of the flowchart passed (T_rms ${number(candidate.rms_torque_nm, "Nm")}).`;
+    show(hint, () =>
+      appendSymbols(
+        el("span"),
+        t("sales.actuator.suitable", { trms: qty(candidate.rms_torque_nm, "Nm", state.lang) }),
+      ),
+    );
   }
 }
 
@@ -243,9 +351,8 @@ async function loadSelection(id) {
   try {
     selection = await call("GET", `/selections/${encodeURIComponent(id)}`);
   } catch (error) {
-    showFieldError(
-      "err-selection_id",
-      error.status === 404 ? `There is no stored selection “${id}”.` : error.message,
+    showFieldError("err-selection_id", () =>
+      error.status === 404 ? t("sales.selection.missing", { id }) : errorText(error),
     );
     return;
   }
@@ -254,15 +361,30 @@ async function loadSelection(id) {
   url.searchParams.set("selection", selection.id);
   history.replaceState(null, "", url);
   $("engineer-link").href = `/?selection=${encodeURIComponent(selection.id)}`;
+  const canQuote = fillCandidates(selection);
   const box = $("selection-summary");
-  box.replaceChildren(el("h3", {}, `Selection ${selection.id}`), summary(selection));
+  show(box, () => [
+    el("h3", {}, t("sales.selection.heading", { id: selection.id })),
+    summary(selection),
+    canQuote ? null : el("p", { className: "notice notice-error" }, t("sales.selection.none_quotable")),
+  ]);
   box.hidden = false;
-  if (!fillCandidates(selection)) {
-    box.append(el("p", { className: "notice notice-error" }, "No candidate of this selection can be quoted: all are unsuitable."));
-    return;
-  }
+  if (!canQuote) return;
   $("quote-form").hidden = false;
   await loadPriceLists();
+}
+
+/** The price lists as options, in the page's language; keeps the choice. */
+function renderPriceLists() {
+  const select = $("f-price-list");
+  const chosen = select.value;
+  select.replaceChildren(
+    ...state.priceLists.map((list) => {
+      const name = list.is_example ? t("sales.price_list.example", { name: list.name }) : list.name;
+      return el("option", { value: list.name }, `${name} — ${list.currencies.join(", ")}`);
+    }),
+  );
+  if (chosen) select.value = chosen;
 }
 
 async function loadPriceLists() {
@@ -270,22 +392,15 @@ async function loadPriceLists() {
     try {
       state.priceLists = await call("GET", "/price-lists");
     } catch (error) {
-      formStatus(`Price lists could not be loaded: ${error.message}`);
+      formStatus(() => [t("sales.price_list.unavailable"), errorText(error)]);
       return;
     }
   }
   const select = $("f-price-list");
   const chosen = select.value;
-  select.replaceChildren();
-  for (const list of state.priceLists) {
-    const label = list.is_example ? `${list.name} (example prices)` : list.name;
-    select.append(el("option", { value: list.name }, `${label} — ${list.currencies.join(", ")}`));
-  }
-  if (!state.priceLists.length) {
-    formStatus("There is no price list yet: an administrator imports one first.");
-  }
-  if (chosen) select.value = chosen;
-  else {
+  renderPriceLists();
+  if (!state.priceLists.length) formStatus(() => t("sales.price_list.none"));
+  if (!chosen) {
     const real = state.priceLists.find((l) => !l.is_example);
     if (real) select.value = real.name;
   }
@@ -322,7 +437,7 @@ function requestBody() {
     customer: { name: text("f-customer") },
     actuator: { model: $("f-model").value, quantity: Number($("f-qty").value) },
     price_list: $("f-price-list").value,
-    discount_percent: text("f-discount") || "0",
+    discount_percent: decimalText(text("f-discount")) || "0",
     valid_until: $("f-valid").value,
   };
   if (text("f-address")) body.customer.address = $("f-address").value;
@@ -346,19 +461,21 @@ function showErrors(error) {
     const loc = e.loc || [];
     const id =
       loc[0] === "body" ? `err-${loc.slice(1).filter((p) => typeof p === "string").join("-")}` : "";
-    if (id && showFieldError(id, e.msg)) shown += 1;
+    if (id && showFieldError(id, () => english(e.msg))) shown += 1;
     else other.push(e.msg);
   }
-  const lead = shown ? "Please correct the marked fields." : "";
-  formStatus([lead, ...other].filter(Boolean).join(" ") || error.message);
+  formStatus(() => {
+    if (!shown && !other.length) return errorText(error);
+    return [shown ? `${t("sales.form.correct")} ` : null, other.length ? english(other.join(" ")) : null];
+  });
 }
 
 async function createQuote(event) {
   event.preventDefault();
   clearErrors();
   if (!text("f-customer")) {
-    showFieldError("err-customer-name", "The customer's name is required.");
-    formStatus("Please correct the marked fields.");
+    showFieldError("err-customer-name", () => t("sales.customer.name.required"));
+    formStatus(() => t("sales.form.correct"));
     return;
   }
   const button = $("create-quote");
@@ -374,7 +491,7 @@ async function createQuote(event) {
   } catch (error) {
     if (error.status === 0) {
       // Unknown whether it arrived: sending again with the same key cannot make a second quote.
-      formStatus("The server could not be reached. Send again: the quote will not be created twice.");
+      formStatus(() => t("sales.form.unreached"));
     } else if (error.status !== 401) {
       showErrors(error);
     }
@@ -385,21 +502,22 @@ async function createQuote(event) {
 
 function showCreated(quote) {
   const box = $("created");
-  const flags = [];
-  if (quote.price_list.is_example) flags.push("example prices, not real ones");
-  if (quote.unconfirmed) flags.push("suitability unconfirmed");
-  box.replaceChildren(
-    el(
-      "p",
-      {},
-      "Quote ",
-      el("strong", { className: "quote-number" }, quote.number),
-      ` created: total ${money(quote.total, quote.currency)}`,
-      flags.length ? ` (${flags.join("; ")})` : "",
-      ". ",
-    ),
-    documentButton(quote.number),
-  );
+  show(box, () => {
+    const flags = [];
+    if (quote.price_list.is_example) flags.push(t("sales.created.example"));
+    if (quote.unconfirmed) flags.push(t("sales.created.unconfirmed"));
+    const number = el("strong", { className: "quote-number" }, quote.number);
+    return [
+      el(
+        "p",
+        {},
+        ...withNodes("sales.created", { number }, { total: money(quote.total, quote.currency) }),
+        flags.length ? ` (${flags.join("; ")})` : "",
+        ". ",
+      ),
+      documentButton(quote.number),
+    ];
+  });
   box.hidden = false;
   box.focus?.();
 }
@@ -410,19 +528,20 @@ function documentButton(number) {
   return el(
     "button",
     { type: "button", className: "document-button", onclick: () => openDocument(number) },
-    "Open document",
+    t("sales.document.open"),
   );
 }
 
 async function openDocument(number) {
   // Opened now, inside the click, so that a popup blocker lets it through; filled below.
+  // The document itself is English; only the words around it follow the page.
   const win = window.open("", "_blank");
   if (!win) {
-    $("list-status").textContent = "The browser blocked the new window; allow pop-ups for this page.";
+    show($("list-status"), () => t("sales.document.blocked"));
     return;
   }
-  win.document.title = `Quote ${number}`;
-  win.document.body.textContent = "Loading the quote …";
+  win.document.title = t("sales.document.title", { number });
+  win.document.body.textContent = t("sales.document.loading");
   try {
     const html = await call("GET", `/quotes/${encodeURIComponent(number)}/document`, {
       accept: "text/html",
@@ -431,21 +550,25 @@ async function openDocument(number) {
     win.document.write(html);
     win.document.close();
   } catch (error) {
-    win.document.body.textContent = `The document could not be loaded: ${error.message}`;
+    win.document.body.textContent = `${t("sales.document.failed")}${error.message}`;
   }
 }
 
 async function move(number, status) {
   try {
     await call("POST", `/quotes/${encodeURIComponent(number)}/status`, { body: { status } });
-    $("list-status").textContent = `${number} is now ${status}.`;
+    state.listNote = () => t("sales.list.moved", { number, status: statusName(status) });
   } catch (error) {
-    if (error.status !== 401) $("list-status").textContent = `${number}: ${error.message}`;
+    if (error.status !== 401) state.listNote = () => [`${number}: `, errorText(error)];
   }
   await search({ keepOffset: true });
 }
 
-const ACTION_LABELS = { sent: "Mark sent", accepted: "Accepted", rejected: "Rejected" };
+const ACTION_KEYS = {
+  sent: "sales.action.sent",
+  accepted: "sales.action.accepted",
+  rejected: "sales.action.rejected",
+};
 
 function row(quote) {
   const actions = el("div", { className: "actions-cell" }, documentButton(quote.number));
@@ -454,24 +577,41 @@ function row(quote) {
       el(
         "button",
         { type: "button", className: `move move-${status}`, onclick: () => move(quote.number, status) },
-        ACTION_LABELS[status] || status,
+        ACTION_KEYS[status] ? t(ACTION_KEYS[status]) : status,
       ),
     );
   }
-  const flags = [];
-  if (quote.price_list.is_example) flags.push(el("span", { className: "tag tag-example" }, "example prices"));
-  if (quote.unconfirmed) flags.push(el("span", { className: "tag tag-warn" }, "unconfirmed"));
+  const tag = (kind, key) => el("span", { className: `tag tag-${kind}` }, t(key));
+  const flags = [
+    quote.price_list.is_example ? tag("example", "sales.tag.example") : null,
+    quote.unconfirmed ? tag("warn", "sales.tag.unconfirmed") : null,
+  ];
+  const reference = quote.customer.reference;
   return el(
     "tr",
     { dataset: { number: quote.number } },
     el("td", { className: "mono" }, quote.number),
-    el("td", {}, quote.customer.name, quote.customer.reference ? el("div", { className: "hint" }, quote.customer.reference) : null),
+    el("td", {}, quote.customer.name, reference ? el("div", { className: "hint" }, reference) : null),
     el("td", {}, quote.actuator_model, " ", ...flags),
     el("td", { className: "num" }, money(quote.total, quote.currency)),
-    el("td", {}, el("span", { className: `status status-${quote.status}` }, quote.status)),
-    el("td", { className: "date" }, quote.valid_until),
+    el(
+      "td",
+      {},
+      el(
+        "span",
+        { className: `status status-${quote.status}`, dataset: { status: quote.status } },
+        statusName(quote.status),
+      ),
+    ),
+    el("td", { className: "date" }, el("time", { dateTime: quote.valid_until }, day(quote.valid_until))),
     el("td", {}, actions),
   );
+}
+
+function listCount(total, filtered) {
+  if (!total) return t(filtered ? "sales.list.no_match" : "sales.list.none");
+  const form = new Intl.PluralRules(localeOf(state.lang)).select(total) === "one" ? "one" : "other";
+  return t(`sales.list.count.${form}`, { n: count(total) });
 }
 
 async function search({ append = false, keepOffset = false } = {}) {
@@ -482,27 +622,47 @@ async function search({ append = false, keepOffset = false } = {}) {
   const status = $("status-filter").value;
   if (q) params.set("q", q);
   if (status) params.set("status", status);
+  const note = state.listNote;
+  state.listNote = null;
   let page;
   try {
     page = await call("GET", `/quotes?${params}`);
   } catch (error) {
-    if (error.status !== 401) $("list-status").textContent = error.message;
+    if (error.status !== 401) show($("list-status"), () => errorText(error));
     return;
   }
-  const body = $("quotes").tBodies[0];
-  if (!append) body.replaceChildren();
-  for (const quote of page.quotes) body.append(row(quote));
-  state.offset = body.rows.length;
+  state.quotes = append ? [...state.quotes, ...page.quotes] : page.quotes;
+  show($("quotes").tBodies[0], () => state.quotes.map(row));
+  state.offset = state.quotes.length;
   $("more").hidden = state.offset >= page.total;
-  if (!page.total) $("list-status").textContent = q || status ? "No quote matches." : "No quotes yet.";
-  else if (!$("list-status").textContent.includes(" is now ")) {
-    $("list-status").textContent = `${page.total} quote${page.total === 1 ? "" : "s"}.`;
+  show($("list-status"), note ?? (() => listCount(page.total, Boolean(q || status))));
+}
+
+// --- language ---------------------------------------------------------------------------
+
+function applyLang(lang) {
+  state.lang = LANGS.includes(lang) ? lang : "de";
+  document.documentElement.lang = state.lang;
+  applyStaticTexts(document, state.lang);
+  for (const button of document.querySelectorAll(".lang-button")) {
+    button.setAttribute("aria-pressed", String(button.dataset.lang === state.lang));
   }
+  document.title = `${t("sales.title")} · ${t("app.title")}`;
+  for (const [node, render] of localized) node.replaceChildren(...children(render));
+  if (state.selection) renderCandidates();
+  renderPriceLists();
 }
 
 // --- start ------------------------------------------------------------------------------
 
 async function start() {
+  applyLang(initialLang());
+  for (const button of document.querySelectorAll(".lang-button")) {
+    button.addEventListener("click", () => {
+      rememberLang(button.dataset.lang);
+      applyLang(button.dataset.lang);
+    });
+  }
   $("f-valid").value = isoDate(30);
   $("key-form").addEventListener("submit", async (event) => {
     event.preventDefault();
@@ -510,7 +670,7 @@ async function start() {
     $("api-key").value = "";
     if (key && (await signIn(key))) await afterSignIn();
   });
-  $("sign-out").addEventListener("click", () => signedOut(""));
+  $("sign-out").addEventListener("click", () => signedOut(null));
   $("selection-form").addEventListener("submit", (event) => {
     event.preventDefault();
     const id = $("selection-id").value.trim();
@@ -521,14 +681,13 @@ async function start() {
   $("quote-form").addEventListener("submit", createQuote);
   $("search-form").addEventListener("submit", (event) => {
     event.preventDefault();
-    $("list-status").textContent = "";
     search();
   });
   $("more").addEventListener("click", () => search({ append: true }));
 
   const stored = apiKey();
   if (stored && (await signIn(stored))) await afterSignIn();
-  else if (!stored) signedOut("");
+  else if (!stored) signedOut(null);
 }
 
 async function afterSignIn() {

@@ -29,11 +29,6 @@ WORKED_EXAMPLE: dict[str, Any] = {**worked_example.request(), "high_dynamics": T
 """The chapter's worked example (Table 516.1), without a model restriction."""
 
 
-def build_app(settings: Settings) -> FastAPI:
-    """The service as ``main.py`` builds it, every router wired."""
-    return create_app(settings)
-
-
 class FakeClock(Clock):
     """A clock the test moves: starts now (UTC), ``advance`` steps forward."""
 
@@ -139,7 +134,7 @@ def sales_api_factory(
 
     def make(**settings: Any) -> SalesApi:
         url = seeded_engine.url.render_as_string(hide_password=False)
-        app = build_app(Settings(database_url=url, **settings))
+        app = create_app(Settings(database_url=url, **settings))
         app.state.session_factory = sessionmaker(
             bind=connection, join_transaction_mode="create_savepoint", expire_on_commit=False
         )

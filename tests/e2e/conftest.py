@@ -66,6 +66,17 @@ def chromium_path() -> str | None:
 
 
 @pytest.fixture(scope="session")
+def screenshot_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Where screenshots go: $E2E_SCREENSHOT_DIR, else a pytest temp dir under /tmp."""
+    configured = os.environ.get("E2E_SCREENSHOT_DIR")
+    if configured:
+        path = Path(configured)
+        path.mkdir(parents=True, exist_ok=True)
+        return path
+    return tmp_path_factory.mktemp("screenshots")
+
+
+@pytest.fixture(scope="session")
 def chromium_executable() -> str:
     """Chromium's path; skip (or fail in CI) when it is missing."""
     path = chromium_path()

@@ -8,7 +8,6 @@ by hand rather than read back from the service.
 from __future__ import annotations
 
 import math
-import os
 import re
 from pathlib import Path
 from typing import Any, cast
@@ -135,17 +134,6 @@ def row_value(page: Page, model: str, field: str) -> str:
     return page.locator(
         f'#ranking-table tr[data-model="{model}"] td[data-field="{field}"]'
     ).inner_text()
-
-
-@pytest.fixture(scope="session")
-def screenshot_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Where screenshots go: $E2E_SCREENSHOT_DIR, else a pytest temp dir under /tmp."""
-    configured = os.environ.get("E2E_SCREENSHOT_DIR")
-    if configured:
-        path = Path(configured)
-        path.mkdir(parents=True, exist_ok=True)
-        return path
-    return tmp_path_factory.mktemp("screenshots")
 
 
 # ---------------------------------------------------------------- tests

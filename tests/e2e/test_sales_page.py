@@ -1,31 +1,38 @@
-"""The sales page in Chromium: key once, quote from a selection, status, printable document.
+"""The sales page in Chromium: key once, quote from a selection, status, printable document,
+in English and in German (the language chosen on either page).
 
-The app is served with the sales routers wired (``build_app``, as ``main.py`` is to
-be), on a database of its own holding the starter catalogue, the example price
-list and a sales key. The browser fixtures come from ``tests/e2e/conftest.py``.
+The app is served as ``main.py`` builds it, on a database of its own holding the
+starter catalogue, the example price list and a sales key. The browser fixtures
+come from ``tests/e2e/conftest.py``.
 """
 
 from __future__ import annotations
 
+import re
 import socket
 import threading
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass
-from datetime import UTC, datetime
+from datetime import UTC, date, datetime, timedelta
 from pathlib import Path
 
 import httpx
 import pytest
 import uvicorn
 from playwright.sync_api import Browser, Page, expect
-from tests.api._sales_fixtures import WORKED_EXAMPLE, build_app, load_example_prices
+from tests.api._sales_fixtures import (
+    EXAMPLE_PRICE_LIST,
+    WORKED_EXAMPLE,
+    load_example_prices,
+)
 
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.sales import ApiKeyRepository
 from actuator_selection.db.seed import load_seed
+from actuator_selection.main import create_app
 
 pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
@@ -65,7 +72,7 @@ def _database(directory: Path) -> tuple[str, str, str]:
 @pytest.fixture(scope="module")
 def site(tmp_path_factory: pytest.TempPathFactory, chromium_executable: str) -> Iterator[SalesSite]:
     url, sales, admin = _database(tmp_path_factory.mktemp("sales-e2e"))
-    app = build_app(Settings(database_url=url))
+    app = create_app(Settings(database_url=url))
     sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     sock.bind(("127.0.0.1", 0))
     port = sock.getsockname()[1]
@@ -88,7 +95,9 @@ def site(tmp_path_factory: pytest.TempPathFactory, chromium_executable: str) -> 
 
 @pytest.fixture
 def sales_page(browser: Browser, site: SalesSite) -> Iterator[Page]:
-    context = browser.new_context(viewport={"width": 1280, "height": 900}, base_url=site.url)
+    context = browser.new_context(
+        viewport={"width": 1280, "height": 900}, locale="en-US", base_url=site.url
+    )
     context.set_default_timeout(15_000)
     foreign: list[str] = []
     context.on(
@@ -202,3 +211,297 @@ def test_an_unknown_selection_is_named(sales_page: Page, site: SalesSite) -> Non
     sign_in(page, site.sales_key)
     expect(page.locator("#err-selection_id")).to_contain_text("no stored selection")
     expect(page.locator("#quote-form")).to_be_hidden()
+
+
+# ---------------------------------------------------------------- German / English
+
+LANG_STORAGE = "actuator-selection.lang"
+"""The localStorage entry both pages read (frontend/js/i18n.js)."""
+PAIR = ["FHA-25C-50-L", "FHA-8C-30"]
+"""The worked example's actuator (unconfirmed) and one too small for it (unsuitable)."""
+
+
+def german_date(iso: str) -> str:
+    """A day as a German reader writes it: "2025-07-31" → "31.07.2025"."""
+    return date.fromisoformat(iso).strftime("%d.%m.%Y")
+
+
+def create_quote(site: SalesSite, selection: str, customer: str) -> str:
+    """A draft quote for the worked example's actuator, made through the API; its number."""
+    body = {
+        "selection_id": selection,
+        "customer": {"name": customer, "reference": "Anfrage 4711"},
+        "actuator": {"model": "FHA-25C-50-L", "quantity": 2},
+        "price_list": EXAMPLE_PRICE_LIST,
+        "discount_percent": "7.5",
+        "valid_until": (date.today() + timedelta(days=30)).isoformat(),
+    }
+    response = httpx.post(
+        f"{site.url}/api/v1/quotes",
+        json=body,
+        headers={"Authorization": f"Bearer {site.sales_key}"},
+        timeout=30,
+    )
+    assert response.status_code == 201, response.text
+    return str(response.json()["number"])
+
+
+def assert_no_untranslated_keys(page: Page) -> None:
+    """No dictionary key, placeholder or JavaScript artefact reached the screen."""
+    text = page.locator("body").inner_text()
+    assert not re.search(r"\b(sales|quote|verdict|summary)\.[a-z_.]+", text), text
+    for artefact in ("{", "}", "undefined", "[object", "NaN"):
+        assert artefact not in text, artefact
+
+
+def test_german_labels_and_the_choice_survives_a_reload(sales_page: Page, site: SalesSite) -> None:
+    page = sales_page
+    page.goto("/sales.html")
+    # an English browser and nothing remembered: English
+    expect(page.locator("html")).to_have_attribute("lang", "en")
+    expect(page.locator("h1")).to_have_text("Quotes")
+    expect(page.locator("#key-heading")).to_have_text("API key")
+    page.get_by_role("button", name="Deutsch").click()
+    expect(page.locator("html")).to_have_attribute("lang", "de")
+    expect(page.get_by_role("button", name="Deutsch")).to_have_attribute("aria-pressed", "true")
+    expect(page.get_by_role("button", name="English")).to_have_attribute("aria-pressed", "false")
+    expect(page.locator("h1")).to_have_text("Angebote")
+    expect(page.locator("#key-heading")).to_have_text("API-Schlüssel")
+    expect(page.locator("#key-panel p").first).to_contain_text(
+        "Angebote erfordern einen API-Schlüssel der Rolle sales"
+    )
+    expect(page.locator("label[for=api-key]")).to_have_text("Schlüssel")
+    expect(page.locator("#key-form button[type=submit]")).to_have_text("Schlüssel verwenden")
+    assert page.title() == "Angebote · Antriebsauslegung"
+    assert page.evaluate(f"localStorage.getItem('{LANG_STORAGE}')") == "de"
+
+    sign_in(page, "asel_0123456789ab_" + "A" * 43)
+    expect(page.locator("#key-error")).to_have_text(
+        "Der API-Schlüssel wurde nicht akzeptiert. Bitte einen gültigen Schlüssel eingeben."
+    )
+    sign_in(page, site.admin_key)
+    expect(page.locator("#key-error")).to_contain_text("hat die Rolle „admin“")
+    sign_in(page, site.sales_key)
+    expect(page.locator("#who")).to_contain_text("Anna Vertrieb (Vertriebsschlüssel ")
+    expect(page.locator("#sign-out")).to_have_text("Abmelden")
+    expect(page.locator("#engineer-link")).to_have_text("Antriebsauslegung")
+    expect(page.locator("#create-heading")).to_have_text("Neues Angebot")
+    expect(page.locator("label[for=selection-id]")).to_have_text("Auswahl")
+    expect(page.locator("#selection-id")).to_have_attribute(
+        "placeholder", "Auswahl-ID aus der Antriebsauslegung"
+    )
+    expect(page.locator("#selection-form button")).to_have_text("Auswahl laden")
+    expect(page.locator("#list-heading")).to_have_text("Angebote")
+    expect(page.locator("label[for=q]")).to_have_text("Suche")
+    expect(page.locator("#q")).to_have_attribute(
+        "placeholder", "Nummer, Kunde, Referenz oder Antrieb"
+    )
+    expect(page.locator("#search-form button")).to_have_text("Suchen")
+    expect(page.locator("#status-filter option")).to_have_text(
+        ["alle", "Entwurf", "versendet", "angenommen", "abgelehnt", "abgelaufen"]
+    )
+    # the API still gets its own words
+    values = page.locator("#status-filter option").evaluate_all("os => os.map(o => o.value)")
+    assert values == ["", "draft", "sent", "accepted", "rejected", "expired"]
+    expect(page.locator("#quotes thead th")).to_have_text(
+        ["Nummer", "Kunde", "Antrieb", "Gesamt", "Status", "Gültig bis", "Aktionen"]
+    )
+    expect(page.locator("#list-status")).to_have_text(
+        re.compile(r"^(Noch keine Angebote\.|\d+ Angebot(e)?\.)$")
+    )
+
+    # remembered: a reload comes back in German, without asking for the key again
+    page.reload()
+    expect(page.locator("html")).to_have_attribute("lang", "de")
+    expect(page.locator("#list-heading")).to_have_text("Angebote")
+    expect(page.locator("#quotes thead th").nth(5)).to_have_text("Gültig bis")
+    assert_no_untranslated_keys(page)
+
+    page.get_by_role("button", name="English").click()
+    expect(page.locator("#list-heading")).to_have_text("Quotes")
+    expect(page.locator("#quotes thead th").nth(5)).to_have_text("Valid until")
+    expect(page.locator("#status-filter option").nth(1)).to_have_text("draft")
+    assert page.evaluate(f"localStorage.getItem('{LANG_STORAGE}')") == "en"
+    page.reload()
+    expect(page.locator("#list-heading")).to_have_text("Quotes")
+
+
+def test_the_language_carries_over_between_the_pages(sales_page: Page, site: SalesSite) -> None:
+    page = sales_page
+    page.goto("/")
+    expect(page.locator("#submit")).to_have_text("Select actuators")
+    page.get_by_role("button", name="Deutsch").click()
+    expect(page.locator("#submit")).to_have_text("Antriebe auswählen")
+
+    page.goto("/sales.html")
+    expect(page.locator("html")).to_have_attribute("lang", "de")
+    expect(page.locator("h1")).to_have_text("Angebote")
+    expect(page.get_by_role("button", name="Deutsch")).to_have_attribute("aria-pressed", "true")
+    sign_in(page, site.sales_key)
+    expect(page.locator("#create-heading")).to_have_text("Neues Angebot")
+
+    # and back: English chosen here is English on the engineer's page
+    page.get_by_role("button", name="English").click()
+    expect(page.locator("#create-heading")).to_have_text("New quote")
+    page.locator("#engineer-link").click()
+    expect(page.locator("#submit")).to_have_text("Select actuators")
+    expect(page.locator("html")).to_have_attribute("lang", "en")
+
+
+def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None:
+    page = sales_page
+    chosen = selection_id(site, PAIR)
+    page.goto(f"/sales.html?selection={chosen}")
+    page.get_by_role("button", name="Deutsch").click()
+    sign_in(page, site.sales_key)
+    expect(page.locator("#quote-form")).to_be_visible(timeout=SLOW_MS)
+
+    summary = page.locator("#selection-summary")
+    expect(summary.locator("h3")).to_have_text(f"Auswahl {chosen}")
+    expect(summary.locator("dt")).to_have_text(["Last", "Zyklus", "Antriebe", "Katalog"])
+    expect(summary).to_contain_text("= 40\u202fmin⁻¹")
+    expect(summary).to_contain_text("= 1,3\u202fkgm²")
+    expect(summary).to_contain_text("= 0,1\u202fs")
+    expect(summary).to_contain_text("Einschaltdauer 23,08\u202f%")
+    expect(summary).to_contain_text("0 geeignet, 1 nicht bestätigt, 1 ungeeignet")
+    expect(summary).to_contain_text("Version ")
+    expect(summary).to_contain_text(", Auswahl vom ")
+
+    expect(page.locator("#f-model option")).to_have_text(
+        ["FHA-25C-50-L — nicht bestätigt", "FHA-8C-30 – ungeeignet, nicht anbietbar"]
+    )
+    expect(page.locator("#f-model option[value='FHA-8C-30']")).to_be_disabled()
+    hint = page.locator("#hint-model")
+    expect(hint).to_contain_text("Nicht bestätigt – das Angebot weist darauf hin: ")
+    expect(hint.locator("span[lang=en]")).not_to_be_empty()  # the API's reasons, as sent
+    expect(page.locator("#quote-form legend")).to_have_text(
+        ["Servoantrieb", "Servoregler (optional)", "Kunde", "Preise und Konditionen"]
+    )
+    expect(page.locator("label[for=f-model]")).to_have_text("Antrieb aus der Auswahl")
+    expect(page.locator("label[for=f-qty]")).to_have_text("Stückzahl")
+    expect(page.locator("label[for=f-ctrl-name]")).to_have_text("Typbezeichnung für den Kunden")
+    expect(page.locator("#f-ctrl-name")).to_have_attribute(
+        "placeholder", "z. B. SINAMICS S120, 400 V, 5 A"
+    )
+    expect(page.locator("label[for=f-ctrl-code]")).to_have_text("Artikelnummer in der Preisliste")
+    expect(page.locator("label[for=f-address]")).to_have_text("Anschrift")
+    expect(page.locator("label[for=f-price-list]")).to_have_text("Preisliste")
+    expect(page.locator("#f-price-list option").first).to_contain_text(
+        f"{EXAMPLE_PRICE_LIST} (Beispielpreise) — EUR"
+    )
+    expect(page.locator("#example-warning")).to_have_text(
+        "Beispielpreise – keine echten Preise. Ein solches Angebot nicht an Kunden senden."
+    )
+    expect(page.locator("label[for=f-currency]")).to_have_text(
+        "Währung (falls die Liste mehrere führt)"
+    )
+    expect(page.locator("label[for=f-discount]")).to_have_text("Rabatt [%]")
+    expect(page.locator("label[for=f-valid]")).to_have_text("Gültig bis")
+    expect(page.locator("label[for=f-notes]")).to_have_text("Anmerkungen zum Angebot")
+    expect(page.locator("#create-quote")).to_have_text("Angebot erstellen")
+    assert_no_untranslated_keys(page)
+
+    # the page's own error texts are German
+    page.click("#create-quote")
+    expect(page.locator("#err-customer-name")).to_have_text("Der Name des Kunden ist erforderlich.")
+    expect(page.locator("#form-status")).to_have_text("Bitte die markierten Felder korrigieren.")
+
+    customer = "Beispiel Maschinenbau GmbH"
+    page.fill("#f-customer", customer)
+    page.fill("#f-ctrl-name", "SINAMICS S120, 400 V")
+    page.fill("#f-ctrl-code", "CTRL-SINAMICS-S120")
+    page.fill("#f-qty", "2")
+    page.fill("#f-ctrl-qty", "2")
+    page.fill("#f-discount", "7,5")  # a German decimal comma is read as 7.5
+    valid_until = page.locator("#f-valid").input_value()
+    page.click("#create-quote")
+    created = page.locator("#created")
+    expect(created).to_contain_text("erstellt: Gesamtbetrag 8.861,50 EUR", timeout=SLOW_MS)
+    expect(created).to_contain_text(
+        "(Beispielpreise, keine echten Preise; Eignung nicht bestätigt)."
+    )
+    number = page.locator("#created .quote-number").inner_text()
+    assert number.startswith("Q-")
+    expect(created.locator("p")).to_contain_text(f"Angebot {number} erstellt")
+    expect(created.get_by_role("button", name="Dokument öffnen")).to_be_visible()
+
+    row = page.locator(f"#quotes tr[data-number='{number}']")
+    expect(row.locator("td.num")).to_have_text("8.861,50 EUR")
+    expect(row.locator("td.date")).to_have_text(german_date(valid_until))
+    expect(row.locator(".tag")).to_have_text(["Beispielpreise", "nicht bestätigt"])
+    expect(row.locator(".status")).to_have_text("Entwurf")
+    expect(row.locator(".status")).to_have_attribute("data-status", "draft")
+
+    row.get_by_role("button", name="Als versendet markieren").click()
+    expect(row.locator(".status")).to_have_text("versendet")
+    expect(page.locator("#list-status")).to_have_text(f"{number} ist jetzt versendet.")
+    row.get_by_role("button", name="Angenommen").click()
+    expect(row.locator(".status")).to_have_text("angenommen")
+    expect(row.get_by_role("button", name="Als versendet markieren")).to_have_count(0)
+    stored = httpx.get(
+        f"{site.url}/api/v1/quotes/{number}",
+        headers={"Authorization": f"Bearer {site.sales_key}"},
+        timeout=30,
+    )
+    assert stored.json()["status"] == "accepted"  # the API keeps its English values
+
+    # search by number and by a translated status
+    page.fill("#q", number)
+    page.select_option("#status-filter", label="angenommen")
+    page.get_by_role("button", name="Suchen").click()
+    expect(page.locator("#quotes tbody tr")).to_have_count(1)
+    expect(page.locator("#list-status")).to_have_text("1 Angebot.")
+    page.select_option("#status-filter", label="abgelehnt")
+    page.get_by_role("button", name="Suchen").click()
+    expect(page.locator("#quotes tbody tr")).to_have_count(0)
+    expect(page.locator("#list-status")).to_have_text("Kein Angebot gefunden.")
+    page.select_option("#status-filter", label="alle")
+    page.fill("#q", customer)
+    page.get_by_role("button", name="Suchen").click()
+    expect(row).to_be_visible()
+    assert_no_untranslated_keys(page)
+
+    # the quote document stays English, whatever the page's language
+    with page.expect_popup() as popup:
+        row.get_by_role("button", name="Dokument öffnen").click()
+    document = popup.value
+    expect(document.locator("[data-field=total]")).to_have_text("8,861.50 EUR", timeout=SLOW_MS)
+    document.close()
+
+    # switching back rewrites what is already on the page
+    page.get_by_role("button", name="English").click()
+    expect(row.locator(".status")).to_have_text("accepted")
+    expect(row.locator("td.num")).to_have_text("8,861.50 EUR")
+    expect(created).to_contain_text("created: total 8,861.50 EUR")
+    expect(page.locator("#hint-model")).to_contain_text("Unconfirmed — the quote will say so: ")
+    expect(summary).to_contain_text("Duty cycle 23.08\u202f%")
+    expect(page.locator("#list-status")).to_have_text("1 quote.")
+
+
+@pytest.mark.parametrize("width", [1280, 375], ids=["1280px", "375px"])
+def test_german_layout_fits_and_screenshots(
+    width: int, browser: Browser, site: SalesSite, screenshot_dir: Path
+) -> None:
+    chosen = selection_id(site, PAIR)
+    create_quote(site, chosen, "Muster Antriebstechnik GmbH & Co. KG")
+    context = browser.new_context(
+        viewport={"width": width, "height": 900}, locale="en-US", base_url=site.url
+    )
+    try:
+        page = context.new_page()
+        page.goto(f"/sales.html?selection={chosen}")
+        page.get_by_role("button", name="Deutsch").click()
+        sign_in(page, site.sales_key)
+        expect(page.locator("#quote-form")).to_be_visible(timeout=SLOW_MS)
+        expect(page.locator("#quotes tbody tr").first).to_contain_text("Muster Antriebstechnik")
+        expect(page.locator("#create-quote")).to_have_text("Angebot erstellen")
+        # nothing wider than the window: the quote table scrolls inside its own box
+        assert page.evaluate("document.documentElement.scrollWidth") <= width
+        for selector in (".sales-header", "#create-panel", "#list-panel", ".table-wrap"):
+            box = page.locator(selector).bounding_box()
+            assert box is not None
+            assert box["x"] >= 0
+            assert box["x"] + box["width"] <= width, selector
+        page.screenshot(path=str(screenshot_dir / f"sales-de-{width}.png"), full_page=True)
+    finally:
+        context.close()
