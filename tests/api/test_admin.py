@@ -88,6 +88,8 @@ def seed_message(column: str, value: str) -> str:
         ("temperature", 1, None),
         ("model", "M" * 61, "M" * 61),
         ("mass_kg", True, "true"),
+        ("gear_ratio", "1e308", "1e308"),
+        ("max_speed_rpm", "1000001", "1000001"),
     ],
 )
 def test_writes_obey_the_seed_files_rules(

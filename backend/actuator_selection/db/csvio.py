@@ -35,16 +35,20 @@ class Column:
 
     ``scale`` converts the published unit into the stored SI unit once, at the
     edge (e.g. 10⁻³ A/rpm → A/rpm); ``target`` names the stored attribute when it
-    differs from the column name. ``max_length`` bounds a text cell (the column's
-    width in the database). ``convert`` turns a non-empty text cell into its value
-    (a date, a decimal amount, a choice, ...) and raises ``ValueError("must be
-    ...")`` naming the rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`.
+    differs from the column name. ``magnitude`` bounds a number's size in the
+    published unit: no catalogue value comes near 10⁶ (torques, speeds, voltages,
+    ohms, seconds), so a larger one is a typo or garbage, not a part.
+    ``max_length`` bounds a text cell (the column's width in the database).
+    ``convert`` turns a non-empty text cell into its value (a date, a decimal
+    amount, a choice, ...) and raises ``ValueError("must be ...")`` naming the
+    rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`.
     """
 
     name: str
     numeric: bool = False
     required: bool = False
     rule: Rule = Rule.ANY
+    magnitude: float = 1e6
     scale: float = 1.0
     target: str | None = None
     max_length: int | None = None
@@ -206,6 +210,13 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
             line=line,
             column=column.name,
             message=f"must be {column.rule.value}, got {text!r}",
+        )
+    if abs(value) > column.magnitude:
+        return None, Problem(
+            file=spec.file,
+            line=line,
+            column=column.name,
+            message=f"must be at most {column.magnitude:g} in size, got {text!r}",
         )
     return value * column.scale, None
 
