@@ -33,7 +33,7 @@ from actuator_selection.schemas.batch import (
     candidate_body,
     result_body,
 )
-from actuator_selection.schemas.controllers import controllers_note, drive_options_out
+from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
 from actuator_selection.schemas.selections import RANKING_RULE, SelectionOut
 
 router = APIRouter(tags=["selections"])
@@ -139,6 +139,7 @@ class _Drives:
         self._context = context
         self._summaries: dict[str, tuple[int, str]] = {}
         self._lists: dict[tuple[str, float], list[dict[str, Any]]] = {}
+        self._bodies = DriveOptionBodies()
 
     def summary(self, actuator: Actuator, speed_rpm: float) -> tuple[int, str]:
         """``controllers_excluded`` and ``controllers_note``.
@@ -158,7 +159,9 @@ class _Drives:
         found = self._lists.get(key)
         if found is None:
             drive = self._context.options(actuator, speed_rpm=speed_rpm)
-            found = self._lists[key] = [o.model_dump(mode="json") for o in drive_options_out(drive)]
+            found = self._lists[key] = [
+                o.model_dump(mode="json") for o in self._bodies.controllers(drive)
+            ]
         return found
 
 

@@ -16,10 +16,10 @@ from dataclasses import dataclass
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.compatibility import (
     ActuatorInterface,
+    CompatibilityResult,
     Controller,
     ControllerMatch,
     MatchVerdict,
-    match_controllers,
 )
 from actuator_selection.core.electrical import (
     DcBusClass,
@@ -60,6 +60,20 @@ def _no_voltage_data(reason: str) -> Check:
     )
 
 
+def _shared_bus_classes(
+    *, interface: ActuatorInterface, controller: Controller, buses: Sequence[DcBusClass]
+) -> tuple[DcBusClass, ...]:
+    """The bus classes of ``buses`` (in their order) that both the actuator and the controller
+    run on; empty when the actuator's bus class is not published."""
+    if interface.bus_classes is None:
+        return ()
+    return tuple(
+        b
+        for b in buses
+        if b.bus_class in interface.bus_classes and controller.level(b.bus_class) is not None
+    )
+
+
 def voltage_check(
     *,
     actuator: Actuator,
@@ -75,6 +89,22 @@ def voltage_check(
     saying whether it is rms or peak, comparing with an rms bus voltage would be
     a guess, so those pairs say "no data".
     """
+    return _voltage_check(
+        actuator=actuator,
+        interface=interface,
+        shared=_shared_bus_classes(interface=interface, controller=controller, buses=buses),
+        speed_rpm=speed_rpm,
+    )
+
+
+def _voltage_check(
+    *,
+    actuator: Actuator,
+    interface: ActuatorInterface,
+    shared: Sequence[DcBusClass],
+    speed_rpm: float,
+) -> Check:
+    """:func:`voltage_check` for a controller that shares the bus classes ``shared``."""
     k_e = actuator.motor_voltage_constant_v_per_krpm
     i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
     if k_e is None or i_max is None or r_line is None:
@@ -83,11 +113,6 @@ def voltage_check(
         )
     if interface.bus_classes is None:
         return _no_voltage_data("the actuator's DC bus class is not published")
-    shared = [
-        b
-        for b in buses
-        if b.bus_class in interface.bus_classes and controller.level(b.bus_class) is not None
-    ]
     if not shared:
         return _no_voltage_data("the controller and the actuator share no DC bus class")
 
@@ -128,26 +153,38 @@ def drive_options(
     *,
     actuator: Actuator,
     interface: ActuatorInterface,
-    controllers: Sequence[Controller],
+    matching: CompatibilityResult,
     buses: Sequence[DcBusClass],
     speed_rpm: float,
 ) -> DriveOptions:
-    """Controllers not excluded by Table 521.1, tested first, each with its voltage check."""
-    result = match_controllers(actuator=interface, controllers=controllers)
-    usable = [m for m in result.matches if m.verdict is not MatchVerdict.EXCLUDED]
-    return DriveOptions(
-        options=tuple(
-            DriveOption(
-                match=m,
-                voltage=voltage_check(
-                    actuator=actuator,
-                    interface=interface,
-                    controller=m.controller,
-                    buses=buses,
-                    speed_rpm=speed_rpm,
-                ),
+    """Controllers that ``matching`` does not exclude, tested first, each with its voltage check.
+
+    Parameters
+    ----------
+    actuator
+        The actuator whose U_OUT (Eq. 521.2) is checked.
+    interface
+        The actuator's matching data.
+    matching
+        ``match_controllers(actuator=interface, ...)`` (Table 521.1). It depends on the
+        interface alone, so a caller sizing many actuators computes it once per distinct
+        interface (a whole catalogue has a handful) and passes it to every actuator.
+    buses
+        The DC bus classes with their nominal voltages.
+    speed_rpm
+        n_2, the load speed [rpm].
+    """
+    usable = [m for m in matching.matches if m.verdict is not MatchVerdict.EXCLUDED]
+    # The voltage check depends on the controller only through the bus classes it shares
+    # with the actuator, so controllers sharing the same classes share one check.
+    checks: dict[tuple[DcBusClass, ...], Check] = {}
+    options = []
+    for m in usable:
+        shared = _shared_bus_classes(interface=interface, controller=m.controller, buses=buses)
+        check = checks.get(shared)
+        if check is None:
+            check = checks[shared] = _voltage_check(
+                actuator=actuator, interface=interface, shared=shared, speed_rpm=speed_rpm
             )
-            for m in usable
-        ),
-        excluded=len(result.matches) - len(usable),
-    )
+        options.append(DriveOption(match=m, voltage=check))
+    return DriveOptions(options=tuple(options), excluded=len(matching.matches) - len(usable))

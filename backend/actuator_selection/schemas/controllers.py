@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from enum import StrEnum
-from typing import Literal
+from typing import Any, Literal
 
 from pydantic import Field
 
@@ -14,7 +14,8 @@ from actuator_selection.core.compatibility import (
     ControllerMatch,
     CriterionResult,
 )
-from actuator_selection.core.drive import DriveOptions
+from actuator_selection.core.drive import DriveOption, DriveOptions
+from actuator_selection.core.selection import Check
 from actuator_selection.db.controllers import ControllerRecord, InterfaceRecord
 from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import ResponseModel
@@ -148,15 +149,34 @@ class ActuatorControllersOut(ResponseModel):
     controllers: list[ControllerMatchOut]
 
 
-def drive_options_out(drive: DriveOptions) -> list[DriveOptionOut]:
-    """The candidate's ``controllers`` list."""
-    return [
-        DriveOptionOut(
-            **ControllerMatchOut.from_core(o.match).model_dump(),
-            voltage=CheckOut.from_core(o.voltage),
-        )
-        for o in drive.options
-    ]
+class DriveOptionBodies:
+    """Builds the candidates' ``controllers`` lists of one selection, each distinct part once.
+
+    The starter catalogue's candidates list ~850 drive options between them, made of a
+    few dozen distinct controller matches (matching is per interface, see ``api.drive``)
+    and about as many distinct voltage checks. Building every option from its core
+    objects was the largest cost of a selection's response; response models are frozen,
+    so one instance of each part can stand in every list that holds it.
+    """
+
+    def __init__(self) -> None:
+        self._matches: dict[ControllerMatch, dict[str, Any]] = {}
+        self._checks: dict[Check, CheckOut] = {}
+
+    def controllers(self, drive: DriveOptions) -> list[DriveOptionOut]:
+        """The ``controllers`` list of a candidate with these drive options."""
+        return [self._option(o) for o in drive.options]
+
+    def _option(self, option: DriveOption) -> DriveOptionOut:
+        match = self._matches.get(option.match)
+        if match is None:
+            # DriveOptionOut is ControllerMatchOut plus ``voltage``: its fields, criteria
+            # already CriterionOut instances, which validation then only checks by type.
+            match = self._matches[option.match] = dict(ControllerMatchOut.from_core(option.match))
+        voltage = self._checks.get(option.voltage)
+        if voltage is None:
+            voltage = self._checks[option.voltage] = CheckOut.from_core(option.voltage)
+        return DriveOptionOut(**match, voltage=voltage)
 
 
 def controllers_note(drive: DriveOptions) -> str:

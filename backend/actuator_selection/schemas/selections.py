@@ -29,9 +29,9 @@ from actuator_selection.schemas.common import (
     StrictModel,
 )
 from actuator_selection.schemas.controllers import (
+    DriveOptionBodies,
     DriveOptionOut,
     controllers_note,
-    drive_options_out,
 )
 
 SpeedRpm = Annotated[
@@ -194,8 +194,15 @@ class CandidateOut(ResponseModel):
     controllers_note: str = Field(description="what the controller list rests on")
 
     @classmethod
-    def from_core(cls, candidate: Candidate, drive: DriveOptions) -> CandidateOut:
-        """The response body of one candidate with its drive options."""
+    def from_core(
+        cls, candidate: Candidate, drive: DriveOptions, bodies: DriveOptionBodies | None = None
+    ) -> CandidateOut:
+        """The response body of one candidate with its drive options.
+
+        ``bodies`` shares the parts of the ``controllers`` lists among the candidates of one
+        selection; without it, this candidate's list is built on its own.
+        """
+        bodies = bodies or DriveOptionBodies()
         t = candidate.torques
         a = candidate.actuator
         return cls(
@@ -209,7 +216,7 @@ class CandidateOut(ResponseModel):
             rms_torque_nm=t.rms_torque_nm if t else None,
             reasons=list(candidate.reasons),
             checks=[CheckOut.from_core(c) for c in candidate.checks],
-            controllers=drive_options_out(drive),
+            controllers=bodies.controllers(drive),
             controllers_excluded=drive.excluded,
             controllers_note=controllers_note(drive),
         )
@@ -253,6 +260,7 @@ class SelectionOut(ResponseModel):
     ) -> SelectionOut:
         """The response body of a selection just run."""
         app_load = request.load.to_core()
+        bodies = DriveOptionBodies()
         mechanism = (
             None if isinstance(request.load, DirectLoad) else request.load.model_dump(mode="json")
         )
@@ -273,6 +281,7 @@ class SelectionOut(ResponseModel):
             mean_speed_rpm=selection.mean_speed_rpm,
             duty_cycle_percent=selection.duty_cycle_percent,
             candidates=[
-                CandidateOut.from_core(c, drives[c.actuator.model]) for c in selection.candidates
+                CandidateOut.from_core(c, drives[c.actuator.model], bodies)
+                for c in selection.candidates
             ],
         )
