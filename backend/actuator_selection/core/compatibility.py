@@ -217,7 +217,9 @@ class Controller:
         Tells apart rows whose type repeats with other marks (names lost in the
         source), e.g. ``"row 6"``; None otherwise.
     source_row
-        Row of Table 521.1, counted from 1 below the heading.
+        Row of the compatibility matrix: Table 521.1's rows keep their printed
+        number, counted from 1 below the heading; rows added later take further
+        numbers.
     families, bus_classes, temperature_sensors, feedback_systems
         The marks per column; a column that is absent is not supported.
     correction
