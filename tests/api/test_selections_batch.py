@@ -13,6 +13,7 @@ from sqlalchemy import Connection, func, select
 from tests import worked_example
 
 from actuator_selection.api import batch
+from actuator_selection.api.deps import CyclicGcPause
 from actuator_selection.core.batch import select_batch
 from actuator_selection.db.models import SelectionRow
 from actuator_selection.main import API_PREFIX
@@ -215,7 +216,7 @@ def test_cyclic_gc_is_paused_during_a_batch_and_resumed_after(
 
 
 def test_overlapping_pauses_resume_once_the_last_ends() -> None:
-    pause = batch._CyclicGcPause()
+    pause = CyclicGcPause()
     first, second = pause(), pause()
     next(first)
     next(second)

@@ -5,9 +5,9 @@ from __future__ import annotations
 import uuid
 from datetime import UTC, datetime
 
-from fastapi import APIRouter, HTTPException
+from fastapi import APIRouter, Depends, HTTPException
 
-from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.deps import SessionDep, pause_cyclic_gc
 from actuator_selection.api.drive import DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.selection import select
@@ -26,6 +26,7 @@ router = APIRouter(tags=["selections"])
     "/selections",
     status_code=201,
     responses={422: {"description": "invalid load case, or a model the catalogue lacks"}},
+    dependencies=[Depends(pause_cyclic_gc)],
     description="Runs the flowchart for every catalogue actuator (or the `models` listed) and "
     f"stores the result. Ranking: {RANKING_RULE}.",
 )
