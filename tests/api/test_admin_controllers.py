@@ -113,6 +113,8 @@ def test_replace_a_controller(api: SalesApi) -> None:
     assert version(api) == before + 1
     same = admin(api, "put", "/api/v1/controllers/3", json={**written, "source_row": 3})
     assert same.status_code == 200
+    as_null = admin(api, "put", "/api/v1/controllers/3", json={**written, "source_row": None})
+    assert as_null.status_code == 200  # null, as missing: the path names the row
     assert version(api) == before + 1  # nothing changed, no new version
     mismatch = admin(api, "put", "/api/v1/controllers/3", json={**written, "source_row": 4})
     assert mismatch.status_code == 422
@@ -151,14 +153,14 @@ def test_import_retires_and_brings_back_controllers(api: SalesApi) -> None:
     without_row_5 = {
         **document,
         "controllers": [c for c in document["controllers"] if c["source_row"] != 5],
-        "dc_bus_classes": [b for b in document["dc_bus_classes"] if b["bus_class"] != "24vdc"],
+        "kty84_130": document["kty84_130"][1:],
     }
     before = version(api)
     dry = import_(api, json.dumps(without_row_5).encode(), "application/json", dry_run=True)
     assert dry.status_code == 200, dry.text
     files = dry.json()["files"]
     assert files["controllers.csv"] == {"inserted": 0, "updated": 0, "unchanged": 27, "retired": 1}
-    assert files["dc_bus_classes.csv"]["retired"] == 1
+    assert files["kty84_130.csv"]["retired"] == 1
     assert 5 in controllers(api)
     assert version(api) == before
 
@@ -166,13 +168,15 @@ def test_import_retires_and_brings_back_controllers(api: SalesApi) -> None:
     assert done.json()["files"] == files
     assert 5 not in controllers(api)
     assert version(api) == before + 1
-    voltage = api.post(
-        "/api/v1/tools/controller-voltage",
+    # The runtime reads the table as imported: its lowest point is gone.
+    coldest = min(document["kty84_130"], key=lambda p: p["temperature_c"])
+    reading = api.post(
+        "/api/v1/tools/sensor-temperature",
         role=None,
-        json={"model": "CHA-25A-50", "output_speed_rpm": 100},
+        json={"sensor": "kty84_130", "resistance_ohm": coldest["resistance_ohm"]},
     )
-    assert voltage.status_code == 200, voltage.text
-    assert [b["bus_class"] for b in voltage.json()["bus_classes"]] == ["320vdc", "560vdc"]
+    assert reading.status_code == 422
+    assert "outside the KTY 84-130 table" in reading.json()["detail"][0]["msg"]
 
     back = import_(api, json.dumps(document).encode(), "application/json")
     assert back.json()["files"]["controllers.csv"]["updated"] == 1
@@ -248,3 +252,48 @@ def test_bad_interface_is_named_and_changes_nothing(
     assert rule in error["msg"]
     assert version(api) == before
     assert admin(api, "put", "/api/v1/actuators/NOPE-1/interface", json=body).status_code == 404
+
+
+@pytest.mark.parametrize(
+    ("change", "file", "column", "rule"),
+    [
+        (lambda d: d["kty84_130"][:1], "kty84_130", "temperature_c", "at least two"),
+        (
+            lambda d: [{**p, "resistance_ohm": 1000} for p in d["kty84_130"]],
+            "kty84_130",
+            "resistance_ohm",
+            "rise strictly",
+        ),
+        (lambda d: d["dc_bus_classes"][1:], "dc_bus_classes", "bus_class", "missing: 24vdc"),
+    ],
+)
+def test_import_refuses_tables_the_runtime_cannot_use(
+    api: SalesApi, change: Any, file: str, column: str, rule: str
+) -> None:
+    document = export_json(api)
+    document[file] = change(document)
+    before = version(api)
+    response = import_(api, json.dumps(document).encode(), "application/json")
+    assert response.status_code == 422, response.text
+    (error,) = response.json()["detail"]
+    assert (error["file"], error["column"]) == (file, column)
+    assert rule in error["msg"]
+    assert version(api) == before
+
+
+@pytest.mark.parametrize(
+    ("method", "path", "body", "column"),
+    [
+        ("post", "/api/v1/controllers", {**NEW, "manufacturer": "X\ud800"}, "manufacturer"),
+        ("put", "/api/v1/actuators/CHA-25A-50/interface", {"source": "a\ud800"}, "source"),
+    ],
+)
+def test_lone_surrogates_are_refused(
+    api: SalesApi, method: str, path: str, body: dict[str, Any], column: str
+) -> None:
+    raw = json.dumps(body)  # json.dumps writes the lone surrogate as the escape \ud800
+    response = admin(api, method, path, content=raw, headers={"Content-Type": "application/json"})
+    assert response.status_code == 422, response.text
+    (error,) = response.json()["detail"]
+    assert error["loc"] == ["body", column]
+    assert "valid Unicode" in error["msg"]

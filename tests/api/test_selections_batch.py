@@ -5,6 +5,7 @@ from __future__ import annotations
 import gc
 import json
 import random
+import weakref
 from typing import Any
 
 import pytest
@@ -223,6 +224,29 @@ def test_overlapping_pauses_resume_once_the_last_ends() -> None:
     assert not gc.isenabled()
     first.close()
     assert not gc.isenabled()
+    second.close()
+    assert gc.isenabled()
+
+
+def test_a_pause_that_never_ends_still_collects() -> None:
+    """Under overlapping traffic the pause would last forever: requests ending after
+    ``max_pause_s`` collect the cycles left meanwhile."""
+
+    class Node:
+        other: Any = None
+
+    pause = CyclicGcPause(max_pause_s=-1.0)  # every ending request is past the limit
+    first, second = pause(), pause()
+    next(first)
+    next(second)
+    a, b = Node(), Node()
+    a.other, b.other = b, a
+    cycle = weakref.ref(a)
+    del a, b
+    assert cycle() is not None  # reference counting alone cannot free a cycle
+    first.close()
+    assert cycle() is None
+    assert not gc.isenabled()  # the second request still runs
     second.close()
     assert gc.isenabled()
 

@@ -431,7 +431,6 @@ def test_controller_files_follow_the_same_two_modes(empty_engine: Engine, seed_d
         load_seed(s, seed_dir)
     full = {f: (seed_dir / f).read_text(encoding="utf-8") for f in TABLES}
     _drop_lines(seed_dir, "controllers.csv", "5,NUM AG,MDLU,")
-    _drop_lines(seed_dir, "dc_bus_classes.csv", "24vdc,")
     _drop_lines(seed_dir, "kty84_130.csv", "-40,")
     _drop_lines(seed_dir, "temperature_sensors.csv", "FHA-C,L,ptc,")
     drop_model(seed_dir, "CHA-25A-50")
@@ -448,7 +447,6 @@ def test_controller_files_follow_the_same_two_modes(empty_engine: Engine, seed_d
     assert withdrawn == {
         "actuators.csv": 1,
         "controllers.csv": 1,
-        "dc_bus_classes.csv": 1,
         "kty84_130.csv": 1,
         "temperature_sensors.csv": 1,
         "actuator_interfaces.csv": 1,  # CHA-20A-30's; the retired CHA-25A-50 keeps its own
@@ -456,7 +454,6 @@ def test_controller_files_follow_the_same_two_modes(empty_engine: Engine, seed_d
     after = rows_per_file(empty_engine)
     assert after == {
         **before,
-        "dc_bus_classes.csv": before["dc_bus_classes.csv"] - 1,
         "kty84_130.csv": before["kty84_130.csv"] - 1,
         "temperature_sensors.csv": before["temperature_sensors.csv"] - 1,
         "actuator_interfaces.csv": before["actuator_interfaces.csv"] - 1,

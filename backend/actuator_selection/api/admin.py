@@ -311,7 +311,7 @@ def replace_controller(
     A retired controller is brought back.
     """
     _known_controller(session, row)
-    if body.get("source_row", row) not in (row, str(row)):
+    if body.get("source_row") not in (None, row, str(row)):
         raise RequestFieldError(
             [field_error(["body", "source_row"], f"must be {row}, as in the path", "mismatch")]
         )

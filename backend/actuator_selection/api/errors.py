@@ -14,6 +14,7 @@ from urllib.parse import parse_qsl
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
+from sqlalchemy.exc import IntegrityError
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from actuator_selection.core.errors import DomainError, NotFoundError
@@ -54,6 +55,19 @@ def _domain(_: Request, exc: Exception) -> JSONResponse:
     return JSONResponse(
         status_code=status,
         content={"detail": [field_error(loc, exc.message, type(exc).__name__)]},
+    )
+
+
+def _conflict(_: Request, exc: Exception) -> JSONResponse:
+    # A concurrent request wrote the same key first (e.g. two admins creating the next
+    # controller row at once): the transaction has been rolled back, a retry succeeds.
+    log.info("write conflict: %s", exc)
+    return JSONResponse(
+        status_code=409,
+        content={
+            "detail": "a concurrent change wrote the same record first; nothing was "
+            "changed by this request, send it again"
+        },
     )
 
 
@@ -102,4 +116,5 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(DomainError, _domain)
     app.add_exception_handler(RequestFieldError, _request_field_error)
+    app.add_exception_handler(IntegrityError, _conflict)
     app.add_exception_handler(Exception, _unexpected)

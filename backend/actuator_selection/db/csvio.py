@@ -168,6 +168,13 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
             column=column.name,
             message="must not contain the NUL character (U+0000)",
         )
+    if not text.isascii():
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:  # a lone surrogate such as "\ud800" from JSON
+            return None, Problem(
+                file=spec.file, line=line, column=column.name, message="must be valid Unicode text"
+            )
     if not text:
         if column.required:
             return None, Problem(

@@ -27,7 +27,7 @@ from actuator_selection.core.compatibility import (
     parse_support_level,
 )
 from actuator_selection.core.errors import DomainError
-from actuator_selection.core.thermal import TemperatureSensor
+from actuator_selection.core.thermal import KtyCharacteristic, TemperatureSensor
 from actuator_selection.db.changes import FileChanges, delete_in, retire_at, sync_rows
 from actuator_selection.db.csvio import (
     Column,
@@ -142,6 +142,9 @@ INTERFACES = CsvSpec(
     ),
 )
 
+OPTION_COLUMNS = frozenset({"dc_bus_classes", "temperature_sensors", "feedback_systems"})
+"""The columns of actuator_interfaces.csv that hold space-separated option names."""
+
 PROTECTION_SPECS = (CONTROLLERS, SENSOR_FITTINGS, KTY_POINTS, BUS_CLASSES, INTERFACES)
 """The controller-side files, in loading order (after the actuator files)."""
 
@@ -172,11 +175,44 @@ def controller_name_problems(
     return problems
 
 
+def _whole_file_problems(rows: Mapping[str, Sequence[Record]]) -> list[Problem]:
+    """Rules on a file as a whole: the KTY table as the runtime reads it (at least two
+    points, rising strictly: :class:`~actuator_selection.core.thermal.KtyCharacteristic`
+    checks it), and a nominal voltage for every bus class Table 521.1 marks."""
+    problems: list[Problem] = []
+    kty = rows[KTY_POINTS.file]
+    try:
+        KtyCharacteristic.from_points(
+            (r.values["temperature_c"], r.values["resistance_ohm"]) for r in kty
+        )
+    except DomainError as exc:
+        column = {"temperatures_c": "temperature_c"}.get(exc.field, "resistance_ohm")
+        line = min((r.line for r in kty), default=0)
+        problems.append(
+            Problem(file=KTY_POINTS.file, line=line, column=column, message=exc.message)
+        )
+    listed = {r.values["bus_class"] for r in rows[BUS_CLASSES.file]}
+    missing = [b.value for b in BusClass if b.value not in listed]
+    if missing:
+        problems.append(
+            Problem(
+                file=BUS_CLASSES.file,
+                line=0,
+                column="bus_class",
+                message=f"every bus class of Table 521.1 needs its row; missing: "
+                f"{', '.join(missing)}",
+            )
+        )
+    return problems
+
+
 def protection_problems(
     rows: Mapping[str, Sequence[Record]], *, families: Collection[str], models: Collection[str]
 ) -> list[Problem]:
-    """Problems that need another file: unknown families and actuators, repeated controllers."""
+    """Problems that need more than one row: unknown families and actuators, repeated
+    controllers, a KTY table the runtime cannot read, a bus class without its voltage."""
     problems = controller_name_problems(rows[CONTROLLERS.file])
+    problems.extend(_whole_file_problems(rows))
     for r in rows[SENSOR_FITTINGS.file]:
         if r.values["family"] not in families:
             problems.append(

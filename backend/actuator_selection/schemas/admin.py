@@ -15,7 +15,7 @@ from pydantic import Field
 
 from actuator_selection.db.csvio import WHOLE_NUMBER_MAX, CsvSpec, whole_number
 from actuator_selection.db.seed import CatalogueChanges
-from actuator_selection.db.seed_controllers import mark
+from actuator_selection.db.seed_controllers import OPTION_COLUMNS, mark
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.prices import ChangesOut
 
@@ -39,6 +39,9 @@ def write_json_schema(
             kind = {"type": "integer", "minimum": 1, "maximum": WHOLE_NUMBER_MAX}
         elif column.convert is mark:
             kind = {"enum": ["tested", "possible", "●", "○", ""]}
+        elif column.name in OPTION_COLUMNS:
+            text = {"type": "string", "description": "space-separated names"}
+            kind = {"anyOf": [text, {"type": "array", "items": {"type": "string"}}]}
         else:
             kind = {"type": "string"}
             if column.max_length is not None:
