@@ -23,6 +23,7 @@ from __future__ import annotations
 import io
 import json
 import zipfile
+from collections.abc import Callable, Mapping
 from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
 
@@ -95,6 +96,26 @@ def _field_errors(exc: CatalogueFileError, *prefix: str | int, rows: bool = Fals
     return RequestFieldError(entries)
 
 
+def _validated(
+    validate: Callable[[Mapping[str, object]], dict[str, Any]], values: Mapping[str, object]
+) -> dict[str, Any]:
+    """``validate(values)``, its problems as 422 entries at ``body.<column>``."""
+    try:
+        return validate(values)
+    except CatalogueFileError as exc:
+        raise _field_errors(exc) from None
+
+
+def _keyed_by_path(body: Mapping[str, Any], column: str, value: str | int) -> dict[str, Any]:
+    """``body`` with ``column`` set to the path's ``value``; a body that names another
+    value is refused (null or absent: the path's)."""
+    if body.get(column) not in (None, value, str(value)):
+        raise RequestFieldError(
+            [field_error(["body", column], f"must be {value!r}, as in the path", "mismatch")]
+        )
+    return {**body, column: value}
+
+
 def _actuator_out(session: SessionDep, model: str) -> ActuatorOut:
     record = CatalogueRepository(session).actuator(model)
     if record is None:
@@ -121,10 +142,7 @@ def create_actuator(
 ) -> ActuatorOut:
     """Add an actuator (the columns of actuators.csv, units in the names)."""
     repository = CatalogueAdminRepository(session)
-    try:
-        values = repository.validate_actuator(body)
-    except CatalogueFileError as exc:
-        raise _field_errors(exc) from None
+    values = _validated(repository.validate_actuator, body)
     if repository.state(values["model"]) is not None:
         raise HTTPException(
             status_code=409,
@@ -149,15 +167,8 @@ def replace_actuator(
     A retired actuator is brought back.
     """
     _known(session, model)
-    if body.get("model", model) != model:
-        raise RequestFieldError(
-            [field_error(["body", "model"], f"must be {model!r}, as in the path", "mismatch")]
-        )
     repository = CatalogueAdminRepository(session)
-    try:
-        values = repository.validate_actuator({**body, "model": model})
-    except CatalogueFileError as exc:
-        raise _field_errors(exc) from None
+    values = _validated(repository.validate_actuator, _keyed_by_path(body, "model", model))
     repository.save_actuator(values)
     return _actuator_out(session, model)
 
@@ -229,15 +240,10 @@ def set_interface(
         k: " ".join(v) if isinstance(v, list) and all(isinstance(o, str) for o in v) else v
         for k, v in body.items()
     }
-    if "actuator_model" in given:
-        raise RequestFieldError(
-            [field_error(["body", "actuator_model"], "the path names the actuator", "extra")]
-        )
     repository = CatalogueAdminRepository(session)
-    try:
-        values = repository.validate_interface(model, given)
-    except CatalogueFileError as exc:
-        raise _field_errors(exc) from None
+    values = _validated(
+        repository.validate_interface, _keyed_by_path(given, "actuator_model", model)
+    )
     repository.set_interface(model, values)
     return _interface_out(session, model)
 
@@ -282,10 +288,7 @@ def create_controller(
     repository = CatalogueAdminRepository(session)
     if body.get("source_row") is None:
         body = {**body, "source_row": repository.next_controller_row()}
-    try:
-        values = repository.validate_controller(body)
-    except CatalogueFileError as exc:
-        raise _field_errors(exc) from None
+    values = _validated(repository.validate_controller, body)
     row = values["source_row"]
     if repository.controller_state(row) is not None:
         raise HTTPException(
@@ -311,15 +314,8 @@ def replace_controller(
     A retired controller is brought back.
     """
     _known_controller(session, row)
-    if body.get("source_row") not in (None, row, str(row)):
-        raise RequestFieldError(
-            [field_error(["body", "source_row"], f"must be {row}, as in the path", "mismatch")]
-        )
     repository = CatalogueAdminRepository(session)
-    try:
-        values = repository.validate_controller({**body, "source_row": row})
-    except CatalogueFileError as exc:
-        raise _field_errors(exc) from None
+    values = _validated(repository.validate_controller, _keyed_by_path(body, "source_row", row))
     repository.save_controller(values)
     return _controller_out(session, row)
 

@@ -18,6 +18,7 @@ from sqlalchemy.exc import IntegrityError
 from starlette.types import ASGIApp, Receive, Scope, Send
 
 from actuator_selection.core.errors import DomainError, NotFoundError
+from actuator_selection.db.csvio import NUL_RULE
 
 log = logging.getLogger(__name__)
 
@@ -74,10 +75,6 @@ def _conflict(_: Request, exc: Exception) -> JSONResponse:
 def _unexpected(_: Request, exc: Exception) -> JSONResponse:
     log.exception("unhandled error", exc_info=exc)
     return JSONResponse(status_code=500, content={"detail": "internal error; it has been logged"})
-
-
-NUL_RULE = "must not contain the NUL character (U+0000)"
-"""Text is stored in SQL, and PostgreSQL's text types cannot hold U+0000."""
 
 
 class RejectNulInUrl:

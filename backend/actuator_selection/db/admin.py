@@ -232,11 +232,11 @@ class CatalogueAdminRepository:
         return True
 
     @staticmethod
-    def validate_interface(model: str, values: Mapping[str, object]) -> dict[str, Any]:
-        """Stored values of an actuator's interface (the columns of actuator_interfaces.csv
-        but ``actuator_model``), or :class:`CatalogueFileError` with the seed loader's problems.
+    def validate_interface(values: Mapping[str, object]) -> dict[str, Any]:
+        """Stored values of an actuator's interface given by the columns of
+        actuator_interfaces.csv, or :class:`CatalogueFileError` with the seed loader's problems.
         """
-        checked, problems = check_values(INTERFACES, {**values, "actuator_model": model})
+        checked, problems = check_values(INTERFACES, values)
         if problems:
             raise CatalogueFileError(problems)
         return checked

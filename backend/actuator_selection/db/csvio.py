@@ -20,6 +20,10 @@ from typing import Any
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.money import check_currency, parse_amount
 
+NUL_RULE = "must not contain the NUL character (U+0000)"
+"""Every text the service stores obeys it: PostgreSQL's text types cannot hold U+0000
+(catalogue cells here, request bodies in ``schemas.common``, URLs in ``api.errors``)."""
+
 
 class Rule(Enum):
     """What a numeric cell must satisfy."""
@@ -161,13 +165,7 @@ def one_of(*choices: str) -> Callable[[str], str]:
 def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Problem | None]:
     text = raw.strip()
     if "\x00" in text:
-        # PostgreSQL's text types cannot hold U+0000, and no catalogue value needs it.
-        return None, Problem(
-            file=spec.file,
-            line=line,
-            column=column.name,
-            message="must not contain the NUL character (U+0000)",
-        )
+        return None, Problem(file=spec.file, line=line, column=column.name, message=NUL_RULE)
     if not text.isascii():
         try:
             text.encode("utf-8")

@@ -11,6 +11,8 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, field_validator
 
+from actuator_selection.db.csvio import NUL_RULE
+
 MAX_SPEED_RPM = 100_000.0
 """n_2 bound [rpm]: ten times the fastest servo motor shaft."""
 MAX_TORQUE_NM = 1_000_000.0
@@ -51,7 +53,7 @@ class StrictModel(BaseModel):
     @classmethod
     def _no_nul(cls, value: Any) -> Any:
         if holds_nul(value):
-            raise ValueError("must not contain the NUL character (U+0000)")
+            raise ValueError(NUL_RULE)
         return value
 
 
