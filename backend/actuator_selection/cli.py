@@ -21,13 +21,14 @@ def _migrate(args: argparse.Namespace) -> int:
 
 def _seed(args: argparse.Namespace) -> int:
     from actuator_selection.db.csvio import CatalogueFileError
-    from actuator_selection.db.engine import make_engine, make_session_factory
+    from actuator_selection.db.engine import begin_write, make_engine, make_session_factory
     from actuator_selection.db.repositories import CatalogueVersionRepository
     from actuator_selection.db.seed import load_seed
 
     engine = make_engine(args.database_url)
     try:
         with make_session_factory(engine).begin() as session:
+            begin_write(session)
             if args.if_empty and CatalogueVersionRepository(session).current() > 0:
                 print("seed: the catalogue has been written before; left as it is (--if-empty)")
                 return 0

@@ -17,7 +17,7 @@ from pathlib import Path
 from sqlalchemy.orm import Session
 
 from actuator_selection.db.csvio import CatalogueFileError
-from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.db.engine import begin_write, make_engine, make_session_factory
 from actuator_selection.db.sales import ROLES, ApiKeyRepository, PriceRepository, parse_prices
 
 
@@ -26,7 +26,7 @@ def _transaction(url: str) -> Iterator[Session]:
     engine = make_engine(url)
     try:
         with make_session_factory(engine).begin() as session:
-            yield session
+            yield begin_write(session)
     finally:
         engine.dispose()
 

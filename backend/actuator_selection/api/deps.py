@@ -5,23 +5,53 @@ from __future__ import annotations
 import gc
 import threading
 import time
-from collections.abc import Generator, Iterator
-from typing import Annotated
+from collections.abc import Callable, Generator, Iterator
+from contextlib import contextmanager
+from typing import Annotated, Any, TypeVar
 
 from fastapi import Depends, Request
 from sqlalchemy.orm import Session, sessionmaker
 
 from actuator_selection.config import Settings, get_settings
+from actuator_selection.db.engine import begin_write
+
+SAFE_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
+_READS_ONLY = "__reads_only__"
+
+Endpoint = TypeVar("Endpoint", bound=Callable[..., Any])
+
+
+def reads_only(endpoint: Endpoint) -> Endpoint:
+    """Mark a POST endpoint that computes without writing (tools, an unstored batch).
+
+    Its transaction then begins as a reader: on SQLite it does not take the write
+    lock, so it neither waits for writers nor holds them up.
+    """
+    setattr(endpoint, _READS_ONLY, True)
+    return endpoint
+
+
+def _writes(request: Request) -> bool:
+    endpoint = request.scope.get("endpoint")
+    return request.method not in SAFE_METHODS and not getattr(endpoint, _READS_ONLY, False)
 
 
 def get_session(request: Request) -> Iterator[Session]:
-    """One transaction per request: commit when the endpoint returns, roll back when it raises.
+    """One transaction per request, committed before the answer is sent.
 
-    Only this dependency commits; repositories flush at most.
+    The dependency has ``scope="function"``: FastAPI runs its teardown when the
+    endpoint returns, before the response is sent (a default-scoped ``yield``
+    dependency's teardown runs after the response has gone out, which would
+    acknowledge writes not yet committed). A commit that fails is therefore an
+    error answer, never a 2xx. Only this dependency commits; repositories flush at
+    most. Requests that write (every method but GET/HEAD/OPTIONS, except endpoints
+    marked :func:`reads_only`) begin as writers (:func:`~actuator_selection.db.engine.begin_write`).
     """
     factory: sessionmaker[Session] = request.app.state.session_factory
     with factory() as session:
         try:
+            if _writes(request):
+                begin_write(session)
             yield session
             session.commit()
         except BaseException:
@@ -29,7 +59,23 @@ def get_session(request: Request) -> Iterator[Session]:
             raise
 
 
-SessionDep = Annotated[Session, Depends(get_session)]
+SessionDep = Annotated[Session, Depends(get_session, scope="function")]
+
+
+@contextmanager
+def write_transaction(request: Request) -> Iterator[Session]:
+    """A short write transaction of its own, committed when the block ends.
+
+    For endpoints that compute from a read snapshot (:func:`reads_only`) and then
+    store the result: the write lock (SQLite) or the row locks (PostgreSQL) are
+    held for the inserts alone, not for the computation. The block ends before the
+    endpoint returns, so its commit precedes the answer like the request's own.
+    """
+    factory: sessionmaker[Session] = request.app.state.session_factory
+    with factory.begin() as session:
+        yield begin_write(session)
+
+
 SettingsDep = Annotated[Settings, Depends(get_settings)]
 
 

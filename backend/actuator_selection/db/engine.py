@@ -1,7 +1,22 @@
-"""Engine and session factory for SQLite (embedded default) and PostgreSQL (production)."""
+"""Engine and session factory for SQLite (embedded default) and PostgreSQL (production).
+
+Both are set up for concurrent clients (the README's "Durability and concurrency"):
+
+- **SQLite** runs in WAL mode, so readers never block the writer nor the writer the
+  readers; ``synchronous=FULL`` makes a commit durable before it returns; a busy
+  timeout makes a second writer wait for the lock instead of failing at once; and a
+  write transaction takes the write lock when it begins (``BEGIN IMMEDIATE``, see
+  :func:`begin_write`), because a deferred transaction that has read and then
+  writes fails at once ("database is locked") when another writer committed in
+  between, whatever the timeout.
+- **PostgreSQL** gets a statement timeout, a lock timeout and an idle-in-transaction
+  timeout on every connection, and a pool as large as the requests the service
+  admits at once (``api.admission``), so no thread ever waits long for a connection.
+"""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -9,6 +24,31 @@ import pydantic_core
 from sqlalchemy import Engine, create_engine, event
 from sqlalchemy.engine import make_url
 from sqlalchemy.orm import Session, sessionmaker
+
+WRITE_INTENT = "actuator_selection_writes"
+"""Execution option: the transaction will write (SQLite: ``BEGIN IMMEDIATE``)."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class EngineLimits:
+    """How long the database may make a request wait, and how many connections it holds.
+
+    Parameters
+    ----------
+    lock_timeout_s
+        Longest wait for a lock [s]: SQLite's busy timeout, PostgreSQL's ``lock_timeout``.
+    statement_timeout_s
+        Longest statement [s] (PostgreSQL ``statement_timeout``).
+    pool_size
+        Connections kept open; as many again may be opened under load.
+    pool_timeout_s
+        Longest wait for a free connection [s], then ``sqlalchemy.exc.TimeoutError`` (503).
+    """
+
+    lock_timeout_s: float = 5.0
+    statement_timeout_s: float = 60.0
+    pool_size: int = 8
+    pool_timeout_s: float = 10.0
 
 
 def normalise_url(url: str) -> str:
@@ -25,12 +65,13 @@ def normalise_url(url: str) -> str:
     return url
 
 
-def _sqlite_transactions(engine: Engine) -> None:
-    """Let SQLAlchemy, not pysqlite, begin transactions, so SAVEPOINTs work.
+def _sqlite_setup(engine: Engine) -> None:
+    """WAL, durable commits, foreign keys; SQLAlchemy, not pysqlite, begins transactions.
 
-    pysqlite's own transaction handling breaks nested transactions; this is the
-    recipe of SQLAlchemy's SQLite dialect documentation ("Serializable isolation /
-    Savepoints / Transactional DDL"). Foreign keys are off by default in SQLite.
+    pysqlite's own transaction handling breaks SAVEPOINTs and cannot begin
+    IMMEDIATE; this is the recipe of SQLAlchemy's SQLite dialect documentation
+    ("Serializable isolation / Savepoints / Transactional DDL"), with the BEGIN
+    chosen by :data:`WRITE_INTENT`. Foreign keys are off by default in SQLite.
     """
 
     @event.listens_for(engine, "connect")
@@ -38,11 +79,14 @@ def _sqlite_transactions(engine: Engine) -> None:
         dbapi_connection.isolation_level = None
         cursor = dbapi_connection.cursor()
         cursor.execute("PRAGMA foreign_keys=ON")
+        cursor.execute("PRAGMA journal_mode=WAL")
+        cursor.execute("PRAGMA synchronous=FULL")
         cursor.close()
 
     @event.listens_for(engine, "begin")
     def _begin(connection: Any) -> None:
-        connection.exec_driver_sql("BEGIN")
+        writes = connection.get_execution_options().get(WRITE_INTENT, False)
+        connection.exec_driver_sql("BEGIN IMMEDIATE" if writes else "BEGIN")
 
 
 def _to_json(value: Any) -> str:
@@ -51,21 +95,59 @@ def _to_json(value: Any) -> str:
     return pydantic_core.to_json(value).decode()
 
 
-def make_engine(url: str) -> Engine:
+def _milliseconds(seconds: float) -> int:
+    return max(1, round(seconds * 1000))
+
+
+def make_engine(url: str, limits: EngineLimits | None = None) -> Engine:
     """An engine for ``url``; creates the folder of a file-based SQLite database."""
+    limits = limits or EngineLimits()
     url = normalise_url(url)
     parsed = make_url(url)
     if parsed.get_backend_name() == "sqlite":
         if parsed.database and parsed.database != ":memory:":
             Path(parsed.database).parent.mkdir(parents=True, exist_ok=True)
         engine = create_engine(
-            url, connect_args={"check_same_thread": False}, json_serializer=_to_json
+            url,
+            # pysqlite's ``timeout`` is SQLite's busy timeout: how long to wait for a lock.
+            connect_args={"check_same_thread": False, "timeout": limits.lock_timeout_s},
+            json_serializer=_to_json,
+            pool_size=limits.pool_size,
+            max_overflow=limits.pool_size,
+            pool_timeout=limits.pool_timeout_s,
         )
-        _sqlite_transactions(engine)
+        _sqlite_setup(engine)
         return engine
-    return create_engine(url, pool_pre_ping=True, json_serializer=_to_json)
+    options = " ".join(
+        f"-c {name}={_milliseconds(value)}"
+        for name, value in (
+            ("statement_timeout", limits.statement_timeout_s),
+            ("lock_timeout", limits.lock_timeout_s),
+            ("idle_in_transaction_session_timeout", limits.statement_timeout_s),
+        )
+    )
+    return create_engine(
+        url,
+        connect_args={"options": options},
+        json_serializer=_to_json,
+        pool_pre_ping=True,
+        pool_size=limits.pool_size,
+        max_overflow=limits.pool_size,
+        pool_timeout=limits.pool_timeout_s,
+    )
 
 
 def make_session_factory(engine: Engine) -> sessionmaker[Session]:
     """Sessions that keep loaded values after commit (responses are built after it)."""
     return sessionmaker(bind=engine, expire_on_commit=False)
+
+
+def begin_write(session: Session) -> Session:
+    """Begin ``session``'s transaction as a writer; call before its first statement.
+
+    On SQLite the transaction takes the database's write lock at once (``BEGIN
+    IMMEDIATE``, waiting up to the busy timeout for it), so it cannot fail later on
+    upgrading a read lock; on PostgreSQL it is an ordinary transaction.
+    """
+    session.connection(execution_options={WRITE_INTENT: True})
+    return session
