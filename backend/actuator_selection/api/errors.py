@@ -3,6 +3,13 @@
 Every error body is JSON of the form ``{"detail": [{"loc": [...], "msg": ..., "type": ...}]}``
 (FastAPI's validation shape) or ``{"detail": "..."}`` for a missing resource, so a
 client always learns which field broke which rule. Nothing answers with a stack trace.
+
+A database that is busy past its limits (a lock or statement timeout, no free
+connection, a serialisation conflict) is an overload, not a fault: 503 with
+``Retry-After``, and the transaction has been rolled back. Any other unexpected
+error is a logged 500 that leaves the connection usable: Starlette's own handler
+for ``Exception`` re-raises after answering, and the server then resets the
+keep-alive connection, failing the client's next request too.
 """
 
 from __future__ import annotations
@@ -14,8 +21,9 @@ from urllib.parse import parse_qsl
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
-from sqlalchemy.exc import IntegrityError
-from starlette.types import ASGIApp, Receive, Scope, Send
+from sqlalchemy.exc import IntegrityError, OperationalError
+from sqlalchemy.exc import TimeoutError as PoolTimeoutError
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from actuator_selection.core.errors import DomainError, NotFoundError
 from actuator_selection.db.csvio import NUL_RULE
@@ -72,9 +80,86 @@ def _conflict(_: Request, exc: Exception) -> JSONResponse:
     )
 
 
-def _unexpected(_: Request, exc: Exception) -> JSONResponse:
-    log.exception("unhandled error", exc_info=exc)
+RETRY_AFTER_S = 1
+"""``Retry-After`` [s] of a 503 caused by a busy database."""
+
+_BUSY_SQLSTATES = frozenset(
+    {
+        "40001",  # serialization_failure
+        "40P01",  # deadlock_detected
+        "55P03",  # lock_not_available (lock_timeout)
+        "57014",  # query_canceled (statement_timeout)
+        "53300",  # too_many_connections
+    }
+)
+
+
+def service_unavailable(reason: str, *, retry_after_s: int = RETRY_AFTER_S) -> JSONResponse:
+    """503 with ``Retry-After``: nothing was changed, the same request may be sent again."""
+    return JSONResponse(
+        status_code=503,
+        content={"detail": f"{reason}; nothing was changed, retry after {retry_after_s} s"},
+        headers={"Retry-After": str(retry_after_s)},
+    )
+
+
+def database_busy(exc: BaseException) -> bool:
+    """True when ``exc`` says the database was too busy, not that the request was wrong."""
+    if isinstance(exc, PoolTimeoutError):
+        return True
+    if not isinstance(exc, OperationalError):
+        return False
+    sqlstate = getattr(exc.orig, "sqlstate", None)
+    if sqlstate is not None:
+        return sqlstate in _BUSY_SQLSTATES
+    message = str(exc.orig).lower()  # sqlite3 has no codes in its exception types
+    return "database is locked" in message or "database is busy" in message
+
+
+def _operational(_: Request, exc: Exception) -> JSONResponse:
+    if database_busy(exc):
+        log.warning("database busy: %s", exc)
+        return service_unavailable("the database is busy")
+    return _internal_error(exc)
+
+
+def _internal_error(exc: BaseException) -> JSONResponse:
+    log.error("unhandled error", exc_info=exc)
     return JSONResponse(status_code=500, content={"detail": "internal error; it has been logged"})
+
+
+class AnswerUnexpectedErrors:
+    """500 for an exception no handler took, without re-raising it (see the module docstring).
+
+    An exception after the answer has started cannot be answered any more; it is
+    re-raised, and the server ends that connection.
+    """
+
+    def __init__(self, app: ASGIApp) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        started = False
+
+        async def watch(message: Message) -> None:
+            nonlocal started
+            started = started or message["type"] == "http.response.start"
+            await send(message)
+
+        try:
+            await self.app(scope, receive, watch)
+        except Exception as exc:
+            if started:
+                raise
+            response = (
+                service_unavailable("the database is busy")
+                if database_busy(exc)
+                else _internal_error(exc)
+            )
+            await response(scope, receive, send)
 
 
 class RejectNulInUrl:
@@ -110,8 +195,10 @@ class RejectNulInUrl:
 def install(app: FastAPI) -> None:
     """Register the handlers (and the URL guard) on ``app``."""
     app.add_middleware(RejectNulInUrl)
+    app.add_middleware(AnswerUnexpectedErrors)
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(DomainError, _domain)
     app.add_exception_handler(RequestFieldError, _request_field_error)
     app.add_exception_handler(IntegrityError, _conflict)
-    app.add_exception_handler(Exception, _unexpected)
+    app.add_exception_handler(OperationalError, _operational)
+    app.add_exception_handler(PoolTimeoutError, _operational)
