@@ -7,9 +7,9 @@ from datetime import UTC, datetime
 from typing import Any
 
 import pydantic_core
-from fastapi import APIRouter, Depends, Response
+from fastapi import APIRouter, Depends, Request, Response
 
-from actuator_selection.api.deps import SessionDep, pause_cyclic_gc
+from actuator_selection.api.deps import SessionDep, pause_cyclic_gc, reads_only, write_transaction
 from actuator_selection.api.drive import DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.actuators import Actuator
@@ -130,7 +130,7 @@ class _Drives:
 
 
 def _store(
-    session: SessionDep,
+    request: Request,
     body: BatchSelectionRequest,
     actuators: list[Actuator],
     apps: list[Application],
@@ -138,10 +138,15 @@ def _store(
     catalogue_version: int,
     context: DriveContext,
 ) -> list[str | None]:
-    """Store each case as POST /selections does (the whole ranking); their ids."""
-    repository = SelectionRepository(session)
+    """Store each case as POST /selections does (the whole ranking); their ids.
+
+    The selections are computed first and then written in a transaction of their
+    own, committed before this returns (so before the 201): the request's own
+    transaction only reads (the endpoint is :func:`reads_only`), and on SQLite the
+    write lock is held for the inserts alone, not for the computation.
+    """
     created_at = datetime.now(UTC)
-    ids: list[str | None] = []
+    rows = []
     for case, app in zip(body.cases, apps, strict=True):
         allowed = None if case.models is None else set(case.models)
         catalogue = [a for a in actuators if allowed is None or a.model in allowed]
@@ -154,15 +159,18 @@ def _store(
             selection=select(catalogue, app),
             drives={a.model: context.options(a, speed_rpm=speed) for a in catalogue},
         )
-        repository.add(
-            id=out.id,
-            created_at=out.created_at,
-            catalogue_version=catalogue_version,
-            request=case.model_dump(mode="json"),
-            response=out.model_dump(mode="json"),
-        )
-        ids.append(out.id)
-    return ids
+        rows.append((out, case.model_dump(mode="json"), out.model_dump(mode="json")))
+    with write_transaction(request) as session:
+        repository = SelectionRepository(session)
+        for out, stored_request, stored_response in rows:
+            repository.add(
+                id=out.id,
+                created_at=out.created_at,
+                catalogue_version=catalogue_version,
+                request=stored_request,
+                response=stored_response,
+            )
+    return [out.id for out, _, _ in rows]
 
 
 def _candidates(
@@ -205,10 +213,12 @@ def _candidates(
     f"each as in a single selection. Ranking: {RANKING_RULE}. Nothing is stored unless "
     "`store` is true.",
 )
-def create_batch(body: BatchSelectionRequest, session: SessionDep) -> Response:
+@reads_only
+def create_batch(body: BatchSelectionRequest, request: Request, session: SessionDep) -> Response:
     """Size many load cases against the catalogue."""
     if errors := _limits(body):
         raise RequestFieldError(errors)
+    version = CatalogueVersionRepository(session).pin()
     actuators = [r.actuator for r in CatalogueRepository(session).actuators()]
     apps, errors = _applications(body, {a.model for a in actuators})
     if errors:
@@ -216,11 +226,10 @@ def create_batch(body: BatchSelectionRequest, session: SessionDep) -> Response:
     selections = select_batch(
         actuators, apps, top=body.top, models=[case.models for case in body.cases]
     )
-    version = CatalogueVersionRepository(session).current()
     context = DriveContext(session)
     ids: list[str | None] = [None] * len(apps)
     if body.store:
-        ids = _store(session, body, actuators, apps, catalogue_version=version, context=context)
+        ids = _store(request, body, actuators, apps, catalogue_version=version, context=context)
     drives = _Drives(context)
     results = [
         result_body(

@@ -68,6 +68,8 @@ router = APIRouter(tags=["quotes"])
 
 API_PREFIX = "/api/v1"
 _IDEMPOTENCY_KEY = re.compile(r"[\x21-\x7e]{1,200}")
+MAX_OFFSET = 1_000_000_000
+"""Largest ``offset`` of the quote search: far beyond any real number of quotes."""
 
 
 class Clock:
@@ -190,6 +192,8 @@ def _new_quote(
 ) -> NewQuote:
     """Everything the quote holds, checked and priced (422s name the field)."""
     today = now.date()
+    # First, so that the actuator data and the version below come from one snapshot.
+    catalogue_version = CatalogueVersionRepository(session).pin()
     if body.valid_until < today:
         raise _invalid(
             ["body", "valid_until"],
@@ -273,7 +277,7 @@ def _new_quote(
         request_sha256=_request_sha256(body),
         selection_id=selection.id,
         selection_catalogue_version=selection.catalogue_version,
-        catalogue_version=CatalogueVersionRepository(session).current(),
+        catalogue_version=catalogue_version,
         customer_name=body.customer.name,
         customer_address=body.customer.address,
         customer_reference=body.customer.reference,
@@ -375,7 +379,8 @@ def list_quotes(
     ] = None,
     status: Annotated[QuoteStatus | None, Query(description="as of today")] = None,
     limit: Annotated[int, Query(ge=1, le=200)] = 50,
-    offset: Annotated[int, Query(ge=0)] = 0,
+    # Bounded so that it fits a 64-bit OFFSET (PostgreSQL answered 500 above 2^63 − 1).
+    offset: Annotated[int, Query(ge=0, le=MAX_OFFSET)] = 0,
 ) -> QuoteListOut:
     """Search quotes, newest first."""
     records, total = QuoteRepository(session).search(

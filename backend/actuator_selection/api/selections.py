@@ -5,9 +5,9 @@ from __future__ import annotations
 import uuid
 from datetime import UTC, datetime
 
-from fastapi import APIRouter, Depends, HTTPException
+from fastapi import APIRouter, Depends, HTTPException, Request
 
-from actuator_selection.api.deps import SessionDep, pause_cyclic_gc
+from actuator_selection.api.deps import SessionDep, pause_cyclic_gc, reads_only, write_transaction
 from actuator_selection.api.drive import DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.selection import select
@@ -30,8 +30,10 @@ router = APIRouter(tags=["selections"])
     description="Runs the flowchart for every catalogue actuator (or the `models` listed) and "
     f"stores the result. Ranking: {RANKING_RULE}.",
 )
-def create_selection(body: SelectionRequest, session: SessionDep) -> SelectionOut:
+@reads_only
+def create_selection(body: SelectionRequest, request: Request, session: SessionDep) -> SelectionOut:
     """Size the load case against the catalogue and store the selection."""
+    catalogue_version = CatalogueVersionRepository(session).pin()
     records = CatalogueRepository(session).actuators(ActuatorFilter(models=body.models))
     if body.models is not None:
         known = {r.actuator.model for r in records}
@@ -48,18 +50,21 @@ def create_selection(body: SelectionRequest, session: SessionDep) -> SelectionOu
     out = SelectionOut.build(
         id=str(uuid.uuid4()),
         created_at=datetime.now(UTC),
-        catalogue_version=CatalogueVersionRepository(session).current(),
+        catalogue_version=catalogue_version,
         request=body,
         selection=selection,
         drives={r.actuator.model: drive.options(r.actuator, speed_rpm=speed) for r in records},
     )
-    SelectionRepository(session).add(
-        id=out.id,
-        created_at=out.created_at,
-        catalogue_version=out.catalogue_version,
-        request=body.model_dump(mode="json"),
-        response=out.model_dump(mode="json"),
-    )
+    stored_request, stored_response = body.model_dump(mode="json"), out.model_dump(mode="json")
+    # Computed from the read snapshot above; stored in a short write transaction of its own.
+    with write_transaction(request) as writer:
+        SelectionRepository(writer).add(
+            id=out.id,
+            created_at=out.created_at,
+            catalogue_version=out.catalogue_version,
+            request=stored_request,
+            response=stored_response,
+        )
     return out
 
 

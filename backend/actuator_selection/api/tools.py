@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.deps import SessionDep, reads_only
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.electrical import (
     check_output_voltage,
@@ -66,6 +66,7 @@ def _need(
 
 
 @router.post("/controller-voltage")
+@reads_only
 def controller_voltage(body: ControllerVoltageRequest, session: SessionDep) -> ControllerVoltageOut:
     """Minimum controller output voltage U_OUT (Eq. 521.2) and what each bus class delivers."""
     a = _actuator(session, body.model)
@@ -121,6 +122,7 @@ def controller_voltage(body: ControllerVoltageRequest, session: SessionDep) -> C
 
 
 @router.post("/sensor-temperature")
+@reads_only
 def sensor_temperature(body: SensorTemperatureRequest, session: SessionDep) -> SensorTemperatureOut:
     """A winding sensor's resistance read as temperature (KTY) or zone (PTC), and its state."""
     repo = ProtectionRepository(session)
@@ -190,6 +192,7 @@ def sensor_temperature(body: SensorTemperatureRequest, session: SessionDep) -> S
 
 
 @router.post("/overload-duration")
+@reads_only
 def overload_duration(body: OverloadDurationRequest, session: SessionDep) -> OverloadDurationOut:
     """Time until the winding reaches its limit at overload factor k (model of Fig. 520.1)."""
     a = _actuator(session, body.model)
@@ -234,6 +237,7 @@ def overload_duration(body: OverloadDurationRequest, session: SessionDep) -> Ove
 
 
 @router.post("/output-torque")
+@reads_only
 def output_torque(body: OutputTorqueRequest, session: SessionDep) -> OutputTorqueOut:
     """Output torque from the measured current (Eq. 522.2, 522.3)."""
     a = _actuator(session, body.model)

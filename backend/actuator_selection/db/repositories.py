@@ -181,6 +181,21 @@ class CatalogueVersionRepository:
         version = self._session.scalar(select(CatalogueStateRow.version))
         return version or 0
 
+    def pin(self) -> int:
+        """The version, held until the transaction ends: call it before reading the catalogue.
+
+        Every catalogue change raises the version (:meth:`bump`) in its own
+        transaction. On PostgreSQL this read takes a share lock on the version's row:
+        a change that has already raised the version is waited for, and its data is
+        then read with it; a change that has not yet raised it cannot do so before
+        this transaction ends, so the data read meanwhile is the version's own. So the
+        rows read after ``pin()`` are exactly those of the version it returns, under
+        READ COMMITTED. SQLite's transactions read one snapshot anyway (the lock
+        clause is not rendered there).
+        """
+        version = self._session.scalar(select(CatalogueStateRow.version).with_for_update(read=True))
+        return version or 0
+
     def bump(self) -> int:
         """Raise the version by one inside the caller's transaction; returns the new number.
 
