@@ -19,8 +19,11 @@ from typing import Any
 from urllib.parse import parse_qsl
 
 from fastapi import FastAPI, Request
+from fastapi.exception_handlers import http_exception_handler
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
+from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.middleware.body_limit import MAX_BODY_SIZE_SCOPE_KEY
 from sqlalchemy.exc import IntegrityError, OperationalError
 from sqlalchemy.exc import TimeoutError as PoolTimeoutError
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
@@ -78,6 +81,69 @@ def _conflict(_: Request, exc: Exception) -> JSONResponse:
             "changed by this request, send it again"
         },
     )
+
+
+def body_too_large(limit: int | None) -> JSONResponse:
+    """413 in the error shape, naming the limit (``MAX_BODY_BYTES`` / ``MAX_BULK_BODY_BYTES``)."""
+    size = f"{limit} bytes" if limit is not None else "the limit"
+    return JSONResponse(
+        status_code=413,
+        content={
+            "detail": [
+                field_error(
+                    ["body"],
+                    f"the request body is larger than {size}; send less per request",
+                    "body_too_large",
+                )
+            ]
+        },
+    )
+
+
+async def _http_error(request: Request, exc: Exception) -> JSONResponse | Any:
+    """Errors FastAPI raises before an endpoint runs, in the error shape where they concern
+    the body: 413 (too large) and 400 (a body JSON cannot parse, e.g. nested past the
+    parser's recursion limit). Others keep FastAPI's ``{"detail": "..."}``."""
+    assert isinstance(exc, StarletteHTTPException)
+    if exc.status_code == 413:
+        return body_too_large(request.scope.get(MAX_BODY_SIZE_SCOPE_KEY))
+    if exc.status_code == 400 and isinstance(exc.detail, str):
+        message = "the body could not be parsed as JSON (malformed, or nested too deeply)"
+        return JSONResponse(
+            status_code=400,
+            content={"detail": [field_error(["body"], message, "json_invalid")]},
+        )
+    return await http_exception_handler(request, exc)
+
+
+class UniformBodyTooLarge:
+    """Starlette's body limit answers a request whose Content-Length is over the limit with a
+    plain-text 413 of its own; this gives that answer the error shape too."""
+
+    def __init__(self, app: ASGIApp) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        replaced = False
+
+        async def reshape(message: Message) -> None:
+            nonlocal replaced
+            if message["type"] == "http.response.start" and message["status"] == 413:
+                headers = dict(message.get("headers", []))
+                if headers.get(b"content-type", b"").startswith(b"text/plain"):
+                    replaced = True
+                    limit = scope.get(MAX_BODY_SIZE_SCOPE_KEY)
+                    await body_too_large(limit if isinstance(limit, int) else None)(
+                        scope, receive, send
+                    )
+                    return
+            if not replaced:
+                await send(message)
+
+        await self.app(scope, receive, reshape)
 
 
 RETRY_AFTER_S = 1
@@ -196,6 +262,8 @@ def install(app: FastAPI) -> None:
     """Register the handlers (and the URL guard) on ``app``."""
     app.add_middleware(RejectNulInUrl)
     app.add_middleware(AnswerUnexpectedErrors)
+    app.add_middleware(UniformBodyTooLarge)
+    app.add_exception_handler(StarletteHTTPException, _http_error)
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(DomainError, _domain)
     app.add_exception_handler(RequestFieldError, _request_field_error)
