@@ -48,8 +48,8 @@ function apiKey() {
   return sessionStorage.getItem(KEY_STORAGE);
 }
 
-async function call(method, path, { body, headers = {}, accept = "application/json" } = {}) {
-  const init = { method, headers: { Accept: accept, ...headers } };
+async function call(method, path, { body, headers = {} } = {}) {
+  const init = { method, headers: { Accept: "application/json", ...headers } };
   const key = apiKey();
   if (key) init.headers.Authorization = `Bearer ${key}`;
   if (body !== undefined) {
@@ -62,7 +62,6 @@ async function call(method, path, { body, headers = {}, accept = "application/js
   } catch {
     throw new ApiError(0, null);
   }
-  if (accept === "text/html" && response.ok) return response.text();
   let data = null;
   try {
     const text = await response.text();
@@ -543,12 +542,10 @@ async function openDocument(number) {
   win.document.title = t("sales.document.title", { number });
   win.document.body.textContent = t("sales.document.loading");
   try {
-    const html = await call("GET", `/quotes/${encodeURIComponent(number)}/document`, {
-      accept: "text/html",
-    });
-    win.document.open();
-    win.document.write(html);
-    win.document.close();
+    // A signed, short-lived link: the window loads the document from the server itself,
+    // with the document's own Content-Security-Policy (never written into the window).
+    const link = await call("POST", `/quotes/${encodeURIComponent(number)}/document-link`);
+    win.location.replace(link.url);
   } catch (error) {
     win.document.body.textContent = `${t("sales.document.failed")}${error.message}`;
   }

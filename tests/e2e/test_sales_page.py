@@ -170,6 +170,9 @@ def test_quote_from_a_selection_to_the_printed_document(sales_page: Page, site: 
         row.get_by_role("button", name="Open document").click()
     document = popup.value
     expect(document.locator("html[data-figure=ready]")).to_have_count(1, timeout=SLOW_MS)
+    # Loaded by the window itself through a signed link, so the document's own CSP
+    # applies (it was once written into a blank window with document.write).
+    assert f"/api/v1/quotes/{number}/document?access=" in document.url
     expect(document.locator("[data-field=number]")).to_have_text(number)
     expect(document.locator("[data-field=example-prices]")).to_be_visible()
     expect(document.locator("[data-field=total]")).to_have_text("8,861.50 EUR")

@@ -65,19 +65,24 @@ def require_reader(request: Request, principal: PrincipalDep) -> ApiKeyRecord | 
     return principal
 
 
+def authorize(principal: ApiKeyRecord | None, *roles: str) -> ApiKeyRecord:
+    """``principal`` when it has one of ``roles``; 401 without a key, 403 otherwise."""
+    if principal is None:
+        raise _unauthorized()
+    if principal.role not in roles:
+        raise HTTPException(
+            status_code=403,
+            detail=f"this API key has the role {principal.role!r}; "
+            f"this needs {' or '.join(repr(r) for r in roles)}",
+        )
+    return principal
+
+
 def require_role(*roles: str) -> Callable[..., ApiKeyRecord]:
     """A dependency admitting only keys of one of ``roles`` (401 without a key, 403 otherwise)."""
 
     def dependency(principal: PrincipalDep) -> ApiKeyRecord:
-        if principal is None:
-            raise _unauthorized()
-        if principal.role not in roles:
-            raise HTTPException(
-                status_code=403,
-                detail=f"this API key has the role {principal.role!r}; "
-                f"this needs {' or '.join(repr(r) for r in roles)}",
-            )
-        return principal
+        return authorize(principal, *roles)
 
     dependency.__name__ = f"require_{'_or_'.join(roles)}"
     return dependency

@@ -23,12 +23,13 @@ import json
 import re
 from datetime import UTC, date, datetime
 from typing import Annotated, Any
+from urllib.parse import quote as quote_path
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response
 from fastapi.responses import HTMLResponse
 
-from actuator_selection.api.auth import SalesDep
-from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
+from actuator_selection.api.deps import SessionDep, reads_only
 from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.api.quote_document import (
     DOCUMENT_SCRIPT,
@@ -45,6 +46,7 @@ from actuator_selection.db.repositories import (
     SelectionRepository,
 )
 from actuator_selection.db.sales import (
+    ApiKeyRepository,
     IdempotencyKeyReusedError,
     NewQuote,
     PriceRecord,
@@ -55,6 +57,7 @@ from actuator_selection.db.sales import (
     QuoteSearch,
 )
 from actuator_selection.schemas.actuators import ActuatorOut
+from actuator_selection.schemas.documents import DocumentLinkOut
 from actuator_selection.schemas.quotes import (
     QuoteCreate,
     QuoteListOut,
@@ -68,6 +71,8 @@ router = APIRouter(tags=["quotes"])
 
 API_PREFIX = "/api/v1"
 _IDEMPOTENCY_KEY = re.compile(r"[\x21-\x7e]{1,200}")
+DOCUMENT_LINK_TTL_S = 300
+"""How long a signed document link works [s]."""
 MAX_OFFSET = 1_000_000_000
 """Largest ``offset`` of the quote search: far beyond any real number of quotes."""
 
@@ -427,13 +432,66 @@ def change_status(
     return _out(_quote(session, number), clock)
 
 
+def _document_resource(number: str) -> str:
+    return f"quote-document:{number}"
+
+
+@router.post(
+    "/quotes/{number}/document-link",
+    responses={404: {"description": "unknown quote"}},
+)
+@reads_only
+def quote_document_link(
+    number: str, principal: SalesDep, session: SessionDep, clock: ClockDep
+) -> DocumentLinkOut:
+    """A link to the quote's document that a new browser window can open by itself.
+
+    The window then loads the document from the server with the document's own
+    headers (its Content-Security-Policy among them). The link works for
+    ``DOCUMENT_LINK_TTL_S`` seconds and no longer than the key that asked for it.
+    """
+    _quote(session, number)
+    expires_at = int(clock.now().timestamp()) + DOCUMENT_LINK_TTL_S
+    token = ApiKeyRepository(session).sign_access(
+        principal, _document_resource(number), expires_at=expires_at
+    )
+    return DocumentLinkOut(
+        url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}",
+        expires_at=datetime.fromtimestamp(expires_at, UTC),
+    )
+
+
 @router.get(
     "/quotes/{number}/document",
     response_class=HTMLResponse,
     responses={404: {"description": "unknown quote"}},
 )
-def quote_document(number: str, _: SalesDep, session: SessionDep, clock: ClockDep) -> HTMLResponse:
+def quote_document(
+    number: str,
+    principal: PrincipalDep,
+    session: SessionDep,
+    clock: ClockDep,
+    access: Annotated[
+        str | None,
+        Query(
+            max_length=100,
+            description="a token from POST /quotes/{number}/document-link, for a browser "
+            "window that cannot send the API key",
+        ),
+    ] = None,
+) -> HTMLResponse:
     """The quote as an HTML page laid out for A4 print (print to PDF from the browser)."""
+    if principal is None and access is not None:
+        principal = ApiKeyRepository(session).check_access(
+            access, _document_resource(number), now=clock.now()
+        )
+        if principal is None:
+            raise HTTPException(
+                status_code=401,
+                detail="this document link has expired or is not valid; open the document "
+                "again from the quote list",
+            )
+    authorize(principal, "sales")
     record = _quote(session, number)
     stored: dict[str, Any] | None = SelectionRepository(session).response(record.selection_id)
     selection = StoredSelection.model_validate(stored) if stored is not None else None

@@ -71,6 +71,14 @@ def _sha256(key: str) -> str:
     return hashlib.sha256(key.encode("ascii")).hexdigest()
 
 
+_ACCESS_TOKEN = re.compile(r"([0-9a-f]{12})\.([0-9]{1,12})\.([0-9a-f]{64})")
+
+
+def _access_mac(key_sha256: str, resource: str, expires_at: int) -> str:
+    message = f"{resource}|{expires_at}".encode()
+    return hmac.new(key_sha256.encode("ascii"), message, hashlib.sha256).hexdigest()
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class ApiKeyRecord:
     """An API key without its secret: the public prefix names it."""
@@ -141,6 +149,31 @@ class ApiKeyRepository:
         """Every key, oldest first."""
         rows = self._session.scalars(select(ApiKeyRow).order_by(ApiKeyRow.id))
         return [_key_record(r) for r in rows]
+
+    def sign_access(self, key: ApiKeyRecord, resource: str, *, expires_at: int) -> str:
+        """A token that lends ``key``'s access to ``resource`` until ``expires_at`` [Unix s].
+
+        For a link a browser opens without headers (the quote document in a new
+        window). It reads ``<prefix>.<expires_at>.<HMAC-SHA256>``, keyed with the
+        key's stored hash, so any replica can check it, and revoking the key
+        revokes its tokens.
+        """
+        row = self._session.scalar(select(ApiKeyRow).where(ApiKeyRow.prefix == key.prefix))
+        assert row is not None, "signing for a key that authenticated this request"
+        return f"{key.prefix}.{expires_at}.{_access_mac(row.key_sha256, resource, expires_at)}"
+
+    def check_access(self, token: str, resource: str, *, now: datetime) -> ApiKeyRecord | None:
+        """The active key that signed ``token`` for ``resource``, if it has not expired."""
+        match = _ACCESS_TOKEN.fullmatch(token)
+        if match is None or int(match.group(2)) < now.timestamp():
+            return None
+        prefix, expires_at, mac = match.group(1), int(match.group(2)), match.group(3)
+        row = self._session.scalar(select(ApiKeyRow).where(ApiKeyRow.prefix == prefix))
+        stored = row.key_sha256 if row is not None else _DUMMY_SHA256
+        expected = _access_mac(stored, resource, expires_at)
+        if not hmac.compare_digest(expected, mac) or row is None or row.revoked_at:
+            return None
+        return _key_record(row)
 
     def revoke(self, prefix: str, *, now: datetime) -> ApiKeyRecord | None:
         """Revoke the key of ``prefix`` (idempotent); None when there is no such key."""
