@@ -27,6 +27,15 @@ MAX_MASS_KG = 1_000_000.0
 """Moved mass bound [kg]: 1000 t."""
 MAX_LENGTH_M = 100.0
 """Bound for leads, diameters and radii [m]."""
+MIN_LENGTH_M = 1e-6
+"""Smallest screw lead or table diameter [m]: 1 µm, a hundred times below the finest
+precision screw lead (~0.1 mm). Without it a lead of 5e-324 m passes "> 0" and its
+T_L = μ·m·P·g/(2π·η) underflows to exactly 0, a load that silently vanishes."""
+MIN_EFFICIENCY = 0.01
+"""Smallest screw efficiency η [-]: 1 %. A ball screw runs at η ≈ 0.9, even a
+self-locking trapezoidal lead screw at η ≈ 0.2–0.4; η divides Eq. 515.4, and a value
+like 1e-300 drives T_L (and T_rms) past the largest float. With η ≥ 0.01 and the other
+bounds here, T_L ≤ 1.6·10¹¹ Nm and every result of the cycle stays finite."""
 MAX_FRICTION_COEFFICIENT = 10.0
 """μ bound [-]: dry rubber on rubber stays below 2."""
 
