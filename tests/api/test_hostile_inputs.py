@@ -114,3 +114,20 @@ def test_location_of_a_non_latin1_model_is_percent_encoded(api: SalesApi) -> Non
     location = response.headers["location"]
     assert location == "/api/v1/actuators/FHA-%CE%A9"
     assert api.get(location, role=None).json()["model"] == "FHA-Ω"
+
+
+# 9. The batch's size is checked before its cases are validated.
+
+
+def test_too_many_batch_cases_are_refused_at_once(client: TestClient) -> None:
+    case = {**worked_example.request(), "high_dynamics": True}
+    body = {"cases": [case] * (MAX_BATCH_CASES + 1), "top": 1}
+    started = time.perf_counter()
+    response = client.post("/api/v1/selections/batch", json=body)
+    elapsed = time.perf_counter() - started
+    error = only_error(response)
+    assert error["loc"] == ["body", "cases"]
+    assert f"at most {MAX_BATCH_CASES} cases" in error["msg"]
+    assert f"got {MAX_BATCH_CASES + 1}" in error["msg"]
+    # Validating every case took ~3.4 s; refusing by count alone is JSON decoding only.
+    assert elapsed < 1.5, elapsed
