@@ -4,17 +4,14 @@ and never a half-written record. Run on SQLite and PostgreSQL (``client``/``api`
 
 from __future__ import annotations
 
-import io
-import struct
 import time
-import zipfile
 from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
-from tests.api.test_admin import NEW, admin, export_zip, import_, unchanged, version, zipped
+from tests.api.test_admin import NEW, admin
 
 from actuator_selection.schemas.batch import MAX_BATCH_CASES
 
@@ -131,3 +128,73 @@ def test_too_many_batch_cases_are_refused_at_once(client: TestClient) -> None:
     assert f"got {MAX_BATCH_CASES + 1}" in error["msg"]
     # Validating every case took ~3.4 s; refusing by count alone is JSON decoding only.
     assert elapsed < 1.5, elapsed
+
+
+# 7. Strict JSON types: a boolean is no number, a number no boolean, text no number.
+
+
+@pytest.mark.parametrize(
+    ("path", "value", "loc"),
+    [
+        (("load", "speed_rpm"), True, ["body", "load", "direct", "speed_rpm"]),
+        (("load", "torque_nm"), "5", ["body", "load", "direct", "torque_nm"]),
+        (("cycle", "accel_s"), False, ["body", "cycle", "accel_s"]),
+        (("high_dynamics",), "yes", ["body", "high_dynamics"]),
+        (("high_dynamics",), 1, ["body", "high_dynamics"]),
+        (("high_dynamics",), "true", ["body", "high_dynamics"]),
+        (("models",), [25], ["body", "models", 0]),
+    ],
+)
+def test_json_types_are_strict(
+    client: TestClient, path: tuple[str, ...], value: Any, loc: list[str | int]
+) -> None:
+    body: dict[str, Any] = {**worked_example.request(), "models": ["FHA-25C-50-L"]}
+    target = body
+    for key in path[:-1]:
+        target = target[key]
+    target[path[-1]] = value
+    error = only_error(client.post("/api/v1/selections", json=body))
+    assert error["loc"] == loc
+    assert error["type"] in {"float_type", "bool_type", "string_type"}
+
+
+def test_integers_stay_numbers(client: TestClient) -> None:
+    """Existing clients send 40 for 40.0: strictness must not refuse a JSON integer."""
+    body = {**worked_example.request(), "models": ["FHA-25C-50-L"], "high_dynamics": False}
+    assert client.post("/api/v1/selections", json=body).status_code == 201
+    tools = client.post(
+        "/api/v1/tools/sensor-temperature", json={"sensor": "KTY84-130", "resistance_ohm": 1000}
+    )
+    assert tools.status_code == 200, tools.text
+    batch = client.post("/api/v1/selections/batch", json={"cases": [body], "top": True})
+    assert only_error(batch)["loc"] == ["body", "top"]
+
+
+@pytest.mark.parametrize(
+    ("valid_until", "rule"),
+    [
+        (1893456000, "YYYY-MM-DD"),
+        ("9999-12-31", "at most 731 days after today"),
+        ("2030-02-30", "calendar date"),
+        ("20300101", "YYYY-MM-DD"),
+        ("2030-01-01T00:00:00", "YYYY-MM-DD"),
+    ],
+)
+def test_valid_until_is_a_date_string_within_two_years(
+    api: SalesApi, valid_until: Any, rule: str
+) -> None:
+    selection_id = api.selection(["FHA-25C-50-L"])["id"]
+    body = api.quote_body(selection_id, valid_until=valid_until)
+    error = only_error(api.post("/api/v1/quotes", json=body))
+    assert error["loc"] == ["body", "valid_until"]
+    assert rule in error["msg"]
+    assert api.get("/api/v1/quotes").json()["total"] == 0
+
+
+def test_quote_decimals_and_dates_as_documented_still_work(api: SalesApi) -> None:
+    selection_id = api.selection(["FHA-25C-50-L"])["id"]
+    for discount in ("7.5", 10):
+        body = api.quote_body(selection_id, discount_percent=discount)
+        assert api.post("/api/v1/quotes", json=body).status_code == 201
+    refused = api.post("/api/v1/quotes", json=api.quote_body(selection_id, discount_percent=True))
+    assert only_error(refused)["loc"] == ["body", "discount_percent"]

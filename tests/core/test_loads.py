@@ -116,9 +116,7 @@ def test_ball_screw_inertia_overflow_names_lead() -> None:
 
 
 def test_rotary_table_overflow_names_diameter() -> None:
-    table = RotaryTable(
-        mass_kg=1e10, diameter_m=1e155, friction_coefficient=0, friction_radius_m=0
-    )
+    table = RotaryTable(mass_kg=1e10, diameter_m=1e155, friction_coefficient=0, friction_radius_m=0)
     with pytest.raises(InvalidInputError) as caught:
         rotary_table_load(table)
     assert caught.value.field == "diameter_m"

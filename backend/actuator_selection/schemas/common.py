@@ -53,9 +53,16 @@ def holds_nul(value: object) -> bool:
 
 class StrictModel(BaseModel):
     """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞;
-    no U+0000 in text (PostgreSQL cannot store it, and no valid input needs it)."""
+    no U+0000 in text (PostgreSQL cannot store it, and no valid input needs it).
 
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
+    JSON types are strict: ``true`` is not 1 rpm, ``"yes"`` or ``1`` is not a boolean,
+    ``"40"`` is not a number and ``40`` is not text. A JSON integer is still a number
+    (``"speed_rpm": 40``). Fields the API documents as strings of another type opt out
+    one by one and check their own input: decimals (``schemas.quotes.DecimalIn``),
+    dates (``valid_until``), enumerations given by name (``sensor``).
+    """
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True, strict=True)
 
     # After each field's own validation, so a nested model has already named its field.
     @field_validator("*", mode="after")
