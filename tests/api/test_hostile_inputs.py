@@ -11,7 +11,7 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
-from tests.api.test_admin import NEW, admin
+from tests.api.test_admin import NEW, admin, version
 
 from actuator_selection.schemas.batch import MAX_BATCH_CASES
 
@@ -198,3 +198,76 @@ def test_quote_decimals_and_dates_as_documented_still_work(api: SalesApi) -> Non
         assert api.post("/api/v1/quotes", json=body).status_code == 201
     refused = api.post("/api/v1/quotes", json=api.quote_body(selection_id, discount_percent=True))
     assert only_error(refused)["loc"] == ["body", "discount_percent"]
+
+
+# 8. Control characters and bidirectional overrides in text that reaches documents.
+
+HOSTILE_TEXT = ["\x1b[31mred", "bell\x07", "\u202egnp.exe", "a\u2066b", "c1\x85x", "del\x7f"]
+
+
+@pytest.mark.parametrize("text", HOSTILE_TEXT)
+@pytest.mark.parametrize(
+    ("where", "loc"),
+    [
+        ({"customer": {"name": "{}"}}, ["customer", "name"]),
+        ({"customer": {"name": "Muster GmbH", "address": "{}"}}, ["customer", "address"]),
+        ({"customer": {"name": "Muster GmbH", "reference": "{}"}}, ["customer", "reference"]),
+        ({"notes": "{}"}, ["notes"]),
+        ({"price_list": "{}"}, ["price_list"]),
+    ],
+)
+def test_quote_text_refuses_controls_and_bidi(
+    api: SalesApi, text: str, where: dict[str, Any], loc: list[str]
+) -> None:
+    selection_id = api.selection(["FHA-25C-50-L"])["id"]
+
+    def fill(value: Any) -> Any:
+        if isinstance(value, dict):
+            return {k: fill(v) for k, v in value.items()}
+        return text if value == "{}" else value
+
+    body = api.quote_body(selection_id, **fill(where))
+    error = only_error(api.post("/api/v1/quotes", json=body))
+    assert error["loc"] == ["body", *loc]
+    assert "control characters" in error["msg"]
+    assert "found U+" in error["msg"]
+    assert api.get("/api/v1/quotes").json()["total"] == 0
+
+
+def test_line_breaks_only_where_multi_line_text_is_allowed(api: SalesApi) -> None:
+    selection_id = api.selection(["FHA-25C-50-L"])["id"]
+    multi = api.quote_body(
+        selection_id,
+        customer={"name": "Muster GmbH", "address": "Hauptstr. 1\r\n12345\tMusterstadt"},
+        notes="line 1\nline 2\rline 3",
+    )
+    created = api.post("/api/v1/quotes", json=multi)
+    assert created.status_code == 201, created.text
+    assert created.json()["customer"]["address"] == "Hauptstr. 1\r\n12345\tMusterstadt"
+    one_line = api.quote_body(selection_id, customer={"name": "Muster\nGmbH"})
+    error = only_error(api.post("/api/v1/quotes", json=one_line))
+    assert error["loc"] == ["body", "customer", "name"]
+    assert "one line" in error["msg"]
+    model = {**worked_example.request(), "models": ["FHA-25C-50-L\t"]}
+    error = only_error(api.client.post("/api/v1/selections", json=model))
+    assert error["loc"] == ["body", "models"]
+
+
+@pytest.mark.parametrize(
+    ("column", "text", "rule"),
+    [
+        ("notes", "\u202eevil", "control characters other than tab and line breaks"),
+        ("source", "\x1b[2J", "control characters other than tab and line breaks"),
+        ("model", "CHA-99A\u202e-50", "one line"),
+        ("feedback", "enc\nder", "one line"),
+    ],
+)
+def test_catalogue_text_refuses_controls_and_bidi(
+    api: SalesApi, column: str, text: str, rule: str
+) -> None:
+    before = version(api)
+    response = admin(api, "post", "/api/v1/actuators", json={**NEW, column: text})
+    error = only_error(response)
+    assert error["loc"] == ["body", column]
+    assert rule in error["msg"]
+    assert version(api) == before

@@ -7,11 +7,12 @@ the largest catalogue actuator delivers under 2 kNm at under 300 rpm.
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Iterable
+from typing import Any, ClassVar
 
-from pydantic import BaseModel, ConfigDict, field_validator
+from pydantic import BaseModel, ConfigDict, ValidationInfo, field_validator
 
-from actuator_selection.db.csvio import NUL_RULE
+from actuator_selection.db.csvio import text_problem
 
 MAX_SPEED_RPM = 100_000.0
 """n_2 bound [rpm]: ten times the fastest servo motor shaft."""
@@ -40,20 +41,28 @@ MAX_FRICTION_COEFFICIENT = 10.0
 """μ bound [-]: dry rubber on rubber stays below 2."""
 
 
-def holds_nul(value: object) -> bool:
-    """True when ``value`` (text, or lists and objects of it, keys too) holds U+0000."""
+def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:
+    """The text rule (``db.csvio.text_problem``) broken by ``value``: text, or lists and
+    objects of it (keys too); None when every text in it is clean."""
     if isinstance(value, str):
-        return "\x00" in value
+        return text_problem(value, line_breaks=line_breaks)
     if isinstance(value, list | tuple):
-        return any(holds_nul(v) for v in value)
-    if isinstance(value, dict):
-        return any(holds_nul(k) or holds_nul(v) for k, v in value.items())
-    return False
+        items: Iterable[object] = value
+    elif isinstance(value, dict):
+        items = (x for pair in value.items() for x in pair)
+    else:
+        return None
+    for item in items:
+        if (rule := text_rule_broken(item, line_breaks=line_breaks)) is not None:
+            return rule
+    return None
 
 
 class StrictModel(BaseModel):
     """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞;
-    no U+0000 in text (PostgreSQL cannot store it, and no valid input needs it).
+    text obeys the one text rule (``db.csvio.text_problem``): no U+0000 (PostgreSQL cannot
+    store it), no control characters or bidirectional overrides, and line breaks and tabs
+    only in the fields named in ``line_break_fields`` (e.g. an address).
 
     JSON types are strict: ``true`` is not 1 rpm, ``"yes"`` or ``1`` is not a boolean,
     ``"40"`` is not a number and ``40`` is not text. A JSON integer is still a number
@@ -64,12 +73,16 @@ class StrictModel(BaseModel):
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True, strict=True)
 
+    line_break_fields: ClassVar[frozenset[str]] = frozenset()
+    """Text fields that may hold line breaks and tabs (multi-line text)."""
+
     # After each field's own validation, so a nested model has already named its field.
     @field_validator("*", mode="after")
     @classmethod
-    def _no_nul(cls, value: Any) -> Any:
-        if holds_nul(value):
-            raise ValueError(NUL_RULE)
+    def _text_rule(cls, value: Any, info: ValidationInfo) -> Any:
+        multi_line = info.field_name in cls.line_break_fields
+        if (rule := text_rule_broken(value, line_breaks=multi_line)) is not None:
+            raise ValueError(rule)
         return value
 
 

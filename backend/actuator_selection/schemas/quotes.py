@@ -78,7 +78,12 @@ Quantity = Annotated[StrictInt, Field(ge=1, le=MAX_QUANTITY, description="pieces
 
 
 class CustomerIn(StrictModel):
-    """Who the quote is for; free text, shown escaped on the document."""
+    """Who the quote is for; free text, shown escaped on the document.
+
+    The address may span lines (tab, LF, CR); name and reference are one line.
+    """
+
+    line_break_fields = frozenset({"address"})
 
     name: Annotated[Text, Field(min_length=1, max_length=200)]
     address: Annotated[Text, Field(max_length=2000)] | None = None
@@ -107,7 +112,12 @@ class ControllerItemIn(StrictModel):
 
 
 class QuoteCreate(StrictModel):
-    """A quote for the selection ``selection_id``; prices come from ``price_list``."""
+    """A quote for the selection ``selection_id``; prices come from ``price_list``.
+
+    ``notes`` may span lines (tab, LF, CR); every other text is one line.
+    """
+
+    line_break_fields = frozenset({"notes"})
 
     selection_id: Annotated[str, Field(min_length=1, max_length=36)]
     customer: CustomerIn
