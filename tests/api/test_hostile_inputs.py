@@ -4,14 +4,17 @@ and never a half-written record. Run on SQLite and PostgreSQL (``client``/``api`
 
 from __future__ import annotations
 
+import io
+import struct
 import time
+import zipfile
 from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
-from tests.api.test_admin import NEW, admin, version
+from tests.api.test_admin import NEW, admin, import_, version
 
 from actuator_selection.schemas.batch import MAX_BATCH_CASES
 
@@ -271,3 +274,62 @@ def test_catalogue_text_refuses_controls_and_bidi(
     assert error["loc"] == ["body", column]
     assert rule in error["msg"]
     assert version(api) == before
+
+
+# 3. Damaged, encrypted and exotic ZIP members of a catalogue import.
+
+CSV_MEMBER = "families.csv"
+CSV_TEXT = b"name,description,temperature_sensors,source\nX,,,s\n"
+
+
+def one_member_zip() -> bytearray:
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", compression=zipfile.ZIP_STORED) as archive:
+        archive.writestr(CSV_MEMBER, CSV_TEXT)
+    return bytearray(buffer.getvalue())
+
+
+def patched(body: bytearray, *, local: int, central: int, value: int) -> bytes:
+    """Set a 16-bit field of the member's local header and its central directory entry."""
+    struct.pack_into("<H", body, body.index(b"PK\x03\x04") + local, value)
+    struct.pack_into("<H", body, body.index(b"PK\x01\x02") + central, value)
+    return bytes(body)
+
+
+def bad_crc() -> bytes:
+    body = one_member_zip()
+    at = body.index(CSV_TEXT)
+    body[at] ^= 0x01  # one flipped bit in the stored data: the CRC-32 no longer matches
+    return bytes(body)
+
+
+@pytest.mark.parametrize(
+    ("body", "rule"),
+    [
+        (bad_crc(), "is damaged in the archive"),
+        (patched(one_member_zip(), local=6, central=8, value=0x1), "is encrypted"),
+        (patched(one_member_zip(), local=8, central=10, value=99), "compression method 99"),
+        (patched(one_member_zip(), local=8, central=10, value=6), "compression method 6"),
+    ],
+    ids=["bad-crc", "encrypted", "aes-method-99", "implode-method-6"],
+)
+def test_unreadable_zip_members_are_named(api: SalesApi, body: bytes, rule: str) -> None:
+    before = version(api)
+    error = only_error(import_(api, body, "application/zip"))
+    assert error["loc"] == ["body", CSV_MEMBER, 0]
+    assert error["file"] == CSV_MEMBER
+    assert rule in error["msg"]
+    assert version(api) == before
+
+
+def test_damaged_archive_directory_is_named(api: SalesApi) -> None:
+    body = one_member_zip()
+    at = body.index(b"PK\x05\x06")
+    struct.pack_into("<I", body, at + 16, 2**31)  # central directory offset beyond the file
+    error = only_error(import_(api, bytes(body), "application/zip"))
+    assert error["loc"] == ["body", CSV_MEMBER, 0]
+    assert "is damaged in the archive" in error["msg"]
+    truncated = bytes(one_member_zip()[:40])
+    error = only_error(import_(api, truncated, "application/zip"))
+    assert error["loc"] == ["body", "(upload)", 0]
+    assert "not a ZIP archive" in error["msg"]
