@@ -14,7 +14,7 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
-from tests.api.test_admin import NEW, admin, import_, version
+from tests.api.test_admin import NEW, admin, export_zip, import_, unchanged, version, zipped
 
 from actuator_selection.schemas.batch import MAX_BATCH_CASES
 
@@ -333,3 +333,132 @@ def test_damaged_archive_directory_is_named(api: SalesApi) -> None:
     error = only_error(import_(api, truncated, "application/zip"))
     assert error["loc"] == ["body", "(upload)", 0]
     assert "not a ZIP archive" in error["msg"]
+
+
+# 4. CSV files with CR-only line ends and with an enormous cell.
+
+
+def test_cr_only_catalogue_files_read_as_lines(api: SalesApi) -> None:
+    """Excel for Mac writes CR-only "CSV (Macintosh)": read as lines, not refused."""
+    files = export_zip(api)
+    assert all("\r" not in text for text in files.values())
+    mac = {name: text.replace("\n", "\r") for name, text in files.items()}
+    response = import_(api, zipped(mac), "application/zip", dry_run=True)
+    assert response.status_code == 200, response.text
+    assert unchanged(response.json()["files"])
+
+
+def test_cr_only_price_list_reads_as_lines(api: SalesApi) -> None:
+    text = (
+        "price_list,is_example,item_kind,item_code,description,unit_price,currency,"
+        "valid_from,valid_to,source\r"
+        "CR list,false,actuator,FHA-25C-50-L,one,100.00,EUR,2026-01-01,,test\r"
+        "CR list,false,actuator,FHA-14C-100,two,200.00,EUR,2026-01-01,,test\r"
+    )
+    response = admin(
+        api,
+        "post",
+        "/api/v1/price-lists/import",
+        params={"dry_run": "true"},
+        content=text.encode(),
+        headers={"Content-Type": "text/csv"},
+    )
+    assert response.status_code == 200, response.text
+    assert response.json()["price_lists"]["CR list"]["inserted"] == 2
+
+
+def test_an_enormous_price_cell_is_named(api: SalesApi) -> None:
+    text = (
+        "price_list,is_example,item_kind,item_code,description,unit_price,currency,"
+        "valid_from,valid_to,source\n"
+        "Big,false,actuator,FHA-25C-50-L,one,100.00,EUR,2026-01-01,,test\n"
+        f"Big,false,actuator,FHA-14C-100,{'x' * 200_000},200.00,EUR,2026-01-01,,test\n"
+    )
+    response = admin(
+        api,
+        "post",
+        "/api/v1/price-lists/import",
+        content=text.encode(),
+        headers={"Content-Type": "text/csv"},
+    )
+    error = only_error(response)
+    assert error["loc"] == ["body", "prices.csv", 3]
+    assert "longer than 131072 characters" in error["msg"]
+    assert "Big" not in {p["name"] for p in api.get("/api/v1/price-lists", "admin").json()}
+
+
+def test_an_enormous_catalogue_cell_is_named(api: SalesApi) -> None:
+    files = export_zip(api)
+    lines = files["families.csv"].splitlines(keepends=True)
+    lines.insert(2, f"Huge,{'x' * 200_000},,s\n")
+    files["families.csv"] = "".join(lines)
+    before = version(api)
+    errors = import_(api, zipped(files), "application/zip").json()["detail"]
+    assert [e["loc"] for e in errors] == [["body", "families.csv", 3]]
+    assert "longer than 131072 characters" in errors[0]["msg"]
+    assert version(api) == before
+
+
+# 5 and 6. Export quotes every line break and neutralises formulas; import undoes both.
+
+AWKWARD_CONTROLLER: dict[str, Any] = {
+    "manufacturer": "ACME",
+    "type": "X-1",
+    "variant": "-A",
+    "cha_chm": "tested",
+    "correction": '=HYPERLINK("http://example.invalid","click")',
+    "source": "bare CR\rbare LF\nCRLF\r\nend",
+}
+AWKWARD_ACTUATOR: dict[str, Any] = {
+    **NEW,
+    "supply_voltage": "-5 V",
+    "feedback": "@SUM(A1)",
+    "notes": "'quoted, and a tab\there",
+    "source": "+49 30 1234\rsecond line",
+}
+
+
+def test_awkward_cells_round_trip_through_export_and_import(api: SalesApi) -> None:
+    created = admin(api, "post", "/api/v1/controllers", json=AWKWARD_CONTROLLER)
+    assert created.status_code == 201, created.text
+    row = created.json()["source_row"]
+    assert created.json()["source"] == AWKWARD_CONTROLLER["source"]
+    assert admin(api, "post", "/api/v1/actuators", json=AWKWARD_ACTUATOR).status_code == 201
+    before = version(api)
+
+    files = export_zip(api)
+    controllers = files["controllers.csv"]
+    assert '"bare CR\rbare LF\nCRLF\r\nend"' in controllers  # every line break quoted
+    assert ",'-A," in controllers
+    assert '"\'=HYPERLINK(""http://example.invalid"",""click"")"' in controllers
+    actuators = files["actuators.csv"]
+    assert "'-5 V" in actuators
+    assert "'@SUM(A1)" in actuators
+    assert "''quoted" in actuators
+    assert '"\'+49 30 1234\rsecond line"' in actuators
+    assert "\n-40," in files["kty84_130.csv"]  # numbers are not text: no quote mark
+
+    dry = import_(api, zipped(files), "application/zip", dry_run=True)
+    assert dry.status_code == 200, dry.text
+    assert unchanged(dry.json()["files"])
+    done = import_(api, zipped(files), "application/zip")
+    assert done.status_code == 200, done.text
+    assert unchanged(done.json()["files"])
+    assert version(api) == before
+    stored = api.get(f"/api/v1/controllers/{row}", role=None).json()
+    assert (stored["variant"], stored["correction"], stored["source"]) == (
+        "-A",
+        AWKWARD_CONTROLLER["correction"],
+        AWKWARD_CONTROLLER["source"],
+    )
+    actuator = api.get("/api/v1/actuators/CHA-99A-50", role=None).json()
+    for column in ("supply_voltage", "feedback", "notes", "source"):
+        assert actuator[column] == AWKWARD_ACTUATOR[column], column
+
+
+def test_json_export_carries_text_as_it_is(api: SalesApi) -> None:
+    assert admin(api, "post", "/api/v1/actuators", json=AWKWARD_ACTUATOR).status_code == 201
+    exported = admin(api, "get", "/api/v1/catalogue/export", params={"format": "json"}).json()
+    (row,) = [a for a in exported["actuators"] if a["model"] == "CHA-99A-50"]
+    assert row["feedback"] == "@SUM(A1)"
+    assert row["notes"] == "'quoted, and a tab\there"
