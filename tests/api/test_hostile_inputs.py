@@ -14,7 +14,16 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
-from tests.api.test_admin import NEW, admin, export_zip, import_, unchanged, version, zipped
+from tests.api.test_admin import (
+    NEW,
+    ZONE,
+    admin,
+    export_zip,
+    import_,
+    unchanged,
+    version,
+    zipped,
+)
 
 from actuator_selection.schemas.batch import MAX_BATCH_CASES
 
@@ -462,3 +471,13 @@ def test_json_export_carries_text_as_it_is(api: SalesApi) -> None:
     (row,) = [a for a in exported["actuators"] if a["model"] == "CHA-99A-50"]
     assert row["feedback"] == "@SUM(A1)"
     assert row["notes"] == "'quoted, and a tab\there"
+
+
+def test_zone_source_follows_the_free_text_rule(api: SalesApi) -> None:
+    path = "/api/v1/actuators/FHA-25C-50-L/zone"
+    multi = admin(api, "put", path, json={**ZONE, "source": "read from\nFig. 517.1"})
+    assert multi.status_code == 200, multi.text
+    assert multi.json()["continuous_duty_zone_source"] == "read from\nFig. 517.1"
+    error = only_error(admin(api, "put", path, json={**ZONE, "source": "\u202eevil"}))
+    assert error["loc"] == ["body", "source"]
+    assert "found U+202E" in error["msg"]
