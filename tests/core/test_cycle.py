@@ -178,3 +178,36 @@ def test_load_rejects_bad_values(field: str, torque: float, inertia: float) -> N
     with pytest.raises(InvalidInputError) as caught:
         Load(torque_nm=torque, inertia_kgm2=inertia)
     assert caught.value.field == field
+
+
+def test_rms_overflow_is_a_domain_error_not_overflow_or_infinity() -> None:
+    """T_L ≈ 1.6e152 (η = 1e-152), day-long phases: T_1²·t overflows; never ∞ or a 500."""
+    pattern = SpeedPattern(
+        speed_rpm=40, accel_s=86_400, constant_s=86_400, decel_s=86_400, pause_s=0
+    )
+    load = Load(torque_nm=1.56e152, inertia_kgm2=0.0)
+    with pytest.raises(InvalidInputError) as caught:
+        cycle_torques(pattern=pattern, load=load, actuator_inertia_kgm2=0.86)
+    assert caught.value.field == "load"
+    assert "T_rms" in caught.value.message
+    # 1e200 squared raises OverflowError inside float ** : the same domain error.
+    with pytest.raises(InvalidInputError, match="T_rms"):
+        cycle_torques(
+            pattern=pattern,
+            load=Load(torque_nm=1e200, inertia_kgm2=0.0),
+            actuator_inertia_kgm2=0.86,
+        )
+
+
+def test_torque_overflow_is_a_domain_error() -> None:
+    pattern = SpeedPattern(speed_rpm=1e300, accel_s=1e-10, constant_s=0, decel_s=1e-10, pause_s=0)
+    with pytest.raises(InvalidInputError, match="T_1"):
+        cycle_torques(
+            pattern=pattern, load=Load(torque_nm=0, inertia_kgm2=1e10), actuator_inertia_kgm2=1.0
+        )
+
+
+def test_mean_speed_overflow_is_a_domain_error() -> None:
+    pattern = SpeedPattern(speed_rpm=1e308, accel_s=10, constant_s=10, decel_s=10, pause_s=0)
+    with pytest.raises(InvalidInputError, match="n_av"):
+        mean_speed_rpm(pattern)

@@ -96,3 +96,27 @@ def test_rotary_table_rejects_zero_diameter() -> None:
     with pytest.raises(InvalidInputError) as caught:
         RotaryTable(mass_kg=1, diameter_m=0, friction_coefficient=0.1, friction_radius_m=0.1)
     assert caught.value.field == "diameter_m"
+
+
+def test_ball_screw_overflow_names_efficiency() -> None:
+    """η = 1e-300 is > 0, but T_L = μ·m·P·g/(2π·η) then exceeds every float: a domain error."""
+    screw = BallScrew(mass_kg=1e6, lead_m=100, friction_coefficient=10, efficiency=1e-300)
+    with pytest.raises(InvalidInputError) as caught:
+        ball_screw_load(screw)
+    assert caught.value.field == "efficiency"
+    assert "Eq. 515.4" in caught.value.message
+
+
+def test_ball_screw_inertia_overflow_names_lead() -> None:
+    """(P/2π)² overflows Python's float power (OverflowError): a domain error instead."""
+    screw = BallScrew(mass_kg=1, lead_m=1e200, friction_coefficient=0, efficiency=1)
+    with pytest.raises(InvalidInputError) as caught:
+        ball_screw_load(screw)
+    assert caught.value.field == "lead_m"
+
+
+def test_rotary_table_overflow_names_diameter() -> None:
+    table = RotaryTable(mass_kg=1e10, diameter_m=1e155, friction_coefficient=0, friction_radius_m=0)
+    with pytest.raises(InvalidInputError) as caught:
+        rotary_table_load(table)
+    assert caught.value.field == "diameter_m"

@@ -26,6 +26,7 @@ import zipfile
 from collections.abc import Callable, Mapping
 from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
+from urllib.parse import quote
 
 from fastapi import APIRouter, Body, Depends, HTTPException, Path, Query, Response
 
@@ -150,7 +151,8 @@ def create_actuator(
             "PUT /actuators/{model} replaces it",
         )
     repository.save_actuator(values)
-    response.headers["Location"] = f"/api/v1/actuators/{values['model']}"
+    # A header is Latin-1: a model such as "FHA-Ω" is sent percent-encoded (RFC 3986).
+    response.headers["Location"] = f"/api/v1/actuators/{quote(values['model'], safe='')}"
     return _actuator_out(session, values["model"])
 
 

@@ -10,7 +10,9 @@ file, line, column and rule: ``{"loc": ["body", file, line, column], "msg": ...,
 from __future__ import annotations
 
 import io
+import lzma
 import zipfile
+import zlib
 from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import Any
@@ -94,10 +96,11 @@ def unzip_csv(body: bytes, *, wanted: tuple[str, ...]) -> dict[str, str | None]:
     """
     try:
         archive = zipfile.ZipFile(io.BytesIO(body))
-    except zipfile.BadZipFile:
+    except (zipfile.BadZipFile, EOFError, OSError, ValueError):  # a damaged directory too
         problem = Problem(file="(upload)", line=0, column=None, message="is not a ZIP archive")
         raise file_errors(CatalogueFileError([problem])) from None
     texts: dict[str, str | None] = dict.fromkeys(wanted)
+    problems: list[Problem] = []
     with archive:
         for info in archive.infolist():
             path = PurePosixPath(info.filename)
@@ -105,9 +108,49 @@ def unzip_csv(body: bytes, *, wanted: tuple[str, ...]) -> dict[str, str | None]:
                 continue
             if info.file_size > MAX_UPLOAD_BYTES:
                 raise HTTPException(status_code=413, detail=f"{path.name} is too large unpacked")
-            with archive.open(info) as member:
-                data = member.read(MAX_UPLOAD_BYTES + 1)
+            data, message = _member(archive, info)
+            if message is not None:
+                problems.append(Problem(file=path.name, line=0, column=None, message=message))
+                continue
             if len(data) > MAX_UPLOAD_BYTES:
                 raise HTTPException(status_code=413, detail=f"{path.name} is too large unpacked")
             texts[path.name] = text_of(data, file=path.name)
+    if problems:
+        raise file_errors(CatalogueFileError(problems))
     return texts
+
+
+_COMPRESSION = {
+    zipfile.ZIP_STORED: "stored",
+    zipfile.ZIP_DEFLATED: "deflate",
+    zipfile.ZIP_BZIP2: "bzip2",
+    zipfile.ZIP_LZMA: "LZMA",
+}
+"""The compression methods ``zipfile`` unpacks (ZIP method numbers 0, 8, 12, 14)."""
+_ENCRYPTED = 0x1
+"""General purpose bit 0 of a ZIP entry: the member is encrypted."""
+
+
+def _member(archive: zipfile.ZipFile, info: zipfile.ZipInfo) -> tuple[bytes, str | None]:
+    """A member's bytes (at most ``MAX_UPLOAD_BYTES + 1``), or why it cannot be read.
+
+    Each way ``zipfile`` fails on a member (an encrypted one raises RuntimeError, an
+    unknown method NotImplementedError, a bad CRC BadZipFile, damaged data zlib.error,
+    EOFError, the decompressor's error, or ValueError for an impossible offset) becomes
+    a rule the 422 states.
+    """
+    if info.flag_bits & _ENCRYPTED:
+        return b"", "is encrypted: the archive must hold the files without a password"
+    if info.compress_type not in _COMPRESSION:
+        return b"", (
+            f"uses compression method {info.compress_type}, which is not supported: "
+            f"pack the files with {', '.join(_COMPRESSION.values())} (a plain ZIP uses deflate)"
+        )
+    try:
+        with archive.open(info) as member:
+            return member.read(MAX_UPLOAD_BYTES + 1), None
+    except (zipfile.BadZipFile, zlib.error, lzma.LZMAError, EOFError, OSError, ValueError) as exc:
+        # ValueError: e.g. "negative seek value" from a directory whose offsets are garbage
+        return b"", f"is damaged in the archive and cannot be unpacked ({exc})"
+    except (RuntimeError, NotImplementedError) as exc:
+        return b"", f"cannot be unpacked ({exc})"

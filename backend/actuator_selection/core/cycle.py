@@ -29,6 +29,19 @@ def _require_finite(field: str, value: float) -> None:
         raise InvalidInputError(field, f"must be a finite number, got {value!r}")
 
 
+def _require_finite_result(field: str, value: float, *, what: str) -> None:
+    """Finite inputs can still overflow a product: a 422 naming the input, never ±∞ or a 500.
+
+    (PostgreSQL's JSON refuses ``Infinity``; SQLite would store it and answer null.)
+    """
+    if not math.isfinite(value):
+        raise InvalidInputError(
+            field,
+            f"gives {what} beyond any floating-point number: no real drive has such a load "
+            "and cycle",
+        )
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class SpeedPattern:
     """The cycle of Fig. 516.2 at the actuator output.
@@ -196,12 +209,17 @@ def rms_torque_nm(
     ...                     decel_torque_nm=-85.478, pattern=p), 2)
     35.57
     """
-    energy = (
-        accel_torque_nm**2 * pattern.accel_s
-        + constant_torque_nm**2 * pattern.constant_s
-        + decel_torque_nm**2 * pattern.decel_s
-    )
-    return math.sqrt(energy / pattern.cycle_s)
+    try:
+        energy = (
+            accel_torque_nm**2 * pattern.accel_s
+            + constant_torque_nm**2 * pattern.constant_s
+            + decel_torque_nm**2 * pattern.decel_s
+        )
+    except OverflowError:  # float ** raises where float * would give inf
+        energy = math.inf
+    rms = math.sqrt(energy / pattern.cycle_s)
+    _require_finite_result("load", rms, what="T_rms (Eq. 514.2)")
+    return rms
 
 
 def mean_speed_rpm(pattern: SpeedPattern) -> float:
@@ -215,7 +233,9 @@ def mean_speed_rpm(pattern: SpeedPattern) -> float:
     """
     n_2 = pattern.speed_rpm
     travel = n_2 / 2 * pattern.accel_s + n_2 * pattern.constant_s + n_2 / 2 * pattern.decel_s
-    return travel / pattern.cycle_s
+    mean = travel / pattern.cycle_s
+    _require_finite_result("speed_rpm", mean, what="n_av (Eq. 514.3)")
+    return mean
 
 
 def duty_cycle_percent(pattern: SpeedPattern) -> float:
@@ -250,6 +270,8 @@ def cycle_torques(
         time_s=pattern.decel_s,
     )
     constant = load.torque_nm
+    _require_finite_result("load", accel, what="T_1 (Eq. 514.1)")
+    _require_finite_result("load", decel, what="T_3 (Eq. 514.1)")
     return CycleTorques(
         accel_torque_nm=accel,
         constant_torque_nm=constant,

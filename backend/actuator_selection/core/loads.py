@@ -23,6 +23,23 @@ def _check(field: str, value: float, *, positive: bool, rule: str) -> None:
         raise InvalidInputError(field, f"must be {'> 0' if positive else '≥ 0'}: {rule}")
 
 
+def _square(x: float) -> float:
+    """``x**2`` as before (the same rounding), +∞ where Python's float power overflows."""
+    try:
+        return x**2
+    except OverflowError:
+        return math.inf
+
+
+def _check_result(field: str, value: float, *, what: str) -> None:
+    """A result that overflowed names the input that drove it there (422, never ∞ or a 500)."""
+    if not math.isfinite(value):
+        raise InvalidInputError(
+            field,
+            f"gives {what} beyond any floating-point number: no real mechanism has such values",
+        )
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class BallScrew:
     """Linear horizontal motion by a ball screw (Fig. 515.2).
@@ -115,14 +132,12 @@ def ball_screw_load(screw: BallScrew, *, g: float = STANDARD_GRAVITY_M_PER_S2) -
     (0.0012533, 0.17348)
     """
     radius_per_rad = screw.lead_m / (2 * math.pi)
-    return Load(
-        torque_nm=screw.friction_coefficient
-        * screw.mass_kg
-        * g
-        * radius_per_rad
-        / screw.efficiency,
-        inertia_kgm2=screw.screw_inertia_kgm2 + screw.mass_kg * radius_per_rad**2,
-    )
+    torque = screw.friction_coefficient * screw.mass_kg * g * radius_per_rad / screw.efficiency
+    inertia = screw.screw_inertia_kgm2 + screw.mass_kg * _square(radius_per_rad)
+    # Each input is finite, but a tiny η divides the friction torque past the largest float.
+    _check_result("efficiency", torque, what="T_L = μ·m·P·g/(2π·η) (Eq. 515.4)")
+    _check_result("lead_m", inertia, what="J_L = J_S + m·(P/2π)² (Eq. 515.4)")
+    return Load(torque_nm=torque, inertia_kgm2=inertia)
 
 
 def rotary_table_load(table: RotaryTable, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> Load:
@@ -135,7 +150,8 @@ def rotary_table_load(table: RotaryTable, *, g: float = STANDARD_GRAVITY_M_PER_S
     >>> round(load.inertia_kgm2, 6), round(load.torque_nm, 5)
     (1.0, 1.4715)
     """
-    return Load(
-        torque_nm=table.friction_coefficient * table.mass_kg * g * table.friction_radius_m,
-        inertia_kgm2=table.mass_kg * table.diameter_m**2 / 8,
-    )
+    torque = table.friction_coefficient * table.mass_kg * g * table.friction_radius_m
+    inertia = table.mass_kg * _square(table.diameter_m) / 8
+    _check_result("friction_radius_m", torque, what="T_L = μ·m·g·r (Eq. 515.6)")
+    _check_result("diameter_m", inertia, what="J_L = m·D²/8 (Eq. 515.6)")
+    return Load(torque_nm=torque, inertia_kgm2=inertia)

@@ -2,6 +2,26 @@
 
 A file is read whole and every problem is collected, so that one run names all
 the bad cells at once; the caller loads nothing while any problem remains.
+
+The CSV dialect, read and written:
+
+- **Line endings.** LF, CRLF and CR alone are all read as line ends (CR alone is
+  what Excel for Mac's "CSV (Macintosh)" still writes; refusing it would refuse a
+  common file for no gain). Files are written with LF.
+- **Line breaks in cells.** A cell holding a line break (LF, CR or CRLF; only free
+  text may, see :func:`text_problem`) is always written in double quotes, so that
+  the file reads back with the same cells. (The ``csv`` module alone quotes only
+  what the line terminator contains, and would write a bare CR unquoted.)
+- **Formula injection (OWASP, "CSV Injection").** A spreadsheet runs a cell that
+  begins with ``=``, ``+``, ``-``, ``@``, tab or CR as a formula. On export a text
+  cell (not a number, date or other converted value) that begins with one of them,
+  or with a single quote ``'``, gets a single quote put in front; on import a text
+  cell that begins with a single quote loses that one quote. So ``=1+1`` is
+  exported as ``'=1+1`` and ``'quoted`` as ``''quoted``, and export → import gives
+  back exactly the stored text. Numeric columns are numbers, not text: ``-40``
+  stays ``-40``. The JSON form carries text as it is.
+- **Size.** A cell longer than the ``csv`` module's limit (131,072 characters, far
+  beyond any column) is a problem naming file and line, not a crash.
 """
 
 from __future__ import annotations
@@ -9,7 +29,8 @@ from __future__ import annotations
 import csv
 import io
 import math
-from collections.abc import Callable, Iterable, Mapping, Sequence
+import re
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from datetime import date
 from decimal import Decimal
@@ -23,6 +44,40 @@ from actuator_selection.core.money import check_currency, parse_amount
 NUL_RULE = "must not contain the NUL character (U+0000)"
 """Every text the service stores obeys it: PostgreSQL's text types cannot hold U+0000
 (catalogue cells here, request bodies in ``schemas.common``, URLs in ``api.errors``)."""
+
+_CONTROLS = "U+0000–U+001F, U+007F–U+009F"
+_BIDI = "U+202A–U+202E, U+2066–U+2069"
+ONE_LINE_RULE = (
+    f"must be one line of text without control characters ({_CONTROLS}) or bidirectional "
+    f"overrides ({_BIDI})"
+)
+MULTI_LINE_RULE = (
+    f"must not contain control characters other than tab and line breaks ({_CONTROLS}) or "
+    f"bidirectional overrides ({_BIDI})"
+)
+_ONE_LINE_BAD = re.compile("[\x00-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+_MULTI_LINE_BAD = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+
+
+def text_problem(text: str, *, line_breaks: bool = False) -> str | None:
+    """The rule ``text`` breaks, naming the first offending character; None if it is clean.
+
+    The one rule for every text the service accepts (request bodies through
+    ``schemas.common.StrictModel``, catalogue and price cells here), because text ends
+    up in documents, spreadsheets and terminals: C0 and C1 control characters (ESC
+    starts terminal escape sequences, BEL rings) and the bidirectional embeddings,
+    overrides and isolates (U+202A–U+202E, U+2066–U+2069, "Trojan Source") make text
+    display other than it reads. Multi-line text (``line_breaks``: a quote's address
+    and notes, free-text catalogue columns) may hold tab, LF and CR; names, codes and
+    other one-line text may not. U+0000 has its own rule (:data:`NUL_RULE`).
+    """
+    if "\x00" in text:
+        return NUL_RULE
+    found = (_MULTI_LINE_BAD if line_breaks else _ONE_LINE_BAD).search(text)
+    if found is None:
+        return None
+    rule = MULTI_LINE_RULE if line_breaks else ONE_LINE_RULE
+    return f"{rule}; found U+{ord(found.group()):04X} at character {found.start() + 1}"
 
 
 class Rule(Enum):
@@ -62,6 +117,17 @@ class Column:
     def attribute(self) -> str:
         """Name of the stored attribute."""
         return self.target or self.name
+
+    @property
+    def text(self) -> bool:
+        """A text column: its cell is stored as written (neither a number nor converted)."""
+        return not self.numeric and self.convert is None
+
+    @property
+    def free_text(self) -> bool:
+        """Free text (not a number, no converter, no width: notes, sources, descriptions),
+        which may hold tabs and line breaks; names and codes (a width) are one line."""
+        return not self.numeric and self.convert is None and self.max_length is None
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -164,8 +230,8 @@ def one_of(*choices: str) -> Callable[[str], str]:
 
 def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Problem | None]:
     text = raw.strip()
-    if "\x00" in text:
-        return None, Problem(file=spec.file, line=line, column=column.name, message=NUL_RULE)
+    if (rule := text_problem(text, line_breaks=column.free_text)) is not None:
+        return None, Problem(file=spec.file, line=line, column=column.name, message=rule)
     if not text.isascii():
         try:
             text.encode("utf-8")
@@ -352,13 +418,58 @@ def _float_text(shown: float, stored: float, column: Column) -> str:
     return text
 
 
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+"""First characters that make a spreadsheet read a cell as a formula (OWASP CSV Injection)."""
+_TEXT_MARK = "'"
+"""Put before a text cell that starts like a formula, or with this mark itself."""
+
+
+def neutralised(text: str) -> str:
+    """``text`` as a CSV text cell: a single quote before a formula start or a single quote.
+
+    >>> neutralised("=HYPERLINK(1)"), neutralised("'quoted"), neutralised("plain")
+    ("'=HYPERLINK(1)", "''quoted", 'plain')
+    """
+    return _TEXT_MARK + text if text.startswith((*FORMULA_STARTS, _TEXT_MARK)) else text
+
+
+def restored(raw: str) -> str:
+    """The text of a CSV text cell: :func:`neutralised` undone (one leading quote removed).
+
+    >>> restored("'=HYPERLINK(1)"), restored("''quoted"), restored(" plain ")
+    ('=HYPERLINK(1)', "'quoted", ' plain ')
+    """
+    stripped = raw.strip()
+    return stripped[1:] if stripped.startswith(_TEXT_MARK) else raw
+
+
+def _line(cells: Sequence[str]) -> str:
+    """One CSV record ending in LF, every cell holding CR or LF in double quotes."""
+    buffer = io.StringIO()
+    # A terminator holding both CR and LF makes the writer quote a cell with either;
+    # the record then ends in LF like the rest of the file.
+    csv.writer(buffer, lineterminator="\r\n").writerow(cells)
+    return buffer.getvalue()[:-2] + "\n"
+
+
 def write(spec: CsvSpec, rows: Iterable[Mapping[str, Any]]) -> str:
-    """CSV text of ``spec`` (header first) for rows of stored values."""
+    """CSV text of ``spec`` (header first) for rows of stored values.
+
+    Text cells are :func:`neutralised`; :func:`parse` reads the file back to the same
+    stored values.
+    """
     out = io.StringIO()
-    writer = csv.DictWriter(out, fieldnames=[c.name for c in spec.columns], lineterminator="\n")
-    writer.writeheader()
+    out.write(_line([c.name for c in spec.columns]))
     for row in rows:
-        writer.writerow(to_cells(spec, row))
+        cells = to_cells(spec, row)
+        out.write(
+            _line(
+                [
+                    neutralised(cells[c.name]) if c.text and cells[c.name] else cells[c.name]
+                    for c in spec.columns
+                ]
+            )
+        )
     return out.getvalue()
 
 
@@ -394,14 +505,44 @@ def parse_rows(
     return records, problems
 
 
+def _records(spec: CsvSpec, text: str, problems: list[Problem]) -> Iterator[tuple[int, list[str]]]:
+    """The CSV records of ``text`` with the line each starts on; a record the ``csv``
+    module cannot read (e.g. a cell beyond its size limit) ends the file as a problem."""
+    # newline="": CR, LF and CRLF all end lines, and line breaks inside quoted cells stay.
+    reader = csv.reader(io.StringIO(text, newline=""))
+    start = 1
+    while True:
+        try:
+            cells = next(reader)
+        except StopIteration:
+            return
+        except csv.Error as exc:
+            limit = csv.field_size_limit()
+            message = (
+                f"has a cell longer than {limit} characters, the most a CSV cell may hold"
+                if "field larger than field limit" in str(exc)
+                else f"is not valid CSV ({exc})"
+            )
+            problems.append(Problem(file=spec.file, line=start, column=None, message=message))
+            return
+        yield start, cells
+        start = reader.line_num + 1
+
+
 def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
-    """Validate the CSV ``text`` against ``spec``; returns the records and every problem."""
+    """Validate the CSV ``text`` against ``spec``; returns the records and every problem.
+
+    Lines are the lines of the file (a record with a quoted line break spans two);
+    text cells are :func:`restored` (see the module's notes on formula injection).
+    """
     problems: list[Problem] = []
-    reader = csv.reader(io.StringIO(text))
-    header = next(reader, None)
-    if header is None:
+    reader = _records(spec, text, problems)
+    first = next(reader, None)
+    if first is None:
+        if problems:
+            return [], problems
         return [], [Problem(file=spec.file, line=1, column=None, message="file is empty")]
-    header = [h.strip() for h in header]
+    header = [h.strip() for h in first[1]]
     known = {c.name: c for c in spec.columns}
     for name in header:
         if name not in known:
@@ -425,7 +566,7 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
         return [], problems
     records: list[Record] = []
     seen: dict[tuple[Any, ...], int] = {}
-    for line, cells in enumerate(reader, start=2):
+    for line, cells in reader:
         if not any(c.strip() for c in cells):
             continue
         if len(cells) != len(header):
@@ -438,7 +579,11 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
                 )
             )
             continue
-        values, row_problems = _row(spec, zip(header, cells, strict=True), line)
+        pairs = [
+            (name, restored(raw) if known[name].text else raw)
+            for name, raw in zip(header, cells, strict=True)
+        ]
+        values, row_problems = _row(spec, pairs, line)
         problems.extend(row_problems)
         record = Record(line=line, values=values)
         if duplicate := _duplicate(spec, record, seen):
@@ -451,7 +596,9 @@ def read(spec: CsvSpec, directory: Path) -> tuple[list[Record], list[Problem]]:
     """Validate ``directory / spec.file``; a missing or undecodable file is a problem too."""
     path = directory / spec.file
     try:
-        text = path.read_text(encoding="utf-8-sig")
+        # Bytes, not read_text: its universal newlines would turn a CR inside a quoted
+        # cell into LF; parse() reads every line ending itself.
+        text = path.read_bytes().decode("utf-8-sig")
     except FileNotFoundError:
         return [], [Problem(file=spec.file, line=0, column=None, message="file not found")]
     except UnicodeDecodeError as exc:

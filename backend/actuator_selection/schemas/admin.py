@@ -70,6 +70,9 @@ class ZonePointIn(StrictModel):
 class ZoneIn(StrictModel):
     """A whole zone edge (Fig. 517.1): at least two points, one of them at 0 rpm."""
 
+    # As the free-text source column of zone_points.csv, which it is stored in.
+    line_break_fields = frozenset({"source"})
+
     points: list[ZonePointIn] = Field(max_length=1000)
     source: Any = Field(description="where the zone was read from (required)")
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import Field
+from pydantic import Field, field_validator
 
 from actuator_selection.core.cycle import Load
 from actuator_selection.core.selection import Candidate, Check, Selection, Status, Verdict
@@ -71,6 +71,18 @@ class BatchSelectionRequest(StrictModel):
         description="true stores each case as a selection (GET /selections/{id}) and returns "
         f"its id; at most {MAX_STORED_CASES} cases",
     )
+
+    @field_validator("cases", mode="before")
+    @classmethod
+    def _count_first(cls, value: Any) -> Any:
+        # Before each case is validated: 20,001 cases took ~3.4 s of validation to be
+        # refused by max_length, which pydantic checks only after the items.
+        if isinstance(value, list) and len(value) > MAX_BATCH_CASES:
+            raise ValueError(
+                f"at most {MAX_BATCH_CASES} cases per request, got {len(value)}: "
+                "send the rest in further requests"
+            )
+        return value
 
 
 class BatchCandidateOut(ResponseModel):

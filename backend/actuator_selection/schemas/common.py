@@ -7,11 +7,12 @@ the largest catalogue actuator delivers under 2 kNm at under 300 rpm.
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Iterable
+from typing import Any, ClassVar
 
-from pydantic import BaseModel, ConfigDict, field_validator
+from pydantic import BaseModel, ConfigDict, ValidationInfo, field_validator
 
-from actuator_selection.db.csvio import NUL_RULE
+from actuator_selection.db.csvio import text_problem
 
 MAX_SPEED_RPM = 100_000.0
 """n_2 bound [rpm]: ten times the fastest servo motor shaft."""
@@ -27,33 +28,61 @@ MAX_MASS_KG = 1_000_000.0
 """Moved mass bound [kg]: 1000 t."""
 MAX_LENGTH_M = 100.0
 """Bound for leads, diameters and radii [m]."""
+MIN_LENGTH_M = 1e-6
+"""Smallest screw lead or table diameter [m]: 1 µm, a hundred times below the finest
+precision screw lead (~0.1 mm). Without it a lead of 5e-324 m passes "> 0" and its
+T_L = μ·m·P·g/(2π·η) underflows to exactly 0, a load that silently vanishes."""
+MIN_EFFICIENCY = 0.01
+"""Smallest screw efficiency η [-]: 1 %. A ball screw runs at η ≈ 0.9, even a
+self-locking trapezoidal lead screw at η ≈ 0.2–0.4; η divides Eq. 515.4, and a value
+like 1e-300 drives T_L (and T_rms) past the largest float. With η ≥ 0.01 and the other
+bounds here, T_L ≤ 1.6·10¹¹ Nm and every result of the cycle stays finite."""
 MAX_FRICTION_COEFFICIENT = 10.0
 """μ bound [-]: dry rubber on rubber stays below 2."""
 
 
-def holds_nul(value: object) -> bool:
-    """True when ``value`` (text, or lists and objects of it, keys too) holds U+0000."""
+def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:
+    """The text rule (``db.csvio.text_problem``) broken by ``value``: text, or lists and
+    objects of it (keys too); None when every text in it is clean."""
     if isinstance(value, str):
-        return "\x00" in value
+        return text_problem(value, line_breaks=line_breaks)
     if isinstance(value, list | tuple):
-        return any(holds_nul(v) for v in value)
-    if isinstance(value, dict):
-        return any(holds_nul(k) or holds_nul(v) for k, v in value.items())
-    return False
+        items: Iterable[object] = value
+    elif isinstance(value, dict):
+        items = (x for pair in value.items() for x in pair)
+    else:
+        return None
+    for item in items:
+        if (rule := text_rule_broken(item, line_breaks=line_breaks)) is not None:
+            return rule
+    return None
 
 
 class StrictModel(BaseModel):
     """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞;
-    no U+0000 in text (PostgreSQL cannot store it, and no valid input needs it)."""
+    text obeys the one text rule (``db.csvio.text_problem``): no U+0000 (PostgreSQL cannot
+    store it), no control characters or bidirectional overrides, and line breaks and tabs
+    only in the fields named in ``line_break_fields`` (e.g. an address).
 
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
+    JSON types are strict: ``true`` is not 1 rpm, ``"yes"`` or ``1`` is not a boolean,
+    ``"40"`` is not a number and ``40`` is not text. A JSON integer is still a number
+    (``"speed_rpm": 40``). Fields the API documents as strings of another type opt out
+    one by one and check their own input: decimals (``schemas.quotes.DecimalIn``),
+    dates (``valid_until``), enumerations given by name (``sensor``).
+    """
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True, strict=True)
+
+    line_break_fields: ClassVar[frozenset[str]] = frozenset()
+    """Text fields that may hold line breaks and tabs (multi-line text)."""
 
     # After each field's own validation, so a nested model has already named its field.
     @field_validator("*", mode="after")
     @classmethod
-    def _no_nul(cls, value: Any) -> Any:
-        if holds_nul(value):
-            raise ValueError(NUL_RULE)
+    def _text_rule(cls, value: Any, info: ValidationInfo) -> Any:
+        multi_line = info.field_name in cls.line_break_fields
+        if (rule := text_rule_broken(value, line_breaks=multi_line)) is not None:
+            raise ValueError(rule)
         return value
 
 

@@ -8,11 +8,20 @@ most cents exactly); in responses always a string with two decimal places
 
 from __future__ import annotations
 
-from datetime import date, datetime
+import re
+from datetime import UTC, date, datetime, timedelta
 from decimal import Decimal
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, StrictInt, StringConstraints
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    StrictInt,
+    StringConstraints,
+)
 
 from actuator_selection.core.money import MAX_QUANTITY, ROUNDING_RULE
 from actuator_selection.core.quote_status import (
@@ -32,13 +41,49 @@ def _no_float(value: Any) -> Any:
     return value
 
 
-DecimalIn = Annotated[Decimal, BeforeValidator(_no_float)]
+# Not strict (StrictModel): a decimal comes as a JSON string or integer; _no_float refuses
+# floats and booleans before the lax conversion.
+DecimalIn = Annotated[Decimal, Field(strict=False), BeforeValidator(_no_float)]
+
+MAX_VALIDITY_DAYS = 731
+"""``valid_until`` at most two years after today (UTC): a quote is priced from today's
+price list, and a validity of decades ("9999-12-31") is a typo, not a commercial term."""
+_ISO_DATE = re.compile(r"\d{4}-\d{2}-\d{2}")
+
+
+def _date_text(value: Any) -> Any:
+    # Only a YYYY-MM-DD string: pydantic would also read 1893456000 (Unix seconds) or
+    # "2030-01-01T00:00" as a date.
+    if not isinstance(value, str) or not _ISO_DATE.fullmatch(value):
+        raise ValueError("must be a date written YYYY-MM-DD (a JSON string)")
+    try:
+        return date.fromisoformat(value)
+    except ValueError:
+        raise ValueError(f"must be a calendar date, got {value!r}") from None
+
+
+def _not_too_late(value: date) -> date:
+    latest = datetime.now(UTC).date() + timedelta(days=MAX_VALIDITY_DAYS)
+    if value > latest:
+        raise ValueError(
+            f"must be at most {MAX_VALIDITY_DAYS} days after today ({latest.isoformat()}): "
+            "prices are quoted from the current price list"
+        )
+    return value
+
+
+ValidUntil = Annotated[date, BeforeValidator(_date_text), AfterValidator(_not_too_late)]
 Text = Annotated[str, StringConstraints(strip_whitespace=True)]
 Quantity = Annotated[StrictInt, Field(ge=1, le=MAX_QUANTITY, description="pieces, ≥ 1")]
 
 
 class CustomerIn(StrictModel):
-    """Who the quote is for; free text, shown escaped on the document."""
+    """Who the quote is for; free text, shown escaped on the document.
+
+    The address may span lines (tab, LF, CR); name and reference are one line.
+    """
+
+    line_break_fields = frozenset({"address"})
 
     name: Annotated[Text, Field(min_length=1, max_length=200)]
     address: Annotated[Text, Field(max_length=2000)] | None = None
@@ -67,7 +112,12 @@ class ControllerItemIn(StrictModel):
 
 
 class QuoteCreate(StrictModel):
-    """A quote for the selection ``selection_id``; prices come from ``price_list``."""
+    """A quote for the selection ``selection_id``; prices come from ``price_list``.
+
+    ``notes`` may span lines (tab, LF, CR); every other text is one line.
+    """
+
+    line_break_fields = frozenset({"notes"})
 
     selection_id: Annotated[str, Field(min_length=1, max_length=36)]
     customer: CustomerIn
@@ -81,7 +131,10 @@ class QuoteCreate(StrictModel):
     discount_percent: DecimalIn = Field(
         default=Decimal(0), ge=0, le=100, decimal_places=2, description='0–100, e.g. "7.5"'
     )
-    valid_until: date = Field(description="last day the customer may accept (inclusive)")
+    valid_until: ValidUntil = Field(
+        description="last day the customer may accept (inclusive), YYYY-MM-DD, today at the "
+        f"earliest and at most {MAX_VALIDITY_DAYS} days ahead"
+    )
     notes: Annotated[Text, Field(max_length=4000)] | None = None
 
 

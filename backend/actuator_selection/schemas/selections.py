@@ -13,6 +13,7 @@ from pydantic import Discriminator, Field, Tag
 
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.drive import DriveOptions
+from actuator_selection.core.errors import DomainError
 from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
 from actuator_selection.core.selection import Application, Candidate, Selection
 from actuator_selection.schemas.checks import CheckOut
@@ -24,6 +25,8 @@ from actuator_selection.schemas.common import (
     MAX_SPEED_RPM,
     MAX_TIME_S,
     MAX_TORQUE_NM,
+    MIN_EFFICIENCY,
+    MIN_LENGTH_M,
     MIN_RAMP_S,
     ResponseModel,
     StrictModel,
@@ -44,6 +47,12 @@ Friction = Annotated[
 Inertia = Annotated[float, Field(ge=0, le=MAX_INERTIA_KGM2)]
 
 
+def _renamed(exc: DomainError, prefix: str) -> DomainError:
+    """``exc`` with its field under ``prefix`` (``efficiency`` → ``load.efficiency``), so that
+    a core error names the field where the request body has it."""
+    return type(exc)(f"{prefix}.{exc.field}", exc.message)
+
+
 class DirectLoad(StrictModel):
     """T_L and J_L given directly, at the actuator output."""
 
@@ -56,7 +65,10 @@ class DirectLoad(StrictModel):
 
     def to_core(self) -> Load:
         """The load as the core sees it."""
-        return Load(torque_nm=self.torque_nm, inertia_kgm2=self.inertia_kgm2)
+        try:
+            return Load(torque_nm=self.torque_nm, inertia_kgm2=self.inertia_kgm2)
+        except DomainError as exc:
+            raise _renamed(exc, "load") from None
 
 
 class BallScrewLoad(StrictModel):
@@ -65,22 +77,29 @@ class BallScrewLoad(StrictModel):
     type: Literal["ball_screw"]
     speed_rpm: SpeedRpm
     mass_kg: Mass
-    lead_m: float = Field(gt=0, le=MAX_LENGTH_M, description="screw lead P [m/rev]")
+    lead_m: float = Field(
+        ge=MIN_LENGTH_M, le=MAX_LENGTH_M, description="screw lead P [m/rev], ≥ 1 µm"
+    )
     friction_coefficient: Friction
-    efficiency: float = Field(gt=0, le=1, description="screw efficiency η [-], 0 < η ≤ 1")
+    efficiency: float = Field(
+        ge=MIN_EFFICIENCY, le=1, description="screw efficiency η [-], 0.01 ≤ η ≤ 1"
+    )
     screw_inertia_kgm2: Inertia = Field(default=0.0, description="J_S, screw inertia [kgm²]")
 
     def to_core(self) -> Load:
         """T_L and J_L by Eq. 515.4."""
-        return ball_screw_load(
-            BallScrew(
-                mass_kg=self.mass_kg,
-                lead_m=self.lead_m,
-                friction_coefficient=self.friction_coefficient,
-                efficiency=self.efficiency,
-                screw_inertia_kgm2=self.screw_inertia_kgm2,
+        try:
+            return ball_screw_load(
+                BallScrew(
+                    mass_kg=self.mass_kg,
+                    lead_m=self.lead_m,
+                    friction_coefficient=self.friction_coefficient,
+                    efficiency=self.efficiency,
+                    screw_inertia_kgm2=self.screw_inertia_kgm2,
+                )
             )
-        )
+        except DomainError as exc:
+            raise _renamed(exc, "load") from None
 
 
 class RotaryTableLoad(StrictModel):
@@ -89,7 +108,9 @@ class RotaryTableLoad(StrictModel):
     type: Literal["rotary_table"]
     speed_rpm: SpeedRpm
     mass_kg: Mass
-    diameter_m: float = Field(gt=0, le=MAX_LENGTH_M, description="table diameter D [m]")
+    diameter_m: float = Field(
+        ge=MIN_LENGTH_M, le=MAX_LENGTH_M, description="table diameter D [m], ≥ 1 µm"
+    )
     friction_coefficient: Friction
     friction_radius_m: float = Field(
         ge=0, le=MAX_LENGTH_M, description="radius r at which friction acts [m]"
@@ -97,14 +118,17 @@ class RotaryTableLoad(StrictModel):
 
     def to_core(self) -> Load:
         """T_L and J_L by Eq. 515.6."""
-        return rotary_table_load(
-            RotaryTable(
-                mass_kg=self.mass_kg,
-                diameter_m=self.diameter_m,
-                friction_coefficient=self.friction_coefficient,
-                friction_radius_m=self.friction_radius_m,
+        try:
+            return rotary_table_load(
+                RotaryTable(
+                    mass_kg=self.mass_kg,
+                    diameter_m=self.diameter_m,
+                    friction_coefficient=self.friction_coefficient,
+                    friction_radius_m=self.friction_radius_m,
+                )
             )
-        )
+        except DomainError as exc:
+            raise _renamed(exc, "load") from None
 
 
 def _load_kind(value: Any) -> str:

@@ -80,7 +80,8 @@ class ControllerVoltageOut(ResponseModel):
 class SensorTemperatureRequest(StrictModel):
     """A winding-sensor resistance, optionally judged against a family's limits."""
 
-    sensor: TemperatureSensor = Field(description="'KTY84-130' or 'PTC'")
+    # Not strict: JSON gives the sensor's name as text, never an enum member.
+    sensor: TemperatureSensor = Field(strict=False, description="'KTY84-130' or 'PTC'")
     resistance_ohm: float = Field(gt=0, le=1e6, description="measured resistance [Ω]")
     family: str | None = Field(default=None, max_length=40, description="e.g. FHA-C")
     nominal_response_temperature_c: float | None = Field(
