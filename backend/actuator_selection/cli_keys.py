@@ -69,7 +69,8 @@ def _revoke(args: argparse.Namespace) -> int:
 def _import_prices(args: argparse.Namespace) -> int:
     path = Path(args.file)
     try:
-        text = path.read_text(encoding="utf-8-sig")
+        # Bytes, not read_text: universal newlines would turn a CR inside a quoted cell to LF.
+        text = path.read_bytes().decode("utf-8-sig")
     except (OSError, UnicodeDecodeError) as exc:
         print(f"prices: cannot read {path}: {exc}", file=sys.stderr)
         return 1

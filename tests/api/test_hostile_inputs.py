@@ -481,3 +481,25 @@ def test_zone_source_follows_the_free_text_rule(api: SalesApi) -> None:
     error = only_error(admin(api, "put", path, json={**ZONE, "source": "\u202eevil"}))
     assert error["loc"] == ["body", "source"]
     assert "found U+202E" in error["msg"]
+
+
+@pytest.mark.parametrize("value", [1e-300, 5e-324, 1e-10])
+def test_vanishing_catalogue_numbers_are_refused(api: SalesApi, value: float) -> None:
+    """T_max = 1e-300 made the peak-torque margin infinite, which no database stores."""
+    response = admin(api, "post", "/api/v1/actuators", json={**NEW, "max_torque_nm": value})
+    assert response.status_code == 422, response.text
+    (entry,) = response.json()["detail"]
+    assert entry["loc"] == ["body", "max_torque_nm"]
+    assert "must be 0 or at least 1e-09 in size" in entry["msg"]
+
+
+def test_the_smallest_allowed_catalogue_number_gives_finite_results(
+    api: SalesApi,
+) -> None:
+    tiny = {**NEW, "max_torque_nm": 1e-9, "inertia_kgm2": 1e-9, "stall_torque_nm": 1e-9}
+    assert admin(api, "post", "/api/v1/actuators", json=tiny).status_code == 201
+    body = {**worked_example.request(), "models": [NEW["model"]]}
+    response = api.client.post("/api/v1/selections", json=body)
+    assert response.status_code == 201, response.text
+    stored = api.client.get(f"/api/v1/selections/{response.json()['id']}")
+    assert stored.json() == response.json()

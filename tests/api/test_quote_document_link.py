@@ -23,7 +23,7 @@ def _quote(api: SalesApi) -> str:
     return number
 
 
-def _link(api: SalesApi, number: str, role: str = "sales") -> Any:
+def _link(api: SalesApi, number: str, role: str | None = "sales") -> Any:
     return api.post(f"/api/v1/quotes/{number}/document-link", role=role)
 
 

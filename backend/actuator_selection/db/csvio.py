@@ -206,6 +206,10 @@ def boolean(text: str) -> bool:
 
 
 WHOLE_NUMBER_MAX = 1_000_000
+SMALLEST_MAGNITUDE = 1e-9
+"""Smallest non-zero catalogue number: far below any published value (the smallest are
+inertias of about 1e-6 kgm²), and large enough that no margin or ratio computed from a
+catalogue value overflows (T_max = 1e-300 gave an infinite margin)."""
 
 
 def whole_number(text: str) -> int:
@@ -288,6 +292,13 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
             line=line,
             column=column.name,
             message=f"must be at most {column.magnitude:g} in size, got {text!r}",
+        )
+    if value != 0 and abs(value) < SMALLEST_MAGNITUDE:
+        return None, Problem(
+            file=spec.file,
+            line=line,
+            column=column.name,
+            message=f"must be 0 or at least {SMALLEST_MAGNITUDE:g} in size, got {text!r}",
         )
     return value * column.scale, None
 
