@@ -1,0 +1,200 @@
+"""The two pages work in Chromium under the security headers' Content-Security-Policy.
+
+The app is served with ``security_headers.install`` (a no-op if ``create_app``
+installs it already). Chromium reports every blocked load, inline script, style or
+eval on the console ("… violates the following Content Security Policy directive");
+the tests fail on any such message, from the pages and from the quote document the
+sales page writes into a window of its own (that window inherits the sales page's
+policy). A canary test makes sure such a violation is seen at all.
+"""
+
+from __future__ import annotations
+
+import socket
+import threading
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from datetime import UTC, datetime, timedelta
+from pathlib import Path
+
+import httpx
+import pytest
+import uvicorn
+from playwright.sync_api import Browser, BrowserContext, ConsoleMessage, Page, expect
+from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST, WORKED_EXAMPLE, load_example_prices
+
+from actuator_selection.api import security_headers
+from actuator_selection.api.security_headers import PAGE_CSP
+from actuator_selection.config import SEED_DIR, Settings
+from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.db.migrate import upgrade
+from actuator_selection.db.sales import ApiKeyRepository
+from actuator_selection.db.seed import load_seed
+from actuator_selection.main import create_app
+
+from .conftest import DESKTOP
+
+pytestmark = pytest.mark.browser
+SLOW_MS = 20_000
+"""Timeout for steps that wait for the server or for plotly.js (≈ 4.8 MB) under a loaded CI."""
+FHA = "FHA-25C-50-L"
+
+
+@dataclass(frozen=True)
+class Site:
+    url: str
+    sales_key: str
+
+
+class _Server(uvicorn.Server):
+    def install_signal_handlers(self) -> None:  # the main thread keeps its handlers
+        pass
+
+
+def _database(directory: Path) -> tuple[str, str]:
+    url = f"sqlite:///{directory / 'csp.sqlite3'}"
+    upgrade(url=url)
+    engine = make_engine(url)
+    try:
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+            load_example_prices(session)
+            _, key = ApiKeyRepository(session).create(
+                name="CSP test", role="sales", now=datetime.now(UTC)
+            )
+    finally:
+        engine.dispose()
+    return url, key
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory, chromium_executable: str) -> Iterator[Site]:
+    url, key = _database(tmp_path_factory.mktemp("csp-e2e"))
+    app = create_app(Settings(database_url=url))
+    security_headers.install(app)
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    sock.bind(("127.0.0.1", 0))
+    port = sock.getsockname()[1]
+    server = _Server(uvicorn.Config(app, log_level="warning", access_log=False))
+    thread = threading.Thread(target=server.run, kwargs={"sockets": [sock]}, daemon=True)
+    thread.start()
+    deadline = time.monotonic() + 20
+    while not server.started:
+        if time.monotonic() > deadline or not thread.is_alive():
+            pytest.fail("the app did not start", pytrace=False)
+        time.sleep(0.02)
+    try:
+        yield Site(url=f"http://127.0.0.1:{port}", sales_key=key)
+    finally:
+        server.should_exit = True
+        thread.join(10)
+        sock.close()
+        app.state.engine.dispose()
+
+
+@dataclass
+class Console:
+    """Console errors of every page of a context (popups included)."""
+
+    errors: list[str] = field(default_factory=list)
+
+    def on_console(self, message: ConsoleMessage) -> None:
+        if message.type == "error":
+            self.errors.append(message.text)
+
+    @property
+    def csp_violations(self) -> list[str]:
+        return [text for text in self.errors if "Content Security Policy" in text]
+
+
+@pytest.fixture
+def context(browser: Browser, site: Site) -> Iterator[tuple[BrowserContext, Console]]:
+    context = browser.new_context(viewport=DESKTOP, locale="en-US", base_url=site.url)
+    context.set_default_timeout(15_000)
+    console = Console()
+    context.on("console", console.on_console)
+    context.on("weberror", lambda web_error: console.errors.append(f"uncaught: {web_error.error}"))
+    try:
+        yield context, console
+    finally:
+        context.close()
+
+
+def _open(page: Page, path: str) -> None:
+    response = page.goto(path)
+    assert response is not None
+    assert response.status == 200
+    assert response.headers.get("content-security-policy") == PAGE_CSP  # not vacuous
+
+
+def test_a_violation_is_seen(context: tuple[BrowserContext, Console]) -> None:
+    """The canary: an inline script added to the page is refused and reported."""
+    browser_context, console = context
+    page = browser_context.new_page()
+    _open(page, "/")
+    page.evaluate(
+        """() => {
+            const script = document.createElement("script");
+            script.textContent = "window.__inline = 1";
+            document.head.append(script);
+        }"""
+    )
+    page.wait_for_timeout(200)
+    assert page.evaluate("window.__inline") is None
+    assert console.csp_violations, console.errors
+
+
+def test_engineer_page_draws_its_charts_under_the_policy(
+    context: tuple[BrowserContext, Console],
+) -> None:
+    browser_context, console = context
+    page = browser_context.new_page()
+    _open(page, "/")
+    page.locator("#example").click()
+    page.locator("#submit").click()
+    page.locator(f'#ranking-table tr[data-model="{FHA}"] td[data-field="rms"]').click()
+    for chart in ("#chart-cycle", "#chart-diagram"):
+        page.wait_for_selector(f'{chart}[data-state="ready"][data-model="{FHA}"]', timeout=SLOW_MS)
+        expect(page.locator(f"{chart} .main-svg").first).to_be_visible()
+    page.get_by_role("button", name="Deutsch").click()  # redraws in the other language
+    page.wait_for_selector(f'#chart-diagram[data-state="ready"][data-model="{FHA}"]')
+    assert page.evaluate("typeof window.Plotly.react") == "function"
+    assert console.csp_violations == []
+    assert console.errors == []
+
+
+def _quote(site: Site) -> str:
+    headers = {"Authorization": f"Bearer {site.sales_key}"}
+    selection = httpx.post(f"{site.url}/api/v1/selections", json=WORKED_EXAMPLE, timeout=30)
+    assert selection.status_code == 201, selection.text
+    body = {
+        "selection_id": selection.json()["id"],
+        "customer": {"name": "Muster GmbH", "address": "Hauptstr. 1\n12345 Musterstadt"},
+        "actuator": {"model": FHA, "quantity": 1},
+        "price_list": EXAMPLE_PRICE_LIST,
+        "valid_until": (datetime.now(UTC).date() + timedelta(days=30)).isoformat(),
+    }
+    quote = httpx.post(f"{site.url}/api/v1/quotes", json=body, headers=headers, timeout=30)
+    assert quote.status_code == 201, quote.text
+    return str(quote.json()["number"])
+
+
+def test_sales_page_and_its_quote_document_under_the_policy(
+    context: tuple[BrowserContext, Console], site: Site
+) -> None:
+    browser_context, console = context
+    number = _quote(site)
+    page = browser_context.new_page()
+    _open(page, "/sales.html")
+    page.fill("#api-key", site.sales_key)
+    page.click("#key-form button[type=submit]")
+    row = page.locator(f"#quotes tr[data-number='{number}']")
+    expect(row).to_be_visible(timeout=SLOW_MS)
+    with page.expect_popup() as popup:
+        row.get_by_role("button", name="Open document").click()
+    document = popup.value
+    expect(document.locator("html[data-figure=ready]")).to_have_count(1, timeout=SLOW_MS)
+    expect(document.locator("#speed-torque .main-svg").first).to_be_visible()
+    assert console.csp_violations == []
+    assert console.errors == []
