@@ -39,7 +39,7 @@ typecheck: install
 	$(BIN)/mypy
 
 pytest: install
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n auto
 
 ## Throughput of the selection engine (not part of the tests).
 bench: install

@@ -22,6 +22,7 @@ from actuator_selection.api import (
     health,
     prices,
     quotes,
+    security_headers,
     selections,
     static,
     tools,
@@ -91,4 +92,5 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     if FRONTEND_DIR.is_dir():
         app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
+    security_headers.install(app)
     return app

@@ -109,3 +109,12 @@ def test_selection_candidates_carry_controllers_and_say_what_is_missing(
     assert first["voltage"]["value"] == pytest.approx(88.8)
     assert first["voltage"]["status"] == "pass"
     assert cha["controllers_excluded"] + len(cha["controllers"]) == 28
+
+
+def test_an_unknown_family_filter_is_named_as_a_query_parameter(client: TestClient) -> None:
+    response = client.get("/api/v1/controllers", params={"family": "XYZ"})
+    assert response.status_code == 422
+    (entry,) = response.json()["detail"]
+    assert entry["loc"] == ["query", "family"]
+    assert entry["type"] == "unknown_family"
+    assert "'XYZ' is not an actuator family of Table 521.1" in entry["msg"]

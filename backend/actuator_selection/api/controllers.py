@@ -7,6 +7,7 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, HTTPException, Path, Query
 
 from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.compatibility import (
     BusClass,
     FeedbackSystem,
@@ -15,6 +16,7 @@ from actuator_selection.core.compatibility import (
     match_controllers,
     product_family,
 )
+from actuator_selection.core.errors import NotFoundError
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.csvio import WHOLE_NUMBER_MAX
@@ -29,7 +31,9 @@ from actuator_selection.schemas.controllers import (
 router = APIRouter(tags=["controllers"])
 
 
-@router.get("/controllers")
+@router.get(
+    "/controllers", responses={422: {"description": "an unknown family or a bad filter value"}}
+)
 def list_controllers(
     session: SessionDep,
     manufacturer: Annotated[str | None, Query(max_length=80, description="substring")] = None,
@@ -47,7 +51,12 @@ def list_controllers(
     """Rows of Table 521.1 that support every given criterion at the given level."""
     options: list[Option] = [o for o in (bus_class, sensor, feedback) if o is not None]
     if family is not None:
-        options.append(product_family(family))
+        try:
+            options.append(product_family(family))
+        except NotFoundError as exc:  # a filter value, named where it was sent
+            raise RequestFieldError(
+                [field_error(["query", "family"], exc.message, "unknown_family")]
+            ) from None
     wanted = {SupportLevel.TESTED} if level == "tested" else set(SupportLevel)
     records = ProtectionRepository(session).controllers()
     return [

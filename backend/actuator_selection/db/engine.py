@@ -105,16 +105,25 @@ def make_engine(url: str, limits: EngineLimits | None = None) -> Engine:
     url = normalise_url(url)
     parsed = make_url(url)
     if parsed.get_backend_name() == "sqlite":
-        if parsed.database and parsed.database != ":memory:":
-            Path(parsed.database).parent.mkdir(parents=True, exist_ok=True)
+        in_memory = parsed.database in (None, "", ":memory:")
+        if not in_memory:
+            Path(str(parsed.database)).parent.mkdir(parents=True, exist_ok=True)
+        # An in-memory database lives in one connection (SQLAlchemy's SingletonThreadPool).
+        pool: dict[str, Any] = (
+            {}
+            if in_memory
+            else {
+                "pool_size": limits.pool_size,
+                "max_overflow": limits.pool_size,
+                "pool_timeout": limits.pool_timeout_s,
+            }
+        )
         engine = create_engine(
             url,
             # pysqlite's ``timeout`` is SQLite's busy timeout: how long to wait for a lock.
             connect_args={"check_same_thread": False, "timeout": limits.lock_timeout_s},
             json_serializer=_to_json,
-            pool_size=limits.pool_size,
-            max_overflow=limits.pool_size,
-            pool_timeout=limits.pool_timeout_s,
+            **pool,
         )
         _sqlite_setup(engine)
         return engine
