@@ -45,11 +45,22 @@ def _seed(args: argparse.Namespace) -> int:
 
 
 def _serve(args: argparse.Namespace) -> int:
+    import os
+
     import uvicorn
 
-    from actuator_selection.main import create_app
-
-    uvicorn.run(create_app(), host=args.host, port=args.port, log_level="info")
+    # Each worker process builds its app from the environment, so the URL given here
+    # travels there (``--database-url`` before the command, else $DATABASE_URL).
+    os.environ["DATABASE_URL"] = args.database_url
+    get_settings.cache_clear()
+    uvicorn.run(
+        "actuator_selection.main:create_app",
+        factory=True,
+        host=args.host,
+        port=args.port,
+        workers=args.workers,
+        log_level="info",
+    )
     return 0
 
 
@@ -79,6 +90,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     serve = commands.add_parser("serve", help="serve the API and the web page")
     serve.add_argument("--host", default=settings.host)
     serve.add_argument("--port", type=int, default=settings.port)
+    serve.add_argument(
+        "--workers",
+        type=int,
+        default=settings.workers,
+        help="server processes (default: $WORKERS or 1); each admits MAX_CONCURRENT_REQUESTS "
+        "requests and holds a database pool of its own",
+    )
     serve.set_defaults(run=_serve)
     args = parser.parse_args(argv)
     status: int = args.run(args)

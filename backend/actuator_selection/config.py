@@ -26,6 +26,8 @@ class Settings(BaseSettings):
     database_url: str = DEFAULT_DATABASE_URL
     host: str = "127.0.0.1"
     port: int = 8000
+    workers: int = Field(default=1, ge=1, le=64)
+    """Server processes of ``serve``; several share the load of one host's cores."""
     require_api_key: bool = False
     """When true, every endpoint needs an API key; otherwise catalogue reads and
     selections are open and only admin and sales operations need one."""

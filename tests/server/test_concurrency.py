@@ -5,6 +5,7 @@ from __future__ import annotations
 import http.client
 import json
 import re
+import subprocess
 import threading
 import time
 from collections import Counter
@@ -195,3 +196,26 @@ def test_selections_record_the_catalogue_version_they_were_computed_with(
         assert peak["limit"] == expected[version], (version, peak["limit"])
         seen[version] += 1
     assert len(seen) > 1  # the catalogue did change under the clients
+
+
+def test_two_worker_processes_serve_one_coherent_catalogue(start_server: StartServer) -> None:
+    """``serve --workers 2``: an admin change made through one process is seen by both."""
+    server, _ = start_server(WORKERS="2")
+    assert server.process is not None
+    children = subprocess.run(
+        ["pgrep", "-P", str(server.process.pid)], capture_output=True, text=True, check=False
+    ).stdout.split()
+    assert len(children) >= 2, children  # the supervisor's workers (and its resource tracker)
+    model = "FHA-25C-50-L"
+    with server.client("admin") as admin_client:
+        exported = admin_client.get("/api/v1/catalogue/export", params={"format": "json"})
+        (row,) = [r for r in exported.json()["actuators"] if r["model"] == model]
+        put = admin_client.put(f"/api/v1/actuators/{model}", json={**row, "max_torque_nm": 97})
+        assert put.status_code == 200, put.text
+    body = {**WORKED_EXAMPLE, "models": [model]}
+    limits = set()
+    for _ in range(20):
+        with server.client() as client:  # a new connection each time: either worker
+            (candidate,) = client.post("/api/v1/selections", json=body).json()["candidates"]
+        limits |= {c["limit"] for c in candidate["checks"] if c["name"] == "peak_torque"}
+    assert limits == {97}
