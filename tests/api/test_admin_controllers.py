@@ -62,7 +62,9 @@ def test_create_a_controller_with_the_next_row(api: SalesApi) -> None:
     assert row in candidate_controllers(api, "CHA-25A-50")
     again = admin(api, "post", "/api/v1/controllers", json={**NEW, "source_row": row})
     assert again.status_code == 409
-    assert f"PUT /controllers/{row}" in again.json()["detail"]
+    (entry,) = again.json()["detail"]
+    assert entry["loc"] == ["body", "source_row"]
+    assert f"PUT /controllers/{row}" in entry["msg"]
 
 
 @pytest.mark.parametrize(

@@ -45,7 +45,9 @@ def test_get_actuator_with_source_and_empty_unpublished_values(client: TestClien
 def test_unknown_model_is_404(client: TestClient) -> None:
     response = client.get("/api/v1/actuators/NOPE-1")
     assert response.status_code == 404
-    assert "NOPE-1" in response.json()["detail"]
+    (entry,) = response.json()["detail"]
+    assert (entry["loc"], entry["type"]) == (["path", "model"], "not_found")
+    assert "NOPE-1" in entry["msg"]
 
 
 @pytest.mark.parametrize("value", ["nan", "inf", "-1", "lots"])

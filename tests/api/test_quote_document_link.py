@@ -58,7 +58,9 @@ def test_a_link_expires(api: SalesApi) -> None:
     api.clock.advance(days=1)
     response = api.get(url, role=None)
     assert response.status_code == 401
-    assert "expired" in response.json()["detail"]
+    (entry,) = response.json()["detail"]
+    assert (entry["loc"], entry["type"]) == (["query", "access"], "link_invalid")
+    assert "expired" in entry["msg"]
 
 
 def test_revoking_the_key_revokes_its_links(api: SalesApi, connection: Connection) -> None:

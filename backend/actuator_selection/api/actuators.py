@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from fastapi import APIRouter, HTTPException, Query
+from fastapi import APIRouter, Query
 
 from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.errors import ResourceNotFoundError
 from actuator_selection.db.repositories import (
     ActuatorFilter,
     CatalogueRepository,
@@ -48,7 +49,9 @@ def get_actuator(model: str, session: SessionDep) -> ActuatorOut:
     """One catalogue actuator."""
     record = CatalogueRepository(session).actuator(model)
     if record is None:
-        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+        raise ResourceNotFoundError.at(
+            ["path", "model"], f"unknown actuator model {model!r}", "not_found"
+        )
     return ActuatorOut.from_record(record)
 
 

@@ -28,11 +28,16 @@ from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
 from urllib.parse import quote
 
-from fastapi import APIRouter, Body, Depends, HTTPException, Path, Query, Response
+from fastapi import APIRouter, Body, Depends, Path, Query, Response
 
 from actuator_selection.api.auth import AdminDep
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.errors import (
+    ConflictError,
+    RequestFieldError,
+    ResourceNotFoundError,
+    field_error,
+)
 from actuator_selection.api.uploads import (
     Upload,
     file_errors,
@@ -117,21 +122,28 @@ def _keyed_by_path(body: Mapping[str, Any], column: str, value: str | int) -> di
     return {**body, column: value}
 
 
+def _unknown_model(model: str) -> ResourceNotFoundError:
+    return ResourceNotFoundError.at(
+        ["path", "model"], f"unknown actuator model {model!r}", "not_found"
+    )
+
+
 def _actuator_out(session: SessionDep, model: str) -> ActuatorOut:
     record = CatalogueRepository(session).actuator(model)
     if record is None:
-        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+        raise _unknown_model(model)
     return ActuatorOut.from_record(record)
 
 
 def _known(session: SessionDep, model: str, *, active: bool = False) -> None:
     state = CatalogueAdminRepository(session).state(model)
     if state is None:
-        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+        raise _unknown_model(model)
     if active and state.retired_at is not None:
-        raise HTTPException(
-            status_code=409,
-            detail=f"actuator {model!r} is retired; PUT /actuators/{model} brings it back first",
+        raise ConflictError.at(
+            ["path", "model"],
+            f"actuator {model!r} is retired; PUT /actuators/{model} brings it back first",
+            "retired",
         )
 
 
@@ -145,10 +157,11 @@ def create_actuator(
     repository = CatalogueAdminRepository(session)
     values = _validated(repository.validate_actuator, body)
     if repository.state(values["model"]) is not None:
-        raise HTTPException(
-            status_code=409,
-            detail=f"actuator {values['model']!r} exists (retired ones too); "
+        raise ConflictError.at(
+            ["body", "model"],
+            f"actuator {values['model']!r} exists (retired ones too); "
             "PUT /actuators/{model} replaces it",
+            "exists",
         )
     repository.save_actuator(values)
     # A header is Latin-1: a model such as "FHA-Ω" is sent percent-encoded (RFC 3986).
@@ -270,7 +283,7 @@ def _controller_out(session: SessionDep, row: int) -> ControllerOut:
 
 def _known_controller(session: SessionDep, row: int) -> None:
     if CatalogueAdminRepository(session).controller_state(row) is None:
-        raise HTTPException(status_code=404, detail=f"no controller in row {row}")
+        raise ResourceNotFoundError.at(["path", "row"], f"no controller in row {row}", "not_found")
 
 
 @router.post(
@@ -293,10 +306,10 @@ def create_controller(
     values = _validated(repository.validate_controller, body)
     row = values["source_row"]
     if repository.controller_state(row) is not None:
-        raise HTTPException(
-            status_code=409,
-            detail=f"controller row {row} exists (retired ones too); "
-            f"PUT /controllers/{row} replaces it",
+        raise ConflictError.at(
+            ["body", "source_row"],
+            f"controller row {row} exists (retired ones too); PUT /controllers/{row} replaces it",
+            "exists",
         )
     repository.save_controller(values)
     response.headers["Location"] = f"/api/v1/controllers/{row}"

@@ -18,9 +18,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Annotated, Literal, cast
 
-from fastapi import APIRouter, Depends, HTTPException, Request
+from fastapi import APIRouter, Depends, Request
 
 from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.errors import ForbiddenError, UnauthorizedError
 from actuator_selection.config import Settings, get_settings
 from actuator_selection.db.sales import ApiKeyRecord, ApiKeyRepository
 from actuator_selection.schemas.auth import PrincipalOut
@@ -31,8 +32,10 @@ UNAUTHORIZED = "a valid API key is required: send Authorization: Bearer <key>"
 CHALLENGE = {"WWW-Authenticate": 'Bearer realm="actuator-selection"'}
 
 
-def _unauthorized() -> HTTPException:
-    return HTTPException(status_code=401, detail=UNAUTHORIZED, headers=CHALLENGE)
+def _unauthorized() -> UnauthorizedError:
+    return UnauthorizedError.at(
+        ["header", "Authorization"], UNAUTHORIZED, "unauthorized", headers=CHALLENGE
+    )
 
 
 def request_settings(request: Request) -> Settings:
@@ -70,10 +73,11 @@ def authorize(principal: ApiKeyRecord | None, *roles: str) -> ApiKeyRecord:
     if principal is None:
         raise _unauthorized()
     if principal.role not in roles:
-        raise HTTPException(
-            status_code=403,
-            detail=f"this API key has the role {principal.role!r}; "
+        raise ForbiddenError.at(
+            ["header", "Authorization"],
+            f"this API key has the role {principal.role!r}; "
             f"this needs {' or '.join(repr(r) for r in roles)}",
+            "forbidden",
         )
     return principal
 

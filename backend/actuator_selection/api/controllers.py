@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from fastapi import APIRouter, HTTPException, Path, Query
+from fastapi import APIRouter, Path, Query
 
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.errors import RequestFieldError, ResourceNotFoundError, field_error
 from actuator_selection.core.compatibility import (
     BusClass,
     FeedbackSystem,
@@ -75,7 +75,7 @@ def get_controller(
     """One row of the compatibility matrix (Table 521.1's rows keep their printed number)."""
     record = ProtectionRepository(session).controller(row)
     if record is None:
-        raise HTTPException(status_code=404, detail=f"no controller in row {row}")
+        raise ResourceNotFoundError.at(["path", "row"], f"no controller in row {row}", "not_found")
     return ControllerOut.from_record(record)
 
 
@@ -83,7 +83,9 @@ def get_controller(
 def actuator_controllers(model: str, session: SessionDep) -> ActuatorControllersOut:
     """Every controller matched against the actuator, supported ones first."""
     if CatalogueRepository(session).actuator(model) is None:
-        raise HTTPException(status_code=404, detail=f"unknown actuator model {model!r}")
+        raise ResourceNotFoundError.at(
+            ["path", "model"], f"unknown actuator model {model!r}", "not_found"
+        )
     repo = ProtectionRepository(session)
     interface = repo.interfaces([model])[model]
     result = match_controllers(

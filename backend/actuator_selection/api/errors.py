@@ -1,8 +1,15 @@
-"""The one place where errors become HTTP responses.
+"""The one place where errors become HTTP responses, all in one shape.
 
-Every error body is JSON of the form ``{"detail": [{"loc": [...], "msg": ..., "type": ...}]}``
-(FastAPI's validation shape) or ``{"detail": "..."}`` for a missing resource, so a
-client always learns which field broke which rule. Nothing answers with a stack trace.
+Every error answer, whatever its status, is JSON of the form
+``{"detail": [{"loc": [...], "msg": "...", "type": "..."}, ...]}`` (FastAPI's
+validation shape): ``loc`` says where the problem is (``["body", "cycle",
+"accel_s"]``, ``["path", "model"]``, ``["query", "offset"]``, ``["header",
+"Authorization"]``, or ``["request"]`` for the request as a whole), ``msg`` says
+what rule it breaks in words, ``type`` names the rule for programs. Catalogue file
+errors add ``file``, ``line`` and ``column``. Nothing answers with a stack trace.
+
+Endpoints raise :class:`ApiError` (or a subclass naming its status); core raises
+``DomainError``; both end in a handler here.
 
 A database that is busy past its limits (a lock or statement timeout, no free
 connection, a serialisation conflict) is an overload, not a fault: 503 with
@@ -15,11 +22,11 @@ keep-alive connection, failing the client's next request too.
 from __future__ import annotations
 
 import logging
-from typing import Any
+from collections.abc import Mapping
+from typing import Any, Self
 from urllib.parse import parse_qsl
 
 from fastapi import FastAPI, Request
-from fastapi.exception_handlers import http_exception_handler
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from sqlalchemy.exc import IntegrityError, OperationalError
@@ -39,17 +46,76 @@ def field_error(loc: list[str | int], msg: str, type_: str) -> dict[str, Any]:
     return {"loc": loc, "msg": msg, "type": type_}
 
 
-class RequestFieldError(Exception):
-    """Request errors found by an endpoint (e.g. models the catalogue lacks): 422."""
+def error_response(
+    status_code: int, errors: list[dict[str, Any]], headers: Mapping[str, str] | None = None
+) -> JSONResponse:
+    """An error answer in the one shape."""
+    return JSONResponse(status_code=status_code, content={"detail": errors}, headers=headers)
 
-    def __init__(self, errors: list[dict[str, Any]]) -> None:
+
+class ApiError(Exception):
+    """An error answer an endpoint raises: its status, its entries, extra headers."""
+
+    status_code = 422
+
+    def __init__(
+        self, errors: list[dict[str, Any]], *, headers: Mapping[str, str] | None = None
+    ) -> None:
         super().__init__(errors)
         self.errors = errors
+        self.headers = dict(headers or {})
+
+    @classmethod
+    def at(
+        cls, loc: list[str | int], msg: str, type_: str, *, headers: Mapping[str, str] | None = None
+    ) -> Self:
+        """The error with one entry."""
+        return cls([field_error(loc, msg, type_)], headers=headers)
 
 
-def _request_field_error(_: Request, exc: Exception) -> JSONResponse:
-    assert isinstance(exc, RequestFieldError)
-    return JSONResponse(status_code=422, content={"detail": exc.errors})
+class RequestFieldError(ApiError):
+    """Request errors found by an endpoint (e.g. models the catalogue lacks): 422."""
+
+
+class UnauthorizedError(ApiError):
+    """No valid credentials: 401."""
+
+    status_code = 401
+
+
+class ForbiddenError(ApiError):
+    """Valid credentials without the right: 403."""
+
+    status_code = 403
+
+
+class ResourceNotFoundError(ApiError):
+    """The resource the path names does not exist: 404."""
+
+    status_code = 404
+
+
+class ConflictError(ApiError):
+    """The request conflicts with the resource's state: 409."""
+
+    status_code = 409
+
+
+class PayloadTooLargeError(ApiError):
+    """413."""
+
+    status_code = 413
+
+
+class UnsupportedMediaTypeError(ApiError):
+    """415."""
+
+    status_code = 415
+
+
+def _api_error(_: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, ApiError)
+    return error_response(exc.status_code, exc.errors, exc.headers or None)
 
 
 def _validation(_: Request, exc: Exception) -> JSONResponse:
@@ -57,63 +123,55 @@ def _validation(_: Request, exc: Exception) -> JSONResponse:
     # input of NaN or ±Infinity cannot be written as JSON.
     assert isinstance(exc, RequestValidationError)
     detail = [field_error([*e["loc"]], str(e["msg"]), str(e["type"])) for e in exc.errors()]
-    return JSONResponse(status_code=422, content={"detail": detail})
+    return error_response(422, detail)
 
 
 def _domain(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, DomainError)
     status = 404 if isinstance(exc, NotFoundError) else 422
     loc: list[str | int] = ["body", *exc.field.split(".")]
-    return JSONResponse(
-        status_code=status,
-        content={"detail": [field_error(loc, exc.message, type(exc).__name__)]},
-    )
+    return error_response(status, [field_error(loc, exc.message, type(exc).__name__)])
 
 
 def _conflict(_: Request, exc: Exception) -> JSONResponse:
     # A concurrent request wrote the same key first (e.g. two admins creating the next
     # controller row at once): the transaction has been rolled back, a retry succeeds.
     log.info("write conflict: %s", exc)
-    return JSONResponse(
-        status_code=409,
-        content={
-            "detail": "a concurrent change wrote the same record first; nothing was "
-            "changed by this request, send it again"
-        },
+    message = (
+        "a concurrent change wrote the same record first; nothing was changed by this "
+        "request, send it again"
     )
+    return error_response(409, [field_error(["request"], message, "write_conflict")])
 
 
 def body_too_large(limit: int | None) -> JSONResponse:
     """413 in the error shape, naming the limit (``MAX_BODY_BYTES`` / ``MAX_BULK_BODY_BYTES``)."""
     size = f"{limit} bytes" if limit is not None else "the limit"
-    return JSONResponse(
-        status_code=413,
-        content={
-            "detail": [
-                field_error(
-                    ["body"],
-                    f"the request body is larger than {size}; send less per request",
-                    "body_too_large",
-                )
-            ]
-        },
-    )
+    message = f"the request body is larger than {size}; send less per request"
+    return error_response(413, [field_error(["body"], message, "body_too_large")])
 
 
-async def _http_error(request: Request, exc: Exception) -> JSONResponse | Any:
-    """Errors FastAPI raises before an endpoint runs, in the error shape where they concern
-    the body: 413 (too large) and 400 (a body JSON cannot parse, e.g. nested past the
-    parser's recursion limit). Others keep FastAPI's ``{"detail": "..."}``."""
+_HTTP_ERRORS: dict[int, tuple[list[str | int], str]] = {
+    400: (["body"], "json_invalid"),
+    404: (["path"], "not_found"),
+    405: (["request"], "method_not_allowed"),
+    413: (["body"], "body_too_large"),
+}
+
+
+def _http_error(request: Request, exc: Exception) -> JSONResponse:
+    """Errors the framework raises before an endpoint runs (no such route, a method not
+    allowed, a body too large or that JSON cannot parse), in the one shape."""
     assert isinstance(exc, StarletteHTTPException)
     if exc.status_code == 413:
         return body_too_large(request.scope.get(MAX_BODY_SIZE_SCOPE_KEY))
-    if exc.status_code == 400 and isinstance(exc.detail, str):
-        message = "the body could not be parsed as JSON (malformed, or nested too deeply)"
-        return JSONResponse(
-            status_code=400,
-            content={"detail": [field_error(["body"], message, "json_invalid")]},
-        )
-    return await http_exception_handler(request, exc)
+    loc, type_ = _HTTP_ERRORS.get(exc.status_code, (["request"], f"http_{exc.status_code}"))
+    message = (
+        "the body could not be parsed as JSON (malformed, or nested too deeply)"
+        if exc.status_code == 400
+        else str(exc.detail)
+    )
+    return error_response(exc.status_code, [field_error(loc, message, type_)], exc.headers)
 
 
 class UniformBodyTooLarge:
@@ -162,10 +220,11 @@ _BUSY_SQLSTATES = frozenset(
 
 def service_unavailable(reason: str, *, retry_after_s: int = RETRY_AFTER_S) -> JSONResponse:
     """503 with ``Retry-After``: nothing was changed, the same request may be sent again."""
-    return JSONResponse(
-        status_code=503,
-        content={"detail": f"{reason}; nothing was changed, retry after {retry_after_s} s"},
-        headers={"Retry-After": str(retry_after_s)},
+    message = f"{reason}; nothing was changed, retry after {retry_after_s} s"
+    return error_response(
+        503,
+        [field_error(["request"], message, "service_unavailable")],
+        {"Retry-After": str(retry_after_s)},
     )
 
 
@@ -191,7 +250,8 @@ def _operational(_: Request, exc: Exception) -> JSONResponse:
 
 def _internal_error(exc: BaseException) -> JSONResponse:
     log.error("unhandled error", exc_info=exc)
-    return JSONResponse(status_code=500, content={"detail": "internal error; it has been logged"})
+    message = "internal error; it has been logged"
+    return error_response(500, [field_error(["request"], message, "internal_error")])
 
 
 class AnswerUnexpectedErrors:
@@ -242,8 +302,8 @@ class RejectNulInUrl:
         if scope["type"] == "http":
             loc = self._nul_at(scope)
             if loc is not None:
-                body = {"detail": [field_error(loc, NUL_RULE, "value_error")]}
-                await JSONResponse(status_code=422, content=body)(scope, receive, send)
+                response = error_response(422, [field_error(loc, NUL_RULE, "value_error")])
+                await response(scope, receive, send)
                 return
         await self.app(scope, receive, send)
 
@@ -266,7 +326,7 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(StarletteHTTPException, _http_error)
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(DomainError, _domain)
-    app.add_exception_handler(RequestFieldError, _request_field_error)
+    app.add_exception_handler(ApiError, _api_error)
     app.add_exception_handler(IntegrityError, _conflict)
     app.add_exception_handler(OperationalError, _operational)
     app.add_exception_handler(PoolTimeoutError, _operational)

@@ -9,10 +9,11 @@ from __future__ import annotations
 from datetime import UTC, datetime
 from typing import Annotated
 
-from fastapi import APIRouter, Depends, HTTPException, Query
+from fastapi import APIRouter, Depends, Query
 
 from actuator_selection.api.auth import AdminDep, PriceReaderDep
 from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.errors import ResourceNotFoundError
 from actuator_selection.api.uploads import Upload, file_errors, raw_upload, text_of, unsupported
 from actuator_selection.db.csvio import CatalogueFileError
 from actuator_selection.db.sales import PRICES, PriceRepository, parse_prices
@@ -46,7 +47,7 @@ def get_price_list(name: str, _: PriceReaderDep, session: SessionDep) -> PriceLi
     repository = PriceRepository(session)
     prices = repository.prices(name)
     if prices is None:
-        raise HTTPException(status_code=404, detail=f"no price list {name!r}")
+        raise ResourceNotFoundError.at(["path", "name"], f"no price list {name!r}", "not_found")
     return PriceListDetailOut(
         name=name,
         is_example=bool(repository.is_example(name)),

@@ -25,12 +25,18 @@ from datetime import UTC, date, datetime
 from typing import Annotated, Any
 from urllib.parse import quote as quote_path
 
-from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response
+from fastapi import APIRouter, Depends, Header, Query, Response
 from fastapi.responses import HTMLResponse
 
 from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
 from actuator_selection.api.deps import SessionDep, reads_only
-from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.errors import (
+    ConflictError,
+    RequestFieldError,
+    ResourceNotFoundError,
+    UnauthorizedError,
+    field_error,
+)
 from actuator_selection.api.quote_document import (
     DOCUMENT_SCRIPT,
     DOCUMENT_SCRIPT_PATH,
@@ -397,7 +403,7 @@ def list_quotes(
 def _quote(session: SessionDep, number: str, *, for_update: bool = False) -> QuoteRecord:
     record = QuoteRepository(session).by_number(number, for_update=for_update)
     if record is None:
-        raise HTTPException(status_code=404, detail=f"no quote {number!r}")
+        raise ResourceNotFoundError.at(["path", "number"], f"no quote {number!r}", "not_found")
     return record
 
 
@@ -423,10 +429,7 @@ def change_status(
     try:
         transition(record.status, target, valid_until=record.valid_until, today=clock.today())
     except IllegalTransitionError as exc:
-        raise HTTPException(
-            status_code=409,
-            detail=[field_error(["body", "status"], exc.message, "illegal_transition")],
-        ) from None
+        raise ConflictError.at(["body", "status"], exc.message, "illegal_transition") from None
     repository = QuoteRepository(session)
     repository.set_status(number, target, now=clock.now())
     return _out(_quote(session, number), clock)
@@ -486,10 +489,11 @@ def quote_document(
             access, _document_resource(number), now=clock.now()
         )
         if principal is None:
-            raise HTTPException(
-                status_code=401,
-                detail="this document link has expired or is not valid; open the document "
+            raise UnauthorizedError.at(
+                ["query", "access"],
+                "this document link has expired or is not valid; open the document "
                 "again from the quote list",
+                "link_invalid",
             )
     authorize(principal, "sales")
     record = _quote(session, number)

@@ -5,11 +5,11 @@ from __future__ import annotations
 import uuid
 from datetime import UTC, datetime
 
-from fastapi import APIRouter, Depends, HTTPException, Request
+from fastapi import APIRouter, Depends, Request
 
 from actuator_selection.api.deps import SessionDep, pause_cyclic_gc, reads_only, write_transaction
 from actuator_selection.api.drive import DriveContext
-from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.errors import RequestFieldError, ResourceNotFoundError, field_error
 from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import (
     ActuatorFilter,
@@ -73,5 +73,7 @@ def get_selection(selection_id: str, session: SessionDep) -> SelectionOut:
     """A stored selection, exactly as it was answered."""
     stored = SelectionRepository(session).response(selection_id)
     if stored is None:
-        raise HTTPException(status_code=404, detail=f"no selection {selection_id!r}")
+        raise ResourceNotFoundError.at(
+            ["path", "selection_id"], f"no selection {selection_id!r}", "not_found"
+        )
     return SelectionOut.model_validate(stored)

@@ -17,9 +17,13 @@ from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import Any
 
-from fastapi import HTTPException, Request
+from fastapi import Request
 
-from actuator_selection.api.errors import RequestFieldError
+from actuator_selection.api.errors import (
+    PayloadTooLargeError,
+    RequestFieldError,
+    UnsupportedMediaTypeError,
+)
 from actuator_selection.db.csvio import CatalogueFileError, Problem
 
 MAX_UPLOAD_BYTES = 20 * 1024 * 1024
@@ -38,24 +42,28 @@ async def raw_upload(request: Request) -> Upload:
     """The request body, at most ``MAX_UPLOAD_BYTES`` (413 beyond)."""
     declared = request.headers.get("content-length")
     if declared is not None and declared.isdigit() and int(declared) > MAX_UPLOAD_BYTES:
-        raise HTTPException(status_code=413, detail=f"at most {MAX_UPLOAD_BYTES} bytes")
+        raise _too_large(f"at most {MAX_UPLOAD_BYTES} bytes")
     chunks: list[bytes] = []
     size = 0
     async for chunk in request.stream():
         size += len(chunk)
         if size > MAX_UPLOAD_BYTES:
-            raise HTTPException(status_code=413, detail=f"at most {MAX_UPLOAD_BYTES} bytes")
+            raise _too_large(f"at most {MAX_UPLOAD_BYTES} bytes")
         chunks.append(chunk)
     media_type = request.headers.get("content-type", "").split(";")[0].strip().lower()
     return Upload(media_type=media_type, body=b"".join(chunks))
 
 
-def unsupported(media_type: str, accepted: tuple[str, ...]) -> HTTPException:
+def _too_large(message: str) -> PayloadTooLargeError:
+    return PayloadTooLargeError.at(["body"], message, "body_too_large")
+
+
+def unsupported(media_type: str, accepted: tuple[str, ...]) -> UnsupportedMediaTypeError:
     """415 naming what is accepted."""
-    return HTTPException(
-        status_code=415,
-        detail=f"Content-Type {media_type or '(none)'} is not accepted here; "
-        f"send {' or '.join(accepted)}",
+    return UnsupportedMediaTypeError.at(
+        ["header", "Content-Type"],
+        f"Content-Type {media_type or '(none)'} is not accepted here; send {' or '.join(accepted)}",
+        "unsupported_media_type",
     )
 
 
@@ -107,13 +115,13 @@ def unzip_csv(body: bytes, *, wanted: tuple[str, ...]) -> dict[str, str | None]:
             if info.is_dir() or path.suffix.lower() != ".csv" or "__MACOSX" in path.parts:
                 continue
             if info.file_size > MAX_UPLOAD_BYTES:
-                raise HTTPException(status_code=413, detail=f"{path.name} is too large unpacked")
+                raise _too_large(f"{path.name} is too large unpacked")
             data, message = _member(archive, info)
             if message is not None:
                 problems.append(Problem(file=path.name, line=0, column=None, message=message))
                 continue
             if len(data) > MAX_UPLOAD_BYTES:
-                raise HTTPException(status_code=413, detail=f"{path.name} is too large unpacked")
+                raise _too_large(f"{path.name} is too large unpacked")
             texts[path.name] = text_of(data, file=path.name)
     if problems:
         raise file_errors(CatalogueFileError(problems))
