@@ -28,6 +28,7 @@ from actuator_selection.api import (
     tools,
 )
 from actuator_selection.api.auth import require_reader
+from actuator_selection.api.drive import CatalogueCache
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 
@@ -53,6 +54,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)
+    app.state.catalogue = CatalogueCache()  # selections read the catalogue from here
     app.state.settings = settings  # require_reader reads REQUIRE_API_KEY from here
     errors.install(app)
     app.include_router(health.router, prefix=API_PREFIX)

@@ -9,7 +9,13 @@ from typing import Any
 import pydantic_core
 from fastapi import APIRouter, Depends, Request, Response
 
-from actuator_selection.api.deps import SessionDep, pause_cyclic_gc, reads_only, write_transaction
+from actuator_selection.api.deps import (
+    SessionDep,
+    catalogue_snapshot,
+    pause_cyclic_gc,
+    reads_only,
+    write_transaction,
+)
 from actuator_selection.api.drive import DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
 from actuator_selection.core.actuators import Actuator
@@ -17,8 +23,6 @@ from actuator_selection.core.batch import select_batch
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.selection import Application, Selection, select
 from actuator_selection.db.repositories import (
-    CatalogueRepository,
-    CatalogueVersionRepository,
     SelectionRepository,
 )
 from actuator_selection.schemas.batch import (
@@ -218,15 +222,16 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
     """Size many load cases against the catalogue."""
     if errors := _limits(body):
         raise RequestFieldError(errors)
-    version = CatalogueVersionRepository(session).pin()
-    actuators = [r.actuator for r in CatalogueRepository(session).actuators()]
+    catalogue = catalogue_snapshot(request, session)
+    version = catalogue.version
+    actuators = list(catalogue.actuators)
     apps, errors = _applications(body, {a.model for a in actuators})
     if errors:
         raise RequestFieldError(errors)
     selections = select_batch(
         actuators, apps, top=body.top, models=[case.models for case in body.cases]
     )
-    context = DriveContext(session)
+    context = DriveContext(catalogue)
     ids: list[str | None] = [None] * len(apps)
     if body.store:
         ids = _store(request, body, actuators, apps, catalogue_version=version, context=context)

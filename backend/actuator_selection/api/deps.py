@@ -12,6 +12,7 @@ from typing import Annotated, Any, TypeVar
 from fastapi import Depends, Request
 from sqlalchemy.orm import Session, sessionmaker
 
+from actuator_selection.api.drive import CatalogueCache, CatalogueSnapshot
 from actuator_selection.config import Settings, get_settings
 from actuator_selection.db.engine import begin_write
 
@@ -123,3 +124,9 @@ class CyclicGcPause:
 
 pause_cyclic_gc = CyclicGcPause()
 """Dependency of the selection endpoints (``dependencies=[Depends(pause_cyclic_gc)]``)."""
+
+
+def catalogue_snapshot(request: Request, session: Session) -> CatalogueSnapshot:
+    """The catalogue at the version ``session`` pins, from the app's in-memory cache."""
+    cache: CatalogueCache = request.app.state.catalogue
+    return cache.snapshot(session)

@@ -1,13 +1,16 @@
-"""Drive options (Table 521.1 matching + Eq. 521.2) for the candidates of a request.
+"""The catalogue a selection reads, held in memory by version, and its drive options.
 
-The controller catalogue, bus classes and actuator interfaces are read once per
-request. Matching depends only on the actuator's interface, and a whole catalogue
-has a handful of distinct interfaces, so it is computed once per interface.
+Drive options are Table 521.1 matching + Eq. 521.2 for the candidates of a request.
+Matching depends only on the actuator's interface, and a whole catalogue has a
+handful of distinct interfaces, so it is computed once per interface and request.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import threading
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
 
 from sqlalchemy.orm import Session
 
@@ -15,20 +18,83 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.compatibility import (
     ActuatorInterface,
     CompatibilityResult,
+    Controller,
     match_controllers,
 )
 from actuator_selection.core.drive import DriveOptions, drive_options
+from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class CatalogueSnapshot:
+    """Everything a selection reads from the catalogue, at one catalogue version."""
+
+    version: int
+    actuators: tuple[Actuator, ...]
+    """Active actuators, ordered by model."""
+    controllers: tuple[Controller, ...]
+    buses: tuple[DcBusClass, ...]
+    interfaces: Mapping[str, ActuatorInterface]
+
+    @classmethod
+    def read(cls, session: Session, version: int) -> CatalogueSnapshot:
+        """Read the catalogue in ``session``'s transaction (pinned at ``version``)."""
+        repo = ProtectionRepository(session)
+        return cls(
+            version=version,
+            actuators=tuple(r.actuator for r in CatalogueRepository(session).actuators()),
+            controllers=tuple(r.controller for r in repo.controllers()),
+            buses=tuple(repo.bus_classes()),
+            interfaces=MappingProxyType(
+                {model: r.interface for model, r in repo.interfaces(None).items()}
+            ),
+        )
+
+    def actuators_of(self, models: Iterable[str] | None) -> list[Actuator]:
+        """The active actuators, or those of ``models`` that exist, ordered by model."""
+        if models is None:
+            return list(self.actuators)
+        wanted = set(models)
+        return [a for a in self.actuators if a.model in wanted]
+
+
+class CatalogueCache:
+    """The catalogue in memory, keyed by its version and checked on every request.
+
+    A request pins the version (one indexed read under a share lock, see
+    ``CatalogueVersionRepository.pin``); when it is the one held, the catalogue is
+    not read again (the tables cost 7–8 ms a request). Every catalogue change raises
+    the version, so each process of a deployment sees a change at its next request,
+    whichever process or replica made it. A snapshot is read whole in the request's
+    own pinned transaction and replaces the one held only when it is newer.
+    """
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._held: CatalogueSnapshot | None = None
+
+    def snapshot(self, session: Session) -> CatalogueSnapshot:
+        """The catalogue at the version ``session``'s transaction pins."""
+        version = CatalogueVersionRepository(session).pin()
+        held = self._held
+        if held is not None and held.version == version:
+            return held
+        fresh = CatalogueSnapshot.read(session, version)
+        with self._lock:
+            if self._held is None or self._held.version < version:
+                self._held = fresh
+        return fresh
 
 
 class DriveContext:
     """The controller data of one request."""
 
-    def __init__(self, session: Session, models: Iterable[str] | None = None) -> None:
-        repo = ProtectionRepository(session)
-        self._controllers = [r.controller for r in repo.controllers()]
-        self._buses = repo.bus_classes()
-        self._interfaces = repo.interfaces(None if models is None else list(models))
+    def __init__(self, snapshot: CatalogueSnapshot) -> None:
+        self._controllers = snapshot.controllers
+        self._buses = snapshot.buses
+        self._interfaces = snapshot.interfaces
         self._matching: dict[ActuatorInterface, CompatibilityResult] = {}
 
     def _matching_for(self, interface: ActuatorInterface) -> CompatibilityResult:
@@ -42,7 +108,7 @@ class DriveContext:
 
     def options(self, actuator: Actuator, *, speed_rpm: float) -> DriveOptions:
         """Controllers not excluded for ``actuator``, with the voltage check at ``speed_rpm``."""
-        interface = self._interfaces[actuator.model].interface
+        interface = self._interfaces[actuator.model]
         return drive_options(
             actuator=actuator,
             interface=interface,

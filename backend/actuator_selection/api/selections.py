@@ -7,14 +7,17 @@ from datetime import UTC, datetime
 
 from fastapi import APIRouter, Depends, Request
 
-from actuator_selection.api.deps import SessionDep, pause_cyclic_gc, reads_only, write_transaction
+from actuator_selection.api.deps import (
+    SessionDep,
+    catalogue_snapshot,
+    pause_cyclic_gc,
+    reads_only,
+    write_transaction,
+)
 from actuator_selection.api.drive import DriveContext
 from actuator_selection.api.errors import RequestFieldError, ResourceNotFoundError, field_error
 from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import (
-    ActuatorFilter,
-    CatalogueRepository,
-    CatalogueVersionRepository,
     SelectionRepository,
 )
 from actuator_selection.schemas.selections import RANKING_RULE, SelectionOut, SelectionRequest
@@ -33,10 +36,10 @@ router = APIRouter(tags=["selections"])
 @reads_only
 def create_selection(body: SelectionRequest, request: Request, session: SessionDep) -> SelectionOut:
     """Size the load case against the catalogue and store the selection."""
-    catalogue_version = CatalogueVersionRepository(session).pin()
-    records = CatalogueRepository(session).actuators(ActuatorFilter(models=body.models))
+    catalogue = catalogue_snapshot(request, session)
+    actuators = catalogue.actuators_of(body.models)
     if body.models is not None:
-        known = {r.actuator.model for r in records}
+        known = {a.model for a in actuators}
         unknown = [
             field_error(["body", "models", i], f"unknown actuator model {m!r}", "unknown_model")
             for i, m in enumerate(body.models)
@@ -44,16 +47,16 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
         ]
         if unknown:
             raise RequestFieldError(unknown)
-    selection = select([r.actuator for r in records], body.to_core())
-    drive = DriveContext(session, body.models)
+    selection = select(actuators, body.to_core())
+    drive = DriveContext(catalogue)
     speed = body.load.speed_rpm
     out = SelectionOut.build(
         id=str(uuid.uuid4()),
         created_at=datetime.now(UTC),
-        catalogue_version=catalogue_version,
+        catalogue_version=catalogue.version,
         request=body,
         selection=selection,
-        drives={r.actuator.model: drive.options(r.actuator, speed_rpm=speed) for r in records},
+        drives={a.model: drive.options(a, speed_rpm=speed) for a in actuators},
     )
     stored_request, stored_response = body.model_dump(mode="json"), out.model_dump(mode="json")
     # Computed from the read snapshot above; stored in a short write transaction of its own.

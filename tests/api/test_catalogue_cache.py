@@ -1,0 +1,83 @@
+"""The catalogue in memory: read once per catalogue version, read again after any change."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from sqlalchemy import Connection, event
+from tests import worked_example
+from tests.api._sales_fixtures import SalesApi, api, sales_api_with
+
+__all__ = ["api", "sales_api_with"]
+
+MODEL = "FHA-25C-50-L"
+
+
+@pytest.fixture
+def statements(connection: Connection) -> Iterator[list[str]]:
+    """The SQL the app sends on the test's connection, as it sends it."""
+    sent: list[str] = []
+
+    def record(*args: Any) -> None:
+        sent.append(args[2])
+
+    event.listen(connection, "before_cursor_execute", record)
+    yield sent
+    event.remove(connection, "before_cursor_execute", record)
+
+
+def _peak_limit(api: SalesApi) -> float:
+    body = {**worked_example.request(), "models": [MODEL]}
+    response = api.client.post("/api/v1/selections", json=body)
+    assert response.status_code == 201, response.text
+    (candidate,) = response.json()["candidates"]
+    (peak,) = [c for c in candidate["checks"] if c["name"] == "peak_torque"]
+    limit: float = peak["limit"]
+    return limit
+
+
+def _reads_actuators(sql: list[str]) -> bool:
+    return any("FROM actuators" in s for s in sql)
+
+
+def test_a_warm_selection_reads_only_the_version(api: SalesApi, statements: list[str]) -> None:
+    _peak_limit(api)  # warms the cache
+    assert _reads_actuators(statements)
+    statements.clear()
+    _peak_limit(api)
+    assert not _reads_actuators(statements)
+    assert any("catalogue_state" in s for s in statements)  # the version is checked each time
+
+
+def test_a_catalogue_change_is_seen_by_the_next_selection(
+    api: SalesApi, statements: list[str]
+) -> None:
+    assert _peak_limit(api) == 151
+    exported = api.get("/api/v1/catalogue/export", role="admin", params={"format": "json"})
+    (row,) = [r for r in exported.json()["actuators"] if r["model"] == MODEL]
+    put = api.client.put(
+        f"/api/v1/actuators/{MODEL}",
+        json={**row, "max_torque_nm": 97},
+        headers=api.headers("admin"),
+    )
+    assert put.status_code == 200, put.text
+    statements.clear()
+    assert _peak_limit(api) == 97
+    assert _reads_actuators(statements)
+
+
+def test_two_apps_on_one_database_stay_coherent(api: SalesApi, sales_api_with: Any) -> None:
+    """Two processes of a deployment, each with its own cache, one database."""
+    other = sales_api_with()
+    assert _peak_limit(api) == _peak_limit(other) == 151
+    exported = api.get("/api/v1/catalogue/export", role="admin", params={"format": "json"})
+    (row,) = [r for r in exported.json()["actuators"] if r["model"] == MODEL]
+    put = other.client.put(
+        f"/api/v1/actuators/{MODEL}",
+        json={**row, "max_torque_nm": 97},
+        headers=other.headers("admin"),
+    )
+    assert put.status_code == 200, put.text
+    assert _peak_limit(api) == 97
