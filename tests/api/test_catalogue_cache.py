@@ -38,6 +38,18 @@ def _peak_limit(api: SalesApi) -> float:
     return limit
 
 
+def _set_peak_torque(api: SalesApi, torque: float) -> None:
+    """T_max of MODEL changed by an admin, the rest of its row as exported."""
+    exported = api.get("/api/v1/catalogue/export", role="admin", params={"format": "json"})
+    (row,) = [r for r in exported.json()["actuators"] if r["model"] == MODEL]
+    put = api.client.put(
+        f"/api/v1/actuators/{MODEL}",
+        json={**row, "max_torque_nm": torque},
+        headers=api.headers("admin"),
+    )
+    assert put.status_code == 200, put.text
+
+
 def _reads_actuators(sql: list[str]) -> bool:
     return any("FROM actuators" in s for s in sql)
 
@@ -55,14 +67,7 @@ def test_a_catalogue_change_is_seen_by_the_next_selection(
     api: SalesApi, statements: list[str]
 ) -> None:
     assert _peak_limit(api) == 151
-    exported = api.get("/api/v1/catalogue/export", role="admin", params={"format": "json"})
-    (row,) = [r for r in exported.json()["actuators"] if r["model"] == MODEL]
-    put = api.client.put(
-        f"/api/v1/actuators/{MODEL}",
-        json={**row, "max_torque_nm": 97},
-        headers=api.headers("admin"),
-    )
-    assert put.status_code == 200, put.text
+    _set_peak_torque(api, 97)
     statements.clear()
     assert _peak_limit(api) == 97
     assert _reads_actuators(statements)
@@ -72,12 +77,5 @@ def test_two_apps_on_one_database_stay_coherent(api: SalesApi, sales_api_with: A
     """Two processes of a deployment, each with its own cache, one database."""
     other = sales_api_with()
     assert _peak_limit(api) == _peak_limit(other) == 151
-    exported = api.get("/api/v1/catalogue/export", role="admin", params={"format": "json"})
-    (row,) = [r for r in exported.json()["actuators"] if r["model"] == MODEL]
-    put = other.client.put(
-        f"/api/v1/actuators/{MODEL}",
-        json={**row, "max_torque_nm": 97},
-        headers=other.headers("admin"),
-    )
-    assert put.status_code == 200, put.text
+    _set_peak_torque(other, 97)
     assert _peak_limit(api) == 97
