@@ -53,7 +53,21 @@ def _renamed(exc: DomainError, prefix: str) -> DomainError:
     return type(exc)(f"{prefix}.{exc.field}", exc.message)
 
 
-class DirectLoad(StrictModel):
+class _LoadIn(StrictModel):
+    """A load as sent; :meth:`to_core` resolves it to T_L and J_L at the output."""
+
+    def to_core(self) -> Load:
+        """The load as the core sees it; a core error names its field under ``load``."""
+        try:
+            return self._resolve()
+        except DomainError as exc:
+            raise _renamed(exc, "load") from None
+
+    def _resolve(self) -> Load:
+        raise NotImplementedError
+
+
+class DirectLoad(_LoadIn):
     """T_L and J_L given directly, at the actuator output."""
 
     type: Literal["direct"] = "direct"
@@ -63,15 +77,11 @@ class DirectLoad(StrictModel):
     )
     inertia_kgm2: Inertia = Field(description="J_L, load moment of inertia [kgm²]")
 
-    def to_core(self) -> Load:
-        """The load as the core sees it."""
-        try:
-            return Load(torque_nm=self.torque_nm, inertia_kgm2=self.inertia_kgm2)
-        except DomainError as exc:
-            raise _renamed(exc, "load") from None
+    def _resolve(self) -> Load:
+        return Load(torque_nm=self.torque_nm, inertia_kgm2=self.inertia_kgm2)
 
 
-class BallScrewLoad(StrictModel):
+class BallScrewLoad(_LoadIn):
     """Linear horizontal motion by a ball screw (Fig. 515.2, Eq. 515.4)."""
 
     type: Literal["ball_screw"]
@@ -86,23 +96,20 @@ class BallScrewLoad(StrictModel):
     )
     screw_inertia_kgm2: Inertia = Field(default=0.0, description="J_S, screw inertia [kgm²]")
 
-    def to_core(self) -> Load:
+    def _resolve(self) -> Load:
         """T_L and J_L by Eq. 515.4."""
-        try:
-            return ball_screw_load(
-                BallScrew(
-                    mass_kg=self.mass_kg,
-                    lead_m=self.lead_m,
-                    friction_coefficient=self.friction_coefficient,
-                    efficiency=self.efficiency,
-                    screw_inertia_kgm2=self.screw_inertia_kgm2,
-                )
+        return ball_screw_load(
+            BallScrew(
+                mass_kg=self.mass_kg,
+                lead_m=self.lead_m,
+                friction_coefficient=self.friction_coefficient,
+                efficiency=self.efficiency,
+                screw_inertia_kgm2=self.screw_inertia_kgm2,
             )
-        except DomainError as exc:
-            raise _renamed(exc, "load") from None
+        )
 
 
-class RotaryTableLoad(StrictModel):
+class RotaryTableLoad(_LoadIn):
     """A rotary table, a uniform disc (Fig. 515.3/515.5, Eq. 515.6)."""
 
     type: Literal["rotary_table"]
@@ -116,19 +123,16 @@ class RotaryTableLoad(StrictModel):
         ge=0, le=MAX_LENGTH_M, description="radius r at which friction acts [m]"
     )
 
-    def to_core(self) -> Load:
+    def _resolve(self) -> Load:
         """T_L and J_L by Eq. 515.6."""
-        try:
-            return rotary_table_load(
-                RotaryTable(
-                    mass_kg=self.mass_kg,
-                    diameter_m=self.diameter_m,
-                    friction_coefficient=self.friction_coefficient,
-                    friction_radius_m=self.friction_radius_m,
-                )
+        return rotary_table_load(
+            RotaryTable(
+                mass_kg=self.mass_kg,
+                diameter_m=self.diameter_m,
+                friction_coefficient=self.friction_coefficient,
+                friction_radius_m=self.friction_radius_m,
             )
-        except DomainError as exc:
-            raise _renamed(exc, "load") from None
+        )
 
 
 def _load_kind(value: Any) -> str:
