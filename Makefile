@@ -41,10 +41,12 @@ typecheck: install
 pytest: install
 	$(BIN)/python -m pytest -n auto
 
-## Throughput of the selection engine (not part of the tests).
+## Throughput of the selection engine, and the engineer's page's cold load to both
+## charts in headless Chromium (not part of the tests).
 bench: install
 	$(BIN)/python -m bench.selection
 	$(BIN)/python -m bench.batch
+	$(BIN)/python -m bench.page
 
 ## Re-resolve requirements.lock from pyproject.toml (needs the registry).
 lock: install
