@@ -533,7 +533,7 @@ def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffi
     assert traffic.requests, "no request recorded"
     foreign = [url for url in traffic.requests if not url.startswith(f"{base_url}/")]
     assert foreign == []
-    assert any(re.search(r"/vendor/plotly-[\d.]+\.min\.js$", url) for url in traffic.requests)
+    assert any(re.search(r"/vendor/plotly-basic-[\d.]+\.min\.js$", url) for url in traffic.requests)
     assert page.evaluate("typeof window.Plotly.react") == "function"
     assert not traffic.console_errors
 

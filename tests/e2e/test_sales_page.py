@@ -36,7 +36,7 @@ from actuator_selection.main import create_app
 
 pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
-"""Timeout for steps that wait for the server or for plotly.js (≈ 4.8 MB) under a loaded CI."""
+"""Timeout for steps that wait for the server or for plotly.js (≈ 1.2 MB) under a loaded CI."""
 
 
 @dataclass(frozen=True)
