@@ -219,7 +219,7 @@ def test_an_unknown_selection_is_named(sales_page: Page, site: SalesSite) -> Non
 # ---------------------------------------------------------------- German / English
 
 LANG_STORAGE = "actuator-selection.lang"
-"""The localStorage entry both pages read (frontend/js/i18n.js)."""
+"""The localStorage entry both pages read (frontend/lib/i18n.js)."""
 PAIR = ["FHA-25C-50-L", "FHA-8C-30"]
 """The worked example's actuator (unconfirmed) and one too small for it (unsuitable)."""
 
