@@ -1,10 +1,13 @@
-"""plotly.js as the app serves it (``api/static.py``): the npm bundle the lock pins."""
+"""The page's static files: plotly.js as ``api/static.py`` serves it, and how the pages load it."""
 
 from __future__ import annotations
 
 import gzip
 import json
+import posixpath
+import re
 from collections.abc import Iterator
+from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
@@ -12,7 +15,7 @@ from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 from actuator_selection.api import static
-from actuator_selection.config import REPO_ROOT
+from actuator_selection.config import FRONTEND_DIR, REPO_ROOT
 
 
 @pytest.fixture
@@ -90,3 +93,67 @@ def test_a_missing_bundle_is_a_503_naming_the_fix(
         assert "0.0.1" in response.text
     finally:
         static._plotly.cache_clear()
+
+
+class _Head(HTMLParser):
+    """The scripts and module preloads of a page, in document order."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.scripts: list[dict[str, str | None]] = []
+        self.preloads: list[str] = []
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        names = dict(attrs)
+        if tag == "script":
+            self.scripts.append(names)
+        elif tag == "link" and names.get("rel") == "modulepreload":
+            self.preloads.append(str(names["href"]))
+
+
+def _head(page: str) -> _Head:
+    parser = _Head()
+    parser.feed((FRONTEND_DIR / page).read_text(encoding="utf-8"))
+    return parser
+
+
+_IMPORT = re.compile(r'^(?:import|export)\b[^;]*?\bfrom\s+"([^"]+)"', re.M | re.S)
+
+
+def _module_graph(entry: str) -> set[str]:
+    """Every module URL ``entry`` imports, directly or not (static imports)."""
+    seen: set[str] = set()
+    todo = [entry]
+    while todo:
+        url = todo.pop()
+        if url in seen:
+            continue
+        seen.add(url)
+        source = (FRONTEND_DIR / url.lstrip("/")).read_text(encoding="utf-8")
+        for target in _IMPORT.findall(source):
+            assert target.startswith("."), f"{url}: {target} is not a relative import"
+            todo.append(posixpath.normpath(posixpath.join(posixpath.dirname(url), target)))
+    return seen - {entry}
+
+
+@pytest.mark.parametrize(
+    ("page", "entry"),
+    [("index.html", "/pages/engineer/app.js"), ("sales.html", "/pages/sales/app.js")],
+)
+def test_pages_load_their_module_and_preload_its_whole_graph(page: str, entry: str) -> None:
+    head = _head(page)
+    modules = [s for s in head.scripts if s.get("type") == "module"]
+    assert [m.get("src") for m in modules] == [entry]
+    assert sorted(head.preloads) == sorted(_module_graph(entry))
+    assert len(head.preloads) == len(set(head.preloads))
+
+
+def test_engineer_page_names_the_served_bundle_after_its_module() -> None:
+    """Deferred, after the module: fetched with the page, run once the form is set up."""
+    scripts = _head("index.html").scripts
+    bundles = [s for s in scripts if "data-plotly" in s]
+    assert bundles == [{"defer": None, "data-plotly": None, "src": static.PLOTLY_URL}]
+    assert scripts.index(bundles[0]) > next(
+        i for i, s in enumerate(scripts) if s.get("type") == "module"
+    )
+    assert not [s for s in _head("sales.html").scripts if "plotly" in str(s.get("src"))]

@@ -10,8 +10,11 @@ It is pinned with its integrity hash in ``package-lock.json`` and installed into
 
 The bundle is gzip-compressed once per process and served with a strong ETag and a
 long cache lifetime; its URL carries the locked version, so an upgrade changes the
-URL; ``/vendor/plotly.js`` says where it is. Without the installed bundle (or with
-another version than the lock's) its URL answers 503 naming the fix.
+URL. ``index.html`` names that URL in a deferred ``<script>``, so the download starts
+with the page and runs after the page's own module (``tests/api/test_static_files.py``
+checks that the page and this module agree); ``/vendor/plotly.js`` says where it is
+for anything that must look it up. Without the installed bundle (or with another
+version than the lock's) its URL answers 503 naming the fix.
 """
 
 from __future__ import annotations

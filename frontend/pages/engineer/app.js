@@ -598,7 +598,7 @@ function init() {
   const params = new URLSearchParams(window.location.search);
   const id = params.get("selection");
   if (id) openPermalink(id, params.get("model"));
-  else loadPlotly().catch(() => {}); // warm the cache while the engineer types
+  else loadPlotly().catch(() => {}); // the page's own <script> loads it; else ask where it is
 }
 
 init();
