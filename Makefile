@@ -1,10 +1,12 @@
 # Two commands on a fresh machine: `make run` serves the app, `make test` runs every check.
-# Each installs what it needs into .venv from the hash-pinned requirements.lock.
+# Each installs what it needs into .venv from the hash-pinned requirements.lock, and the
+# page's plotly.js bundle into node_modules/ from package-lock.json (npm, integrity-checked).
 
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
+NODE_STAMP := node_modules/.installed-$(shell cat package.json package-lock.json | cksum | cut -d' ' -f1)
 
 .PHONY: install run test lint typecheck pytest bench lock clean
 
@@ -19,7 +21,13 @@ $(STAMP): requirements.lock
 	rm -f $(VENV)/.installed-*
 	touch $@
 
-install: $(STAMP)
+# npm ci installs exactly the lock (integrity hashes checked) into a fresh node_modules/
+# and runs no package scripts.
+$(NODE_STAMP): package.json package-lock.json
+	npm ci --ignore-scripts --no-audit --no-fund
+	touch $@
+
+install: $(STAMP) $(NODE_STAMP)
 
 ## Serve on http://$HOST:$PORT (default 127.0.0.1:8000) with the embedded SQLite
 ## database (or $DATABASE_URL), migrated and seeded with the starter catalogue.
@@ -41,10 +49,12 @@ typecheck: install
 pytest: install
 	$(BIN)/python -m pytest -n auto
 
-## Throughput of the selection engine (not part of the tests).
+## Throughput of the selection engine, and the engineer's page's cold load to both
+## charts in headless Chromium (not part of the tests).
 bench: install
 	$(BIN)/python -m bench.selection
 	$(BIN)/python -m bench.batch
+	$(BIN)/python -m bench.page
 
 ## Re-resolve requirements.lock from pyproject.toml (needs the registry).
 lock: install

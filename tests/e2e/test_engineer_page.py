@@ -533,7 +533,7 @@ def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffi
     assert traffic.requests, "no request recorded"
     foreign = [url for url in traffic.requests if not url.startswith(f"{base_url}/")]
     assert foreign == []
-    assert any(re.search(r"/vendor/plotly-[\d.]+\.min\.js$", url) for url in traffic.requests)
+    assert any(re.search(r"/vendor/plotly-basic-[\d.]+\.min\.js$", url) for url in traffic.requests)
     assert page.evaluate("typeof window.Plotly.react") == "function"
     assert not traffic.console_errors
 
@@ -545,7 +545,7 @@ def test_figures_module_draws_a_published_zone_and_says_no_data(page: Page) -> N
         dict[str, Any],
         page.evaluate(
             """async () => {
-      const f = await import('/js/figures.js');
+      const f = await import('/pages/engineer/figures.js');
       const sel = {cycle: {accel_s: 0.1, constant_s: 0.1, decel_s: 0.1, pause_s: 1},
                    cycle_time_s: 1.3, load: {speed_rpm: 40, torque_nm: 5, inertia_kgm2: 1.3},
                    mean_speed_rpm: 6.15, duty_cycle_percent: 23.08};

@@ -36,7 +36,7 @@ from actuator_selection.main import create_app
 
 pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
-"""Timeout for steps that wait for the server or for plotly.js (≈ 4.8 MB) under a loaded CI."""
+"""Timeout for steps that wait for the server or for plotly.js (≈ 1.2 MB) under a loaded CI."""
 
 
 @dataclass(frozen=True)
@@ -219,7 +219,7 @@ def test_an_unknown_selection_is_named(sales_page: Page, site: SalesSite) -> Non
 # ---------------------------------------------------------------- German / English
 
 LANG_STORAGE = "actuator-selection.lang"
-"""The localStorage entry both pages read (frontend/js/i18n.js)."""
+"""The localStorage entry both pages read (frontend/lib/i18n.js)."""
 PAIR = ["FHA-25C-50-L", "FHA-8C-30"]
 """The worked example's actuator (unconfirmed) and one too small for it (unsuitable)."""
 

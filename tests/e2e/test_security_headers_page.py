@@ -37,7 +37,7 @@ from .conftest import DESKTOP
 
 pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
-"""Timeout for steps that wait for the server or for plotly.js (≈ 4.8 MB) under a loaded CI."""
+"""Timeout for steps that wait for the server or for plotly.js (≈ 1.2 MB) under a loaded CI."""
 FHA = "FHA-25C-50-L"
 
 

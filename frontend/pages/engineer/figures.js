@@ -9,8 +9,8 @@
 //   diagram: "zone" | "zone-approx", "t-max", "n-max", "operating-point",
 //            "peak-accel", "peak-decel"
 
-import { PLOTLY_NUMBER, num, plotlySeparators, plotlySymbols, qty } from "./format.js";
-import { translate, unitText } from "./i18n.js";
+import { PLOTLY_NUMBER, num, plotlySeparators, plotlySymbols, qty } from "../../lib/format.js";
+import { translate, unitText } from "../../lib/i18n.js";
 
 const COLORS = {
   speed: "#1f5f99",

@@ -5,16 +5,15 @@
 // Labels come from i18n.js in the language chosen on either page; messages of
 // the API are shown as they come (English, marked lang="en").
 
-import { appendSymbols, localeOf, qty } from "./format.js";
-import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "./i18n.js";
+import { createClient, encodePath } from "../../lib/api.js";
+import { byId, english, h } from "../../lib/dom.js";
+import { appendSymbols, dateTime, localeOf, qty } from "../../lib/format.js";
+import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
 
-const API = "/api/v1";
 const KEY_STORAGE = "actuatorSelection.salesApiKey";
 const PAGE_SIZE = 20;
 const QUOTE_STATUSES = ["draft", "sent", "accepted", "rejected", "expired"];
 const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
-
-const $ = (id) => document.getElementById(id);
 
 const state = {
   lang: "en",
@@ -30,72 +29,21 @@ const state = {
 
 const t = (key, params) => translate(state.lang, key, params);
 
-/** A failed request: status (0: server not reached), field errors of a 422, or a message. */
-class ApiError extends Error {
-  constructor(status, detail) {
-    const fieldErrors = Array.isArray(detail) ? detail : [];
-    const message =
-      typeof detail === "string"
-        ? detail
-        : fieldErrors.map((e) => e.msg).join("; ") || `HTTP ${status}`;
-    super(message);
-    this.status = status;
-    this.fieldErrors = fieldErrors;
-  }
-}
-
 function apiKey() {
   return sessionStorage.getItem(KEY_STORAGE);
 }
 
-async function call(method, path, { body, headers = {} } = {}) {
-  const init = { method, headers: { Accept: "application/json", ...headers } };
-  const key = apiKey();
-  if (key) init.headers.Authorization = `Bearer ${key}`;
-  if (body !== undefined) {
-    init.headers["Content-Type"] = "application/json";
-    init.body = JSON.stringify(body);
-  }
-  let response;
-  try {
-    response = await fetch(`${API}${path}`, init);
-  } catch {
-    throw new ApiError(0, null);
-  }
-  let data = null;
-  try {
-    const text = await response.text();
-    data = text ? JSON.parse(text) : null;
-  } catch {
-    data = null;
-  }
-  if (!response.ok) {
-    if (response.status === 401) signedOut(() => t("sales.key.rejected"));
-    throw new ApiError(response.status, data && data.detail);
-  }
-  return data;
-}
-
-// --- small DOM helpers ------------------------------------------------------------------
-
-function el(tag, props = {}, ...children) {
-  const node = document.createElement(tag);
-  for (const [name, value] of Object.entries(props)) {
-    if (name === "dataset") Object.assign(node.dataset, value);
-    else if (name in node) node[name] = value;
-    else node.setAttribute(name, value);
-  }
-  for (const child of children) {
-    if (child === null || child === undefined) continue;
-    node.append(child instanceof Node ? child : document.createTextNode(String(child)));
-  }
-  return node;
-}
-
-/** Text as the API wrote it: English whatever the page's language. */
-function english(text) {
-  return el("span", { lang: "en" }, text);
-}
+// The one API client of both pages, with this page's key; a 401 (unknown, revoked or
+// malformed key) sends the engineer back to the key prompt.
+const api = createClient({
+  headers: () => {
+    const key = apiKey();
+    return key ? { Authorization: `Bearer ${key}` } : {};
+  },
+  onError: (error) => {
+    if (error.status === 401) signedOut(() => t("sales.key.rejected"));
+  },
+});
 
 /** What to show for a failed request: our words when the server was not reached, else its own. */
 function errorText(error) {
@@ -160,10 +108,7 @@ function day(iso) {
 
 /** A moment of the API, in the browser's time zone, as the engineer's page shows it. */
 function moment(iso) {
-  const date = new Date(iso);
-  if (Number.isNaN(date.getTime())) return iso;
-  const options = { dateStyle: "medium", timeStyle: "short" };
-  return new Intl.DateTimeFormat(localeOf(state.lang), options).format(date);
+  return dateTime(iso, state.lang) ?? iso;
 }
 
 /** A decimal as typed: "7,5" (German) → "7.5", as the API reads decimals. */
@@ -195,20 +140,20 @@ function verdictName(verdict) {
 /** Back to the key prompt; ``message`` renders why (or null for none). */
 function signedOut(message) {
   sessionStorage.removeItem(KEY_STORAGE);
-  for (const id of ["create-panel", "list-panel", "who", "sign-out"]) $(id).hidden = true;
-  $("key-panel").hidden = false;
-  const error = $("key-error");
+  for (const id of ["create-panel", "list-panel", "who", "sign-out"]) byId(id).hidden = true;
+  byId("key-panel").hidden = false;
+  const error = byId("key-error");
   if (message) show(error, message);
   else clear(error);
   error.hidden = !message;
-  $("api-key").focus();
+  byId("api-key").focus();
 }
 
 async function signIn(key) {
   sessionStorage.setItem(KEY_STORAGE, key);
   let me;
   try {
-    me = await call("GET", "/auth/me");
+    me = await api.get("/auth/me");
   } catch (error) {
     if (error.status !== 401) signedOut(() => [t("sales.key.unchecked"), errorText(error)]);
     return false;
@@ -219,19 +164,19 @@ async function signIn(key) {
     );
     return false;
   }
-  $("key-panel").hidden = true;
-  show($("who"), () => t("sales.who", { name: me.name, key: me.key_id }));
-  $("who").hidden = false;
-  $("sign-out").hidden = false;
-  $("create-panel").hidden = false;
-  $("list-panel").hidden = false;
+  byId("key-panel").hidden = true;
+  show(byId("who"), () => t("sales.who", { name: me.name, key: me.key_id }));
+  byId("who").hidden = false;
+  byId("sign-out").hidden = false;
+  byId("create-panel").hidden = false;
+  byId("list-panel").hidden = false;
   return true;
 }
 
 // --- the selection and the form ---------------------------------------------------------
 
 function showFieldError(id, render) {
-  const node = $(id);
+  const node = byId(id);
   if (!node) return false;
   show(node, render);
   node.hidden = false;
@@ -246,12 +191,12 @@ function clearErrors() {
     clear(node);
   }
   for (const node of document.querySelectorAll("[aria-invalid]")) node.removeAttribute("aria-invalid");
-  clear($("form-status"));
-  $("form-status").className = "form-status";
+  clear(byId("form-status"));
+  byId("form-status").className = "form-status";
 }
 
 function formStatus(render, kind = "error") {
-  const node = $("form-status");
+  const node = byId("form-status");
   show(node, render);
   node.className = `form-status notice notice-${kind}`;
   node.focus();
@@ -263,26 +208,26 @@ function summary(selection) {
   const counts = { suitable: 0, unconfirmed: 0, unsuitable: 0 };
   for (const c of selection.candidates) counts[c.verdict] += 1;
   const seconds = (value) => qty(value, "s", lang);
-  return el(
+  return h(
     "dl",
-    { className: "facts" },
-    el("dt", {}, t("sales.summary.load")),
+    { class: "facts" },
+    h("dt", {}, t("sales.summary.load")),
     appendSymbols(
-      el("dd"),
+      h("dd"),
       `n_2 = ${qty(load.speed_rpm, "rpm", lang)}, T_L = ${qty(load.torque_nm, "Nm", lang)}, ` +
         `J_L = ${qty(load.inertia_kgm2, "kgm²", lang)}`,
     ),
-    el("dt", {}, t("sales.summary.cycle")),
+    h("dt", {}, t("sales.summary.cycle")),
     appendSymbols(
-      el("dd"),
+      h("dd"),
       `t_1 = ${seconds(cycle.accel_s)}, t_2 = ${seconds(cycle.constant_s)}, ` +
         `t_3 = ${seconds(cycle.decel_s)}, t_p = ${seconds(cycle.pause_s)} — ` +
         `${t("summary.duty")} ${qty(selection.duty_cycle_percent, "%", lang)}`,
     ),
-    el("dt", {}, t("sales.summary.candidates")),
-    el("dd", {}, VERDICTS.map((v) => `${counts[v]} ${verdictName(v)}`).join(", ")),
-    el("dt", {}, t("sales.summary.catalogue")),
-    el(
+    h("dt", {}, t("sales.summary.candidates")),
+    h("dd", {}, VERDICTS.map((v) => `${counts[v]} ${verdictName(v)}`).join(", ")),
+    h("dt", {}, t("sales.summary.catalogue")),
+    h(
       "dd",
       {},
       t("sales.summary.catalogue.value", {
@@ -297,11 +242,11 @@ const quotable = (candidate) => candidate.verdict !== "unsuitable";
 
 /** The selection's candidates as options, in the page's language; keeps the choice. */
 function renderCandidates() {
-  const select = $("f-model");
+  const select = byId("f-model");
   const chosen = select.value;
   select.replaceChildren(
     ...state.selection.candidates.map((c) =>
-      el(
+      h(
         "option",
         { value: c.model, disabled: !quotable(c) },
         quotable(c)
@@ -314,18 +259,18 @@ function renderCandidates() {
 }
 
 function fillCandidates(selection) {
-  $("f-model").value = "";
+  byId("f-model").value = "";
   renderCandidates();
   const first = selection.candidates.find(quotable);
-  if (first) $("f-model").value = first.model;
+  if (first) byId("f-model").value = first.model;
   describeCandidate();
   return Boolean(first);
 }
 
 function describeCandidate() {
-  const model = $("f-model").value;
+  const model = byId("f-model").value;
   const candidate = state.selection?.candidates.find((c) => c.model === model);
-  const hint = $("hint-model");
+  const hint = byId("hint-model");
   hint.className = candidate?.verdict === "unconfirmed" ? "hint hint-warn" : "hint";
   if (!candidate) {
     clear(hint);
@@ -334,7 +279,7 @@ function describeCandidate() {
   } else {
     show(hint, () =>
       appendSymbols(
-        el("span"),
+        h("span"),
         t("sales.actuator.suitable", { trms: qty(candidate.rms_torque_nm, "Nm", state.lang) }),
       ),
     );
@@ -343,12 +288,12 @@ function describeCandidate() {
 
 async function loadSelection(id) {
   clearErrors();
-  $("created").hidden = true;
-  $("selection-summary").hidden = true;
-  $("quote-form").hidden = true;
+  byId("created").hidden = true;
+  byId("selection-summary").hidden = true;
+  byId("quote-form").hidden = true;
   let selection;
   try {
-    selection = await call("GET", `/selections/${encodeURIComponent(id)}`);
+    selection = await api.get(encodePath`/selections/${id}`);
   } catch (error) {
     showFieldError("err-selection_id", () =>
       error.status === 404 ? t("sales.selection.missing", { id }) : errorText(error),
@@ -359,28 +304,28 @@ async function loadSelection(id) {
   const url = new URL(location.href);
   url.searchParams.set("selection", selection.id);
   history.replaceState(null, "", url);
-  $("engineer-link").href = `/?selection=${encodeURIComponent(selection.id)}`;
+  byId("engineer-link").href = `/?selection=${encodeURIComponent(selection.id)}`;
   const canQuote = fillCandidates(selection);
-  const box = $("selection-summary");
+  const box = byId("selection-summary");
   show(box, () => [
-    el("h3", {}, t("sales.selection.heading", { id: selection.id })),
+    h("h3", {}, t("sales.selection.heading", { id: selection.id })),
     summary(selection),
-    canQuote ? null : el("p", { className: "notice notice-error" }, t("sales.selection.none_quotable")),
+    canQuote ? null : h("p", { class: "notice notice-error" }, t("sales.selection.none_quotable")),
   ]);
   box.hidden = false;
   if (!canQuote) return;
-  $("quote-form").hidden = false;
+  byId("quote-form").hidden = false;
   await loadPriceLists();
 }
 
 /** The price lists as options, in the page's language; keeps the choice. */
 function renderPriceLists() {
-  const select = $("f-price-list");
+  const select = byId("f-price-list");
   const chosen = select.value;
   select.replaceChildren(
     ...state.priceLists.map((list) => {
       const name = list.is_example ? t("sales.price_list.example", { name: list.name }) : list.name;
-      return el("option", { value: list.name }, `${name} — ${list.currencies.join(", ")}`);
+      return h("option", { value: list.name }, `${name} — ${list.currencies.join(", ")}`);
     }),
   );
   if (chosen) select.value = chosen;
@@ -389,13 +334,13 @@ function renderPriceLists() {
 async function loadPriceLists() {
   if (!state.priceLists.length) {
     try {
-      state.priceLists = await call("GET", "/price-lists");
+      state.priceLists = await api.get("/price-lists");
     } catch (error) {
       formStatus(() => [t("sales.price_list.unavailable"), errorText(error)]);
       return;
     }
   }
-  const select = $("f-price-list");
+  const select = byId("f-price-list");
   const chosen = select.value;
   renderPriceLists();
   if (!state.priceLists.length) formStatus(() => t("sales.price_list.none"));
@@ -407,19 +352,19 @@ async function loadPriceLists() {
 }
 
 async function priceListChanged() {
-  const name = $("f-price-list").value;
+  const name = byId("f-price-list").value;
   const list = state.priceLists.find((l) => l.name === name);
-  $("example-warning").hidden = !(list && list.is_example);
-  const codes = $("controller-codes");
+  byId("example-warning").hidden = !(list && list.is_example);
+  const codes = byId("controller-codes");
   codes.replaceChildren();
   if (!name) return;
   try {
-    const detail = await call("GET", `/price-lists/${encodeURIComponent(name)}`);
+    const detail = await api.get(encodePath`/price-lists/${name}`);
     const seen = new Set();
     for (const price of detail.prices) {
       if (price.item_kind !== "controller" || seen.has(price.item_code)) continue;
       seen.add(price.item_code);
-      codes.append(el("option", { value: price.item_code }, price.description || price.item_code));
+      codes.append(h("option", { value: price.item_code }, price.description || price.item_code));
     }
   } catch {
     // the datalist is a convenience; typing the code works without it
@@ -427,29 +372,29 @@ async function priceListChanged() {
 }
 
 function text(id) {
-  return $(id).value.trim();
+  return byId(id).value.trim();
 }
 
 function requestBody() {
   const body = {
     selection_id: state.selection.id,
     customer: { name: text("f-customer") },
-    actuator: { model: $("f-model").value, quantity: Number($("f-qty").value) },
-    price_list: $("f-price-list").value,
+    actuator: { model: byId("f-model").value, quantity: Number(byId("f-qty").value) },
+    price_list: byId("f-price-list").value,
     discount_percent: decimalText(text("f-discount")) || "0",
-    valid_until: $("f-valid").value,
+    valid_until: byId("f-valid").value,
   };
-  if (text("f-address")) body.customer.address = $("f-address").value;
+  if (text("f-address")) body.customer.address = byId("f-address").value;
   if (text("f-reference")) body.customer.reference = text("f-reference");
   if (text("f-ctrl-name") || text("f-ctrl-code")) {
     body.controller = {
       type_name: text("f-ctrl-name"),
       item_code: text("f-ctrl-code"),
-      quantity: Number($("f-ctrl-qty").value),
+      quantity: Number(byId("f-ctrl-qty").value),
     };
   }
   if (text("f-currency")) body.currency = text("f-currency").toUpperCase();
-  if (text("f-notes")) body.notes = $("f-notes").value;
+  if (text("f-notes")) body.notes = byId("f-notes").value;
   return body;
 }
 
@@ -477,11 +422,10 @@ async function createQuote(event) {
     formStatus(() => t("sales.form.correct"));
     return;
   }
-  const button = $("create-quote");
+  const button = byId("create-quote");
   button.disabled = true;
   try {
-    const quote = await call("POST", "/quotes", {
-      body: requestBody(),
+    const quote = await api.post("/quotes", requestBody(), {
       headers: { "Idempotency-Key": state.idempotencyKey },
     });
     state.idempotencyKey = newIdempotencyKey();
@@ -500,14 +444,14 @@ async function createQuote(event) {
 }
 
 function showCreated(quote) {
-  const box = $("created");
+  const box = byId("created");
   show(box, () => {
     const flags = [];
     if (quote.price_list.is_example) flags.push(t("sales.created.example"));
     if (quote.unconfirmed) flags.push(t("sales.created.unconfirmed"));
-    const number = el("strong", { className: "quote-number" }, quote.number);
+    const number = h("strong", { class: "quote-number" }, quote.number);
     return [
-      el(
+      h(
         "p",
         {},
         ...withNodes("sales.created", { number }, { total: money(quote.total, quote.currency) }),
@@ -524,9 +468,9 @@ function showCreated(quote) {
 // --- the list ---------------------------------------------------------------------------
 
 function documentButton(number) {
-  return el(
+  return h(
     "button",
-    { type: "button", className: "document-button", onclick: () => openDocument(number) },
+    { type: "button", class: "document-button", onclick: () => openDocument(number) },
     t("sales.document.open"),
   );
 }
@@ -536,7 +480,7 @@ async function openDocument(number) {
   // The document itself is English; only the words around it follow the page.
   const win = window.open("", "_blank");
   if (!win) {
-    show($("list-status"), () => t("sales.document.blocked"));
+    show(byId("list-status"), () => t("sales.document.blocked"));
     return;
   }
   win.document.title = t("sales.document.title", { number });
@@ -544,7 +488,7 @@ async function openDocument(number) {
   try {
     // A signed, short-lived link: the window loads the document from the server itself,
     // with the document's own Content-Security-Policy (never written into the window).
-    const link = await call("POST", `/quotes/${encodeURIComponent(number)}/document-link`);
+    const link = await api.post(encodePath`/quotes/${number}/document-link`);
     win.location.replace(link.url);
   } catch (error) {
     win.document.body.textContent = `${t("sales.document.failed")}${error.message}`;
@@ -553,7 +497,7 @@ async function openDocument(number) {
 
 async function move(number, status) {
   try {
-    await call("POST", `/quotes/${encodeURIComponent(number)}/status`, { body: { status } });
+    await api.post(encodePath`/quotes/${number}/status`, { status });
     state.listNote = () => t("sales.list.moved", { number, status: statusName(status) });
   } catch (error) {
     if (error.status !== 401) state.listNote = () => [`${number}: `, errorText(error)];
@@ -568,40 +512,40 @@ const ACTION_KEYS = {
 };
 
 function row(quote) {
-  const actions = el("div", { className: "actions-cell" }, documentButton(quote.number));
+  const actions = h("div", { class: "actions-cell" }, documentButton(quote.number));
   for (const status of quote.allowed_transitions) {
     actions.append(
-      el(
+      h(
         "button",
-        { type: "button", className: `move move-${status}`, onclick: () => move(quote.number, status) },
+        { type: "button", class: `move move-${status}`, onclick: () => move(quote.number, status) },
         ACTION_KEYS[status] ? t(ACTION_KEYS[status]) : status,
       ),
     );
   }
-  const tag = (kind, key) => el("span", { className: `tag tag-${kind}` }, t(key));
+  const tag = (kind, key) => h("span", { class: `tag tag-${kind}` }, t(key));
   const flags = [
     quote.price_list.is_example ? tag("example", "sales.tag.example") : null,
     quote.unconfirmed ? tag("warn", "sales.tag.unconfirmed") : null,
   ];
   const reference = quote.customer.reference;
-  return el(
+  return h(
     "tr",
     { dataset: { number: quote.number } },
-    el("td", { className: "mono" }, quote.number),
-    el("td", {}, quote.customer.name, reference ? el("div", { className: "hint" }, reference) : null),
-    el("td", {}, quote.actuator_model, " ", ...flags),
-    el("td", { className: "num" }, money(quote.total, quote.currency)),
-    el(
+    h("td", { class: "mono" }, quote.number),
+    h("td", {}, quote.customer.name, reference ? h("div", { class: "hint" }, reference) : null),
+    h("td", {}, quote.actuator_model, " ", ...flags),
+    h("td", { class: "num" }, money(quote.total, quote.currency)),
+    h(
       "td",
       {},
-      el(
+      h(
         "span",
-        { className: `status status-${quote.status}`, dataset: { status: quote.status } },
+        { class: `status status-${quote.status}`, dataset: { status: quote.status } },
         statusName(quote.status),
       ),
     ),
-    el("td", { className: "date" }, el("time", { dateTime: quote.valid_until }, day(quote.valid_until))),
-    el("td", {}, actions),
+    h("td", { class: "date" }, h("time", { datetime: quote.valid_until }, day(quote.valid_until))),
+    h("td", {}, actions),
   );
 }
 
@@ -615,24 +559,24 @@ async function search({ append = false, keepOffset = false } = {}) {
   if (!append && !keepOffset) state.offset = 0;
   const params = new URLSearchParams({ limit: String(append ? PAGE_SIZE : state.offset + PAGE_SIZE) });
   if (append) params.set("offset", String(state.offset));
-  const q = $("q").value.trim();
-  const status = $("status-filter").value;
+  const q = byId("q").value.trim();
+  const status = byId("status-filter").value;
   if (q) params.set("q", q);
   if (status) params.set("status", status);
   const note = state.listNote;
   state.listNote = null;
   let page;
   try {
-    page = await call("GET", `/quotes?${params}`);
+    page = await api.get(`/quotes?${params}`);
   } catch (error) {
-    if (error.status !== 401) show($("list-status"), () => errorText(error));
+    if (error.status !== 401) show(byId("list-status"), () => errorText(error));
     return;
   }
   state.quotes = append ? [...state.quotes, ...page.quotes] : page.quotes;
-  show($("quotes").tBodies[0], () => state.quotes.map(row));
+  show(byId("quotes").tBodies[0], () => state.quotes.map(row));
   state.offset = state.quotes.length;
-  $("more").hidden = state.offset >= page.total;
-  show($("list-status"), note ?? (() => listCount(page.total, Boolean(q || status))));
+  byId("more").hidden = state.offset >= page.total;
+  show(byId("list-status"), note ?? (() => listCount(page.total, Boolean(q || status))));
 }
 
 // --- language ---------------------------------------------------------------------------
@@ -660,27 +604,27 @@ async function start() {
       applyLang(button.dataset.lang);
     });
   }
-  $("f-valid").value = isoDate(30);
-  $("key-form").addEventListener("submit", async (event) => {
+  byId("f-valid").value = isoDate(30);
+  byId("key-form").addEventListener("submit", async (event) => {
     event.preventDefault();
-    const key = $("api-key").value.trim();
-    $("api-key").value = "";
+    const key = byId("api-key").value.trim();
+    byId("api-key").value = "";
     if (key && (await signIn(key))) await afterSignIn();
   });
-  $("sign-out").addEventListener("click", () => signedOut(null));
-  $("selection-form").addEventListener("submit", (event) => {
+  byId("sign-out").addEventListener("click", () => signedOut(null));
+  byId("selection-form").addEventListener("submit", (event) => {
     event.preventDefault();
-    const id = $("selection-id").value.trim();
+    const id = byId("selection-id").value.trim();
     if (id) loadSelection(id);
   });
-  $("f-model").addEventListener("change", describeCandidate);
-  $("f-price-list").addEventListener("change", priceListChanged);
-  $("quote-form").addEventListener("submit", createQuote);
-  $("search-form").addEventListener("submit", (event) => {
+  byId("f-model").addEventListener("change", describeCandidate);
+  byId("f-price-list").addEventListener("change", priceListChanged);
+  byId("quote-form").addEventListener("submit", createQuote);
+  byId("search-form").addEventListener("submit", (event) => {
     event.preventDefault();
     search();
   });
-  $("more").addEventListener("click", () => search({ append: true }));
+  byId("more").addEventListener("click", () => search({ append: true }));
 
   const stored = apiKey();
   if (stored && (await signIn(stored))) await afterSignIn();
@@ -690,7 +634,7 @@ async function start() {
 async function afterSignIn() {
   const selection = new URLSearchParams(location.search).get("selection");
   if (selection) {
-    $("selection-id").value = selection;
+    byId("selection-id").value = selection;
     await loadSelection(selection);
   }
   await search();

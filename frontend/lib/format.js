@@ -37,6 +37,13 @@ export function qty(value, unit, lang) {
   return `${n}${NARROW_NBSP}${unitText(lang, unit)}`;
 }
 
+/** A moment of the API (ISO 8601) in the browser's time zone, e.g. "12 Mar 2025, 14:05"; null if unreadable. */
+export function dateTime(iso, lang) {
+  const date = typeof iso === "string" ? new Date(iso) : null;
+  if (!date || Number.isNaN(date.getTime())) return null;
+  return new Intl.DateTimeFormat(localeOf(lang), { dateStyle: "medium", timeStyle: "short" }).format(date);
+}
+
 /** Plotly's separators: decimal mark, then thousands mark (unused: no grouping). */
 export function plotlySeparators(lang) {
   return lang === "de" ? ",." : ".,";

@@ -1,19 +1,14 @@
 // The engineer's page: reads the form, asks the API, shows what it answers.
-// No engineering is computed here; see figures.js for how answers become charts.
+// No engineering is computed here; see figures.js for how answers become charts,
+// results.js for the result as DOM.
 
-import { ApiError, createSelection, getActuator, getSelection, loadPlotly } from "./api.js";
+import { ApiError, createClient, encodePath } from "../../lib/api.js";
+import { $, h, notice } from "../../lib/dom.js";
+import { appendSymbols, num, qty } from "../../lib/format.js";
+import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
+import { loadPlotly } from "../../lib/plotly.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
-import { appendSymbols, num, qty } from "./format.js";
-import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "./i18n.js";
-import {
-  h,
-  notice,
-  renderDetail,
-  renderPermalink,
-  renderRanking,
-  renderSummary,
-  resultSentence,
-} from "./results.js";
+import { renderDetail, renderPermalink, renderRanking, renderSummary, resultSentence } from "./results.js";
 
 const LOAD_KINDS = ["direct", "ball_screw", "rotary_table"];
 const MECHANISM_FIELDS = {
@@ -43,9 +38,30 @@ const state = {
   message: null,
 };
 
-const $ = (selector, root = document) => root.querySelector(selector);
 const form = () => $("#selection-form");
 const t = (key, params) => translate(state.lang, key, params);
+
+// ---------------------------------------------------------------- API
+
+const api = createClient();
+
+/** POST /api/v1/selections: run and store a selection. */
+const createSelection = (body) => api.post("/selections", body);
+
+/** GET /api/v1/selections/{id}: a stored selection. */
+const getSelection = (id) => api.get(encodePath`/selections/${id}`);
+
+const actuators = new Map();
+
+/** GET /api/v1/actuators/{model}, remembered for the page's lifetime (catalogue data). */
+function getActuator(model) {
+  if (!actuators.has(model)) {
+    const pending = api.get(encodePath`/actuators/${model}`);
+    pending.catch(() => actuators.delete(model));
+    actuators.set(model, pending);
+  }
+  return actuators.get(model);
+}
 
 // ---------------------------------------------------------------- form
 
@@ -427,6 +443,9 @@ async function drawCharts() {
   const diagramDiv = $("#chart-diagram");
   if (!sel || !candidate || !cycleDiv || !diagramDiv) return;
   $("#cycle-caption").replaceChildren(appendSymbols(h("span"), cycleCaption(sel, candidate, lang)));
+  // asked now, so that the answer is on its way while plotly.js loads and the cycle is drawn;
+  // without it the diagram is drawn without catalogue limits, and says so
+  const actuatorPending = getActuator(candidate.model).catch(() => null);
 
   let Plotly;
   try {
@@ -446,12 +465,7 @@ async function drawCharts() {
   cycleDiv.dataset.model = candidate.model;
   cycleDiv.dataset.state = "ready";
 
-  let actuator = null;
-  try {
-    actuator = await getActuator(candidate.model);
-  } catch {
-    actuator = null; // drawn without catalogue limits, and said so on the chart
-  }
+  const actuator = await actuatorPending;
   if (token !== drawToken) return;
   $("#diagram-caption").replaceChildren(
     appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),
@@ -584,7 +598,7 @@ function init() {
   const params = new URLSearchParams(window.location.search);
   const id = params.get("selection");
   if (id) openPermalink(id, params.get("model"));
-  else loadPlotly().catch(() => {}); // warm the cache while the engineer types
+  else loadPlotly().catch(() => {}); // the page's own <script> loads it; else ask where it is
 }
 
 init();

@@ -2,34 +2,12 @@
 // candidates and the chosen candidate's checks, controllers and chart frames.
 // API text is only ever set as text (never parsed as HTML).
 
-import { appendSymbols, localeOf, num, plainSymbols, qty } from "./format.js";
-import { translate, translateReference, unitText } from "./i18n.js";
+import { h, sym } from "../../lib/dom.js";
+import { dateTime, num, plainSymbols, qty } from "../../lib/format.js";
+import { translate, translateReference, unitText } from "../../lib/i18n.js";
 
 export const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
 const STATUS_MARK = { pass: "✓", fail: "✗", warn: "!", no_data: "?" };
-
-/** A DOM element: ``h("td", {class: "num"}, "1", child)``. */
-export function h(tag, props = {}, ...children) {
-  const el = document.createElement(tag);
-  for (const [key, value] of Object.entries(props)) {
-    if (value === undefined || value === null || value === false) continue;
-    if (key === "class") el.className = value;
-    else if (key === "dataset") Object.assign(el.dataset, value);
-    else if (key.startsWith("on") && typeof value === "function") {
-      el.addEventListener(key.slice(2), value);
-    } else el.setAttribute(key, value === true ? "" : String(value));
-  }
-  for (const child of children.flat(Infinity)) {
-    if (child === null || child === undefined || child === false) continue;
-    el.append(child instanceof Node ? child : String(child));
-  }
-  return el;
-}
-
-/** A span whose X_sub symbols are typeset as subscripts. */
-export function sym(text, props = {}) {
-  return appendSymbols(h("span", props), text);
-}
 
 function statusBadge(status, lang) {
   return h(
@@ -77,12 +55,6 @@ function valueCell(value, unit, lang, props = {}) {
 
 function definition(term, value, props = {}) {
   return h("div", { class: "kv", ...props }, h("dt", {}, term), h("dd", {}, value));
-}
-
-function createdAt(iso, lang) {
-  const date = typeof iso === "string" ? new Date(iso) : null;
-  if (!date || Number.isNaN(date.getTime())) return null;
-  return new Intl.DateTimeFormat(localeOf(lang), { dateStyle: "medium", timeStyle: "short" }).format(date);
 }
 
 /** The load case as the API resolved it, and the cycle figures of Eq. 514.3/514.4. */
@@ -133,8 +105,8 @@ export function renderSummary(sel, lang) {
             class: "kv meta",
           })
         : null,
-      createdAt(sel.created_at, lang)
-        ? definition(t("summary.created"), createdAt(sel.created_at, lang), {
+      dateTime(sel.created_at, lang)
+        ? definition(t("summary.created"), dateTime(sel.created_at, lang), {
             id: "sum-created",
             class: "kv meta",
           })
@@ -605,9 +577,4 @@ export function renderDetail(sel, candidate, lang) {
 export function resultSentence(sel, chosenModel, lang) {
   const counts = countVerdicts(sel.candidates);
   return translate(lang, "results.done", { ...counts, model: chosenModel ?? "–" });
-}
-
-/** A notice box: ``kind`` is "info", "error" or "warn". */
-export function notice(kind, ...children) {
-  return h("div", { class: `notice notice-${kind}` }, ...children);
 }
