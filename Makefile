@@ -63,4 +63,4 @@ lock: install
 		--python-platform x86_64-manylinux_2_28 --no-header --no-annotate -o requirements.lock
 
 clean:
-	rm -rf $(VENV) var .mypy_cache .ruff_cache .pytest_cache
+	rm -rf $(VENV) node_modules var .mypy_cache .ruff_cache .pytest_cache
