@@ -19,6 +19,7 @@ import threading
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from datetime import UTC, datetime
 from pathlib import Path
 
 import pytest
@@ -32,10 +33,12 @@ from playwright.sync_api import (
     ViewportSize,
     sync_playwright,
 )
+from tests.api._sales_fixtures import load_example_prices
 
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
+from actuator_selection.db.sales import ApiKeyRepository
 from actuator_selection.db.seed import load_seed
 from actuator_selection.main import create_app
 
@@ -206,3 +209,58 @@ def page(browser: Browser, base_url: str, traffic: Traffic) -> Iterator[Page]:
         yield context.new_page()
     finally:
         context.close()
+
+
+@dataclass(frozen=True)
+class SalesSite:
+    """The served app, a sales key and an admin key."""
+
+    url: str
+    sales_key: str
+    admin_key: str
+
+
+class _QuietServer(uvicorn.Server):
+    def install_signal_handlers(self) -> None:  # the main thread keeps its handlers
+        pass
+
+
+def _sales_database(directory: Path) -> tuple[str, str, str]:
+    url = f"sqlite:///{directory / 'sales.sqlite3'}"
+    upgrade(url=url)
+    engine = make_engine(url)
+    try:
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+            load_example_prices(session)
+            keys = ApiKeyRepository(session)
+            _, sales = keys.create(name="Anna Vertrieb", role="sales", now=datetime.now(UTC))
+            _, admin = keys.create(name="Admin", role="admin", now=datetime.now(UTC))
+    finally:
+        engine.dispose()
+    return url, sales, admin
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory, chromium_executable: str) -> Iterator[SalesSite]:
+    """The app as ``main.py`` builds it, with the example prices, a sales and an admin key."""
+    url, sales, admin = _sales_database(tmp_path_factory.mktemp("sales-e2e"))
+    app = create_app(Settings(database_url=url))
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    sock.bind(("127.0.0.1", 0))
+    port = sock.getsockname()[1]
+    server = _QuietServer(uvicorn.Config(app, log_level="warning", access_log=False))
+    thread = threading.Thread(target=server.run, kwargs={"sockets": [sock]}, daemon=True)
+    thread.start()
+    deadline = time.monotonic() + 20
+    while not server.started:
+        if time.monotonic() > deadline or not thread.is_alive():
+            pytest.fail("the sales app did not start", pytrace=False)
+        time.sleep(0.02)
+    try:
+        yield SalesSite(url=f"http://127.0.0.1:{port}", sales_key=sales, admin_key=admin)
+    finally:
+        server.should_exit = True
+        thread.join(10)
+        sock.close()
+        app.state.engine.dispose()

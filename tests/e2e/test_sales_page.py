@@ -9,88 +9,23 @@ come from ``tests/e2e/conftest.py``.
 from __future__ import annotations
 
 import re
-import socket
-import threading
-import time
 from collections.abc import Iterator
-from dataclasses import dataclass
-from datetime import UTC, date, datetime, timedelta
+from datetime import date, timedelta
 from pathlib import Path
 
 import httpx
 import pytest
-import uvicorn
 from playwright.sync_api import Browser, Page, expect
 from tests.api._sales_fixtures import (
     EXAMPLE_PRICE_LIST,
     WORKED_EXAMPLE,
-    load_example_prices,
 )
 
-from actuator_selection.config import SEED_DIR, Settings
-from actuator_selection.db.engine import make_engine, make_session_factory
-from actuator_selection.db.migrate import upgrade
-from actuator_selection.db.sales import ApiKeyRepository
-from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app
+from .conftest import SalesSite
 
 pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
 """Timeout for steps that wait for the server or for plotly.js (≈ 1.2 MB) under a loaded CI."""
-
-
-@dataclass(frozen=True)
-class SalesSite:
-    """The served app, a sales key and an admin key."""
-
-    url: str
-    sales_key: str
-    admin_key: str
-
-
-class _Server(uvicorn.Server):
-    def install_signal_handlers(self) -> None:  # the main thread keeps its handlers
-        pass
-
-
-def _database(directory: Path) -> tuple[str, str, str]:
-    url = f"sqlite:///{directory / 'sales.sqlite3'}"
-    upgrade(url=url)
-    engine = make_engine(url)
-    try:
-        with make_session_factory(engine).begin() as session:
-            load_seed(session, SEED_DIR)
-            load_example_prices(session)
-            keys = ApiKeyRepository(session)
-            _, sales = keys.create(name="Anna Vertrieb", role="sales", now=datetime.now(UTC))
-            _, admin = keys.create(name="Admin", role="admin", now=datetime.now(UTC))
-    finally:
-        engine.dispose()
-    return url, sales, admin
-
-
-@pytest.fixture(scope="module")
-def site(tmp_path_factory: pytest.TempPathFactory, chromium_executable: str) -> Iterator[SalesSite]:
-    url, sales, admin = _database(tmp_path_factory.mktemp("sales-e2e"))
-    app = create_app(Settings(database_url=url))
-    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-    sock.bind(("127.0.0.1", 0))
-    port = sock.getsockname()[1]
-    server = _Server(uvicorn.Config(app, log_level="warning", access_log=False))
-    thread = threading.Thread(target=server.run, kwargs={"sockets": [sock]}, daemon=True)
-    thread.start()
-    deadline = time.monotonic() + 20
-    while not server.started:
-        if time.monotonic() > deadline or not thread.is_alive():
-            pytest.fail("the sales app did not start", pytrace=False)
-        time.sleep(0.02)
-    try:
-        yield SalesSite(url=f"http://127.0.0.1:{port}", sales_key=sales, admin_key=admin)
-    finally:
-        server.should_exit = True
-        thread.join(10)
-        sock.close()
-        app.state.engine.dispose()
 
 
 @pytest.fixture

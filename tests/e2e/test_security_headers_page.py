@@ -1,96 +1,32 @@
 """The two pages work in Chromium under the security headers' Content-Security-Policy.
 
-The app is served with ``security_headers.install`` (a no-op if ``create_app``
-installs it already). Chromium reports every blocked load, inline script, style or
-eval on the console ("… violates the following Content Security Policy directive");
-the tests fail on any such message, from the pages and from the quote document the
-sales page writes into a window of its own (that window inherits the sales page's
-policy). A canary test makes sure such a violation is seen at all.
+The app is served as ``main.py`` builds it (``create_app`` installs the headers), by
+the ``site`` fixture of ``conftest.py``. Chromium reports every blocked load, inline
+script, style or eval on the console ("… violates the following Content Security
+Policy directive"); the tests fail on any such message, from the pages and from the
+quote document, which its window loads through a signed link under its own policy. A
+canary test makes sure such a violation is seen at all.
 """
 
 from __future__ import annotations
 
-import socket
-import threading
-import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from datetime import UTC, datetime, timedelta
-from pathlib import Path
 
 import httpx
 import pytest
-import uvicorn
 from playwright.sync_api import Browser, BrowserContext, ConsoleMessage, Page, expect
-from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST, WORKED_EXAMPLE, load_example_prices
+from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST, WORKED_EXAMPLE
 
-from actuator_selection.api import security_headers
 from actuator_selection.api.security_headers import PAGE_CSP
-from actuator_selection.config import SEED_DIR, Settings
-from actuator_selection.db.engine import make_engine, make_session_factory
-from actuator_selection.db.migrate import upgrade
-from actuator_selection.db.sales import ApiKeyRepository
-from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app
 
-from .conftest import DESKTOP
+from .conftest import DESKTOP, SalesSite
 
 pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
 """Timeout for steps that wait for the server or for plotly.js (≈ 1.2 MB) under a loaded CI."""
 FHA = "FHA-25C-50-L"
-
-
-@dataclass(frozen=True)
-class Site:
-    url: str
-    sales_key: str
-
-
-class _Server(uvicorn.Server):
-    def install_signal_handlers(self) -> None:  # the main thread keeps its handlers
-        pass
-
-
-def _database(directory: Path) -> tuple[str, str]:
-    url = f"sqlite:///{directory / 'csp.sqlite3'}"
-    upgrade(url=url)
-    engine = make_engine(url)
-    try:
-        with make_session_factory(engine).begin() as session:
-            load_seed(session, SEED_DIR)
-            load_example_prices(session)
-            _, key = ApiKeyRepository(session).create(
-                name="CSP test", role="sales", now=datetime.now(UTC)
-            )
-    finally:
-        engine.dispose()
-    return url, key
-
-
-@pytest.fixture(scope="module")
-def site(tmp_path_factory: pytest.TempPathFactory, chromium_executable: str) -> Iterator[Site]:
-    url, key = _database(tmp_path_factory.mktemp("csp-e2e"))
-    app = create_app(Settings(database_url=url))
-    security_headers.install(app)
-    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-    sock.bind(("127.0.0.1", 0))
-    port = sock.getsockname()[1]
-    server = _Server(uvicorn.Config(app, log_level="warning", access_log=False))
-    thread = threading.Thread(target=server.run, kwargs={"sockets": [sock]}, daemon=True)
-    thread.start()
-    deadline = time.monotonic() + 20
-    while not server.started:
-        if time.monotonic() > deadline or not thread.is_alive():
-            pytest.fail("the app did not start", pytrace=False)
-        time.sleep(0.02)
-    try:
-        yield Site(url=f"http://127.0.0.1:{port}", sales_key=key)
-    finally:
-        server.should_exit = True
-        thread.join(10)
-        sock.close()
-        app.state.engine.dispose()
 
 
 @dataclass
@@ -109,7 +45,7 @@ class Console:
 
 
 @pytest.fixture
-def context(browser: Browser, site: Site) -> Iterator[tuple[BrowserContext, Console]]:
+def context(browser: Browser, site: SalesSite) -> Iterator[tuple[BrowserContext, Console]]:
     context = browser.new_context(viewport=DESKTOP, locale="en-US", base_url=site.url)
     context.set_default_timeout(15_000)
     console = Console()
@@ -164,7 +100,7 @@ def test_engineer_page_draws_its_charts_under_the_policy(
     assert console.errors == []
 
 
-def _quote(site: Site) -> str:
+def _quote(site: SalesSite) -> str:
     headers = {"Authorization": f"Bearer {site.sales_key}"}
     selection = httpx.post(f"{site.url}/api/v1/selections", json=WORKED_EXAMPLE, timeout=30)
     assert selection.status_code == 201, selection.text
@@ -181,7 +117,7 @@ def _quote(site: Site) -> str:
 
 
 def test_sales_page_and_its_quote_document_under_the_policy(
-    context: tuple[BrowserContext, Console], site: Site
+    context: tuple[BrowserContext, Console], site: SalesSite
 ) -> None:
     browser_context, console = context
     number = _quote(site)
