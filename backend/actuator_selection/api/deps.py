@@ -127,6 +127,13 @@ pause_cyclic_gc = CyclicGcPause()
 
 
 def catalogue_snapshot(request: Request, session: Session) -> CatalogueSnapshot:
-    """The catalogue at the version ``session`` pins, from the app's in-memory cache."""
+    """The catalogue at the version ``session`` pins, from the app's in-memory cache.
+
+    The read transaction ends here: the snapshot is in memory, and holding the
+    version's share lock while a large batch computes would only hold up catalogue
+    changes (they wait for it, up to the lock timeout).
+    """
     cache: CatalogueCache = request.app.state.catalogue
-    return cache.snapshot(session)
+    snapshot = cache.snapshot(session)
+    session.commit()
+    return snapshot
