@@ -55,6 +55,7 @@ bench: install
 	$(BIN)/python -m bench.selection
 	$(BIN)/python -m bench.batch
 	$(BIN)/python -m bench.page
+	$(BIN)/python -m bench.http
 
 ## Re-resolve requirements.lock from pyproject.toml (needs the registry).
 lock: install

@@ -1,0 +1,176 @@
+"""HTTP throughput of the real server under concurrent clients, against its own /health.
+
+Starts ``python -m actuator_selection serve`` (uvicorn) on a free loopback port on a
+fresh database seeded with the starter catalogue, runs ``--clients`` keep-alive
+clients for ``--seconds`` against each endpoint in turn, and prints requests per
+second, the ratio to ``GET /api/v1/health`` measured in the same run, and every
+answer that was not 2xx (there should be none).
+
+    python -m bench.http                       # PostgreSQL at $TEST_POSTGRES_URL if it answers
+    python -m bench.http --database sqlite     # the embedded default
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import uuid
+from collections import Counter
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+from typing import Any
+
+import httpx
+from sqlalchemy import create_engine, text
+from sqlalchemy.engine import make_url
+
+from actuator_selection.config import REPO_ROOT, SEED_DIR
+from actuator_selection.db.engine import make_engine, make_session_factory, normalise_url
+from actuator_selection.db.migrate import upgrade
+from actuator_selection.db.seed import load_seed
+
+WORKED_EXAMPLE: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+}
+POSTGRES_URL = os.environ.get("TEST_POSTGRES_URL", "postgresql://postgres@127.0.0.1:5432/test")
+
+
+def _postgres_database() -> tuple[str, Callable[[], None]] | None:
+    """A throw-away PostgreSQL database and how to drop it; None without a server."""
+    admin = create_engine(normalise_url(POSTGRES_URL), isolation_level="AUTOCOMMIT")
+    try:
+        with admin.connect() as conn:
+            name = f"actuator_bench_{uuid.uuid4().hex[:12]}"
+            conn.execute(text(f'CREATE DATABASE "{name}"'))
+    except Exception:  # any failure to connect means "no server here"
+        admin.dispose()
+        return None
+
+    def drop() -> None:
+        with admin.connect() as conn:
+            conn.execute(text(f'DROP DATABASE IF EXISTS "{name}" WITH (FORCE)'))
+        admin.dispose()
+
+    url = make_url(normalise_url(POSTGRES_URL)).set(database=name)
+    return url.render_as_string(hide_password=False), drop
+
+
+def _seed(url: str) -> None:
+    upgrade(url=url)
+    engine = make_engine(url)
+    with make_session_factory(engine).begin() as session:
+        load_seed(session, SEED_DIR)
+    engine.dispose()
+
+
+def _serve(url: str, env: dict[str, str]) -> tuple[subprocess.Popen[bytes], str]:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        port = sock.getsockname()[1]
+    process = subprocess.Popen(
+        [sys.executable, "-m", "actuator_selection", "serve", "--port", str(port)],
+        cwd=REPO_ROOT,
+        env={**os.environ, "DATABASE_URL": url, **env},
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    base = f"http://127.0.0.1:{port}"
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:
+        try:
+            if httpx.get(f"{base}/api/v1/health", timeout=1).status_code == 200:
+                return process, base
+        except httpx.TransportError:
+            time.sleep(0.05)
+    process.kill()
+    raise SystemExit("the server did not start")
+
+
+def _load(
+    base: str, method: str, path: str, body: dict[str, Any] | None, *, clients: int, seconds: float
+) -> tuple[float, Counter[str], int]:
+    """Requests per second, the non-2xx outcomes, and the mean answer size [bytes]."""
+    outcomes: Counter[str] = Counter()
+    sizes: list[int] = []
+    lock = threading.Lock()
+    deadline = time.monotonic() + seconds
+
+    def client() -> None:
+        with httpx.Client(base_url=base, timeout=60) as c:
+            while time.monotonic() < deadline:
+                try:
+                    r = c.request(method, path, json=body)
+                    key, size = str(r.status_code), len(r.content)
+                except httpx.TransportError as exc:
+                    key, size = type(exc).__name__, 0
+                with lock:
+                    outcomes[key] += 1
+                    sizes.append(size)
+
+    started = time.monotonic()
+    with ThreadPoolExecutor(clients) as pool:
+        for future in [pool.submit(client) for _ in range(clients)]:
+            future.result()
+    elapsed = time.monotonic() - started
+    total = sum(outcomes.values())
+    failures = Counter({k: n for k, n in outcomes.items() if not k.startswith("2")})
+    return total / elapsed, failures, sum(sizes) // max(1, len(sizes))
+
+
+def main() -> None:
+    """Measure and print; see the module docstring."""
+    parser = argparse.ArgumentParser(prog="python -m bench.http")
+    parser.add_argument("--database", choices=["postgresql", "sqlite"], default="postgresql")
+    parser.add_argument("--clients", type=int, default=32)
+    parser.add_argument("--seconds", type=float, default=8.0)
+    parser.add_argument("--workers", type=int, default=1)
+    args = parser.parse_args()
+    drop: Callable[[], None] = lambda: None  # noqa: E731
+    found = _postgres_database() if args.database == "postgresql" else None
+    with tempfile.TemporaryDirectory() as folder:
+        if found is None:
+            url = f"sqlite:///{Path(folder) / 'bench.sqlite3'}"
+            if args.database == "postgresql":
+                print("PostgreSQL unreachable: measuring on SQLite")
+        else:
+            url, drop = found
+        _seed(url)
+        process, base = _serve(url, {"WORKERS": str(args.workers)})
+        try:
+            print(
+                f"{make_url(url).get_backend_name()}, {args.workers} worker(s), "
+                f"{args.clients} clients, {args.seconds:g} s each"
+            )
+            cases = [
+                ("GET /health", "GET", "/api/v1/health", None),
+                ("POST /selections, one model", "POST", "/api/v1/selections",
+                 {**WORKED_EXAMPLE, "models": ["FHA-25C-50-L"]}),
+                ("POST /selections, whole catalogue", "POST", "/api/v1/selections",
+                 WORKED_EXAMPLE),
+            ]  # fmt: skip
+            reference = None
+            for name, method, path, body in cases:
+                rate, failures, size = _load(
+                    base, method, path, body, clients=args.clients, seconds=args.seconds
+                )
+                reference = reference or rate
+                print(
+                    f"  {name:36s} {rate:8.1f} req/s  {rate / reference:5.2f}× /health  "
+                    f"answer {size / 1024:8.1f} KiB  non-2xx {dict(failures) or 0}"
+                )
+        finally:
+            process.terminate()
+            process.wait(10)
+            drop()
+
+
+if __name__ == "__main__":
+    main()
