@@ -5,12 +5,13 @@ from __future__ import annotations
 import dataclasses
 import math
 
+import numpy as np
 import pytest
 from tests import worked_example
 
 from actuator_selection.core import checks, selection
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import CHECK_NAMES
+from actuator_selection.core.batch import ARRAY_OPS, CHECK_NAMES
 from actuator_selection.core.checks import (
     FLOAT_OPS,
     RULES,
@@ -138,14 +139,17 @@ def test_only_rules_that_say_so_read_rms() -> None:
     ],
 )
 @pytest.mark.parametrize("has_zone", [False, True])
-def test_requirements_decide_no_data_alike_in_check_and_missing(
+def test_requirements_decide_no_data_alike_on_floats_and_arrays(
     unpublished: tuple[str, ...], has_zone: bool
 ) -> None:
-    """Rule.check's short cut for floats agrees with Requirement.missing."""
+    """Rule.check's short cut for floats, Requirement.missing on floats and on arrays."""
     q = worked_operands(has_zone=has_zone, **dict.fromkeys(unpublished, math.nan))
+    arrays = Operands(*(np.array([v]) for v in q))
     for rule in RULES:
         no_data = rule.check(q).status is Status.NO_DATA
         assert no_data == any(need.missing(q, FLOAT_OPS) for need in rule.requires), rule.name
+        masks = [need.missing(arrays, ARRAY_OPS) for need in rule.requires]
+        assert no_data == bool(np.any(masks)), rule.name
 
 
 def test_a_requirement_is_met_by_any_of_its_values_or_its_exemption() -> None:

@@ -29,6 +29,7 @@ follow. Here n_av ≤ n_max (Eq. 514.3) as a sixth check, given to both flowchar
 the chapter's worked example (Table 516.1, FHA-25C-50-L of Table 516.3):
 
 >>> from actuator_selection.core.actuators import Actuator
+>>> from actuator_selection.core.batch import evaluate_batch
 >>> from actuator_selection.core.cycle import Load, SpeedPattern
 >>> from actuator_selection.core.selection import Application, evaluate
 >>> mean_speed = Rule(
@@ -46,6 +47,8 @@ the chapter's worked example (Table 516.1, FHA-25C-50-L of Table 516.3):
 >>> check = evaluate(fha, app, rules=rules).checks[-1]
 >>> check.name, check.status.value, check.message
 ('mean_speed', 'pass', 'n_av = 6.154 rpm, n_max = 90 rpm')
+>>> evaluate_batch([fha], [app], rules=rules).status(0, 0, "mean_speed").value
+'pass'
 """
 
 from __future__ import annotations
