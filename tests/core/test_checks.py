@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -15,9 +16,11 @@ from actuator_selection.core.batch import ARRAY_OPS, CHECK_NAMES
 from actuator_selection.core.checks import (
     FLOAT_OPS,
     RULES,
+    Check,
     Operands,
     Requirement,
     Status,
+    _new_check,
 )
 from actuator_selection.core.cycle import CycleTorques, Load, SpeedPattern
 from actuator_selection.core.selection import Application, evaluate, operands
@@ -48,8 +51,39 @@ def test_names_that_moved_stay_importable_from_selection() -> None:
     assert selection.INERTIA_RATIO_LIMIT == checks.INERTIA_RATIO_LIMIT == 3.0
 
 
+def test_the_rules_fast_check_constructor_builds_a_check() -> None:
+    """Rule.check builds checks without the generated __init__: they must be the same."""
+    args: dict[str, Any] = {
+        "name": "n",
+        "status": Status.WARN,
+        "value": 1.5,
+        "limit": None,
+        "unit": "Nm",
+        "reference": "Eq. 514.1",
+        "message": "m",
+        "approximate": True,
+    }
+    assert list(args) == [f.name for f in dataclasses.fields(Check)]  # every field, in order
+    fast = _new_check(*args.values())
+    assert type(fast) is Check
+    assert fast == Check(**args)
+    assert repr(fast) == repr(Check(**args))
+    assert dataclasses.asdict(fast) == args
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        fast.value = 2.0  # type: ignore[misc]
+    assert evaluate(FHA, EXAMPLE).checks[0] == Check(
+        name="max_speed",
+        status=Status.PASS,
+        value=40,
+        limit=90,
+        unit="rpm",
+        reference="Table 515.1",
+        message="load speed n_2 = 40 rpm ≤ n_max = 90 rpm",
+    )
+
+
 def test_operands_name_each_value() -> None:
-    """operands() puts each value in its field, NaN for what is not published."""
+    """operands() builds the named tuple positionally: each value lands in its field."""
     actuator = Actuator(
         model="M",
         family="F",

@@ -68,7 +68,7 @@ from actuator_selection.core.selection import (
     Application,
     Selection,
     Verdict,
-    evaluate,
+    evaluate_each,
 )
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
@@ -610,7 +610,7 @@ def select_batch(
             mean_speed_rpm=mean_speed[i],
             duty_cycle_percent=duty[i],
             cycle_time_s=cycle[i],
-            candidates=tuple(evaluate(actuators[j], app, rules=rules) for j in columns),
+            candidates=tuple(evaluate_each([actuators[j] for j in columns], app, rules=rules)),
         )
         for i, (app, columns) in enumerate(zip(apps, chosen, strict=True))
     ]
