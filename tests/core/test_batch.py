@@ -27,6 +27,7 @@ from actuator_selection.core.batch import (
     rank_batch,
     select_batch,
 )
+from actuator_selection.core.checks import RULES, Requirement, Rule, published
 from actuator_selection.core.cycle import (
     Load,
     SpeedPattern,
@@ -53,17 +54,19 @@ FHA = worked_example.FHA_25C_50_L
 # --- the oracle -------------------------------------------------------------------------
 
 
-def assert_matches_scalar(actuators: Sequence[Actuator], apps: Sequence[Application]) -> None:
+def assert_matches_scalar(
+    actuators: Sequence[Actuator], apps: Sequence[Application], rules: Sequence[Rule] = RULES
+) -> None:
     """Every array cell of evaluate_batch equals the scalar flowchart, bit for bit."""
-    ev = evaluate_batch(actuators, apps)
-    assert ev.statuses.shape == (len(apps), len(actuators), len(CHECK_NAMES))
+    ev = evaluate_batch(actuators, apps, rules=rules)
+    assert ev.statuses.shape == (len(apps), len(actuators), len(rules))
     for i, app in enumerate(apps):
         assert ev.mean_speed_rpm[i] == mean_speed_rpm(app.pattern)
         scalar = select([], app)
         assert ev.duty_cycle_percent[i] == scalar.duty_cycle_percent
         assert ev.cycle_time_s[i] == scalar.cycle_time_s
         for j, actuator in enumerate(actuators):
-            c = evaluate(actuator, app)
+            c = evaluate(actuator, app, rules=rules)
             where = f"case {i} {app}, actuator {actuator}"
             assert [ev.status(i, j, k.name) for k in c.checks] == [k.status for k in c.checks], (
                 where
@@ -83,14 +86,17 @@ def truncated(selection: Selection, top: int) -> Selection:
 
 
 def assert_selects_like_scalar(
-    actuators: Sequence[Actuator], apps: Sequence[Application], top: int
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    top: int,
+    rules: Sequence[Rule] = RULES,
 ) -> None:
     """select_batch equals select() cut to ``top``, case by case (dataclass ==, exact floats)."""
-    batch = select_batch(actuators, apps, top=top)
-    ranks = rank_batch(actuators, apps, top=top)
+    batch = select_batch(actuators, apps, top=top, rules=rules)
+    ranks = rank_batch(actuators, apps, top=top, rules=rules)
     assert len(batch) == len(ranks) == len(apps)
     for app, got, columns in zip(apps, batch, ranks, strict=True):
-        expected = truncated(select(actuators, app), top)
+        expected = truncated(select(actuators, app, rules=rules), top)
         assert got == expected
         assert [actuators[j] for j in columns] == [c.actuator for c in expected.candidates]
 
@@ -244,6 +250,83 @@ def test_boundaries_are_met_at_equality() -> None:
         assert ev.status(k, corner, "continuous_duty") is Status.PASS
         assert ev.status(k, short, "continuous_duty") is Status.FAIL
     assert_matches_scalar(actuators, apps)
+
+
+# Two checks the chapter does not have, made up to exercise the table: each is one Rule,
+# and both flowcharts, the verdicts and the ranking take it up.
+RMS_TO_PEAK = Rule(
+    name="rms_to_peak",
+    reference="Eq. 514.2",
+    unit="Nm",
+    value=lambda q, xp: 2.0 * q.rms_torque_nm,
+    limit=lambda q, xp: xp.where(q.has_zone, q.zone_torque_nm, q.max_torque_nm),
+    requires=(
+        published("inertia_kgm2", "moment of inertia J_A"),
+        Requirement(any_of=("max_torque_nm",), unless="has_zone", what="maximum torque T_max"),
+    ),
+    binding=lambda q, xp: xp.not_(q.high_dynamics),
+    reads_rms=True,
+    message=lambda q, status, value, limit: f"2·T_rms = {value:.4g} Nm, limit {limit:.4g} Nm",
+)
+MEAN_SPEED = Rule(
+    name="mean_speed",
+    reference="Eq. 514.3",
+    unit="rpm",
+    value=lambda q, xp: q.mean_speed_rpm,
+    limit=lambda q, xp: 0.5 * q.max_speed_rpm,
+    requires=(published("max_speed_rpm", "maximum output speed n_max"),),
+    within=lambda q, xp: q.load_inertia_kgm2 <= 10.0,
+    message=lambda q, status, value, limit: f"n_av = {value:.4g} rpm",
+)
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_an_added_rule_runs_in_both_flowcharts(seed: int) -> None:
+    rng = random.Random(100 + seed)
+    actuators = [random_actuator(rng, k) for k in range(30)]
+    apps = [random_case(rng, actuators) for _ in range(80)]
+    actuators += boundary_actuators(apps[:10])
+    rules = (*RULES, RMS_TO_PEAK, MEAN_SPEED)
+    assert_matches_scalar(actuators, apps, rules)
+    assert_selects_like_scalar(actuators, apps, 3, rules)
+    ev = evaluate_batch(actuators, apps, rules=rules)
+    assert ev.check_names == (*CHECK_NAMES, "rms_to_peak", "mean_speed")
+    seen = {ev.status(i, j, "rms_to_peak") for i in range(len(apps)) for j in range(len(actuators))}
+    assert seen == set(Status)  # pass, fail, warn (not binding), no data: every branch ran
+    # The new checks change verdicts and so the ranking: the comparison above is not vacuous.
+    assert (ev.verdicts != evaluate_batch(actuators, apps).verdicts).any()
+
+
+def test_an_added_rule_near_its_limit_is_ranked_exactly() -> None:
+    """A rule that reads T_rms gets the exact T_rms near its limit, as continuous_duty does."""
+    rng = random.Random(22)
+    found = 0
+    while found < 4:
+        app = random_case(rng, [FHA])
+        t = cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=0.7)
+        p = app.pattern
+        energy = (
+            (t.accel_torque_nm * t.accel_torque_nm) * p.accel_s
+            + t.constant_torque_nm**2 * p.constant_s
+            + (t.decel_torque_nm * t.decel_torque_nm) * p.decel_s
+        )
+        fast = math.sqrt(energy / p.cycle_s)
+        if fast == t.rms_torque_nm:
+            continue
+        found += 1
+        actuators = [
+            Actuator(
+                model=f"AT-{name}",
+                family="EDGE",
+                gear_ratio=50.0,
+                max_torque_nm=2.0 * rms,  # RMS_TO_PEAK's limit: 2·T_rms at equality
+                max_speed_rpm=1e9,
+                inertia_kgm2=0.7,
+                stall_torque_nm=1e9,
+            )
+            for name, rms in (("EXACT", t.rms_torque_nm), ("FAST", fast))
+        ]
+        assert_selects_like_scalar(actuators, [app], top=2, rules=(*RULES, RMS_TO_PEAK))
 
 
 def test_edge_cases_named_in_the_issue() -> None:

@@ -2,26 +2,34 @@
 
 An ERP sizes thousands of load cases against the same catalogue. This module runs
 the flowchart of :mod:`actuator_selection.core.selection` for every case × actuator
-as arrays: the cycle figures (Eq. 514.1–514.4), the status of each of the five
-checks, the verdicts and the ranking (:func:`~actuator_selection.core.selection.ranking_key`),
-and then builds the detailed :class:`~actuator_selection.core.selection.Candidate` of
+as arrays: the cycle figures (Eq. 514.1–514.4), the status of each check, the verdicts
+and the ranking (:func:`~actuator_selection.core.selection.ranking_key`), and then
+builds the detailed :class:`~actuator_selection.core.selection.Candidate` of
 only the best ``top`` actuators of each case with the scalar
 :func:`~actuator_selection.core.selection.evaluate`, so their numbers and messages are
 those of a single selection by construction.
+
+The checks are not written here: the rules of :mod:`actuator_selection.core.checks`
+(the table the scalar flowchart runs) compute their values and limits on arrays of
+:class:`~actuator_selection.core.checks.Operands` with numpy's operations
+(:data:`ARRAY_OPS`); this module supplies the operands and turns each rule's
+comparison into status codes.
 
 That is only right if the arrays decide exactly as the scalar code does. They do,
 bit for bit, for three reasons:
 
 - every expression performs the same IEEE operations in the same order as
   ``core/cycle.py`` and ``core/zones.py`` (numpy adds no fused multiply-add);
-- a catalogue value that is ``None`` is NaN here and masked: its check is
-  ``no_data``, whatever the NaN arithmetic gives;
+- a catalogue value that is ``None`` is NaN here (as in the scalar operands) and
+  masked by the rule's requirements: its check is ``no_data``, whatever the NaN
+  arithmetic gives;
 - ``x**2`` in ``core/cycle.py`` is the C library's ``pow(x, 2)``, which glibc does
   *not* always round like ``x * x`` (about one square in 1,200 differs by one ulp,
   measured on glibc 2.36). :func:`_python_square` squares with ``x * x`` and calls
   Python's own ``**`` for the elements where the two may disagree. Ranking, which
   needs only the statuses, squares with ``x * x`` and recomputes exactly just the
-  T_rms that lie within 1e-12 of their limit.
+  T_rms that lie within 1e-12 of the limit of a rule that reads T_rms
+  (:attr:`~actuator_selection.core.checks.Rule.reads_rms`).
 
 The tests compare every array with the scalar flowchart with ``==``.
 
@@ -54,14 +62,13 @@ import numpy as np
 import numpy.typing as npt
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.checks import RULES, Operands, Ops, Rule, Status
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.selection import (
-    INERTIA_RATIO_LIMIT,
     Application,
     Selection,
-    Status,
     Verdict,
-    evaluate,
+    evaluate_each,
 )
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
@@ -70,8 +77,12 @@ BoolArray = npt.NDArray[np.bool_]
 CodeArray = npt.NDArray[np.int8]
 IndexArray = npt.NDArray[np.intp]
 
-CHECK_NAMES = ("max_speed", "inertia_ratio", "peak_torque", "decel_torque", "continuous_duty")
-"""The checks in flowchart order, as the scalar ``evaluate`` runs them."""
+CHECK_NAMES = tuple(rule.name for rule in RULES)
+"""The chapter's checks in flowchart order (:data:`~actuator_selection.core.checks.RULES`)."""
+
+ARRAY_OPS = Ops(where=np.where, isnan=np.isnan, not_=np.logical_not)
+"""The rules' operations on numpy arrays (the scalar flowchart uses
+:data:`~actuator_selection.core.checks.FLOAT_OPS`)."""
 
 STATUS_BY_CODE = (Status.PASS, Status.WARN, Status.NO_DATA, Status.FAIL)
 """Status codes of :attr:`BatchEvaluation.statuses`, ordered so that the largest code of
@@ -141,30 +152,16 @@ class _Catalogue:
     max_torque: FloatArray
     max_speed: FloatArray
     inertia: FloatArray
-    inertia_missing: BoolArray
-    torque_check_missing: BoolArray
-    speed_missing: BoolArray
-    inertia_limit: FloatArray
-    duty_limit: FloatArray
-    duty_missing: BoolArray
-    duty_speed_limit: FloatArray
+    stall: FloatArray
+    continuous: FloatArray
+    has_zone: BoolArray
+    zone_max_speed: FloatArray
     zone_columns: IndexArray
     rank_position: npt.NDArray[np.int32]
 
 
 def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
-    max_torque = _optional([a.max_torque_nm for a in actuators])
-    max_speed = _optional([a.max_speed_rpm for a in actuators])
-    inertia = _optional([a.inertia_kgm2 for a in actuators])
-    stall = _optional([a.stall_torque_nm for a in actuators])
-    continuous = _optional([a.continuous_torque_nm for a in actuators])
     has_zone = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
-    inertia_missing = np.isnan(inertia)
-    speed_missing = np.isnan(max_speed)
-    # check_continuous_duty: with a zone the zone's edge decides; otherwise T_0, else the
-    # allowable continuous torque, with n_max, bound an approximate rectangle.
-    rectangle_torque = np.where(np.isnan(stall), continuous, stall)
-    duty_missing = inertia_missing | (~has_zone & (np.isnan(rectangle_torque) | speed_missing))
     # ranking_key after the verdict: T_max, then J_A (unknown last), then the model name;
     # the column index mirrors sorted()'s stability for equal keys.
     inf = math.inf
@@ -180,17 +177,13 @@ def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
     rank_position = np.empty(len(actuators), dtype=np.int32)
     rank_position[order] = np.arange(len(actuators), dtype=np.int32)
     return _Catalogue(
-        max_torque=max_torque,
-        max_speed=max_speed,
-        inertia=inertia,
-        inertia_missing=inertia_missing,
-        torque_check_missing=inertia_missing | np.isnan(max_torque),
-        speed_missing=speed_missing,
-        inertia_limit=INERTIA_RATIO_LIMIT * inertia,
-        duty_limit=rectangle_torque,
-        duty_missing=duty_missing,
-        # A zone bounds the speed itself (beyond its last point the limit is NaN).
-        duty_speed_limit=np.where(has_zone, inf, max_speed),
+        max_torque=_optional([a.max_torque_nm for a in actuators]),
+        max_speed=_optional([a.max_speed_rpm for a in actuators]),
+        inertia=_optional([a.inertia_kgm2 for a in actuators]),
+        stall=_optional([a.stall_torque_nm for a in actuators]),
+        continuous=_optional([a.continuous_torque_nm for a in actuators]),
+        has_zone=has_zone,
+        zone_max_speed=_optional([a.zone.max_speed_rpm if a.zone else None for a in actuators]),
         zone_columns=np.flatnonzero(has_zone),
         rank_position=rank_position,
     )
@@ -207,7 +200,7 @@ class _Cases:
     load_torque: FloatArray
     load_torque_squared: FloatArray
     load_inertia: FloatArray
-    inertia_fail_code: CodeArray
+    high_dynamics: BoolArray
     cycle: FloatArray
     mean_speed: FloatArray
     duty: FloatArray
@@ -243,7 +236,7 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         load_torque=load_torque,
         load_torque_squared=_python_square(load_torque),
         load_inertia=column([a.load.inertia_kgm2 for a in apps]),
-        inertia_fail_code=np.where(high_dynamics, _FAIL, _WARN),
+        high_dynamics=high_dynamics,
         cycle=cycle,
         mean_speed=mean_speed,
         duty=duty,
@@ -278,12 +271,11 @@ class _Block:
     accel_torque: FloatArray
     decel_torque: FloatArray
     rms_torque: FloatArray
-    statuses: tuple[CodeArray, CodeArray, CodeArray, CodeArray, CodeArray]
+    statuses: tuple[CodeArray, ...]
 
     def verdicts(self) -> CodeArray:
-        first, *rest = self.statuses
-        worst = first.copy()
-        for codes in rest:
+        worst = np.full(self.accel_torque.shape, _PASS)
+        for codes in self.statuses:
             np.maximum(worst, codes, out=worst)
         # PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable.
         np.subtract(worst, _WARN, out=worst)
@@ -295,28 +287,57 @@ def _square(x: FloatArray) -> FloatArray:
     return x * x
 
 
-def _settle_near_limits(
-    rms: FloatArray, limit: FloatArray, accel: FloatArray, decel: FloatArray, cases: _Cases
-) -> None:
-    """Replace T_rms by the exact value (Python's squares) where it is near its limit.
+def _settle_near_limit(
+    q: Operands, value: FloatArray, limit: FloatArray, cases: _Cases, shape: tuple[int, int]
+) -> bool:
+    """Replace T_rms by the exact value (Python's squares) where ``value`` is near ``limit``.
 
     With squares as ``x * x`` T_rms is within a few ulps of Python's value, so only a
-    T_rms within :data:`_NEAR_LIMIT` of the continuous-duty limit can compare differently.
+    T_rms within :data:`_NEAR_LIMIT` of a limit can compare differently. True if any
+    T_rms changed (the rule's value and limit are then computed again).
     """
     with np.errstate(all="ignore"):
         band = np.maximum(_NEAR_LIMIT * np.abs(limit), _NEAR_ZERO)
-        rows, cols = np.nonzero(np.abs(rms - limit) <= band)
-    if rows.size:
-        energy = (
-            _python_square(accel[rows, cols]) * cases.accel[rows]
-            + (cases.load_torque_squared * cases.constant)[rows]
-            + _python_square(decel[rows, cols]) * cases.decel[rows]
-        )
-        rms[rows, cols] = np.sqrt(energy / cases.cycle[rows])
+        near = np.broadcast_to(np.abs(value - limit) <= band, shape)
+    rows, cols = np.nonzero(near)
+    if not rows.size:
+        return False
+    energy = (
+        _python_square(q.accel_torque_nm[rows, cols]) * cases.accel[rows]
+        + (cases.load_torque_squared * cases.constant)[rows]
+        + _python_square(q.decel_torque_nm[rows, cols]) * cases.decel[rows]
+    )
+    q.rms_torque_nm[rows, cols] = np.sqrt(energy / cases.cycle[rows])
+    return True
+
+
+def _status_codes(
+    rule: Rule, q: Operands, cases: _Cases, shape: tuple[int, int], *, exact: bool
+) -> CodeArray:
+    """The codes of one rule for the block (:meth:`~actuator_selection.core.checks.Rule.check`
+    on arrays): no data where a requirement is missing, else pass, fail or warn."""
+    xp = ARRAY_OPS
+    with np.errstate(all="ignore"):  # NaN where data is missing: masked below
+        missing: BoolArray | bool = False
+        for need in rule.requires:
+            missing = missing | need.missing(q, xp)
+        value, limit = rule.value(q, xp), rule.limit(q, xp)
+        if not exact and rule.reads_rms and _settle_near_limit(q, value, limit, cases, shape):
+            value, limit = rule.value(q, xp), rule.limit(q, xp)
+        ok = value <= limit
+        if rule.within is not None:
+            ok = ok & rule.within(q, xp)
+    fail = _FAIL if rule.binding is None else np.where(rule.binding(q, xp), _FAIL, _WARN)
+    return np.broadcast_to(np.where(missing, _NO_DATA, np.where(ok, _PASS, fail)), shape)
 
 
 def _evaluate_block(
-    cat: _Catalogue, cases: _Cases, zone_limits: FloatArray, *, exact: bool
+    cat: _Catalogue,
+    cases: _Cases,
+    zone_limits: FloatArray,
+    rules: Sequence[Rule],
+    *,
+    exact: bool,
 ) -> _Block:
     """The flowchart for ``cases`` × every actuator (rows × columns).
 
@@ -339,33 +360,33 @@ def _evaluate_block(
             + square(decel_torque) * cases.decel[:, col]
         )
         rms_torque = np.sqrt(energy / cases.cycle[:, col])
-
-    def status(ok: BoolArray, missing: BoolArray) -> CodeArray:
-        return np.where(missing, _NO_DATA, np.where(ok, _PASS, _FAIL))
-
-    max_speed = status(cases.speed[:, col] <= cat.max_speed, cat.speed_missing)
-    inertia_ratio = np.where(
-        cat.inertia_missing,
-        _NO_DATA,
-        np.where(
-            cases.load_inertia[:, col] <= cat.inertia_limit,
-            _PASS,
-            cases.inertia_fail_code[:, col],
-        ),
+    shape = (cases.speed.size, cat.inertia.size)
+    zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
+    if cat.zone_columns.size:
+        zone_torque = np.full(shape, math.nan)
+        zone_torque[:, cat.zone_columns] = zone_limits
+    q = Operands(
+        speed_rpm=cases.speed[:, col],
+        load_inertia_kgm2=cases.load_inertia[:, col],
+        high_dynamics=cases.high_dynamics[:, col],
+        mean_speed_rpm=cases.mean_speed[:, col],
+        accel_torque_nm=accel_torque,
+        decel_torque_nm=decel_torque,
+        rms_torque_nm=rms_torque,
+        max_torque_nm=cat.max_torque,
+        max_speed_rpm=cat.max_speed,
+        inertia_kgm2=cat.inertia,
+        stall_torque_nm=cat.stall,
+        continuous_torque_nm=cat.continuous,
+        has_zone=cat.has_zone,
+        zone_torque_nm=zone_torque,
+        zone_max_speed_rpm=cat.zone_max_speed,
     )
-    peak = status(accel_torque <= cat.max_torque, cat.torque_check_missing)
-    decel = status(np.abs(decel_torque) <= cat.max_torque, cat.torque_check_missing)
-    duty_limit = np.broadcast_to(cat.duty_limit, rms_torque.shape).copy()
-    duty_limit[:, cat.zone_columns] = zone_limits
-    if not exact:
-        _settle_near_limits(rms_torque, duty_limit, accel_torque, decel_torque, cases)
-    duty_ok = (rms_torque <= duty_limit) & (cases.mean_speed[:, col] <= cat.duty_speed_limit)
-    duty = status(duty_ok, cat.duty_missing)
     return _Block(
         accel_torque=accel_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
-        statuses=(max_speed, inertia_ratio, peak, decel, duty),
+        statuses=tuple(_status_codes(rule, q, cases, shape, exact=exact) for rule in rules),
     )
 
 
@@ -395,20 +416,24 @@ class BatchEvaluation:
     rms_torque_nm: FloatArray
     """T_rms per case × actuator (Eq. 514.2) [Nm]."""
     statuses: CodeArray
-    """Status codes (:data:`STATUS_BY_CODE`), case × actuator × check (:data:`CHECK_NAMES`)."""
+    """Status codes (:data:`STATUS_BY_CODE`), case × actuator × check (:attr:`check_names`)."""
     verdicts: CodeArray
     """Verdict codes (:data:`VERDICT_BY_CODE`), case × actuator."""
+    check_names: tuple[str, ...] = CHECK_NAMES
+    """The checks (the rules' names) along the last axis of :attr:`statuses`."""
 
     def status(self, case: int, actuator: int, check: str) -> Status:
         """The status of one check of one case and actuator."""
-        return STATUS_BY_CODE[int(self.statuses[case, actuator, CHECK_NAMES.index(check)])]
+        return STATUS_BY_CODE[int(self.statuses[case, actuator, self.check_names.index(check)])]
 
     def verdict(self, case: int, actuator: int) -> Verdict:
         """The verdict of one case and actuator."""
         return VERDICT_BY_CODE[int(self.verdicts[case, actuator])]
 
 
-def evaluate_batch(actuators: Sequence[Actuator], apps: Sequence[Application]) -> BatchEvaluation:
+def evaluate_batch(
+    actuators: Sequence[Actuator], apps: Sequence[Application], *, rules: Sequence[Rule] = RULES
+) -> BatchEvaluation:
     """Run the flowchart for every case × actuator and keep every array.
 
     Parameters
@@ -417,6 +442,8 @@ def evaluate_batch(actuators: Sequence[Actuator], apps: Sequence[Application]) -
         The catalogue, columns in this order.
     apps
         The load cases, rows in this order.
+    rules
+        The checks (:data:`~actuator_selection.core.checks.RULES`: the chapter's).
 
     Memory grows with cases × actuators (about 40 bytes a cell); for ranking alone
     use :func:`select_batch`, which keeps only the best of each case.
@@ -426,14 +453,16 @@ def evaluate_batch(actuators: Sequence[Actuator], apps: Sequence[Application]) -
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))
     accel, decel, rms = (np.empty(shape) for _ in range(3))
-    statuses = np.empty((*shape, len(CHECK_NAMES)), dtype=np.int8)
+    statuses = np.empty((*shape, len(rules)), dtype=np.int8)
     verdicts = np.empty(shape, dtype=np.int8)
     for start, stop in _blocks(actuators, apps):
-        block = _evaluate_block(cat, cases.rows(start, stop), zone_limits[start:stop], exact=True)
+        rows = cases.rows(start, stop)
+        block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, exact=True)
         accel[start:stop] = block.accel_torque
         decel[start:stop] = block.decel_torque
         rms[start:stop] = block.rms_torque
-        statuses[start:stop] = np.stack(block.statuses, axis=-1)
+        for k, codes in enumerate(block.statuses):
+            statuses[start:stop, :, k] = codes
         verdicts[start:stop] = block.verdicts()
     return BatchEvaluation(
         mean_speed_rpm=cases.mean_speed,
@@ -444,6 +473,7 @@ def evaluate_batch(actuators: Sequence[Actuator], apps: Sequence[Application]) -
         rms_torque_nm=rms,
         statuses=statuses,
         verdicts=verdicts,
+        check_names=tuple(rule.name for rule in rules),
     )
 
 
@@ -476,6 +506,7 @@ def _rank(
     zone_limits: FloatArray,
     top: int,
     models: Sequence[Collection[str] | None] | None,
+    rules: Sequence[Rule],
 ) -> list[list[int]]:
     n = len(actuators)
     allowed = _allowed_columns(actuators, models) if models is not None else None
@@ -483,7 +514,9 @@ def _rank(
     keep = min(top, n)
     chosen: list[list[int]] = []
     for start, stop in _blocks(actuators, range(cases.speed.size)):
-        block = _evaluate_block(cat, cases.rows(start, stop), zone_limits[start:stop], exact=False)
+        block = _evaluate_block(
+            cat, cases.rows(start, stop), zone_limits[start:stop], rules, exact=False
+        )
         # ranking_key as one integer: verdict, then the actuator's place in the static order.
         key = block.verdicts().astype(np.int32) * np.int32(n) + cat.rank_position
         if allowed is not None:
@@ -520,6 +553,7 @@ def rank_batch(
     *,
     top: int = 3,
     models: Sequence[Collection[str] | None] | None = None,
+    rules: Sequence[Rule] = RULES,
 ) -> list[list[int]]:
     """Per case, the indexes into ``actuators`` of its best ``top``, best first.
 
@@ -530,7 +564,7 @@ def rank_batch(
     cat = _catalogue(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
-    return _rank(actuators, cat, cases, zone_limits, top, models)
+    return _rank(actuators, cat, cases, zone_limits, top, models, rules)
 
 
 def select_batch(
@@ -539,6 +573,7 @@ def select_batch(
     *,
     top: int = 3,
     models: Sequence[Collection[str] | None] | None = None,
+    rules: Sequence[Rule] = RULES,
 ) -> list[Selection]:
     """The best ``top`` candidates of every load case, ranked as :func:`select` ranks them.
 
@@ -558,12 +593,15 @@ def select_batch(
     models
         Per case, the model names it may use (None: the whole catalogue); names not in
         ``actuators`` are ignored. None: every case uses the whole catalogue.
+    rules
+        The checks (:data:`~actuator_selection.core.checks.RULES`: the chapter's), for the
+        arrays and for the candidates alike.
     """
     _check_arguments(apps, top, models)
     cat = _catalogue(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
-    chosen = _rank(actuators, cat, cases, zone_limits, top, models)
+    chosen = _rank(actuators, cat, cases, zone_limits, top, models, rules)
     mean_speed = cases.mean_speed.tolist()
     duty = cases.duty.tolist()
     cycle = cases.cycle.tolist()
@@ -572,7 +610,7 @@ def select_batch(
             mean_speed_rpm=mean_speed[i],
             duty_cycle_percent=duty[i],
             cycle_time_s=cycle[i],
-            candidates=tuple(evaluate(actuators[j], app) for j in columns),
+            candidates=tuple(evaluate_each([actuators[j] for j in columns], app, rules=rules)),
         )
         for i, (app, columns) in enumerate(zip(apps, chosen, strict=True))
     ]

@@ -1,6 +1,7 @@
 """The selection flowchart for one actuator, and the ranking of many (chapter p. 514–517).
 
-For each actuator the flowchart checks, in the manufacturer's order:
+For each actuator the flowchart runs the checks of :data:`~actuator_selection.core.checks.RULES`,
+in the manufacturer's order:
 
 1. ``max_speed``: n_2 ≤ n_max (Table 515.1);
 2. ``inertia_ratio``: J_L ≤ 3·J_A (Table 515.1, footnote 1: recommended for highly
@@ -9,7 +10,9 @@ For each actuator the flowchart checks, in the manufacturer's order:
 4. ``decel_torque``: |T_3| ≤ T_max (Eq. 514.1);
 5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1).
 
-A check never passes without data: a missing catalogue value gives ``no_data``.
+A check never passes without data: a missing catalogue value gives ``no_data``. The
+rules live in :mod:`actuator_selection.core.checks`, one table that the vectorised
+flowchart (:mod:`actuator_selection.core.batch`) reads as well.
 
 Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here):
 
@@ -24,15 +27,26 @@ Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here
  ('decel_torque', 'pass'), ('continuous_duty', 'no_data')]
 >>> c.verdict.value
 'unconfirmed'
+>>> c.checks[2].message
+'acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm'
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import math
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.checks import (
+    INERTIA_RATIO_LIMIT,
+    RULES,
+    Check,
+    Operands,
+    Rule,
+    Status,
+)
 from actuator_selection.core.cycle import (
     CycleTorques,
     Load,
@@ -42,17 +56,22 @@ from actuator_selection.core.cycle import (
     mean_speed_rpm,
 )
 
-INERTIA_RATIO_LIMIT = 3.0
-"""J_L ≤ 3·J_A, the pre-selection rule of Table 515.1."""
-
-
-class Status(StrEnum):
-    """Outcome of one check."""
-
-    PASS = "pass"
-    FAIL = "fail"
-    WARN = "warn"
-    NO_DATA = "no_data"
+__all__ = [
+    "INERTIA_RATIO_LIMIT",
+    "Application",
+    "Candidate",
+    "Check",
+    "Selection",
+    "Status",
+    "Verdict",
+    "evaluate",
+    "evaluate_each",
+    "operands",
+    "ranking_key",
+    "select",
+]
+"""Check, Status and INERTIA_RATIO_LIMIT live in :mod:`~actuator_selection.core.checks`
+and stay importable from here."""
 
 
 class Verdict(StrEnum):
@@ -61,27 +80,6 @@ class Verdict(StrEnum):
     SUITABLE = "suitable"
     UNCONFIRMED = "unconfirmed"
     UNSUITABLE = "unsuitable"
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class Check:
-    """One step of the flowchart: ``value`` compared with ``limit`` (value ≤ limit passes)."""
-
-    name: str
-    status: Status
-    value: float | None
-    limit: float | None
-    unit: str
-    reference: str
-    message: str
-    approximate: bool = False
-
-    @property
-    def margin_percent(self) -> float | None:
-        """Headroom (limit − value)/limit [%]; negative when the limit is exceeded."""
-        if self.value is None or self.limit is None or self.limit <= 0:
-            return None
-        return (self.limit - self.value) / self.limit * 100.0
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -118,171 +116,6 @@ class Selection:
     candidates: tuple[Candidate, ...]
 
 
-def _fmt(x: float) -> str:
-    return f"{x:.4g}"
-
-
-def _no_data(name: str, unit: str, reference: str, missing: str, value: float | None) -> Check:
-    return Check(
-        name=name,
-        status=Status.NO_DATA,
-        value=value,
-        limit=None,
-        unit=unit,
-        reference=reference,
-        message=f"no data: the catalogue gives no {missing} for this actuator",
-    )
-
-
-def check_max_speed(actuator: Actuator, app: Application) -> Check:
-    """n_2 ≤ n_max (Table 515.1)."""
-    n_2 = app.pattern.speed_rpm
-    ref = "Table 515.1"
-    if actuator.max_speed_rpm is None:
-        return _no_data("max_speed", "rpm", ref, "maximum output speed n_max", n_2)
-    ok = n_2 <= actuator.max_speed_rpm
-    relation = "≤" if ok else "exceeds"
-    return Check(
-        name="max_speed",
-        status=Status.PASS if ok else Status.FAIL,
-        value=n_2,
-        limit=actuator.max_speed_rpm,
-        unit="rpm",
-        reference=ref,
-        message=f"load speed n_2 = {_fmt(n_2)} rpm {relation} n_max = "
-        f"{_fmt(actuator.max_speed_rpm)} rpm",
-    )
-
-
-def check_inertia_ratio(actuator: Actuator, app: Application) -> Check:
-    """J_L ≤ 3·J_A (Table 515.1); binding for highly dynamic applications only."""
-    j_l = app.load.inertia_kgm2
-    ref = "Table 515.1"
-    if actuator.inertia_kgm2 is None:
-        return _no_data("inertia_ratio", "kgm²", ref, "moment of inertia J_A", j_l)
-    limit = INERTIA_RATIO_LIMIT * actuator.inertia_kgm2
-    if j_l <= limit:
-        status = Status.PASS
-        message = f"load inertia J_L = {_fmt(j_l)} kgm² ≤ 3·J_A = {_fmt(limit)} kgm²"
-    else:
-        status = Status.FAIL if app.high_dynamics else Status.WARN
-        consequence = (
-            "the limit is binding for a highly dynamic application"
-            if app.high_dynamics
-            else "recommended for highly dynamic applications only"
-        )
-        message = f"load inertia J_L = {_fmt(j_l)} kgm² exceeds 3·J_A = {_fmt(limit)} kgm²: " + (
-            consequence
-        )
-    return Check(
-        name="inertia_ratio",
-        status=status,
-        value=j_l,
-        limit=limit,
-        unit="kgm²",
-        reference=ref,
-        message=message,
-    )
-
-
-def _torque_check(
-    name: str, label: str, value: float | None, actuator: Actuator, missing: str
-) -> Check:
-    ref = "Eq. 514.1"
-    if value is None:
-        return _no_data(name, "Nm", ref, missing, None)
-    if actuator.max_torque_nm is None:
-        return _no_data(name, "Nm", ref, "maximum torque T_max", value)
-    ok = value <= actuator.max_torque_nm
-    relation = "≤" if ok else "exceeds"
-    return Check(
-        name=name,
-        status=Status.PASS if ok else Status.FAIL,
-        value=value,
-        limit=actuator.max_torque_nm,
-        unit="Nm",
-        reference=ref,
-        message=f"{label} = {_fmt(value)} Nm {relation} T_max = {_fmt(actuator.max_torque_nm)} Nm",
-    )
-
-
-def check_peak_torque(actuator: Actuator, torques: CycleTorques | None) -> Check:
-    """T_1 ≤ T_max (Eq. 514.1)."""
-    value = torques.accel_torque_nm if torques else None
-    return _torque_check(
-        "peak_torque", "acceleration torque T_1", value, actuator, "moment of inertia J_A"
-    )
-
-
-def check_decel_torque(actuator: Actuator, torques: CycleTorques | None) -> Check:
-    """|T_3| ≤ T_max (Eq. 514.1): braking loads the gear as much as accelerating."""
-    value = abs(torques.decel_torque_nm) if torques else None
-    return _torque_check(
-        "decel_torque", "deceleration torque |T_3|", value, actuator, "moment of inertia J_A"
-    )
-
-
-def check_continuous_duty(actuator: Actuator, torques: CycleTorques | None, n_av: float) -> Check:
-    """(n_av, T_rms) inside the continuous-duty zone (Fig. 517.1; Eq. 514.2, 514.3).
-
-    With a published zone the torque limit is the zone's edge at n_av. Without
-    one, the continuous stall torque T_0 (or the catalogue's allowable continuous
-    torque) and n_max bound a rectangle that is reported as approximate: the
-    real edge falls with speed, so the rectangle may be optimistic at high n_av.
-    """
-    ref = "Fig. 517.1"
-    name = "continuous_duty"
-    if torques is None:
-        return _no_data(name, "Nm", ref, "moment of inertia J_A (T_rms needs it)", None)
-    t_rms = torques.rms_torque_nm
-    point = f"(n_av = {_fmt(n_av)} rpm, T_rms = {_fmt(t_rms)} Nm)"
-    if actuator.zone is not None:
-        limit = actuator.zone.torque_limit_nm(n_av)
-        if limit is None:
-            return Check(
-                name=name,
-                status=Status.FAIL,
-                value=t_rms,
-                limit=None,
-                unit="Nm",
-                reference=ref,
-                message=f"operating point {point} lies beyond the continuous-duty zone, "
-                f"which ends at {_fmt(actuator.zone.max_speed_rpm)} rpm",
-            )
-        ok = t_rms <= limit
-        return Check(
-            name=name,
-            status=Status.PASS if ok else Status.FAIL,
-            value=t_rms,
-            limit=limit,
-            unit="Nm",
-            reference=ref,
-            message=f"operating point {point} lies {'inside' if ok else 'above'} the "
-            f"continuous-duty zone (limit {_fmt(limit)} Nm at n_av)",
-        )
-    if actuator.stall_torque_nm is not None:
-        limit, what = actuator.stall_torque_nm, "continuous stall torque T_0"
-    elif actuator.continuous_torque_nm is not None:
-        limit, what = actuator.continuous_torque_nm, "allowable continuous torque"
-    else:
-        return _no_data(name, "Nm", ref, "continuous-duty zone or continuous torque", t_rms)
-    if actuator.max_speed_rpm is None:
-        return _no_data(name, "Nm", ref, "maximum output speed n_max", t_rms)
-    ok = t_rms <= limit and n_av <= actuator.max_speed_rpm
-    return Check(
-        name=name,
-        status=Status.PASS if ok else Status.FAIL,
-        value=t_rms,
-        limit=limit,
-        unit="Nm",
-        reference=ref,
-        approximate=True,
-        message=f"approximate: operating point {point} {'within' if ok else 'outside'} "
-        f"{what} = {_fmt(limit)} Nm and n_max = {_fmt(actuator.max_speed_rpm)} rpm "
-        "(no continuous-duty zone published)",
-    )
-
-
 def _verdict(checks: Iterable[Check]) -> Verdict:
     statuses = {c.status for c in checks}
     if Status.FAIL in statuses:
@@ -292,23 +125,74 @@ def _verdict(checks: Iterable[Check]) -> Verdict:
     return Verdict.SUITABLE
 
 
-def evaluate(actuator: Actuator, app: Application) -> Candidate:
-    """Run the flowchart's checks for one actuator."""
-    torques = (
-        cycle_torques(
-            pattern=app.pattern, load=app.load, actuator_inertia_kgm2=actuator.inertia_kgm2
+def operands(
+    actuator: Actuator, app: Application, torques: CycleTorques | None, n_av: float
+) -> Operands:
+    """The floats the rules compute from, NaN for what the catalogue does not publish.
+
+    Parameters
+    ----------
+    actuator
+        The catalogue entry.
+    app
+        The load case.
+    torques
+        T_1, T_2, T_3, T_rms (Eq. 514.1, 514.2) [Nm]; None without J_A.
+    n_av
+        Average output speed (Eq. 514.3) [rpm].
+    """
+    nan = math.nan
+    zone = actuator.zone
+    zone_torque = None if zone is None else zone.torque_limit_nm(n_av)
+    # Positional, in the order of the fields (a test checks each): a third of the time
+    # that keywords take, for every actuator of every case.
+    return Operands(
+        app.pattern.speed_rpm,
+        app.load.inertia_kgm2,
+        app.high_dynamics,
+        n_av,
+        nan if torques is None else torques.accel_torque_nm,
+        nan if torques is None else torques.decel_torque_nm,
+        nan if torques is None else torques.rms_torque_nm,
+        nan if actuator.max_torque_nm is None else actuator.max_torque_nm,
+        nan if actuator.max_speed_rpm is None else actuator.max_speed_rpm,
+        nan if actuator.inertia_kgm2 is None else actuator.inertia_kgm2,
+        nan if actuator.stall_torque_nm is None else actuator.stall_torque_nm,
+        nan if actuator.continuous_torque_nm is None else actuator.continuous_torque_nm,
+        zone is not None,
+        nan if zone_torque is None else zone_torque,
+        nan if zone is None else zone.max_speed_rpm,
+    )
+
+
+def evaluate(actuator: Actuator, app: Application, *, rules: Sequence[Rule] = RULES) -> Candidate:
+    """Run the flowchart's checks (``rules``, by default the chapter's) for one actuator."""
+    (candidate,) = evaluate_each((actuator,), app, rules=rules)
+    return candidate
+
+
+def evaluate_each(
+    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] = RULES
+) -> list[Candidate]:
+    """:func:`evaluate` for each of ``actuators`` in turn, n_av (Eq. 514.3) computed once."""
+    n_av: float | None = None
+    candidates = []
+    for actuator in actuators:
+        torques = (
+            cycle_torques(
+                pattern=app.pattern, load=app.load, actuator_inertia_kgm2=actuator.inertia_kgm2
+            )
+            if actuator.inertia_kgm2 is not None
+            else None
         )
-        if actuator.inertia_kgm2 is not None
-        else None
-    )
-    checks = (
-        check_max_speed(actuator, app),
-        check_inertia_ratio(actuator, app),
-        check_peak_torque(actuator, torques),
-        check_decel_torque(actuator, torques),
-        check_continuous_duty(actuator, torques, mean_speed_rpm(app.pattern)),
-    )
-    return Candidate(actuator=actuator, verdict=_verdict(checks), torques=torques, checks=checks)
+        if n_av is None:  # after the torques: an input that overflows both is named as before
+            n_av = mean_speed_rpm(app.pattern)
+        q = operands(actuator, app, torques, n_av)
+        checks = tuple([rule.check(q) for rule in rules])
+        candidates.append(
+            Candidate(actuator=actuator, verdict=_verdict(checks), torques=torques, checks=checks)
+        )
+    return candidates
 
 
 _VERDICT_ORDER = {Verdict.SUITABLE: 0, Verdict.UNCONFIRMED: 1, Verdict.UNSUITABLE: 2}
@@ -331,9 +215,11 @@ def ranking_key(candidate: Candidate) -> tuple[int, float, float, str]:
     )
 
 
-def select(actuators: Iterable[Actuator], app: Application) -> Selection:
+def select(
+    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] = RULES
+) -> Selection:
     """Run the flowchart for every actuator and rank the candidates (:func:`ranking_key`)."""
-    candidates = sorted((evaluate(a, app) for a in actuators), key=ranking_key)
+    candidates = sorted(evaluate_each(actuators, app, rules=rules), key=ranking_key)
     return Selection(
         mean_speed_rpm=mean_speed_rpm(app.pattern),
         duty_cycle_percent=duty_cycle_percent(app.pattern),

@@ -1,0 +1,500 @@
+"""The flowchart's checks as one table of rules (chapter p. 514–517).
+
+Both flowcharts read :data:`RULES`: the scalar one
+(:func:`~actuator_selection.core.selection.evaluate`) runs each rule on Python floats
+for one actuator, the vectorised one (:mod:`actuator_selection.core.batch`) on numpy
+arrays of load cases × actuators. A rule's formulas are written once for both: each
+receives the :class:`Operands` — floats, or arrays that broadcast (cases as a column,
+actuators as a row) — and an :class:`Ops` namespace with the few operations that
+Python's operators do not cover (:data:`FLOAT_OPS` here, numpy's in the batch). A
+catalogue value that is not published is NaN in the operands, never None, so the same
+arithmetic runs on both; a rule's :attr:`Rule.requires` decides ``no_data`` before any
+NaN is compared. Combine truth values with ``&`` and ``|``, never ``and``/``or``/``not``
+(they do not work element-wise); negate with ``xp.not_``.
+
+The rules, in the manufacturer's order (value ≤ limit passes):
+
+1. ``max_speed``: n_2 ≤ n_max (Table 515.1);
+2. ``inertia_ratio``: J_L ≤ 3·J_A (Table 515.1, footnote 1: recommended for highly
+   dynamic applications, so a failure there and a warning otherwise);
+3. ``peak_torque``: T_1 ≤ T_max (Eq. 514.1);
+4. ``decel_torque``: |T_3| ≤ T_max (Eq. 514.1);
+5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1;
+   Eq. 514.2, 514.3), approximately T_rms ≤ T_0 and n_av ≤ n_max where no zone is
+   published.
+
+**Adding a check is adding one rule** (its formulas and its message) to
+:data:`RULES`; the scalar and the vectorised flowchart, the verdicts and the ranking
+follow. Here n_av ≤ n_max (Eq. 514.3) as a sixth check, given to both flowcharts with
+the chapter's worked example (Table 516.1, FHA-25C-50-L of Table 516.3):
+
+>>> from actuator_selection.core.actuators import Actuator
+>>> from actuator_selection.core.batch import evaluate_batch
+>>> from actuator_selection.core.cycle import Load, SpeedPattern
+>>> from actuator_selection.core.selection import Application, evaluate
+>>> mean_speed = Rule(
+...     name="mean_speed", reference="Eq. 514.3", unit="rpm",
+...     value=lambda q, xp: q.mean_speed_rpm,
+...     limit=lambda q, xp: q.max_speed_rpm,
+...     requires=(published("max_speed_rpm", "maximum output speed n_max"),),
+...     message=lambda q, status, value, limit: f"n_av = {value:.4g} rpm, n_max = {limit:.4g} rpm")
+>>> app = Application(
+...     pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1),
+...     load=Load(torque_nm=5, inertia_kgm2=1.3))
+>>> fha = Actuator(model="FHA-25C-50-L", family="FHA-C", gear_ratio=50,
+...                max_torque_nm=151, max_speed_rpm=90, inertia_kgm2=0.86)
+>>> rules = (*RULES, mean_speed)
+>>> check = evaluate(fha, app, rules=rules).checks[-1]
+>>> check.name, check.status.value, check.message
+('mean_speed', 'pass', 'n_av = 6.154 rpm, n_max = 90 rpm')
+>>> evaluate_batch([fha], [app], rules=rules).status(0, 0, "mean_speed").value
+'pass'
+"""
+
+from __future__ import annotations
+
+import math
+import operator
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from enum import StrEnum
+from typing import Any, NamedTuple
+
+INERTIA_RATIO_LIMIT = 3.0
+"""J_L ≤ 3·J_A, the pre-selection rule of Table 515.1."""
+
+
+class Status(StrEnum):
+    """Outcome of one check."""
+
+    PASS = "pass"
+    FAIL = "fail"
+    WARN = "warn"
+    NO_DATA = "no_data"
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Check:
+    """One step of the flowchart: ``value`` compared with ``limit`` (value ≤ limit passes)."""
+
+    name: str
+    status: Status
+    value: float | None
+    limit: float | None
+    unit: str
+    reference: str
+    message: str
+    approximate: bool = False
+
+    @property
+    def margin_percent(self) -> float | None:
+        """Headroom (limit − value)/limit [%]; negative when the limit is exceeded."""
+        if self.value is None or self.limit is None or self.limit <= 0:
+            return None
+        return (self.limit - self.value) / self.limit * 100.0
+
+
+_new_object = object.__new__
+_set_field = object.__setattr__  # Check is frozen
+
+
+def _new_check(
+    name: str,
+    status: Status,
+    value: float | None,
+    limit: float | None,
+    unit: str,
+    reference: str,
+    message: str,
+    approximate: bool,
+) -> Check:
+    """``Check(name=…, …)`` at two thirds of the cost, for :meth:`Rule.check`.
+
+    The generated frozen ``__init__`` takes keywords and looks up ``object.__setattr__``
+    for each field; the scalar flowchart builds five checks for every actuator of every
+    case (a batch: five for each of 30,000 candidates). tests/core/test_checks.py keeps
+    this equal to ``Check(...)``, field for field.
+    """
+    check: Check = _new_object(Check)
+    _set_field(check, "name", name)
+    _set_field(check, "status", status)
+    _set_field(check, "value", value)
+    _set_field(check, "limit", limit)
+    _set_field(check, "unit", unit)
+    _set_field(check, "reference", reference)
+    _set_field(check, "message", message)
+    _set_field(check, "approximate", approximate)
+    return check
+
+
+Real = Any
+"""A float in the scalar flowchart; a float64 array in the vectorised one."""
+Truth = Any
+"""A bool in the scalar flowchart; a bool array in the vectorised one."""
+
+
+class Operands(NamedTuple):
+    """What the rules compute from: the load case, the cycle, the actuator.
+
+    Floats for one case and one actuator in the scalar flowchart; in the vectorised
+    one, case quantities are columns (cases × 1), catalogue values rows (actuators),
+    cycle torques cases × actuators. Unpublished catalogue values are NaN.
+
+    Immutable like the frozen dataclasses of the core, but a named tuple: the scalar
+    flowchart builds one for every actuator of every case (one
+    :func:`~actuator_selection.core.selection.evaluate` takes about 15 µs), and a
+    frozen dataclass of 15 fields takes about 2 µs to build, a named tuple built
+    positionally about 0.4 µs.
+    """
+
+    speed_rpm: Real
+    """Load speed n_2 [rpm] (Table 516.1)."""
+    load_inertia_kgm2: Real
+    """Load moment of inertia J_L [kgm²]."""
+    high_dynamics: Truth
+    """Whether the application is highly dynamic (Table 515.1, footnote 1)."""
+    mean_speed_rpm: Real
+    """Average output speed n_av [rpm] (Eq. 514.3)."""
+    accel_torque_nm: Real
+    """Acceleration torque T_1 [Nm] (Eq. 514.1); NaN without J_A."""
+    decel_torque_nm: Real
+    """Deceleration torque T_3 [Nm] (Eq. 514.1), negative while braking; NaN without J_A."""
+    rms_torque_nm: Real
+    """RMS torque T_rms [Nm] (Eq. 514.2); NaN without J_A. The vectorised ranking computes
+    it within a few ulps; a rule that reads it says so (:attr:`Rule.reads_rms`)."""
+    max_torque_nm: Real
+    """Repeated peak torque T_max [Nm]."""
+    max_speed_rpm: Real
+    """Maximum output speed n_max [rpm]."""
+    inertia_kgm2: Real
+    """Actuator moment of inertia J_A at the output [kgm²]."""
+    stall_torque_nm: Real
+    """Continuous stall torque T_0 [Nm]."""
+    continuous_torque_nm: Real
+    """Allowable continuous torque, where a catalogue gives that instead of T_0 [Nm]."""
+    has_zone: Truth
+    """Whether a continuous-duty zone is published (Fig. 517.1)."""
+    zone_torque_nm: Real
+    """The zone's edge at n_av [Nm]; NaN without a zone or beyond its last speed."""
+    zone_max_speed_rpm: Real
+    """The highest speed the zone covers [rpm]; NaN without a zone."""
+
+
+def _where(condition: bool, if_true: float, if_false: float) -> float:
+    return if_true if condition else if_false
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Ops:
+    """The operations a rule needs beyond arithmetic, comparison, ``&``, ``|`` and ``abs``."""
+
+    where: Callable[[Any, Any, Any], Any]
+    """``where(condition, if_true, if_false)``, element-wise."""
+    isnan: Callable[[Any], Any]
+    """NaN test: an unpublished catalogue value."""
+    not_: Callable[[Any], Any]
+    """Logical negation (``~`` would turn a Python bool into −1 or −2)."""
+
+
+FLOAT_OPS = Ops(where=_where, isnan=math.isnan, not_=operator.not_)
+"""The operations on Python floats, for the scalar flowchart."""
+
+Formula = Callable[[Operands, Ops], Any]
+"""A rule's formula: a :data:`Real` or a :data:`Truth`, from the operands."""
+Message = Callable[[Operands, Status, Any, Any], str]
+"""A rule's message from (operands, status, value, limit); floats, the limit NaN where
+there is none. Only the scalar flowchart writes messages."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Requirement:
+    """Catalogue values a rule needs: without them its status is ``no_data``.
+
+    Met where any one of :attr:`any_of` is published (not NaN), or where :attr:`unless`
+    holds. "No data" is a fact about the catalogue entry, so a requirement names
+    catalogue values only.
+    """
+
+    any_of: tuple[str, ...]
+    """Names of catalogue values in :class:`Operands`; one of them suffices."""
+    what: str
+    """The value in words, for "the catalogue gives no … for this actuator"."""
+    unless: str | None = None
+    """Name of a truth in :class:`Operands` under which nothing is needed, or None."""
+
+    def missing(self, q: Operands, xp: Ops) -> Truth:
+        """Where the requirement is not met (:meth:`Rule.check` has a short cut for floats)."""
+        lacking = xp.isnan(getattr(q, self.any_of[0]))
+        for name in self.any_of[1:]:
+            lacking = lacking & xp.isnan(getattr(q, name))
+        if self.unless is not None:
+            lacking = lacking & xp.not_(getattr(q, self.unless))
+        return lacking
+
+
+def published(operand: str, what: str) -> Requirement:
+    """The requirement that the catalogue value ``operand`` of :class:`Operands` is not NaN.
+
+    >>> published("max_speed_rpm", "maximum output speed n_max").any_of
+    ('max_speed_rpm',)
+    """
+    return Requirement(any_of=(operand,), what=what)
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Rule:
+    """One check of the flowchart: ``value ≤ limit`` passes, given its catalogue values.
+
+    The status: ``no_data`` where a requirement is missing (the first one names what is
+    missing); else ``pass`` where ``value ≤ limit`` (and ``within``, if given, holds);
+    else ``fail`` where ``binding`` holds (always, if not given), ``warn`` elsewhere. A
+    limit that is NaN though nothing is missing (beyond a zone's last speed) fails.
+
+    Each formula is called as ``f(q, xp)`` with the :class:`Operands` ``q`` and the
+    :class:`Ops` ``xp``, on floats and on arrays alike; it must give the same IEEE result
+    on both (the same operations in the same order) and must not raise on NaN operands
+    (Python raises on a division by zero where numpy gives ±inf: keep divisors nonzero).
+    The scalar flowchart computes ``value`` even where data is missing, and reports it
+    unless it is NaN.
+    """
+
+    name: str
+    """The check's name in the API."""
+    reference: str
+    """The chapter's equation, table or figure."""
+    unit: str
+    """Unit of value and limit."""
+    value: Formula
+    """The quantity checked [unit]."""
+    limit: Formula
+    """The bound it must not exceed [unit]."""
+    requires: tuple[Requirement, ...]
+    """Catalogue values without which the check says ``no_data``, in the order they are named."""
+    message: Message
+    """The check in words, for pass, fail and warn (``no_data`` has one message for all)."""
+    within: Formula | None = None
+    """A further condition for passing, or None."""
+    binding: Formula | None = None
+    """Where an exceeded limit fails (elsewhere it warns); None: it always fails."""
+    approximate: Formula | None = None
+    """Where the limit is a simplified stand-in (reported with the check); None: never."""
+    reads_rms: bool = False
+    """True if value or limit reads T_rms: the vectorised ranking, which squares as
+    ``x * x``, then makes T_rms exact where the value lies near the limit."""
+    _no_data: tuple[tuple[str | None, tuple[str, ...], str], ...] = field(
+        init=False, repr=False, compare=False
+    )
+    """:attr:`requires` as (unless, any_of, message) for :meth:`check`'s short cut."""
+
+    def __post_init__(self) -> None:
+        no_data = tuple(
+            (
+                need.unless,
+                need.any_of,
+                f"no data: the catalogue gives no {need.what} for this actuator",
+            )
+            for need in self.requires
+        )
+        object.__setattr__(self, "_no_data", no_data)
+
+    def check(self, q: Operands) -> Check:
+        """The check for one actuator and one load case (floats)."""
+        xp = FLOAT_OPS
+        value = self.value(q, xp)
+        known_value = value if value == value else None  # NaN: T_1, T_3, T_rms without J_A
+        for unless, any_of, no_data in self._no_data:  # Requirement.missing, short-circuited
+            if unless is not None and getattr(q, unless):
+                continue
+            for name in any_of:
+                published_value = getattr(q, name)
+                if published_value == published_value:  # not NaN
+                    break
+            else:
+                return _new_check(
+                    self.name,
+                    Status.NO_DATA,
+                    known_value,
+                    None,
+                    self.unit,
+                    self.reference,
+                    no_data,
+                    False,
+                )
+        limit = self.limit(q, xp)
+        if value <= limit and (self.within is None or self.within(q, xp)):
+            status = Status.PASS
+        elif self.binding is None or self.binding(q, xp):
+            status = Status.FAIL
+        else:
+            status = Status.WARN
+        return _new_check(
+            self.name,
+            status,
+            known_value,
+            limit if limit == limit else None,  # NaN: beyond a zone's last speed
+            self.unit,
+            self.reference,
+            self.message(q, status, value, limit),
+            self.approximate is not None and self.approximate(q, xp),
+        )
+
+
+# --- 1. max_speed: n_2 ≤ n_max (Table 515.1) ------------------------------------------------
+
+
+def _max_speed_message(q: Operands, status: Status, n_2: float, n_max: float) -> str:
+    relation = "≤" if status is Status.PASS else "exceeds"
+    return f"load speed n_2 = {n_2:.4g} rpm {relation} n_max = {n_max:.4g} rpm"
+
+
+MAX_SPEED = Rule(
+    name="max_speed",
+    reference="Table 515.1",
+    unit="rpm",
+    value=lambda q, xp: q.speed_rpm,
+    limit=lambda q, xp: q.max_speed_rpm,
+    requires=(published("max_speed_rpm", "maximum output speed n_max"),),
+    message=_max_speed_message,
+)
+"""n_2 ≤ n_max (Table 515.1)."""
+
+
+# --- 2. inertia_ratio: J_L ≤ 3·J_A (Table 515.1, footnote 1) --------------------------------
+
+
+def _inertia_ratio_message(q: Operands, status: Status, j_l: float, limit: float) -> str:
+    if status is Status.PASS:
+        return f"load inertia J_L = {j_l:.4g} kgm² ≤ 3·J_A = {limit:.4g} kgm²"
+    consequence = (
+        "the limit is binding for a highly dynamic application"
+        if status is Status.FAIL
+        else "recommended for highly dynamic applications only"
+    )
+    return f"load inertia J_L = {j_l:.4g} kgm² exceeds 3·J_A = {limit:.4g} kgm²: {consequence}"
+
+
+INERTIA_RATIO = Rule(
+    name="inertia_ratio",
+    reference="Table 515.1",
+    unit="kgm²",
+    value=lambda q, xp: q.load_inertia_kgm2,
+    limit=lambda q, xp: INERTIA_RATIO_LIMIT * q.inertia_kgm2,
+    requires=(published("inertia_kgm2", "moment of inertia J_A"),),
+    binding=lambda q, xp: q.high_dynamics,
+    message=_inertia_ratio_message,
+)
+"""J_L ≤ 3·J_A (Table 515.1); binding for highly dynamic applications only, a warning else."""
+
+
+# --- 3., 4. peak_torque, decel_torque: T_1, |T_3| ≤ T_max (Eq. 514.1) -----------------------
+
+
+def _torque_message(label: str) -> Message:
+    def message(q: Operands, status: Status, torque: float, t_max: float) -> str:
+        relation = "≤" if status is Status.PASS else "exceeds"
+        return f"{label} = {torque:.4g} Nm {relation} T_max = {t_max:.4g} Nm"
+
+    return message
+
+
+_TORQUE_REQUIRES = (
+    published("inertia_kgm2", "moment of inertia J_A"),  # T_1, T_3 need it
+    published("max_torque_nm", "maximum torque T_max"),
+)
+
+PEAK_TORQUE = Rule(
+    name="peak_torque",
+    reference="Eq. 514.1",
+    unit="Nm",
+    value=lambda q, xp: q.accel_torque_nm,
+    limit=lambda q, xp: q.max_torque_nm,
+    requires=_TORQUE_REQUIRES,
+    message=_torque_message("acceleration torque T_1"),
+)
+"""T_1 ≤ T_max (Eq. 514.1)."""
+
+DECEL_TORQUE = Rule(
+    name="decel_torque",
+    reference="Eq. 514.1",
+    unit="Nm",
+    value=lambda q, xp: abs(q.decel_torque_nm),
+    limit=lambda q, xp: q.max_torque_nm,
+    requires=_TORQUE_REQUIRES,
+    message=_torque_message("deceleration torque |T_3|"),
+)
+"""|T_3| ≤ T_max (Eq. 514.1): braking loads the gear as much as accelerating."""
+
+
+# --- 5. continuous_duty: (n_av, T_rms) in the zone (Fig. 517.1; Eq. 514.2, 514.3) -----------
+
+
+def _continuous_limit(q: Operands, xp: Ops) -> Real:
+    """The zone's edge at n_av; without a zone T_0, else the allowable continuous torque."""
+    rectangle = xp.where(xp.isnan(q.stall_torque_nm), q.continuous_torque_nm, q.stall_torque_nm)
+    return xp.where(q.has_zone, q.zone_torque_nm, rectangle)
+
+
+def _continuous_message(q: Operands, status: Status, t_rms: float, limit: float) -> str:
+    ok = status is Status.PASS
+    point = f"(n_av = {q.mean_speed_rpm:.4g} rpm, T_rms = {t_rms:.4g} Nm)"
+    if q.has_zone:
+        if math.isnan(limit):
+            return (
+                f"operating point {point} lies beyond the continuous-duty zone, "
+                f"which ends at {q.zone_max_speed_rpm:.4g} rpm"
+            )
+        return (
+            f"operating point {point} lies {'inside' if ok else 'above'} the "
+            f"continuous-duty zone (limit {limit:.4g} Nm at n_av)"
+        )
+    what = (
+        "allowable continuous torque"
+        if math.isnan(q.stall_torque_nm)
+        else "continuous stall torque T_0"
+    )
+    return (
+        f"approximate: operating point {point} {'within' if ok else 'outside'} "
+        f"{what} = {limit:.4g} Nm and n_max = {q.max_speed_rpm:.4g} rpm "
+        "(no continuous-duty zone published)"
+    )
+
+
+CONTINUOUS_DUTY = Rule(
+    name="continuous_duty",
+    reference="Fig. 517.1",
+    unit="Nm",
+    value=lambda q, xp: q.rms_torque_nm,
+    limit=_continuous_limit,
+    requires=(
+        published("inertia_kgm2", "moment of inertia J_A (T_rms needs it)"),
+        Requirement(
+            any_of=("stall_torque_nm", "continuous_torque_nm"),
+            unless="has_zone",
+            what="continuous-duty zone or continuous torque",
+        ),
+        Requirement(
+            any_of=("max_speed_rpm",), unless="has_zone", what="maximum output speed n_max"
+        ),
+    ),
+    # The rectangle also bounds the speed; a zone bounds it itself (NaN edge beyond it).
+    within=lambda q, xp: q.has_zone | (q.mean_speed_rpm <= q.max_speed_rpm),
+    approximate=lambda q, xp: xp.not_(q.has_zone),
+    reads_rms=True,
+    message=_continuous_message,
+)
+"""(n_av, T_rms) inside the continuous-duty zone (Fig. 517.1; Eq. 514.2, 514.3).
+
+With a published zone the torque limit is the zone's edge at n_av. Without one, the
+continuous stall torque T_0 (or the catalogue's allowable continuous torque) and n_max
+bound a rectangle that is reported as approximate: the real edge falls with speed, so
+the rectangle may be optimistic at high n_av.
+"""
+
+RULES: tuple[Rule, ...] = (
+    MAX_SPEED,
+    INERTIA_RATIO,
+    PEAK_TORQUE,
+    DECEL_TORQUE,
+    CONTINUOUS_DUTY,
+)
+"""The flowchart's checks in the manufacturer's order (chapter p. 514–517)."""

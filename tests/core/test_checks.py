@@ -1,0 +1,435 @@
+"""The rule table (core/checks.py): one definition of each check for both flowcharts."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any
+
+import numpy as np
+import pytest
+from tests import worked_example
+
+from actuator_selection.core import checks, selection
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.batch import ARRAY_OPS, CHECK_NAMES
+from actuator_selection.core.checks import (
+    FLOAT_OPS,
+    RULES,
+    Check,
+    Operands,
+    Requirement,
+    Status,
+    _new_check,
+)
+from actuator_selection.core.cycle import CycleTorques, Load, SpeedPattern
+from actuator_selection.core.selection import Application, evaluate, operands
+from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+
+EXAMPLE = worked_example.APPLICATION
+FHA = worked_example.FHA_25C_50_L
+
+
+def zone(*points: tuple[float, float]) -> ContinuousDutyZone:
+    return ContinuousDutyZone(points=tuple(ZonePoint(speed_rpm=s, torque_nm=t) for s, t in points))
+
+
+def test_the_table_holds_the_chapters_five_checks_in_flowchart_order() -> None:
+    assert [(r.name, r.reference, r.unit) for r in RULES] == [
+        ("max_speed", "Table 515.1", "rpm"),
+        ("inertia_ratio", "Table 515.1", "kgm²"),
+        ("peak_torque", "Eq. 514.1", "Nm"),
+        ("decel_torque", "Eq. 514.1", "Nm"),
+        ("continuous_duty", "Fig. 517.1", "Nm"),
+    ]
+    assert tuple(r.name for r in RULES) == CHECK_NAMES
+
+
+def test_names_that_moved_stay_importable_from_selection() -> None:
+    assert selection.Check is checks.Check
+    assert selection.Status is checks.Status
+    assert selection.INERTIA_RATIO_LIMIT == checks.INERTIA_RATIO_LIMIT == 3.0
+
+
+def test_the_rules_fast_check_constructor_builds_a_check() -> None:
+    """Rule.check builds checks without the generated __init__: they must be the same."""
+    args: dict[str, Any] = {
+        "name": "n",
+        "status": Status.WARN,
+        "value": 1.5,
+        "limit": None,
+        "unit": "Nm",
+        "reference": "Eq. 514.1",
+        "message": "m",
+        "approximate": True,
+    }
+    assert list(args) == [f.name for f in dataclasses.fields(Check)]  # every field, in order
+    fast = _new_check(*args.values())
+    assert type(fast) is Check
+    assert fast == Check(**args)
+    assert repr(fast) == repr(Check(**args))
+    assert dataclasses.asdict(fast) == args
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        fast.value = 2.0  # type: ignore[misc]
+    assert evaluate(FHA, EXAMPLE).checks[0] == Check(
+        name="max_speed",
+        status=Status.PASS,
+        value=40,
+        limit=90,
+        unit="rpm",
+        reference="Table 515.1",
+        message="load speed n_2 = 40 rpm ≤ n_max = 90 rpm",
+    )
+
+
+def test_operands_name_each_value() -> None:
+    """operands() builds the named tuple positionally: each value lands in its field."""
+    actuator = Actuator(
+        model="M",
+        family="F",
+        gear_ratio=50,
+        max_torque_nm=11,
+        max_speed_rpm=12,
+        inertia_kgm2=13,
+        stall_torque_nm=14,
+        continuous_torque_nm=15,
+        zone=zone((0, 40), (100, 30)),
+    )
+    app = Application(
+        pattern=SpeedPattern(speed_rpm=21, accel_s=1, constant_s=1, decel_s=1, pause_s=1),
+        load=Load(torque_nm=5, inertia_kgm2=22),
+        high_dynamics=False,
+    )
+    torques = CycleTorques(
+        accel_torque_nm=31, constant_torque_nm=5, decel_torque_nm=-33, rms_torque_nm=34
+    )
+    q = operands(actuator, app, torques, 50.0)
+    assert q._asdict() == {
+        "speed_rpm": 21,
+        "load_inertia_kgm2": 22,
+        "high_dynamics": False,
+        "mean_speed_rpm": 50.0,
+        "accel_torque_nm": 31,
+        "decel_torque_nm": -33,
+        "rms_torque_nm": 34,
+        "max_torque_nm": 11,
+        "max_speed_rpm": 12,
+        "inertia_kgm2": 13,
+        "stall_torque_nm": 14,
+        "continuous_torque_nm": 15,
+        "has_zone": True,
+        "zone_torque_nm": 35.0,
+        "zone_max_speed_rpm": 100,
+    }
+    bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0)
+    unpublished = [
+        name for name, v in bare._asdict().items() if isinstance(v, float) and math.isnan(v)
+    ]
+    assert unpublished == [
+        "accel_torque_nm",
+        "decel_torque_nm",
+        "rms_torque_nm",
+        "max_torque_nm",
+        "max_speed_rpm",
+        "inertia_kgm2",
+        "stall_torque_nm",
+        "continuous_torque_nm",
+        "zone_torque_nm",
+        "zone_max_speed_rpm",
+    ]
+    assert bare.has_zone is False
+    beyond = operands(actuator, app, torques, 101.0)
+    assert math.isnan(beyond.zone_torque_nm)
+
+
+def worked_operands(**changes: float | bool) -> Operands:
+    actuator = dataclasses.replace(FHA, stall_torque_nm=36)
+    torques = evaluate(actuator, EXAMPLE).torques
+    return operands(actuator, EXAMPLE, torques, 8 / 1.3)._replace(**changes)
+
+
+def test_only_rules_that_say_so_read_rms() -> None:
+    """The ranking's T_rms is a few ulps off: a rule that reads it must set reads_rms."""
+    q = worked_operands()
+    nudged = q._replace(rms_torque_nm=q.rms_torque_nm * (1 + 1e-9))
+    for rule in RULES:
+        reads = (rule.value(q, FLOAT_OPS), rule.limit(q, FLOAT_OPS)) != (
+            rule.value(nudged, FLOAT_OPS),
+            rule.limit(nudged, FLOAT_OPS),
+        )
+        assert reads is rule.reads_rms, rule.name
+
+
+@pytest.mark.parametrize(
+    "unpublished",
+    [
+        (),
+        ("max_speed_rpm",),
+        ("inertia_kgm2",),
+        ("max_torque_nm",),
+        ("stall_torque_nm",),
+        ("stall_torque_nm", "continuous_torque_nm"),
+        ("stall_torque_nm", "continuous_torque_nm", "max_speed_rpm"),
+    ],
+)
+@pytest.mark.parametrize("has_zone", [False, True])
+def test_requirements_decide_no_data_alike_on_floats_and_arrays(
+    unpublished: tuple[str, ...], has_zone: bool
+) -> None:
+    """Rule.check's short cut for floats, Requirement.missing on floats and on arrays."""
+    q = worked_operands(has_zone=has_zone, **dict.fromkeys(unpublished, math.nan))
+    arrays = Operands(*(np.array([v]) for v in q))
+    for rule in RULES:
+        no_data = rule.check(q).status is Status.NO_DATA
+        assert no_data == any(need.missing(q, FLOAT_OPS) for need in rule.requires), rule.name
+        masks = [need.missing(arrays, ARRAY_OPS) for need in rule.requires]
+        assert no_data == bool(np.any(masks)), rule.name
+
+
+def test_a_requirement_is_met_by_any_of_its_values_or_its_exemption() -> None:
+    need = Requirement(
+        any_of=("stall_torque_nm", "continuous_torque_nm"), unless="has_zone", what="x"
+    )
+    nan = math.nan
+    assert not need.missing(
+        worked_operands(stall_torque_nm=nan, continuous_torque_nm=40), FLOAT_OPS
+    )
+    assert need.missing(worked_operands(stall_torque_nm=nan, continuous_torque_nm=nan), FLOAT_OPS)
+    assert not need.missing(
+        worked_operands(stall_torque_nm=nan, continuous_torque_nm=nan, has_zone=True), FLOAT_OPS
+    )
+
+
+# Every message the flowchart writes, pinned: generated with the hand-written checks
+# that the rule table replaced, and unchanged since.
+MESSAGES = {
+    "example": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no continuous-duty zone or continuous torque for this "
+            "actuator",
+            False,
+        ),
+    ),
+    "fast": (
+        ("fail", "load speed n_2 = 91 rpm exceeds n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("fail", "acceleration torque T_1 = 210.8 Nm exceeds T_max = 151 Nm", False),
+        ("fail", "deceleration torque |T_3| = 200.8 Nm exceeds T_max = 151 Nm", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no continuous-duty zone or continuous torque for this "
+            "actuator",
+            False,
+        ),
+    ),
+    "heavy": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        (
+            "fail",
+            "load inertia J_L = 2.6 kgm² exceeds 3·J_A = 2.58 kgm²: the limit is binding for a "
+            "highly dynamic application",
+            False,
+        ),
+        ("pass", "acceleration torque T_1 = 149.9 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 139.9 Nm ≤ T_max = 151 Nm", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no continuous-duty zone or continuous torque for this "
+            "actuator",
+            False,
+        ),
+    ),
+    "heavy_relaxed": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        (
+            "warn",
+            "load inertia J_L = 2.6 kgm² exceeds 3·J_A = 2.58 kgm²: recommended for highly "
+            "dynamic applications only",
+            False,
+        ),
+        ("pass", "acceleration torque T_1 = 149.9 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 139.9 Nm ≤ T_max = 151 Nm", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no continuous-duty zone or continuous torque for this "
+            "actuator",
+            False,
+        ),
+    ),
+    "small": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("fail", "acceleration torque T_1 = 95.48 Nm exceeds T_max = 50 Nm", False),
+        ("fail", "deceleration torque |T_3| = 85.48 Nm exceeds T_max = 50 Nm", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no continuous-duty zone or continuous torque for this "
+            "actuator",
+            False,
+        ),
+    ),
+    "bare": (
+        (
+            "no_data",
+            "no data: the catalogue gives no maximum output speed n_max for this actuator",
+            False,
+        ),
+        (
+            "no_data",
+            "no data: the catalogue gives no moment of inertia J_A for this actuator",
+            False,
+        ),
+        (
+            "no_data",
+            "no data: the catalogue gives no moment of inertia J_A for this actuator",
+            False,
+        ),
+        (
+            "no_data",
+            "no data: the catalogue gives no moment of inertia J_A for this actuator",
+            False,
+        ),
+        (
+            "no_data",
+            "no data: the catalogue gives no moment of inertia J_A (T_rms needs it) for this "
+            "actuator",
+            False,
+        ),
+    ),
+    "no_tmax": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no maximum torque T_max for this actuator",
+            False,
+        ),
+        (
+            "no_data",
+            "no data: the catalogue gives no maximum torque T_max for this actuator",
+            False,
+        ),
+        (
+            "pass",
+            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within continuous "
+            "stall torque T_0 = 36 Nm and n_max = 90 rpm (no continuous-duty zone published)",
+            True,
+        ),
+    ),
+    "no_nmax": (
+        (
+            "no_data",
+            "no data: the catalogue gives no maximum output speed n_max for this actuator",
+            False,
+        ),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "no_data",
+            "no data: the catalogue gives no maximum output speed n_max for this actuator",
+            False,
+        ),
+    ),
+    "zone_inside": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "pass",
+            "operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) lies inside the continuous-duty "
+            "zone (limit 39.32 Nm at n_av)",
+            False,
+        ),
+    ),
+    "zone_above": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "fail",
+            "operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) lies above the continuous-duty "
+            "zone (limit 34.66 Nm at n_av)",
+            False,
+        ),
+    ),
+    "zone_beyond": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "fail",
+            "operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) lies beyond the continuous-duty "
+            "zone, which ends at 5 rpm",
+            False,
+        ),
+    ),
+    "stall_pass": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "pass",
+            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within continuous "
+            "stall torque T_0 = 36 Nm and n_max = 90 rpm (no continuous-duty zone published)",
+            True,
+        ),
+    ),
+    "stall_fail": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "fail",
+            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) outside continuous "
+            "stall torque T_0 = 35 Nm and n_max = 90 rpm (no continuous-duty zone published)",
+            True,
+        ),
+    ),
+    "allowable": (
+        ("pass", "load speed n_2 = 40 rpm ≤ n_max = 90 rpm", False),
+        ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
+        ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
+        ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        (
+            "pass",
+            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within allowable "
+            "continuous torque = 40 Nm and n_max = 90 rpm (no continuous-duty zone published)",
+            True,
+        ),
+    ),
+}
+
+
+@pytest.mark.parametrize("scenario", MESSAGES)
+def test_every_branch_writes_the_same_message(scenario: str) -> None:
+    heavy = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=2.6))
+    fast = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=91))
+    actuator, app = {
+        "example": (FHA, EXAMPLE),
+        "fast": (FHA, fast),
+        "heavy": (FHA, heavy),
+        "heavy_relaxed": (FHA, dataclasses.replace(heavy, high_dynamics=False)),
+        "small": (dataclasses.replace(FHA, max_torque_nm=50), EXAMPLE),
+        "bare": (Actuator(model="X", family="F", gear_ratio=50), EXAMPLE),
+        "no_tmax": (dataclasses.replace(FHA, max_torque_nm=None, stall_torque_nm=36), EXAMPLE),
+        "no_nmax": (dataclasses.replace(FHA, max_speed_rpm=None, stall_torque_nm=36), EXAMPLE),
+        "zone_inside": (dataclasses.replace(FHA, zone=zone((0, 40), (90, 30))), EXAMPLE),
+        "zone_above": (dataclasses.replace(FHA, zone=zone((0, 35), (90, 30))), EXAMPLE),
+        "zone_beyond": (dataclasses.replace(FHA, zone=zone((0, 80), (5, 80))), EXAMPLE),
+        "stall_pass": (dataclasses.replace(FHA, stall_torque_nm=36), EXAMPLE),
+        "stall_fail": (dataclasses.replace(FHA, stall_torque_nm=35), EXAMPLE),
+        "allowable": (dataclasses.replace(FHA, continuous_torque_nm=40), EXAMPLE),
+    }[scenario]
+    got = tuple((k.status.value, k.message, k.approximate) for k in evaluate(actuator, app).checks)
+    assert got == MESSAGES[scenario]
