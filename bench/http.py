@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import random
 import socket
 import subprocess
 import sys
@@ -125,6 +126,46 @@ def _load(
     return total / elapsed, failures, sum(sizes) // max(1, len(sizes))
 
 
+def _peak_rss_mb(pid: int) -> float:
+    """The process's peak resident memory [MB] (Linux /proc)."""
+    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+        if line.startswith("VmHWM:"):
+            return int(line.split()[1]) / 1024
+    return float("nan")
+
+
+def _batch(base: str, pid: int, n: int) -> None:
+    """One batch of ``n`` random cases (top 3): time, answer size, the server's peak RSS."""
+    rng = random.Random(7)
+    cases = [
+        {
+            "load": {
+                "speed_rpm": rng.uniform(5, 150),
+                "torque_nm": rng.uniform(0, 50),
+                "inertia_kgm2": rng.uniform(0, 5),
+            },
+            "cycle": {
+                "accel_s": rng.uniform(0.05, 0.5),
+                "constant_s": rng.uniform(0, 1),
+                "decel_s": rng.uniform(0.05, 0.5),
+                "pause_s": rng.uniform(0, 2),
+            },
+        }
+        for _ in range(n)
+    ]
+    before = _peak_rss_mb(pid)
+    started = time.monotonic()
+    response = httpx.post(
+        f"{base}/api/v1/selections/batch", json={"cases": cases, "top": 3}, timeout=600
+    )
+    elapsed = time.monotonic() - started
+    print(
+        f"  POST /selections/batch, {n} cases      {elapsed:6.2f} s  HTTP {response.status_code}  "
+        f"answer {len(response.content) / 1e6:6.1f} MB  server peak RSS {before:.0f} → "
+        f"{_peak_rss_mb(pid):.0f} MB"
+    )
+
+
 def main() -> None:
     """Measure and print; see the module docstring."""
     parser = argparse.ArgumentParser(prog="python -m bench.http")
@@ -132,6 +173,7 @@ def main() -> None:
     parser.add_argument("--clients", type=int, default=32)
     parser.add_argument("--seconds", type=float, default=8.0)
     parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument("--batch-cases", type=int, default=20_000)
     args = parser.parse_args()
     drop: Callable[[], None] = lambda: None  # noqa: E731
     found = _postgres_database() if args.database == "postgresql" else None
@@ -166,6 +208,8 @@ def main() -> None:
                     f"  {name:36s} {rate:8.1f} req/s  {rate / reference:5.2f}× /health  "
                     f"answer {size / 1024:8.1f} KiB  non-2xx {dict(failures) or 0}"
                 )
+            if args.workers == 1:  # the peak RSS is the served process's own
+                _batch(base, process.pid, args.batch_cases)
         finally:
             process.terminate()
             process.wait(10)
