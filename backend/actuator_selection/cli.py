@@ -54,7 +54,7 @@ def _serve(args: argparse.Namespace) -> int:
     os.environ["DATABASE_URL"] = args.database_url
     get_settings.cache_clear()
     uvicorn.run(
-        "actuator_selection.main:create_app",
+        "actuator_selection.main:serve_app",
         factory=True,
         host=args.host,
         port=args.port,

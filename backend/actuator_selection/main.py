@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from types import ModuleType
@@ -33,6 +34,29 @@ from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 
 API_PREFIX = "/api/v1"
+
+
+GC_THRESHOLDS = (50_000, 20, 100)
+"""The cyclic garbage collector's thresholds in a served process (Python's are 700, 10, 10).
+
+A batch of 20,000 cases allocates about 10⁶ container objects that live until their
+slice of the answer is written, and a whole-catalogue selection about 2·10⁴; at the
+default thresholds the collector walked them again and again (a 20,000-case batch:
+3.6 s, against 2.6 s with collection paused). These thresholds make collections rare
+but keep them, so cycles are still freed: 2.7 s.
+"""
+
+
+def tune_gc() -> None:
+    """Set ``GC_THRESHOLDS`` for this process; the collector stays on."""
+    gc.set_threshold(*GC_THRESHOLDS)
+
+
+def serve_app() -> FastAPI:
+    """The app as ``serve`` runs it, in each worker process: the collector tuned once
+    for the process (:func:`tune_gc`), then :func:`create_app`."""
+    tune_gc()
+    return create_app()
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:

@@ -10,8 +10,7 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 
-from actuator_selection.api import selections
-from actuator_selection.core.selection import select
+from actuator_selection.main import GC_THRESHOLDS, tune_gc
 
 WORKED_EXAMPLE: dict[str, Any] = {
     **worked_example.request(),
@@ -273,18 +272,13 @@ def test_failed_request_writes_nothing(client: TestClient) -> None:
     assert client.get(f"/api/v1/selections/{before}").status_code == 200
 
 
-def test_a_selection_runs_with_the_cyclic_gc_paused(
-    client: TestClient, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """The ~2·10⁴ objects of a whole-catalogue answer are not walked by the cyclic GC."""
-    seen: list[bool] = []
-
-    def spy(*args: Any, **kwargs: Any) -> Any:
-        seen.append(gc.isenabled())
-        return select(*args, **kwargs)
-
-    monkeypatch.setattr(selections, "select", spy)
-    assert gc.isenabled()
-    assert client.post("/api/v1/selections", json=WORKED_EXAMPLE).status_code == 201
-    assert seen == [False]
-    assert gc.isenabled()
+def test_a_served_process_collects_rarely_but_never_switches_the_collector_off() -> None:
+    """No request pauses the cyclic GC any more; ``serve`` raises its thresholds once."""
+    before = gc.get_threshold()
+    try:
+        tune_gc()
+        assert gc.get_threshold() == GC_THRESHOLDS
+        assert GC_THRESHOLDS[0] > before[0]
+        assert gc.isenabled()
+    finally:
+        gc.set_threshold(*before)

@@ -2,10 +2,8 @@
 
 from __future__ import annotations
 
-import gc
 import json
 import random
-import weakref
 from typing import Any
 
 import pytest
@@ -13,9 +11,6 @@ from fastapi.testclient import TestClient
 from sqlalchemy import Connection, func, select
 from tests import worked_example
 
-from actuator_selection.api import batch
-from actuator_selection.api.deps import CyclicGcPause
-from actuator_selection.core.batch import select_batch
 from actuator_selection.db.models import SelectionRow
 from actuator_selection.main import API_PREFIX
 from actuator_selection.schemas.batch import (
@@ -197,61 +192,6 @@ def test_ten_thousand_cases_in_one_request(batch_client: TestClient) -> None:
         assert results[i]["candidates"] == [
             without(c, *DETAIL_KEYS) for c in single["candidates"][:3]
         ]
-
-
-def test_cyclic_gc_is_paused_during_a_batch_and_resumed_after(
-    batch_client: TestClient, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    seen: list[bool] = []
-
-    def spy(*args: Any, **kwargs: Any) -> Any:
-        seen.append(gc.isenabled())
-        return select_batch(*args, **kwargs)
-
-    monkeypatch.setattr(batch, "select_batch", spy)
-    assert gc.isenabled()
-    assert post(batch_client, [WORKED_EXAMPLE]).status_code == 200
-    assert locs(post(batch_client, [{"load": {}}]))  # a failed validation resumes it too
-    assert seen == [False]
-    assert gc.isenabled()
-
-
-def test_overlapping_pauses_resume_once_the_last_ends() -> None:
-    pause = CyclicGcPause()
-    first, second = pause(), pause()
-    next(first)
-    next(second)
-    assert not gc.isenabled()
-    first.close()
-    assert not gc.isenabled()
-    second.close()
-    assert gc.isenabled()
-
-
-def test_a_pause_that_never_ends_still_collects() -> None:
-    """Under overlapping traffic the pause would last forever: requests ending after
-    ``max_pause_s`` collect the cycles left meanwhile."""
-
-    class Node:
-        other: Any = None
-
-    pause = CyclicGcPause(max_pause_s=-1.0)  # every ending request is past the limit
-    first, second = pause(), pause()
-    next(first)
-    next(second)
-    a, b = Node(), Node()
-    a.other, b.other = b, a
-    cycle = weakref.ref(a)
-    del a, b
-    assert cycle() is not None  # reference counting alone cannot free a cycle
-    first.close()
-    assert cycle() is None
-    assert not gc.isenabled()  # the second request still runs
-    second.close()
-    assert gc.isenabled()
-
-
-# --- storing -------------------------------------------------------------------------------
 
 
 def stored_count(connection: Connection) -> int:

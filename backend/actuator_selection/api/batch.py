@@ -9,13 +9,12 @@ from datetime import UTC, datetime
 from typing import Any
 
 import pydantic_core
-from fastapi import APIRouter, Depends, Request, Response
+from fastapi import APIRouter, Request, Response
 from fastapi.responses import StreamingResponse
 
 from actuator_selection.api.deps import (
     SessionDep,
     catalogue_snapshot,
-    pause_cyclic_gc,
     reads_only,
     write_transaction,
 )
@@ -203,8 +202,6 @@ def _candidates(
 @router.post(
     "/selections/batch",
     response_model=BatchSelectionOut,
-    # A route dependency is solved before the body is validated, so the pause covers both.
-    dependencies=[Depends(pause_cyclic_gc)],
     responses={
         201: {
             "description": "with `store: true`: the cases were stored",

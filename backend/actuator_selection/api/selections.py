@@ -6,12 +6,11 @@ import uuid
 from datetime import UTC, datetime
 
 import pydantic_core
-from fastapi import APIRouter, Depends, Request, Response
+from fastapi import APIRouter, Request, Response
 
 from actuator_selection.api.deps import (
     SessionDep,
     catalogue_snapshot,
-    pause_cyclic_gc,
     reads_only,
     write_transaction,
 )
@@ -30,7 +29,6 @@ router = APIRouter(tags=["selections"])
     "/selections",
     status_code=201,
     responses={422: {"description": "invalid load case, or a model the catalogue lacks"}},
-    dependencies=[Depends(pause_cyclic_gc)],
     description="Runs the flowchart for every catalogue actuator (or the `models` listed) and "
     f"stores the result. Ranking: {RANKING_RULE}.",
 )
