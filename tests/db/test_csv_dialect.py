@@ -7,6 +7,7 @@ import doctest
 
 import pytest
 
+from actuator_selection.core.text import NUL_RULE, text_problem
 from actuator_selection.db import csvio
 from actuator_selection.db.csvio import (
     Column,
@@ -15,7 +16,6 @@ from actuator_selection.db.csvio import (
     neutralised,
     parse,
     restored,
-    text_problem,
     write,
 )
 
@@ -111,4 +111,4 @@ def test_text_rule(text: str, line_breaks: bool, found: str | None) -> None:
 
 
 def test_nul_keeps_its_own_rule() -> None:
-    assert text_problem("a\x00b", line_breaks=True) == csvio.NUL_RULE
+    assert text_problem("a\x00b", line_breaks=True) == NUL_RULE

@@ -36,7 +36,7 @@ from starlette.middleware.body_limit import MAX_BODY_SIZE_SCOPE_KEY
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from actuator_selection.core.errors import DomainError, NotFoundError
-from actuator_selection.db.csvio import NUL_RULE
+from actuator_selection.core.text import NUL_RULE
 
 log = logging.getLogger(__name__)
 

@@ -12,7 +12,7 @@ from typing import Any, ClassVar
 
 from pydantic import BaseModel, ConfigDict, ValidationInfo, field_validator
 
-from actuator_selection.db.csvio import text_problem
+from actuator_selection.core.text import text_problem
 
 MAX_SPEED_RPM = 100_000.0
 """n_2 bound [rpm]: ten times the fastest servo motor shaft."""
