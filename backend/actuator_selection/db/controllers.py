@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TypeVar
 
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
+from actuator_selection.core.catalogue import ControllerRecord, InterfaceRecord
 from actuator_selection.core.compatibility import (
     MARK_COLUMNS,
     ActuatorInterface,
     BusClass,
-    Controller,
     FeedbackSystem,
     controller_from_record,
     product_family,
@@ -34,24 +33,6 @@ from actuator_selection.db.models import (
     SensorFittingRow,
     SensorPointRow,
 )
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ControllerRecord:
-    """A controller with its catalogue provenance."""
-
-    controller: Controller
-    source: str
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class InterfaceRecord:
-    """An actuator's matching data and how it was obtained."""
-
-    interface: ActuatorInterface
-    derivation: str | None
-    source: str | None
-
 
 _Option = TypeVar("_Option", BusClass, TemperatureSensor, FeedbackSystem)
 

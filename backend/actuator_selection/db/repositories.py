@@ -15,6 +15,7 @@ from sqlalchemy import select, update
 from sqlalchemy.orm import Session, selectinload
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.catalogue import ActuatorRecord, FamilyRecord
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -22,40 +23,6 @@ from actuator_selection.db.models import (
     CatalogueStateRow,
     SelectionRow,
 )
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ActuatorRecord:
-    """A catalogue actuator with what the catalogue says besides the engineering values."""
-
-    actuator: Actuator
-    continuous_current_a: float | None
-    inductance_line_mh: float | None
-    inductance_phase_mh: float | None
-    motor_torque_constant_nm_per_a: float | None
-    mass_kg: float | None
-    max_dc_bus_voltage_v: float | None
-    supply_voltage: str | None
-    feedback: str | None
-    notes: str | None
-    source: str
-    zone_source: str | None
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class FamilyRecord:
-    """A product family with its temperature sensor and limits (Tables 518.1, 519.2)."""
-
-    name: str
-    description: str | None
-    temperature_sensors: str | None
-    warning_temperature_c: float | None
-    shutdown_temperature_c: float | None
-    temperature_tolerance_percent: float | None
-    warning_resistance_ohm: float | None
-    shutdown_resistance_ohm: float | None
-    resistance_tolerance_percent: float | None
-    source: str
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

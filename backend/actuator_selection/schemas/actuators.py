@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from pydantic import Field
 
+from actuator_selection.core.catalogue import ActuatorRecord, FamilyRecord
 from actuator_selection.core.electrical import OUTPUT_TURNS_OPPOSITE_TO_MOTOR
-from actuator_selection.db.repositories import ActuatorRecord, FamilyRecord
 from actuator_selection.schemas.common import ResponseModel
 
 

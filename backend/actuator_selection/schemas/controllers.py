@@ -7,6 +7,7 @@ from typing import Any, Literal
 
 from pydantic import Field
 
+from actuator_selection.core.catalogue import ControllerRecord, InterfaceRecord
 from actuator_selection.core.compatibility import (
     MARK_COLUMNS,
     ActuatorInterface,
@@ -16,7 +17,6 @@ from actuator_selection.core.compatibility import (
 )
 from actuator_selection.core.drive import DriveOption, DriveOptions
 from actuator_selection.core.selection import Check
-from actuator_selection.db.controllers import ControllerRecord, InterfaceRecord
 from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import ResponseModel
 
