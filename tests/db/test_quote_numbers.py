@@ -17,6 +17,7 @@ import pytest
 from sqlalchemy import Engine, create_engine, func, select
 from sqlalchemy.orm import Session, sessionmaker
 
+from actuator_selection.core.sales import NewQuote, QuoteItem, QuoteRecord
 from actuator_selection.db.engine import make_engine, normalise_url
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import SelectionRow
@@ -24,9 +25,6 @@ from actuator_selection.db.models.sales import QuoteCounterRow, QuoteRow
 from actuator_selection.db.sales import (
     ApiKeyRepository,
     IdempotencyKeyReusedError,
-    NewQuote,
-    QuoteItem,
-    QuoteRecord,
     QuoteRepository,
 )
 

@@ -23,7 +23,8 @@ from fastapi import APIRouter, Depends, Request
 from actuator_selection.api.deps import SessionDep
 from actuator_selection.api.errors import ForbiddenError, UnauthorizedError
 from actuator_selection.config import Settings, get_settings
-from actuator_selection.db.sales import ApiKeyRecord, ApiKeyRepository
+from actuator_selection.core.sales import ApiKeyRecord
+from actuator_selection.db.sales import ApiKeyRepository
 from actuator_selection.schemas.auth import PrincipalOut
 
 router = APIRouter(tags=["auth"])

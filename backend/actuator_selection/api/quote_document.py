@@ -22,7 +22,7 @@ import plotly.graph_objects as go
 
 from actuator_selection.api.static import PLOTLY_URL
 from actuator_selection.core.money import ROUNDING_RULE
-from actuator_selection.db.sales import QuoteRecord
+from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.quotes import (
     QuoteOut,
     StoredCandidate,

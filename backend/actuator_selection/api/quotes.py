@@ -45,6 +45,7 @@ from actuator_selection.api.quote_document import (
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.money import QuoteLine, quote_totals
 from actuator_selection.core.quote_status import IllegalTransitionError, QuoteStatus, transition
+from actuator_selection.core.sales import NewQuote, PriceRecord, QuoteItem, QuoteRecord
 from actuator_selection.db.admin import CatalogueAdminRepository
 from actuator_selection.db.repositories import (
     CatalogueRepository,
@@ -54,11 +55,7 @@ from actuator_selection.db.repositories import (
 from actuator_selection.db.sales import (
     ApiKeyRepository,
     IdempotencyKeyReusedError,
-    NewQuote,
-    PriceRecord,
     PriceRepository,
-    QuoteItem,
-    QuoteRecord,
     QuoteRepository,
     QuoteSearch,
 )

@@ -16,10 +16,9 @@ import hashlib
 import hmac
 import re
 import secrets
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from datetime import UTC, date, datetime
-from decimal import Decimal
 from typing import Any
 
 from sqlalchemy import and_, delete, func, or_, select, update
@@ -29,6 +28,14 @@ from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, selectinload
 
 from actuator_selection.core.quote_status import QuoteStatus
+from actuator_selection.core.sales import (
+    ApiKeyRecord,
+    NewQuote,
+    PriceListRecord,
+    PriceRecord,
+    QuoteItem,
+    QuoteRecord,
+)
 from actuator_selection.db.changes import FileChanges
 from actuator_selection.db.csvio import (
     CatalogueFileError,
@@ -77,18 +84,6 @@ _ACCESS_TOKEN = re.compile(r"([0-9a-f]{12})\.([0-9]{1,12})\.([0-9a-f]{64})")
 def _access_mac(key_sha256: str, resource: str, expires_at: int) -> str:
     message = f"{resource}|{expires_at}".encode()
     return hmac.new(key_sha256.encode("ascii"), message, hashlib.sha256).hexdigest()
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ApiKeyRecord:
-    """An API key without its secret: the public prefix names it."""
-
-    id: int
-    prefix: str
-    name: str
-    role: str
-    created_at: datetime
-    revoked_at: datetime | None
 
 
 def _key_record(row: ApiKeyRow) -> ApiKeyRecord:
@@ -211,33 +206,6 @@ PRICES = CsvSpec(
 Amounts are decimal text with at most two decimal places (``1234.50``), never
 binary floating point.
 """
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class PriceListRecord:
-    """A price list and what it holds."""
-
-    name: str
-    is_example: bool
-    imported_at: datetime
-    item_count: int
-    currencies: tuple[str, ...]
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class PriceRecord:
-    """One price of a price list."""
-
-    price_list: str
-    is_example: bool
-    item_kind: str
-    item_code: str
-    description: str | None
-    unit_price: Decimal
-    currency: str
-    valid_from: date
-    valid_to: date | None
-    source: str
 
 
 def _price_record(row: PriceRow, price_list: PriceListRow) -> PriceRecord:
@@ -449,64 +417,6 @@ def quote_number(year: int, sequence: int) -> str:
     'Q-2026-00042'
     """
     return NUMBER_FORMAT.format(year=year, sequence=sequence)
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class QuoteItem:
-    """One priced line of a quote."""
-
-    position: int
-    item_kind: str
-    item_code: str
-    description: str
-    quantity: int
-    unit_price: Decimal
-    line_total: Decimal
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class NewQuote:
-    """Everything a quote holds before it has a number."""
-
-    created_at: datetime
-    valid_until: date
-    api_key_id: int
-    idempotency_key: str | None
-    request_sha256: str
-    selection_id: str
-    selection_catalogue_version: int
-    catalogue_version: int
-    customer_name: str
-    customer_address: str | None
-    customer_reference: str | None
-    notes: str | None
-    actuator_model: str
-    verdict: str
-    verdict_reasons: tuple[str, ...]
-    actuator_snapshot: Mapping[str, Any]
-    price_list_name: str
-    price_list_is_example: bool
-    price_date: date
-    currency: str
-    subtotal: Decimal
-    discount_percent: Decimal
-    discount_amount: Decimal
-    total: Decimal
-    items: tuple[QuoteItem, ...]
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class QuoteRecord(NewQuote):
-    """A stored quote: the new quote with its number and stored status.
-
-    ``status`` is the stored one (``expired`` is computed by the caller).
-    """
-
-    number: str
-    year: int
-    sequence: int
-    status: QuoteStatus
-    status_changed_at: datetime
 
 
 class IdempotencyKeyReusedError(Exception):

@@ -29,7 +29,7 @@ from actuator_selection.core.quote_status import (
     allowed_transitions,
     effective_status,
 )
-from actuator_selection.db.sales import QuoteRecord
+from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 
 
