@@ -28,12 +28,13 @@ router = APIRouter(tags=["selections"])
 @router.post(
     "/selections",
     status_code=201,
+    response_model=SelectionOut,
     responses={422: {"description": "invalid load case, or a model the catalogue lacks"}},
     description="Runs the flowchart for every catalogue actuator (or the `models` listed) and "
     f"stores the result. Ranking: {RANKING_RULE}.",
 )
 @reads_only
-def create_selection(body: SelectionRequest, request: Request, session: SessionDep) -> SelectionOut:
+def create_selection(body: SelectionRequest, request: Request, session: SessionDep) -> Response:
     """Size the load case against the catalogue and store the selection."""
     catalogue = catalogue_snapshot(request, session)
     actuators = catalogue.actuators_of(body.models)
@@ -67,7 +68,11 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
             request=stored_request,
             response=stored_response,
         )
-    return out
+    # Encoded once from the dump just stored: returning the model would have FastAPI
+    # validate and encode the ≈ 1 MB again.
+    return Response(
+        pydantic_core.to_json(stored_response), status_code=201, media_type="application/json"
+    )
 
 
 @router.get(
