@@ -28,7 +28,7 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import evaluate_batch, rank_batch, select_batch
 from actuator_selection.core.selection import select
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
-from actuator_selection.main import API_PREFIX, create_app
+from actuator_selection.main import API_PREFIX, create_app, tune_gc
 from bench.selection import http_case, random_cases, starter_catalogue
 
 TOP = 3
@@ -79,15 +79,18 @@ def _line(label: str, n: int, seconds: float) -> float:
     return n / seconds
 
 
-def _gc_paused(run: Callable[[], object]) -> Callable[[], object]:
-    def paused() -> object:
-        gc.disable()
+def _served_gc(run: Callable[[], object]) -> Callable[[], object]:
+    """``run`` with the collector's thresholds of a served process (``main.tune_gc``)."""
+
+    def tuned() -> object:
+        before = gc.get_threshold()
+        tune_gc()
         try:
             return run()
         finally:
-            gc.enable()
+            gc.set_threshold(*before)
 
-    return paused
+    return tuned
 
 
 def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
@@ -117,9 +120,9 @@ def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
         _timed(lambda: select_batch(actuators, apps, top=TOP)),
     )
     _line(
-        "  the same, cyclic GC paused (as the endpoint)",
+        "  the same, GC thresholds as served (tune_gc)",
         len(apps),
-        _timed(_gc_paused(lambda: select_batch(actuators, apps, top=TOP))),
+        _timed(_served_gc(lambda: select_batch(actuators, apps, top=TOP))),
     )
     print(
         f"  ratio to scalar select(): select_batch {vectorised / scalar:.0f}×, "
