@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import random
 import socket
 import subprocess
 import sys
@@ -36,6 +35,7 @@ from actuator_selection.config import REPO_ROOT, SEED_DIR
 from actuator_selection.db.engine import make_engine, make_session_factory, normalise_url
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.seed import load_seed
+from bench.selection import http_case, random_cases
 
 WORKED_EXAMPLE: dict[str, Any] = {
     "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
@@ -136,23 +136,7 @@ def _peak_rss_mb(pid: int) -> float:
 
 def _batch(base: str, pid: int, n: int) -> None:
     """One batch of ``n`` random cases (top 3): time, answer size, the server's peak RSS."""
-    rng = random.Random(7)
-    cases = [
-        {
-            "load": {
-                "speed_rpm": rng.uniform(5, 150),
-                "torque_nm": rng.uniform(0, 50),
-                "inertia_kgm2": rng.uniform(0, 5),
-            },
-            "cycle": {
-                "accel_s": rng.uniform(0.05, 0.5),
-                "constant_s": rng.uniform(0, 1),
-                "decel_s": rng.uniform(0.05, 0.5),
-                "pause_s": rng.uniform(0, 2),
-            },
-        }
-        for _ in range(n)
-    ]
+    cases = [http_case(app) for app in random_cases(n)]
     before = _peak_rss_mb(pid)
     started = time.monotonic()
     response = httpx.post(
