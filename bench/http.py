@@ -31,11 +31,9 @@ import httpx
 from sqlalchemy import create_engine, text
 from sqlalchemy.engine import make_url
 
-from actuator_selection.config import REPO_ROOT, SEED_DIR
-from actuator_selection.db.engine import make_engine, make_session_factory, normalise_url
-from actuator_selection.db.migrate import upgrade
-from actuator_selection.db.seed import load_seed
-from bench.selection import http_case, random_cases
+from actuator_selection.config import REPO_ROOT
+from actuator_selection.db.engine import normalise_url
+from bench.selection import http_case, random_cases, starter_catalogue
 
 WORKED_EXAMPLE: dict[str, Any] = {
     "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
@@ -62,14 +60,6 @@ def _postgres_database() -> tuple[str, Callable[[], None]] | None:
 
     url = make_url(normalise_url(POSTGRES_URL)).set(database=name)
     return url.render_as_string(hide_password=False), drop
-
-
-def _seed(url: str) -> None:
-    upgrade(url=url)
-    engine = make_engine(url)
-    with make_session_factory(engine).begin() as session:
-        load_seed(session, SEED_DIR)
-    engine.dispose()
 
 
 def _serve(url: str, env: dict[str, str]) -> tuple[subprocess.Popen[bytes], str]:
@@ -168,7 +158,7 @@ def main() -> None:
                 print("PostgreSQL unreachable: measuring on SQLite")
         else:
             url, drop = found
-        _seed(url)
+        starter_catalogue(url)
         process, base = _serve(url, {"WORKERS": str(args.workers)})
         try:
             print(
