@@ -10,6 +10,7 @@ from types import ModuleType
 from fastapi import Depends, FastAPI
 from fastapi.middleware.gzip import GZipMiddleware
 from fastapi.staticfiles import StaticFiles
+from fastapi_offline import FastAPIOffline
 
 from actuator_selection import __version__
 from actuator_selection.api import (
@@ -34,6 +35,8 @@ from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 
 API_PREFIX = "/api/v1"
+DOCS_PATHS = ("/docs", "/redoc", "/docs/oauth2-redirect")
+"""The API documentation pages (fastapi-offline's defaults)."""
 
 
 GC_THRESHOLDS = (50_000, 20, 100)
@@ -69,7 +72,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         yield
         engine.dispose()
 
-    app = FastAPI(
+    # Swagger UI (/docs) and ReDoc (/redoc) from the assets fastapi-offline ships: the
+    # documentation works without internet, like the pages.
+    app = FastAPIOffline(
         title="Actuator selection service",
         version=__version__,
         summary="Sizes Harmonic Drive servo actuators for a motion cycle "
@@ -118,5 +123,5 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     if FRONTEND_DIR.is_dir():
         app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
-    security_headers.install(app)
+    security_headers.install(app, docs_paths=DOCS_PATHS)
     return app

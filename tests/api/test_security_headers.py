@@ -182,12 +182,6 @@ def _external_sources(html: str) -> dict[str, list[str]]:
     return found
 
 
-def _origin(url: str) -> str:
-    match = re.match(r"https://[^/]+", url)
-    assert match, f"{url}: expected an absolute https URL"
-    return match[0]
-
-
 @pytest.mark.parametrize("path", ["/docs", "/redoc", "/docs/oauth2-redirect"])
 @pytest.mark.parametrize("encoding", ["identity", "gzip"])
 def test_docs_pages_allow_exactly_what_they_load(
@@ -206,17 +200,19 @@ def test_docs_pages_allow_exactly_what_they_load(
     assert sorted(inline) == sorted(hashes)
     if path == "/docs":
         assert len(hashes) == 1  # Swagger UI's start: the test must see the hash it checks
-    for directive, urls in _external_sources(response.text).items():
+    # Everything the page loads comes from the app itself (works offline), and is there.
+    for urls in _external_sources(response.text).values():
         for url in urls:
-            if not url.startswith("/"):
-                assert _origin(url) in policy[directive], (directive, url)
+            assert url.startswith("/"), url
+            assert secured.client.get(url).status_code == 200, url
+    assert "https:" not in response.headers["content-security-policy"]
 
 
 def test_docs_policy_is_only_on_the_docs(secured: SalesApi) -> None:
-    """The CDN is allowed on the docs pages, not on the app's own pages."""
-    assert "cdn.jsdelivr.net" in secured.client.get("/docs").headers["content-security-policy"]
+    """The docs' inline-script hashes are allowed on the docs pages, not on the app's own."""
+    assert "'sha256-" in secured.client.get("/docs").headers["content-security-policy"]
     for path in ("/", "/sales.html"):
-        assert "cdn" not in secured.client.get(path).headers["content-security-policy"]
+        assert "'sha256-" not in secured.client.get(path).headers["content-security-policy"]
 
 
 def test_a_route_sets_its_own_policy_is_kept(secured: SalesApi) -> None:

@@ -27,6 +27,7 @@ pytestmark = pytest.mark.browser
 SLOW_MS = 20_000
 """Timeout for steps that wait for the server or for plotly.js (≈ 1.2 MB) under a loaded CI."""
 FHA = "FHA-25C-50-L"
+REDOC_BRANDING = "https://cdn.redoc.ly/redoc/logo-mini.svg"
 
 
 @dataclass
@@ -134,3 +135,28 @@ def test_sales_page_and_its_quote_document_under_the_policy(
     expect(document.locator("#speed-torque .main-svg").first).to_be_visible()
     assert console.csp_violations == []
     assert console.errors == []
+
+
+@pytest.mark.parametrize(
+    ("path", "drawn"),
+    [("/docs", ".swagger-ui .opblock"), ("/redoc", "[data-section-id]")],
+    ids=["swagger-ui", "redoc"],
+)
+def test_api_docs_render_offline_under_their_policy(
+    context: tuple[BrowserContext, Console], site: SalesSite, path: str, drawn: str
+) -> None:
+    """The docs load nothing from outside the app (they once loaded from a CDN)."""
+    browser_context, console = context
+    requested: list[str] = []
+    browser_context.on("request", lambda request: requested.append(request.url))
+    page = browser_context.new_page()
+    page.goto(path)
+    expect(page.locator(drawn).first).to_be_visible(timeout=SLOW_MS)
+    assert requested
+    # ReDoc's search worker comes from a blob: URL of the page's own origin.
+    outside = {u for u in requested if not u.removeprefix("blob:").startswith(site.url)}
+    # The one exception: ReDoc's bundle asks for its vendor's logo in the footer; the
+    # policy refuses it (nothing but the app's own origin is allowed) and the page works.
+    assert outside <= {REDOC_BRANDING}
+    violations = console.csp_violations
+    assert all(REDOC_BRANDING in v for v in violations), violations

@@ -25,11 +25,10 @@ styles are inline, into a window that inherits the sales page's policy.
 plotly.js needs no ``'unsafe-eval'`` for the 2-D charts the pages draw.
 
 The API documentation pages (``/docs``, ``/redoc``, Swagger UI's OAuth2 redirect)
-load Swagger UI and ReDoc from FastAPI's CDN (jsDelivr) and Swagger UI starts from
-an inline script. They get :func:`docs_csp`: the CDN origin for scripts and styles,
-and each inline script of the page by its SHA-256 hash, computed from the page as
-it is sent — no ``'unsafe-inline'`` for scripts. Serving Swagger UI and ReDoc from
-the app would remove the CDN from the policy; that is a separate change.
+load Swagger UI and ReDoc from the app (fastapi-offline's assets), and Swagger UI
+starts from an inline script. They get :func:`docs_csp`: each inline script of the
+page by its SHA-256 hash, computed from the page as it is sent — no
+``'unsafe-inline'`` for scripts — and nothing from elsewhere.
 
 A ``Content-Security-Policy`` that a route sets itself (the quote document) is
 left as it is. Every header is only added when the response lacks it.
@@ -63,15 +62,6 @@ PAGE_CSP: Final = (
 )
 """The engineer's and the sales page (every HTML response outside the docs)."""
 
-DOCS_CDN: Final = "https://cdn.jsdelivr.net"
-"""Where FastAPI's ``/docs`` and ``/redoc`` take Swagger UI and ReDoc from."""
-
-DOCS_FAVICON: Final = "https://fastapi.tiangolo.com"
-"""FastAPI's default favicon of the docs pages."""
-
-REDOC_FONTS_CSS: Final = "https://fonts.googleapis.com"
-REDOC_FONTS: Final = "https://fonts.gstatic.com"
-
 _INLINE_SCRIPT = re.compile(rb"<script(?P<attributes>[^>]*)>(?P<body>.*?)</script\s*>", re.S | re.I)
 _SRC_ATTRIBUTE = re.compile(rb"\bsrc\s*=", re.I)
 
@@ -93,12 +83,10 @@ def inline_script_hashes(html: bytes) -> list[str]:
 
 def docs_csp(script_hashes: Iterable[str]) -> str:
     """The policy of the API documentation pages, allowing exactly these inline scripts."""
-    scripts = " ".join(["'self'", DOCS_CDN, *script_hashes])
+    scripts = " ".join(["'self'", *script_hashes])
     return (
-        f"default-src 'self'; script-src {scripts}; "
-        f"style-src 'self' 'unsafe-inline' {DOCS_CDN} {REDOC_FONTS_CSS}; "
-        f"img-src 'self' data: blob: {DOCS_FAVICON} {DOCS_CDN}; "
-        f"font-src 'self' data: {REDOC_FONTS}; connect-src 'self'; "
+        f"default-src 'self'; script-src {scripts}; style-src 'self' 'unsafe-inline'; "
+        "img-src 'self' data: blob:; font-src 'self' data:; connect-src 'self'; "
         # ReDoc's search index runs in a worker made from a blob: URL.
         "worker-src 'self' blob:; object-src 'none'; base-uri 'none'; form-action 'self'; "
         "frame-ancestors 'none'"
@@ -176,22 +164,18 @@ class SecurityHeadersMiddleware:
         await self.app(inner_scope, receive, hold)
 
 
-def _docs_paths(app: FastAPI) -> list[str]:
-    paths = [app.docs_url, app.redoc_url]
-    if app.docs_url is not None:
-        paths.append(app.swagger_ui_oauth2_redirect_url)
-    return [path for path in paths if path]
+def install(app: FastAPI, *, docs_paths: Iterable[str] = ()) -> None:
+    """Wrap ``app`` (outermost, around its error handling) in the middleware; idempotent.
 
-
-def install(app: FastAPI) -> None:
-    """Wrap ``app`` (outermost, around its error handling) in the middleware; idempotent."""
+    ``docs_paths`` are the API documentation pages, which get :func:`docs_csp`.
+    """
     if getattr(app.state, "security_headers", False):
         return
     app.state.security_headers = True
     build_stack = app.build_middleware_stack
 
     def build_with_headers() -> ASGIApp:
-        return SecurityHeadersMiddleware(build_stack(), docs_paths=_docs_paths(app))
+        return SecurityHeadersMiddleware(build_stack(), docs_paths=docs_paths)
 
     # Starlette builds the stack on the first request; the error middleware it puts
     # outermost answers unhandled exceptions itself, so add_middleware would miss 500s.
