@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import itertools
-import uuid
 from collections.abc import Iterator
 from datetime import UTC, datetime
 from typing import Any
@@ -16,17 +15,14 @@ from actuator_selection.api.deps import (
     SessionDep,
     catalogue_snapshot,
     reads_only,
-    write_transaction,
 )
-from actuator_selection.api.drive import DriveContext
+from actuator_selection.api.drive import CatalogueSnapshot, DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.selections import size_selection, store_selections
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
 from actuator_selection.core.errors import DomainError
-from actuator_selection.core.selection import Application, Selection, select
-from actuator_selection.db.repositories import (
-    SelectionRepository,
-)
+from actuator_selection.core.selection import Application, Selection
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_CANDIDATES_WITH_CONTROLLERS,
@@ -37,7 +33,7 @@ from actuator_selection.schemas.batch import (
     result_body,
 )
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
-from actuator_selection.schemas.selections import RANKING_RULE, SelectionOut
+from actuator_selection.schemas.selections import RANKING_RULE
 
 router = APIRouter(tags=["selections"])
 
@@ -138,45 +134,25 @@ class _Drives:
 def _store(
     request: Request,
     body: BatchSelectionRequest,
-    actuators: list[Actuator],
     apps: list[Application],
-    *,
-    catalogue_version: int,
+    catalogue: CatalogueSnapshot,
     context: DriveContext,
 ) -> list[str | None]:
     """Store each case as POST /selections does (the whole ranking); their ids.
 
     The selections are computed first and then written in a transaction of their
-    own, committed before this returns (so before the 201): the request's own
-    transaction only reads (the endpoint is :func:`reads_only`), and on SQLite the
-    write lock is held for the inserts alone, not for the computation.
+    own (the request's own transaction only reads: the endpoint is :func:`reads_only`),
+    so on SQLite the write lock is held for the inserts alone.
     """
     created_at = datetime.now(UTC)
-    rows = []
-    for case, app in zip(body.cases, apps, strict=True):
-        allowed = None if case.models is None else set(case.models)
-        catalogue = [a for a in actuators if allowed is None or a.model in allowed]
-        speed = case.load.speed_rpm
-        out = SelectionOut.build(
-            id=str(uuid.uuid4()),
-            created_at=created_at,
-            catalogue_version=catalogue_version,
-            request=case,
-            selection=select(catalogue, app),
-            drives={a.model: context.options(a, speed_rpm=speed) for a in catalogue},
+    sized = [
+        size_selection(
+            case, app, catalogue.actuators_of(case.models), catalogue, context, created_at
         )
-        rows.append((out, case.model_dump(mode="json"), out.model_dump(mode="json")))
-    with write_transaction(request) as session:
-        repository = SelectionRepository(session)
-        for out, stored_request, stored_response in rows:
-            repository.add(
-                id=out.id,
-                created_at=out.created_at,
-                catalogue_version=catalogue_version,
-                request=stored_request,
-                response=stored_response,
-            )
-    return [out.id for out, _, _ in rows]
+        for case, app in zip(body.cases, apps, strict=True)
+    ]
+    store_selections(request, sized)
+    return [s.out.id for s in sized]
 
 
 def _candidates(
@@ -231,7 +207,7 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
     context = DriveContext(catalogue)
     ids: list[str | None] = [None] * len(apps)
     if body.store:
-        ids = _store(request, body, actuators, apps, catalogue_version=version, context=context)
+        ids = _store(request, body, apps, catalogue, context)
     chunks = _result_chunks(body, actuators, apps, ids, _Drives(context))
     head = (
         b'{"catalogue_version":'

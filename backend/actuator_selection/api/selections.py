@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import uuid
+from collections.abc import Sequence
+from dataclasses import dataclass
 from datetime import UTC, datetime
+from typing import Any
 
 import pydantic_core
 from fastapi import APIRouter, Request, Response
@@ -14,9 +17,10 @@ from actuator_selection.api.deps import (
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.drive import DriveContext
+from actuator_selection.api.drive import CatalogueSnapshot, DriveContext
 from actuator_selection.api.errors import RequestFieldError, ResourceNotFoundError, field_error
-from actuator_selection.core.selection import select
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.selection import Application, select
 from actuator_selection.db.repositories import (
     SelectionRepository,
 )
@@ -47,32 +51,61 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
         ]
         if unknown:
             raise RequestFieldError(unknown)
-    selection = select(actuators, body.to_core())
-    drive = DriveContext(catalogue)
-    speed = body.load.speed_rpm
-    out = SelectionOut.build(
-        id=str(uuid.uuid4()),
-        created_at=datetime.now(UTC),
-        catalogue_version=catalogue.version,
-        request=body,
-        selection=selection,
-        drives={a.model: drive.options(a, speed_rpm=speed) for a in actuators},
+    sized = size_selection(
+        body, body.to_core(), actuators, catalogue, DriveContext(catalogue), datetime.now(UTC)
     )
-    stored_request, stored_response = body.model_dump(mode="json"), out.model_dump(mode="json")
-    # Computed from the read snapshot above; stored in a short write transaction of its own.
-    with write_transaction(request) as writer:
-        SelectionRepository(writer).add(
-            id=out.id,
-            created_at=out.created_at,
-            catalogue_version=out.catalogue_version,
-            request=stored_request,
-            response=stored_response,
-        )
+    store_selections(request, [sized])
     # Encoded once from the dump just stored: returning the model would have FastAPI
     # validate and encode the ≈ 1 MB again.
     return Response(
-        pydantic_core.to_json(stored_response), status_code=201, media_type="application/json"
+        pydantic_core.to_json(sized.response), status_code=201, media_type="application/json"
     )
+
+
+@dataclass(frozen=True, slots=True)
+class SizedSelection:
+    """A selection computed for storing: its answer, and the request and answer as JSON."""
+
+    out: SelectionOut
+    request: dict[str, Any]
+    response: dict[str, Any]
+
+
+def size_selection(
+    body: SelectionRequest,
+    app: Application,
+    actuators: Sequence[Actuator],
+    catalogue: CatalogueSnapshot,
+    drive: DriveContext,
+    created_at: datetime,
+) -> SizedSelection:
+    """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
+    out = SelectionOut.build(
+        id=str(uuid.uuid4()),
+        created_at=created_at,
+        catalogue_version=catalogue.version,
+        request=body,
+        selection=select(actuators, app),
+        drives={a.model: drive.options(a, speed_rpm=body.load.speed_rpm) for a in actuators},
+    )
+    return SizedSelection(
+        out=out, request=body.model_dump(mode="json"), response=out.model_dump(mode="json")
+    )
+
+
+def store_selections(request: Request, sized: Sequence[SizedSelection]) -> None:
+    """Store selections computed from a read snapshot, in a short write transaction of
+    their own, committed before this returns (so before the 201)."""
+    with write_transaction(request) as writer:
+        repository = SelectionRepository(writer)
+        for s in sized:
+            repository.add(
+                id=s.out.id,
+                created_at=s.out.created_at,
+                catalogue_version=s.out.catalogue_version,
+                request=s.request,
+                response=s.response,
+            )
 
 
 @router.get(
