@@ -151,6 +151,9 @@ def body_too_large(limit: int | None) -> JSONResponse:
     return error_response(413, [field_error(["body"], message, "body_too_large")])
 
 
+_FASTAPI_BODY_ERROR = "There was an error parsing the body"
+"""FastAPI's 400 for a body its JSON parser gave up on (e.g. nested past its depth)."""
+
 _HTTP_ERRORS: dict[int, tuple[list[str | int], str]] = {
     400: (["body"], "json_invalid"),
     404: (["path"], "not_found"),
@@ -168,7 +171,7 @@ def _http_error(request: Request, exc: Exception) -> JSONResponse:
     loc, type_ = _HTTP_ERRORS.get(exc.status_code, (["request"], f"http_{exc.status_code}"))
     message = (
         "the body could not be parsed as JSON (malformed, or nested too deeply)"
-        if exc.status_code == 400
+        if exc.detail == _FASTAPI_BODY_ERROR
         else str(exc.detail)
     )
     return error_response(exc.status_code, [field_error(loc, message, type_)], exc.headers)
