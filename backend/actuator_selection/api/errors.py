@@ -129,7 +129,8 @@ def _validation(_: Request, exc: Exception) -> JSONResponse:
 def _domain(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, DomainError)
     loc: list[str | int] = [exc.where, *exc.field.split(".")]
-    return error_response(exc.http_status, [field_error(loc, exc.message, type(exc).__name__)])
+    code = exc.code or type(exc).__name__
+    return error_response(exc.http_status, [field_error(loc, exc.message, code)])
 
 
 def _conflict(_: Request, exc: Exception) -> JSONResponse:

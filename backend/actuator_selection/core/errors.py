@@ -23,6 +23,8 @@ class DomainError(ValueError):
     """
 
     http_status = 422
+    code: str | None = None
+    """The error's ``type`` in the API; None: the class name."""
 
     def __init__(self, field: str, message: str, *, where: str = "body") -> None:
         super().__init__(f"{field}: {message}")
@@ -43,12 +45,14 @@ class NotFoundError(DomainError):
     """A named item that does not exist (maps to 404)."""
 
     http_status = 404
+    code = "not_found"
 
 
 class ConflictError(DomainError):
     """A request that the stored state no longer allows (maps to 409)."""
 
     http_status = 409
+    code = "conflict"
 
 
 class MissingDataError(DomainError):

@@ -200,16 +200,23 @@ def size_selection(
 
 
 def store_selections(writer: Writer, sized: Iterable[SizedSelection]) -> None:
-    """Store selections in one short write transaction, committed before this returns."""
+    """Store selections in one short write transaction, committed before this returns.
+
+    The answers are compressed before the transaction begins: on SQLite the write lock
+    is held for the inserts alone.
+    """
+    rows = [
+        (s, gzip.compress(s.answer, compresslevel=STORE_COMPRESSION, mtime=0)) for s in sized
+    ]
     with writer() as session:
         repository = SelectionRepository(session)
-        for s in sized:
+        for s, answer_gzip in rows:
             repository.add(
                 id=s.id,
                 created_at=s.created_at,
                 catalogue_version=s.catalogue_version,
                 request=s.request,
-                answer_gzip=gzip.compress(s.answer, compresslevel=STORE_COMPRESSION, mtime=0),
+                answer_gzip=answer_gzip,
             )
 
 
