@@ -63,12 +63,17 @@ class CatalogueSnapshot:
 class CatalogueCache:
     """The catalogue in memory, keyed by its version and checked on every request.
 
-    A request pins the version (one indexed read under a share lock, see
-    ``CatalogueVersionRepository.pin``); when it is the one held, the catalogue is
-    not read again (the tables cost 7–8 ms a request). Every catalogue change raises
+    A request reads the version (one indexed row, no lock); when it is the one held,
+    the catalogue is not read again (the tables cost 7–8 ms a request), and the
+    snapshot held is that version's data, read whole. Every catalogue change raises
     the version, so each process of a deployment sees a change at its next request,
-    whichever process or replica made it. A snapshot is read whole in the request's
-    own pinned transaction and replaces the one held only when it is newer.
+    whichever process or replica made it.
+
+    Only when the version differs is the catalogue read, after pinning the version
+    (``CatalogueVersionRepository.pin``: on PostgreSQL a share lock, so that the rows
+    read are the version's own). The pin is kept off the common path: a row lock
+    writes to the row, so the read transaction would have to wait for a WAL flush at
+    its commit (measured 4.3 ms against 0.5 ms for the plain read).
     """
 
     def __init__(self) -> None:
@@ -76,9 +81,12 @@ class CatalogueCache:
         self._held: CatalogueSnapshot | None = None
 
     def snapshot(self, session: Session) -> CatalogueSnapshot:
-        """The catalogue at the version ``session``'s transaction pins."""
-        version = CatalogueVersionRepository(session).pin()
+        """The catalogue at the version ``session``'s transaction reads."""
+        versions = CatalogueVersionRepository(session)
         held = self._held
+        if held is not None and held.version == versions.current():
+            return held
+        version = versions.pin()
         if held is not None and held.version == version:
             return held
         fresh = CatalogueSnapshot.read(session, version)
