@@ -154,6 +154,9 @@ const TEXTS = {
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "Dauerbetrieb",
 
+    "check.finding.against": "{value}, Grenze {limit}",
+    "check.finding.missing": "nicht im Katalog: {what}",
+
     "ref.Table": "Tabelle",
     "ref.Eq.": "Gl.",
     "ref.Fig.": "Abb.",
@@ -438,6 +441,9 @@ const TEXTS = {
     "check.short.peak_torque": "T_1 ≤ T_max",
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "continuous duty",
+
+    "check.finding.against": "{value}, limit {limit}",
+    "check.finding.missing": "not in the catalogue: {what}",
 
     "ref.Table": "Table",
     "ref.Eq.": "Eq.",
