@@ -27,15 +27,19 @@ depends_on: str | Sequence[str] | None = None
 _JSON = sa.JSON().with_variant(JSONB(), "postgresql")
 
 
-def _table(*columns: sa.Column[object]) -> sa.Table:
-    return sa.table("selections", sa.column("id", sa.String), *columns)
+_SELECTIONS = sa.table(
+    "selections",
+    sa.column("id", sa.String),
+    sa.column("response", _JSON),
+    sa.column("answer_gzip", sa.LargeBinary),
+)
 
 
 def upgrade() -> None:
     with op.batch_alter_table("selections") as batch_op:
         batch_op.add_column(sa.Column("answer_gzip", sa.LargeBinary(), nullable=True))
     connection = op.get_bind()
-    old = _table(sa.column("response", _JSON), sa.column("answer_gzip", sa.LargeBinary))
+    old = _SELECTIONS
     for row in connection.execute(sa.select(old.c.id, old.c.response)).all():
         data = json.dumps(row.response, ensure_ascii=False, separators=(",", ":")).encode()
         connection.execute(
@@ -52,7 +56,7 @@ def downgrade() -> None:
     with op.batch_alter_table("selections") as batch_op:
         batch_op.add_column(sa.Column("response", _JSON, nullable=True))
     connection = op.get_bind()
-    new = _table(sa.column("response", _JSON), sa.column("answer_gzip", sa.LargeBinary))
+    new = _SELECTIONS
     for row in connection.execute(sa.select(new.c.id, new.c.answer_gzip)).all():
         connection.execute(
             new.update()

@@ -61,7 +61,19 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
     store_selections(partial(write_transaction, request), [sized])
     # The answer is JSON already (see services.selections); returning a model would
     # have FastAPI validate and encode it again.
-    return Response(sized.answer, status_code=201, media_type="application/json")
+    return _json(request, sized.answer, sized.answer_gzip, status_code=201)
+
+
+def _accepts_gzip(request: Request) -> bool:
+    return "gzip" in request.headers.get("accept-encoding", "")
+
+
+def _json(request: Request, plain: bytes, compressed: bytes, *, status_code: int = 200) -> Response:
+    """The answer as the client takes it: the stored gzip bytes, or the JSON."""
+    if _accepts_gzip(request):
+        headers = {"Content-Encoding": "gzip", "Vary": "Accept-Encoding"}
+        return Response(compressed, status_code, headers, media_type="application/json")
+    return Response(plain, status_code, media_type="application/json")
 
 
 @router.get(

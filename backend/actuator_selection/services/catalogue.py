@@ -1,15 +1,16 @@
 """The catalogue a selection reads, held in memory by version, and its drive options.
 
 Drive options are Table 521.1 matching + Eq. 521.2 for the candidates of a request.
-Matching depends only on the actuator's interface, and a whole catalogue has a
-handful of distinct interfaces, so it is computed once per interface and request.
+Matching depends only on the actuator's interface and the controllers, and a whole
+catalogue has a handful of distinct interfaces, so it is computed once per interface
+and catalogue version, and kept with the snapshot.
 """
 
 from __future__ import annotations
 
 import threading
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from sqlalchemy.orm import Session
@@ -19,6 +20,7 @@ from actuator_selection.core.compatibility import (
     ActuatorInterface,
     CompatibilityResult,
     Controller,
+    MatchVerdict,
     match_controllers,
 )
 from actuator_selection.core.drive import DriveOptions, drive_options
@@ -37,6 +39,33 @@ class CatalogueSnapshot:
     controllers: tuple[Controller, ...]
     buses: tuple[DcBusClass, ...]
     interfaces: Mapping[str, ActuatorInterface]
+    _matching: dict[ActuatorInterface, CompatibilityResult] = field(
+        default_factory=dict, repr=False, compare=False
+    )
+    """Table 521.1 matched per distinct interface, filled as requests ask for it."""
+    _excluded: dict[ActuatorInterface, int] = field(default_factory=dict, repr=False, compare=False)
+    """How many controllers each interface's matching excludes."""
+
+    def excluded(self, interface: ActuatorInterface) -> int:
+        """How many controllers Table 521.1 excludes for ``interface``."""
+        found = self._excluded.get(interface)
+        if found is None:
+            matches = self.matching(interface).matches
+            found = self._excluded.setdefault(
+                interface, sum(m.verdict is MatchVerdict.EXCLUDED for m in matches)
+            )
+        return found
+
+    def matching(self, interface: ActuatorInterface) -> CompatibilityResult:
+        """Every controller matched against ``interface`` (Table 521.1), computed once per
+        catalogue version: it depends on the catalogue alone. Threads that race on a new
+        interface compute the same result; the dict keeps one."""
+        found = self._matching.get(interface)
+        if found is None:
+            found = self._matching.setdefault(
+                interface, match_controllers(actuator=interface, controllers=self.controllers)
+            )
+        return found
 
     @classmethod
     def read(cls, session: Session, version: int) -> CatalogueSnapshot:
@@ -97,30 +126,23 @@ class CatalogueCache:
 
 
 class DriveContext:
-    """The controller data of one request."""
+    """The drive options of one request's candidates."""
 
     def __init__(self, snapshot: CatalogueSnapshot) -> None:
-        self._controllers = snapshot.controllers
-        self._buses = snapshot.buses
-        self._interfaces = snapshot.interfaces
-        self._matching: dict[ActuatorInterface, CompatibilityResult] = {}
-
-    def _matching_for(self, interface: ActuatorInterface) -> CompatibilityResult:
-        """Every controller matched against ``interface`` (Table 521.1), computed once."""
-        found = self._matching.get(interface)
-        if found is None:
-            found = self._matching[interface] = match_controllers(
-                actuator=interface, controllers=self._controllers
-            )
-        return found
+        self._snapshot = snapshot
 
     def options(self, actuator: Actuator, *, speed_rpm: float) -> DriveOptions:
         """Controllers not excluded for ``actuator``, with the voltage check at ``speed_rpm``."""
-        interface = self._interfaces[actuator.model]
+        snapshot = self._snapshot
+        interface = snapshot.interfaces[actuator.model]
         return drive_options(
             actuator=actuator,
             interface=interface,
-            matching=self._matching_for(interface),
-            buses=self._buses,
+            matching=snapshot.matching(interface),
+            buses=snapshot.buses,
             speed_rpm=speed_rpm,
         )
+
+    def excluded(self, actuator: Actuator) -> int:
+        """How many controllers Table 521.1 excludes for ``actuator``."""
+        return self._snapshot.excluded(self._snapshot.interfaces[actuator.model])
