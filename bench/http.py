@@ -3,7 +3,8 @@
 Starts ``python -m actuator_selection serve`` (uvicorn) on a free loopback port on a
 fresh database seeded with the starter catalogue, runs ``--clients`` keep-alive
 clients for ``--seconds`` against each endpoint in turn, and prints requests per
-second, the ratio to ``GET /api/v1/health`` measured in the same run, and every
+second, the ratio to ``GET /api/v1/health`` measured in the same run, the server
+process's CPU time per request (with workers > 1: the master's only), and every
 answer that was not 2xx (there should be none).
 
     python -m bench.http                       # PostgreSQL at $TEST_POSTGRES_URL if it answers
@@ -118,6 +119,12 @@ def _load(
     return total / elapsed, failures, sum(sizes) // max(1, len(sizes))
 
 
+def _cpu_s(pid: int) -> float:
+    """CPU time the process has used so far, user + system [s] (Linux /proc)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def _peak_rss_mb(pid: int) -> float:
     """The process's peak resident memory [MB] (Linux /proc)."""
     for line in Path(f"/proc/{pid}/status").read_text().splitlines():
@@ -210,13 +217,16 @@ def main() -> None:
                           f"/api/v1/selections/{stored}", None))  # fmt: skip
             reference = None
             for name, method, path, body in cases:
+                cpu = _cpu_s(process.pid)
                 rate, failures, size = _load(
                     base, method, path, body, clients=args.clients, seconds=args.seconds
                 )
+                cpu_ms = (_cpu_s(process.pid) - cpu) / (rate * args.seconds) * 1e3
                 reference = reference or rate
                 print(
                     f"  {name:36s} {rate:8.1f} req/s  {rate / reference:5.2f}× /health  "
-                    f"answer {size / 1024:8.1f} KiB  non-2xx {dict(failures) or 0}"
+                    f"server CPU {cpu_ms:5.2f} ms/req  answer {size / 1024:6.1f} KiB  "
+                    f"non-2xx {dict(failures) or 0}"
                 )
             print(f"  stored selection row (answer gzip + request): "
                   f"{_stored_row_bytes(url) / 1024:.1f} KiB on average")  # fmt: skip

@@ -4,14 +4,19 @@ from __future__ import annotations
 
 import gc
 import math
+import random
 from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
+from sqlalchemy import Connection
+from sqlalchemy.orm import Session
 from tests import worked_example
 
+from actuator_selection.core.selection import select
+from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.main import GC_THRESHOLDS, tune_gc
-from actuator_selection.schemas.selections import SelectionOut
+from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 
 WORKED_EXAMPLE: dict[str, Any] = {
     **worked_example.request(),
@@ -346,3 +351,51 @@ def test_a_served_process_collects_rarely_but_never_switches_the_collector_off()
         assert gc.isenabled()
     finally:
         gc.set_threshold(*before)
+
+
+def test_answer_equals_the_scalar_flowchart_check_by_check(
+    client: TestClient, connection: Connection
+) -> None:
+    """The answer is computed by the vectorised flowchart, each candidate's detail by the
+    scalar one: the same order, verdicts, torques and checks, compared with ==."""
+    actuators = [r.actuator for r in CatalogueRepository(Session(connection)).actuators()]
+    rng = random.Random(3)
+    for _ in range(4):
+        body = {
+            "load": {
+                "speed_rpm": rng.uniform(5, 150),
+                "torque_nm": rng.uniform(0, 80),
+                "inertia_kgm2": rng.uniform(0, 3),
+            },
+            "cycle": {
+                "accel_s": rng.uniform(0.05, 0.5),
+                "constant_s": rng.uniform(0, 1),
+                "decel_s": rng.uniform(0.05, 0.5),
+                "pause_s": rng.uniform(0, 2),
+            },
+            "high_dynamics": rng.random() < 0.5,
+        }
+        selection = post(client, body).json()
+        scalar = select(actuators, SelectionRequest.model_validate(body).to_core())
+        assert [c["model"] for c in selection["candidates"]] == [
+            c.actuator.model for c in scalar.candidates
+        ]
+        assert selection["mean_speed_rpm"] == scalar.mean_speed_rpm
+        assert selection["duty_cycle_percent"] == scalar.duty_cycle_percent
+        assert selection["cycle_time_s"] == scalar.cycle_time_s
+        for lean in selection["candidates"]:
+            url = f"/api/v1/selections/{selection['id']}/candidates/{lean['model']}"
+            detail = client.get(url).json()
+            for key in ("verdict", "accel_torque_nm", "constant_torque_nm", "decel_torque_nm",
+                        "rms_torque_nm", "controllers_excluded"):  # fmt: skip
+                assert lean[key] == detail[key], (lean["model"], key)
+            full = [
+                {k: c[k] for k in ("name", "status", "value", "limit")}
+                | ({"approximate": True} if c["approximate"] else {})
+                for c in detail["checks"]
+            ]
+            assert [{k: v for k, v in c.items() if k != "missing"} for c in lean["checks"]] == full
+            for c, d in zip(lean["checks"], detail["checks"], strict=True):
+                if "missing" in c:
+                    expected = f"no data: the catalogue gives no {c['missing']} for this actuator"
+                    assert d["message"] == expected

@@ -148,9 +148,7 @@ def _store(
     """
     created_at = datetime.now(UTC)
     sized = [
-        size_selection(
-            case, app, catalogue.actuators_of(case.models), catalogue, context, created_at
-        )
+        size_selection(case, app, catalogue.actuators_of(case.models), catalogue, created_at)
         for case, app in zip(body.cases, apps, strict=True)
     ]
     store_selections(partial(write_transaction, request), sized)

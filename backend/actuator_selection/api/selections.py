@@ -22,7 +22,6 @@ from actuator_selection.schemas.selections import (
     SelectionOut,
     SelectionRequest,
 )
-from actuator_selection.services.catalogue import DriveContext
 from actuator_selection.services.selections import (
     candidate_detail,
     size_selection,
@@ -55,9 +54,7 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
         ]
         if unknown:
             raise RequestFieldError(unknown)
-    sized = size_selection(
-        body, body.to_core(), actuators, catalogue, DriveContext(catalogue), datetime.now(UTC)
-    )
+    sized = size_selection(body, body.to_core(), actuators, catalogue, datetime.now(UTC))
     store_selections(partial(write_transaction, request), [sized])
     # The answer is JSON already (see services.selections); returning a model would
     # have FastAPI validate and encode it again.

@@ -23,10 +23,23 @@ from actuator_selection.core.compatibility import (
     MatchVerdict,
     match_controllers,
 )
-from actuator_selection.core.drive import DriveOptions, drive_options
+from actuator_selection.core.drive import DriveOptions, drive_options, shared_bus_classes
 from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+
+
+@dataclass(frozen=True, slots=True)
+class MatchGroup:
+    """Controllers that match an interface alike (Table 521.1) and share the same DC bus
+    classes with it, so that they share one voltage check for any actuator of it."""
+
+    level: str
+    missing: tuple[str, ...]
+    shared: tuple[DcBusClass, ...]
+    controllers: tuple[tuple[int, int], ...]
+    """Each controller's place in the matching's best-first order, and its index into
+    :attr:`CatalogueSnapshot.controllers`, best first."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -45,6 +58,38 @@ class CatalogueSnapshot:
     """Table 521.1 matched per distinct interface, filled as requests ask for it."""
     _excluded: dict[ActuatorInterface, int] = field(default_factory=dict, repr=False, compare=False)
     """How many controllers each interface's matching excludes."""
+    _groups: dict[ActuatorInterface, tuple[MatchGroup, ...]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
+    """The controllers not excluded per interface, grouped (:meth:`match_groups`)."""
+
+    def match_groups(self, interface: ActuatorInterface) -> tuple[MatchGroup, ...]:
+        """The controllers not excluded for ``interface``, best first, grouped by level,
+        missing criteria and shared DC bus classes; computed once per version."""
+        found = self._groups.get(interface)
+        if found is None:
+            index = {c: i for i, c in enumerate(self.controllers)}
+            groups: dict[
+                tuple[str, tuple[str, ...], tuple[DcBusClass, ...]], list[tuple[int, int]]
+            ] = {}
+            for place, m in enumerate(self.matching(interface).matches):
+                if m.verdict is MatchVerdict.EXCLUDED:
+                    continue
+                shared = shared_bus_classes(
+                    interface=interface, controller=m.controller, buses=self.buses
+                )
+                missing = tuple(r.criterion.value for r in m.no_data)
+                groups.setdefault((m.verdict.value, missing, shared), []).append(
+                    (place, index[m.controller])
+                )
+            found = self._groups.setdefault(
+                interface,
+                tuple(
+                    MatchGroup(level, missing, shared, tuple(ids))
+                    for (level, missing, shared), ids in groups.items()
+                ),
+            )
+        return found
 
     def excluded(self, interface: ActuatorInterface) -> int:
         """How many controllers Table 521.1 excludes for ``interface``."""

@@ -24,15 +24,23 @@ from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
 
+import numpy as np
 import pydantic_core
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import RULES, Check
-from actuator_selection.core.compatibility import Controller
-from actuator_selection.core.drive import DriveOption, DriveOptions
+from actuator_selection.core.batch import (
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    BatchEvaluation,
+    evaluate_batch,
+)
+from actuator_selection.core.checks import RULES
+from actuator_selection.core.cycle import duty_cycle_percent, mean_speed_rpm
+from actuator_selection.core.drive import shared_voltage_check
+from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.core.errors import ConflictError, NotFoundError
-from actuator_selection.core.selection import Application, Candidate, Verdict, evaluate, select
+from actuator_selection.core.selection import Application, Verdict, evaluate, select, size_key
 from actuator_selection.db.repositories import CatalogueRepository, SelectionRepository
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.selections import (
@@ -72,39 +80,82 @@ class SizedSelection:
     """The same, gzip-compressed: stored, and sent to clients that accept gzip."""
 
 
-def _check(check: Check) -> JSON:
-    out: JSON = {
-        "name": check.name,
-        "status": check.status.value,
-        "value": check.value,
-        "limit": check.limit,
-    }
-    if check.approximate:
-        out["approximate"] = True
-    if check.missing is not None:
-        out["missing"] = check.missing
+def _checks(ev: BatchEvaluation) -> list[list[JSON]]:
+    """Each actuator's checks of the (single) case in ``ev``, as the answer lists them:
+    what :meth:`~actuator_selection.core.checks.Rule.check` reports, less its words."""
+    names = ev.check_names
+    statuses = [[STATUS_BY_CODE[c].value for c in row] for row in ev.statuses[0].tolist()]
+    rows = zip(
+        statuses,
+        ev.values[0].tolist(),
+        ev.limits[0].tolist(),
+        ev.approximate[0].tolist(),
+        ev.first_missing[0].tolist(),
+        strict=True,
+    )
+    out = []
+    for status_row, value_row, limit_row, approximate_row, missing_row in rows:
+        checks = []
+        for k, name in enumerate(names):
+            value, limit = value_row[k], limit_row[k]
+            check: JSON = {
+                "name": name,
+                "status": status_row[k],
+                "value": None if value != value else value,  # NaN: unknown
+                "limit": None if limit != limit else limit,
+            }
+            if approximate_row[k]:
+                check["approximate"] = True
+            if missing_row[k] >= 0:
+                check["missing"] = ev.missing_what[k][missing_row[k]]
+            checks.append(check)
+        out.append(checks)
     return out
 
 
 class _DriveOptionGroups:
-    """Groups a candidate's drive options and numbers the controllers they refer to."""
+    """A selection's drive options: grouped per candidate, each controller numbered once.
 
-    def __init__(self) -> None:
-        self.controllers: dict[Controller, int] = {}
+    The grouping by match and shared DC bus classes is the catalogue's
+    (:meth:`CatalogueSnapshot.match_groups`); here each group gets the candidate's
+    voltage check (Eq. 521.2 at n_2), and groups whose checks come out equal merge.
+    """
 
-    def groups(self, drive: DriveOptions) -> list[JSON]:
-        """Options best first, those alike in level, missing data and voltage check as one."""
-        grouped: dict[tuple[Any, ...], JSON] = {}
-        for option in drive.options:
-            key = (option.match.verdict, option.match.no_data, option.voltage)
-            group = grouped.get(key)
-            if group is None:
-                group = grouped[key] = self._group(option)
-            group["controllers"].append(self._index(option.match.controller))
-        return list(grouped.values())
+    def __init__(self, catalogue: CatalogueSnapshot) -> None:
+        self._catalogue = catalogue
+        self._numbers: dict[int, int] = {}
+        """Index into the snapshot's controllers → index into the answer's."""
+
+    def groups(self, actuator: Actuator, speed_rpm: float) -> list[JSON]:
+        """``actuator``'s drive options at n_2 = ``speed_rpm``, best first."""
+        interface = self._catalogue.interfaces[actuator.model]
+        voltages: dict[tuple[DcBusClass, ...], JSON] = {}
+        merged: dict[tuple[Any, ...], JSON] = {}
+        places: dict[tuple[Any, ...], list[tuple[int, int]]] = {}
+        for g in self._catalogue.match_groups(interface):
+            voltage = voltages.get(g.shared)
+            if voltage is None:
+                v = shared_voltage_check(
+                    actuator=actuator, interface=interface, shared=g.shared, speed_rpm=speed_rpm
+                )
+                voltage = voltages[g.shared] = {
+                    "status": v.status.value,
+                    "value": v.value,
+                    "limit": v.limit,
+                    "reference": v.reference,
+                }
+            key = (g.level, g.missing, *voltage.values())
+            if key not in merged:
+                merged[key] = {"level": g.level, "missing": list(g.missing), "voltage": voltage}
+                places[key] = []
+            places[key].extend(g.controllers)
+        for key, group in merged.items():  # merged groups: best first again
+            group["controllers"] = [self._number(i) for _, i in sorted(places[key])]
+        return list(merged.values())
 
     def refs(self) -> list[JSON]:
-        """The ``controllers`` of the answer, in index order."""
+        """The ``controllers`` of the answer, in the order they were numbered."""
+        rows = self._catalogue.controllers
         return [
             {
                 "manufacturer": c.manufacturer,
@@ -112,54 +163,62 @@ class _DriveOptionGroups:
                 "variant": c.variant,
                 "source_row": c.source_row,
             }
-            for c in self.controllers
+            for c in (rows[i] for i in self._numbers)
         ]
 
-    def _index(self, controller: Controller) -> int:
-        index = self.controllers.get(controller)
-        if index is None:
-            index = self.controllers[controller] = len(self.controllers)
-        return index
-
-    @staticmethod
-    def _group(option: DriveOption) -> JSON:
-        v = option.voltage
-        return {
-            "level": option.match.verdict.value,
-            "missing": [r.criterion.value for r in option.match.no_data],
-            "controllers": [],
-            "voltage": {
-                "status": v.status.value,
-                "value": v.value,
-                "limit": v.limit,
-                "reference": v.reference,
-            },
-        }
+    def _number(self, index: int) -> int:
+        number = self._numbers.get(index)
+        if number is None:
+            number = self._numbers[index] = len(self._numbers)
+        return number
 
 
-def _candidate(
-    candidate: Candidate, drive: DriveContext, speed_rpm: float, groups: _DriveOptionGroups
-) -> JSON:
-    a = candidate.actuator
-    t = candidate.torques
-    if candidate.verdict is Verdict.UNSUITABLE:
-        excluded, groups_out = drive.excluded(a), None
-    else:
-        options = drive.options(a, speed_rpm=speed_rpm)
-        excluded, groups_out = options.excluded, groups.groups(options)
-    return {
-        "model": a.model,
-        "family": a.family,
-        "gear_ratio": a.gear_ratio,
-        "verdict": candidate.verdict.value,
-        "accel_torque_nm": t.accel_torque_nm if t else None,
-        "constant_torque_nm": t.constant_torque_nm if t else None,
-        "decel_torque_nm": t.decel_torque_nm if t else None,
-        "rms_torque_nm": t.rms_torque_nm if t else None,
-        "checks": [_check(c) for c in candidate.checks],
-        "controllers_excluded": excluded,
-        "drive_options": groups_out,
-    }
+def _candidates(
+    actuators: Sequence[Actuator],
+    app: Application,
+    catalogue: CatalogueSnapshot,
+    groups: _DriveOptionGroups,
+) -> list[JSON]:
+    """Every actuator's candidate for ``app``, ranked (``core.selection.ranking_key``).
+
+    The vectorised flowchart (``core.batch``) computes the checks, each number bit for
+    bit what the scalar one gives (tests/core/test_batch.py); the candidate's detail
+    runs the scalar one, with the checks in words.
+    """
+    ev = evaluate_batch(actuators, [app])
+    torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
+    if any(np.isinf(t).any() for t in torques):
+        # Finite inputs that overflow a torque: the scalar flowchart names the input (422).
+        select(actuators, app)
+    verdicts = ev.verdicts[0].tolist()
+    accel = ev.accel_torque_nm[0].tolist()
+    decel = ev.decel_torque_nm[0].tolist()
+    rms = ev.rms_torque_nm[0].tolist()
+    checks = _checks(ev)
+    load_torque = app.load.torque_nm
+    speed = app.pattern.speed_rpm
+    out = []
+    for j in sorted(range(len(actuators)), key=lambda j: (verdicts[j], *size_key(actuators[j]))):
+        a = actuators[j]
+        known = accel[j] == accel[j]  # NaN without J_A: no torques
+        verdict = VERDICT_BY_CODE[verdicts[j]]
+        options = None if verdict is Verdict.UNSUITABLE else groups.groups(a, speed)
+        out.append(
+            {
+                "model": a.model,
+                "family": a.family,
+                "gear_ratio": a.gear_ratio,
+                "verdict": verdict.value,
+                "accel_torque_nm": accel[j] if known else None,
+                "constant_torque_nm": load_torque if known else None,
+                "decel_torque_nm": decel[j] if known else None,
+                "rms_torque_nm": rms[j] if known else None,
+                "checks": checks[j],
+                "controllers_excluded": catalogue.excluded(catalogue.interfaces[a.model]),
+                "drive_options": options,
+            }
+        )
+    return out
 
 
 def size_selection(
@@ -167,14 +226,13 @@ def size_selection(
     app: Application,
     actuators: Sequence[Actuator],
     catalogue: CatalogueSnapshot,
-    drive: DriveContext,
     created_at: datetime,
 ) -> SizedSelection:
     """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
-    selection = select(actuators, app)
+    groups = _DriveOptionGroups(catalogue)
+    candidates = _candidates(actuators, app, catalogue, groups)
     speed = body.load.speed_rpm
-    groups = _DriveOptionGroups()
-    candidates = [_candidate(c, drive, speed, groups) for c in selection.candidates]
+    pattern = app.pattern
     request = body.model_dump(mode="json")
     load = app.load
     answer = {
@@ -190,9 +248,9 @@ def size_selection(
         "cycle": request["cycle"],
         "high_dynamics": body.high_dynamics,
         "models": body.models,
-        "cycle_time_s": selection.cycle_time_s,
-        "mean_speed_rpm": selection.mean_speed_rpm,
-        "duty_cycle_percent": selection.duty_cycle_percent,
+        "cycle_time_s": pattern.cycle_s,
+        "mean_speed_rpm": mean_speed_rpm(pattern),
+        "duty_cycle_percent": duty_cycle_percent(pattern),
         "ranking": RANKING_RULE,
         "check_rules": CHECK_RULES,
         "controllers": groups.refs(),
