@@ -14,8 +14,8 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.cli import main
 from actuator_selection.config import SEED_DIR
+from actuator_selection.core.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import (

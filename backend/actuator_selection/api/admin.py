@@ -46,15 +46,15 @@ from actuator_selection.api.uploads import (
     unsupported,
     unzip_csv,
 )
-from actuator_selection.db.admin import CatalogueAdminRepository
-from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.csvio import (
+from actuator_selection.core.csvio import (
     WHOLE_NUMBER_MAX,
     CatalogueFileError,
     Problem,
     to_json_values,
     write,
 )
+from actuator_selection.db.admin import CatalogueAdminRepository
+from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.seed import (
     ACTUATORS,

@@ -2,7 +2,7 @@
 
 Every write is validated by the rules of the seed files (the ``CsvSpec``s of
 ``db/seed.py`` and ``db/seed_controllers.py`` through
-:func:`~actuator_selection.db.csvio.check_values`), so the API and the seed
+:func:`~actuator_selection.core.csvio.check_values`), so the API and the seed
 loader cannot disagree on what a valid actuator or controller is. Every change
 raises the catalogue version; repositories flush, the request commits.
 """
@@ -17,9 +17,9 @@ from typing import Any
 from sqlalchemy import func, select
 from sqlalchemy.orm import Session, selectinload
 
+from actuator_selection.core.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.changes import set_values
-from actuator_selection.db.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,

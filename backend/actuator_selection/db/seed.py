@@ -29,8 +29,7 @@ from typing import Any
 from sqlalchemy import select
 from sqlalchemy.orm import Session, selectinload
 
-from actuator_selection.db.changes import FileChanges, retire_at, sync_rows
-from actuator_selection.db.csvio import (
+from actuator_selection.core.csvio import (
     CatalogueFileError,
     Column,
     CsvSpec,
@@ -41,6 +40,7 @@ from actuator_selection.db.csvio import (
     parse_rows,
     read,
 )
+from actuator_selection.db.changes import FileChanges, retire_at, sync_rows
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
 from actuator_selection.db.repositories import CatalogueVersionRepository
 from actuator_selection.db.seed_controllers import (

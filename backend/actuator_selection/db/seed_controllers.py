@@ -26,10 +26,7 @@ from actuator_selection.core.compatibility import (
     FeedbackSystem,
     parse_support_level,
 )
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.thermal import KtyCharacteristic, TemperatureSensor
-from actuator_selection.db.changes import FileChanges, delete_in, retire_at, sync_rows
-from actuator_selection.db.csvio import (
+from actuator_selection.core.csvio import (
     Column,
     CsvSpec,
     Problem,
@@ -38,6 +35,9 @@ from actuator_selection.db.csvio import (
     one_of,
     whole_number,
 )
+from actuator_selection.core.errors import DomainError
+from actuator_selection.core.thermal import KtyCharacteristic, TemperatureSensor
+from actuator_selection.db.changes import FileChanges, delete_in, retire_at, sync_rows
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,
