@@ -1,7 +1,7 @@
 """Catalogue writes for administrators: actuators, their zones, controllers, import/export.
 
 Every write is validated by the rules of the seed files (the ``CsvSpec``s of
-``db/seed.py`` and ``db/seed_controllers.py`` through
+``core/catalogue_files.py`` through
 :func:`~actuator_selection.core.csvio.check_values`), so the API and the seed
 loader cannot disagree on what a valid actuator or controller is. Every change
 raises the catalogue version; repositories flush, the request commits.
@@ -17,6 +17,16 @@ from typing import Any
 from sqlalchemy import func, select
 from sqlalchemy.orm import Session, selectinload
 
+from actuator_selection.core.catalogue_files import (
+    ACTUATORS,
+    BUS_CLASSES,
+    CONTROLLERS,
+    FAMILIES,
+    INTERFACES,
+    KTY_POINTS,
+    SENSOR_FITTINGS,
+    ZONE_POINTS,
+)
 from actuator_selection.core.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.changes import set_values
@@ -32,22 +42,12 @@ from actuator_selection.db.models import (
 )
 from actuator_selection.db.repositories import CatalogueVersionRepository
 from actuator_selection.db.seed import (
-    ACTUATORS,
-    FAMILIES,
-    ZONE_POINTS,
     CatalogueChanges,
     CatalogueFiles,
     apply_catalogue,
     zone_problems,
 )
-from actuator_selection.db.seed_controllers import (
-    BUS_CLASSES,
-    CONTROLLERS,
-    INTERFACES,
-    KTY_POINTS,
-    SENSOR_FITTINGS,
-    controller_name_problems,
-)
+from actuator_selection.db.seed_controllers import controller_name_problems
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
