@@ -27,6 +27,7 @@ from actuator_selection.core.catalogue_files import (
     SENSOR_FITTINGS,
     ZONE_POINTS,
 )
+from actuator_selection.core.changes import CatalogueChanges
 from actuator_selection.core.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.changes import set_values
@@ -41,12 +42,7 @@ from actuator_selection.db.models import (
     ZonePointRow,
 )
 from actuator_selection.db.repositories import CatalogueVersionRepository
-from actuator_selection.db.seed import (
-    CatalogueChanges,
-    CatalogueFiles,
-    apply_catalogue,
-    zone_problems,
-)
+from actuator_selection.db.seed import CatalogueFiles, apply_catalogue, zone_problems
 from actuator_selection.db.seed_controllers import controller_name_problems
 
 

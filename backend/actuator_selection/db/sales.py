@@ -27,6 +27,7 @@ from sqlalchemy.dialects.sqlite import insert as sqlite_insert
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, selectinload
 
+from actuator_selection.core.changes import FileChanges
 from actuator_selection.core.csvio import (
     CatalogueFileError,
     Column,
@@ -49,7 +50,6 @@ from actuator_selection.core.sales import (
     QuoteItem,
     QuoteRecord,
 )
-from actuator_selection.db.changes import FileChanges
 from actuator_selection.db.models import ActuatorRow
 from actuator_selection.db.models.sales import (
     ApiKeyRow,

@@ -23,7 +23,7 @@ Two modes share one code path and one rulebook (the ``CsvSpec`` of each file,
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -38,6 +38,7 @@ from actuator_selection.core.catalogue_files import (
     JSON_KEYS,
     ZONE_POINTS,
 )
+from actuator_selection.core.changes import CatalogueChanges, FileChanges
 from actuator_selection.core.csvio import (
     CatalogueFileError,
     CsvSpec,
@@ -47,7 +48,7 @@ from actuator_selection.core.csvio import (
     parse_rows,
     read,
 )
-from actuator_selection.db.changes import FileChanges, retire_at, sync_rows
+from actuator_selection.db.changes import retire_at, sync_rows
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
 from actuator_selection.db.repositories import CatalogueVersionRepository
 from actuator_selection.db.seed_controllers import apply_protection, protection_problems
@@ -63,20 +64,6 @@ class SeedReport:
 
     def __str__(self) -> str:
         return f"inserted {self.inserted}, updated {self.updated}, unchanged {self.unchanged}"
-
-
-@dataclass(slots=True)
-class CatalogueChanges:
-    """What a catalogue load changed, per file."""
-
-    files: dict[str, FileChanges] = field(
-        default_factory=lambda: {spec.file: FileChanges() for spec in CATALOGUE_SPECS}
-    )
-
-    @property
-    def changed(self) -> bool:
-        """True when anything was inserted, updated or retired."""
-        return any(c.changed for c in self.files.values())
 
 
 @dataclass(frozen=True, slots=True)

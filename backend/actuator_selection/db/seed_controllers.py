@@ -22,11 +22,12 @@ from actuator_selection.core.catalogue_files import (
     KTY_POINTS,
     SENSOR_FITTINGS,
 )
+from actuator_selection.core.changes import FileChanges
 from actuator_selection.core.compatibility import BusClass
 from actuator_selection.core.csvio import CsvSpec, Problem, Record
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.thermal import KtyCharacteristic, TemperatureSensor
-from actuator_selection.db.changes import FileChanges, delete_in, retire_at, sync_rows
+from actuator_selection.db.changes import delete_in, retire_at, sync_rows
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,
