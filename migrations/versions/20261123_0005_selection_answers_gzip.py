@@ -43,9 +43,7 @@ def upgrade() -> None:
     for row in connection.execute(sa.select(old.c.id, old.c.response)).all():
         data = json.dumps(row.response, ensure_ascii=False, separators=(",", ":")).encode()
         connection.execute(
-            old.update()
-            .where(old.c.id == row.id)
-            .values(answer_gzip=gzip.compress(data, mtime=0))
+            old.update().where(old.c.id == row.id).values(answer_gzip=gzip.compress(data, mtime=0))
         )
     with op.batch_alter_table("selections") as batch_op:
         batch_op.alter_column("answer_gzip", existing_type=sa.LargeBinary(), nullable=False)
