@@ -3,7 +3,8 @@
 Starts ``python -m actuator_selection serve`` (uvicorn) on a free loopback port on a
 fresh database seeded with the starter catalogue, runs ``--clients`` keep-alive
 clients for ``--seconds`` against each endpoint in turn, and prints requests per
-second, the ratio to ``GET /api/v1/health`` measured in the same run, and every
+second, the ratio to ``GET /api/v1/health`` measured in the same run, the server
+process's CPU time per request (with workers > 1: the master's only), and every
 answer that was not 2xx (there should be none).
 
     python -m bench.http                       # PostgreSQL at $TEST_POSTGRES_URL if it answers
@@ -32,7 +33,9 @@ from sqlalchemy import create_engine, text
 from sqlalchemy.engine import make_url
 
 from actuator_selection.config import REPO_ROOT
+from actuator_selection.core.actuators import Actuator
 from actuator_selection.db.engine import normalise_url
+from bench.reference import agreement, numpy_reference
 from bench.selection import http_case, random_cases, starter_catalogue
 
 WORKED_EXAMPLE: dict[str, Any] = {
@@ -116,6 +119,12 @@ def _load(
     return total / elapsed, failures, sum(sizes) // max(1, len(sizes))
 
 
+def _cpu_s(pid: int) -> float:
+    """CPU time the process has used so far, user + system [s] (Linux /proc)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def _peak_rss_mb(pid: int) -> float:
     """The process's peak resident memory [MB] (Linux /proc)."""
     for line in Path(f"/proc/{pid}/status").read_text().splitlines():
@@ -124,20 +133,51 @@ def _peak_rss_mb(pid: int) -> float:
     return float("nan")
 
 
-def _batch(base: str, pid: int, n: int) -> None:
-    """One batch of ``n`` random cases (top 3): time, answer size, the server's peak RSS."""
-    cases = [http_case(app) for app in random_cases(n)]
+def _batch(base: str, pid: int, n: int, actuators: list[Actuator], checks: bool) -> None:
+    """One batch of ``n`` random cases (top 3): time, answer size, the server's peak RSS,
+    and the time of the numpy reference for the same cases, measured right after."""
+    apps = random_cases(n)
+    cases = [http_case(app) for app in apps]
     before = _peak_rss_mb(pid)
     started = time.monotonic()
     response = httpx.post(
-        f"{base}/api/v1/selections/batch", json={"cases": cases, "top": 3}, timeout=600
+        f"{base}/api/v1/selections/batch",
+        json={"cases": cases, "top": 3, "include_checks": checks},
+        timeout=600,
     )
     elapsed = time.monotonic() - started
+    reference_s = min(_timed(lambda: numpy_reference(actuators, apps, 3)) for _ in range(3))
+    service = [[c["model"] for c in r["candidates"]] for r in response.json()["results"]]
+    same = agreement(actuators, numpy_reference(actuators, apps, 3), service)
     print(
-        f"  POST /selections/batch, {n} cases      {elapsed:6.2f} s  HTTP {response.status_code}  "
-        f"answer {len(response.content) / 1e6:6.1f} MB  server peak RSS {before:.0f} → "
-        f"{_peak_rss_mb(pid):.0f} MB"
+        f"  POST /selections/batch, {n} cases, checks {'yes' if checks else 'no '}  "
+        f"{elapsed:6.2f} s  HTTP {response.status_code}  answer "
+        f"{len(response.content) / 1e6:5.1f} MB  server peak RSS {before:.0f} → "
+        f"{_peak_rss_mb(pid):.0f} MB\n"
+        f"    numpy reference {reference_s * 1e3:6.1f} ms (same top 3 in {same:.1%} of cases): "
+        f"the request takes {elapsed / reference_s:4.1f}× the reference"
     )
+
+
+def _timed(run: Callable[[], object]) -> float:
+    started = time.perf_counter()
+    run()
+    return time.perf_counter() - started
+
+
+def _stored_row_bytes(url: str) -> float:
+    """Mean size of a stored selection row's data (answer and request) [bytes]."""
+    engine = create_engine(normalise_url(url))
+    request = "octet_length(request::text)" if url.startswith("postgresql") else "length(request)"
+    try:
+        with engine.connect() as conn:
+            return float(
+                conn.execute(
+                    text(f"SELECT avg(length(answer_gzip) + {request}) FROM selections")
+                ).scalar_one()
+            )
+    finally:
+        engine.dispose()
 
 
 def main() -> None:
@@ -158,7 +198,7 @@ def main() -> None:
                 print("PostgreSQL unreachable: measuring on SQLite")
         else:
             url, drop = found
-        starter_catalogue(url)
+        actuators = starter_catalogue(url)
         process, base = _serve(url, {"WORKERS": str(args.workers)})
         try:
             print(
@@ -172,18 +212,27 @@ def main() -> None:
                 ("POST /selections, whole catalogue", "POST", "/api/v1/selections",
                  WORKED_EXAMPLE),
             ]  # fmt: skip
+            stored = httpx.post(f"{base}/api/v1/selections", json=WORKED_EXAMPLE).json()["id"]
+            cases.append(("GET /selections/{id}, whole catalogue", "GET",
+                          f"/api/v1/selections/{stored}", None))  # fmt: skip
             reference = None
             for name, method, path, body in cases:
+                cpu = _cpu_s(process.pid)
                 rate, failures, size = _load(
                     base, method, path, body, clients=args.clients, seconds=args.seconds
                 )
+                cpu_ms = (_cpu_s(process.pid) - cpu) / (rate * args.seconds) * 1e3
                 reference = reference or rate
                 print(
                     f"  {name:36s} {rate:8.1f} req/s  {rate / reference:5.2f}× /health  "
-                    f"answer {size / 1024:8.1f} KiB  non-2xx {dict(failures) or 0}"
+                    f"server CPU {cpu_ms:5.2f} ms/req  answer {size / 1024:6.1f} KiB  "
+                    f"non-2xx {dict(failures) or 0}"
                 )
+            print(f"  stored selection row (answer gzip + request): "
+                  f"{_stored_row_bytes(url) / 1024:.1f} KiB on average")  # fmt: skip
             if args.workers == 1:  # the peak RSS is the served process's own
-                _batch(base, process.pid, args.batch_cases)
+                for n, checks in ((10_000, False), (10_000, True), (args.batch_cases, True)):
+                    _batch(base, process.pid, n, actuators, checks)
         finally:
             process.terminate()
             process.wait(10)

@@ -11,6 +11,8 @@ import random
 import tempfile
 import time
 from collections.abc import Callable
+from dataclasses import replace
+from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
@@ -24,7 +26,10 @@ from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app
+from actuator_selection.main import create_app, tune_gc
+from actuator_selection.schemas.selections import SelectionRequest
+from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
+from actuator_selection.services.selections import size_selection
 
 
 def random_cases(n: int, seed: int = 7) -> list[Application]:
@@ -114,6 +119,42 @@ def main() -> None:
             f"ratio core / HTTP: {core / http:.1f}× (engineering share of a request "
             f"≈ {http / core:.0%})"
         )
+        with make_session_factory(make_engine(url))() as session:
+            starter = CatalogueCache().snapshot(session)
+    large_catalogue(starter, copies=100)
+
+
+def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
+    """One whole-catalogue selection over ``copies`` × the starter catalogue, server side.
+
+    The copies are the starter's actuators renamed (``CHA-25A-50~017``): a catalogue of
+    that size to measure with, not data. Timed is what the server computes for POST
+    /selections after reading the request: the flowchart, the answer's JSON and its
+    gzip (the database insert and HTTP come on top; see bench/http.py).
+    """
+    actuators = tuple(
+        replace(a, model=f"{a.model}~{k:03d}") for k in range(copies) for a in starter.actuators
+    )
+    interfaces = {
+        f"{model}~{k:03d}": interface
+        for k in range(copies)
+        for model, interface in starter.interfaces.items()
+    }
+    catalogue = replace(starter, actuators=actuators, interfaces=interfaces)
+    tune_gc()  # as served (main.serve_app)
+    body = SelectionRequest.model_validate(http_case(random_cases(1, seed=3)[0]))
+    app = body.to_core()
+    size_selection(body, app, actuators, catalogue, datetime.now(UTC))  # warm the caches
+    times = []
+    for _ in range(5):
+        started = time.perf_counter()
+        sized = size_selection(body, app, actuators, catalogue, datetime.now(UTC))
+        times.append(time.perf_counter() - started)
+    print(
+        f"one selection over {len(actuators)} actuators (server side, no DB/HTTP): "
+        f"{min(times) * 1e3:.1f} ms (best of 5), answer {len(sized.answer) / 1e6:.2f} MB, "
+        f"{len(sized.answer_gzip) / 1e3:.0f} kB gzip"
+    )
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-"""The core imports no web framework, ORM or validation library."""
+"""The core imports no web framework, ORM or validation library; the schemas no database."""
 
 from __future__ import annotations
 
@@ -7,17 +7,30 @@ import subprocess
 import sys
 
 
-def test_core_imports_only_the_standard_library() -> None:
+def _modules_after_importing(package: str) -> set[str]:
+    """``sys.modules`` of a fresh interpreter that imported every module of ``package``."""
     code = (
-        "import json, sys, pkgutil, importlib, actuator_selection.core as core\n"
-        "for m in pkgutil.walk_packages(core.__path__, 'actuator_selection.core.'):\n"
+        f"import json, sys, pkgutil, importlib, {package} as package\n"
+        f"for m in pkgutil.walk_packages(package.__path__, '{package}.'):\n"
         "    importlib.import_module(m.name)\n"
         "print(json.dumps(sorted(sys.modules)))"
     )
     out = subprocess.run(
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
     ).stdout
-    modules = set(json.loads(out))
+    return set(json.loads(out))
+
+
+def test_core_imports_only_the_standard_library() -> None:
+    modules = _modules_after_importing("actuator_selection.core")
     assert "actuator_selection.core.selection" in modules  # the walk did import the core
     for forbidden in ("fastapi", "sqlalchemy", "pydantic", "starlette", "plotly"):
         assert forbidden not in modules, f"the core imported {forbidden}"
+
+
+def test_schemas_import_no_database_layer() -> None:
+    modules = _modules_after_importing("actuator_selection.schemas")
+    assert "actuator_selection.schemas.admin" in modules  # the walk did import the schemas
+    assert "actuator_selection.schemas.prices" in modules
+    for forbidden in ("actuator_selection.db", "sqlalchemy"):
+        assert forbidden not in modules, f"the schemas imported {forbidden}"

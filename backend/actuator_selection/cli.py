@@ -20,7 +20,7 @@ def _migrate(args: argparse.Namespace) -> int:
 
 
 def _seed(args: argparse.Namespace) -> int:
-    from actuator_selection.db.csvio import CatalogueFileError
+    from actuator_selection.core.csvio import CatalogueFileError
     from actuator_selection.db.engine import begin_write, make_engine, make_session_factory
     from actuator_selection.db.repositories import CatalogueVersionRepository
     from actuator_selection.db.seed import load_seed

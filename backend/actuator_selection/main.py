@@ -30,9 +30,9 @@ from actuator_selection.api import (
     tools,
 )
 from actuator_selection.api.auth import require_reader
-from actuator_selection.api.drive import CatalogueCache
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.services.catalogue import CatalogueCache
 
 API_PREFIX = "/api/v1"
 DOCS_PATHS = ("/docs", "/redoc", "/docs/oauth2-redirect")

@@ -116,6 +116,13 @@ const TEXTS = {
     "detail.controllers.none": "Kein Regler aus Tabelle 521.1 passt zu diesem Antrieb.",
     "detail.approximate": "näherungsweise",
     "detail.approximate.long": "näherungsweise: vereinfachte Grenze statt Dauerbetriebsbereich",
+    "detail.loading": "Meldungen, Reglerkriterien und Katalogdaten werden geladen …",
+    "detail.pending": "wird geladen",
+    "detail.failed": "Einzelheiten nicht verfügbar ({why}). Gezeigt sind die Zahlen der Auswahl, ohne Meldungen des Servers, Reglerkriterien und Katalogdaten.",
+    "detail.failed.changed": "der Katalog wurde seit dieser Auswahl geändert; bitte die Auswahl neu berechnen",
+    "detail.failed.notfound": "nicht gefunden",
+    "detail.failed.network": "Server nicht erreichbar",
+    "detail.failed.bad": "unerwartete Antwort",
 
     "controller.tested": "praktisch erprobt",
     "controller.possible": "theoretisch machbar",
@@ -153,6 +160,9 @@ const TEXTS = {
     "check.short.peak_torque": "T_1 ≤ T_max",
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "Dauerbetrieb",
+
+    "check.finding.against": "{value}, Grenze {limit}",
+    "check.finding.missing": "nicht im Katalog: {what}",
 
     "ref.Table": "Tabelle",
     "ref.Eq.": "Gl.",
@@ -401,6 +411,13 @@ const TEXTS = {
     "detail.controllers.none": "No controller of Table 521.1 fits this actuator.",
     "detail.approximate": "approximate",
     "detail.approximate.long": "approximate: a simplified limit stands in for the continuous-duty zone",
+    "detail.loading": "Loading the server's messages, controller criteria and catalogue data …",
+    "detail.pending": "loading",
+    "detail.failed": "Details unavailable ({why}). Shown are the selection's figures, without the server's messages, controller criteria and catalogue data.",
+    "detail.failed.changed": "the catalogue has changed since this selection; please run the selection again",
+    "detail.failed.notfound": "not found",
+    "detail.failed.network": "server not reachable",
+    "detail.failed.bad": "unexpected answer",
 
     "controller.tested": "tested",
     "controller.possible": "possible",
@@ -438,6 +455,9 @@ const TEXTS = {
     "check.short.peak_torque": "T_1 ≤ T_max",
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "continuous duty",
+
+    "check.finding.against": "{value}, limit {limit}",
+    "check.finding.missing": "not in the catalogue: {what}",
 
     "ref.Table": "Table",
     "ref.Eq.": "Eq.",

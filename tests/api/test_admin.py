@@ -12,8 +12,8 @@ import pytest
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
 from actuator_selection.config import SEED_DIR
-from actuator_selection.db.csvio import parse
-from actuator_selection.db.seed import ACTUATORS, CATALOGUE_SPECS
+from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS
+from actuator_selection.core.csvio import parse
 
 __all__ = ["api", "sales_api_with"]
 

@@ -34,8 +34,15 @@ def candidate_controllers(api: SalesApi, model: str) -> set[int]:
     body = {**WORKED_EXAMPLE, "models": [model]}
     response = api.post("/api/v1/selections", role=None, json=body)
     assert response.status_code in (200, 201), response.text
-    (candidate,) = response.json()["candidates"]
-    return {c["source_row"] for c in candidate["controllers"]}
+    selection = response.json()
+    (candidate,) = selection["candidates"]
+    detail = api.get(f"/api/v1/selections/{selection['id']}/candidates/{model}", role=None)
+    listed = {c["source_row"] for c in detail.json()["controllers"]}
+    if candidate["drive_options"] is not None:  # the answer lists them too, grouped
+        rows = selection["controllers"]
+        groups = candidate["drive_options"]
+        assert listed == {rows[i]["source_row"] for g in groups for i in g["controllers"]}
+    return listed
 
 
 def test_create_a_controller_with_the_next_row(api: SalesApi) -> None:

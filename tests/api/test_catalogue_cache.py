@@ -79,3 +79,22 @@ def test_two_apps_on_one_database_stay_coherent(api: SalesApi, sales_api_with: A
     assert _peak_limit(api) == _peak_limit(other) == 151
     _set_peak_torque(other, 97)
     assert _peak_limit(api) == 97
+
+
+def test_a_candidates_detail_after_a_catalogue_change_is_a_conflict(api: SalesApi) -> None:
+    """The detail is computed again from the stored load case: only with the catalogue the
+    selection used, else it would not be the stored answer's candidate."""
+    body = {**worked_example.request(), "models": [MODEL]}
+    selection = api.client.post("/api/v1/selections", json=body).json()
+    url = f"/api/v1/selections/{selection['id']}/candidates/{MODEL}"
+    before = api.client.get(url)
+    assert before.status_code == 200, before.text
+    assert before.json()["catalogue_version"] == selection["catalogue_version"]
+    _set_peak_torque(api, 97)
+    after = api.client.get(url)
+    assert after.status_code == 409, after.text
+    (error,) = after.json()["detail"]
+    assert error["loc"] == ["path", "selection_id"]
+    assert "run the selection again" in error["msg"]
+    # the stored answer itself stays as it was answered
+    assert api.client.get(f"/api/v1/selections/{selection['id']}").json() == selection

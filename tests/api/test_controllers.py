@@ -95,15 +95,22 @@ def test_selection_candidates_carry_controllers_and_say_what_is_missing(
     body = client.post(
         "/api/v1/selections", json={**WORKED_EXAMPLE, "models": ["FHA-25C-50-L", "CHA-25A-50"]}
     ).json()
-    by_model = {c["model"]: c for c in body["candidates"]}
-    example = by_model["FHA-25C-50-L"]
+    details = {
+        c["model"]: client.get(f"/api/v1/selections/{body['id']}/candidates/{c['model']}").json()
+        for c in body["candidates"]
+    }
+    example = details["FHA-25C-50-L"]
     assert example["controllers"], "the PTC and the FHA-C column leave some controllers"
     assert "bus_class" in example["controllers_note"]
     assert "feedback_system" in example["controllers_note"]
     for option in example["controllers"]:
         assert set(option["missing"]) == {"bus_class", "feedback_system"}
         assert option["voltage"]["status"] == "no_data"
-    cha = by_model["CHA-25A-50"]
+    lean = {c["model"]: c for c in body["candidates"]}["FHA-25C-50-L"]
+    for group in lean["drive_options"]:  # the answer says the same, grouped
+        assert set(group["missing"]) == {"bus_class", "feedback_system"}
+        assert group["voltage"]["status"] == "no_data"
+    cha = details["CHA-25A-50"]
     first = cha["controllers"][0]
     # Eq. 521.2 at n_2 = 40 rpm: 2000 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 88.8 V.
     assert first["voltage"]["value"] == pytest.approx(88.8)

@@ -4,13 +4,19 @@ from __future__ import annotations
 
 import gc
 import math
+import random
 from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
+from sqlalchemy import Connection
+from sqlalchemy.orm import Session
 from tests import worked_example
 
+from actuator_selection.core.selection import select
+from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.main import GC_THRESHOLDS, tune_gc
+from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 
 WORKED_EXAMPLE: dict[str, Any] = {
     **worked_example.request(),
@@ -55,7 +61,17 @@ def test_worked_example_over_http(client: TestClient) -> None:
     assert candidate["decel_torque_nm"] == pytest.approx(-85.48, abs=0.005)
     assert candidate["rms_torque_nm"] == pytest.approx(35.57, abs=0.005)
     checks = {c["name"]: c for c in candidate["checks"]}
-    assert checks["max_speed"] | {"message": None, "margin_percent": None} == {
+    assert checks["max_speed"] == {"name": "max_speed", "status": "pass", "value": 40, "limit": 90}
+    assert {"name": "max_speed", "reference": "Table 515.1", "unit": "rpm"} in body["check_rules"]
+    assert checks["continuous_duty"]["status"] == "no_data"
+    assert checks["continuous_duty"]["missing"] == "continuous-duty zone or continuous torque"
+
+    # the candidate in full: the same figures, every check in words
+    detail = client.get(f"/api/v1/selections/{body['id']}/candidates/FHA-25C-50-L").json()
+    assert detail["verdict"] == "unconfirmed"
+    assert detail["rms_torque_nm"] == candidate["rms_torque_nm"]
+    full = {c["name"]: c for c in detail["checks"]}
+    assert full["max_speed"] | {"message": None} == {
         "name": "max_speed",
         "status": "pass",
         "value": 40,
@@ -64,10 +80,11 @@ def test_worked_example_over_http(client: TestClient) -> None:
         "reference": "Table 515.1",
         "approximate": False,
         "message": None,
-        "margin_percent": None,
+        "margin_percent": pytest.approx((90 - 40) / 90 * 100),
     }
-    assert checks["continuous_duty"]["status"] == "no_data"
-    assert candidate["reasons"] == [checks["continuous_duty"]["message"]]
+    assert detail["reasons"] == [full["continuous_duty"]["message"]]
+    assert "continuous-duty zone or continuous torque" in full["continuous_duty"]["message"]
+    assert detail["actuator"] == client.get("/api/v1/actuators/FHA-25C-50-L").json()
 
 
 def test_stored_selection_is_returned_unchanged(client: TestClient) -> None:
@@ -77,8 +94,58 @@ def test_stored_selection_is_returned_unchanged(client: TestClient) -> None:
     assert fetched.json() == created
 
 
+def test_stored_selection_is_sent_as_stored_compressed_or_not(client: TestClient) -> None:
+    created = post(client, with_changes("models", None))
+    url = f"/api/v1/selections/{created.json()['id']}"
+    plain = client.get(url, headers={"Accept-Encoding": "identity"})
+    assert "content-encoding" not in plain.headers
+    assert plain.content == created.content
+    compressed = client.get(url, headers={"Accept-Encoding": "gzip"})
+    assert compressed.headers["content-encoding"] == "gzip"
+    assert compressed.content == created.content  # httpx decodes it
+
+
 def test_unknown_selection_is_404(client: TestClient) -> None:
     assert client.get("/api/v1/selections/does-not-exist").status_code == 404
+
+
+def test_whole_catalogue_answer_is_its_schema_without_repetition(client: TestClient) -> None:
+    """The answer is built as JSON data for speed: it must still be exactly SelectionOut,
+    and list each controller once however many candidates it serves."""
+    response = post(client, with_changes("models", None))
+    body = response.json()
+    assert SelectionOut.model_validate_json(response.content).model_dump(
+        mode="json", exclude_defaults=True
+    ) == _without_defaults(body)
+    rows = [tuple(c.values()) for c in body["controllers"]]
+    assert len(rows) == len(set(rows))
+    referred = set()
+    for c in body["candidates"]:
+        assert [k["name"] for k in c["checks"]] == [r["name"] for r in body["check_rules"]]
+        for group in c["drive_options"] or []:
+            assert group["controllers"]
+            referred.update(group["controllers"])
+        for k in c["checks"]:
+            assert ("missing" in k) is (k["status"] == "no_data")
+    assert referred == set(range(len(rows)))
+
+
+def _without_defaults(body: dict[str, Any]) -> dict[str, Any]:
+    """``body`` less the values the answer leaves at their default (ranking, models)."""
+    out = {k: v for k, v in body.items() if not (k == "models" and v is None)}
+    out.pop("ranking")
+    return out
+
+
+def test_candidate_detail_404s(client: TestClient) -> None:
+    created = post(client, WORKED_EXAMPLE).json()
+    unknown = client.get("/api/v1/selections/nope/candidates/FHA-25C-50-L")
+    assert unknown.status_code == 404
+    assert unknown.json()["detail"][0]["loc"] == ["path", "selection_id"]
+    for model in ("NOPE-1", "CHA-25A-50"):  # unknown; not among the models asked for
+        response = client.get(f"/api/v1/selections/{created['id']}/candidates/{model}")
+        assert response.status_code == 404, response.text
+        assert response.json()["detail"][0]["loc"] == ["path", "model"]
 
 
 def test_whole_catalogue_ranked(client: TestClient) -> None:
@@ -99,7 +166,9 @@ def test_whole_catalogue_ranked(client: TestClient) -> None:
     for c in candidates:
         if c["verdict"] == "unsuitable":
             assert any(k["status"] == "fail" for k in c["checks"])
-            assert c["reasons"]
+            assert c["drive_options"] is None
+        else:
+            assert c["drive_options"] is not None
 
 
 def test_cha_25a_50_against_worked_example_and_gentler_cycle(client: TestClient) -> None:
@@ -282,3 +351,51 @@ def test_a_served_process_collects_rarely_but_never_switches_the_collector_off()
         assert gc.isenabled()
     finally:
         gc.set_threshold(*before)
+
+
+def test_answer_equals_the_scalar_flowchart_check_by_check(
+    client: TestClient, connection: Connection
+) -> None:
+    """The answer is computed by the vectorised flowchart, each candidate's detail by the
+    scalar one: the same order, verdicts, torques and checks, compared with ==."""
+    actuators = [r.actuator for r in CatalogueRepository(Session(connection)).actuators()]
+    rng = random.Random(3)
+    for _ in range(4):
+        body = {
+            "load": {
+                "speed_rpm": rng.uniform(5, 150),
+                "torque_nm": rng.uniform(0, 80),
+                "inertia_kgm2": rng.uniform(0, 3),
+            },
+            "cycle": {
+                "accel_s": rng.uniform(0.05, 0.5),
+                "constant_s": rng.uniform(0, 1),
+                "decel_s": rng.uniform(0.05, 0.5),
+                "pause_s": rng.uniform(0, 2),
+            },
+            "high_dynamics": rng.random() < 0.5,
+        }
+        selection = post(client, body).json()
+        scalar = select(actuators, SelectionRequest.model_validate(body).to_core())
+        assert [c["model"] for c in selection["candidates"]] == [
+            c.actuator.model for c in scalar.candidates
+        ]
+        assert selection["mean_speed_rpm"] == scalar.mean_speed_rpm
+        assert selection["duty_cycle_percent"] == scalar.duty_cycle_percent
+        assert selection["cycle_time_s"] == scalar.cycle_time_s
+        for lean in selection["candidates"]:
+            url = f"/api/v1/selections/{selection['id']}/candidates/{lean['model']}"
+            detail = client.get(url).json()
+            for key in ("verdict", "accel_torque_nm", "constant_torque_nm", "decel_torque_nm",
+                        "rms_torque_nm", "controllers_excluded"):  # fmt: skip
+                assert lean[key] == detail[key], (lean["model"], key)
+            full = [
+                {k: c[k] for k in ("name", "status", "value", "limit")}
+                | ({"approximate": True} if c["approximate"] else {})
+                for c in detail["checks"]
+            ]
+            assert [{k: v for k, v in c.items() if k != "missing"} for c in lean["checks"]] == full
+            for c, d in zip(lean["checks"], detail["checks"], strict=True):
+                if "missing" in c:
+                    expected = f"no data: the catalogue gives no {c['missing']} for this actuator"
+                    assert d["message"] == expected

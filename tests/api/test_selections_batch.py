@@ -21,7 +21,7 @@ from actuator_selection.schemas.batch import (
     BatchCandidateOut,
     BatchSelectionOut,
 )
-from actuator_selection.schemas.selections import CandidateOut
+from actuator_selection.schemas.selections import CandidateDetailOut
 
 URL = f"{API_PREFIX}/selections/batch"
 DETAIL_KEYS = ("checks", "controllers")
@@ -95,6 +95,26 @@ def without(candidate: dict[str, Any], *keys: str) -> dict[str, Any]:
     return {k: v for k, v in candidate.items() if k not in keys}
 
 
+SELECTION_KEYS = ("selection_id", "catalogue_version", "actuator")
+"""What a single selection's candidate detail adds to a candidate."""
+
+
+def single_candidates(client: TestClient, case: dict[str, Any], top: int) -> Any:
+    """POST /selections for ``case``: its answer, and its best ``top`` candidates in full,
+    as the scalar flowchart gives them (GET /selections/{id}/candidates/{model})."""
+    response = client.post(f"{API_PREFIX}/selections", json=case)
+    assert response.status_code == 201, response.text
+    single = response.json()
+    details = []
+    for lean in single["candidates"][:top]:
+        url = f"{API_PREFIX}/selections/{single['id']}/candidates/{lean['model']}"
+        detail = client.get(url).json()
+        assert detail["verdict"] == lean["verdict"]
+        assert detail["accel_torque_nm"] == lean["accel_torque_nm"]
+        details.append(without(detail, *SELECTION_KEYS))
+    return single, details
+
+
 # --- the same answers as single selections ---------------------------------------------------
 
 
@@ -109,17 +129,13 @@ def test_batch_equals_single_selections(batch_client: TestClient) -> None:
     brief_results = brief.json()["results"]
     assert len(full_results) == len(brief_results) == len(cases)
     for case, got, got_brief in zip(cases, full_results, brief_results, strict=True):
-        response = batch_client.post(f"{API_PREFIX}/selections", json=case)
-        assert response.status_code == 201, response.text
-        single = response.json()
+        single, details = single_candidates(batch_client, case, 4)
         for key in ("load", "mean_speed_rpm", "duty_cycle_percent", "cycle_time_s"):
             assert got[key] == single[key], key
             assert got_brief[key] == single[key], key
         assert got["id"] is None
-        assert got["candidates"] == single["candidates"][:3]
-        assert got_brief["candidates"] == [
-            without(c, *DETAIL_KEYS) for c in single["candidates"][:4]
-        ]
+        assert got["candidates"] == details[:3]
+        assert got_brief["candidates"] == [without(c, *DETAIL_KEYS) for c in details]
         assert full.json()["catalogue_version"] == single["catalogue_version"]
 
 
@@ -142,13 +158,19 @@ def test_batch_response_validates_against_its_schema(batch_client: TestClient) -
                 assert ("checks" in c) is options["include_checks"]
                 assert ("controllers" in c) is options.get("include_controllers", False)
                 if "checks" in c and "controllers" in c:
-                    assert CandidateOut.model_validate(c).model_dump(mode="json") == c
+                    actuator = batch_client.get(f"{API_PREFIX}/actuators/{c['model']}").json()
+                    added = {"selection_id": "x", "catalogue_version": 1, "actuator": actuator}
+                    parsed_candidate = CandidateDetailOut.model_validate(c | added)
+                    dumped = parsed_candidate.model_dump(mode="json", exclude=set(SELECTION_KEYS))
+                    assert dumped == c
 
 
 def test_batch_candidate_schema_has_candidate_out_fields() -> None:
-    """BatchCandidateOut copies CandidateOut's fields; a field added there must come here."""
-    assert list(BatchCandidateOut.model_fields) == list(CandidateOut.model_fields)
-    for name, field in CandidateOut.model_fields.items():
+    """BatchCandidateOut copies a candidate's detail (CandidateDetailOut, less what the
+    selection adds); a field added there must come here."""
+    fields = {k: v for k, v in CandidateDetailOut.model_fields.items() if k not in SELECTION_KEYS}
+    assert list(BatchCandidateOut.model_fields) == list(fields)
+    for name, field in fields.items():
         batch_field = BatchCandidateOut.model_fields[name]
         assert batch_field.is_required() is (field.is_required() and name not in DETAIL_KEYS)
 
@@ -187,11 +209,9 @@ def test_ten_thousand_cases_in_one_request(batch_client: TestClient) -> None:
     assert len(results) == 10_000
     assert all(1 <= len(r["candidates"]) <= 3 for r in results)
     for i in (0, 4_999, 9_999):  # the order of the cases is kept
-        single = batch_client.post(f"{API_PREFIX}/selections", json=cases[i]).json()
+        single, details = single_candidates(batch_client, cases[i], 3)
         assert results[i]["load"] == single["load"]
-        assert results[i]["candidates"] == [
-            without(c, *DETAIL_KEYS) for c in single["candidates"][:3]
-        ]
+        assert results[i]["candidates"] == [without(c, *DETAIL_KEYS) for c in details]
 
 
 def stored_count(connection: Connection) -> int:
@@ -219,7 +239,12 @@ def test_store_keeps_each_case_as_a_selection(
         stored = batch_client.get(f"{API_PREFIX}/selections/{result['id']}")
         assert stored.status_code == 200
         body = stored.json()
-        assert body["candidates"][:3] == result["candidates"]
+        assert [c["model"] for c in body["candidates"][:3]] == [
+            c["model"] for c in result["candidates"]
+        ]
+        for c in result["candidates"]:
+            url = f"{API_PREFIX}/selections/{result['id']}/candidates/{c['model']}"
+            assert without(batch_client.get(url).json(), *SELECTION_KEYS) == c
         assert body["cycle"] == case["cycle"]
         assert body["load"] == result["load"]
 

@@ -72,6 +72,13 @@ def assert_matches_scalar(
                 where
             )
             assert ev.verdict(i, j) is c.verdict, where
+            for k, check in enumerate(c.checks):
+                value = ev.values[i, j, k]
+                limit = ev.limits[i, j, k]
+                assert (None if math.isnan(value) else value) == check.value, where
+                assert (None if math.isnan(limit) else limit) == check.limit, where
+                assert ev.approximate[i, j, k] == check.approximate, where
+                assert ev.missing(i, j, check.name) == check.missing, where
             if c.torques is None:
                 assert math.isnan(ev.accel_torque_nm[i, j])
                 assert math.isnan(ev.rms_torque_nm[i, j])

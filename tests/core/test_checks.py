@@ -62,6 +62,7 @@ def test_the_rules_fast_check_constructor_builds_a_check() -> None:
         "reference": "Eq. 514.1",
         "message": "m",
         "approximate": True,
+        "missing": "x",
     }
     assert list(args) == [f.name for f in dataclasses.fields(Check)]  # every field, in order
     fast = _new_check(*args.values())

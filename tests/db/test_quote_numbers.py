@@ -7,6 +7,7 @@ the rolled-back test transaction of the other tests cannot show concurrency.
 
 from __future__ import annotations
 
+import gzip
 import threading
 from collections.abc import Callable, Iterator
 from dataclasses import replace
@@ -83,7 +84,11 @@ def _database(url: str, *, postgres: bool) -> Iterator[Engine]:
     with sessionmaker(engine).begin() as session:
         session.add(
             SelectionRow(
-                id="selection-1", created_at=NOW, catalogue_version=1, request={}, response={}
+                id="selection-1",
+                created_at=NOW,
+                catalogue_version=1,
+                request={},
+                answer_gzip=gzip.compress(b"{}"),
             )
         )
     yield engine

@@ -14,8 +14,9 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.cli import main
 from actuator_selection.config import SEED_DIR
+from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS, FAMILIES
+from actuator_selection.core.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import (
@@ -29,14 +30,7 @@ from actuator_selection.db.models import (
     ZonePointRow,
 )
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
-from actuator_selection.db.seed import (
-    ACTUATORS,
-    CATALOGUE_SPECS,
-    FAMILIES,
-    apply_catalogue,
-    load_seed,
-    read_catalogue,
-)
+from actuator_selection.db.seed import apply_catalogue, load_seed, read_catalogue
 
 
 @pytest.fixture

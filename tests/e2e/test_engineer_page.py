@@ -9,8 +9,10 @@ from __future__ import annotations
 
 import math
 import re
+from decimal import Decimal
 from pathlib import Path
 from typing import Any, cast
+from urllib.parse import quote
 
 import pytest
 from playwright.sync_api import Browser, Page, Route, ViewportSize, expect
@@ -130,6 +132,34 @@ def plot_annotations(page: Page, chart_id: str) -> list[str]:
     return cast(list[str], page.evaluate(ANNOTATIONS_JS, chart_id))
 
 
+def four_digits(value: float) -> str:
+    """``value`` as the page writes it in English: 4 significant digits, no exponent."""
+    text = format(Decimal(f"{value:.4g}"), "f")
+    text = text.rstrip("0").rstrip(".") if "." in text else text
+    return text.replace("-", "−")
+
+
+def detail_url(selection_id: str, model: str) -> str:
+    """The path of a candidate's detail, as the page asks for it."""
+    return f"/api/v1/selections/{selection_id}/candidates/{quote(model, safe='')}"
+
+
+def is_detail(url: str) -> bool:
+    return re.search(r"/api/v1/selections/[^/]+/candidates/[^/]+$", url) is not None
+
+
+def expanded_drive_options(selection: dict[str, Any], candidate: dict[str, Any]) -> list[str]:
+    """The controllers of a lean candidate's drive options, by name, in the answer's order."""
+    names = []
+    for group in candidate["drive_options"]:
+        for index in group["controllers"]:
+            ref = selection["controllers"][index]
+            names.append(
+                " ".join(str(ref[k]) for k in ("manufacturer", "type", "variant") if ref[k])
+            )
+    return names
+
+
 def row_value(page: Page, model: str, field: str) -> str:
     return page.locator(
         f'#ranking-table tr[data-model="{model}"] td[data-field="{field}"]'
@@ -190,8 +220,21 @@ def test_worked_example_gives_the_chapters_numbers(page: Page, traffic: Traffic)
     expect(duty).to_contain_text("no data")
     expect(duty).to_contain_text("Fig. 517.1")
     expect(page.locator("#detail-heading")).to_contain_text("unconfirmed")
-    expect(page.locator(f'#ranking-table tr[data-model="{FHA}"] .reasons')).to_contain_text(
-        "no data"
+    # the ranking says it from the lean answer: status and the catalogue value missing
+    fha_reasons = page.locator(f'#ranking-table tr[data-model="{FHA}"] .reasons')
+    expect(fha_reasons).to_contain_text("no data")
+    expect(fha_reasons).to_contain_text(
+        "not in the catalogue: continuous-duty zone or continuous torque"
+    )
+    # the margin (limit − value)/limit, and the server's message from the candidate's detail
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
+    expect(peak.locator("td").nth(3)).to_have_text(
+        f"{four_digits((T_MAX - EXPECTED_T1) / T_MAX * 100)}\u202f%"
+    )
+    expect(peak).to_contain_text("acceleration torque T1 = 95.48 Nm ≤ Tmax = 151 Nm")
+    expect(page.locator(".detail-reasons")).to_contain_text(
+        "no data: the catalogue gives no continuous-duty zone or continuous torque "
+        "for this actuator"
     )
 
     # Fig. 516.2: the speed pattern and the torques over one period
@@ -254,7 +297,16 @@ def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> 
     visible = page.locator("#ranking-table tbody tr:visible")
     unsuitable = [c for c in body["candidates"] if c["verdict"] == "unsuitable"]
     expect(visible).to_have_count(len(unsuitable))
-    expect(visible.first.locator(".reasons li").first).to_contain_text("fail")
+    first_reason = visible.first.locator(".reasons li").first
+    expect(first_reason).to_contain_text("fail")
+    failed = next(c for c in unsuitable[0]["checks"] if c["status"] != "pass")
+    unit = next(r["unit"] for r in body["check_rules"] if r["name"] == failed["name"])
+    expect(first_reason).to_have_attribute("data-check", failed["name"])
+    approx = "≈ " if failed.get("approximate") else ""
+    expect(first_reason).to_contain_text(
+        f"{four_digits(failed['value'])}\u202f{unit}, limit {approx}"
+        f"{four_digits(failed['limit'])}\u202f{unit}"
+    )
 
 
 def test_rotary_table_shows_the_converted_load(page: Page) -> None:
@@ -447,42 +499,85 @@ def test_controllers_of_the_api_are_listed(page: Page) -> None:
     page.goto("/")
     page.locator("#example").click()
     _, body = post_selection(page)
-    choose(page, FHA)
-    candidate = next(c for c in body["candidates"] if c["model"] == FHA)
-    if not isinstance(candidate.get("controllers"), list):
-        pytest.skip("this API version sends no controllers with its candidates")
+    with page.expect_response(lambda r: r.url.endswith(detail_url(body["id"], FHA))) as info:
+        choose(page, FHA)
+    assert info.value.status == 200
+    detail = cast(dict[str, Any], info.value.json())
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
     rows = page.locator("#controllers-table tbody tr")
-    expect(rows).to_have_count(len(candidate["controllers"]))
-    for i, controller in enumerate(candidate["controllers"]):
+    expect(rows).to_have_count(len(detail["controllers"]))
+    assert detail["controllers"], "the worked example's actuator has controllers to list"
+    for i, controller in enumerate(detail["controllers"]):
         name = " ".join(
             str(controller[k]) for k in ("manufacturer", "type", "variant") if controller.get(k)
         )
         expect(rows.nth(i).locator(".controller-name")).to_have_text(name)
         expect(rows.nth(i)).to_have_attribute("data-level", controller["level"])
-    if "controllers_note" in candidate:
-        expect(page.locator(".controllers")).to_contain_text(candidate["controllers_note"])
+        # every criterion of Table 521.1, with the server's words on it
+        criteria = rows.nth(i).locator(".criterion")
+        expect(criteria).to_have_count(len(controller["criteria"]))
+        titles = [criteria.nth(j).get_attribute("title") for j in range(criteria.count())]
+        assert sorted(str(t) for t in titles) == sorted(
+            c["message"] for c in controller["criteria"]
+        )
+        if controller["voltage"]["status"] != "pass":
+            expect(rows.nth(i).locator(".voltage")).to_contain_text(
+                re.sub(r"([A-Za-z])_([A-Za-z0-9]+)", r"\1\2", controller["voltage"]["message"])
+            )
+    expect(page.locator(".controllers")).to_contain_text(detail["controllers_note"])
+    expect(page.locator(".controllers-summary")).to_contain_text(
+        f"{detail['controllers_excluded']} excluded"
+    )
+    # the lean answer lists the same controllers in the same order: the panel shows
+    # them so before the detail arrives
+    candidate = next(c for c in body["candidates"] if c["model"] == FHA)
+    assert expanded_drive_options(body, candidate) == [
+        " ".join(str(c[k]) for k in ("manufacturer", "type", "variant") if c.get(k))
+        for c in detail["controllers"]
+    ]
 
 
 def test_controller_levels_in_german_and_absent_controllers(page: Page) -> None:
-    controllers = [
-        {"manufacturer": "SIEMENS", "type": "SINAMICS S120", "variant": None, "level": "tested"},
-        {"manufacturer": "Beckhoff", "type": "AX 5000", "variant": "AX5101", "level": "possible"},
+    refs: list[dict[str, Any]] = [
+        {"manufacturer": "SIEMENS", "type": "SINAMICS S120", "variant": None, "source_row": 5},
+        {"manufacturer": "Beckhoff", "type": "AX 5000", "variant": "AX5101", "source_row": 9},
     ]
+    voltage = {"status": "pass", "value": 100.0, "limit": 400.0, "reference": "Eq. 521.2"}
+    models: list[str] = []
 
-    def rewrite(route: Route) -> None:
+    def rewrite_selection(route: Route) -> None:
         response = route.fetch()
         body = response.json()
-        body["candidates"][0]["controllers"] = controllers
-        for key in ("controllers", "controllers_excluded", "controllers_note"):
-            body["candidates"][1].pop(key, None)  # as a selection stored before controllers
+        body["controllers"] = refs
+        body["candidates"][0]["drive_options"] = [
+            {"level": "tested", "missing": [], "controllers": [0], "voltage": voltage},
+            {"level": "possible", "missing": [], "controllers": [1], "voltage": voltage},
+        ]
+        body["candidates"][1]["drive_options"] = None  # as for an unsuitable candidate
+        models.extend(c["model"] for c in body["candidates"][:2])
         # status and body only: the original headers name a gzip encoding
         route.fulfill(status=response.status, json=body)
 
-    page.route("**/api/v1/selections", rewrite)
+    def rewrite_detail(route: Route) -> None:
+        response = route.fetch()
+        detail = response.json()
+        if detail["model"] == models[0]:
+            detail["controllers"] = [
+                {**refs[0], "level": "tested", "missing": [], "excluded_by": [], "criteria": []},
+                {**refs[1], "level": "possible", "missing": [], "excluded_by": [], "criteria": []},
+            ]
+        else:  # a detail that lists no controllers: the panel shows none
+            for key in ("controllers", "controllers_excluded", "controllers_note"):
+                detail.pop(key, None)
+        route.fulfill(status=response.status, json=detail)
+
+    page.route("**/api/v1/selections", rewrite_selection)
+    page.route(re.compile(r"/api/v1/selections/[^/]+/candidates/[^/]+$"), rewrite_detail)
     page.goto("/")
     page.get_by_role("button", name="Deutsch").click()
     page.locator("#example").click()
     _, body = post_selection(page)
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
     rows = page.locator("#controllers-table tbody tr")
     expect(rows).to_have_count(2)
     expect(rows.nth(0)).to_contain_text("SIEMENS SINAMICS S120")
@@ -491,7 +586,141 @@ def test_controller_levels_in_german_and_absent_controllers(page: Page) -> None:
     expect(rows.nth(1)).to_contain_text("theoretisch machbar")
 
     choose(page, body["candidates"][1]["model"])
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
     expect(page.locator(".controllers")).to_have_count(0)  # absent field: nothing shown
+
+
+def test_the_panel_shows_the_lean_candidate_until_its_detail_arrives(page: Page) -> None:
+    held: list[Route] = []
+    page.route(
+        re.compile(r"/api/v1/selections/[^/]+/candidates/[^/]+$"), lambda route: held.append(route)
+    )
+    page.goto("/")
+    page.locator("#example").click()
+    with page.expect_response(
+        lambda r: r.url.endswith("/api/v1/selections") and r.request.method == "POST"
+    ) as info:
+        page.locator("#submit").click()
+    body = cast(dict[str, Any], info.value.json())
+    best = body["candidates"][0]
+    expect(page.locator("#detail")).to_have_attribute("data-model", best["model"])
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "loading")
+    expect(page.locator("#detail-status")).to_contain_text("Loading the server's messages")
+    assert len(held) == 1
+    assert held[0].request.url.endswith(detail_url(body["id"], best["model"]))
+
+    # the checks as numbers, in the rule's unit, with the rule's reference and the margin
+    rules = {r["name"]: r for r in body["check_rules"]}
+    rows = page.locator("#checks-table tbody tr")
+    expect(rows).to_have_count(len(best["checks"]))
+    for check in best["checks"]:
+        row = page.locator(f'#checks-table tr[data-check="{check["name"]}"]')
+        unit = rules[check["name"]]["unit"]
+        cells = row.locator("td")
+        expect(cells.nth(0)).to_have_text(f"{four_digits(check['value'])}\u202f{unit}")
+        expect(cells.nth(1)).to_contain_text(f"{four_digits(check['limit'])}\u202f{unit}")
+        margin = (check["limit"] - check["value"]) / check["limit"] * 100
+        expect(cells.nth(3)).to_have_text(f"{four_digits(margin)}\u202f%")
+        expect(row.locator("th .ref")).to_have_text(rules[check["name"]]["reference"])
+        expect(cells.nth(4)).to_contain_text("loading")  # the message comes with the detail
+    # the controllers of the lean drive options, the criteria lacking data marked
+    names = expanded_drive_options(body, best)
+    controllers = page.locator("#controllers-table tbody tr")
+    expect(controllers).to_have_count(len(names))
+    expect(controllers.locator(".controller-name")).to_have_text(names)
+    missing = best["drive_options"][0]["missing"]
+    expect(controllers.first.locator(".criterion")).to_have_count(len(missing))
+    expect(page.locator(".controllers .api-message")).to_have_count(0)
+    # the cycle needs no catalogue data; the diagram waits for the detail's
+    page.wait_for_selector('#chart-cycle[data-state="ready"]')
+    expect(page.locator("#chart-diagram")).to_have_attribute("data-state", "loading")
+
+    for route in held:
+        route.continue_()
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
+    wait_for_charts(page, best["model"])
+    expect(page.locator("#detail-status")).to_be_empty()
+    expect(page.locator("#checks-table tbody td.message").first).to_contain_text(
+        "load speed n2 = 40"
+    )
+    expect(controllers.first.locator(".criterion")).to_have_count(4)
+    expect(page.locator(".controllers .api-message").first).to_be_visible()
+    assert "zone-approx" in traces(page, "chart-diagram")  # the detail's catalogue data
+
+
+def test_a_detail_that_fails_leaves_the_lean_panel_and_says_so(
+    page: Page, traffic: Traffic
+) -> None:
+    mode = {"fail": "conflict"}
+
+    def detail(route: Route) -> None:
+        if mode["fail"] == "conflict":
+            route.fulfill(
+                status=409,
+                json={
+                    "detail": [
+                        {
+                            "loc": ["path", "selection_id"],
+                            "msg": "the catalogue has changed since this selection",
+                            "type": "ConflictError",
+                        }
+                    ]
+                },
+            )
+        elif mode["fail"] == "network":
+            route.abort()
+        else:
+            route.continue_()
+
+    page.route(re.compile(r"/api/v1/selections/[^/]+/candidates/[^/]+$"), detail)
+    page.goto("/")
+    fill_worked_example(page)
+    _, body = post_selection(page)  # both charts drawn all the same
+    choose(page, FHA)
+    panel = page.locator("#detail")
+    expect(panel).to_have_attribute("data-detail", "failed")
+    status = page.locator("#detail-status")
+    expect(status).to_contain_text("Details unavailable")
+    expect(status).to_contain_text("the catalogue has changed since this selection")
+    # the selection's numbers stay, the missing catalogue value in the API's words
+    peak = page.locator('#checks-table tr[data-check="peak_torque"]')
+    expect(peak).to_contain_text("95.48\u202fNm")
+    expect(peak).to_contain_text("151\u202fNm")
+    expect(peak.locator("td.message")).to_have_text("–")
+    duty = page.locator('#checks-table tr[data-check="continuous_duty"]')
+    expect(duty.locator("td.message")).to_contain_text(
+        "not in the catalogue: continuous-duty zone or continuous torque"
+    )
+    expect(page.locator(".detail-reasons")).to_contain_text("continuous-duty zone")
+    # the diagram is drawn without the catalogue's limits, and says so
+    diagram = traces(page, "chart-diagram")
+    assert not {"t-max", "n-max"} & set(diagram)
+    assert "operating-point" in diagram
+    assert any("catalogue data" in a for a in plot_annotations(page, "chart-diagram"))
+    page.get_by_role("button", name="Deutsch").click()
+    expect(status).to_contain_text("Einzelheiten nicht verfügbar")
+    expect(status).to_contain_text("der Katalog wurde seit dieser Auswahl geändert")
+    page.get_by_role("button", name="English").click()
+
+    # a server out of reach may come back: choosing the candidate again asks again
+    best = body["candidates"][0]["model"]
+    other = next(c["model"] for c in body["candidates"][1:] if c["model"] != FHA)
+    mode["fail"] = "network"
+    choose(page, other)
+    expect(status).to_contain_text("server not reachable")
+    mode["fail"] = ""
+    choose(page, FHA)  # a 409 stays: not asked again
+    expect(panel).to_have_attribute("data-detail", "failed")
+    choose(page, other)
+    expect(panel).to_have_attribute("data-detail", "ready")
+    expect(page.locator('#checks-table tr[data-check="max_speed"] td.message')).to_contain_text(
+        "load speed n2 = 40 rpm"
+    )
+    asked = [u for u in traffic.requests if is_detail(u)]
+    assert sum(u.endswith(detail_url(body["id"], best)) for u in asked) == 1
+    assert sum(u.endswith(detail_url(body["id"], FHA)) for u in asked) == 1
+    assert sum(u.endswith(detail_url(body["id"], other)) for u in asked) == 2
+    assert not [e for e in traffic.console_errors if "409" not in e and "FAILED" not in e]
 
 
 def test_keyboard_and_screen_reader_affordances(page: Page) -> None:
@@ -526,7 +755,7 @@ def test_keyboard_and_screen_reader_affordances(page: Page) -> None:
 def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffic) -> None:
     page.goto("/")
     page.locator("#example").click()
-    post_selection(page)
+    _, body = post_selection(page)
     choose(page, FHA)
     page.get_by_role("button", name="Deutsch").click()
     wait_for_charts(page, FHA)
@@ -535,6 +764,13 @@ def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffi
     assert foreign == []
     assert any(re.search(r"/vendor/plotly-basic-[\d.]+\.min\.js$", url) for url in traffic.requests)
     assert page.evaluate("typeof window.Plotly.react") == "function"
+    # the catalogue data comes with each candidate's detail, asked once per candidate
+    best = body["candidates"][0]["model"]
+    choose(page, best)
+    choose(page, FHA)
+    details = sorted(url.removeprefix(base_url) for url in traffic.requests if is_detail(url))
+    assert details == sorted([detail_url(body["id"], best), detail_url(body["id"], FHA)])
+    assert not [url for url in traffic.requests if "/api/v1/actuators/" in url]
     assert not traffic.console_errors
 
 

@@ -311,7 +311,13 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
     expect(page.locator("#f-model option[value='FHA-8C-30']")).to_be_disabled()
     hint = page.locator("#hint-model")
     expect(hint).to_contain_text("Nicht bestätigt – das Angebot weist darauf hin: ")
-    expect(hint.locator("span[lang=en]")).not_to_be_empty()  # the API's reasons, as sent
+    # the check that did not pass, from the selection's lean answer: its label and status
+    # in the page's language, the catalogue value it lacks in the API's (English) words
+    expect(hint).to_contain_text(
+        "Dauerbetrieb (nav, Trms) im Dauerbetriebsbereich (keine Daten) – nicht im Katalog: "
+        "continuous-duty zone or continuous torque"
+    )
+    expect(hint.locator("span[lang=en]")).to_have_text("continuous-duty zone or continuous torque")
     expect(page.locator("#quote-form legend")).to_have_text(
         ["Servoantrieb", "Servoregler (optional)", "Kunde", "Preise und Konditionen"]
     )
@@ -412,6 +418,9 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
     expect(row.locator("td.num")).to_have_text("8,861.50 EUR")
     expect(created).to_contain_text("created: total 8,861.50 EUR")
     expect(page.locator("#hint-model")).to_contain_text("Unconfirmed — the quote will say so: ")
+    expect(page.locator("#hint-model")).to_contain_text(
+        "Continuous duty (nav, Trms) in the continuous-duty zone (no data) – not in the catalogue: "
+    )
     expect(summary).to_contain_text("Duty cycle 23.08\u202f%")
     expect(page.locator("#list-status")).to_have_text("1 quote.")
 

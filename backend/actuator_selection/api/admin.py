@@ -1,11 +1,11 @@
 """Catalogue management for admin keys: actuators, zones, controllers, import/export.
 
-Writes are validated by the seed files' rules (``db/seed.py``,
-``db/seed_controllers.py``), so an actuator or controller the API accepts is one
-the seed loader accepts and vice versa. Every change raises the catalogue
-version. Retiring is a soft delete: a retired actuator leaves listings and
-selections and stays for the quotes that name it; a retired controller leaves
-the compatibility matrix (Table 521.1) and every candidate's controller list.
+Writes are validated by the seed files' rules (``core/catalogue_files.py``), so
+an actuator or controller the API accepts is one the seed loader accepts and
+vice versa. Every change raises the catalogue version. Retiring is a soft
+delete: a retired actuator leaves listings and selections and stays for the
+quotes that name it; a retired controller leaves the compatibility matrix
+(Table 521.1) and every candidate's controller list.
 
 Import and export use the seed format: a ZIP of the eight files of
 ``seed_data/`` (families, actuators, zone points, controllers, temperature
@@ -46,24 +46,24 @@ from actuator_selection.api.uploads import (
     unsupported,
     unzip_csv,
 )
-from actuator_selection.db.admin import CatalogueAdminRepository
-from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.csvio import (
+from actuator_selection.core.catalogue_files import (
+    ACTUATORS,
+    CATALOGUE_SPECS,
+    CONTROLLERS,
+    INTERFACES,
+    JSON_KEYS,
+)
+from actuator_selection.core.csvio import (
     WHOLE_NUMBER_MAX,
     CatalogueFileError,
     Problem,
     to_json_values,
     write,
 )
+from actuator_selection.db.admin import CatalogueAdminRepository
+from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
-from actuator_selection.db.seed import (
-    ACTUATORS,
-    CATALOGUE_SPECS,
-    JSON_KEYS,
-    catalogue_from_json,
-    parse_catalogue,
-)
-from actuator_selection.db.seed_controllers import CONTROLLERS, INTERFACES
+from actuator_selection.db.seed import catalogue_from_json, parse_catalogue
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, write_json_schema
 from actuator_selection.schemas.controllers import ControllerOut, InterfaceOut

@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 from datetime import UTC, datetime
+from functools import partial
 from typing import Any
 
 import pydantic_core
@@ -15,10 +16,9 @@ from actuator_selection.api.deps import (
     SessionDep,
     catalogue_snapshot,
     reads_only,
+    write_transaction,
 )
-from actuator_selection.api.drive import CatalogueSnapshot, DriveContext
 from actuator_selection.api.errors import RequestFieldError, field_error
-from actuator_selection.api.selections import size_selection, store_selections
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
 from actuator_selection.core.errors import DomainError
@@ -34,6 +34,8 @@ from actuator_selection.schemas.batch import (
 )
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
 from actuator_selection.schemas.selections import RANKING_RULE
+from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
+from actuator_selection.services.selections import size_selection, store_selections
 
 router = APIRouter(tags=["selections"])
 
@@ -146,13 +148,11 @@ def _store(
     """
     created_at = datetime.now(UTC)
     sized = [
-        size_selection(
-            case, app, catalogue.actuators_of(case.models), catalogue, context, created_at
-        )
+        size_selection(case, app, catalogue.actuators_of(case.models), catalogue, created_at)
         for case, app in zip(body.cases, apps, strict=True)
     ]
-    store_selections(request, sized)
-    return [s.out.id for s in sized]
+    store_selections(partial(write_transaction, request), sized)
+    return [s.id for s in sized]
 
 
 def _candidates(

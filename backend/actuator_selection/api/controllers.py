@@ -16,10 +16,10 @@ from actuator_selection.core.compatibility import (
     match_controllers,
     product_family,
 )
+from actuator_selection.core.csvio import WHOLE_NUMBER_MAX
 from actuator_selection.core.errors import NotFoundError
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.csvio import WHOLE_NUMBER_MAX
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.controllers import (
     ActuatorControllersOut,

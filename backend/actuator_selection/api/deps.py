@@ -9,9 +9,9 @@ from typing import Annotated, Any, TypeVar
 from fastapi import Depends, Request
 from sqlalchemy.orm import Session, sessionmaker
 
-from actuator_selection.api.drive import CatalogueCache, CatalogueSnapshot
 from actuator_selection.config import Settings, get_settings
 from actuator_selection.db.engine import begin_write
+from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 
 SAFE_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
 _READS_ONLY = "__reads_only__"

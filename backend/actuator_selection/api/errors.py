@@ -35,7 +35,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.middleware.body_limit import MAX_BODY_SIZE_SCOPE_KEY
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from actuator_selection.core.errors import DomainError, NotFoundError
+from actuator_selection.core.errors import DomainError
 from actuator_selection.core.text import NUL_RULE
 
 log = logging.getLogger(__name__)
@@ -128,9 +128,9 @@ def _validation(_: Request, exc: Exception) -> JSONResponse:
 
 def _domain(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, DomainError)
-    status = 404 if isinstance(exc, NotFoundError) else 422
-    loc: list[str | int] = ["body", *exc.field.split(".")]
-    return error_response(status, [field_error(loc, exc.message, type(exc).__name__)])
+    loc: list[str | int] = [exc.where, *exc.field.split(".")]
+    code = exc.code or type(exc).__name__
+    return error_response(exc.http_status, [field_error(loc, exc.message, code)])
 
 
 def _conflict(_: Request, exc: Exception) -> JSONResponse:

@@ -15,7 +15,7 @@ from actuator_selection.api.auth import AdminDep, PriceReaderDep
 from actuator_selection.api.deps import SessionDep
 from actuator_selection.api.errors import ResourceNotFoundError
 from actuator_selection.api.uploads import Upload, file_errors, raw_upload, text_of, unsupported
-from actuator_selection.db.csvio import CatalogueFileError
+from actuator_selection.core.csvio import CatalogueFileError
 from actuator_selection.db.sales import PRICES, PriceRepository, parse_prices
 from actuator_selection.schemas.prices import (
     ChangesOut,

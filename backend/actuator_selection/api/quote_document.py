@@ -105,7 +105,7 @@ def _rows(rows: Iterable[tuple[str, str]]) -> str:
 
 def _check_row(c: StoredCheck) -> str:
     """One row of the checks table; the message only where the check did not pass."""
-    message = f"<div class='small muted'>{e(c.message)}</div>" if c.status != "pass" else ""
+    message = f"<div class='small muted'>{e(c.summary)}</div>" if c.status != "pass" else ""
     approximate = " (approx.)" if c.approximate else ""
     return (
         f"<tr data-check='{e(c.name)}'><td>{e(CHECK_TITLES.get(c.name, c.name))}{message}</td>"

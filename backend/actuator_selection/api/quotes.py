@@ -22,7 +22,7 @@ import hashlib
 import json
 import re
 from datetime import UTC, date, datetime
-from typing import Annotated, Any
+from typing import Annotated
 from urllib.parse import quote as quote_path
 
 from fastapi import APIRouter, Depends, Header, Query, Response
@@ -50,7 +50,6 @@ from actuator_selection.db.admin import CatalogueAdminRepository
 from actuator_selection.db.repositories import (
     CatalogueRepository,
     CatalogueVersionRepository,
-    SelectionRepository,
 )
 from actuator_selection.db.sales import (
     ApiKeyRepository,
@@ -69,6 +68,7 @@ from actuator_selection.schemas.quotes import (
     StoredCandidate,
     StoredSelection,
 )
+from actuator_selection.services.selections import stored_answer_json
 
 router = APIRouter(tags=["quotes"])
 
@@ -208,7 +208,7 @@ def _new_quote(
             f"must be today ({today.isoformat()}) or later",
             "valid_until_past",
         )
-    stored = SelectionRepository(session).response(body.selection_id)
+    stored = stored_answer_json(session, body.selection_id)
     if stored is None:
         raise _invalid(
             ["body", "selection_id"], f"no stored selection {body.selection_id!r}", "unknown"
@@ -494,7 +494,7 @@ def quote_document(
             )
     authorize(principal, "sales")
     record = _quote(session, number)
-    stored: dict[str, Any] | None = SelectionRepository(session).response(record.selection_id)
+    stored = stored_answer_json(session, record.selection_id)
     selection = StoredSelection.model_validate(stored) if stored is not None else None
     html = render_quote_document(_out(record, clock), selection=selection, record=record)
     return HTMLResponse(

@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import uuid
-from collections.abc import Sequence
-from dataclasses import dataclass
+import gzip
 from datetime import UTC, datetime
-from typing import Any
+from functools import partial
+from typing import Annotated
 
-import pydantic_core
-from fastapi import APIRouter, Request, Response
+from fastapi import APIRouter, Path, Request, Response
 
 from actuator_selection.api.deps import (
     SessionDep,
@@ -17,14 +15,19 @@ from actuator_selection.api.deps import (
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.drive import CatalogueSnapshot, DriveContext
-from actuator_selection.api.errors import RequestFieldError, ResourceNotFoundError, field_error
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.selection import Application, select
-from actuator_selection.db.repositories import (
-    SelectionRepository,
+from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.schemas.selections import (
+    RANKING_RULE,
+    CandidateDetailOut,
+    SelectionOut,
+    SelectionRequest,
 )
-from actuator_selection.schemas.selections import RANKING_RULE, SelectionOut, SelectionRequest
+from actuator_selection.services.selections import (
+    candidate_detail,
+    size_selection,
+    store_selections,
+    stored_answer,
+)
 
 router = APIRouter(tags=["selections"])
 
@@ -51,61 +54,23 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
         ]
         if unknown:
             raise RequestFieldError(unknown)
-    sized = size_selection(
-        body, body.to_core(), actuators, catalogue, DriveContext(catalogue), datetime.now(UTC)
-    )
-    store_selections(request, [sized])
-    # Encoded once from the dump just stored: returning the model would have FastAPI
-    # validate and encode the ≈ 1 MB again.
-    return Response(
-        pydantic_core.to_json(sized.response), status_code=201, media_type="application/json"
-    )
+    sized = size_selection(body, body.to_core(), actuators, catalogue, datetime.now(UTC))
+    store_selections(partial(write_transaction, request), [sized])
+    # The answer is JSON already (see services.selections); returning a model would
+    # have FastAPI validate and encode it again.
+    return _json(request, sized.answer, sized.answer_gzip, status_code=201)
 
 
-@dataclass(frozen=True, slots=True)
-class SizedSelection:
-    """A selection computed for storing: its answer, and the request and answer as JSON."""
-
-    out: SelectionOut
-    request: dict[str, Any]
-    response: dict[str, Any]
+def _accepts_gzip(request: Request) -> bool:
+    return "gzip" in request.headers.get("accept-encoding", "")
 
 
-def size_selection(
-    body: SelectionRequest,
-    app: Application,
-    actuators: Sequence[Actuator],
-    catalogue: CatalogueSnapshot,
-    drive: DriveContext,
-    created_at: datetime,
-) -> SizedSelection:
-    """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
-    out = SelectionOut.build(
-        id=str(uuid.uuid4()),
-        created_at=created_at,
-        catalogue_version=catalogue.version,
-        request=body,
-        selection=select(actuators, app),
-        drives={a.model: drive.options(a, speed_rpm=body.load.speed_rpm) for a in actuators},
-    )
-    return SizedSelection(
-        out=out, request=body.model_dump(mode="json"), response=out.model_dump(mode="json")
-    )
-
-
-def store_selections(request: Request, sized: Sequence[SizedSelection]) -> None:
-    """Store selections computed from a read snapshot, in a short write transaction of
-    their own, committed before this returns (so before the 201)."""
-    with write_transaction(request) as writer:
-        repository = SelectionRepository(writer)
-        for s in sized:
-            repository.add(
-                id=s.out.id,
-                created_at=s.out.created_at,
-                catalogue_version=s.out.catalogue_version,
-                request=s.request,
-                response=s.response,
-            )
+def _json(request: Request, plain: bytes, compressed: bytes, *, status_code: int = 200) -> Response:
+    """The answer as the client takes it: the stored gzip bytes, or the JSON."""
+    if _accepts_gzip(request):
+        headers = {"Content-Encoding": "gzip", "Vary": "Accept-Encoding"}
+        return Response(compressed, status_code, headers, media_type="application/json")
+    return Response(plain, status_code, media_type="application/json")
 
 
 @router.get(
@@ -113,13 +78,30 @@ def store_selections(request: Request, sized: Sequence[SizedSelection]) -> None:
     response_model=SelectionOut,
     responses={404: {"description": "unknown selection"}},
 )
-def get_selection(selection_id: str, session: SessionDep) -> Response:
+def get_selection(
+    selection_id: Annotated[str, Path(max_length=36)], request: Request, session: SessionDep
+) -> Response:
     """A stored selection, exactly as it was answered."""
-    stored = SelectionRepository(session).response(selection_id)
-    if stored is None:
-        raise ResourceNotFoundError.at(
-            ["path", "selection_id"], f"no selection {selection_id!r}", "not_found"
-        )
-    # Written as stored: it was a validated SelectionOut when it was stored, and
-    # validating the ≈ 1 MB again took 45 % of this request.
-    return Response(pydantic_core.to_json(stored), media_type="application/json")
+    stored = stored_answer(session, selection_id)
+    if "gzip" in request.headers.get("accept-encoding", ""):
+        return Response(stored, media_type="application/json", headers={"Content-Encoding": "gzip"})
+    return Response(gzip.decompress(stored), media_type="application/json")
+
+
+@router.get(
+    "/selections/{selection_id}/candidates/{model}",
+    responses={
+        404: {"description": "unknown selection, or a model that is no candidate of it"},
+        409: {"description": "the catalogue has changed since the selection"},
+    },
+)
+@reads_only
+def get_candidate(
+    selection_id: Annotated[str, Path(max_length=36)],
+    model: Annotated[str, Path(max_length=60)],
+    request: Request,
+    session: SessionDep,
+) -> CandidateDetailOut:
+    """One candidate of a stored selection in full: every check in words, every controller
+    of Table 521.1 with its criteria and voltage check, the actuator's catalogue data."""
+    return candidate_detail(session, catalogue_snapshot(request, session), selection_id, model)

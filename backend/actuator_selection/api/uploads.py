@@ -24,7 +24,7 @@ from actuator_selection.api.errors import (
     RequestFieldError,
     UnsupportedMediaTypeError,
 )
-from actuator_selection.db.csvio import CatalogueFileError, Problem
+from actuator_selection.core.csvio import CatalogueFileError, Problem
 
 MAX_UPLOAD_BYTES = 20 * 1024 * 1024
 """Largest body or unpacked ZIP member accepted [bytes]: the starter catalogue is < 50 kB."""

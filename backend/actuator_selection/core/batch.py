@@ -267,11 +267,25 @@ def _zone_limits(
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class _RuleArrays:
+    """What :meth:`~actuator_selection.core.checks.Rule.check` reports, for a block."""
+
+    values: FloatArray
+    """The value checked; NaN where unknown (the scalar reports None)."""
+    limits: FloatArray
+    """The limit; NaN where there is none (no data, or beyond a zone's last speed)."""
+    approximate: BoolArray
+    first_missing: CodeArray
+    """Index into the rule's requirements of the first one missing; −1 where none is."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class _Block:
     accel_torque: FloatArray
     decel_torque: FloatArray
     rms_torque: FloatArray
     statuses: tuple[CodeArray, ...]
+    details: tuple[_RuleArrays, ...] | None = None
 
     def verdicts(self) -> CodeArray:
         worst = np.full(self.accel_torque.shape, _PASS)
@@ -312,15 +326,24 @@ def _settle_near_limit(
 
 
 def _status_codes(
-    rule: Rule, q: Operands, cases: _Cases, shape: tuple[int, int], *, exact: bool
-) -> CodeArray:
+    rule: Rule,
+    q: Operands,
+    cases: _Cases,
+    shape: tuple[int, int],
+    *,
+    exact: bool,
+    detail: bool = False,
+) -> tuple[CodeArray, _RuleArrays | None]:
     """The codes of one rule for the block (:meth:`~actuator_selection.core.checks.Rule.check`
-    on arrays): no data where a requirement is missing, else pass, fail or warn."""
+    on arrays): no data where a requirement is missing, else pass, fail or warn; with
+    ``detail``, also the value, limit, approximation and missing requirement it reports."""
     xp = ARRAY_OPS
     with np.errstate(all="ignore"):  # NaN where data is missing: masked below
-        missing: BoolArray | bool = False
-        for need in rule.requires:
-            missing = missing | need.missing(q, xp)
+        first_missing: CodeArray = np.full(shape, -1, dtype=np.int8)
+        for k, need in enumerate(rule.requires):
+            lacking = np.broadcast_to(need.missing(q, xp), shape)
+            first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
+        missing = first_missing >= 0
         value, limit = rule.value(q, xp), rule.limit(q, xp)
         if not exact and rule.reads_rms and _settle_near_limit(q, value, limit, cases, shape):
             value, limit = rule.value(q, xp), rule.limit(q, xp)
@@ -328,7 +351,20 @@ def _status_codes(
         if rule.within is not None:
             ok = ok & rule.within(q, xp)
     fail = _FAIL if rule.binding is None else np.where(rule.binding(q, xp), _FAIL, _WARN)
-    return np.broadcast_to(np.where(missing, _NO_DATA, np.where(ok, _PASS, fail)), shape)
+    codes = np.broadcast_to(np.where(missing, _NO_DATA, np.where(ok, _PASS, fail)), shape)
+    if not detail:
+        return codes, None
+    approximate = (
+        np.zeros(shape, dtype=np.bool_)
+        if rule.approximate is None
+        else np.broadcast_to(rule.approximate(q, xp), shape) & ~missing
+    )
+    return codes, _RuleArrays(
+        values=np.broadcast_to(value, shape),
+        limits=np.where(missing, math.nan, np.broadcast_to(limit, shape)),
+        approximate=approximate,
+        first_missing=first_missing,
+    )
 
 
 def _evaluate_block(
@@ -338,12 +374,14 @@ def _evaluate_block(
     rules: Sequence[Rule],
     *,
     exact: bool,
+    detail: bool = False,
 ) -> _Block:
     """The flowchart for ``cases`` × every actuator (rows × columns).
 
     ``exact``: T_rms bit for bit as Python computes it. Otherwise its squares are
     ``x * x`` and only the T_rms near a limit are made exact: the statuses are the
-    same, at about half the cost.
+    same, at about half the cost. ``detail`` (with ``exact``): the checks' values and
+    limits too.
     """
     col = np.newaxis
     square = _python_square if exact else _square
@@ -382,11 +420,14 @@ def _evaluate_block(
         zone_torque_nm=zone_torque,
         zone_max_speed_rpm=cat.zone_max_speed,
     )
+    results = [_status_codes(r, q, cases, shape, exact=exact, detail=detail) for r in rules]
+    details = [d for _, d in results if d is not None]
     return _Block(
         accel_torque=accel_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
-        statuses=tuple(_status_codes(rule, q, cases, shape, exact=exact) for rule in rules),
+        statuses=tuple(codes for codes, _ in results),
+        details=tuple(details) if detail else None,
     )
 
 
@@ -419,12 +460,30 @@ class BatchEvaluation:
     """Status codes (:data:`STATUS_BY_CODE`), case × actuator × check (:attr:`check_names`)."""
     verdicts: CodeArray
     """Verdict codes (:data:`VERDICT_BY_CODE`), case × actuator."""
+    values: FloatArray
+    """Each check's value, case × actuator × check; NaN where unknown."""
+    limits: FloatArray
+    """Each check's limit, case × actuator × check; NaN where it has none."""
+    approximate: BoolArray
+    """Where a check's limit is a simplified stand-in, case × actuator × check."""
+    first_missing: CodeArray
+    """Per case × actuator × check, the index of the first requirement of the rule that
+    the catalogue does not meet (its ``what`` in :attr:`missing_what`); −1: none."""
+    missing_what: tuple[tuple[str, ...], ...] = ()
+    """Per check, its requirements' ``what`` (:class:`~actuator_selection.core.checks.
+    Requirement`), in order."""
     check_names: tuple[str, ...] = CHECK_NAMES
     """The checks (the rules' names) along the last axis of :attr:`statuses`."""
 
     def status(self, case: int, actuator: int, check: str) -> Status:
         """The status of one check of one case and actuator."""
         return STATUS_BY_CODE[int(self.statuses[case, actuator, self.check_names.index(check)])]
+
+    def missing(self, case: int, actuator: int, check: str) -> str | None:
+        """What the catalogue lacks for one check (``Check.missing``), or None."""
+        k = self.check_names.index(check)
+        index = int(self.first_missing[case, actuator, k])
+        return None if index < 0 else self.missing_what[k][index]
 
     def verdict(self, case: int, actuator: int) -> Verdict:
         """The verdict of one case and actuator."""
@@ -453,16 +512,25 @@ def evaluate_batch(
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))
     accel, decel, rms = (np.empty(shape) for _ in range(3))
-    statuses = np.empty((*shape, len(rules)), dtype=np.int8)
+    checks = (*shape, len(rules))
+    statuses = np.empty(checks, dtype=np.int8)
+    values, limits = np.empty(checks), np.empty(checks)
+    approximate = np.empty(checks, dtype=np.bool_)
+    first_missing = np.empty(checks, dtype=np.int8)
     verdicts = np.empty(shape, dtype=np.int8)
     for start, stop in _blocks(actuators, apps):
         rows = cases.rows(start, stop)
-        block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, exact=True)
+        block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, exact=True, detail=True)
+        assert block.details is not None
         accel[start:stop] = block.accel_torque
         decel[start:stop] = block.decel_torque
         rms[start:stop] = block.rms_torque
-        for k, codes in enumerate(block.statuses):
+        for k, (codes, detail) in enumerate(zip(block.statuses, block.details, strict=True)):
             statuses[start:stop, :, k] = codes
+            values[start:stop, :, k] = detail.values
+            limits[start:stop, :, k] = detail.limits
+            approximate[start:stop, :, k] = detail.approximate
+            first_missing[start:stop, :, k] = detail.first_missing
         verdicts[start:stop] = block.verdicts()
     return BatchEvaluation(
         mean_speed_rpm=cases.mean_speed,
@@ -473,6 +541,11 @@ def evaluate_batch(
         rms_torque_nm=rms,
         statuses=statuses,
         verdicts=verdicts,
+        values=values,
+        limits=limits,
+        approximate=approximate,
+        first_missing=first_missing,
+        missing_what=tuple(tuple(need.what for need in rule.requires) for rule in rules),
         check_names=tuple(rule.name for rule in rules),
     )
 

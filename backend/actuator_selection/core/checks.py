@@ -85,6 +85,8 @@ class Check:
     reference: str
     message: str
     approximate: bool = False
+    missing: str | None = None
+    """For ``no_data``: the catalogue value that is missing, in words; else None."""
 
     @property
     def margin_percent(self) -> float | None:
@@ -107,6 +109,7 @@ def _new_check(
     reference: str,
     message: str,
     approximate: bool,
+    missing: str | None = None,
 ) -> Check:
     """``Check(name=…, …)`` at two thirds of the cost, for :meth:`Rule.check`.
 
@@ -124,6 +127,7 @@ def _new_check(
     _set_field(check, "reference", reference)
     _set_field(check, "message", message)
     _set_field(check, "approximate", approximate)
+    _set_field(check, "missing", missing)
     return check
 
 
@@ -281,10 +285,10 @@ class Rule:
     reads_rms: bool = False
     """True if value or limit reads T_rms: the vectorised ranking, which squares as
     ``x * x``, then makes T_rms exact where the value lies near the limit."""
-    _no_data: tuple[tuple[str | None, tuple[str, ...], str], ...] = field(
+    _no_data: tuple[tuple[str | None, tuple[str, ...], str, str], ...] = field(
         init=False, repr=False, compare=False
     )
-    """:attr:`requires` as (unless, any_of, message) for :meth:`check`'s short cut."""
+    """:attr:`requires` as (unless, any_of, message, what) for :meth:`check`'s short cut."""
 
     def __post_init__(self) -> None:
         no_data = tuple(
@@ -292,6 +296,7 @@ class Rule:
                 need.unless,
                 need.any_of,
                 f"no data: the catalogue gives no {need.what} for this actuator",
+                need.what,
             )
             for need in self.requires
         )
@@ -302,7 +307,7 @@ class Rule:
         xp = FLOAT_OPS
         value = self.value(q, xp)
         known_value = value if value == value else None  # NaN: T_1, T_3, T_rms without J_A
-        for unless, any_of, no_data in self._no_data:  # Requirement.missing, short-circuited
+        for unless, any_of, no_data, what in self._no_data:  # Requirement.missing, short-circuited
             if unless is not None and getattr(q, unless):
                 continue
             for name in any_of:
@@ -319,6 +324,7 @@ class Rule:
                     self.reference,
                     no_data,
                     False,
+                    what,
                 )
         limit = self.limit(q, xp)
         if value <= limit and (self.within is None or self.within(q, xp)):

@@ -60,7 +60,7 @@ def _no_voltage_data(reason: str) -> Check:
     )
 
 
-def _shared_bus_classes(
+def shared_bus_classes(
     *, interface: ActuatorInterface, controller: Controller, buses: Sequence[DcBusClass]
 ) -> tuple[DcBusClass, ...]:
     """The bus classes of ``buses`` (in their order) that both the actuator and the controller
@@ -89,15 +89,15 @@ def voltage_check(
     saying whether it is rms or peak, comparing with an rms bus voltage would be
     a guess, so those pairs say "no data".
     """
-    return _voltage_check(
+    return shared_voltage_check(
         actuator=actuator,
         interface=interface,
-        shared=_shared_bus_classes(interface=interface, controller=controller, buses=buses),
+        shared=shared_bus_classes(interface=interface, controller=controller, buses=buses),
         speed_rpm=speed_rpm,
     )
 
 
-def _voltage_check(
+def shared_voltage_check(
     *,
     actuator: Actuator,
     interface: ActuatorInterface,
@@ -180,10 +180,10 @@ def drive_options(
     checks: dict[tuple[DcBusClass, ...], Check] = {}
     options = []
     for m in usable:
-        shared = _shared_bus_classes(interface=interface, controller=m.controller, buses=buses)
+        shared = shared_bus_classes(interface=interface, controller=m.controller, buses=buses)
         check = checks.get(shared)
         if check is None:
-            check = checks[shared] = _voltage_check(
+            check = checks[shared] = shared_voltage_check(
                 actuator=actuator, interface=interface, shared=shared, speed_rpm=speed_rpm
             )
         options.append(DriveOption(match=m, voltage=check))

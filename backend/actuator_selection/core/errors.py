@@ -1,9 +1,9 @@
 """Domain errors raised by the core.
 
 Each error names the input ``field`` it concerns (dotted, as in the API's request
-body where there is one) and carries a message an engineer understands. The API
-maps them to HTTP status codes in one place (``api/errors.py``); the core never
-knows about HTTP.
+body where there is one, or in the path or query where ``where`` says so) and
+carries a message an engineer understands. Each kind carries the HTTP status it
+answers with (``http_status``); one handler in ``api/errors.py`` writes the answer.
 """
 
 from __future__ import annotations
@@ -18,12 +18,19 @@ class DomainError(ValueError):
         Dotted name of the offending input, e.g. ``"cycle.accel_s"``.
     message
         What rule the input breaks and why the rule exists.
+    where
+        Which part of a request holds the field: ``body``, ``path`` or ``query``.
     """
 
-    def __init__(self, field: str, message: str) -> None:
+    http_status = 422
+    code: str | None = None
+    """The error's ``type`` in the API; None: the class name."""
+
+    def __init__(self, field: str, message: str, *, where: str = "body") -> None:
         super().__init__(f"{field}: {message}")
         self.field = field
         self.message = message
+        self.where = where
 
 
 class InvalidInputError(DomainError):
@@ -35,7 +42,17 @@ class OutOfRangeError(InvalidInputError):
 
 
 class NotFoundError(DomainError):
-    """A named catalogue item that does not exist (maps to 404)."""
+    """A named item that does not exist (maps to 404)."""
+
+    http_status = 404
+    code = "not_found"
+
+
+class ConflictError(DomainError):
+    """A request that the stored state no longer allows (maps to 409)."""
+
+    http_status = 409
+    code = "conflict"
 
 
 class MissingDataError(DomainError):

@@ -199,16 +199,17 @@ _VERDICT_ORDER = {Verdict.SUITABLE: 0, Verdict.UNCONFIRMED: 1, Verdict.UNSUITABL
 
 
 def ranking_key(candidate: Candidate) -> tuple[int, float, float, str]:
-    """Sort key: verdict (suitable, unconfirmed, unsuitable), then the smallest actuator.
+    """Sort key: verdict (suitable, unconfirmed, unsuitable), then the smallest actuator
+    (:func:`size_key`)."""
+    return (_VERDICT_ORDER[candidate.verdict], *size_key(candidate.actuator))
 
-    "Smallest" is the lowest peak torque T_max, then the lowest inertia J_A: the
-    least actuator that does the job comes first. Unknown values sort last, and
-    the model name breaks ties so that the order is total and repeatable.
-    """
-    a = candidate.actuator
+
+def size_key(a: Actuator) -> tuple[float, float, str]:
+    """The smallest actuator first: the lowest peak torque T_max, then the lowest inertia
+    J_A, so that the least actuator that does the job comes first. Unknown values sort
+    last, and the model name breaks ties so that the order is total and repeatable."""
     inf = float("inf")
     return (
-        _VERDICT_ORDER[candidate.verdict],
         a.max_torque_nm if a.max_torque_nm is not None else inf,
         a.inertia_kgm2 if a.inertia_kgm2 is not None else inf,
         a.model,

@@ -1,7 +1,7 @@
 r"""The rules every text the service accepts obeys: no NUL, no control characters, no BiDi.
 
 Request bodies (``schemas.common.StrictModel``), catalogue and price cells
-(``db.csvio``) and URLs (``api.errors``) are checked by the same function.
+(``core.csvio``) and URLs (``api.errors``) are checked by the same function.
 
 >>> text_problem("FHA-25C-50-L") is None
 True

@@ -1,8 +1,8 @@
 """Catalogue writes for administrators: actuators, their zones, controllers, import/export.
 
 Every write is validated by the rules of the seed files (the ``CsvSpec``s of
-``db/seed.py`` and ``db/seed_controllers.py`` through
-:func:`~actuator_selection.db.csvio.check_values`), so the API and the seed
+``core/catalogue_files.py`` through
+:func:`~actuator_selection.core.csvio.check_values`), so the API and the seed
 loader cannot disagree on what a valid actuator or controller is. Every change
 raises the catalogue version; repositories flush, the request commits.
 """
@@ -17,9 +17,20 @@ from typing import Any
 from sqlalchemy import func, select
 from sqlalchemy.orm import Session, selectinload
 
+from actuator_selection.core.catalogue_files import (
+    ACTUATORS,
+    BUS_CLASSES,
+    CONTROLLERS,
+    FAMILIES,
+    INTERFACES,
+    KTY_POINTS,
+    SENSOR_FITTINGS,
+    ZONE_POINTS,
+)
+from actuator_selection.core.changes import CatalogueChanges
+from actuator_selection.core.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.changes import set_values
-from actuator_selection.db.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,
@@ -31,23 +42,8 @@ from actuator_selection.db.models import (
     ZonePointRow,
 )
 from actuator_selection.db.repositories import CatalogueVersionRepository
-from actuator_selection.db.seed import (
-    ACTUATORS,
-    FAMILIES,
-    ZONE_POINTS,
-    CatalogueChanges,
-    CatalogueFiles,
-    apply_catalogue,
-    zone_problems,
-)
-from actuator_selection.db.seed_controllers import (
-    BUS_CLASSES,
-    CONTROLLERS,
-    INTERFACES,
-    KTY_POINTS,
-    SENSOR_FITTINGS,
-    controller_name_problems,
-)
+from actuator_selection.db.seed import CatalogueFiles, apply_catalogue, zone_problems
+from actuator_selection.db.seed_controllers import controller_name_problems
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

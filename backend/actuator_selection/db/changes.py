@@ -1,46 +1,20 @@
 """Writing validated catalogue rows: upsert by natural key, count what changed.
 
 Shared by every catalogue file (``db/seed.py``, ``db/seed_controllers.py``), so
-seeding, importing and the admin API count and apply changes the same way.
+seeding, importing and the admin API count and apply changes the same way; the
+counts are :class:`~actuator_selection.core.changes.FileChanges`.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
 
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
-
-@dataclass(slots=True)
-class FileChanges:
-    """What loading one file did (or, in a dry run, would do) to the stored rows.
-
-    ``retired``: rows withdrawn: actuators and controllers are retired (soft
-    delete, kept for the records that name them), other rows are removed.
-    """
-
-    inserted: int = 0
-    updated: int = 0
-    unchanged: int = 0
-    retired: int = 0
-
-    def count(self, *, is_new: bool, changed: bool, n: int = 1) -> None:
-        """Count ``n`` rows as inserted, updated or unchanged."""
-        if is_new:
-            self.inserted += n
-        elif changed:
-            self.updated += n
-        else:
-            self.unchanged += n
-
-    @property
-    def changed(self) -> bool:
-        """True when anything was inserted, updated or retired."""
-        return bool(self.inserted or self.updated or self.retired)
+from actuator_selection.core.changes import FileChanges
 
 
 def set_values(row: Any, values: Mapping[str, Any]) -> bool:

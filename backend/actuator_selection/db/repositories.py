@@ -194,7 +194,7 @@ class SelectionRepository:
         created_at: datetime,
         catalogue_version: int,
         request: dict[str, Any],
-        response: dict[str, Any],
+        answer_gzip: bytes,
     ) -> None:
         """Store one selection."""
         self._session.add(
@@ -203,12 +203,20 @@ class SelectionRepository:
                 created_at=created_at,
                 catalogue_version=catalogue_version,
                 request=request,
-                response=response,
+                answer_gzip=answer_gzip,
             )
         )
         self._session.flush()
 
-    def response(self, id: str) -> dict[str, Any] | None:
-        """The stored response of a selection, or None."""
-        row = self._session.get(SelectionRow, id)
-        return row.response if row else None
+    def answer_gzip(self, id: str) -> bytes | None:
+        """The stored answer of a selection (gzip-compressed JSON), or None."""
+        return self._session.scalar(select(SelectionRow.answer_gzip).where(SelectionRow.id == id))
+
+    def request(self, id: str) -> tuple[dict[str, Any], int] | None:
+        """The stored request of a selection and its catalogue version, or None."""
+        row = self._session.execute(
+            select(SelectionRow.request, SelectionRow.catalogue_version).where(
+                SelectionRow.id == id
+            )
+        ).one_or_none()
+        return None if row is None else (row.request, row.catalogue_version)

@@ -27,17 +27,8 @@ from sqlalchemy.dialects.sqlite import insert as sqlite_insert
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, selectinload
 
-from actuator_selection.core.quote_status import QuoteStatus
-from actuator_selection.core.sales import (
-    ApiKeyRecord,
-    NewQuote,
-    PriceListRecord,
-    PriceRecord,
-    QuoteItem,
-    QuoteRecord,
-)
-from actuator_selection.db.changes import FileChanges
-from actuator_selection.db.csvio import (
+from actuator_selection.core.changes import FileChanges
+from actuator_selection.core.csvio import (
     CatalogueFileError,
     Column,
     CsvSpec,
@@ -49,6 +40,15 @@ from actuator_selection.db.csvio import (
     iso_date,
     one_of,
     parse,
+)
+from actuator_selection.core.quote_status import QuoteStatus
+from actuator_selection.core.sales import (
+    ApiKeyRecord,
+    NewQuote,
+    PriceListRecord,
+    PriceRecord,
+    QuoteItem,
+    QuoteRecord,
 )
 from actuator_selection.db.models import ActuatorRow
 from actuator_selection.db.models.sales import (

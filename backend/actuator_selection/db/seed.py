@@ -1,6 +1,7 @@
 """Loading the whole catalogue idempotently and atomically.
 
-The catalogue is the files of :data:`CATALOGUE_SPECS`: families, actuators and
+The catalogue is the files of
+:data:`~actuator_selection.core.catalogue_files.CATALOGUE_SPECS`: families, actuators and
 their zones (this module), and Table 521.1's controllers, sensor data, bus
 classes and actuator interfaces (:mod:`actuator_selection.db.seed_controllers`).
 Every file is validated before anything is written; one bad cell loads nothing
@@ -9,7 +10,8 @@ nothing: rows are matched by their natural key (family name, actuator model,
 controller row, ...) and updated only where a value differs. The catalogue
 version rises once per load that changed anything.
 
-Two modes share one code path and one rulebook (the ``CsvSpec`` below):
+Two modes share one code path and one rulebook (the ``CsvSpec`` of each file,
+:mod:`actuator_selection.core.catalogue_files`):
 
 - **seed** (:func:`load_seed`, the ``seed`` command): adds and updates, never
   retires, so seeding again keeps what an administrator added or retired;
@@ -21,7 +23,7 @@ Two modes share one code path and one rulebook (the ``CsvSpec`` below):
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -29,111 +31,27 @@ from typing import Any
 from sqlalchemy import select
 from sqlalchemy.orm import Session, selectinload
 
-from actuator_selection.db.changes import FileChanges, retire_at, sync_rows
-from actuator_selection.db.csvio import (
+from actuator_selection.core.catalogue_files import (
+    ACTUATORS,
+    CATALOGUE_SPECS,
+    FAMILIES,
+    JSON_KEYS,
+    ZONE_POINTS,
+)
+from actuator_selection.core.changes import CatalogueChanges, FileChanges
+from actuator_selection.core.csvio import (
     CatalogueFileError,
-    Column,
     CsvSpec,
     Problem,
     Record,
-    Rule,
     parse,
     parse_rows,
     read,
 )
+from actuator_selection.db.changes import retire_at, sync_rows
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
 from actuator_selection.db.repositories import CatalogueVersionRepository
-from actuator_selection.db.seed_controllers import (
-    PROTECTION_SPECS,
-    apply_protection,
-    protection_problems,
-)
-
-_P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
-MILLI = 1e-3
-
-FAMILIES = CsvSpec(
-    file="families.csv",
-    key=("name",),
-    columns=(
-        Column(name="name", required=True, max_length=40),
-        Column(name="description"),
-        Column(name="temperature_sensors"),
-        Column(name="warning_temperature_c", numeric=True),
-        Column(name="shutdown_temperature_c", numeric=True),
-        Column(name="temperature_tolerance_percent", numeric=True, rule=_N),
-        Column(name="warning_resistance_ohm", numeric=True, rule=_P),
-        Column(name="shutdown_resistance_ohm", numeric=True, rule=_P),
-        Column(name="resistance_tolerance_percent", numeric=True, rule=_N),
-        Column(name="source", required=True),
-    ),
-)
-
-ACTUATORS = CsvSpec(
-    file="actuators.csv",
-    key=("model",),
-    columns=(
-        Column(name="model", required=True, max_length=60),
-        Column(name="family", required=True, max_length=40),
-        Column(name="gear_ratio", numeric=True, required=True, rule=_P),
-        Column(name="max_torque_nm", numeric=True, rule=_P),
-        Column(name="max_speed_rpm", numeric=True, rule=_P),
-        Column(name="inertia_kgm2", numeric=True, rule=_P),
-        Column(name="stall_torque_nm", numeric=True, rule=_P),
-        Column(name="continuous_torque_nm", numeric=True, rule=_P),
-        Column(name="max_current_a", numeric=True, rule=_P),
-        Column(name="stall_current_a", numeric=True, rule=_P),
-        Column(name="continuous_current_a", numeric=True, rule=_P),
-        Column(name="torque_constant_nm_per_a", numeric=True, rule=_P),
-        Column(name="motor_torque_constant_nm_per_a", numeric=True, rule=_P),
-        Column(name="motor_voltage_constant_v_per_krpm", numeric=True, rule=_P),
-        Column(name="output_voltage_constant_v_per_rpm", numeric=True, rule=_P),
-        Column(name="resistance_line_ohm", numeric=True, rule=_P),
-        Column(name="resistance_phase_ohm", numeric=True, rule=_P),
-        Column(name="inductance_line_mh", numeric=True, rule=_P),
-        Column(name="inductance_phase_mh", numeric=True, rule=_P),
-        Column(name="no_load_starting_current_a", numeric=True, rule=_N),
-        Column(
-            name="no_load_current_constant_30c_ma_per_rpm",
-            numeric=True,
-            rule=_N,
-            scale=MILLI,
-            target="no_load_current_constant_30c_a_per_rpm",
-        ),
-        Column(
-            name="no_load_current_constant_80c_ma_per_rpm",
-            numeric=True,
-            rule=_N,
-            scale=MILLI,
-            target="no_load_current_constant_80c_a_per_rpm",
-        ),
-        Column(name="thermal_time_constant_s", numeric=True, rule=_P),
-        Column(name="mass_kg", numeric=True, rule=_P),
-        Column(name="max_dc_bus_voltage_v", numeric=True, rule=_P),
-        Column(name="supply_voltage", max_length=40),
-        Column(name="feedback", max_length=80),
-        Column(name="notes"),
-        Column(name="source", required=True),
-    ),
-)
-
-ZONE_POINTS = CsvSpec(
-    file="zone_points.csv",
-    key=("actuator_model", "speed_rpm"),
-    columns=(
-        Column(name="actuator_model", required=True, max_length=60),
-        Column(name="speed_rpm", numeric=True, required=True, rule=_N),
-        Column(name="torque_nm", numeric=True, required=True, rule=_N),
-        Column(name="source", required=True),
-    ),
-)
-
-
-CATALOGUE_SPECS = (FAMILIES, ACTUATORS, ZONE_POINTS, *PROTECTION_SPECS)
-"""The files of a whole catalogue, in loading order."""
-
-JSON_KEYS = {spec.file: spec.file.removesuffix(".csv") for spec in CATALOGUE_SPECS}
-"""The key of each file's rows in the JSON form of a catalogue (the file's stem)."""
+from actuator_selection.db.seed_controllers import apply_protection, protection_problems
 
 
 @dataclass(frozen=True, slots=True)
@@ -146,20 +64,6 @@ class SeedReport:
 
     def __str__(self) -> str:
         return f"inserted {self.inserted}, updated {self.updated}, unchanged {self.unchanged}"
-
-
-@dataclass(slots=True)
-class CatalogueChanges:
-    """What a catalogue load changed, per file."""
-
-    files: dict[str, FileChanges] = field(
-        default_factory=lambda: {spec.file: FileChanges() for spec in CATALOGUE_SPECS}
-    )
-
-    @property
-    def changed(self) -> bool:
-        """True when anything was inserted, updated or retired."""
-        return any(c.changed for c in self.files.values())
 
 
 @dataclass(frozen=True, slots=True)

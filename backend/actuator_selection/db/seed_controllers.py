@@ -1,43 +1,33 @@
 """The controller files of the catalogue: Table 521.1, sensors (Tables 518.1, 519.2), interfaces.
 
-Their rules (``CsvSpec``) serve the seed loader, the catalogue import and the
-admin API alike, as the actuator files' rules in :mod:`actuator_selection.db.seed`
-do; that module reads, checks and writes all catalogue files together, this
-one knows what the controller-side files hold and how they are stored.
-
-Rows of ``controllers.csv`` are numbered by ``source_row``: Table 521.1's rows
-keep their printed numbers (1 below the heading), rows added later take
-further numbers, and ``source`` says where each row comes from.
+Their rules (``CsvSpec``) are in :mod:`actuator_selection.core.catalogue_files`
+with the actuator files' rules; :mod:`actuator_selection.db.seed` reads, checks
+and writes all catalogue files together, this module knows what the
+controller-side files must agree on across rows and how they are stored.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Mapping, Sequence
 from datetime import datetime
-from enum import StrEnum
 from typing import Any
 
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.compatibility import (
-    MARK_COLUMNS,
-    BusClass,
-    FeedbackSystem,
-    parse_support_level,
+from actuator_selection.core.catalogue_files import (
+    BUS_CLASSES,
+    CONTROLLERS,
+    INTERFACES,
+    KTY_POINTS,
+    SENSOR_FITTINGS,
 )
+from actuator_selection.core.changes import FileChanges
+from actuator_selection.core.compatibility import BusClass
+from actuator_selection.core.csvio import CsvSpec, Problem, Record
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.thermal import KtyCharacteristic, TemperatureSensor
-from actuator_selection.db.changes import FileChanges, delete_in, retire_at, sync_rows
-from actuator_selection.db.csvio import (
-    Column,
-    CsvSpec,
-    Problem,
-    Record,
-    Rule,
-    one_of,
-    whole_number,
-)
+from actuator_selection.db.changes import delete_in, retire_at, sync_rows
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,
@@ -47,106 +37,6 @@ from actuator_selection.db.models import (
     SensorFittingRow,
     SensorPointRow,
 )
-
-
-def mark(text: str) -> str:
-    """A mark of Table 521.1, stored as ``tested`` (●) or ``possible`` (○)."""
-    try:
-        level = parse_support_level(text, field="mark")
-    except DomainError:
-        raise ValueError("must be tested (●), possible (○) or empty") from None
-    assert level is not None, "an empty cell never reaches a converter"
-    return level.value
-
-
-def options(kind: type[StrEnum]) -> Callable[[str], str]:
-    """A converter for a space-separated list of distinct ``kind`` values."""
-    allowed = [o.value for o in kind]
-
-    def convert(text: str) -> str:
-        given = text.split()
-        unknown = [o for o in given if o not in allowed]
-        if unknown:
-            raise ValueError(
-                f"must be space-separated options of {', '.join(allowed)} (unknown: "
-                f"{', '.join(unknown)})"
-            )
-        if len(set(given)) != len(given):
-            raise ValueError("must name each option once")
-        return " ".join(given)
-
-    return convert
-
-
-CONTROLLERS = CsvSpec(
-    file="controllers.csv",
-    key=("source_row",),
-    columns=(
-        Column(name="source_row", required=True, convert=whole_number),
-        Column(name="manufacturer", required=True, max_length=80),
-        Column(name="type", required=True, max_length=80),
-        Column(name="variant", max_length=40),
-        *(Column(name=column, convert=mark) for _, _, column in MARK_COLUMNS),
-        Column(name="correction"),
-        Column(name="source", required=True),
-    ),
-)
-
-SENSOR_FITTINGS = CsvSpec(
-    file="temperature_sensors.csv",
-    key=("family", "variant", "sensor"),
-    columns=(
-        Column(name="family", required=True, max_length=40),
-        Column(name="variant", max_length=40),
-        Column(name="sensor", required=True, convert=one_of(*TemperatureSensor)),
-        Column(name="designation", max_length=60),
-        Column(name="sensor_count", required=True, convert=whole_number),
-        Column(name="nominal_response_temperature_c", numeric=True),
-        Column(name="note"),
-        Column(name="source", required=True),
-    ),
-)
-
-KTY_POINTS = CsvSpec(
-    file="kty84_130.csv",
-    key=("temperature_c",),
-    columns=(
-        Column(name="temperature_c", numeric=True, required=True),
-        Column(name="resistance_ohm", numeric=True, required=True, rule=Rule.POSITIVE),
-        Column(name="source", required=True),
-    ),
-)
-
-BUS_CLASSES = CsvSpec(
-    file="dc_bus_classes.csv",
-    key=("bus_class",),
-    columns=(
-        Column(name="bus_class", required=True, convert=one_of(*BusClass)),
-        Column(name="label", required=True, max_length=40),
-        Column(name="nominal_dc_voltage_v", numeric=True, required=True, rule=Rule.POSITIVE),
-        Column(name="derivation"),
-        Column(name="source", required=True),
-    ),
-)
-
-INTERFACES = CsvSpec(
-    file="actuator_interfaces.csv",
-    key=("actuator_model",),
-    columns=(
-        Column(name="actuator_model", required=True, max_length=60),
-        Column(name="dc_bus_classes", convert=options(BusClass)),
-        Column(name="temperature_sensors", convert=options(TemperatureSensor)),
-        Column(name="feedback_systems", convert=options(FeedbackSystem)),
-        Column(name="derivation"),
-        Column(name="source", required=True),
-    ),
-)
-
-OPTION_COLUMNS = frozenset({"dc_bus_classes", "temperature_sensors", "feedback_systems"})
-"""The columns of actuator_interfaces.csv that hold space-separated option names."""
-
-PROTECTION_SPECS = (CONTROLLERS, SENSOR_FITTINGS, KTY_POINTS, BUS_CLASSES, INTERFACES)
-"""The controller-side files, in loading order (after the actuator files)."""
 
 
 def controller_name_problems(

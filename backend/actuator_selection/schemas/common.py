@@ -42,7 +42,7 @@ MAX_FRICTION_COEFFICIENT = 10.0
 
 
 def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:
-    """The text rule (``db.csvio.text_problem``) broken by ``value``: text, or lists and
+    """The text rule (``core.text.text_problem``) broken by ``value``: text, or lists and
     objects of it (keys too); None when every text in it is clean."""
     if isinstance(value, str):
         return text_problem(value, line_breaks=line_breaks)
@@ -60,7 +60,7 @@ def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:
 
 class StrictModel(BaseModel):
     """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞;
-    text obeys the one text rule (``db.csvio.text_problem``): no U+0000 (PostgreSQL cannot
+    text obeys the one text rule (``core.text.text_problem``): no U+0000 (PostgreSQL cannot
     store it), no control characters or bidirectional overrides, and line breaks and tabs
     only in the fields named in ``line_break_fields`` (e.g. an address).
 

@@ -153,7 +153,7 @@ class DriveOptionBodies:
     """Builds the candidates' ``controllers`` lists of one selection, each distinct part once.
 
     The starter catalogue's candidates list ~850 drive options between them, made of a
-    few dozen distinct controller matches (matching is per interface, see ``api.drive``)
+    few dozen distinct controller matches (matching is per interface, see ``services.catalogue``)
     and about as many distinct voltage checks. Building every option from its core
     objects was the largest cost of a selection's response; response models are frozen,
     so one instance of each part can stand in every list that holds it.

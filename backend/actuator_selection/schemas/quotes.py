@@ -21,6 +21,7 @@ from pydantic import (
     Field,
     StrictInt,
     StringConstraints,
+    model_validator,
 )
 
 from actuator_selection.core.money import MAX_QUANTITY, ROUNDING_RULE
@@ -266,7 +267,12 @@ class _Stored(BaseModel):
 
 
 class StoredCheck(_Stored):
-    """A flowchart check as stored with the selection."""
+    """A flowchart check as stored with the selection.
+
+    Selections stored before the lean answer hold unit, reference, message and margin
+    with every check; later ones hold the numbers, the rule's unit and reference once
+    (``check_rules``), and what a no-data check misses. Both read the same.
+    """
 
     name: str
     status: str
@@ -276,7 +282,25 @@ class StoredCheck(_Stored):
     reference: str = ""
     message: str = ""
     approximate: bool = False
-    margin_percent: float | None = None
+    missing: str | None = None
+
+    @property
+    def margin_percent(self) -> float | None:
+        """Headroom (limit − value)/limit [%], as the core computes it."""
+        if self.value is None or self.limit is None or self.limit <= 0:
+            return None
+        return (self.limit - self.value) / self.limit * 100.0
+
+    @property
+    def summary(self) -> str:
+        """The check in words: the stored message, or one written from its numbers."""
+        if self.message:
+            return self.message
+        if self.status == "no_data":
+            what = self.missing or "value this check needs"
+            return f"no data: the catalogue gives no {what} for this actuator"
+        relation = "≤" if self.status == "pass" else "exceeds"
+        return f"{self.name}: {self.value:.4g} {self.unit} {relation} {self.limit:.4g} {self.unit}"
 
 
 class StoredCandidate(_Stored):
@@ -290,8 +314,20 @@ class StoredCandidate(_Stored):
     constant_torque_nm: float | None = None
     decel_torque_nm: float | None = None
     rms_torque_nm: float | None = None
-    reasons: list[str] = []
     checks: list[StoredCheck] = []
+
+    @property
+    def reasons(self) -> list[str]:
+        """The checks that did not pass, in words."""
+        return [c.summary for c in self.checks if c.status != "pass"]
+
+
+class StoredRule(_Stored):
+    """Reference and unit of a check, as the lean answer lists them once."""
+
+    name: str
+    reference: str
+    unit: str
 
 
 class StoredLoad(_Stored):
@@ -325,3 +361,17 @@ class StoredSelection(_Stored):
     mean_speed_rpm: float
     duty_cycle_percent: float
     candidates: list[StoredCandidate]
+    check_rules: list[StoredRule] = []
+
+    @model_validator(mode="after")
+    def _rules_on_checks(self) -> StoredSelection:
+        """Each check with its rule's unit and reference (the lean answer lists them once)."""
+        rules = {r.name: r for r in self.check_rules}
+        for candidate in self.candidates:
+            for i, check in enumerate(candidate.checks):
+                rule = rules.get(check.name)
+                if rule is not None and not check.unit:
+                    candidate.checks[i] = check.model_copy(
+                        update={"unit": rule.unit, "reference": rule.reference}
+                    )
+        return self

@@ -5,7 +5,6 @@ Field names are part of the public API (issue "Selection engine end to end"); ke
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from datetime import datetime
 from typing import Annotated, Any, Literal
 
@@ -15,7 +14,8 @@ from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.drive import DriveOptions
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
-from actuator_selection.core.selection import Application, Candidate, Selection
+from actuator_selection.core.selection import Application, Candidate
+from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
@@ -201,9 +201,92 @@ class ResolvedLoad(ResponseModel):
     inertia_kgm2: float
 
 
-class CandidateOut(ResponseModel):
-    """The flowchart's result for one actuator."""
+class CheckBrief(ResponseModel):
+    """One check of a candidate in a selection's answer: its outcome and its numbers.
 
+    Unit and reference are the rule's (``check_rules``); the margin is
+    ``(limit − value)/limit · 100``; the message in words is in the candidate's detail
+    (GET /selections/{id}/candidates/{model}).
+    """
+
+    name: str
+    status: Literal["pass", "fail", "warn", "no_data"]
+    value: float | None
+    limit: float | None
+    approximate: bool = Field(
+        default=False,
+        description="true when a simplified limit stood in for the zone; omitted when false",
+    )
+    missing: str | None = Field(
+        default=None,
+        description="for no_data: the catalogue value that is missing; omitted otherwise",
+    )
+
+
+class CheckRuleOut(ResponseModel):
+    """What a check compares, once per selection: its reference and unit."""
+
+    name: str
+    reference: str = Field(description="the chapter's equation, table or figure")
+    unit: str = Field(description="unit of the check's value and limit")
+
+
+class ControllerRef(ResponseModel):
+    """A row of Table 521.1 that a candidate's drive options refer to by its index."""
+
+    manufacturer: str
+    type: str
+    variant: str | None
+    source_row: int | None
+
+
+class VoltageBrief(ResponseModel):
+    """The controller output-voltage check (Eq. 521.2) at n_2, for a group of controllers."""
+
+    status: Literal["pass", "fail", "warn", "no_data"]
+    value: float | None = Field(description="U_OUT needed at n_2 [V_rms]")
+    limit: float | None = Field(description="U_OUT the best shared DC bus gives [V_rms]")
+    reference: str = Field(description="Eq. 521.2 and the bus class compared with")
+
+
+class DriveOptionGroup(ResponseModel):
+    """Controllers not excluded for a candidate that match it alike and share one voltage check."""
+
+    level: Literal["tested", "possible", "unconfirmed"] = Field(
+        description="tested: every criterion of Table 521.1 practically tested; possible: "
+        "some only theoretically; unconfirmed: nothing excludes them but the actuator lacks data"
+    )
+    missing: list[str] = Field(description="criteria the actuator has no data for")
+    controllers: list[int] = Field(description="indexes into the selection's `controllers`")
+    voltage: VoltageBrief
+
+
+class CandidateOut(ResponseModel):
+    """The flowchart's result for one actuator, as the ranking lists it."""
+
+    model: str
+    family: str
+    gear_ratio: float
+    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
+    accel_torque_nm: float | None = Field(description="T_1 (Eq. 514.1) [Nm]")
+    constant_torque_nm: float | None = Field(description="T_2 = T_L [Nm]")
+    decel_torque_nm: float | None = Field(description="T_3, usually negative [Nm]")
+    rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
+    checks: list[CheckBrief]
+    controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
+    drive_options: list[DriveOptionGroup] | None = Field(
+        description="controllers of Table 521.1 not excluded for this actuator, best first, "
+        "grouped by match and voltage check; null for an unsuitable candidate (its detail "
+        "lists them)"
+    )
+
+
+class CandidateDetailOut(ResponseModel):
+    """One candidate of a stored selection in full: every check in words, every controller
+    of Table 521.1 with its criteria and voltage check, and the actuator's catalogue data."""
+
+    selection_id: str
+    catalogue_version: int
     model: str
     family: str
     gear_ratio: float
@@ -220,20 +303,24 @@ class CandidateOut(ResponseModel):
     )
     controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
     controllers_note: str = Field(description="what the controller list rests on")
+    actuator: ActuatorOut = Field(description="the catalogue entry, as GET /actuators/{model}")
 
     @classmethod
-    def from_core(
-        cls, candidate: Candidate, drive: DriveOptions, bodies: DriveOptionBodies | None = None
-    ) -> CandidateOut:
-        """The response body of one candidate with its drive options.
-
-        ``bodies`` shares the parts of the ``controllers`` lists among the candidates of one
-        selection; without it, this candidate's list is built on its own.
-        """
-        bodies = bodies or DriveOptionBodies()
+    def build(
+        cls,
+        *,
+        selection_id: str,
+        catalogue_version: int,
+        candidate: Candidate,
+        drive: DriveOptions,
+        actuator: ActuatorOut,
+    ) -> CandidateDetailOut:
+        """The detail of one candidate with its drive options."""
         t = candidate.torques
         a = candidate.actuator
         return cls(
+            selection_id=selection_id,
+            catalogue_version=catalogue_version,
             model=a.model,
             family=a.family,
             gear_ratio=a.gear_ratio,
@@ -244,9 +331,10 @@ class CandidateOut(ResponseModel):
             rms_torque_nm=t.rms_torque_nm if t else None,
             reasons=list(candidate.reasons),
             checks=[CheckOut.from_core(c) for c in candidate.checks],
-            controllers=bodies.controllers(drive),
+            controllers=DriveOptionBodies().controllers(drive),
             controllers_excluded=drive.excluded,
             controllers_note=controllers_note(drive),
+            actuator=actuator,
         )
 
 
@@ -273,43 +361,10 @@ class SelectionOut(ResponseModel):
     mean_speed_rpm: float = Field(description="n_av (Eq. 514.3) [rpm]")
     duty_cycle_percent: float = Field(description="ED (Eq. 514.4) [%]")
     ranking: str = Field(default=RANKING_RULE, description="how candidates are ordered")
+    check_rules: list[CheckRuleOut] = Field(
+        description="reference and unit of each check the candidates list, in their order"
+    )
+    controllers: list[ControllerRef] = Field(
+        description="the rows of Table 521.1 that the candidates' drive options refer to"
+    )
     candidates: list[CandidateOut]
-
-    @classmethod
-    def build(
-        cls,
-        *,
-        id: str,
-        created_at: datetime,
-        catalogue_version: int,
-        request: SelectionRequest,
-        selection: Selection,
-        drives: Mapping[str, DriveOptions],
-    ) -> SelectionOut:
-        """The response body of a selection just run."""
-        app_load = request.load.to_core()
-        bodies = DriveOptionBodies()
-        mechanism = (
-            None if isinstance(request.load, DirectLoad) else request.load.model_dump(mode="json")
-        )
-        return cls(
-            id=id,
-            created_at=created_at,
-            catalogue_version=catalogue_version,
-            load=ResolvedLoad(
-                speed_rpm=request.load.speed_rpm,
-                torque_nm=app_load.torque_nm,
-                inertia_kgm2=app_load.inertia_kgm2,
-            ),
-            mechanism=mechanism,
-            cycle=request.cycle,
-            high_dynamics=request.high_dynamics,
-            models=request.models,
-            cycle_time_s=selection.cycle_time_s,
-            mean_speed_rpm=selection.mean_speed_rpm,
-            duty_cycle_percent=selection.duty_cycle_percent,
-            candidates=[
-                CandidateOut.from_core(c, drives[c.actuator.model], bodies)
-                for c in selection.candidates
-            ],
-        )

@@ -8,7 +8,14 @@ import { appendSymbols, num, qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
-import { renderDetail, renderPermalink, renderRanking, renderSummary, resultSentence } from "./results.js";
+import {
+  fillDetail,
+  renderDetail,
+  renderPermalink,
+  renderRanking,
+  renderSummary,
+  resultSentence,
+} from "./results.js";
 
 const LOAD_KINDS = ["direct", "ball_screw", "rotary_table"];
 const MECHANISM_FIELDS = {
@@ -51,16 +58,50 @@ const createSelection = (body) => api.post("/selections", body);
 /** GET /api/v1/selections/{id}: a stored selection. */
 const getSelection = (id) => api.get(encodePath`/selections/${id}`);
 
-const actuators = new Map();
+/** GET /api/v1/selections/{id}/candidates/{model}: one candidate in full, with its catalogue data. */
+const getCandidateDetail = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}`);
 
-/** GET /api/v1/actuators/{model}, remembered for the page's lifetime (catalogue data). */
-function getActuator(model) {
-  if (!actuators.has(model)) {
-    const pending = api.get(encodePath`/actuators/${model}`);
-    pending.catch(() => actuators.delete(model));
-    actuators.set(model, pending);
-  }
-  return actuators.get(model);
+/**
+ * Candidates' details asked for, by selection id and model, for the page's lifetime:
+ * ``{status: "loading" | "ready" | "failed", detail, error, settled}``, ``settled`` a
+ * promise of the detail or null.
+ */
+const details = new Map();
+
+/** A failure that may pass: the server not reached, or an error of its own (5xx). */
+function transient(error) {
+  return !(error instanceof ApiError) || error.status === 0 || error.status >= 500 || error.kind !== "http";
+}
+
+/**
+ * The detail of ``model`` in ``sel``: asked once, then remembered. ``retry`` asks again
+ * after a failure that may pass (a 404 or 409 stays as it is).
+ */
+function candidateDetail(sel, model, { retry = false } = {}) {
+  const key = JSON.stringify([sel.id, model]);
+  const known = details.get(key);
+  if (known && !(retry && known.status === "failed" && transient(known.error))) return known;
+  const entry = { status: "loading", detail: null, error: null, settled: null };
+  entry.settled = getCandidateDetail(sel.id, model)
+    .then((detail) => {
+      if (!Array.isArray(detail.checks) || detail.model !== model) {
+        throw new ApiError({ status: 200, kind: "bad_response" });
+      }
+      entry.status = "ready";
+      entry.detail = detail;
+      return detail;
+    })
+    .catch((error) => {
+      entry.status = "failed";
+      entry.error = error;
+      return null;
+    })
+    .then((detail) => {
+      detailSettled(sel, model);
+      return detail;
+    });
+  details.set(key, entry);
+  return entry;
 }
 
 // ---------------------------------------------------------------- form
@@ -382,7 +423,8 @@ function renderChosen() {
   const candidate = chosenCandidate();
   if (!slot || !candidate) return;
   purgeCharts();
-  slot.replaceChildren(renderDetail(state.selection, candidate, state.lang));
+  const view = candidateDetail(state.selection, candidate.model);
+  slot.replaceChildren(renderDetail(state.selection, candidate, view, state.lang));
   for (const row of document.querySelectorAll("#ranking-table tbody tr[data-model]")) {
     const chosen = row.dataset.model === candidate.model;
     row.classList.toggle("chosen", chosen);
@@ -393,9 +435,18 @@ function renderChosen() {
   drawCharts();
 }
 
+/** A detail has arrived (or failed): the panel shows it if its candidate is still the chosen one. */
+function detailSettled(sel, model) {
+  const panel = $("#detail");
+  const candidate = chosenCandidate();
+  if (sel !== state.selection || candidate?.model !== model || panel?.dataset.model !== model) return;
+  fillDetail(panel, sel, candidate, candidateDetail(sel, model), state.lang);
+}
+
 function choose(model) {
   if (!state.selection?.candidates.some((c) => c.model === model)) return;
   state.chosen = model;
+  candidateDetail(state.selection, model, { retry: true });
   renderChosen();
   updateUrl();
   announce(resultSentence(state.selection, model, state.lang));
@@ -443,9 +494,9 @@ async function drawCharts() {
   const diagramDiv = $("#chart-diagram");
   if (!sel || !candidate || !cycleDiv || !diagramDiv) return;
   $("#cycle-caption").replaceChildren(appendSymbols(h("span"), cycleCaption(sel, candidate, lang)));
-  // asked now, so that the answer is on its way while plotly.js loads and the cycle is drawn;
-  // without it the diagram is drawn without catalogue limits, and says so
-  const actuatorPending = getActuator(candidate.model).catch(() => null);
+  // the detail is on its way (asked when the panel was drawn) while plotly.js loads and the
+  // cycle is drawn; without it the diagram is drawn without catalogue limits, and says so
+  const detailPending = candidateDetail(sel, candidate.model).settled;
 
   let Plotly;
   try {
@@ -465,7 +516,7 @@ async function drawCharts() {
   cycleDiv.dataset.model = candidate.model;
   cycleDiv.dataset.state = "ready";
 
-  const actuator = await actuatorPending;
+  const actuator = (await detailPending)?.actuator ?? null;
   if (token !== drawToken) return;
   $("#diagram-caption").replaceChildren(
     appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),

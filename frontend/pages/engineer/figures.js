@@ -289,7 +289,7 @@ export function diagramFigure(selection, candidate, actuator, lang) {
     });
   } else {
     // Above the plot area, where it can never hide a point.
-    layout.margin = { ...layout.margin, t: 44 };
+    layout.margin = { ...layout.margin, t: actuator ? 44 : 62 };
     layout.annotations.push({
       xref: "paper",
       yref: "paper",
@@ -299,9 +299,10 @@ export function diagramFigure(selection, candidate, actuator, lang) {
       yanchor: "bottom",
       yshift: 8,
       align: "left",
-      text: plotlySymbols(
-        actuator ? t("fig.zone_nodata") : `${t("fig.zone_nodata")} – ${t("charts.catalogue_missing")}`,
-      ),
+      // two lines without the catalogue, so that the box fits a narrow chart
+      text: actuator
+        ? plotlySymbols(t("fig.zone_nodata"))
+        : `${plotlySymbols(t("fig.zone_nodata"))}<br>${plotlySymbols(t("charts.catalogue_missing"))}`,
       showarrow: false,
       bgcolor: "#f0f2f5",
       bordercolor: "#999",

@@ -1,8 +1,22 @@
 // The result as DOM: summary of the load case, the permalink, the ranked
 // candidates and the chosen candidate's checks, controllers and chart frames.
 // API text is only ever set as text (never parsed as HTML).
+//
+// The ranking renders from the selection's lean answer (checks as numbers, units and
+// references once in ``check_rules``). The chosen candidate's panel renders from it
+// too until the candidate's detail arrives (the server's messages, every controller
+// with its criteria); then from the detail. A detail "view" is
+// ``{status: "loading" | "ready" | "failed", detail, error}``.
 
-import { h, sym } from "../../lib/dom.js";
+import {
+  checkFinding,
+  checkLabel,
+  checkRule,
+  marginPercent,
+  openChecks,
+  shortCheckLabel,
+} from "../../lib/checks.js";
+import { h, notice, sym } from "../../lib/dom.js";
 import { dateTime, num, plainSymbols, qty } from "../../lib/format.js";
 import { translate, translateReference, unitText } from "../../lib/i18n.js";
 
@@ -30,18 +44,6 @@ function approxBadge(lang) {
     h("span", { "aria-hidden": "true" }, "≈ "),
     translate(lang, "detail.approximate"),
   );
-}
-
-function checkLabel(name, lang) {
-  const key = `check.${name}`;
-  const text = translate(lang, key);
-  return text === key ? name : text;
-}
-
-function shortCheckLabel(name, lang) {
-  const key = `check.short.${name}`;
-  const text = translate(lang, key);
-  return text === key ? checkLabel(name, lang) : text;
 }
 
 /** A value with its unit; the number keeps the API's full value in data-value. */
@@ -146,12 +148,9 @@ function countVerdicts(candidates) {
   return counts;
 }
 
-function reasonList(candidate, lang, { short = false } = {}) {
-  const checks = Array.isArray(candidate.checks) ? candidate.checks : [];
-  const open = checks.filter((c) => c.status !== "pass");
-  if (open.length === 0 && Array.isArray(candidate.reasons) && candidate.reasons.length) {
-    return h("ul", { class: "reasons" }, candidate.reasons.map((r) => h("li", {}, sym(r, { lang: "en" }))));
-  }
+/** The checks that did not pass, from the lean answer: label, then value against limit or what is missing. */
+function reasonList(sel, candidate, lang, { short = false } = {}) {
+  const open = openChecks(candidate);
   if (open.length === 0) {
     return h("span", { class: "muted" }, translate(lang, "table.reason.none"));
   }
@@ -166,22 +165,49 @@ function reasonList(candidate, lang, { short = false } = {}) {
         " ",
         sym(short ? shortCheckLabel(c.name, lang) : checkLabel(c.name, lang), { class: "reason-check" }),
         c.approximate ? [" ", approxBadge(lang)] : null,
-        short ? ": " : h("br"),
-        sym(c.message, { class: "api-message", lang: "en" }),
+        short ? " – " : h("br"),
+        checkFinding(c, checkRule(sel, c.name)?.unit, lang),
       ),
     ),
   );
 }
 
-function checkMarks(candidate, lang) {
+/** The checks that did not pass in the server's words (the detail's), and any further reason it gives. */
+function detailReasonList(detail, lang) {
+  const open = (Array.isArray(detail.checks) ? detail.checks : []).filter((c) => c && c.status !== "pass");
+  const messages = new Set(open.map((c) => c.message));
+  const further = (Array.isArray(detail.reasons) ? detail.reasons : []).filter(
+    (r) => typeof r === "string" && !messages.has(r),
+  );
+  return h(
+    "ul",
+    { class: "reasons" },
+    open.map((c) =>
+      h(
+        "li",
+        { "data-check": c.name },
+        statusBadge(c.status, lang),
+        " ",
+        sym(checkLabel(c.name, lang), { class: "reason-check" }),
+        c.approximate ? [" ", approxBadge(lang)] : null,
+        h("br"),
+        sym(c.message, { class: "api-message", lang: "en" }),
+      ),
+    ),
+    further.map((r) => h("li", {}, sym(r, { class: "api-message", lang: "en" }))),
+  );
+}
+
+function checkMarks(sel, candidate, lang) {
   const checks = Array.isArray(candidate.checks) ? candidate.checks : [];
   return h(
     "ul",
     { class: "marks" },
     checks.map((c) => {
+      const unit = checkRule(sel, c.name)?.unit;
       const against =
         typeof c.value === "number" && typeof c.limit === "number"
-          ? ` (${qty(c.value, c.unit, lang)} / ${c.approximate ? "≈ " : ""}${qty(c.limit, c.unit, lang)})`
+          ? ` (${qty(c.value, unit, lang)} / ${c.approximate ? "≈ " : ""}${qty(c.limit, unit, lang)})`
           : "";
       const text = `${plainSymbols(shortCheckLabel(c.name, lang))}: ${translate(lang, `status.${c.status}`)}${against}`;
       return h(
@@ -261,7 +287,7 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
         "td",
         { role: "cell", class: "verdict", "data-label": t("table.verdict") },
         verdictBadge(c.verdict, lang),
-        checkMarks(c, lang),
+        checkMarks(sel, c, lang),
       ),
       h(
         "td",
@@ -278,7 +304,7 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
         { role: "cell", class: "num", "data-label": labelled(null, "T_rms [Nm]"), "data-field": "rms" },
         valueCell(c.rms_torque_nm, null, lang),
       ),
-      h("td", { role: "cell", class: "reason", "data-label": t("table.reason") }, reasonList(c, lang, { short: true })),
+      h("td", { role: "cell", class: "reason", "data-label": t("table.reason") }, reasonList(sel, c, lang, { short: true })),
     );
   });
 
@@ -341,8 +367,7 @@ function levelBadge(level, lang) {
   );
 }
 
-function criteriaMarks(controller, lang) {
-  const criteria = Array.isArray(controller.criteria) ? controller.criteria : [];
+function criteriaMarks(criteria, lang) {
   if (!criteria.length) return null;
   const order = (c) => {
     const i = CRITERIA.indexOf(c.criterion);
@@ -359,7 +384,7 @@ function criteriaMarks(controller, lang) {
         const status = Object.hasOwn(LEVEL_MARK, c.status) ? c.status : "no_data";
         return h(
           "li",
-          { class: `criterion criterion-${status}`, title: c.message ?? "" },
+          { class: `criterion criterion-${status}`, title: c.message ?? null },
           h("span", { class: "criterion-mark", "aria-hidden": "true" }, LEVEL_MARK[status]),
           " ",
           label,
@@ -369,25 +394,69 @@ function criteriaMarks(controller, lang) {
   );
 }
 
+/** Criteria of Table 521.1: all of them from the detail, else those the actuator lacks data for. */
+function criteriaCell(controller, lang) {
+  if (Array.isArray(controller.criteria)) {
+    return criteriaMarks(controller.criteria.filter((c) => c && typeof c === "object"), lang);
+  }
+  const missing = Array.isArray(controller.missing) ? controller.missing : [];
+  return criteriaMarks(
+    missing.map((criterion) => ({ criterion, status: "no_data" })),
+    lang,
+  );
+}
+
 function voltageCell(check, lang) {
   if (!check || typeof check !== "object") return h("span", { class: "muted" }, "–");
+  const unit = check.unit ?? "V";
   const against =
     typeof check.value === "number" && typeof check.limit === "number"
-      ? [" ", valueCell(check.value, check.unit, lang), " / ", valueCell(check.limit, check.unit, lang)]
+      ? [" ", valueCell(check.value, unit, lang), " / ", valueCell(check.limit, unit, lang)]
       : null;
   return [
     statusBadge(check.status, lang),
     against,
-    check.status === "pass" ? null : sym(check.message, { class: "api-message block", lang: "en" }),
+    check.status === "pass" || typeof check.message !== "string"
+      ? null
+      : sym(check.message, { class: "api-message block", lang: "en" }),
   ];
 }
 
-/** Controllers of Table 521.1 for the candidate, when the API sends them (else nothing). */
-function controllerList(candidate, lang) {
-  if (!Array.isArray(candidate.controllers)) return null;
+/**
+ * The candidate's controllers of Table 521.1: from the detail (each with its criteria
+ * and voltage check in words), else the lean answer's drive options, each group's
+ * controllers looked up in the selection's ``controllers``. Null when neither lists any.
+ */
+function controllerEntries(sel, candidate, detail) {
+  if (detail) {
+    if (!Array.isArray(detail.controllers)) return null;
+    return {
+      controllers: detail.controllers.filter((c) => c && typeof c === "object"),
+      excluded: detail.controllers_excluded,
+      note: detail.controllers_note,
+    };
+  }
+  if (!Array.isArray(candidate.drive_options)) return null;
+  const refs = Array.isArray(sel.controllers) ? sel.controllers : [];
+  const controllers = [];
+  for (const group of candidate.drive_options) {
+    if (!group || typeof group !== "object" || !Array.isArray(group.controllers)) continue;
+    for (const index of group.controllers) {
+      const ref = refs[index];
+      if (!ref || typeof ref !== "object") continue;
+      controllers.push({ ...ref, level: group.level, missing: group.missing, voltage: group.voltage });
+    }
+  }
+  return { controllers, excluded: candidate.controllers_excluded, note: null };
+}
+
+/** Controllers of Table 521.1 for the candidate, when the API lists them (else nothing). */
+function controllerList(sel, candidate, detail, lang) {
+  const entries = controllerEntries(sel, candidate, detail);
+  if (!entries) return null;
   const t = (k, p) => translate(lang, k, p);
-  const controllers = candidate.controllers.filter((c) => c && typeof c === "object");
-  const excluded = Number.isInteger(candidate.controllers_excluded) ? candidate.controllers_excluded : null;
+  const { controllers } = entries;
+  const excluded = Number.isInteger(entries.excluded) ? entries.excluded : null;
   const summary = t("detail.controllers.count", { n: controllers.length });
   const col = (key, extra) => h("th", { scope: "col", role: "columnheader" }, t(key), extra ?? null);
   return h(
@@ -402,9 +471,7 @@ function controllerList(candidate, lang) {
       ". ",
       h("span", { class: "legend" }, `● ${t("controller.tested")} · ○ ${t("controller.possible")} · ? ${t("controller.no_data")}`),
     ),
-    typeof candidate.controllers_note === "string"
-      ? sym(candidate.controllers_note, { class: "api-message block", lang: "en" })
-      : null,
+    typeof entries.note === "string" ? sym(entries.note, { class: "api-message block", lang: "en" }) : null,
     controllers.length
       ? h(
           "div",
@@ -437,7 +504,7 @@ function controllerList(candidate, lang) {
                     [c.manufacturer, c.type, c.variant].filter((x) => typeof x === "string" && x).join(" "),
                   ),
                   h("td", { role: "cell", "data-label": t("controller.level") }, levelBadge(c.level, lang)),
-                  h("td", { role: "cell", "data-label": t("controller.criteria") }, criteriaMarks(c, lang)),
+                  h("td", { role: "cell", "data-label": t("controller.criteria") }, criteriaCell(c, lang)),
                   h(
                     "td",
                     { role: "cell", class: "voltage", "data-label": plainSymbols(t("controller.voltage")) },
@@ -452,9 +519,32 @@ function controllerList(candidate, lang) {
   );
 }
 
-function checksTable(candidate, lang) {
+/** The checks as the table shows them: the detail's, else the lean ones with the rule's unit and reference. */
+function checkRows(sel, candidate, detail) {
+  if (detail && Array.isArray(detail.checks)) return detail.checks.filter((c) => c && typeof c === "object");
+  return (Array.isArray(candidate.checks) ? candidate.checks : []).map((c) => {
+    const rule = checkRule(sel, c.name);
+    return { ...c, unit: rule?.unit ?? null, reference: rule?.reference ?? null, margin_percent: marginPercent(c) };
+  });
+}
+
+function messageCell(check, view, lang) {
+  if (typeof check.message === "string") return sym(check.message, { lang: "en" });
+  if (check.status === "no_data") return checkFinding(check, check.unit, lang);
+  if (view?.status === "loading") {
+    return h(
+      "span",
+      { class: "muted pending" },
+      h("span", { "aria-hidden": "true" }, "…"),
+      h("span", { class: "visually-hidden" }, translate(lang, "detail.pending")),
+    );
+  }
+  return h("span", { class: "muted" }, "–");
+}
+
+function checksTable(sel, candidate, view, lang) {
   const t = (k) => translate(lang, k);
-  const checks = Array.isArray(candidate.checks) ? candidate.checks : [];
+  const checks = checkRows(sel, candidate, readyDetail(view));
   const col = (key) => h("th", { scope: "col", role: "columnheader" }, t(key));
   return h(
     "div",
@@ -508,7 +598,7 @@ function checksTable(candidate, lang) {
               { role: "cell", class: "num", "data-label": t("detail.margin") },
               valueCell(c.margin_percent, "%", lang),
             ),
-            h("td", { role: "cell", class: "message", "data-label": t("detail.message") }, sym(c.message, { lang: "en" })),
+            h("td", { role: "cell", class: "message", "data-label": t("detail.message") }, messageCell(c, view, lang)),
           ),
         ),
       ),
@@ -516,12 +606,71 @@ function checksTable(candidate, lang) {
   );
 }
 
+function readyDetail(view) {
+  return view?.status === "ready" && view.detail && typeof view.detail === "object" ? view.detail : null;
+}
+
+/** Why the detail is missing, in a few words of ``lang``. */
+function detailFailure(error, lang) {
+  const t = (k) => translate(lang, k);
+  if (error?.status === 409) return t("detail.failed.changed");
+  if (error?.status === 404) return t("detail.failed.notfound");
+  if (error?.kind === "network") return t("detail.failed.network");
+  if (error?.kind === "bad_response" || !error?.status) return t("detail.failed.bad");
+  return `HTTP ${error.status}`;
+}
+
+function detailStatus(view, lang) {
+  if (view?.status === "loading") {
+    return notice("info", h("p", { class: "loading" }, translate(lang, "detail.loading")));
+  }
+  if (view?.status === "failed") {
+    const said = view.error?.kind === "http" && typeof view.error.detail === "string" ? view.error.detail : null;
+    return notice(
+      "warn",
+      h(
+        "p",
+        {},
+        translate(lang, "detail.failed", { why: detailFailure(view.error, lang) }),
+        said ? sym(said, { class: "api-message block", lang: "en" }) : null,
+      ),
+    );
+  }
+  return null;
+}
+
+/**
+ * Fill the parts of the chosen candidate's panel that the detail adds to: the
+ * status line, the checks, the reasons and the controllers. The charts are left alone.
+ */
+export function fillDetail(panel, sel, candidate, view, lang) {
+  const slot = (name) => panel.querySelector(`[data-slot="${name}"]`);
+  const detail = readyDetail(view);
+  panel.dataset.detail = view?.status ?? "none";
+  slot("status").replaceChildren(...[detailStatus(view, lang)].filter(Boolean));
+  slot("checks").replaceChildren(checksTable(sel, candidate, view, lang));
+  const reasons = detail ? detailReasonList(detail, lang) : reasonList(sel, candidate, lang);
+  const anyReason = openChecks(candidate).length > 0 || (detail !== null && reasons.childElementCount > 0);
+  slot("reasons").replaceChildren(
+    ...(anyReason
+      ? [
+          h(
+            "section",
+            { class: "detail-reasons", "aria-labelledby": "detail-reasons-heading" },
+            h("h4", { id: "detail-reasons-heading" }, translate(lang, "detail.reasons")),
+            reasons,
+          ),
+        ]
+      : []),
+  );
+  slot("controllers").replaceChildren(...[controllerList(sel, candidate, detail, lang)].filter(Boolean));
+}
+
 /** The chosen candidate: key figures, every check, reasons, controllers, chart frames. */
-export function renderDetail(sel, candidate, lang) {
+export function renderDetail(sel, candidate, view, lang) {
   const t = (k) => translate(lang, k);
   const termWithSym = (symbol, extra) => [sym(symbol, { class: "sym" }), extra ? ` ${extra}` : ""];
-  const open = (candidate.checks ?? []).filter((c) => c.status !== "pass");
-  return h(
+  const panel = h(
     "section",
     { class: "card detail", id: "detail", "aria-labelledby": "detail-heading", "data-model": candidate.model },
     h(
@@ -544,15 +693,9 @@ export function renderDetail(sel, candidate, lang) {
       definition(termWithSym("n_av", `(${translateReference(lang, "Eq. 514.3")})`), valueCell(sel.mean_speed_rpm, "rpm", lang), { id: "fig-nav" }),
       definition(termWithSym("ED", `(${translateReference(lang, "Eq. 514.4")})`), valueCell(sel.duty_cycle_percent, "%", lang), { id: "fig-ed" }),
     ),
-    checksTable(candidate, lang),
-    open.length
-      ? h(
-          "section",
-          { class: "detail-reasons", "aria-labelledby": "detail-reasons-heading" },
-          h("h4", { id: "detail-reasons-heading" }, t("detail.reasons")),
-          reasonList(candidate, lang),
-        )
-      : null,
+    h("div", { class: "detail-status", id: "detail-status", role: "status", "data-slot": "status" }),
+    h("div", { "data-slot": "checks" }),
+    h("div", { "data-slot": "reasons" }),
     h(
       "div",
       { class: "charts" },
@@ -569,8 +712,10 @@ export function renderDetail(sel, candidate, lang) {
         h("div", { class: "chart", id: "chart-diagram", "data-state": "loading" }, h("p", { class: "chart-placeholder" }, t("charts.loading"))),
       ),
     ),
-    controllerList(candidate, lang),
+    h("div", { "data-slot": "controllers" }),
   );
+  fillDetail(panel, sel, candidate, view, lang);
+  return panel;
 }
 
 /** The summary sentence announced to screen readers after a result arrives. */

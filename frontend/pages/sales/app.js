@@ -6,6 +6,7 @@
 // the API are shown as they come (English, marked lang="en").
 
 import { createClient, encodePath } from "../../lib/api.js";
+import { openCheckLines } from "../../lib/checks.js";
 import { byId, english, h } from "../../lib/dom.js";
 import { appendSymbols, dateTime, localeOf, qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
@@ -275,7 +276,12 @@ function describeCandidate() {
   if (!candidate) {
     clear(hint);
   } else if (candidate.verdict === "unconfirmed") {
-    show(hint, () => [t("sales.actuator.unconfirmed"), english(candidate.reasons.join("; "))]);
+    // the checks that did not pass, each with its label and what it found
+    const selection = state.selection;
+    show(hint, () => [
+      t("sales.actuator.unconfirmed"),
+      openCheckLines(selection, candidate, state.lang).flatMap((line, i) => (i ? ["; ", line] : [line])),
+    ]);
   } else {
     show(hint, () =>
       appendSymbols(

@@ -1,11 +1,11 @@
-"""Stored selections: the request and the response, kept exactly as answered."""
+"""Stored selections: the request, and the answer exactly as it was sent (gzip)."""
 
 from __future__ import annotations
 
 from datetime import datetime
 from typing import Any
 
-from sqlalchemy import JSON, DateTime, Integer, String
+from sqlalchemy import JSON, DateTime, Integer, LargeBinary, String
 from sqlalchemy.dialects.postgresql import JSONB
 from sqlalchemy.orm import Mapped, mapped_column
 
@@ -23,4 +23,5 @@ class SelectionRow(Base):
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True))
     catalogue_version: Mapped[int] = mapped_column(Integer)
     request: Mapped[dict[str, Any]] = mapped_column(JSONDocument)
-    response: Mapped[dict[str, Any]] = mapped_column(JSONDocument)
+    answer_gzip: Mapped[bytes] = mapped_column(LargeBinary)
+    """The answer's JSON bytes as sent, gzip-compressed (~8× smaller than the JSON)."""

@@ -1,0 +1,193 @@
+"""The catalogue a selection reads, held in memory by version, and its drive options.
+
+Drive options are Table 521.1 matching + Eq. 521.2 for the candidates of a request.
+Matching depends only on the actuator's interface and the controllers, and a whole
+catalogue has a handful of distinct interfaces, so it is computed once per interface
+and catalogue version, and kept with the snapshot.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+from sqlalchemy.orm import Session
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.compatibility import (
+    ActuatorInterface,
+    CompatibilityResult,
+    Controller,
+    MatchVerdict,
+    match_controllers,
+)
+from actuator_selection.core.drive import DriveOptions, drive_options, shared_bus_classes
+from actuator_selection.core.electrical import DcBusClass
+from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+
+
+@dataclass(frozen=True, slots=True)
+class MatchGroup:
+    """Controllers that match an interface alike (Table 521.1) and share the same DC bus
+    classes with it, so that they share one voltage check for any actuator of it."""
+
+    level: str
+    missing: tuple[str, ...]
+    shared: tuple[DcBusClass, ...]
+    controllers: tuple[tuple[int, int], ...]
+    """Each controller's place in the matching's best-first order, and its index into
+    :attr:`CatalogueSnapshot.controllers`, best first."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class CatalogueSnapshot:
+    """Everything a selection reads from the catalogue, at one catalogue version."""
+
+    version: int
+    actuators: tuple[Actuator, ...]
+    """Active actuators, ordered by model."""
+    controllers: tuple[Controller, ...]
+    buses: tuple[DcBusClass, ...]
+    interfaces: Mapping[str, ActuatorInterface]
+    _matching: dict[ActuatorInterface, CompatibilityResult] = field(
+        default_factory=dict, repr=False, compare=False
+    )
+    """Table 521.1 matched per distinct interface, filled as requests ask for it."""
+    _excluded: dict[ActuatorInterface, int] = field(default_factory=dict, repr=False, compare=False)
+    """How many controllers each interface's matching excludes."""
+    _groups: dict[ActuatorInterface, tuple[MatchGroup, ...]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
+    """The controllers not excluded per interface, grouped (:meth:`match_groups`)."""
+
+    def match_groups(self, interface: ActuatorInterface) -> tuple[MatchGroup, ...]:
+        """The controllers not excluded for ``interface``, best first, grouped by level,
+        missing criteria and shared DC bus classes; computed once per version."""
+        found = self._groups.get(interface)
+        if found is None:
+            index = {c: i for i, c in enumerate(self.controllers)}
+            groups: dict[
+                tuple[str, tuple[str, ...], tuple[DcBusClass, ...]], list[tuple[int, int]]
+            ] = {}
+            for place, m in enumerate(self.matching(interface).matches):
+                if m.verdict is MatchVerdict.EXCLUDED:
+                    continue
+                shared = shared_bus_classes(
+                    interface=interface, controller=m.controller, buses=self.buses
+                )
+                missing = tuple(r.criterion.value for r in m.no_data)
+                groups.setdefault((m.verdict.value, missing, shared), []).append(
+                    (place, index[m.controller])
+                )
+            found = self._groups.setdefault(
+                interface,
+                tuple(
+                    MatchGroup(level, missing, shared, tuple(ids))
+                    for (level, missing, shared), ids in groups.items()
+                ),
+            )
+        return found
+
+    def excluded(self, interface: ActuatorInterface) -> int:
+        """How many controllers Table 521.1 excludes for ``interface``."""
+        found = self._excluded.get(interface)
+        if found is None:
+            matches = self.matching(interface).matches
+            found = self._excluded.setdefault(
+                interface, sum(m.verdict is MatchVerdict.EXCLUDED for m in matches)
+            )
+        return found
+
+    def matching(self, interface: ActuatorInterface) -> CompatibilityResult:
+        """Every controller matched against ``interface`` (Table 521.1), computed once per
+        catalogue version: it depends on the catalogue alone. Threads that race on a new
+        interface compute the same result; the dict keeps one."""
+        found = self._matching.get(interface)
+        if found is None:
+            found = self._matching.setdefault(
+                interface, match_controllers(actuator=interface, controllers=self.controllers)
+            )
+        return found
+
+    @classmethod
+    def read(cls, session: Session, version: int) -> CatalogueSnapshot:
+        """Read the catalogue in ``session``'s transaction (pinned at ``version``)."""
+        repo = ProtectionRepository(session)
+        return cls(
+            version=version,
+            actuators=tuple(r.actuator for r in CatalogueRepository(session).actuators()),
+            controllers=tuple(r.controller for r in repo.controllers()),
+            buses=tuple(repo.bus_classes()),
+            interfaces=MappingProxyType(
+                {model: r.interface for model, r in repo.interfaces(None).items()}
+            ),
+        )
+
+    def actuators_of(self, models: Iterable[str] | None) -> list[Actuator]:
+        """The active actuators, or those of ``models`` that exist, ordered by model."""
+        if models is None:
+            return list(self.actuators)
+        wanted = set(models)
+        return [a for a in self.actuators if a.model in wanted]
+
+
+class CatalogueCache:
+    """The catalogue in memory, keyed by its version and checked on every request.
+
+    A request reads the version (one indexed row, no lock); when it is the one held,
+    the catalogue is not read again (the tables cost 7–8 ms a request), and the
+    snapshot held is that version's data, read whole. Every catalogue change raises
+    the version, so each process of a deployment sees a change at its next request,
+    whichever process or replica made it.
+
+    Only when the version differs is the catalogue read, after pinning the version
+    (``CatalogueVersionRepository.pin``: on PostgreSQL a share lock, so that the rows
+    read are the version's own). The pin is kept off the common path: a row lock
+    writes to the row, so the read transaction would have to wait for a WAL flush at
+    its commit (measured 4.3 ms against 0.5 ms for the plain read).
+    """
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._held: CatalogueSnapshot | None = None
+
+    def snapshot(self, session: Session) -> CatalogueSnapshot:
+        """The catalogue at the version ``session``'s transaction reads."""
+        versions = CatalogueVersionRepository(session)
+        held = self._held
+        if held is not None and held.version == versions.current():
+            return held
+        version = versions.pin()
+        if held is not None and held.version == version:
+            return held
+        fresh = CatalogueSnapshot.read(session, version)
+        with self._lock:
+            if self._held is None or self._held.version < version:
+                self._held = fresh
+        return fresh
+
+
+class DriveContext:
+    """The drive options of one request's candidates."""
+
+    def __init__(self, snapshot: CatalogueSnapshot) -> None:
+        self._snapshot = snapshot
+
+    def options(self, actuator: Actuator, *, speed_rpm: float) -> DriveOptions:
+        """Controllers not excluded for ``actuator``, with the voltage check at ``speed_rpm``."""
+        snapshot = self._snapshot
+        interface = snapshot.interfaces[actuator.model]
+        return drive_options(
+            actuator=actuator,
+            interface=interface,
+            matching=snapshot.matching(interface),
+            buses=snapshot.buses,
+            speed_rpm=speed_rpm,
+        )
+
+    def excluded(self, actuator: Actuator) -> int:
+        """How many controllers Table 521.1 excludes for ``actuator``."""
+        return self._snapshot.excluded(self._snapshot.interfaces[actuator.model])

@@ -1,0 +1,112 @@
+"""A plain numpy computation of a batch's numbers: the reference a batch request is held to.
+
+For every case × actuator: T_1, T_3, T_rms, n_av (Eq. 514.1–514.3), the five checks'
+pass/fail/no-data decisions, the verdicts, and the best ``top`` actuators of each case
+by the service's ranking (verdict, then T_max, J_A, model). Written the way one would
+write it by hand with numpy, with none of the service's rule table, exact-rounding
+care, JSON or HTTP: what the numbers alone cost on this machine.
+
+:func:`agreement` says how often its top actuators are the service's, so that the
+reference is known to compute the same thing.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+import numpy.typing as npt
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.selection import Application
+
+FloatArray = npt.NDArray[np.float64]
+
+
+def _column(values: Sequence[float]) -> FloatArray:
+    return np.asarray(values, dtype=np.float64)[:, None]
+
+
+def _row(values: Sequence[float | None]) -> FloatArray:
+    return np.asarray([math.nan if v is None else v for v in values], dtype=np.float64)[None, :]
+
+
+def numpy_reference(
+    actuators: Sequence[Actuator], apps: Sequence[Application], top: int
+) -> npt.NDArray[np.intp]:
+    """Indexes into ``actuators`` of each case's best ``top`` (cases × top)."""
+    n2 = _column([a.pattern.speed_rpm for a in apps])
+    t1 = _column([a.pattern.accel_s for a in apps])
+    t2 = _column([a.pattern.constant_s for a in apps])
+    t3 = _column([a.pattern.decel_s for a in apps])
+    tp = _column([a.pattern.pause_s for a in apps])
+    tl = _column([a.load.torque_nm for a in apps])
+    jl = _column([a.load.inertia_kgm2 for a in apps])
+    dyn = np.asarray([a.high_dynamics for a in apps])[:, None]
+
+    ja = _row([a.inertia_kgm2 for a in actuators])
+    t_max = _row([a.max_torque_nm for a in actuators])
+    n_max = _row([a.max_speed_rpm for a in actuators])
+    t_0 = _row(
+        [a.stall_torque_nm if a.stall_torque_nm is not None else a.continuous_torque_nm
+         for a in actuators]
+    )  # fmt: skip
+    zoned = np.asarray([a.zone is not None for a in actuators])[None, :]
+
+    omega = n2 * (2 * math.pi / 60)
+    j = ja + jl
+    accel = tl + j * (omega / t1)
+    decel = tl - j * (omega / t3)
+    t0 = t1 + t2 + t3 + tp
+    rms = np.sqrt((accel * accel * t1 + tl * tl * t2 + decel * decel * t3) / t0)
+    n_av = (n2 / 2 * t1 + n2 * t2 + n2 / 2 * t3) / t0
+    # the zone's edge at n_av, interpolated per actuator
+    edge = np.full(rms.shape, np.nan)
+    for k, a in enumerate(actuators):
+        if a.zone is not None:
+            speeds = [p.speed_rpm for p in a.zone.points]
+            torques = [p.torque_nm for p in a.zone.points]
+            edge[:, k] = np.interp(n_av[:, 0], speeds, torques, right=np.nan)
+    limit = np.where(zoned, edge, t_0)
+
+    no_ja, no_t_max, no_n_max = np.isnan(ja), np.isnan(t_max), np.isnan(n_max)
+    no_data = [
+        no_n_max,
+        no_ja,
+        no_ja | no_t_max,
+        no_ja | no_t_max,
+        no_ja | (~zoned & (np.isnan(t_0) | no_n_max)),
+    ]
+    exceeded = [
+        n2 > n_max,
+        (jl > 3 * ja) & dyn,
+        accel > t_max,
+        -decel > t_max,
+        ~((rms <= limit) & (zoned | (n_av <= n_max))),
+    ]
+    fails = np.zeros(rms.shape, dtype=bool)
+    missing = np.zeros(rms.shape, dtype=bool)
+    for lacking, over in zip(no_data, exceeded, strict=True):
+        fails |= ~lacking & over
+        missing |= lacking
+    verdict = np.where(fails, 2, np.where(missing, 1, 0))
+
+    order = np.lexsort(
+        (np.nan_to_num(_row([a.inertia_kgm2 for a in actuators])[0], nan=np.inf),
+         np.nan_to_num(t_max[0], nan=np.inf))
+    )  # fmt: skip
+    ranked = verdict[:, order]
+    best = np.argsort(ranked, axis=1, kind="stable")[:, :top]
+    return order[best]
+
+
+def agreement(
+    actuators: Sequence[Actuator], reference: npt.NDArray[np.intp], service: Sequence[Sequence[str]]
+) -> float:
+    """Share of cases whose best actuators the reference and the service name alike."""
+    names = np.asarray([a.model for a in actuators])
+    same = sum(
+        list(names[row]) == list(models) for row, models in zip(reference, service, strict=True)
+    )
+    return same / len(service)

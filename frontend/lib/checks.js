@@ -1,0 +1,77 @@
+// A check of a selection's answer in the page's words, for both pages.
+//
+// The selection answers each check lean, as numbers: name, status, value, limit, and
+// for no_data the catalogue value that is missing (English words). Unit and reference
+// are the rule's, listed once per selection in ``check_rules``; the check in words
+// (the server's message) comes with a candidate's detail only.
+
+import { h, sym } from "./dom.js";
+import { qty } from "./format.js";
+import { translate } from "./i18n.js";
+
+/** The check's label in ``lang`` ("Acceleration torque T_1 ≤ T_max"); its name if unknown. */
+export function checkLabel(name, lang) {
+  const key = `check.${name}`;
+  const text = translate(lang, key);
+  return text === key ? String(name) : text;
+}
+
+/** The check's short label ("T_1 ≤ T_max"); else its label. */
+export function shortCheckLabel(name, lang) {
+  const key = `check.short.${name}`;
+  const text = translate(lang, key);
+  return text === key ? checkLabel(name, lang) : text;
+}
+
+/** The selection's rule of a check, ``{name, reference, unit}``, or null. */
+export function checkRule(selection, name) {
+  const rules = Array.isArray(selection?.check_rules) ? selection.check_rules : [];
+  return rules.find((r) => r && r.name === name) ?? null;
+}
+
+/** Headroom (limit − value)/limit · 100 [%] as the API defines it; null without a positive limit. */
+export function marginPercent(check) {
+  const { value, limit } = check ?? {};
+  if (typeof value !== "number" || typeof limit !== "number" || !(limit > 0)) return null;
+  return ((limit - value) / limit) * 100;
+}
+
+/**
+ * What a check found, as nodes: for no_data the missing catalogue value (the API's
+ * English words), else the value against the limit in the rule's ``unit``
+ * ("95.48 Nm, limit 151 Nm"; "≈" before an approximate limit).
+ */
+export function checkFinding(check, unit, lang) {
+  if (check.status === "no_data") {
+    const what = typeof check.missing === "string" && check.missing ? sym(check.missing, { lang: "en" }) : "–";
+    const [before, after = ""] = translate(lang, "check.finding.missing").split("{what}");
+    return h("span", { class: "finding" }, before, what, after);
+  }
+  const approx = check.approximate && typeof check.limit === "number" ? "≈ " : "";
+  return h(
+    "span",
+    { class: "finding" },
+    translate(lang, "check.finding.against", {
+      value: qty(check.value, unit, lang),
+      limit: `${approx}${qty(check.limit, unit, lang)}`,
+    }),
+  );
+}
+
+/** The checks that did not pass, in the selection's order. */
+export function openChecks(candidate) {
+  return (Array.isArray(candidate?.checks) ? candidate.checks : []).filter((c) => c && c.status !== "pass");
+}
+
+/** One line per check that did not pass, "label (status) – finding", in ``lang``. */
+export function openCheckLines(selection, candidate, lang) {
+  return openChecks(candidate).map((c) =>
+    h(
+      "span",
+      { class: "open-check", "data-check": c.name },
+      sym(checkLabel(c.name, lang)),
+      ` (${translate(lang, `status.${c.status}`)}) – `,
+      checkFinding(c, checkRule(selection, c.name)?.unit, lang),
+    ),
+  );
+}
