@@ -39,7 +39,8 @@ export function marginPercent(check) {
 /**
  * What a check found, as nodes: for no_data the missing catalogue value (the API's
  * English words), else the value against the limit in the rule's ``unit``
- * ("95.48 Nm, limit 151 Nm"; "≈" before an approximate limit).
+ * ("95.48 Nm, limit 151 Nm"; "≈" before an approximate limit); for a fail on a lower
+ * bound (a fail with ``missing``) the least value over every value of what is missing.
  */
 export function checkFinding(check, unit, lang) {
   if (check.status === "no_data") {
@@ -48,6 +49,18 @@ export function checkFinding(check, unit, lang) {
     return h("span", { class: "finding" }, before, what, after);
   }
   const approx = check.approximate && typeof check.limit === "number" ? "≈ " : "";
+  if (check.status === "fail" && typeof check.missing === "string" && check.missing) {
+    // a lower bound: the check fails whatever the missing value (J_A) is
+    return h(
+      "span",
+      { class: "finding" },
+      translate(lang, "check.finding.floor", {
+        value: qty(check.value, unit, lang),
+        limit: `${approx}${qty(check.limit, unit, lang)}`,
+        what: check.missing,
+      }),
+    );
+  }
   return h(
     "span",
     { class: "finding" },

@@ -163,6 +163,7 @@ const TEXTS = {
 
     "check.finding.against": "{value}, Grenze {limit}",
     "check.finding.missing": "nicht im Katalog: {what}",
+    "check.finding.floor": "mindestens {value} für jeden Wert von {what} (nicht im Katalog), Grenze {limit}",
 
     "ref.Table": "Tabelle",
     "ref.Eq.": "Gl.",
@@ -458,6 +459,7 @@ const TEXTS = {
 
     "check.finding.against": "{value}, limit {limit}",
     "check.finding.missing": "not in the catalogue: {what}",
+    "check.finding.floor": "at least {value} for any {what} (not in the catalogue), limit {limit}",
 
     "ref.Table": "Table",
     "ref.Eq.": "Eq.",

@@ -81,6 +81,7 @@ def test_worked_example_over_http(client: TestClient) -> None:
         "approximate": False,
         "message": None,
         "margin_percent": pytest.approx((90 - 40) / 90 * 100),
+        "utilisation": 40 / 90,
     }
     assert detail["reasons"] == [full["continuous_duty"]["message"]]
     assert "continuous-duty zone or continuous torque" in full["continuous_duty"]["message"]
@@ -126,7 +127,8 @@ def test_whole_catalogue_answer_is_its_schema_without_repetition(client: TestCli
             assert group["controllers"]
             referred.update(group["controllers"])
         for k in c["checks"]:
-            assert ("missing" in k) is (k["status"] == "no_data")
+            assert ("missing" in k) >= (k["status"] == "no_data")
+            assert ("missing" in k) <= (k["status"] in ("no_data", "fail"))
     assert referred == set(range(len(rows)))
 
 
@@ -396,6 +398,6 @@ def test_answer_equals_the_scalar_flowchart_check_by_check(
             ]
             assert [{k: v for k, v in c.items() if k != "missing"} for c in lean["checks"]] == full
             for c, d in zip(lean["checks"], detail["checks"], strict=True):
-                if "missing" in c:
+                if c["status"] == "no_data":
                     expected = f"no data: the catalogue gives no {c['missing']} for this actuator"
                     assert d["message"] == expected

@@ -566,3 +566,31 @@ def test_many_cases_span_several_blocks() -> None:
     batch = select_batch(actuators, apps, top=2)
     for i in range(0, len(apps), 997):
         assert batch[i] == truncated(select(actuators, apps[i]), 2)
+
+
+def test_floors_without_j_a_match_the_scalar_flowchart() -> None:
+    """Actuators without J_A against loads whose floors fail and pass: every cell equal."""
+    base = worked_example.FHA_25C_50_L
+    actuators = [
+        dataclasses.replace(base, model=f"NJ-{t}", inertia_kgm2=None, max_torque_nm=t,
+                            stall_torque_nm=s)
+        for t, s in ((20.0, 5.0), (50.0, 30.0), (200.0, None), (1000.0, 400.0))
+    ]  # fmt: skip
+    rng = random.Random(17)
+    apps = [
+        Application(
+            pattern=SpeedPattern(
+                speed_rpm=rng.uniform(5, 80),
+                accel_s=rng.uniform(0.02, 0.5),
+                constant_s=rng.uniform(0, 1),
+                decel_s=rng.uniform(0.02, 0.5),
+                pause_s=rng.uniform(0, 2),
+            ),
+            load=Load(torque_nm=rng.uniform(0, 300), inertia_kgm2=rng.uniform(0, 3)),
+        )
+        for _ in range(300)
+    ]
+    statuses = evaluate_batch(actuators, apps).statuses
+    assert (statuses == STATUS_BY_CODE.index(Status.FAIL)).any()  # floors do fail here
+    assert_matches_scalar(actuators, apps)
+    assert_selects_like_scalar(actuators, apps, top=3)

@@ -22,7 +22,13 @@ from actuator_selection.core.checks import (
     Status,
     _new_check,
 )
-from actuator_selection.core.cycle import CycleTorques, Load, SpeedPattern
+from actuator_selection.core.cycle import (
+    CycleTorques,
+    Load,
+    SpeedPattern,
+    TorqueFloors,
+    torque_floors,
+)
 from actuator_selection.core.selection import Application, evaluate, operands
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 
@@ -104,7 +110,8 @@ def test_operands_name_each_value() -> None:
     torques = CycleTorques(
         accel_torque_nm=31, constant_torque_nm=5, decel_torque_nm=-33, rms_torque_nm=34
     )
-    q = operands(actuator, app, torques, 50.0)
+    floors = TorqueFloors(accel_torque_nm=41, decel_torque_nm=42, rms_torque_nm=43)
+    q = operands(actuator, app, torques, 50.0, floors)
     assert q._asdict() == {
         "speed_rpm": 21,
         "load_inertia_kgm2": 22,
@@ -121,8 +128,11 @@ def test_operands_name_each_value() -> None:
         "has_zone": True,
         "zone_torque_nm": 35.0,
         "zone_max_speed_rpm": 100,
+        "accel_torque_floor_nm": 41,
+        "decel_torque_floor_nm": 42,
+        "rms_torque_floor_nm": 43,
     }
-    bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0)
+    bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0, floors)
     unpublished = [
         name for name, v in bare._asdict().items() if isinstance(v, float) and math.isnan(v)
     ]
@@ -139,14 +149,15 @@ def test_operands_name_each_value() -> None:
         "zone_max_speed_rpm",
     ]
     assert bare.has_zone is False
-    beyond = operands(actuator, app, torques, 101.0)
+    beyond = operands(actuator, app, torques, 101.0, floors)
     assert math.isnan(beyond.zone_torque_nm)
 
 
 def worked_operands(**changes: float | bool) -> Operands:
     actuator = dataclasses.replace(FHA, stall_torque_nm=36)
     torques = evaluate(actuator, EXAMPLE).torques
-    return operands(actuator, EXAMPLE, torques, 8 / 1.3)._replace(**changes)
+    floors = torque_floors(pattern=EXAMPLE.pattern, load=EXAMPLE.load)
+    return operands(actuator, EXAMPLE, torques, 8 / 1.3, floors)._replace(**changes)
 
 
 def test_only_rules_that_say_so_read_rms() -> None:

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import pytest
 from tests import worked_example
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.cycle import Load
+from actuator_selection.core.checks import Check, overload
+from actuator_selection.core.cycle import Load, cycle_torques, torque_floors
 from actuator_selection.core.selection import (
     Application,
     Status,
@@ -141,3 +143,99 @@ def test_ranking_suitable_smallest_first() -> None:
     ]
     assert result.mean_speed_rpm == pytest.approx(8 / 1.3)
     assert result.cycle_time_s == pytest.approx(1.3)
+
+
+def test_when_nothing_fits_the_nearest_miss_comes_first() -> None:
+    """Three actuators too weak for the worked example (T_1 = 95.48 Nm with FHA's J_A):
+    ranked by their worst overload, value/limit of the worst failed check, not by size."""
+    t_1 = 5 + 2 * math.pi / 60 * (0.86 + 1.3) * 40 / 0.1  # Eq. 514.1 with J_A = 0.86 kgm²
+    weakest = dataclasses.replace(FHA, model="W-10", max_torque_nm=10.0)
+    near = dataclasses.replace(FHA, model="W-90", max_torque_nm=90.0)
+    middle = dataclasses.replace(FHA, model="W-50", max_torque_nm=50.0)
+    ranked = select([weakest, near, middle], EXAMPLE).candidates
+    assert [c.actuator.model for c in ranked] == ["W-90", "W-50", "W-10"]
+    assert all(c.verdict is Verdict.UNSUITABLE for c in ranked)
+    assert [c.worst_overload for c in ranked] == [t_1 / 90.0, t_1 / 50.0, t_1 / 10.0]
+    peak = next(c for c in ranked[0].checks if c.name == "peak_torque")
+    assert peak.utilisation == t_1 / 90.0
+    assert peak.overload == t_1 / 90.0
+
+
+def test_overload_of_a_check() -> None:
+    assert overload(Status.PASS, 95.0, 100.0) == 0.0
+    assert overload(Status.WARN, 150.0, 100.0) == 0.0  # a warning is no miss
+    assert overload(Status.FAIL, 150.0, 100.0) == 1.5
+    assert overload(Status.FAIL, 20.0, 40.0) == 1.0  # failed on a further condition
+    assert overload(Status.FAIL, 20.0, None) == math.inf  # beyond the zone's last speed
+    # suitable and unconfirmed candidates keep their order by size
+    big = dataclasses.replace(FHA, model="BIG", max_torque_nm=300.0)
+    ranked = select([big, FHA], EXAMPLE).candidates
+    assert [c.actuator.model for c in ranked] == ["FHA-25C-50-L", "BIG"]
+    assert [c.worst_overload for c in ranked] == [0.0, 0.0]
+
+
+# --- lower bounds: a check fails without J_A when it fails for every J_A ≥ 0 -------------
+
+NO_J_A = dataclasses.replace(FHA, model="NO-JA", inertia_kgm2=None, stall_torque_nm=30.0)
+"""The worked example's actuator without a published J_A (and with T_0, so that the
+continuous check has a limit)."""
+
+
+def _check(actuator: Actuator, name: str, app: Application = EXAMPLE) -> Check:
+    return next(c for c in evaluate(actuator, app).checks if c.name == name)
+
+
+def test_peak_torque_fails_without_j_a_when_the_load_alone_exceeds_t_max() -> None:
+    floor = 5 + 1.3 * (2 * math.pi / 60 * 40) / 0.1  # T_L + J_L·ω/t_1 = 59.45 Nm
+    weak = dataclasses.replace(NO_J_A, max_torque_nm=50.0)
+    check = _check(weak, "peak_torque")
+    assert check.status is Status.FAIL
+    assert check.value == pytest.approx(floor)
+    assert check.limit == 50.0
+    assert "any J_A ≥ 0" in check.message
+    assert "no J_A" in check.message
+    assert check.missing == "moment of inertia J_A"
+    assert evaluate(weak, EXAMPLE).verdict is Verdict.UNSUITABLE
+    strong = dataclasses.replace(NO_J_A, max_torque_nm=60.0)  # above the floor: unknown
+    assert _check(strong, "peak_torque").status is Status.NO_DATA
+
+
+def test_decel_torque_floor_is_the_least_magnitude_of_t_3() -> None:
+    floor = 1.3 * (2 * math.pi / 60 * 40) / 0.1 - 5  # −T_3 at J_A = 0 = 49.45 Nm
+    assert _check(dataclasses.replace(NO_J_A, max_torque_nm=49.0), "decel_torque").value == (
+        pytest.approx(floor)
+    )
+    assert _check(dataclasses.replace(NO_J_A, max_torque_nm=49.5), "decel_torque").status is (
+        Status.NO_DATA
+    )
+    # T_3 > 0 at J_A = 0 (a large T_L braking itself): some J_A makes T_3 = 0, floor 0
+    heavy = Application(pattern=EXAMPLE.pattern, load=Load(torque_nm=200, inertia_kgm2=0.1))
+    assert torque_floors(pattern=heavy.pattern, load=heavy.load).decel_torque_nm == 0.0
+
+
+def test_rms_floor_is_the_least_t_rms_over_j_a() -> None:
+    """Against T_rms (Eq. 514.2) sampled over J_A: no sample lies below the floor, and the
+    best sample comes within 1e-6 of it."""
+    for load in (Load(torque_nm=5, inertia_kgm2=1.3), Load(torque_nm=150, inertia_kgm2=0.2)):
+        floor = torque_floors(pattern=EXAMPLE.pattern, load=load).rms_torque_nm
+        samples = [
+            cycle_torques(
+                pattern=EXAMPLE.pattern, load=load, actuator_inertia_kgm2=k / 10_000
+            ).rms_torque_nm
+            for k in range(0, 100_000, 7)
+        ]
+        assert min(samples) >= floor * (1 - 1e-12)
+        assert min(samples) == pytest.approx(floor, rel=1e-6)
+    # the continuous check fails on the floor, with the same limit as with J_A
+    small = dataclasses.replace(NO_J_A, stall_torque_nm=10.0)
+    check = _check(small, "continuous_duty")
+    assert check.status is Status.FAIL
+    assert check.limit == 10.0
+    assert check.approximate
+
+
+def test_floors_need_every_other_value() -> None:
+    """Without T_max as well, nothing is known: no data, whatever the floor."""
+    bare = dataclasses.replace(NO_J_A, max_torque_nm=None)
+    assert _check(bare, "peak_torque").status is Status.NO_DATA
+    assert _check(bare, "peak_torque").missing == "moment of inertia J_A"

@@ -204,6 +204,10 @@ class _Cases:
     cycle: FloatArray
     mean_speed: FloatArray
     duty: FloatArray
+    accel_floor: FloatArray
+    decel_floor: FloatArray
+    rms_floor: FloatArray
+    """The least T_1, |T_3|, T_rms over every J_A ≥ 0 (``cycle.torque_floors``)."""
 
     def rows(self, start: int, stop: int) -> _Cases:
         """The cases ``start:stop``."""
@@ -228,6 +232,19 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         half = speed / 2
         mean_speed = (half * accel + speed * constant + half * decel) / cycle
         duty = moving / cycle * 100.0
+        # cycle.torque_floors, operation for operation.
+        load_inertia = column([a.load.inertia_kgm2 for a in apps])
+        angular = speed * RAD_PER_S_PER_RPM
+        b = angular / accel
+        e = angular / decel
+        a0 = load_torque + load_inertia * b
+        d0 = load_torque - load_inertia * e
+        denominator = accel * (b * b) + decel * (e * e)
+        best = np.where(denominator > 0, (decel * e * d0 - accel * a0 * b) / denominator, 0.0)
+        a1 = np.where(best > 0, a0 + b * best, a0)
+        d1 = np.where(best > 0, d0 - e * best, d0)
+        energy = a1 * a1 * accel + load_torque * load_torque * constant + d1 * d1 * decel
+        rms_floor = np.sqrt(energy / cycle)
     return _Cases(
         speed=speed,
         accel=accel,
@@ -235,11 +252,14 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         decel=decel,
         load_torque=load_torque,
         load_torque_squared=_python_square(load_torque),
-        load_inertia=column([a.load.inertia_kgm2 for a in apps]),
+        load_inertia=load_inertia,
         high_dynamics=high_dynamics,
         cycle=cycle,
         mean_speed=mean_speed,
         duty=duty,
+        accel_floor=a0,
+        decel_floor=np.maximum(-d0, 0.0),
+        rms_floor=rms_floor,
     )
 
 
@@ -285,6 +305,8 @@ class _Block:
     decel_torque: FloatArray
     rms_torque: FloatArray
     statuses: tuple[CodeArray, ...]
+    overload: FloatArray
+    """The largest :func:`~actuator_selection.core.checks.overload` of the checks."""
     details: tuple[_RuleArrays, ...] | None = None
 
     def verdicts(self) -> CodeArray:
@@ -333,37 +355,60 @@ def _status_codes(
     *,
     exact: bool,
     detail: bool = False,
-) -> tuple[CodeArray, _RuleArrays | None]:
+) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """The codes of one rule for the block (:meth:`~actuator_selection.core.checks.Rule.check`
-    on arrays): no data where a requirement is missing, else pass, fail or warn; with
-    ``detail``, also the value, limit, approximation and missing requirement it reports."""
+    on arrays): no data where a requirement is missing, else pass, fail or warn; the
+    overload (:func:`~actuator_selection.core.checks.overload`); with ``detail``, also the
+    value, limit, approximation and missing requirement it reports."""
     xp = ARRAY_OPS
     with np.errstate(all="ignore"):  # NaN where data is missing: masked below
         first_missing: CodeArray = np.full(shape, -1, dtype=np.int8)
+        others_missing: BoolArray = np.zeros(shape, dtype=np.bool_)
         for k, need in enumerate(rule.requires):
             lacking = np.broadcast_to(need.missing(q, xp), shape)
             first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
-        missing = first_missing >= 0
+            if k:
+                others_missing = others_missing | lacking
         value, limit = rule.value(q, xp), rule.limit(q, xp)
         if not exact and rule.reads_rms and _settle_near_limit(q, value, limit, cases, shape):
             value, limit = rule.value(q, xp), rule.limit(q, xp)
-        ok = value <= limit
-        if rule.within is not None:
-            ok = ok & rule.within(q, xp)
-    fail = _FAIL if rule.binding is None else np.where(rule.binding(q, xp), _FAIL, _WARN)
+        within = True if rule.within is None else rule.within(q, xp)
+        ok = (value <= limit) & within
+        binding = True if rule.binding is None else rule.binding(q, xp)
+        value = np.broadcast_to(value, shape)
+        if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
+            floor = np.broadcast_to(rule.lower_bound(q, xp), shape)
+            floor_fails = (
+                (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
+            )
+            value = np.where(floor_fails, floor, value)
+        missing = first_missing >= 0
+        if rule.lower_bound is not None:
+            missing = missing & ~floor_fails
+    fail = np.where(binding, _FAIL, _WARN)
     codes = np.broadcast_to(np.where(missing, _NO_DATA, np.where(ok, _PASS, fail)), shape)
+    if rule.lower_bound is not None:
+        codes = np.where(floor_fails, _FAIL, codes)
+    with np.errstate(all="ignore"):
+        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+    overload = np.where(codes == _FAIL, over, 0.0)
     if not detail:
-        return codes, None
+        return codes, overload, None
     approximate = (
         np.zeros(shape, dtype=np.bool_)
         if rule.approximate is None
         else np.broadcast_to(rule.approximate(q, xp), shape) & ~missing
     )
-    return codes, _RuleArrays(
-        values=np.broadcast_to(value, shape),
-        limits=np.where(missing, math.nan, np.broadcast_to(limit, shape)),
-        approximate=approximate,
-        first_missing=first_missing,
+    return (
+        codes,
+        overload,
+        _RuleArrays(
+            values=value,
+            limits=np.where(missing, math.nan, np.broadcast_to(limit, shape)),
+            approximate=approximate,
+            first_missing=first_missing,
+        ),
     )
 
 
@@ -419,14 +464,21 @@ def _evaluate_block(
         has_zone=cat.has_zone,
         zone_torque_nm=zone_torque,
         zone_max_speed_rpm=cat.zone_max_speed,
+        accel_torque_floor_nm=cases.accel_floor[:, col],
+        decel_torque_floor_nm=cases.decel_floor[:, col],
+        rms_torque_floor_nm=cases.rms_floor[:, col],
     )
     results = [_status_codes(r, q, cases, shape, exact=exact, detail=detail) for r in rules]
-    details = [d for _, d in results if d is not None]
+    details = [d for _, _, d in results if d is not None]
+    overload = np.zeros(shape)
+    for _, over, _ in results:
+        np.maximum(overload, over, out=overload)
     return _Block(
         accel_torque=accel_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
-        statuses=tuple(codes for codes, _ in results),
+        statuses=tuple(codes for codes, _, _ in results),
+        overload=overload,
         details=tuple(details) if detail else None,
     )
 
@@ -469,6 +521,9 @@ class BatchEvaluation:
     first_missing: CodeArray
     """Per case × actuator × check, the index of the first requirement of the rule that
     the catalogue does not meet (its ``what`` in :attr:`missing_what`); −1: none."""
+    worst_overload: FloatArray
+    """Per case × actuator, the largest overload of its checks
+    (:attr:`~actuator_selection.core.selection.Candidate.worst_overload`)."""
     missing_what: tuple[tuple[str, ...], ...] = ()
     """Per check, its requirements' ``what`` (:class:`~actuator_selection.core.checks.
     Requirement`), in order."""
@@ -518,6 +573,7 @@ def evaluate_batch(
     approximate = np.empty(checks, dtype=np.bool_)
     first_missing = np.empty(checks, dtype=np.int8)
     verdicts = np.empty(shape, dtype=np.int8)
+    worst_overload = np.empty(shape)
     for start, stop in _blocks(actuators, apps):
         rows = cases.rows(start, stop)
         block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, exact=True, detail=True)
@@ -532,6 +588,7 @@ def evaluate_batch(
             approximate[start:stop, :, k] = detail.approximate
             first_missing[start:stop, :, k] = detail.first_missing
         verdicts[start:stop] = block.verdicts()
+        worst_overload[start:stop] = block.overload
     return BatchEvaluation(
         mean_speed_rpm=cases.mean_speed,
         duty_cycle_percent=cases.duty,
@@ -545,6 +602,7 @@ def evaluate_batch(
         limits=limits,
         approximate=approximate,
         first_missing=first_missing,
+        worst_overload=worst_overload,
         missing_what=tuple(tuple(need.what for need in rule.requires) for rule in rules),
         check_names=tuple(rule.name for rule in rules),
     )
@@ -583,30 +641,27 @@ def _rank(
 ) -> list[list[int]]:
     n = len(actuators)
     allowed = _allowed_columns(actuators, models) if models is not None else None
-    excluded = np.int32(len(VERDICT_BY_CODE) * n)  # a key beyond every verdict
+    excluded = np.int8(len(VERDICT_BY_CODE))  # a verdict code beyond every verdict
     keep = min(top, n)
     chosen: list[list[int]] = []
     for start, stop in _blocks(actuators, range(cases.speed.size)):
         block = _evaluate_block(
             cat, cases.rows(start, stop), zone_limits[start:stop], rules, exact=False
         )
-        # ranking_key as one integer: verdict, then the actuator's place in the static order.
-        key = block.verdicts().astype(np.int32) * np.int32(n) + cat.rank_position
+        # ranking_key: verdict, the worst overload (0 unless unsuitable), then the
+        # actuator's place in the static order (T_max, J_A, model).
+        verdicts = block.verdicts()
         if allowed is not None:
             for row, mask in enumerate(allowed[start:stop]):
                 if mask is not None:
-                    key[row, ~mask] += excluded
-        if keep < n:
-            part = np.argpartition(key, keep - 1, axis=1)[:, :keep]
-            part_key = np.take_along_axis(key, part, axis=1)
-        else:
-            part, part_key = np.broadcast_to(np.arange(n), key.shape), key
-        order = np.argsort(part_key, axis=1)
-        best = np.take_along_axis(part, order, axis=1).tolist()
-        best_key = np.take_along_axis(part_key, order, axis=1).tolist()
+                    verdicts[row, ~mask] = excluded
+        position = np.broadcast_to(cat.rank_position, verdicts.shape)
+        order = np.lexsort((position, block.overload, verdicts), axis=-1)[:, :keep]
+        best = order.tolist()
+        best_verdict = np.take_along_axis(verdicts, order, axis=1).tolist()
         chosen.extend(
-            [j for j, k in zip(row, row_key, strict=True) if k < excluded]
-            for row, row_key in zip(best, best_key, strict=True)
+            [j for j, v in zip(row, row_verdict, strict=True) if v < excluded]
+            for row, row_verdict in zip(best, best_verdict, strict=True)
         )
     return chosen
 

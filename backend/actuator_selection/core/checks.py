@@ -86,7 +86,9 @@ class Check:
     message: str
     approximate: bool = False
     missing: str | None = None
-    """For ``no_data``: the catalogue value that is missing, in words; else None."""
+    """The catalogue value that is missing, in words: for ``no_data``, what the check
+    needs; for a ``fail`` on a lower bound (:attr:`Rule.lower_bound`), what the value's
+    least over every possible value stands in for (J_A). None otherwise."""
 
     @property
     def margin_percent(self) -> float | None:
@@ -94,6 +96,37 @@ class Check:
         if self.value is None or self.limit is None or self.limit <= 0:
             return None
         return (self.limit - self.value) / self.limit * 100.0
+
+    @property
+    def utilisation(self) -> float | None:
+        """value/limit: how much of the limit the value uses (> 1 when it is exceeded)."""
+        if self.value is None or self.limit is None or self.limit <= 0:
+            return None
+        return self.value / self.limit
+
+    @property
+    def overload(self) -> float:
+        """How far a failed check is over its limit (:func:`overload`); 0 unless failed."""
+        return overload(self.status, self.value, self.limit)
+
+
+def overload(status: Status, value: float | None, limit: float | None) -> float:
+    """How far a check is over its limit, for ranking actuators that do not fit.
+
+    0 unless the check failed; else value/limit, at least 1 (a check that fails on a
+    further condition, such as n_av beyond n_max in the continuous check, is at its
+    limit at least), and infinite where there is no limit to compare with (beyond a
+    zone's last speed). The vectorised ranking computes the same
+    (:mod:`actuator_selection.core.batch`).
+
+    >>> overload(Status.FAIL, 120.0, 100.0), overload(Status.PASS, 80.0, 100.0)
+    (1.2, 0.0)
+    """
+    if status is not Status.FAIL:
+        return 0.0
+    if value is None or limit is None or limit <= 0:
+        return math.inf
+    return max(value / limit, 1.0)
 
 
 _new_object = object.__new__
@@ -182,6 +215,13 @@ class Operands(NamedTuple):
     """The zone's edge at n_av [Nm]; NaN without a zone or beyond its last speed."""
     zone_max_speed_rpm: Real
     """The highest speed the zone covers [rpm]; NaN without a zone."""
+    accel_torque_floor_nm: Real
+    """The least T_1 over every J_A ≥ 0 [Nm] (:class:`~actuator_selection.core.cycle.
+    TorqueFloors`): what fails without J_A."""
+    decel_torque_floor_nm: Real
+    """The least |T_3| over every J_A ≥ 0 [Nm]."""
+    rms_torque_floor_nm: Real
+    """The least T_rms over every J_A ≥ 0 [Nm]."""
 
 
 def _where(condition: bool, if_true: float, if_false: float) -> float:
@@ -285,6 +325,11 @@ class Rule:
     reads_rms: bool = False
     """True if value or limit reads T_rms: the vectorised ranking, which squares as
     ``x * x``, then makes T_rms exact where the value lies near the limit."""
+    lower_bound: Formula | None = None
+    """The least value over every J_A ≥ 0, or None. Where the catalogue lacks only the
+    rule's first requirement (J_A) and even this least value fails (it exceeds the limit,
+    or ``within`` fails, which does not depend on J_A), the check fails rather than
+    lacking data: it would fail for every J_A."""
     _no_data: tuple[tuple[str | None, tuple[str, ...], str, str], ...] = field(
         init=False, repr=False, compare=False
     )
@@ -307,7 +352,7 @@ class Rule:
         xp = FLOAT_OPS
         value = self.value(q, xp)
         known_value = value if value == value else None  # NaN: T_1, T_3, T_rms without J_A
-        for unless, any_of, no_data, what in self._no_data:  # Requirement.missing, short-circuited
+        for index, (unless, any_of, no_data, what) in enumerate(self._no_data):
             if unless is not None and getattr(q, unless):
                 continue
             for name in any_of:
@@ -315,6 +360,10 @@ class Rule:
                 if published_value == published_value:  # not NaN
                     break
             else:
+                if index == 0 and self.lower_bound is not None and self._others_met(q):
+                    floor = self._floor_failure(q, what)
+                    if floor is not None:
+                        return floor
                 return _new_check(
                     self.name,
                     Status.NO_DATA,
@@ -342,6 +391,34 @@ class Rule:
             self.reference,
             self.message(q, status, value, limit),
             self.approximate is not None and self.approximate(q, xp),
+        )
+
+    def _others_met(self, q: Operands) -> bool:
+        """Whether every requirement but the first is met (floats)."""
+        return not any(need.missing(q, FLOAT_OPS) for need in self.requires[1:])
+
+    def _floor_failure(self, q: Operands, what: str) -> Check | None:
+        """The check failed on :attr:`lower_bound`, or None where the bound passes; its
+        ``missing`` names what the bound stands in for (``what``)."""
+        assert self.lower_bound is not None
+        xp = FLOAT_OPS
+        floor, limit = self.lower_bound(q, xp), self.limit(q, xp)
+        within = self.within is None or self.within(q, xp)
+        if not (floor > limit or not within) or (
+            self.binding is not None and not self.binding(q, xp)
+        ):
+            return None
+        return _new_check(
+            self.name,
+            Status.FAIL,
+            floor,
+            limit if limit == limit else None,
+            self.unit,
+            self.reference,
+            f"{self.message(q, Status.FAIL, floor, limit)}, at its least for any J_A ≥ 0 "
+            f"(the catalogue gives no J_A for this actuator)",
+            self.approximate is not None and self.approximate(q, xp),
+            what,
         )
 
 
@@ -416,6 +493,7 @@ PEAK_TORQUE = Rule(
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
     message=_torque_message("acceleration torque T_1"),
+    lower_bound=lambda q, xp: q.accel_torque_floor_nm,
 )
 """T_1 ≤ T_max (Eq. 514.1)."""
 
@@ -427,6 +505,7 @@ DECEL_TORQUE = Rule(
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
     message=_torque_message("deceleration torque |T_3|"),
+    lower_bound=lambda q, xp: q.decel_torque_floor_nm,
 )
 """|T_3| ≤ T_max (Eq. 514.1): braking loads the gear as much as accelerating."""
 
@@ -487,6 +566,7 @@ CONTINUOUS_DUTY = Rule(
     approximate=lambda q, xp: xp.not_(q.has_zone),
     reads_rms=True,
     message=_continuous_message,
+    lower_bound=lambda q, xp: q.rms_torque_floor_nm,
 )
 """(n_av, T_rms) inside the continuous-duty zone (Fig. 517.1; Eq. 514.2, 514.3).
 

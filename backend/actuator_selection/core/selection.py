@@ -51,9 +51,11 @@ from actuator_selection.core.cycle import (
     CycleTorques,
     Load,
     SpeedPattern,
+    TorqueFloors,
     cycle_torques,
     duty_cycle_percent,
     mean_speed_rpm,
+    torque_floors,
 )
 
 __all__ = [
@@ -105,6 +107,12 @@ class Candidate:
         """Messages of the checks that fail, lack data or warn, in flowchart order."""
         return tuple(c.message for c in self.checks if c.status is not Status.PASS)
 
+    @property
+    def worst_overload(self) -> float:
+        """The largest :attr:`~actuator_selection.core.checks.Check.overload` of its
+        checks: 0 unless a check failed, else how far the worst one is over its limit."""
+        return max((c.overload for c in self.checks), default=0.0)
+
 
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Selection:
@@ -126,7 +134,11 @@ def _verdict(checks: Iterable[Check]) -> Verdict:
 
 
 def operands(
-    actuator: Actuator, app: Application, torques: CycleTorques | None, n_av: float
+    actuator: Actuator,
+    app: Application,
+    torques: CycleTorques | None,
+    n_av: float,
+    floors: TorqueFloors,
 ) -> Operands:
     """The floats the rules compute from, NaN for what the catalogue does not publish.
 
@@ -140,6 +152,8 @@ def operands(
         T_1, T_2, T_3, T_rms (Eq. 514.1, 514.2) [Nm]; None without J_A.
     n_av
         Average output speed (Eq. 514.3) [rpm].
+    floors
+        The least T_1, |T_3|, T_rms over every J_A ≥ 0 (:func:`torque_floors`).
     """
     nan = math.nan
     zone = actuator.zone
@@ -162,6 +176,9 @@ def operands(
         zone is not None,
         nan if zone_torque is None else zone_torque,
         nan if zone is None else zone.max_speed_rpm,
+        floors.accel_torque_nm,
+        floors.decel_torque_nm,
+        floors.rms_torque_nm,
     )
 
 
@@ -176,6 +193,7 @@ def evaluate_each(
 ) -> list[Candidate]:
     """:func:`evaluate` for each of ``actuators`` in turn, n_av (Eq. 514.3) computed once."""
     n_av: float | None = None
+    floors: TorqueFloors | None = None
     candidates = []
     for actuator in actuators:
         torques = (
@@ -187,7 +205,9 @@ def evaluate_each(
         )
         if n_av is None:  # after the torques: an input that overflows both is named as before
             n_av = mean_speed_rpm(app.pattern)
-        q = operands(actuator, app, torques, n_av)
+        if floors is None:
+            floors = torque_floors(pattern=app.pattern, load=app.load)
+        q = operands(actuator, app, torques, n_av, floors)
         checks = tuple([rule.check(q) for rule in rules])
         candidates.append(
             Candidate(actuator=actuator, verdict=_verdict(checks), torques=torques, checks=checks)
@@ -198,10 +218,16 @@ def evaluate_each(
 _VERDICT_ORDER = {Verdict.SUITABLE: 0, Verdict.UNCONFIRMED: 1, Verdict.UNSUITABLE: 2}
 
 
-def ranking_key(candidate: Candidate) -> tuple[int, float, float, str]:
-    """Sort key: verdict (suitable, unconfirmed, unsuitable), then the smallest actuator
-    (:func:`size_key`)."""
-    return (_VERDICT_ORDER[candidate.verdict], *size_key(candidate.actuator))
+def ranking_key(candidate: Candidate) -> tuple[int, float, float, float, str]:
+    """Sort key: verdict (suitable, unconfirmed, unsuitable), then, among the unsuitable,
+    the nearest miss (the smallest :attr:`Candidate.worst_overload`), then the smallest
+    actuator (:func:`size_key`). When nothing fits, the actuator that misses least comes
+    first, not the smallest one, which misses most."""
+    return (
+        _VERDICT_ORDER[candidate.verdict],
+        candidate.worst_overload,
+        *size_key(candidate.actuator),
+    )
 
 
 def size_key(a: Actuator) -> tuple[float, float, str]:

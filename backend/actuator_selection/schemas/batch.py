@@ -139,7 +139,8 @@ _TEXT: dict[Status | Verdict, str] = {e: e.value for e in (*Status, *Verdict)}
 
 def check_body(check: Check) -> dict[str, Any]:
     """``CheckOut.from_core(check).model_dump(mode="json")``, without building the model."""
-    value, limit, margin = check.value, check.limit, check.margin_percent
+    value, limit = check.value, check.limit
+    margin, utilisation = check.margin_percent, check.utilisation
     return {
         "name": check.name,
         "status": _TEXT[check.status],
@@ -150,6 +151,7 @@ def check_body(check: Check) -> dict[str, Any]:
         "message": check.message,
         "approximate": check.approximate,
         "margin_percent": None if margin is None else float(margin),
+        "utilisation": None if utilisation is None else float(utilisation),
     }
 
 

@@ -22,6 +22,9 @@ class CheckOut(ResponseModel):
     message: str
     approximate: bool = Field(description="true when a simplified limit stood in for the zone")
     margin_percent: float | None = Field(description="(limit − value)/limit · 100")
+    utilisation: float | None = Field(
+        description="value/limit: the share of the limit used, > 1 when it is exceeded"
+    )
 
     @classmethod
     def from_core(cls, check: Check) -> CheckOut:
@@ -36,4 +39,5 @@ class CheckOut(ResponseModel):
             message=check.message,
             approximate=check.approximate,
             margin_percent=check.margin_percent,
+            utilisation=check.utilisation,
         )

@@ -219,7 +219,9 @@ class CheckBrief(ResponseModel):
     )
     missing: str | None = Field(
         default=None,
-        description="for no_data: the catalogue value that is missing; omitted otherwise",
+        description="the catalogue value that is missing: for no_data, what the check needs; "
+        "for a fail, the value is its least over every value of what is missing (it fails "
+        "whatever that value is); omitted otherwise",
     )
 
 
@@ -339,8 +341,9 @@ class CandidateDetailOut(ResponseModel):
 
 
 RANKING_RULE = (
-    "suitable first, then unconfirmed, then unsuitable; within each, the smallest actuator "
-    "first (lowest T_max, then lowest J_A, then model name)"
+    "suitable first, then unconfirmed, then unsuitable; the unsuitable nearest miss first "
+    "(smallest worst overload, the largest value/limit of its failed checks); then the "
+    "smallest actuator first (lowest T_max, then lowest J_A, then model name)"
 )
 
 

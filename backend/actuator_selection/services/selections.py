@@ -192,6 +192,7 @@ def _candidates(
         # Finite inputs that overflow a torque: the scalar flowchart names the input (422).
         select(actuators, app)
     verdicts = ev.verdicts[0].tolist()
+    overload = ev.worst_overload[0].tolist()
     accel = ev.accel_torque_nm[0].tolist()
     decel = ev.decel_torque_nm[0].tolist()
     rms = ev.rms_torque_nm[0].tolist()
@@ -199,7 +200,10 @@ def _candidates(
     load_torque = app.load.torque_nm
     speed = app.pattern.speed_rpm
     out = []
-    for j in sorted(range(len(actuators)), key=lambda j: (verdicts[j], *size_key(actuators[j]))):
+    ranked = sorted(
+        range(len(actuators)), key=lambda j: (verdicts[j], overload[j], *size_key(actuators[j]))
+    )
+    for j in ranked:
         a = actuators[j]
         known = accel[j] == accel[j]  # NaN without J_A: no torques
         verdict = VERDICT_BY_CODE[verdicts[j]]
