@@ -35,6 +35,25 @@ class Actuator:
         Allowable continuous torque where the catalogue gives that instead of T_0 [Nm].
     zone
         Continuous-duty zone of the speed/torque diagram, where published.
+    continuous_speed_rpm
+        Allowable continuous output speed [rpm] (FHA-C, FHA-C mini), where published.
+    rated_speed_rpm
+        Rated output speed [rpm]; for the CHA the rated motor speed n_N divided by i
+        (derived; the catalogue row's ``derivation`` says so).
+    brake_holding_torque_nm
+        Holding torque of the motor brake referred to the output, T_Br [Nm].
+    output_bearing_pitch_diameter_m, output_bearing_offset_m
+        Output bearing pitch circle diameter d_p and offset R [m] (CHA).
+    output_bearing_dynamic_load_rating_n, output_bearing_static_load_rating_n
+        Output bearing dynamic and static load ratings C and C_0 [N] (CHA).
+    output_bearing_dynamic_tilting_moment_nm, output_bearing_static_tilting_moment_nm
+        Allowable dynamic and static tilting moments M_dyn(max) and M_0(max) [Nm] (CHA).
+    output_bearing_radial_load_n, output_bearing_axial_load_n
+        Allowable radial and axial load on the output bearing [N] (FHA-C).
+    output_bearing_moment_load_nm
+        Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini).
+    output_bearing_moment_stiffness_nm_per_rad
+        Moment stiffness of the output bearing [Nm/rad] (FHA-C, FHA-C mini).
     """
 
     model: str
@@ -57,3 +76,16 @@ class Actuator:
     no_load_current_constant_80c_a_per_rpm: float | None = None
     thermal_time_constant_s: float | None = None
     zone: ContinuousDutyZone | None = None
+    continuous_speed_rpm: float | None = None
+    rated_speed_rpm: float | None = None
+    brake_holding_torque_nm: float | None = None
+    output_bearing_pitch_diameter_m: float | None = None
+    output_bearing_offset_m: float | None = None
+    output_bearing_dynamic_load_rating_n: float | None = None
+    output_bearing_static_load_rating_n: float | None = None
+    output_bearing_dynamic_tilting_moment_nm: float | None = None
+    output_bearing_static_tilting_moment_nm: float | None = None
+    output_bearing_radial_load_n: float | None = None
+    output_bearing_axial_load_n: float | None = None
+    output_bearing_moment_load_nm: float | None = None
+    output_bearing_moment_stiffness_nm_per_rad: float | None = None

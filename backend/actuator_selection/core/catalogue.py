@@ -28,6 +28,8 @@ class ActuatorRecord:
     notes: str | None
     source: str
     zone_source: str | None
+    derivation: str | None = None
+    """How derived values of the row were obtained (e.g. rated output speed = n_N / i)."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -29,6 +29,7 @@ from actuator_selection.core.thermal import TemperatureSensor
 
 _P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
 MILLI = 1e-3
+KILO = 1e3
 
 FAMILIES = CsvSpec(
     file="families.csv",
@@ -90,10 +91,46 @@ ACTUATORS = CsvSpec(
         Column(name="max_dc_bus_voltage_v", numeric=True, rule=_P),
         Column(name="supply_voltage", max_length=40),
         Column(name="feedback", max_length=80),
+        Column(name="continuous_speed_rpm", numeric=True, rule=_P),
+        Column(name="rated_speed_rpm", numeric=True, rule=_P),
+        Column(name="brake_holding_torque_nm", numeric=True, rule=_P),
+        Column(name="output_bearing_pitch_diameter_m", numeric=True, rule=_P),
+        Column(name="output_bearing_offset_m", numeric=True, rule=_N),
+        Column(name="output_bearing_dynamic_load_rating_n", numeric=True, rule=_P),
+        Column(name="output_bearing_static_load_rating_n", numeric=True, rule=_P),
+        Column(name="output_bearing_dynamic_tilting_moment_nm", numeric=True, rule=_P),
+        Column(name="output_bearing_static_tilting_moment_nm", numeric=True, rule=_P),
+        Column(
+            name="output_bearing_radial_load_kn",
+            numeric=True,
+            rule=_P,
+            scale=KILO,
+            target="output_bearing_radial_load_n",
+        ),
+        Column(
+            name="output_bearing_axial_load_kn",
+            numeric=True,
+            rule=_P,
+            scale=KILO,
+            target="output_bearing_axial_load_n",
+        ),
+        Column(name="output_bearing_moment_load_nm", numeric=True, rule=_P),
+        Column(
+            name="output_bearing_moment_stiffness_knm_per_rad",
+            numeric=True,
+            rule=_P,
+            scale=KILO,
+            target="output_bearing_moment_stiffness_nm_per_rad",
+        ),
         Column(name="notes"),
+        Column(name="derivation"),
         Column(name="source", required=True),
     ),
 )
+"""Columns after ``feedback`` came with the second audit of public copies (revision 0006):
+allowable continuous and rated output speed, brake holding torque and the output
+bearing's data. Each is empty where no public source gives it; ``derivation`` says how a
+derived value (e.g. rated output speed = rated motor speed / i) was obtained."""
 
 ZONE_POINTS = CsvSpec(
     file="zone_points.csv",

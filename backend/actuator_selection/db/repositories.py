@@ -67,6 +67,19 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
         no_load_current_constant_80c_a_per_rpm=row.no_load_current_constant_80c_a_per_rpm,
         thermal_time_constant_s=row.thermal_time_constant_s,
         zone=zone,
+        continuous_speed_rpm=row.continuous_speed_rpm,
+        rated_speed_rpm=row.rated_speed_rpm,
+        brake_holding_torque_nm=row.brake_holding_torque_nm,
+        output_bearing_pitch_diameter_m=row.output_bearing_pitch_diameter_m,
+        output_bearing_offset_m=row.output_bearing_offset_m,
+        output_bearing_dynamic_load_rating_n=row.output_bearing_dynamic_load_rating_n,
+        output_bearing_static_load_rating_n=row.output_bearing_static_load_rating_n,
+        output_bearing_dynamic_tilting_moment_nm=row.output_bearing_dynamic_tilting_moment_nm,
+        output_bearing_static_tilting_moment_nm=row.output_bearing_static_tilting_moment_nm,
+        output_bearing_radial_load_n=row.output_bearing_radial_load_n,
+        output_bearing_axial_load_n=row.output_bearing_axial_load_n,
+        output_bearing_moment_load_nm=row.output_bearing_moment_load_nm,
+        output_bearing_moment_stiffness_nm_per_rad=row.output_bearing_moment_stiffness_nm_per_rad,
     )
     return ActuatorRecord(
         actuator=actuator,
@@ -79,6 +92,7 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
         supply_voltage=row.supply_voltage,
         feedback=row.feedback,
         notes=row.notes,
+        derivation=row.derivation,
         source=row.source,
         zone_source="; ".join(sorted({p.source for p in row.zone_points})) or None,
     )

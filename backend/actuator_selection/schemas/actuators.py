@@ -64,7 +64,45 @@ class ActuatorOut(ResponseModel):
         "turns counter-clockwise when the motor shaft turns clockwise (chapter, Direction of "
         "Rotation)",
     )
+    continuous_speed_rpm: float | None = Field(
+        description="allowable continuous output speed [rpm]"
+    )
+    rated_speed_rpm: float | None = Field(
+        description="rated output speed [rpm] (CHA: derived, rated motor speed / i; see derivation)"
+    )
+    brake_holding_torque_nm: float | None = Field(
+        description="T_Br, holding torque of the motor brake at the output [Nm]"
+    )
+    output_bearing_pitch_diameter_m: float | None = Field(
+        description="d_p, pitch circle diameter of the output bearing [m]"
+    )
+    output_bearing_offset_m: float | None = Field(description="R, output bearing offset [m]")
+    output_bearing_dynamic_load_rating_n: float | None = Field(
+        description="C, dynamic load rating of the output bearing [N]"
+    )
+    output_bearing_static_load_rating_n: float | None = Field(
+        description="C_0, static load rating of the output bearing [N]"
+    )
+    output_bearing_dynamic_tilting_moment_nm: float | None = Field(
+        description="M_dyn(max), allowable dynamic tilting moment [Nm]"
+    )
+    output_bearing_static_tilting_moment_nm: float | None = Field(
+        description="M_0(max), allowable static tilting moment [Nm]"
+    )
+    output_bearing_radial_load_n: float | None = Field(
+        description="allowable radial load on the output bearing [N]"
+    )
+    output_bearing_axial_load_n: float | None = Field(
+        description="allowable axial load on the output bearing [N]"
+    )
+    output_bearing_moment_load_nm: float | None = Field(
+        description="allowable moment load on the output bearing [Nm]"
+    )
+    output_bearing_moment_stiffness_nm_per_rad: float | None = Field(
+        description="moment stiffness of the output bearing [Nm/rad]"
+    )
     notes: str | None
+    derivation: str | None = Field(description="how the row's derived values were obtained")
     source: str
 
     @classmethod
@@ -105,7 +143,21 @@ class ActuatorOut(ResponseModel):
                 else None
             ),
             continuous_duty_zone_source=record.zone_source,
+            continuous_speed_rpm=a.continuous_speed_rpm,
+            rated_speed_rpm=a.rated_speed_rpm,
+            brake_holding_torque_nm=a.brake_holding_torque_nm,
+            output_bearing_pitch_diameter_m=a.output_bearing_pitch_diameter_m,
+            output_bearing_offset_m=a.output_bearing_offset_m,
+            output_bearing_dynamic_load_rating_n=a.output_bearing_dynamic_load_rating_n,
+            output_bearing_static_load_rating_n=a.output_bearing_static_load_rating_n,
+            output_bearing_dynamic_tilting_moment_nm=a.output_bearing_dynamic_tilting_moment_nm,
+            output_bearing_static_tilting_moment_nm=a.output_bearing_static_tilting_moment_nm,
+            output_bearing_radial_load_n=a.output_bearing_radial_load_n,
+            output_bearing_axial_load_n=a.output_bearing_axial_load_n,
+            output_bearing_moment_load_nm=a.output_bearing_moment_load_nm,
+            output_bearing_moment_stiffness_nm_per_rad=a.output_bearing_moment_stiffness_nm_per_rad,
             notes=record.notes,
+            derivation=record.derivation,
             source=record.source,
         )
 
