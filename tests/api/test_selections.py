@@ -401,3 +401,41 @@ def test_answer_equals_the_scalar_flowchart_check_by_check(
                 if c["status"] == "no_data":
                     expected = f"no data: the catalogue gives no {c['missing']} for this actuator"
                     assert d["message"] == expected
+
+
+def _continuous(client: TestClient, model: str, speed_rpm: float, torque_nm: float) -> Any:
+    """``model`` running continuously at ``speed_rpm`` (short ramps, no pause)."""
+    body = {
+        "load": {"speed_rpm": speed_rpm, "torque_nm": torque_nm, "inertia_kgm2": 0.001},
+        "cycle": {"accel_s": 0.5, "constant_s": 600, "decel_s": 0.5, "pause_s": 0},
+        "models": [model],
+    }
+    response = post(client, body)
+    assert response.status_code == 201, response.text
+    (candidate,) = response.json()["candidates"]
+    checks = {c["name"]: c for c in candidate["checks"]}
+    return candidate, checks["continuous_duty"]
+
+
+def test_continuous_operation_is_bounded_by_the_rated_speed_not_n_max(client: TestClient) -> None:
+    """CHA-25A-50 (n_max 112 rpm; rated motor speed 3500 rpm / 50 = 70 rpm at the output):
+    continuous at 100 rpm fails, at 60 rpm it passes, with the same light torque."""
+    fast, check = _continuous(client, "CHA-25A-50", 100, 5)
+    assert fast["verdict"] == "unsuitable"
+    assert check["status"] == "fail"
+    assert check["value"] < check["limit"]  # the torque is fine: the speed is not
+    slow, check = _continuous(client, "CHA-25A-50", 60, 5)
+    assert check["status"] == "pass"
+    assert slow["verdict"] == "suitable"
+
+
+def test_continuous_operation_without_a_published_speed_is_not_confirmed(
+    client: TestClient,
+) -> None:
+    """FHA-11C-50 at 116 rpm: no allowable continuous speed is published for the
+    incremental-encoder version, so continuous operation is not confirmed (it was
+    'suitable' on n_max alone)."""
+    candidate, check = _continuous(client, "FHA-11C-50", 116, 0.5)
+    assert check["status"] == "no_data"
+    assert "continuous or rated speed" in check["missing"]
+    assert candidate["verdict"] != "suitable"

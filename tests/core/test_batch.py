@@ -140,6 +140,8 @@ def random_actuator(rng: random.Random, k: int) -> Actuator:
             rng.uniform(1, 800) if continuous_kind in ("continuous", "both") else None
         ),
         zone=random_zone(rng) if continuous_kind == "zone" else None,
+        continuous_speed_rpm=maybe(rng.uniform(5, 300), missing=0.4),
+        rated_speed_rpm=maybe(rng.uniform(5, 300), missing=0.4),
     )
 
 
@@ -191,6 +193,7 @@ def boundary_actuators(apps: Sequence[Application]) -> list[Actuator]:
             max_speed_rpm=app.pattern.speed_rpm,
             inertia_kgm2=0.7,
             stall_torque_nm=t.rms_torque_nm,
+            rated_speed_rpm=n_av,  # n_av at the rated speed exactly
         )
         ends_at_n_av = dataclasses.replace(
             exact,
@@ -330,6 +333,7 @@ def test_an_added_rule_near_its_limit_is_ranked_exactly() -> None:
                 max_speed_rpm=1e9,
                 inertia_kgm2=0.7,
                 stall_torque_nm=1e9,
+                rated_speed_rpm=1e9,
             )
             for name, rms in (("EXACT", t.rms_torque_nm), ("FAST", fast))
         ]
@@ -344,11 +348,21 @@ def test_edge_cases_named_in_the_issue() -> None:
         FHA,
         dataclasses.replace(FHA, model="NO-JA", inertia_kgm2=None),
         dataclasses.replace(FHA, model="ZONE", zone=zone),
-        dataclasses.replace(FHA, model="T0", stall_torque_nm=36),
-        dataclasses.replace(FHA, model="TC", continuous_torque_nm=40),
-        dataclasses.replace(FHA, model="TC-NO-NMAX", continuous_torque_nm=40, max_speed_rpm=None),
-        dataclasses.replace(FHA, model="NO-TMAX", max_torque_nm=None, stall_torque_nm=36),
-        dataclasses.replace(FHA, model="TIE-A", stall_torque_nm=36),  # ties T0 on T_max and J_A
+        dataclasses.replace(FHA, model="T0", stall_torque_nm=36, rated_speed_rpm=70),
+        dataclasses.replace(FHA, model="TC", continuous_torque_nm=40, continuous_speed_rpm=35),
+        dataclasses.replace(
+            FHA,
+            model="TC-NO-NMAX",
+            continuous_torque_nm=40,
+            max_speed_rpm=None,
+            continuous_speed_rpm=35,
+        ),
+        dataclasses.replace(
+            FHA, model="NO-TMAX", max_torque_nm=None, stall_torque_nm=36, rated_speed_rpm=70
+        ),
+        # ties T0 on T_max and J_A
+        dataclasses.replace(FHA, model="TIE-A", stall_torque_nm=36, rated_speed_rpm=70),
+        dataclasses.replace(FHA, model="T0-NO-SPEED", stall_torque_nm=36),
         Actuator(model="BARE", family="F", gear_ratio=50),
     ]
     at_ratio = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=3 * 0.86))
@@ -373,6 +387,7 @@ def test_edge_cases_named_in_the_issue() -> None:
     assert ev.status(4, 0, "inertia_ratio") is Status.WARN
     assert ev.status(0, 1, "peak_torque") is Status.NO_DATA
     assert ev.verdict(0, 3) is Verdict.SUITABLE
+    assert ev.status(0, 8, "continuous_duty") is Status.NO_DATA  # T_0 without a speed
     ranked = [c.actuator.model for c in select_batch(actuators, [EXAMPLE], top=9)[0].candidates]
     assert ranked[:3] == ["T0", "TC", "TIE-A"]  # equal T_max and J_A: the name decides
 
@@ -411,6 +426,8 @@ def catalogues(draw: st.DrawFn) -> list[Actuator]:
             stall_torque_nm=draw(optional_value),
             continuous_torque_nm=draw(optional_value),
             zone=draw(st.none() | zones()),
+            continuous_speed_rpm=draw(optional_value),
+            rated_speed_rpm=draw(optional_value),
         )
         for k in range(n)
     ]
@@ -474,6 +491,7 @@ def test_ranking_makes_rms_exact_near_its_limit() -> None:
                 max_speed_rpm=1e9,
                 inertia_kgm2=0.7,
                 stall_torque_nm=limit,
+                rated_speed_rpm=1e9,
             )
             for name, limit in (("EXACT", exact), ("FAST", fast))
         ]
@@ -533,7 +551,9 @@ def test_models_restrict_each_case() -> None:
 def test_equal_keys_keep_catalogue_order_like_a_stable_sort() -> None:
     """Two entries of one model (equal ranking keys): select() keeps their input order."""
     twins = [
-        dataclasses.replace(FHA, model="TWIN", gear_ratio=ratio, stall_torque_nm=36)
+        dataclasses.replace(
+            FHA, model="TWIN", gear_ratio=ratio, stall_torque_nm=36, rated_speed_rpm=70
+        )
         for ratio in (50.0, 100.0, 30.0)
     ]
     for actuators in (twins, twins[::-1], [FHA, *twins]):
@@ -576,6 +596,7 @@ def test_floors_without_j_a_match_the_scalar_flowchart() -> None:
                             stall_torque_nm=s)
         for t, s in ((20.0, 5.0), (50.0, 30.0), (200.0, None), (1000.0, 400.0))
     ]  # fmt: skip
+    actuators = [dataclasses.replace(a, rated_speed_rpm=60.0) for a in actuators]
     rng = random.Random(17)
     apps = [
         Application(

@@ -101,6 +101,8 @@ def test_operands_name_each_value() -> None:
         stall_torque_nm=14,
         continuous_torque_nm=15,
         zone=zone((0, 40), (100, 30)),
+        continuous_speed_rpm=16,
+        rated_speed_rpm=17,
     )
     app = Application(
         pattern=SpeedPattern(speed_rpm=21, accel_s=1, constant_s=1, decel_s=1, pause_s=1),
@@ -131,6 +133,8 @@ def test_operands_name_each_value() -> None:
         "accel_torque_floor_nm": 41,
         "decel_torque_floor_nm": 42,
         "rms_torque_floor_nm": 43,
+        "continuous_speed_rpm": 16,
+        "rated_speed_rpm": 17,
     }
     bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0, floors)
     unpublished = [
@@ -147,6 +151,8 @@ def test_operands_name_each_value() -> None:
         "continuous_torque_nm",
         "zone_torque_nm",
         "zone_max_speed_rpm",
+        "continuous_speed_rpm",
+        "rated_speed_rpm",
     ]
     assert bare.has_zone is False
     beyond = operands(actuator, app, torques, 101.0, floors)
@@ -220,6 +226,16 @@ WORKED_PASSES = (
 )
 """The worked example's first four checks on FHA-25C-50-L (Table 516.1/516.3): T_1 95.48 Nm,
 |T_3| 85.48 Nm, as the chapter gives them."""
+
+STALL_PASS = (
+    "pass",
+    "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within continuous "
+    "stall torque T_0 = 36 Nm up to the rated speed 70 rpm (no continuous-duty zone "
+    "published; continuous operation above that speed is not allowed)",
+    True,
+)
+"""The continuous check of the worked example on a CHA-like FHA-25C-50-L: T_0 = 36 Nm
+and a rated output speed of 70 rpm (CHA-25A-50: 3500 rpm / 50)."""
 
 # Every message the flowchart writes, pinned: generated with the hand-written checks
 # that the rule table replaced, and unchanged since.
@@ -332,12 +348,7 @@ MESSAGES = {
             "no data: the catalogue gives no maximum torque T_max for this actuator",
             False,
         ),
-        (
-            "pass",
-            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within continuous "
-            "stall torque T_0 = 36 Nm and n_max = 90 rpm (no continuous-duty zone published)",
-            True,
-        ),
+        STALL_PASS,
     ),
     "no_nmax": (
         (
@@ -348,10 +359,25 @@ MESSAGES = {
         ("pass", "load inertia J_L = 1.3 kgm² ≤ 3·J_A = 2.58 kgm²", False),
         ("pass", "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm", False),
         ("pass", "deceleration torque |T_3| = 85.48 Nm ≤ T_max = 151 Nm", False),
+        STALL_PASS,  # the continuous check needs no n_max, a peak speed
+    ),
+    "no_speed": (
+        *WORKED_PASSES,
         (
             "no_data",
-            "no data: the catalogue gives no maximum output speed n_max for this actuator",
+            "no data: the catalogue gives no continuous-duty zone or allowable continuous or "
+            "rated speed for this actuator",
             False,
+        ),
+    ),
+    "above_rated": (
+        *WORKED_PASSES,
+        (
+            "fail",
+            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) outside continuous "
+            "stall torque T_0 = 36 Nm up to the rated speed 5 rpm (no continuous-duty zone "
+            "published; continuous operation above that speed is not allowed)",
+            True,
         ),
     ),
     "zone_inside": (
@@ -381,21 +407,14 @@ MESSAGES = {
             False,
         ),
     ),
-    "stall_pass": (
-        *WORKED_PASSES,
-        (
-            "pass",
-            "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within continuous "
-            "stall torque T_0 = 36 Nm and n_max = 90 rpm (no continuous-duty zone published)",
-            True,
-        ),
-    ),
+    "stall_pass": (*WORKED_PASSES, STALL_PASS),
     "stall_fail": (
         *WORKED_PASSES,
         (
             "fail",
             "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) outside continuous "
-            "stall torque T_0 = 35 Nm and n_max = 90 rpm (no continuous-duty zone published)",
+            "stall torque T_0 = 35 Nm up to the rated speed 70 rpm (no continuous-duty zone "
+            "published; continuous operation above that speed is not allowed)",
             True,
         ),
     ),
@@ -404,7 +423,9 @@ MESSAGES = {
         (
             "pass",
             "approximate: operating point (n_av = 6.154 rpm, T_rms = 35.57 Nm) within allowable "
-            "continuous torque = 40 Nm and n_max = 90 rpm (no continuous-duty zone published)",
+            "continuous torque = 40 Nm up to the allowable continuous speed 35 rpm (no "
+            "continuous-duty zone published; continuous operation above that speed is not "
+            "allowed)",
             True,
         ),
     ),
@@ -415,6 +436,7 @@ MESSAGES = {
 def test_every_branch_writes_the_same_message(scenario: str) -> None:
     heavy = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=2.6))
     fast = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=91))
+    cha_like = dataclasses.replace(FHA, stall_torque_nm=36, rated_speed_rpm=70)
     actuator, app = {
         "example": (FHA, EXAMPLE),
         "fast": (FHA, fast),
@@ -422,14 +444,19 @@ def test_every_branch_writes_the_same_message(scenario: str) -> None:
         "heavy_relaxed": (FHA, dataclasses.replace(heavy, high_dynamics=False)),
         "small": (dataclasses.replace(FHA, max_torque_nm=50), EXAMPLE),
         "bare": (Actuator(model="X", family="F", gear_ratio=50), EXAMPLE),
-        "no_tmax": (dataclasses.replace(FHA, max_torque_nm=None, stall_torque_nm=36), EXAMPLE),
-        "no_nmax": (dataclasses.replace(FHA, max_speed_rpm=None, stall_torque_nm=36), EXAMPLE),
+        "no_tmax": (dataclasses.replace(cha_like, max_torque_nm=None), EXAMPLE),
+        "no_nmax": (dataclasses.replace(cha_like, max_speed_rpm=None), EXAMPLE),
+        "no_speed": (dataclasses.replace(FHA, stall_torque_nm=36), EXAMPLE),
+        "above_rated": (dataclasses.replace(cha_like, rated_speed_rpm=5), EXAMPLE),
         "zone_inside": (dataclasses.replace(FHA, zone=zone((0, 40), (90, 30))), EXAMPLE),
         "zone_above": (dataclasses.replace(FHA, zone=zone((0, 35), (90, 30))), EXAMPLE),
         "zone_beyond": (dataclasses.replace(FHA, zone=zone((0, 80), (5, 80))), EXAMPLE),
-        "stall_pass": (dataclasses.replace(FHA, stall_torque_nm=36), EXAMPLE),
-        "stall_fail": (dataclasses.replace(FHA, stall_torque_nm=35), EXAMPLE),
-        "allowable": (dataclasses.replace(FHA, continuous_torque_nm=40), EXAMPLE),
+        "stall_pass": (cha_like, EXAMPLE),
+        "stall_fail": (dataclasses.replace(cha_like, stall_torque_nm=35), EXAMPLE),
+        "allowable": (
+            dataclasses.replace(FHA, continuous_torque_nm=40, continuous_speed_rpm=35),
+            EXAMPLE,
+        ),
     }[scenario]
     got = tuple((k.status.value, k.message, k.approximate) for k in evaluate(actuator, app).checks)
     assert got == MESSAGES[scenario]

@@ -101,16 +101,17 @@ def test_continuous_duty_with_zone_pass_and_fail() -> None:
 
 
 def test_continuous_duty_approximate_with_stall_torque() -> None:
-    ok = evaluate(dataclasses.replace(FHA, stall_torque_nm=36), EXAMPLE)
+    cha_like = dataclasses.replace(FHA, stall_torque_nm=36, rated_speed_rpm=70)
+    ok = evaluate(cha_like, EXAMPLE)
     check = ok.checks[-1]
     assert check.status is Status.PASS
     assert check.approximate
     assert check.limit == 36
     assert ok.verdict is Verdict.SUITABLE
-    assert status(dataclasses.replace(FHA, stall_torque_nm=35), EXAMPLE, "continuous_duty") is (
-        Status.FAIL
-    )
-    mini = dataclasses.replace(FHA, continuous_torque_nm=40)
+    assert status(
+        dataclasses.replace(cha_like, stall_torque_nm=35), EXAMPLE, "continuous_duty"
+    ) is (Status.FAIL)
+    mini = dataclasses.replace(FHA, continuous_torque_nm=40, continuous_speed_rpm=35)
     assert evaluate(mini, EXAMPLE).checks[-1].limit == 40
 
 
@@ -129,10 +130,11 @@ def test_margin_percent() -> None:
 
 
 def test_ranking_suitable_smallest_first() -> None:
-    big = dataclasses.replace(FHA, model="BIG", max_torque_nm=300, stall_torque_nm=100)
-    small = dataclasses.replace(FHA, model="SMALL", max_torque_nm=151, stall_torque_nm=40)
+    rated = dataclasses.replace(FHA, rated_speed_rpm=70)
+    big = dataclasses.replace(rated, model="BIG", max_torque_nm=300, stall_torque_nm=100)
+    small = dataclasses.replace(rated, model="SMALL", max_torque_nm=151, stall_torque_nm=40)
     unknown = dataclasses.replace(FHA, model="UNKNOWN")  # no continuous data
-    weak = dataclasses.replace(FHA, model="WEAK", max_torque_nm=50, stall_torque_nm=40)
+    weak = dataclasses.replace(rated, model="WEAK", max_torque_nm=50, stall_torque_nm=40)
     result = select([weak, unknown, big, small], EXAMPLE)
     assert [c.actuator.model for c in result.candidates] == ["SMALL", "BIG", "UNKNOWN", "WEAK"]
     assert [c.verdict for c in result.candidates] == [
@@ -176,7 +178,9 @@ def test_overload_of_a_check() -> None:
 
 # --- lower bounds: a check fails without J_A when it fails for every J_A ≥ 0 -------------
 
-NO_J_A = dataclasses.replace(FHA, model="NO-JA", inertia_kgm2=None, stall_torque_nm=30.0)
+NO_J_A = dataclasses.replace(
+    FHA, model="NO-JA", inertia_kgm2=None, stall_torque_nm=30.0, rated_speed_rpm=70.0
+)
 """The worked example's actuator without a published J_A (and with T_0, so that the
 continuous check has a limit)."""
 

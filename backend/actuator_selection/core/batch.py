@@ -154,6 +154,8 @@ class _Catalogue:
     inertia: FloatArray
     stall: FloatArray
     continuous: FloatArray
+    continuous_speed: FloatArray
+    rated_speed: FloatArray
     has_zone: BoolArray
     zone_max_speed: FloatArray
     zone_columns: IndexArray
@@ -182,6 +184,8 @@ def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
         inertia=_optional([a.inertia_kgm2 for a in actuators]),
         stall=_optional([a.stall_torque_nm for a in actuators]),
         continuous=_optional([a.continuous_torque_nm for a in actuators]),
+        continuous_speed=_optional([a.continuous_speed_rpm for a in actuators]),
+        rated_speed=_optional([a.rated_speed_rpm for a in actuators]),
         has_zone=has_zone,
         zone_max_speed=_optional([a.zone.max_speed_rpm if a.zone else None for a in actuators]),
         zone_columns=np.flatnonzero(has_zone),
@@ -467,6 +471,8 @@ def _evaluate_block(
         accel_torque_floor_nm=cases.accel_floor[:, col],
         decel_torque_floor_nm=cases.decel_floor[:, col],
         rms_torque_floor_nm=cases.rms_floor[:, col],
+        continuous_speed_rpm=cat.continuous_speed,
+        rated_speed_rpm=cat.rated_speed,
     )
     results = [_status_codes(r, q, cases, shape, exact=exact, detail=detail) for r in rules]
     details = [d for _, _, d in results if d is not None]

@@ -222,6 +222,10 @@ class Operands(NamedTuple):
     """The least |T_3| over every J_A ≥ 0 [Nm]."""
     rms_torque_floor_nm: Real
     """The least T_rms over every J_A ≥ 0 [Nm]."""
+    continuous_speed_rpm: Real
+    """Allowable continuous output speed [rpm] (FHA-C); NaN where not published."""
+    rated_speed_rpm: Real
+    """Rated output speed [rpm] (CHA: rated motor speed / i); NaN where not published."""
 
 
 def _where(condition: bool, if_true: float, if_false: float) -> float:
@@ -519,6 +523,12 @@ def _continuous_limit(q: Operands, xp: Ops) -> Real:
     return xp.where(q.has_zone, q.zone_torque_nm, rectangle)
 
 
+def _continuous_speed(q: Operands, xp: Ops) -> Real:
+    """Without a zone, the speed up to which the continuous torque holds: the allowable
+    continuous speed, else the rated speed; NaN where neither is published."""
+    return xp.where(xp.isnan(q.continuous_speed_rpm), q.rated_speed_rpm, q.continuous_speed_rpm)
+
+
 def _continuous_message(q: Operands, status: Status, t_rms: float, limit: float) -> str:
     ok = status is Status.PASS
     point = f"(n_av = {q.mean_speed_rpm:.4g} rpm, T_rms = {t_rms:.4g} Nm)"
@@ -537,10 +547,16 @@ def _continuous_message(q: Operands, status: Status, t_rms: float, limit: float)
         if math.isnan(q.stall_torque_nm)
         else "continuous stall torque T_0"
     )
+    speed, speed_what = (
+        (q.continuous_speed_rpm, "allowable continuous speed")
+        if not math.isnan(q.continuous_speed_rpm)
+        else (q.rated_speed_rpm, "rated speed")
+    )
     return (
         f"approximate: operating point {point} {'within' if ok else 'outside'} "
-        f"{what} = {limit:.4g} Nm and n_max = {q.max_speed_rpm:.4g} rpm "
-        "(no continuous-duty zone published)"
+        f"{what} = {limit:.4g} Nm up to the {speed_what} {speed:.4g} rpm "
+        "(no continuous-duty zone published; continuous operation above that speed "
+        "is not allowed)"
     )
 
 
@@ -558,11 +574,15 @@ CONTINUOUS_DUTY = Rule(
             what="continuous-duty zone or continuous torque",
         ),
         Requirement(
-            any_of=("max_speed_rpm",), unless="has_zone", what="maximum output speed n_max"
+            any_of=("continuous_speed_rpm", "rated_speed_rpm"),
+            unless="has_zone",
+            what="continuous-duty zone or allowable continuous or rated speed",
         ),
     ),
-    # The rectangle also bounds the speed; a zone bounds it itself (NaN edge beyond it).
-    within=lambda q, xp: q.has_zone | (q.mean_speed_rpm <= q.max_speed_rpm),
+    # A zone bounds the speed itself (NaN edge beyond it); without one, the published
+    # continuous (or rated) speed does, never n_max: a motor runs continuously at its
+    # rated speed, and n_max is a peak.
+    within=lambda q, xp: q.has_zone | (q.mean_speed_rpm <= _continuous_speed(q, xp)),
     approximate=lambda q, xp: xp.not_(q.has_zone),
     reads_rms=True,
     message=_continuous_message,
@@ -571,9 +591,12 @@ CONTINUOUS_DUTY = Rule(
 """(n_av, T_rms) inside the continuous-duty zone (Fig. 517.1; Eq. 514.2, 514.3).
 
 With a published zone the torque limit is the zone's edge at n_av. Without one, the
-continuous stall torque T_0 (or the catalogue's allowable continuous torque) and n_max
-bound a rectangle that is reported as approximate: the real edge falls with speed, so
-the rectangle may be optimistic at high n_av.
+continuous stall torque T_0 (or the catalogue's allowable continuous torque) up to the
+allowable continuous speed (FHA-C), else the rated speed (CHA), bound a rectangle that
+is reported as approximate: the real edge falls with speed, so the rectangle may be
+optimistic between standstill and that speed. Continuous operation above it fails;
+where neither speed is published the check lacks data. It never passes on n_max, a
+peak speed (issue "The checks a sizing engineer signs", item 2).
 """
 
 RULES: tuple[Rule, ...] = (

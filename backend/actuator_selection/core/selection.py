@@ -179,6 +179,8 @@ def operands(
         floors.accel_torque_nm,
         floors.decel_torque_nm,
         floors.rms_torque_nm,
+        nan if actuator.continuous_speed_rpm is None else actuator.continuous_speed_rpm,
+        nan if actuator.rated_speed_rpm is None else actuator.rated_speed_rpm,
     )
 
 
