@@ -11,7 +11,7 @@ candidate and check would cost more than the engineering of the whole batch.
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Any
 
 from pydantic import Field, field_validator
 
@@ -22,6 +22,7 @@ from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.controllers import DriveOptionOut
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
+    CandidateFigures,
     ResolvedLoad,
     SelectionRequest,
 )
@@ -85,17 +86,10 @@ class BatchSelectionRequest(StrictModel):
         return value
 
 
-class BatchCandidateOut(ResponseModel):
-    """A candidate as in a single selection (CandidateOut); detail lists only if asked for."""
+class BatchCandidateOut(CandidateFigures):
+    """A candidate as a single selection's detail gives it (CandidateDetailOut); its detail
+    lists only if asked for."""
 
-    model: str
-    family: str
-    gear_ratio: float
-    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
-    accel_torque_nm: float | None = Field(description="T_1 (Eq. 514.1) [Nm]")
-    constant_torque_nm: float | None = Field(description="T_2 = T_L [Nm]")
-    decel_torque_nm: float | None = Field(description="T_3, usually negative [Nm]")
-    rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
     reasons: list[str] = Field(description="messages of the checks that did not pass")
     checks: list[CheckOut] | None = Field(
         default=None, description="the flowchart's checks; left out unless include_checks"

@@ -263,8 +263,8 @@ class DriveOptionGroup(ResponseModel):
     voltage: VoltageBrief
 
 
-class CandidateOut(ResponseModel):
-    """The flowchart's result for one actuator, as the ranking lists it."""
+class CandidateFigures(ResponseModel):
+    """What every form of a candidate states first: the actuator, its verdict, its torques."""
 
     model: str
     family: str
@@ -274,6 +274,11 @@ class CandidateOut(ResponseModel):
     constant_torque_nm: float | None = Field(description="T_2 = T_L [Nm]")
     decel_torque_nm: float | None = Field(description="T_3, usually negative [Nm]")
     rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
+
+
+class CandidateOut(CandidateFigures):
+    """The flowchart's result for one actuator, as the ranking lists it."""
+
     checks: list[CheckBrief]
     controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
     drive_options: list[DriveOptionGroup] | None = Field(
@@ -283,20 +288,12 @@ class CandidateOut(ResponseModel):
     )
 
 
-class CandidateDetailOut(ResponseModel):
+class CandidateDetailOut(CandidateFigures):
     """One candidate of a stored selection in full: every check in words, every controller
     of Table 521.1 with its criteria and voltage check, and the actuator's catalogue data."""
 
     selection_id: str
     catalogue_version: int
-    model: str
-    family: str
-    gear_ratio: float
-    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
-    accel_torque_nm: float | None = Field(description="T_1 (Eq. 514.1) [Nm]")
-    constant_torque_nm: float | None = Field(description="T_2 = T_L [Nm]")
-    decel_torque_nm: float | None = Field(description="T_3, usually negative [Nm]")
-    rms_torque_nm: float | None = Field(description="T_rms (Eq. 514.2) [Nm]")
     reasons: list[str] = Field(description="messages of the checks that did not pass")
     checks: list[CheckOut]
     controllers: list[DriveOptionOut] = Field(

@@ -148,6 +148,20 @@ function countVerdicts(candidates) {
   return counts;
 }
 
+/** One check that did not pass: status, label, approximation mark, then what was found. */
+function reasonItem(check, lang, label, separator, finding) {
+  return h(
+    "li",
+    { "data-check": check.name },
+    statusBadge(check.status, lang),
+    " ",
+    sym(label, { class: "reason-check" }),
+    check.approximate ? [" ", approxBadge(lang)] : null,
+    separator,
+    finding,
+  );
+}
+
 /** The checks that did not pass, from the lean answer: label, then value against limit or what is missing. */
 function reasonList(sel, candidate, lang, { short = false } = {}) {
   const open = openChecks(candidate);
@@ -158,13 +172,10 @@ function reasonList(sel, candidate, lang, { short = false } = {}) {
     "ul",
     { class: "reasons" },
     open.map((c) =>
-      h(
-        "li",
-        { "data-check": c.name },
-        statusBadge(c.status, lang),
-        " ",
-        sym(short ? shortCheckLabel(c.name, lang) : checkLabel(c.name, lang), { class: "reason-check" }),
-        c.approximate ? [" ", approxBadge(lang)] : null,
+      reasonItem(
+        c,
+        lang,
+        short ? shortCheckLabel(c.name, lang) : checkLabel(c.name, lang),
         short ? " – " : h("br"),
         checkFinding(c, checkRule(sel, c.name)?.unit, lang),
       ),
@@ -183,16 +194,7 @@ function detailReasonList(detail, lang) {
     "ul",
     { class: "reasons" },
     open.map((c) =>
-      h(
-        "li",
-        { "data-check": c.name },
-        statusBadge(c.status, lang),
-        " ",
-        sym(checkLabel(c.name, lang), { class: "reason-check" }),
-        c.approximate ? [" ", approxBadge(lang)] : null,
-        h("br"),
-        sym(c.message, { class: "api-message", lang: "en" }),
-      ),
+      reasonItem(c, lang, checkLabel(c.name, lang), h("br"), sym(c.message, { class: "api-message", lang: "en" })),
     ),
     further.map((r) => h("li", {}, sym(r, { class: "api-message", lang: "en" }))),
   );
