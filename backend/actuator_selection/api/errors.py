@@ -31,6 +31,7 @@ from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from pydantic import BaseModel, Discriminator, Tag
+from pydantic.fields import FieldInfo
 from sqlalchemy.exc import IntegrityError, OperationalError
 from sqlalchemy.exc import TimeoutError as PoolTimeoutError
 from starlette.exceptions import HTTPException as StarletteHTTPException
@@ -164,8 +165,8 @@ def field_loc(
     i = 0
     while i < len(loc):
         annotation, metadata = _members(annotation)
-        for item in metadata:
-            if isinstance(item, Discriminator):
+        for item in metadata:  # Discriminator(...) or Field(discriminator=...)
+            if isinstance(item, Discriminator | FieldInfo) and item.discriminator is not None:
                 discriminator = item.discriminator
         origin = get_origin(annotation)
         if origin in (Union, UnionType):
