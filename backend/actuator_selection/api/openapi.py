@@ -266,15 +266,16 @@ def _document_examples(op: dict[str, Any], components: dict[str, Any]) -> None:
     for media_type, body in content.items():
         if "example" in body or "examples" in body:
             continue
+        operation = op.get("operationId", "")
         example: Any = None
         if media_type == "application/json":
-            example = BODY_EXAMPLES.get(op.get("operationId", ""))
+            example = BODY_EXAMPLES.get(operation)
+            if example is None and operation == "import_catalogue":
+                example = catalogue_example()
             if example is None:
                 example = _schema_example(body.get("schema", {}), components)
         elif media_type == "text/csv":
             example = CSV_EXAMPLE
-        if example is None and op.get("operationId") == "import_catalogue":
-            example = catalogue_example() if media_type == "application/json" else None
         if example is not None:
             body["example"] = copy.deepcopy(example)
 
