@@ -22,6 +22,7 @@ from actuator_selection.api import (
     controllers,
     errors,
     health,
+    openapi,
     prices,
     quotes,
     security_headers,
@@ -80,6 +81,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         summary="Sizes Harmonic Drive servo actuators for a motion cycle "
         "(Engineering Data for Harmonic Drive Servo Actuators, Eq. 514.1–522.3).",
         lifespan=lifespan,
+        # operationIds are the endpoints' names (create_selection), for client generators.
+        generate_unique_id_function=openapi.operation_id,
     )
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)
@@ -124,4 +127,5 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     if FRONTEND_DIR.is_dir():
         app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
     security_headers.install(app, docs_paths=DOCS_PATHS)
+    openapi.install(app)  # one error schema, security, examples (see api/openapi.py)
     return app

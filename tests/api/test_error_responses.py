@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from typing import Annotated, Any, Literal
+
 import pytest
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
+from pydantic import BaseModel, Field, ValidationError
 from sqlalchemy.exc import IntegrityError
 
 from actuator_selection.api import errors
@@ -54,3 +57,43 @@ def test_every_error_has_the_one_shape(
     assert isinstance(entries, list)
     assert all(set(e) >= {"loc", "msg", "type"} and e["msg"] for e in entries)
     assert (entries[0]["loc"], entries[0]["type"]) == (loc, type_)
+
+
+class _Cat(BaseModel):
+    kind: Literal["cat"]
+    lives: int
+
+
+class _Dog(BaseModel):
+    kind: Literal["dog"]
+    bark: str
+
+
+class _Owner(BaseModel):
+    pets: list[Annotated[_Cat | _Dog, Field(discriminator="kind")]]
+    first: _Cat | _Dog = Field(default=None, discriminator="kind")  # type: ignore[assignment]
+    by_name: dict[str, Annotated[_Cat | _Dog, Field(discriminator="kind")]] = {}
+    either: int | str = 0
+
+
+def _locs(value: dict[str, Any]) -> list[list[str | int]]:
+    try:
+        _Owner.model_validate(value)
+    except ValidationError as exc:
+        return [errors.field_loc(_Owner, e["loc"]) for e in exc.errors()]
+    raise AssertionError("valid")
+
+
+def test_field_loc_drops_the_tags_of_discriminated_unions() -> None:
+    assert _locs({"pets": [{"kind": "dog", "bark": "woof"}, {"kind": "cat", "lives": "x"}]}) == [
+        ["pets", 1, "lives"]
+    ]
+    assert _locs({"pets": [], "by_name": {"rex": {"kind": "dog"}}}) == [["by_name", "rex", "bark"]]
+    assert _locs({"pets": [], "first": {"kind": "cat"}}) == [["first", "lives"]]
+
+
+def test_field_loc_keeps_what_it_cannot_follow() -> None:
+    # A plain union: pydantic names each member it tried; those are kept as they are.
+    locs = _locs({"pets": [], "either": [1]})
+    assert ["either", "int"] in locs
+    assert errors.field_loc(_Owner, ["nope", 3]) == ["nope", 3]

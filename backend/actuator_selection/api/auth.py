@@ -83,6 +83,10 @@ def authorize(principal: ApiKeyRecord | None, *roles: str) -> ApiKeyRecord:
     return principal
 
 
+ROLES_ATTRIBUTE = "__api_key_roles__"
+"""Set on each :func:`require_role` dependency: the roles it admits (read by ``api/openapi.py``)."""
+
+
 def require_role(*roles: str) -> Callable[..., ApiKeyRecord]:
     """A dependency admitting only keys of one of ``roles`` (401 without a key, 403 otherwise)."""
 
@@ -90,6 +94,7 @@ def require_role(*roles: str) -> Callable[..., ApiKeyRecord]:
         return authorize(principal, *roles)
 
     dependency.__name__ = f"require_{'_or_'.join(roles)}"
+    setattr(dependency, ROLES_ATTRIBUTE, roles)
     return dependency
 
 

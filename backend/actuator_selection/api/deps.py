@@ -29,6 +29,11 @@ def reads_only(endpoint: Endpoint) -> Endpoint:
     return endpoint
 
 
+def is_reads_only(endpoint: object) -> bool:
+    """True when ``endpoint`` is marked :func:`reads_only`."""
+    return bool(getattr(endpoint, _READS_ONLY, False))
+
+
 def _writes(request: Request) -> bool:
     endpoint = request.scope.get("endpoint")
     return request.method not in SAFE_METHODS and not getattr(endpoint, _READS_ONLY, False)

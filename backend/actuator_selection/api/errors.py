@@ -22,13 +22,16 @@ keep-alive connection, failing the client's next request too.
 from __future__ import annotations
 
 import logging
-from collections.abc import Mapping
-from typing import Any, Self
+from collections.abc import Mapping, Sequence
+from types import UnionType
+from typing import Annotated, Any, Literal, Self, Union, get_args, get_origin
 from urllib.parse import parse_qsl
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
+from pydantic import BaseModel, Discriminator, Tag
+from pydantic.fields import FieldInfo
 from sqlalchemy.exc import IntegrityError, OperationalError
 from sqlalchemy.exc import TimeoutError as PoolTimeoutError
 from starlette.exceptions import HTTPException as StarletteHTTPException
@@ -118,11 +121,114 @@ def _api_error(_: Request, exc: Exception) -> JSONResponse:
     return error_response(exc.status_code, exc.errors, exc.headers or None)
 
 
-def _validation(_: Request, exc: Exception) -> JSONResponse:
+def _members(annotation: Any) -> tuple[Any, list[Any]]:
+    """``annotation`` without ``Annotated``, and the metadata that wrapped it."""
+    metadata: list[Any] = []
+    while get_origin(annotation) is Annotated:
+        annotation, *extra = get_args(annotation)
+        metadata.extend(extra)
+    return annotation, metadata
+
+
+def _union_tags(members: tuple[Any, ...], discriminator: object) -> dict[str, Any]:
+    """The tags pydantic puts into ``loc`` for a discriminated union, with their member:
+    ``Tag(...)`` metadata, else the ``Literal`` values of a named discriminator field."""
+    tags: dict[str, Any] = {}
+    for member in members:
+        bare, metadata = _members(member)
+        for item in metadata:
+            if isinstance(item, Tag):
+                tags[item.tag] = bare
+        if (
+            isinstance(discriminator, str)
+            and isinstance(bare, type)
+            and issubclass(bare, BaseModel)
+        ):
+            field = bare.model_fields.get(discriminator)
+            literal, _ = _members(field.annotation) if field is not None else (None, [])
+            if get_origin(literal) is Literal:
+                tags.update({str(value): bare for value in get_args(literal)})
+    return tags
+
+
+def field_loc(
+    annotation: Any, loc: Sequence[str | int], discriminator: object = None
+) -> list[str | int]:
+    """``loc`` (below a value of type ``annotation``) without the tags that pydantic inserts
+    for tagged and discriminated unions: ``["load", "direct", "torque_nm"]`` becomes
+    ``["load", "torque_nm"]``, since ``direct`` names no field of the body.
+
+    Walks models (by field name or alias), lists and dicts along ``loc``; where the type
+    cannot be followed, the rest of ``loc`` is kept as it is.
+    """
+    out: list[str | int] = []
+    i = 0
+    while i < len(loc):
+        annotation, metadata = _members(annotation)
+        for item in metadata:  # Discriminator(...) or Field(discriminator=...)
+            if isinstance(item, Discriminator | FieldInfo) and item.discriminator is not None:
+                discriminator = item.discriminator
+        origin = get_origin(annotation)
+        if origin in (Union, UnionType):
+            members = tuple(m for m in get_args(annotation) if m is not type(None))
+            if len(members) == 1:
+                annotation = members[0]
+                continue
+            tags = _union_tags(members, discriminator)
+            tag = loc[i]
+            if not isinstance(tag, str) or tag not in tags:
+                break
+            annotation, discriminator, i = tags[tag], None, i + 1
+            continue
+        discriminator = None
+        key = loc[i]
+        if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+            fields = annotation.model_fields
+            field = fields.get(str(key)) or next(
+                (f for f in fields.values() if f.alias == key), None
+            )
+            if field is None:
+                break
+            annotation = field.annotation
+            discriminator = field.discriminator
+            if discriminator is None:
+                found = (m for m in field.metadata if isinstance(m, Discriminator))
+                discriminator = next((m.discriminator for m in found), None)
+        elif origin in (list, tuple, set, frozenset) and get_args(annotation):
+            annotation = get_args(annotation)[0]
+        elif origin is dict and len(get_args(annotation)) == 2:
+            annotation = get_args(annotation)[1]
+        else:
+            break
+        out.append(key)
+        i += 1
+    return [*out, *loc[i:]]
+
+
+def _body_loc(request: Request, loc: Sequence[str | int]) -> list[str | int]:
+    """``loc`` of a body error as the body's fields alone (see :func:`field_loc`)."""
+    route = request.scope.get("route")
+    dependant = getattr(route, "dependant", None)
+    params = getattr(dependant, "body_params", None) or []
+    if not loc or loc[0] != "body" or len(params) != 1:
+        return [*loc]
+    (param,) = params
+    if getattr(param.field_info, "embed", False):
+        if len(loc) < 2 or loc[1] != param.alias:
+            return [*loc]
+        return ["body", loc[1], *field_loc(param.field_info.annotation, loc[2:])]
+    return ["body", *field_loc(param.field_info.annotation, loc[1:])]
+
+
+def _validation(request: Request, exc: Exception) -> JSONResponse:
     # Rebuilt rather than passed through: pydantic's entries echo the input, and an
-    # input of NaN or ±Infinity cannot be written as JSON.
+    # input of NaN or ±Infinity cannot be written as JSON. Body locations lose the union
+    # tags pydantic inserts (``loc`` names body fields only).
     assert isinstance(exc, RequestValidationError)
-    detail = [field_error([*e["loc"]], str(e["msg"]), str(e["type"])) for e in exc.errors()]
+    detail = [
+        field_error(_body_loc(request, e["loc"]), str(e["msg"]), str(e["type"]))
+        for e in exc.errors()
+    ]
     return error_response(422, detail)
 
 

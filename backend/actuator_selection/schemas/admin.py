@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from pydantic import Field
+from pydantic import ConfigDict, Field
 
 from actuator_selection.core.catalogue_files import OPTION_COLUMNS, mark
 from actuator_selection.core.changes import CatalogueChanges
@@ -69,6 +69,20 @@ class ZonePointIn(StrictModel):
 
 class ZoneIn(StrictModel):
     """A whole zone edge (Fig. 517.1): at least two points, one of them at 0 rpm."""
+
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [
+                {
+                    "points": [
+                        {"speed_rpm": 0, "torque_nm": 60},
+                        {"speed_rpm": 90, "torque_nm": 40},
+                    ],
+                    "source": "read from Fig. 517.1",
+                }
+            ]
+        }
+    )
 
     # As the free-text source column of zone_points.csv, which it is stored in.
     line_break_fields = frozenset({"source"})

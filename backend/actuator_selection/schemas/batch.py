@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from pydantic import Field, field_validator
+from pydantic import ConfigDict, Field, field_validator
 
 from actuator_selection.core.cycle import Load
 from actuator_selection.core.selection import Candidate, Check, Selection, Status, Verdict
@@ -22,6 +22,7 @@ from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.controllers import DriveOptionOut
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
+    WORKED_EXAMPLE,
     CandidateFigures,
     ResolvedLoad,
     SelectionRequest,
@@ -45,6 +46,36 @@ JSON and ~0.14 s a case on the starter catalogue), all written in one transactio
 
 class BatchSelectionRequest(StrictModel):
     """Many load cases sized against the catalogue in one request."""
+
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [
+                {
+                    "cases": [
+                        WORKED_EXAMPLE,
+                        {
+                            "load": {
+                                "type": "ball_screw",
+                                "speed_rpm": 60,
+                                "mass_kg": 200,
+                                "lead_m": 0.01,
+                                "friction_coefficient": 0.1,
+                                "efficiency": 0.9,
+                            },
+                            "cycle": {
+                                "accel_s": 0.2,
+                                "constant_s": 0.5,
+                                "decel_s": 0.2,
+                                "pause_s": 0.5,
+                            },
+                        },
+                    ],
+                    "top": 3,
+                    "include_checks": False,
+                }
+            ]
+        }
+    )
 
     cases: list[SelectionRequest] = Field(
         min_length=1,

@@ -118,6 +118,22 @@ class QuoteCreate(StrictModel):
     ``notes`` may span lines (tab, LF, CR); every other text is one line.
     """
 
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [
+                {
+                    "selection_id": "0b6f1c1e-8d4a-4f0e-9a57-2f1e0c3d5b7a",
+                    "customer": {"name": "Example Maschinenbau GmbH", "reference": "RFQ 2026-117"},
+                    "actuator": {"model": "FHA-25C-50-L", "quantity": 2},
+                    "price_list": "EXAMPLE — not real prices",
+                    "discount_percent": "5",
+                    "valid_until": "2026-12-31",
+                    "notes": "delivery 6 weeks after order",
+                }
+            ]
+        }
+    )
+
     line_break_fields = frozenset({"notes"})
 
     selection_id: Annotated[str, Field(min_length=1, max_length=36)]
@@ -141,6 +157,8 @@ class QuoteCreate(StrictModel):
 
 class QuoteStatusIn(StrictModel):
     """A status change: ``sent``, ``accepted`` or ``rejected`` (``expired`` happens by date)."""
+
+    model_config = ConfigDict(json_schema_extra={"examples": [{"status": "sent"}]})
 
     status: Literal["sent", "accepted", "rejected"]
 

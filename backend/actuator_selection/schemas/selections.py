@@ -8,7 +8,7 @@ from __future__ import annotations
 from datetime import datetime
 from typing import Annotated, Any, Literal
 
-from pydantic import Discriminator, Field, Tag
+from pydantic import ConfigDict, Discriminator, Field, Tag
 
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.drive import DriveOptions
@@ -168,8 +168,17 @@ class CycleIn(StrictModel):
 ModelName = Annotated[str, Field(min_length=1, max_length=60)]
 
 
+WORKED_EXAMPLE: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+}
+"""The chapter's worked example (Table 516.1): the example request of the API documents."""
+
+
 class SelectionRequest(StrictModel):
     """A load case to size; ``models`` restricts the catalogue to those listed."""
+
+    model_config = ConfigDict(json_schema_extra={"examples": [WORKED_EXAMPLE]})
 
     load: LoadIn
     cycle: CycleIn

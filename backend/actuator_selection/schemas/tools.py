@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field, field_validator
+from pydantic import ConfigDict, Field, field_validator
 
 from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.schemas.common import MAX_SPEED_RPM, ResponseModel, StrictModel
@@ -31,6 +31,20 @@ _SENSOR_NAMES = {
 
 class ControllerVoltageRequest(StrictModel):
     """Eq. 521.2 for a catalogue ``model`` or for explicit constants (these override)."""
+
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [
+                {
+                    "output_speed_rpm": 40,
+                    "gear_ratio": 50,
+                    "voltage_constant_v_per_krpm": 25,
+                    "max_current_a": 8.3,
+                    "resistance_ohm": 1.2,
+                }
+            ]
+        }
+    )
 
     model: str | None = Field(default=None, max_length=60)
     output_speed_rpm: float = Field(ge=0, le=MAX_SPEED_RPM, description="n_OUT [rpm]")
@@ -80,6 +94,12 @@ class ControllerVoltageOut(ResponseModel):
 class SensorTemperatureRequest(StrictModel):
     """A winding-sensor resistance, optionally judged against a family's limits."""
 
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [{"sensor": "kty84_130", "resistance_ohm": 1000, "family": "FHA-C"}]
+        }
+    )
+
     # Not strict: JSON gives the sensor's name as text, never an enum member.
     sensor: TemperatureSensor = Field(strict=False, description="'KTY84-130' or 'PTC'")
     resistance_ohm: float = Field(gt=0, le=1e6, description="measured resistance [Ω]")
@@ -128,6 +148,14 @@ class SensorTemperatureOut(ResponseModel):
 class OverloadDurationRequest(StrictModel):
     """Time to shutdown at an overload (first-order thermal model standing in for Fig. 520.1)."""
 
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [
+                {"overload_factor": 2, "thermal_time_constant_s": 1200, "preload_factor": 0.5}
+            ]
+        }
+    )
+
     overload_factor: float = Field(gt=0, le=MAX_OVERLOAD_FACTOR, description="k = I / I_s")
     thermal_time_constant_s: float | None = Field(
         default=None, gt=0, le=MAX_TIME_CONSTANT_S, description="τ_th [s]; else the catalogue's"
@@ -170,6 +198,21 @@ class OverloadDurationOut(ResponseModel):
 
 class OutputTorqueRequest(StrictModel):
     """Eq. 522.2/522.3 for a catalogue ``model`` or explicit constants (these override)."""
+
+    model_config = ConfigDict(
+        json_schema_extra={
+            "examples": [
+                {
+                    "current_a": 3,
+                    "speed_rpm": 40,
+                    "temperature_c": 30,
+                    "torque_constant_nm_per_a": 33,
+                    "no_load_starting_current_a": 0.3,
+                    "no_load_current_constant_30c_a_per_rpm": 0.002,
+                }
+            ]
+        }
+    )
 
     current_a: float = Field(ge=0, le=MAX_CURRENT_A, description="measured fundamental I [A]")
     speed_rpm: float = Field(
