@@ -1,7 +1,6 @@
-"""A Python client generated from the OpenAPI document (openapi-python-client) talks to the app.
-
-Skipped where the generator, or what its clients import (attrs, python-dateutil), is not
-installed; ``tests/api/test_openapi.py`` checks the document itself everywhere.
+"""A Python client generated from the OpenAPI document (openapi-python-client, pinned in
+requirements.lock with what its clients import: attrs, python-dateutil) talks to the app;
+``tests/api/test_openapi.py`` checks the document itself.
 """
 
 from __future__ import annotations
@@ -22,10 +21,6 @@ from actuator_selection.config import Settings
 from actuator_selection.main import create_app
 
 __all__ = ["api", "sales_api_with"]  # fixtures
-
-pytest.importorskip("openapi_python_client")
-pytest.importorskip("attrs")
-pytest.importorskip("dateutil")
 
 PACKAGE = "generated_actuator_client"
 
