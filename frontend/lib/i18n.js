@@ -47,6 +47,7 @@ const TEXTS = {
 
     "options.legend": "Optionen",
     "options.high_dynamics": "Hochdynamischer Einsatzfall: J_L ≤ 3·J_A ist bindend (Tabelle 515.1, Fußnote 1)",
+    "options.brake": "Mit Haltebremse: Haltemoment ≥ T_L im Stillstand",
     "options.models": "Nur diese Antriebe (optional)",
     "options.models.hint": "Modellnamen durch Komma getrennt, z. B. FHA-25C-50-L, CHA-25A-50",
 
@@ -154,12 +155,14 @@ const TEXTS = {
     "check.peak_torque": "Beschleunigungsmoment T_1 ≤ T_max",
     "check.decel_torque": "Bremsmoment |T_3| ≤ T_max",
     "check.continuous_duty": "Dauerbetrieb (n_av, T_rms) im Dauerbetriebsbereich",
+    "check.brake_holding": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
     "check.short.peak_torque": "T_1 ≤ T_max",
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "Dauerbetrieb",
+    "check.short.brake_holding": "Haltebremse",
 
     "check.finding.against": "{value}, Grenze {limit}",
     "check.finding.missing": "nicht im Katalog: {what}",
@@ -343,6 +346,7 @@ const TEXTS = {
 
     "options.legend": "Options",
     "options.high_dynamics": "Highly dynamic application: J_L ≤ 3·J_A is binding (Table 515.1, footnote 1)",
+    "options.brake": "With holding brake: holding torque ≥ T_L at standstill",
     "options.models": "Only these actuators (optional)",
     "options.models.hint": "model names separated by commas, e.g. FHA-25C-50-L, CHA-25A-50",
 
@@ -450,12 +454,14 @@ const TEXTS = {
     "check.peak_torque": "Acceleration torque T_1 ≤ T_max",
     "check.decel_torque": "Deceleration torque |T_3| ≤ T_max",
     "check.continuous_duty": "Continuous duty (n_av, T_rms) in the continuous-duty zone",
+    "check.brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
     "check.short.peak_torque": "T_1 ≤ T_max",
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "continuous duty",
+    "check.short.brake_holding": "holding brake",
 
     "check.finding.against": "{value}, limit {limit}",
     "check.finding.missing": "not in the catalogue: {what}",

@@ -439,3 +439,39 @@ def test_continuous_operation_without_a_published_speed_is_not_confirmed(
     assert check["status"] == "no_data"
     assert "continuous or rated speed" in check["missing"]
     assert candidate["verdict"] != "suitable"
+
+
+def test_a_brake_adds_its_holding_check(client: TestClient) -> None:
+    """CHA-25A-50's brake holds 90 Nm (CHA tables, catalogue row); FHA-25C-50-L publishes
+    no brake data. Without ``brake`` the check is not made."""
+    body = {**WORKED_EXAMPLE, "models": ["CHA-25A-50", "FHA-25C-50-L"], "brake": True}
+    selection = post(client, body).json()
+    assert selection["brake"] is True
+    assert selection["check_rules"][-1]["name"] == "brake_holding"
+    brakes = {
+        c["model"]: next(k for k in c["checks"] if k["name"] == "brake_holding")
+        for c in selection["candidates"]
+    }
+    assert brakes["CHA-25A-50"] == {"name": "brake_holding", "status": "pass", "value": 5.0,
+                                    "limit": 90.0}  # fmt: skip
+    assert brakes["FHA-25C-50-L"]["status"] == "no_data"
+    detail = client.get(f"/api/v1/selections/{selection['id']}/candidates/CHA-25A-50").json()
+    (full,) = [c for c in detail["checks"] if c["name"] == "brake_holding"]
+    assert full["message"] == (
+        "load torque at standstill T_L = 5 Nm ≤ the brake's holding torque = 90 Nm"
+    )
+    without = post(client, {**body, "brake": False}).json()
+    assert all(c["name"] != "brake_holding" for c in without["check_rules"])
+
+
+def test_batch_cases_with_and_without_a_brake(client: TestClient) -> None:
+    cases = [{**WORKED_EXAMPLE, "models": None, "brake": brake} for brake in (True, False, True)]
+    response = client.post("/api/v1/selections/batch", json={"cases": cases, "top": 2})
+    assert response.status_code == 200, response.text
+    for case, result in zip(cases, response.json()["results"], strict=True):
+        names = [c["name"] for c in result["candidates"][0]["checks"]]
+        assert ("brake_holding" in names) is case["brake"]
+        single = post(client, case).json()
+        assert [c["model"] for c in result["candidates"]] == [
+            c["model"] for c in single["candidates"][:2]
+        ]

@@ -615,3 +615,20 @@ def test_floors_without_j_a_match_the_scalar_flowchart() -> None:
     assert (statuses == STATUS_BY_CODE.index(Status.FAIL)).any()  # floors do fail here
     assert_matches_scalar(actuators, apps)
     assert_selects_like_scalar(actuators, apps, top=3)
+
+
+def test_brake_checks_match_the_scalar_flowchart() -> None:
+    """Cases with a brake: the brake's check in both flowcharts, equal cell by cell; cases
+    with and without a brake are not mixed in one run."""
+    rng = random.Random(23)
+    actuators = [
+        dataclasses.replace(random_actuator(rng, k), brake_holding_torque_nm=h)
+        for k, h in enumerate([None, 10.0, 50.0, 200.0, None, 80.0, 5.0, 400.0])
+    ]
+    apps = [dataclasses.replace(random_case(rng, actuators), brake=True) for _ in range(120)]
+    assert evaluate_batch(actuators, apps).check_names[-1] == "brake_holding"
+    assert_matches_scalar(actuators, apps, rules=apps[0].rules)
+    assert_selects_like_scalar(actuators, apps, top=3, rules=apps[0].rules)
+    mixed = [apps[0], dataclasses.replace(apps[1], brake=False)]
+    with pytest.raises(InvalidInputError):
+        select_batch(actuators, mixed)

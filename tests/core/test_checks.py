@@ -103,6 +103,7 @@ def test_operands_name_each_value() -> None:
         zone=zone((0, 40), (100, 30)),
         continuous_speed_rpm=16,
         rated_speed_rpm=17,
+        brake_holding_torque_nm=18,
     )
     app = Application(
         pattern=SpeedPattern(speed_rpm=21, accel_s=1, constant_s=1, decel_s=1, pause_s=1),
@@ -135,6 +136,8 @@ def test_operands_name_each_value() -> None:
         "rms_torque_floor_nm": 43,
         "continuous_speed_rpm": 16,
         "rated_speed_rpm": 17,
+        "load_torque_nm": 5,
+        "brake_holding_torque_nm": 18,
     }
     bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0, floors)
     unpublished = [
@@ -153,6 +156,7 @@ def test_operands_name_each_value() -> None:
         "zone_max_speed_rpm",
         "continuous_speed_rpm",
         "rated_speed_rpm",
+        "brake_holding_torque_nm",
     ]
     assert bare.has_zone is False
     beyond = operands(actuator, app, torques, 101.0, floors)

@@ -243,3 +243,21 @@ def test_floors_need_every_other_value() -> None:
     bare = dataclasses.replace(NO_J_A, max_torque_nm=None)
     assert _check(bare, "peak_torque").status is Status.NO_DATA
     assert _check(bare, "peak_torque").missing == "moment of inertia J_A"
+
+
+def test_brake_holds_the_load_torque_at_standstill() -> None:
+    """CHA-25A-50's brake holds 90 Nm (CHA tables): T_L = 5 Nm passes, 95 Nm fails; the
+    check is made only for an actuator fitted with the brake."""
+    braked = dataclasses.replace(FHA, brake_holding_torque_nm=90.0)
+    with_brake = dataclasses.replace(EXAMPLE, brake=True)
+    check = evaluate(braked, with_brake).checks[-1]
+    assert check.name == "brake_holding"
+    assert (check.status, check.value, check.limit) == (Status.PASS, 5.0, 90.0)
+    assert check.utilisation == 5.0 / 90.0
+    heavy = dataclasses.replace(with_brake, load=Load(torque_nm=95, inertia_kgm2=1.3))
+    failed = evaluate(braked, heavy).checks[-1]
+    assert (failed.status, failed.value) == (Status.FAIL, 95.0)
+    assert "exceeds the brake's holding torque = 90 Nm" in failed.message
+    assert [c.name for c in evaluate(braked, EXAMPLE).checks][-1] == "continuous_duty"
+    unpublished = evaluate(FHA, with_brake).checks[-1]
+    assert (unpublished.status, unpublished.missing) == (Status.NO_DATA, "brake holding torque")

@@ -870,3 +870,20 @@ def test_layout_fits_and_screenshots(
         view.locator(".ranking-card").screenshot(path=str(screenshot_dir / f"ranking-{width}.png"))
     finally:
         context.close()
+
+
+def test_a_brake_is_checked_when_the_box_is_ticked(page: Page) -> None:
+    """The brake option sends ``brake``; CHA-25A-50's brake (90 Nm) holds T_L = 5 Nm."""
+    page.goto("/")
+    fill_worked_example(page)
+    page.locator("#f-models").fill("CHA-25A-50")
+    page.locator("#f-brake").check()
+    status, body = post_selection(page)
+    assert status == 201
+    assert body["brake"] is True
+    choose(page, "CHA-25A-50")
+    brake = page.locator('#checks-table tr[data-check="brake_holding"]')
+    expect(brake).to_have_count(1)
+    expect(brake).to_contain_text("90")
+    page.wait_for_selector('#detail[data-detail="ready"]')
+    expect(brake).to_contain_text("holding torque = 90 Nm")

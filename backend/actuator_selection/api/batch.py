@@ -33,7 +33,7 @@ from actuator_selection.schemas.batch import (
     result_body,
 )
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
-from actuator_selection.schemas.selections import RANKING_RULE
+from actuator_selection.schemas.selections import RANKING_RULE, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
 from actuator_selection.services.selections import size_selection, store_selections
 
@@ -231,6 +231,30 @@ STREAM_CASES = 500
 number of cases (20,000 cases peaked at 622 MB when the answer was built whole)."""
 
 
+def _select(
+    actuators: list[Actuator],
+    apps: list[Application],
+    cases: list[SelectionRequest],
+    top: int,
+) -> list[Selection]:
+    """``select_batch`` for cases whose checks may differ (a brake adds one): each set of
+    checks run on its own cases, the selections back in the order of the cases."""
+    groups: dict[object, list[int]] = {}
+    for i, app in enumerate(apps):
+        groups.setdefault(app.rules, []).append(i)
+    out: list[Selection | None] = [None] * len(apps)
+    for indexes in groups.values():
+        chosen = select_batch(
+            actuators,
+            [apps[i] for i in indexes],
+            top=top,
+            models=[cases[i].models for i in indexes],
+        )
+        for i, selection in zip(indexes, chosen, strict=True):
+            out[i] = selection
+    return [s for s in out if s is not None]
+
+
 def _result_chunks(
     body: BatchSelectionRequest,
     actuators: list[Actuator],
@@ -246,9 +270,7 @@ def _result_chunks(
     for start in range(0, len(apps), STREAM_CASES):
         end = start + STREAM_CASES
         cases = body.cases[start:end]
-        selections = select_batch(
-            actuators, apps[start:end], top=body.top, models=[case.models for case in cases]
-        )
+        selections = _select(actuators, apps[start:end], cases, body.top)
         results = [
             pydantic_core.to_json(
                 result_body(

@@ -156,6 +156,7 @@ class _Catalogue:
     continuous: FloatArray
     continuous_speed: FloatArray
     rated_speed: FloatArray
+    brake_holding: FloatArray
     has_zone: BoolArray
     zone_max_speed: FloatArray
     zone_columns: IndexArray
@@ -186,6 +187,7 @@ def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
         continuous=_optional([a.continuous_torque_nm for a in actuators]),
         continuous_speed=_optional([a.continuous_speed_rpm for a in actuators]),
         rated_speed=_optional([a.rated_speed_rpm for a in actuators]),
+        brake_holding=_optional([a.brake_holding_torque_nm for a in actuators]),
         has_zone=has_zone,
         zone_max_speed=_optional([a.zone.max_speed_rpm if a.zone else None for a in actuators]),
         zone_columns=np.flatnonzero(has_zone),
@@ -473,6 +475,8 @@ def _evaluate_block(
         rms_torque_floor_nm=cases.rms_floor[:, col],
         continuous_speed_rpm=cat.continuous_speed,
         rated_speed_rpm=cat.rated_speed,
+        load_torque_nm=cases.load_torque[:, col],
+        brake_holding_torque_nm=cat.brake_holding,
     )
     results = [_status_codes(r, q, cases, shape, exact=exact, detail=detail) for r in rules]
     details = [d for _, _, d in results if d is not None]
@@ -552,7 +556,10 @@ class BatchEvaluation:
 
 
 def evaluate_batch(
-    actuators: Sequence[Actuator], apps: Sequence[Application], *, rules: Sequence[Rule] = RULES
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    rules: Sequence[Rule] | None = None,
 ) -> BatchEvaluation:
     """Run the flowchart for every case × actuator and keep every array.
 
@@ -568,6 +575,7 @@ def evaluate_batch(
     Memory grows with cases × actuators (about 40 bytes a cell); for ranking alone
     use :func:`select_batch`, which keeps only the best of each case.
     """
+    rules = _rules_of(apps, rules)
     cat = _catalogue(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
@@ -672,6 +680,19 @@ def _rank(
     return chosen
 
 
+def _rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequence[Rule]:
+    """``rules``, or the rules the cases need (:attr:`Application.rules`), one set for all."""
+    if rules is not None:
+        return rules
+    needed = {app.rules for app in apps}
+    if len(needed) > 1:
+        raise InvalidInputError(
+            "brake",
+            "cases with and without a brake need separate runs (their checks differ)",
+        )
+    return needed.pop() if needed else RULES
+
+
 def _check_arguments(
     apps: Sequence[Application], top: int, models: Sequence[Collection[str] | None] | None
 ) -> None:
@@ -687,7 +708,7 @@ def rank_batch(
     *,
     top: int = 3,
     models: Sequence[Collection[str] | None] | None = None,
-    rules: Sequence[Rule] = RULES,
+    rules: Sequence[Rule] | None = None,
 ) -> list[list[int]]:
     """Per case, the indexes into ``actuators`` of its best ``top``, best first.
 
@@ -695,6 +716,7 @@ def rank_batch(
     without building the candidates; arguments as for :func:`select_batch`.
     """
     _check_arguments(apps, top, models)
+    rules = _rules_of(apps, rules)
     cat = _catalogue(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
@@ -707,7 +729,7 @@ def select_batch(
     *,
     top: int = 3,
     models: Sequence[Collection[str] | None] | None = None,
-    rules: Sequence[Rule] = RULES,
+    rules: Sequence[Rule] | None = None,
 ) -> list[Selection]:
     """The best ``top`` candidates of every load case, ranked as :func:`select` ranks them.
 
@@ -732,6 +754,7 @@ def select_batch(
         arrays and for the candidates alike.
     """
     _check_arguments(apps, top, models)
+    rules = _rules_of(apps, rules)
     cat = _catalogue(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)

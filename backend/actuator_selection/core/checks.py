@@ -226,6 +226,10 @@ class Operands(NamedTuple):
     """Allowable continuous output speed [rpm] (FHA-C); NaN where not published."""
     rated_speed_rpm: Real
     """Rated output speed [rpm] (CHA: rated motor speed / i); NaN where not published."""
+    load_torque_nm: Real
+    """T_L [Nm]: the load torque, taken as acting at standstill for the brake."""
+    brake_holding_torque_nm: Real
+    """The holding brake's holding torque at the output [Nm]; NaN where not published."""
 
 
 def _where(condition: bool, if_true: float, if_false: float) -> float:
@@ -599,6 +603,32 @@ where neither speed is published the check lacks data. It never passes on n_max,
 peak speed (issue "The checks a sizing engineer signs", item 2).
 """
 
+# --- brake_holding: T_L ≤ the brake's holding torque (catalogue brake data) -----------------
+
+
+def _brake_message(q: Operands, status: Status, t_l: float, holding: float) -> str:
+    relation = "≤" if status is Status.PASS else "exceeds"
+    return (
+        f"load torque at standstill T_L = {t_l:.4g} Nm {relation} the brake's holding "
+        f"torque = {holding:.4g} Nm"
+    )
+
+
+BRAKE_HOLDING = Rule(
+    name="brake_holding",
+    reference="catalogue brake data (holding torque)",
+    unit="Nm",
+    value=lambda q, xp: q.load_torque_nm,
+    limit=lambda q, xp: q.brake_holding_torque_nm,
+    requires=(published("brake_holding_torque_nm", "brake holding torque"),),
+    message=_brake_message,
+)
+"""T_L ≤ the holding torque of the actuator's brake (CHA tables; FHA-C manual §4-2), for
+an actuator fitted with one (``Application.brake``). The chapter's T_L opposes motion
+and needs no holding at standstill when it is friction; taken as acting at standstill it
+covers a load that does (a weight, a spring, a process force), so the check is on the
+safe side."""
+
 RULES: tuple[Rule, ...] = (
     MAX_SPEED,
     INERTIA_RATIO,
@@ -607,3 +637,7 @@ RULES: tuple[Rule, ...] = (
     CONTINUOUS_DUTY,
 )
 """The flowchart's checks in the manufacturer's order (chapter p. 514–517)."""
+
+BRAKE_RULES: tuple[Rule, ...] = (*RULES, BRAKE_HOLDING)
+"""The checks of an actuator fitted with its holding brake: the flowchart's, then the
+brake's (:data:`BRAKE_HOLDING`)."""

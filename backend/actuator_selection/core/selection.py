@@ -40,6 +40,7 @@ from enum import StrEnum
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.checks import (
+    BRAKE_RULES,
     INERTIA_RATIO_LIMIT,
     RULES,
     Check,
@@ -91,6 +92,14 @@ class Application:
     pattern: SpeedPattern
     load: Load
     high_dynamics: bool = True
+    brake: bool = False
+    """Whether the actuator is fitted with its holding brake (checked by
+    :data:`~actuator_selection.core.checks.BRAKE_HOLDING`)."""
+
+    @property
+    def rules(self) -> tuple[Rule, ...]:
+        """The checks this application needs: the flowchart's, and the brake's if fitted."""
+        return BRAKE_RULES if self.brake else RULES
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -181,19 +190,26 @@ def operands(
         floors.rms_torque_nm,
         nan if actuator.continuous_speed_rpm is None else actuator.continuous_speed_rpm,
         nan if actuator.rated_speed_rpm is None else actuator.rated_speed_rpm,
+        app.load.torque_nm,
+        nan if actuator.brake_holding_torque_nm is None else actuator.brake_holding_torque_nm,
     )
 
 
-def evaluate(actuator: Actuator, app: Application, *, rules: Sequence[Rule] = RULES) -> Candidate:
-    """Run the flowchart's checks (``rules``, by default the chapter's) for one actuator."""
+def evaluate(
+    actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
+) -> Candidate:
+    """Run the flowchart's checks (``rules``, by default :attr:`Application.rules`: the
+    chapter's, and the brake's where fitted) for one actuator."""
     (candidate,) = evaluate_each((actuator,), app, rules=rules)
     return candidate
 
 
 def evaluate_each(
-    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] = RULES
+    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] | None = None
 ) -> list[Candidate]:
     """:func:`evaluate` for each of ``actuators`` in turn, n_av (Eq. 514.3) computed once."""
+    if rules is None:
+        rules = app.rules
     n_av: float | None = None
     floors: TorqueFloors | None = None
     candidates = []
@@ -245,7 +261,7 @@ def size_key(a: Actuator) -> tuple[float, float, str]:
 
 
 def select(
-    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] = RULES
+    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] | None = None
 ) -> Selection:
     """Run the flowchart for every actuator and rank the candidates (:func:`ranking_key`)."""
     candidates = sorted(evaluate_each(actuators, app, rules=rules), key=ranking_key)

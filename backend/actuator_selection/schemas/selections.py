@@ -185,6 +185,11 @@ class SelectionRequest(StrictModel):
     high_dynamics: bool = Field(
         default=True, description="J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise"
     )
+    brake: bool = Field(
+        default=False,
+        description="the actuator is fitted with its holding brake: its holding torque is "
+        "checked against T_L at standstill (check `brake_holding`)",
+    )
     models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
 
     def to_core(self) -> Application:
@@ -199,6 +204,7 @@ class SelectionRequest(StrictModel):
             ),
             load=self.load.to_core(),
             high_dynamics=self.high_dynamics,
+            brake=self.brake,
         )
 
 
@@ -363,6 +369,7 @@ class SelectionOut(ResponseModel):
     mechanism: dict[str, Any] | None = Field(description="the mechanism as sent, if any")
     cycle: CycleIn
     high_dynamics: bool
+    brake: bool = Field(default=False, description="whether a holding brake is fitted")
     models: list[str] | None = Field(
         default=None, description="the catalogue restriction as sent; null = whole catalogue"
     )

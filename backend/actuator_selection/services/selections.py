@@ -35,7 +35,7 @@ from actuator_selection.core.batch import (
     BatchEvaluation,
     evaluate_batch,
 )
-from actuator_selection.core.checks import RULES
+from actuator_selection.core.checks import Rule
 from actuator_selection.core.cycle import duty_cycle_percent, mean_speed_rpm
 from actuator_selection.core.drive import shared_voltage_check
 from actuator_selection.core.electrical import DcBusClass
@@ -53,10 +53,11 @@ from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContex
 
 JSON = dict[str, Any]
 
-CHECK_RULES: list[JSON] = [
-    {"name": rule.name, "reference": rule.reference, "unit": rule.unit} for rule in RULES
-]
-"""``check_rules`` of every answer: the flowchart's checks in their order."""
+
+def _check_rules(rules: Sequence[Rule]) -> list[JSON]:
+    """``check_rules`` of an answer: its checks in their order, with reference and unit."""
+    return [{"name": r.name, "reference": r.reference, "unit": r.unit} for r in rules]
+
 
 STORE_COMPRESSION = 1
 """gzip level of stored answers, compressed once for the row and for the answer to a
@@ -252,12 +253,13 @@ def size_selection(
         "mechanism": None if isinstance(body.load, DirectLoad) else request["load"],
         "cycle": request["cycle"],
         "high_dynamics": body.high_dynamics,
+        "brake": body.brake,
         "models": body.models,
         "cycle_time_s": pattern.cycle_s,
         "mean_speed_rpm": mean_speed_rpm(pattern),
         "duty_cycle_percent": duty_cycle_percent(pattern),
         "ranking": RANKING_RULE,
-        "check_rules": CHECK_RULES,
+        "check_rules": _check_rules(app.rules),
         "controllers": groups.refs(),
         "candidates": candidates,
     }

@@ -164,6 +164,7 @@ function readForm() {
       pause_s: readNumber("cycle.pause_s"),
     },
     high_dynamics: $("#f-hd").checked,
+    brake: $("#f-brake").checked,
   };
   const models = $("#f-models")
     .value.split(/[,;\s]+/)
@@ -195,6 +196,7 @@ function fillForm(sel) {
   setField("cycle.decel_s", sel.cycle.decel_s);
   setField("cycle.pause_s", sel.cycle.pause_s);
   $("#f-hd").checked = Boolean(sel.high_dynamics);
+  $("#f-brake").checked = Boolean(sel.brake);
   updateCycleSum();
 }
 
