@@ -133,10 +133,14 @@ def test_whole_catalogue_answer_is_its_schema_without_repetition(client: TestCli
 
 
 def _without_defaults(body: dict[str, Any]) -> dict[str, Any]:
-    """``body`` less the values the answer leaves at their default (ranking, models)."""
-    out = {k: v for k, v in body.items() if not (k == "models" and v is None)}
-    out.pop("ranking")
-    return out
+    """``body`` less the top-level values that equal SelectionOut's defaults (as
+    ``exclude_defaults`` leaves them out)."""
+    fields = SelectionOut.model_fields
+    return {
+        k: v
+        for k, v in body.items()
+        if not (k in fields and not fields[k].is_required() and fields[k].default == v)
+    }
 
 
 def test_candidate_detail_404s(client: TestClient) -> None:
