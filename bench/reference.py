@@ -2,9 +2,10 @@
 
 For every case × actuator: T_1, T_3, T_rms, n_av (Eq. 514.1–514.3), the five checks'
 pass/fail/no-data decisions, the verdicts, and the best ``top`` actuators of each case
-by the service's ranking (verdict, then T_max, J_A, model). Written the way one would
-write it by hand with numpy, with none of the service's rule table, exact-rounding
-care, JSON or HTTP: what the numbers alone cost on this machine.
+by the service's ranking (verdict, the nearest miss among the unsuitable, then T_max,
+J_A, model). It leaves out the lower bounds without J_A (every starter actuator has
+J_A). Written the way one would write it by hand with numpy, with none of the service's
+rule table, exact-rounding care, JSON or HTTP: what the numbers alone cost here.
 
 :func:`agreement` says how often its top actuators are the service's, so that the
 reference is known to compute the same thing.
@@ -53,6 +54,10 @@ def numpy_reference(
          for a in actuators]
     )  # fmt: skip
     zoned = np.asarray([a.zone is not None for a in actuators])[None, :]
+    speed_bound = _row(
+        [a.continuous_speed_rpm if a.continuous_speed_rpm is not None else a.rated_speed_rpm
+         for a in actuators]
+    )  # fmt: skip
 
     omega = n2 * (2 * math.pi / 60)
     j = ja + jl
@@ -76,29 +81,38 @@ def numpy_reference(
         no_ja,
         no_ja | no_t_max,
         no_ja | no_t_max,
-        no_ja | (~zoned & (np.isnan(t_0) | no_n_max)),
+        no_ja | (~zoned & (np.isnan(t_0) | np.isnan(speed_bound))),
     ]
+    values = [n2 + 0 * n_max, jl + 0 * ja, accel, -decel, rms]
+    limits = [n_max, 3 * ja, t_max, t_max, limit]
     exceeded = [
         n2 > n_max,
         (jl > 3 * ja) & dyn,
         accel > t_max,
         -decel > t_max,
-        ~((rms <= limit) & (zoned | (n_av <= n_max))),
+        ~((rms <= limit) & (zoned | (n_av <= speed_bound))),
     ]
     fails = np.zeros(rms.shape, dtype=bool)
     missing = np.zeros(rms.shape, dtype=bool)
-    for lacking, over in zip(no_data, exceeded, strict=True):
-        fails |= ~lacking & over
+    overload = np.zeros(rms.shape)
+    for lacking, over, value, bound in zip(no_data, exceeded, values, limits, strict=True):
+        failed = ~lacking & over
+        fails |= failed
         missing |= lacking
+        ratio = np.where(np.isnan(bound), np.inf, np.maximum(value / bound, 1.0))
+        overload = np.maximum(overload, np.where(failed, ratio, 0.0))
     verdict = np.where(fails, 2, np.where(missing, 1, 0))
 
-    order = np.lexsort(
+    size = np.lexsort(
         (np.nan_to_num(_row([a.inertia_kgm2 for a in actuators])[0], nan=np.inf),
          np.nan_to_num(t_max[0], nan=np.inf))
     )  # fmt: skip
-    ranked = verdict[:, order]
-    best = np.argsort(ranked, axis=1, kind="stable")[:, :top]
-    return order[best]
+    position = np.empty(len(actuators), dtype=np.intp)
+    position[size] = np.arange(len(actuators))
+    # verdict, then the nearest miss among the unsuitable, then the smallest actuator
+    ranked = np.lexsort((np.broadcast_to(position, verdict.shape), overload, verdict), axis=-1)
+    best: npt.NDArray[np.intp] = ranked[:, :top]
+    return best
 
 
 def agreement(
