@@ -92,10 +92,8 @@ class Check:
 
     @property
     def margin_percent(self) -> float | None:
-        """Headroom (limit − value)/limit [%]; negative when the limit is exceeded."""
-        if self.value is None or self.limit is None or self.limit <= 0:
-            return None
-        return (self.limit - self.value) / self.limit * 100.0
+        """Headroom (limit − value)/limit [%] (:func:`margin_percent`)."""
+        return margin_percent(self.value, self.limit)
 
     @property
     def utilisation(self) -> float | None:
@@ -108,6 +106,18 @@ class Check:
     def overload(self) -> float:
         """How far a failed check is over its limit (:func:`overload`); 0 unless failed."""
         return overload(self.status, self.value, self.limit)
+
+
+def margin_percent(value: float | None, limit: float | None) -> float | None:
+    """Headroom (limit − value)/limit [%]; negative when the limit is exceeded; None
+    without a value or a positive limit.
+
+    >>> margin_percent(40.0, 90.0) == (90.0 - 40.0) / 90.0 * 100.0
+    True
+    """
+    if value is None or limit is None or limit <= 0:
+        return None
+    return (limit - value) / limit * 100.0
 
 
 def overload(status: Status, value: float | None, limit: float | None) -> float:

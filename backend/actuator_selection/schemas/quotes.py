@@ -24,6 +24,7 @@ from pydantic import (
     model_validator,
 )
 
+from actuator_selection.core.checks import margin_percent
 from actuator_selection.core.money import MAX_QUANTITY, ROUNDING_RULE
 from actuator_selection.core.quote_status import (
     QuoteStatus,
@@ -305,9 +306,7 @@ class StoredCheck(_Stored):
     @property
     def margin_percent(self) -> float | None:
         """Headroom (limit − value)/limit [%], as the core computes it."""
-        if self.value is None or self.limit is None or self.limit <= 0:
-            return None
-        return (self.limit - self.value) / self.limit * 100.0
+        return margin_percent(self.value, self.limit)
 
     @property
     def summary(self) -> str:
