@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.compatibility import (
@@ -23,13 +24,17 @@ from actuator_selection.core.compatibility import (
 )
 from actuator_selection.core.electrical import (
     DcBusClass,
+    Modulation,
     OutputVoltageCheck,
     check_output_voltage,
     controller_output_voltage,
+    max_output_voltage_v,
 )
 from actuator_selection.core.selection import Check, Status
 
 VOLTAGE_REFERENCE = "Eq. 521.2"
+MODULATION = Modulation.SPACE_VECTOR
+"""The modulation :func:`check_output_voltage` assumes by default."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -103,8 +108,14 @@ def shared_voltage_check(
     interface: ActuatorInterface,
     shared: Sequence[DcBusClass],
     speed_rpm: float,
+    words: bool = True,
 ) -> Check:
-    """:func:`voltage_check` for a controller that shares the bus classes ``shared``."""
+    """:func:`voltage_check` for a controller that shares the bus classes ``shared``.
+
+    ``words=False`` leaves the message empty (and U_OUT at n_max, which only the message
+    reports uncomputed), for answers that list the numbers alone; status, value, limit
+    and reference are the same either way.
+    """
     k_e = actuator.motor_voltage_constant_v_per_krpm
     i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
     if k_e is None or i_max is None or r_line is None:
@@ -126,27 +137,40 @@ def shared_voltage_check(
         ).total_v
 
     u_load = required(speed_rpm)
-    best: OutputVoltageCheck = max(
-        (check_output_voltage(required_voltage_v=u_load, bus=b) for b in shared),
-        key=lambda c: c.available_voltage_v,
-    )
-    message = best.message + f" at n_2 = {speed_rpm:.4g} rpm"
-    if actuator.max_speed_rpm is not None:
-        u_max = required(actuator.max_speed_rpm)
-        reach = "reaches" if u_max <= best.available_voltage_v else "does not reach"
-        message += (
-            f"; at n_max = {actuator.max_speed_rpm:.4g} rpm U_OUT = {u_max:.4g} V_rms, "
-            f"so this bus {reach} n_max"
-        )
+    bus = _best_bus(tuple(shared))
+    available = _available_v(bus)
+    message = ""
+    if words:
+        best: OutputVoltageCheck = check_output_voltage(required_voltage_v=u_load, bus=bus)
+        message = best.message + f" at n_2 = {speed_rpm:.4g} rpm"
+        if actuator.max_speed_rpm is not None:
+            u_max = required(actuator.max_speed_rpm)
+            reach = "reaches" if u_max <= available else "does not reach"
+            message += (
+                f"; at n_max = {actuator.max_speed_rpm:.4g} rpm U_OUT = {u_max:.4g} V_rms, "
+                f"so this bus {reach} n_max"
+            )
     return Check(
         name="controller_voltage",
-        status=Status.PASS if best.sufficient else Status.FAIL,
+        status=Status.PASS if u_load <= available else Status.FAIL,
         value=u_load,
-        limit=best.available_voltage_v,
+        limit=available,
         unit="V",
-        reference=f"{VOLTAGE_REFERENCE} ({best.bus_class.value} bus)",
+        reference=f"{VOLTAGE_REFERENCE} ({bus.bus_class.value} bus)",
         message=message,
     )
+
+
+def _available_v(bus: DcBusClass) -> float:
+    """The largest output voltage a bus class delivers (:func:`check_output_voltage`'s)."""
+    return max_output_voltage_v(dc_bus_voltage_v=bus.nominal_voltage_v, modulation=MODULATION)
+
+
+@lru_cache(maxsize=256)
+def _best_bus(shared: tuple[DcBusClass, ...]) -> DcBusClass:
+    """The bus class of ``shared`` that gives the largest output voltage (the first of
+    equals, as ``max`` picks)."""
+    return max(shared, key=_available_v)
 
 
 def drive_options(

@@ -138,7 +138,11 @@ class _DriveOptionGroups:
             voltage = voltages.get(g.shared)
             if voltage is None:
                 v = shared_voltage_check(
-                    actuator=actuator, interface=interface, shared=g.shared, speed_rpm=speed_rpm
+                    actuator=actuator,
+                    interface=interface,
+                    shared=g.shared,
+                    speed_rpm=speed_rpm,
+                    words=False,
                 )
                 voltage = voltages[g.shared] = {
                     "status": v.status.value,
