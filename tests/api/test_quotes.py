@@ -435,3 +435,13 @@ _ACTUATOR_COLUMNS = {
 def test_unknown_quote_is_404(api: SalesApi) -> None:
     assert api.get("/api/v1/quotes/Q-1999-00001").status_code == 404
     assert api.get("/api/v1/quotes/Q-1999-00001/document").status_code == 404
+
+
+def test_document_lists_the_brake_check_of_a_braked_selection(api: SalesApi) -> None:
+    """A selection with ``brake``: the quote document lists the brake's check, titled, with
+    the no-data reason for FHA-25C-50-L (no brake data published for that row)."""
+    braked = str(api.selection(models=["FHA-25C-50-L"], brake=True)["id"])
+    quote = create(api, api.quote_body(braked)).json()
+    html = api.get(f"/api/v1/quotes/{quote['number']}/document").text
+    assert "<tr data-check='brake_holding'><td>Holding brake: T_L at standstill" in html
+    assert "the catalogue gives no brake holding torque for this actuator" in html

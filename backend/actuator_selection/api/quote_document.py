@@ -52,6 +52,7 @@ CHECK_TITLES = {
     "peak_torque": "Acceleration torque T₁ ≤ T_max",
     "decel_torque": "Deceleration torque |T₃| ≤ T_max",
     "continuous_duty": "Continuous duty (n_av, T_rms) in zone",
+    "brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
 }
 GRID = "#e4e6ea"
 STATUS_TEXT = {"pass": "pass", "fail": "FAIL", "warn": "warning", "no_data": "no data"}
