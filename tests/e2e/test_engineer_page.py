@@ -333,6 +333,8 @@ def test_rotary_table_shows_the_converted_load(page: Page) -> None:
     assert float(inertia.get_attribute("data-value") or "nan") == pytest.approx(expected_inertia)
     assert shown(torque.inner_text()) == pytest.approx(expected_torque, rel=1e-3)
     assert shown(inertia.inner_text()) == pytest.approx(expected_inertia, rel=1e-3)
+    box = page.locator("#mech-rotary_table .resolved-values")
+    assert "null" not in box.inner_text()  # issue 13: "null" after J_L
     expect(torque).to_have_text("1.472\u202fNm")
     expect(inertia).to_have_text("1\u202fkgm²")
     assert shown(page.locator("#sum-torque .value").inner_text()) == pytest.approx(

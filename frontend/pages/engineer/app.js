@@ -243,7 +243,8 @@ function updateResolved() {
       item("T_L", sel.load.torque_nm, "Nm", `resolved-${fs.dataset.kind}-torque`),
       " ",
       item("J_L", sel.load.inertia_kgm2, "kgm²", `resolved-${fs.dataset.kind}-inertia`),
-      state.stale ? h("span", { class: "muted" }, ` ${t("resolved.stale")}`) : null,
+      // DOM append writes null as the text "null": an empty string adds nothing
+      state.stale ? h("span", { class: "muted" }, ` ${t("resolved.stale")}`) : "",
     );
   }
 }
