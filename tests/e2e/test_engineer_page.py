@@ -874,6 +874,17 @@ def test_layout_fits_and_screenshots(
         context.close()
 
 
+def test_the_quotes_link_carries_the_selection_and_the_actuator(page: Page) -> None:
+    page.goto("/")
+    fill_worked_example(page)
+    status, body = post_selection(page)
+    assert status == 201
+    choose(page, FHA)
+    expect(page.locator(".sales-link")).to_have_attribute(
+        "href", f"/sales.html?selection={body['id']}&model={FHA}"
+    )
+
+
 def test_a_brake_is_checked_when_the_box_is_ticked(page: Page) -> None:
     """The brake option sends ``brake``; CHA-25A-50's brake (90 Nm) holds T_L = 5 Nm."""
     page.goto("/")

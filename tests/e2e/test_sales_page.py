@@ -452,3 +452,26 @@ def test_german_layout_fits_and_screenshots(
         page.screenshot(path=str(screenshot_dir / f"sales-de-{width}.png"), full_page=True)
     finally:
         context.close()
+
+
+def test_a_link_from_the_selection_page_opens_its_actuator(
+    sales_page: Page, site: SalesSite
+) -> None:
+    """Issue 13: the engineer page's link carries the selection and the chosen actuator, and
+    a permalink pasted into the selection field works (not only a bare id)."""
+    page = sales_page
+    chosen = "FHA-25C-50-L"  # unconfirmed: quotable, though not the first quotable one
+    selection = selection_id(site)
+    page.goto(f"/sales.html?selection={selection}&model={chosen}")
+    sign_in(page, site.sales_key)
+    expect(page.locator("#quote-form")).to_be_visible()
+    expect(page.locator("#f-model")).to_have_value(chosen)
+    first = page.locator("#f-model option").nth(1)
+    assert first.get_attribute("value") != chosen  # the preselection came from the link
+
+    page.goto("/sales.html")
+    page.fill("#selection-id", f"{site.url}/?selection={selection}&model={chosen}")
+    page.click("#selection-form button[type=submit]")
+    expect(page.locator("#quote-form")).to_be_visible()
+    expect(page.locator("#selection-id")).to_have_value(selection)
+    expect(page.locator("#f-model")).to_have_value(chosen)

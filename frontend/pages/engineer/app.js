@@ -352,6 +352,14 @@ function updateUrl() {
   window.history.replaceState({ selection: state.selection.id }, "", url);
   const input = $("#permalink");
   if (input) input.value = url;
+  // the quotes page opens on this selection and the chosen actuator: one click to a quote
+  const sales = $(".sales-link");
+  if (sales) {
+    const target = new URL("/sales.html", window.location.href);
+    target.searchParams.set("selection", state.selection.id);
+    if (state.chosen) target.searchParams.set("model", state.chosen);
+    sales.href = `${target.pathname}${target.search}`;
+  }
 }
 
 async function copyLink() {

@@ -259,10 +259,11 @@ function renderCandidates() {
   if (chosen) select.value = chosen;
 }
 
-function fillCandidates(selection) {
+function fillCandidates(selection, preferred = null) {
   byId("f-model").value = "";
   renderCandidates();
-  const first = selection.candidates.find(quotable);
+  const wanted = selection.candidates.find((c) => c.model === preferred && quotable(c));
+  const first = wanted ?? selection.candidates.find(quotable);
   if (first) byId("f-model").value = first.model;
   describeCandidate();
   return Boolean(first);
@@ -292,7 +293,22 @@ function describeCandidate() {
   }
 }
 
-async function loadSelection(id) {
+/**
+ * The selection id in what was typed or pasted: the id itself, or a link from the
+ * selection page (its ``selection`` parameter, and its ``model`` if it names one).
+ */
+function selectionReference(text) {
+  try {
+    const url = new URL(text);
+    const id = url.searchParams.get("selection");
+    if (id) return { id, model: url.searchParams.get("model") };
+  } catch {
+    // not a link: the id itself
+  }
+  return { id: text, model: null };
+}
+
+async function loadSelection(id, model = null) {
   clearErrors();
   byId("created").hidden = true;
   byId("selection-summary").hidden = true;
@@ -311,7 +327,7 @@ async function loadSelection(id) {
   url.searchParams.set("selection", selection.id);
   history.replaceState(null, "", url);
   byId("engineer-link").href = `/?selection=${encodeURIComponent(selection.id)}`;
-  const canQuote = fillCandidates(selection);
+  const canQuote = fillCandidates(selection, model);
   const box = byId("selection-summary");
   show(box, () => [
     h("h3", {}, t("sales.selection.heading", { id: selection.id })),
@@ -620,8 +636,11 @@ async function start() {
   byId("sign-out").addEventListener("click", () => signedOut(null));
   byId("selection-form").addEventListener("submit", (event) => {
     event.preventDefault();
-    const id = byId("selection-id").value.trim();
-    if (id) loadSelection(id);
+    const { id, model } = selectionReference(byId("selection-id").value.trim());
+    if (id) {
+      byId("selection-id").value = id;
+      loadSelection(id, model);
+    }
   });
   byId("f-model").addEventListener("change", describeCandidate);
   byId("f-price-list").addEventListener("change", priceListChanged);
@@ -638,10 +657,11 @@ async function start() {
 }
 
 async function afterSignIn() {
-  const selection = new URLSearchParams(location.search).get("selection");
+  const params = new URLSearchParams(location.search);
+  const selection = params.get("selection");
   if (selection) {
     byId("selection-id").value = selection;
-    await loadSelection(selection);
+    await loadSelection(selection, params.get("model"));
   }
   await search();
 }
