@@ -481,6 +481,12 @@ def test_language_switch_is_remembered(page: Page) -> None:
     expect(page.locator('#checks-table tr[data-check="peak_torque"]')).to_contain_text("erfüllt")
     expect(page.locator("#detail-heading")).to_contain_text("nicht bestätigt")
     assert page.evaluate("document.getElementById('chart-diagram').layout.separators") == ",."
+    # issue 13: the screen reader's result sentence follows a switch of language
+    expect(page.locator("#results-status")).to_contain_text(f"Gewählt: {FHA}")
+    page.get_by_role("button", name="English").click()
+    expect(page.locator("#results-status")).to_contain_text(f"Chosen: {FHA}")
+    page.get_by_role("button", name="Deutsch").click()
+    expect(page.locator("#results-status")).to_contain_text(f"Gewählt: {FHA}")
     assert any("keine Daten" in text for text in plot_annotations(page, "chart-diagram"))
 
     # remembered: a reload (the permalink) comes back in German, charts included

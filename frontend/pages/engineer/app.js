@@ -625,7 +625,12 @@ function applyLang(lang) {
   $("#submit").textContent = t(state.busy ? "form.running" : "form.submit");
   updateCycleSum();
   renderResults();
-  if (state.selection) updateUrl();
+  if (state.selection) {
+    updateUrl();
+    // the screen reader's last result sentence follows the language, not only the page
+    const status = $("#results-status");
+    if (status.textContent) status.textContent = resultSentence(state.selection, state.chosen, state.lang);
+  }
 }
 
 function init() {
