@@ -1,0 +1,89 @@
+"""A load as the actuator output sees it, whatever mechanism lies between (issue "Real axes").
+
+Every mechanism (``core/mechanisms.py``: ball screw, rotary table, belt, rack, conveyor,
+lift, with or without a transmission ratio) resolves to one :class:`AxisLoad`; the cycle
+(``core/motion.py``) turns it and a list of segments into the torque of each segment.
+
+The torque the actuator gives in a segment (speed direction ``s`` = ±1, output
+acceleration α [rad/s²], process torque T_P of the segment) is
+
+    load side:   T_load = T_G + s·T_F + T_P + J_L·α
+    at the output: T = T_load/η + J_A·α   where the actuator drives the load (T_load·s > 0),
+                   T = T_load·η + J_A·α   where the load drives the actuator back,
+
+the convention of the sizing tools engineers know (losses add to the torque the motor
+gives, and relieve it when the load pushes back). With η = 1 it is the chapter's
+Eq. 514.1: T = T_L + (J_A + J_L)·α. At standstill friction is zero and the gravity and
+process torques are held without losses (on the safe side: friction in a real screw or
+gear helps to hold).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from actuator_selection.core.errors import InvalidInputError
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class AxisLoad:
+    """A load resolved to the actuator output.
+
+    Parameters
+    ----------
+    inertia_kgm2
+        J_L [kgm²], ≥ 0: every moving part after the actuator (transmission, mechanism,
+        moved mass), referred to the output.
+    friction_torque_nm
+        T_F [Nm], ≥ 0: friction at the output, opposing the motion; zero at standstill.
+    gravity_torque_nm
+        T_G [Nm], signed: a torque that acts whether the axis moves or not (a weight, less
+        its counterweight); positive opposes positive rotation (lifting is positive).
+    efficiency
+        η [-], 0 < η ≤ 1, of what lies between the actuator output and the load, applied
+        by the direction of power flow (module docstring). 1 where the mechanism's own
+        equation holds its losses already (the chapter's Eq. 515.4 divides T_F by η).
+    speed_rpm_per_unit
+        Output speed [rpm] per unit of load speed (1 for a rotary load in rpm; for a linear
+        axis, rpm per mm/s).
+    torque_nm_per_force_unit
+        Output torque [Nm] per unit of process load (per N for a linear axis, per Nm for a
+        rotary one).
+    speed_unit
+        The unit of load speed: ``"rpm"`` or ``"mm/s"``.
+    force_unit
+        The unit of process load: ``"Nm"`` or ``"N"``.
+    """
+
+    inertia_kgm2: float
+    friction_torque_nm: float
+    gravity_torque_nm: float = 0.0
+    efficiency: float = 1.0
+    speed_rpm_per_unit: float = 1.0
+    torque_nm_per_force_unit: float = 1.0
+    speed_unit: str = "rpm"
+    force_unit: str = "Nm"
+
+    def __post_init__(self) -> None:
+        for name in (
+            "inertia_kgm2",
+            "friction_torque_nm",
+            "gravity_torque_nm",
+            "efficiency",
+            "speed_rpm_per_unit",
+            "torque_nm_per_force_unit",
+        ):
+            value = getattr(self, name)
+            if not math.isfinite(value):
+                raise InvalidInputError(name, f"must be a finite number, got {value!r}")
+        if self.inertia_kgm2 < 0:
+            raise InvalidInputError("inertia_kgm2", "must be ≥ 0: a moment of inertia")
+        if self.friction_torque_nm < 0:
+            raise InvalidInputError("friction_torque_nm", "must be ≥ 0: friction opposes motion")
+        if not 0 < self.efficiency <= 1:
+            raise InvalidInputError("efficiency", "must be > 0 and ≤ 1")
+        if self.speed_rpm_per_unit <= 0:
+            raise InvalidInputError("speed_rpm_per_unit", "must be > 0")
+        if self.torque_nm_per_force_unit <= 0:
+            raise InvalidInputError("torque_nm_per_force_unit", "must be > 0")
