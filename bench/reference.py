@@ -37,13 +37,16 @@ def numpy_reference(
     actuators: Sequence[Actuator], apps: Sequence[Application], top: int
 ) -> npt.NDArray[np.intp]:
     """Indexes into ``actuators`` of each case's best ``top`` (cases × top)."""
-    n2 = _column([a.pattern.speed_rpm for a in apps])
-    t1 = _column([a.pattern.accel_s for a in apps])
-    t2 = _column([a.pattern.constant_s for a in apps])
-    t3 = _column([a.pattern.decel_s for a in apps])
-    tp = _column([a.pattern.pause_s for a in apps])
-    tl = _column([a.load.torque_nm for a in apps])
-    jl = _column([a.load.inertia_kgm2 for a in apps])
+    patterns = [a.pattern for a in apps if a.pattern is not None]
+    loads = [a.load for a in apps if a.load is not None]
+    assert len(patterns) == len(loads) == len(apps), "the reference sizes the chapter's cycle"
+    n2 = _column([p.speed_rpm for p in patterns])
+    t1 = _column([p.accel_s for p in patterns])
+    t2 = _column([p.constant_s for p in patterns])
+    t3 = _column([p.decel_s for p in patterns])
+    tp = _column([p.pause_s for p in patterns])
+    tl = _column([x.torque_nm for x in loads])
+    jl = _column([x.inertia_kgm2 for x in loads])
     dyn = np.asarray([a.high_dynamics for a in apps])[:, None]
 
     ja = _row([a.inertia_kgm2 for a in actuators])

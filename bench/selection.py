@@ -53,12 +53,14 @@ def random_cases(n: int, seed: int = 7) -> list[Application]:
 
 def http_case(app: Application) -> dict[str, Any]:
     """The JSON body of a selection request for ``app``."""
-    p = app.pattern
+    p, load = app.pattern, app.load
+    assert p is not None, "the bench sizes the chapter's cycle"
+    assert load is not None
     return {
         "load": {
             "speed_rpm": p.speed_rpm,
-            "torque_nm": app.load.torque_nm,
-            "inertia_kgm2": app.load.inertia_kgm2,
+            "torque_nm": load.torque_nm,
+            "inertia_kgm2": load.inertia_kgm2,
         },
         "cycle": {
             "accel_s": p.accel_s,

@@ -8,10 +8,9 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.selection import Application
 
-APPLICATION = Application(
-    pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0),
-    load=Load(torque_nm=5, inertia_kgm2=1.3),
-)
+PATTERN = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0)
+LOAD = Load(torque_nm=5, inertia_kgm2=1.3)
+APPLICATION = Application(pattern=PATTERN, load=LOAD)
 FHA_25C_50_L = Actuator(
     model="FHA-25C-50-L",
     family="FHA-C",

@@ -18,23 +18,20 @@ from hypothesis import strategies as st
 from tests import worked_example
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.batch import (
     CHECK_NAMES,
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
-    _python_square,
+    _cases,
     evaluate_batch,
     rank_batch,
     select_batch,
 )
 from actuator_selection.core.checks import RULES, Requirement, Rule, published
-from actuator_selection.core.cycle import (
-    Load,
-    SpeedPattern,
-    cycle_torques,
-    mean_speed_rpm,
-)
+from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.motion import Motion, Segment, piece_arrays
 from actuator_selection.core.selection import (
     Application,
     Candidate,
@@ -61,7 +58,7 @@ def assert_matches_scalar(
     ev = evaluate_batch(actuators, apps, rules=rules)
     assert ev.statuses.shape == (len(apps), len(actuators), len(rules))
     for i, app in enumerate(apps):
-        assert ev.mean_speed_rpm[i] == mean_speed_rpm(app.pattern)
+        assert ev.mean_speed_rpm[i] == app.profile.mean_speed_rpm
         scalar = select([], app)
         assert ev.duty_cycle_percent[i] == scalar.duty_cycle_percent
         assert ev.cycle_time_s[i] == scalar.cycle_time_s
@@ -84,6 +81,10 @@ def assert_matches_scalar(
                 assert math.isnan(ev.rms_torque_nm[i, j])
             else:
                 assert ev.accel_torque_nm[i, j] == c.torques.accel_torque_nm, where
+                constant = ev.constant_torque_nm[i, j]
+                assert (None if math.isnan(constant) else constant) == (
+                    c.torques.constant_torque_nm
+                ), where
                 assert ev.decel_torque_nm[i, j] == c.torques.decel_torque_nm, where
                 assert ev.rms_torque_nm[i, j] == c.torques.rms_torque_nm, where
 
@@ -166,6 +167,36 @@ def random_case(rng: random.Random, actuators: Sequence[Actuator]) -> Applicatio
     )
 
 
+def random_motion_case(rng: random.Random) -> Application:
+    """A cycle of segments: moves both ways, S-curves, dwells, a weight, losses, process
+    torques; between 1 and 6 moves, so that a batch pads short cycles."""
+    segments: list[Segment] = []
+    for _ in range(rng.randint(1, 6)):
+        speed = rng.choice([-1.0, 1.0]) * rng.uniform(1, 200)
+        jerk = rng.choice([0.0, 1.0, rng.uniform(0, 1)])
+        force = rng.choice([0.0, rng.uniform(-50, 50)])
+        segments += [
+            Segment(duration_s=rng.uniform(1e-3, 1), start_rpm=0.0, end_rpm=speed, jerk_share=jerk),
+            Segment(
+                duration_s=rng.choice([0.0, rng.uniform(0, 2)]),
+                start_rpm=speed,
+                end_rpm=speed,
+                process_torque_nm=force,
+            ),
+            Segment(duration_s=rng.uniform(1e-3, 1), start_rpm=speed, end_rpm=0.0, jerk_share=jerk),
+            Segment(duration_s=rng.choice([0.0, rng.uniform(0, 3)]), start_rpm=0.0, end_rpm=0.0),
+        ]
+    load = AxisLoad(
+        inertia_kgm2=rng.choice([0.0, rng.uniform(0, 30)]),
+        friction_torque_nm=rng.choice([0.0, rng.uniform(0, 50)]),
+        gravity_torque_nm=rng.choice([0.0, rng.uniform(-80, 80)]),
+        efficiency=rng.choice([1.0, rng.uniform(0.5, 1)]),
+    )
+    return Application(
+        motion=Motion(segments=tuple(segments), load=load), high_dynamics=rng.random() < 0.6
+    )
+
+
 def rounding_trap(edge: float) -> float:
     """A torque a > edge for which a + (edge − a) rounds below ``edge``.
 
@@ -183,14 +214,14 @@ def boundary_actuators(apps: Sequence[Application]) -> list[Actuator]:
     """Actuators whose limits equal a case's own figures: every ``≤`` is decided at equality."""
     out = []
     for k, app in enumerate(apps):
-        t = cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=0.7)
-        n_av = mean_speed_rpm(app.pattern)
+        t = app.profile.torques(0.7)
+        n_av = app.profile.mean_speed_rpm
         exact = Actuator(
             model=f"EDGE-{k}",
             family="EDGE",
             gear_ratio=50.0,
-            max_torque_nm=t.accel_torque_nm,
-            max_speed_rpm=app.pattern.speed_rpm,
+            max_torque_nm=abs(t.accel_torque_nm),
+            max_speed_rpm=app.profile.peak_speed_rpm,
             inertia_kgm2=0.7,
             stall_torque_nm=t.rms_torque_nm,
             rated_speed_rpm=n_av,  # n_av at the rated speed exactly
@@ -275,7 +306,6 @@ RMS_TO_PEAK = Rule(
         Requirement(any_of=("max_torque_nm",), unless="has_zone", what="maximum torque T_max"),
     ),
     binding=lambda q, xp: xp.not_(q.high_dynamics),
-    reads_rms=True,
     message=lambda q, status, value, limit: f"2·T_rms = {value:.4g} Nm, limit {limit:.4g} Nm",
 )
 MEAN_SPEED = Rule(
@@ -307,37 +337,24 @@ def test_an_added_rule_runs_in_both_flowcharts(seed: int) -> None:
     assert (ev.verdicts != evaluate_batch(actuators, apps).verdicts).any()
 
 
-def test_an_added_rule_near_its_limit_is_ranked_exactly() -> None:
-    """A rule that reads T_rms gets the exact T_rms near its limit, as continuous_duty does."""
-    rng = random.Random(22)
-    found = 0
-    while found < 4:
-        app = random_case(rng, [FHA])
-        t = cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=0.7)
-        p = app.pattern
-        energy = (
-            (t.accel_torque_nm * t.accel_torque_nm) * p.accel_s
-            + t.constant_torque_nm**2 * p.constant_s
-            + (t.decel_torque_nm * t.decel_torque_nm) * p.decel_s
-        )
-        fast = math.sqrt(energy / p.cycle_s)
-        if fast == t.rms_torque_nm:
-            continue
-        found += 1
-        actuators = [
-            Actuator(
-                model=f"AT-{name}",
-                family="EDGE",
-                gear_ratio=50.0,
-                max_torque_nm=2.0 * rms,  # RMS_TO_PEAK's limit: 2·T_rms at equality
-                max_speed_rpm=1e9,
-                inertia_kgm2=0.7,
-                stall_torque_nm=1e9,
-                rated_speed_rpm=1e9,
-            )
-            for name, rms in (("EXACT", t.rms_torque_nm), ("FAST", fast))
-        ]
-        assert_selects_like_scalar(actuators, [app], top=2, rules=(*RULES, RMS_TO_PEAK))
+@pytest.mark.parametrize("seed", range(3))
+def test_segment_cycles_match_scalar_exactly(seed: int) -> None:
+    """Cycles of segments, mixed with trapezoids of fewer pieces (padded), decide as the
+    scalar flowchart does, cell for cell; a brake adds its check to both."""
+    rng = random.Random(300 + seed)
+    actuators = [random_actuator(rng, k) for k in range(25)]
+    apps = [random_motion_case(rng) for _ in range(40)] + [
+        random_case(rng, actuators) for _ in range(10)
+    ]
+    actuators += boundary_actuators(apps[:8])
+    assert_matches_scalar(actuators, apps)
+    assert_selects_like_scalar(actuators, apps, 3)
+    braked = [dataclasses.replace(a, brake=True) for a in apps]
+    assert_matches_scalar(actuators, braked, braked[0].rules)
+    ev = evaluate_batch(actuators, apps)
+    # Not vacuous: motions give negative peaks, regenerating brakes and every verdict.
+    assert (ev.accel_torque_nm < 0).any()
+    assert set(ev.verdicts.ravel().tolist()) == {0, 1, 2}
 
 
 def test_edge_cases_named_in_the_issue() -> None:
@@ -367,7 +384,7 @@ def test_edge_cases_named_in_the_issue() -> None:
     ]
     at_ratio = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=3 * 0.86))
     at_speed = dataclasses.replace(
-        EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=90)
+        EXAMPLE, pattern=dataclasses.replace(worked_example.PATTERN, speed_rpm=90)
     )
     heavy = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=2.6))
     apps = [
@@ -463,63 +480,6 @@ def test_hypothesis_batch_equals_scalar(
 ) -> None:
     assert_matches_scalar(actuators, apps)
     assert_selects_like_scalar(actuators, apps, top=top)
-
-
-def test_ranking_makes_rms_exact_near_its_limit() -> None:
-    """Ranking squares as x·x, which can put T_rms an ulp off; near a limit it must not."""
-    rng = random.Random(21)
-    found: list[tuple[Application, float, float]] = []
-    while len(found) < 4:
-        app = random_case(rng, [FHA])
-        t = cycle_torques(pattern=app.pattern, load=app.load, actuator_inertia_kgm2=0.7)
-        p = app.pattern
-        energy = (
-            (t.accel_torque_nm * t.accel_torque_nm) * p.accel_s
-            + t.constant_torque_nm**2 * p.constant_s
-            + (t.decel_torque_nm * t.decel_torque_nm) * p.decel_s
-        )
-        fast = math.sqrt(energy / p.cycle_s)
-        if fast != t.rms_torque_nm:
-            found.append((app, t.rms_torque_nm, fast))
-    for app, exact, fast in found:
-        actuators = [
-            Actuator(
-                model=f"AT-{name}",
-                family="EDGE",
-                gear_ratio=50.0,
-                max_torque_nm=1e9,
-                max_speed_rpm=1e9,
-                inertia_kgm2=0.7,
-                stall_torque_nm=limit,
-                rated_speed_rpm=1e9,
-            )
-            for name, limit in (("EXACT", exact), ("FAST", fast))
-        ]
-        assert_selects_like_scalar(actuators, [app], top=2)
-
-
-# --- the squares --------------------------------------------------------------------------
-
-
-def test_python_square_is_pythons_pow_where_x_times_x_is_not() -> None:
-    """CPython's ``x**2`` is libm's pow(); it rounds some squares unlike ``x * x``."""
-    rng = np.random.default_rng(5)
-    x = rng.uniform(0, 1, 400_000) * 10.0 ** rng.integers(-8, 9, 400_000)
-    x = np.concatenate([x, -x[:1000], [0.0, 2.0**-600, 2.0**500, 1.0, math.nan]])
-    python = np.array([v**2 for v in x.tolist()])
-    got = _python_square(x)
-    finite = ~np.isnan(x)
-    assert (got[finite] == python[finite]).all()
-    assert math.isnan(got[-1])
-    # Were x * x always right, the test above could not fail; on glibc it would.
-    differs = int(((x * x)[finite] != python[finite]).sum())
-    if differs == 0:
-        pytest.skip("this C library's pow rounds x**2 like x * x; nothing to tell apart")
-
-
-def test_python_square_keeps_shape_of_two_dimensional_views() -> None:
-    x = np.arange(12, dtype=np.float64).reshape(3, 4) * 1.1
-    assert _python_square(x).tolist() == [[v**2 for v in row] for row in x.tolist()]
 
 
 # --- ranking and restriction ----------------------------------------------------------------
@@ -632,3 +592,14 @@ def test_brake_checks_match_the_scalar_flowchart() -> None:
     mixed = [apps[0], dataclasses.replace(apps[1], brake=False)]
     with pytest.raises(InvalidInputError):
         select_batch(actuators, mixed)
+
+
+def test_trapezoid_columns_equal_the_pieces_of_their_segments() -> None:
+    """The batch's column-built trapezoids are the pieces of the chapter's four segments,
+    array for array, bit for bit."""
+    rng = random.Random(7)
+    apps = [random_case(rng, [FHA]) for _ in range(200)]
+    fast = _cases(apps).pieces
+    slow = piece_arrays([a.cycle for a in apps])
+    for f in dataclasses.fields(fast):
+        assert np.array_equal(getattr(fast, f.name), getattr(slow, f.name)), f.name

@@ -22,13 +22,8 @@ from actuator_selection.core.checks import (
     Status,
     _new_check,
 )
-from actuator_selection.core.cycle import (
-    CycleTorques,
-    Load,
-    SpeedPattern,
-    TorqueFloors,
-    torque_floors,
-)
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.motion import CycleTorques
 from actuator_selection.core.selection import Application, evaluate, operands
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 
@@ -113,8 +108,14 @@ def test_operands_name_each_value() -> None:
     torques = CycleTorques(
         accel_torque_nm=31, constant_torque_nm=5, decel_torque_nm=-33, rms_torque_nm=34
     )
-    floors = TorqueFloors(accel_torque_nm=41, decel_torque_nm=42, rms_torque_nm=43)
-    q = operands(actuator, app, torques, 50.0, floors)
+    profile = dataclasses.replace(
+        app.profile,
+        mean_speed_rpm=50.0,
+        accel_floor_nm=41,
+        decel_floor_nm=42,
+        rms_floor_nm=43,
+    )
+    q = operands(actuator, app, torques, profile)
     assert q._asdict() == {
         "speed_rpm": 21,
         "load_inertia_kgm2": 22,
@@ -139,7 +140,7 @@ def test_operands_name_each_value() -> None:
         "load_torque_nm": 5,
         "brake_holding_torque_nm": 18,
     }
-    bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0, floors)
+    bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, profile)
     unpublished = [
         name for name, v in bare._asdict().items() if isinstance(v, float) and math.isnan(v)
     ]
@@ -159,27 +160,15 @@ def test_operands_name_each_value() -> None:
         "brake_holding_torque_nm",
     ]
     assert bare.has_zone is False
-    beyond = operands(actuator, app, torques, 101.0, floors)
+    beyond = operands(actuator, app, torques, dataclasses.replace(profile, mean_speed_rpm=101.0))
     assert math.isnan(beyond.zone_torque_nm)
 
 
 def worked_operands(**changes: float | bool) -> Operands:
     actuator = dataclasses.replace(FHA, stall_torque_nm=36)
     torques = evaluate(actuator, EXAMPLE).torques
-    floors = torque_floors(pattern=EXAMPLE.pattern, load=EXAMPLE.load)
-    return operands(actuator, EXAMPLE, torques, 8 / 1.3, floors)._replace(**changes)
-
-
-def test_only_rules_that_say_so_read_rms() -> None:
-    """The ranking's T_rms is a few ulps off: a rule that reads it must set reads_rms."""
-    q = worked_operands()
-    nudged = q._replace(rms_torque_nm=q.rms_torque_nm * (1 + 1e-9))
-    for rule in RULES:
-        reads = (rule.value(q, FLOAT_OPS), rule.limit(q, FLOAT_OPS)) != (
-            rule.value(nudged, FLOAT_OPS),
-            rule.limit(nudged, FLOAT_OPS),
-        )
-        assert reads is rule.reads_rms, rule.name
+    profile = dataclasses.replace(EXAMPLE.profile, mean_speed_rpm=8 / 1.3)
+    return operands(actuator, EXAMPLE, torques, profile)._replace(**changes)
 
 
 @pytest.mark.parametrize(
@@ -439,7 +428,9 @@ MESSAGES = {
 @pytest.mark.parametrize("scenario", MESSAGES)
 def test_every_branch_writes_the_same_message(scenario: str) -> None:
     heavy = dataclasses.replace(EXAMPLE, load=Load(torque_nm=5, inertia_kgm2=2.6))
-    fast = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=91))
+    fast = dataclasses.replace(
+        EXAMPLE, pattern=dataclasses.replace(worked_example.PATTERN, speed_rpm=91)
+    )
     cha_like = dataclasses.replace(FHA, stall_torque_nm=36, rated_speed_rpm=70)
     actuator, app = {
         "example": (FHA, EXAMPLE),

@@ -93,6 +93,7 @@ def _numeric_mean_speed(pattern: SpeedPattern, steps: int) -> float:
 def test_rms_and_mean_speed_match_quadrature(pattern: SpeedPattern) -> None:
     """Eq. 514.2 and 514.3 equal the time averages of the profiles of Fig. 516.2."""
     t = cycle_torques(pattern=pattern, load=EXAMPLE_LOAD, actuator_inertia_kgm2=J_A)
+    assert t.constant_torque_nm is not None  # the trapezoid always has its run at n_2
     numeric = _numeric_rms(
         pattern, t.accel_torque_nm, t.constant_torque_nm, t.decel_torque_nm, steps=130_000
     )

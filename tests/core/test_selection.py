@@ -10,7 +10,7 @@ from tests import worked_example
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.checks import Check, overload
-from actuator_selection.core.cycle import Load, cycle_torques, torque_floors
+from actuator_selection.core.cycle import Load
 from actuator_selection.core.selection import (
     Application,
     Status,
@@ -50,9 +50,13 @@ def test_worked_example_passes_every_check_with_data() -> None:
 
 
 def test_max_speed_fails_above_n_max() -> None:
-    fast = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=91))
+    fast = dataclasses.replace(
+        EXAMPLE, pattern=dataclasses.replace(worked_example.PATTERN, speed_rpm=91)
+    )
     assert status(FHA, fast, "max_speed") is Status.FAIL
-    exact = dataclasses.replace(EXAMPLE, pattern=dataclasses.replace(EXAMPLE.pattern, speed_rpm=90))
+    exact = dataclasses.replace(
+        EXAMPLE, pattern=dataclasses.replace(worked_example.PATTERN, speed_rpm=90)
+    )
     assert status(FHA, exact, "max_speed") is Status.PASS
 
 
@@ -71,7 +75,9 @@ def test_peak_torque_fails_when_t1_exceeds_t_max() -> None:
 
 
 def test_decel_torque_fails_on_fast_braking_alone() -> None:
-    pattern = dataclasses.replace(EXAMPLE.pattern, decel_s=0.05)  # |T_3| = 180.96 − 5 = 175.96
+    pattern = dataclasses.replace(
+        worked_example.PATTERN, decel_s=0.05
+    )  # |T_3| = 180.96 − 5 = 175.96
     app = dataclasses.replace(EXAMPLE, pattern=pattern)
     assert status(FHA, app, "peak_torque") is Status.PASS
     assert status(FHA, app, "decel_torque") is Status.FAIL
@@ -213,21 +219,17 @@ def test_decel_torque_floor_is_the_least_magnitude_of_t_3() -> None:
         Status.NO_DATA
     )
     # T_3 > 0 at J_A = 0 (a large T_L braking itself): some J_A makes T_3 = 0, floor 0
-    heavy = Application(pattern=EXAMPLE.pattern, load=Load(torque_nm=200, inertia_kgm2=0.1))
-    assert torque_floors(pattern=heavy.pattern, load=heavy.load).decel_torque_nm == 0.0
+    heavy = Application(pattern=worked_example.PATTERN, load=Load(torque_nm=200, inertia_kgm2=0.1))
+    assert heavy.profile.decel_floor_nm == 0.0
 
 
 def test_rms_floor_is_the_least_t_rms_over_j_a() -> None:
     """Against T_rms (Eq. 514.2) sampled over J_A: no sample lies below the floor, and the
     best sample comes within 1e-6 of it."""
     for load in (Load(torque_nm=5, inertia_kgm2=1.3), Load(torque_nm=150, inertia_kgm2=0.2)):
-        floor = torque_floors(pattern=EXAMPLE.pattern, load=load).rms_torque_nm
-        samples = [
-            cycle_torques(
-                pattern=EXAMPLE.pattern, load=load, actuator_inertia_kgm2=k / 10_000
-            ).rms_torque_nm
-            for k in range(0, 100_000, 7)
-        ]
+        profile = Application(pattern=worked_example.PATTERN, load=load).profile
+        floor = profile.rms_floor_nm
+        samples = [profile.torques(k / 10_000).rms_torque_nm for k in range(0, 100_000, 7)]
         assert min(samples) >= floor * (1 - 1e-12)
         assert min(samples) == pytest.approx(floor, rel=1e-6)
     # the continuous check fails on the floor, with the same limit as with J_A

@@ -16,20 +16,12 @@ The checks are not written here: the rules of :mod:`actuator_selection.core.chec
 comparison into status codes.
 
 That is only right if the arrays decide exactly as the scalar code does. They do,
-bit for bit, for three reasons:
-
-- every expression performs the same IEEE operations in the same order as
-  ``core/cycle.py`` and ``core/zones.py`` (numpy adds no fused multiply-add);
-- a catalogue value that is ``None`` is NaN here (as in the scalar operands) and
-  masked by the rule's requirements: its check is ``no_data``, whatever the NaN
-  arithmetic gives;
-- ``x**2`` in ``core/cycle.py`` is the C library's ``pow(x, 2)``, which glibc does
-  *not* always round like ``x * x`` (about one square in 1,200 differs by one ulp,
-  measured on glibc 2.36). :func:`_python_square` squares with ``x * x`` and calls
-  Python's own ``**`` for the elements where the two may disagree. Ranking, which
-  needs only the statuses, squares with ``x * x`` and recomputes exactly just the
-  T_rms that lie within 1e-12 of the limit of a rule that reads T_rms
-  (:attr:`~actuator_selection.core.checks.Rule.reads_rms`).
+bit for bit: every expression performs the same IEEE operations in the same order as
+:meth:`~actuator_selection.core.motion.Profile.torques` (numpy adds no fused
+multiply-add; squares are ``x * x`` on both sides), the figures that do not depend on the
+actuator come from the one function :func:`~actuator_selection.core.motion.cycle_figures`
+for both, and a catalogue value that is ``None`` is NaN here (as in the scalar operands)
+and masked by the rule's requirements.
 
 The tests compare every array with the scalar flowchart with ``==``.
 
@@ -53,10 +45,8 @@ Worked example (Table 516.1 against the FHA-25C-50-L of Table 516.3), two cases:
 from __future__ import annotations
 
 import math
-import operator
 from collections.abc import Collection, Sequence, Sized
 from dataclasses import dataclass, fields
-from itertools import repeat
 
 import numpy as np
 import numpy.typing as npt
@@ -64,13 +54,20 @@ import numpy.typing as npt
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.checks import RULES, Operands, Ops, Rule, Status
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.motion import (
+    CycleFigures,
+    PieceArrays,
+    cycle_figures,
+    piece_arrays,
+    profile_from,
+    trapezoid_piece_arrays,
+)
 from actuator_selection.core.selection import (
     Application,
     Selection,
     Verdict,
     evaluate_each,
 )
-from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
@@ -96,49 +93,6 @@ _PASS, _WARN, _NO_DATA, _FAIL = (np.int8(c) for c in range(4))
 _BLOCK_CELLS = 1 << 16
 """Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
 and memory stays bounded whatever the number of cases."""
-
-_SPLITTER = 134_217_729.0
-"""2**27 + 1: Veltkamp's constant that splits a float64 into two 26-bit halves."""
-_SPLIT_SAFE = (2.0**-400, 2.0**400)
-"""|x| range in which the split and the products of :func:`_python_square` are exact."""
-_ROUNDING_RISK_ULP = 0.44
-"""Where x² lies closer than this many ulps to the midpoint between two doubles, a pow()
-accurate to 0.54 ulp (glibc's documented bound; misroundings measured only within 0.007
-ulp of the midpoint) may round differently from ``x * x``: such squares are recomputed."""
-_NEAR_LIMIT = 1e-12
-"""Relative distance of T_rms from its limit below which ranking recomputes T_rms exactly:
-squares as ``x * x`` put T_rms within a few ulps (~1e-15) of Python's value."""
-_NEAR_ZERO = 1e-280
-"""Absolute floor of that distance, for limits so small that relative means nothing."""
-
-
-def _python_square(x: FloatArray) -> FloatArray:
-    """x² rounded exactly as CPython's ``x**2`` rounds it (the C library's ``pow``).
-
-    ``x * x`` is correctly rounded; ``pow`` may round the other way only when the
-    exact square lies near the midpoint of two doubles. Dekker's exact product
-    (with Veltkamp's split, no fused multiply-add needed) gives the rounding error
-    of ``x * x``; where it is near half an ulp, Python squares the element itself.
-    NaN stays NaN (a missing J_A, masked later).
-    """
-    square: FloatArray = x * x
-    with np.errstate(all="ignore"):
-        scaled = x * _SPLITTER
-        high = scaled - (scaled - x)
-        low = x - high
-        error = ((high * high - square) + 2.0 * high * low) + low * low
-        # At a power of two the ulp below is half the ulp above: take the smaller.
-        ulp = np.spacing(np.nextafter(square, 0.0))
-        magnitude = np.abs(x)
-        exact_split = (magnitude > _SPLIT_SAFE[0]) & (magnitude < _SPLIT_SAFE[1])
-        risky = np.where(
-            exact_split, np.abs(error) >= _ROUNDING_RISK_ULP * ulp, ~np.isnan(x)
-        ).ravel()
-    where = np.flatnonzero(risky)
-    if where.size:
-        values = x.ravel()[where].tolist()
-        np.put(square, where, list(map(operator.pow, values, repeat(2))))
-    return square
 
 
 def _optional(values: Sequence[float | None]) -> FloatArray:
@@ -197,75 +151,58 @@ def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class _Cases:
-    """The load cases as columns, with their cycle figures (Eq. 514.3, 514.4)."""
+    """The load cases as rows: their cycles' pieces and figures."""
 
-    speed: FloatArray
-    accel: FloatArray
-    constant: FloatArray
-    decel: FloatArray
-    load_torque: FloatArray
-    load_torque_squared: FloatArray
+    pieces: PieceArrays
+    figures: CycleFigures
     load_inertia: FloatArray
     high_dynamics: BoolArray
-    cycle: FloatArray
-    mean_speed: FloatArray
-    duty: FloatArray
-    accel_floor: FloatArray
-    decel_floor: FloatArray
-    rms_floor: FloatArray
-    """The least T_1, |T_3|, T_rms over every J_A ≥ 0 (``cycle.torque_floors``)."""
+
+    @property
+    def size(self) -> int:
+        return self.load_inertia.size
+
+    @property
+    def mean_speed(self) -> FloatArray:
+        return self.figures.mean_speed_rpm
 
     def rows(self, start: int, stop: int) -> _Cases:
         """The cases ``start:stop``."""
-        return _Cases(**{f.name: getattr(self, f.name)[start:stop] for f in fields(self)})
+        p, f = self.pieces, self.figures
+        return _Cases(
+            pieces=PieceArrays(**{x.name: getattr(p, x.name)[start:stop] for x in fields(p)}),
+            figures=CycleFigures(**{x.name: getattr(f, x.name)[start:stop] for x in fields(f)}),
+            load_inertia=self.load_inertia[start:stop],
+            high_dynamics=self.high_dynamics[start:stop],
+        )
 
 
 def _cases(apps: Sequence[Application]) -> _Cases:
-    def column(values: Sequence[float]) -> FloatArray:
-        return np.array(values, dtype=np.float64)
+    shorthand = [(a.pattern, a.load) for a in apps if a.pattern is not None and a.load]
+    if len(shorthand) == len(apps):  # the chapter's trapezoids only: as columns
 
-    speed = column([a.pattern.speed_rpm for a in apps])
-    accel = column([a.pattern.accel_s for a in apps])
-    constant = column([a.pattern.constant_s for a in apps])
-    decel = column([a.pattern.decel_s for a in apps])
-    pause = column([a.pattern.pause_s for a in apps])
-    load_torque = column([a.load.torque_nm for a in apps])
-    high_dynamics = np.array([a.high_dynamics for a in apps], dtype=np.bool_)
-    with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
-        # SpeedPattern.moving_s and .cycle_s, Eq. 514.3 and 514.4, in cycle.py's order.
-        moving = accel + constant + decel
-        cycle = moving + pause
-        half = speed / 2
-        mean_speed = (half * accel + speed * constant + half * decel) / cycle
-        duty = moving / cycle * 100.0
-        # cycle.torque_floors, operation for operation.
-        load_inertia = column([a.load.inertia_kgm2 for a in apps])
-        angular = speed * RAD_PER_S_PER_RPM
-        b = angular / accel
-        e = angular / decel
-        a0 = load_torque + load_inertia * b
-        d0 = load_torque - load_inertia * e
-        denominator = accel * (b * b) + decel * (e * e)
-        best = np.where(denominator > 0, (decel * e * d0 - accel * a0 * b) / denominator, 0.0)
-        a1 = np.where(best > 0, a0 + b * best, a0)
-        d1 = np.where(best > 0, d0 - e * best, d0)
-        energy = a1 * a1 * accel + load_torque * load_torque * constant + d1 * d1 * decel
-        rms_floor = np.sqrt(energy / cycle)
+        def column(values: list[float]) -> FloatArray:
+            return np.array(values, dtype=np.float64)
+
+        inertia = column([load.inertia_kgm2 for _, load in shorthand])
+        pieces = trapezoid_piece_arrays(
+            speed_rpm=column([p.speed_rpm for p, _ in shorthand]),
+            accel_s=column([p.accel_s for p, _ in shorthand]),
+            constant_s=column([p.constant_s for p, _ in shorthand]),
+            decel_s=column([p.decel_s for p, _ in shorthand]),
+            pause_s=column([p.pause_s for p, _ in shorthand]),
+            torque_nm=column([load.torque_nm for _, load in shorthand]),
+            inertia_kgm2=inertia,
+        )
+    else:
+        motions = [a.cycle for a in apps]
+        pieces = piece_arrays(motions)
+        inertia = np.array([m.load.inertia_kgm2 for m in motions], dtype=np.float64)
     return _Cases(
-        speed=speed,
-        accel=accel,
-        constant=constant,
-        decel=decel,
-        load_torque=load_torque,
-        load_torque_squared=_python_square(load_torque),
-        load_inertia=load_inertia,
-        high_dynamics=high_dynamics,
-        cycle=cycle,
-        mean_speed=mean_speed,
-        duty=duty,
-        accel_floor=a0,
-        decel_floor=np.maximum(-d0, 0.0),
-        rms_floor=rms_floor,
+        pieces=pieces,
+        figures=cycle_figures(pieces),
+        load_inertia=inertia,
+        high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
     )
 
 
@@ -308,6 +245,7 @@ class _RuleArrays:
 @dataclass(frozen=True, slots=True, eq=False)
 class _Block:
     accel_torque: FloatArray
+    constant_torque: FloatArray
     decel_torque: FloatArray
     rms_torque: FloatArray
     statuses: tuple[CodeArray, ...]
@@ -325,41 +263,11 @@ class _Block:
         return worst
 
 
-def _square(x: FloatArray) -> FloatArray:
-    return x * x
-
-
-def _settle_near_limit(
-    q: Operands, value: FloatArray, limit: FloatArray, cases: _Cases, shape: tuple[int, int]
-) -> bool:
-    """Replace T_rms by the exact value (Python's squares) where ``value`` is near ``limit``.
-
-    With squares as ``x * x`` T_rms is within a few ulps of Python's value, so only a
-    T_rms within :data:`_NEAR_LIMIT` of a limit can compare differently. True if any
-    T_rms changed (the rule's value and limit are then computed again).
-    """
-    with np.errstate(all="ignore"):
-        band = np.maximum(_NEAR_LIMIT * np.abs(limit), _NEAR_ZERO)
-        near = np.broadcast_to(np.abs(value - limit) <= band, shape)
-    rows, cols = np.nonzero(near)
-    if not rows.size:
-        return False
-    energy = (
-        _python_square(q.accel_torque_nm[rows, cols]) * cases.accel[rows]
-        + (cases.load_torque_squared * cases.constant)[rows]
-        + _python_square(q.decel_torque_nm[rows, cols]) * cases.decel[rows]
-    )
-    q.rms_torque_nm[rows, cols] = np.sqrt(energy / cases.cycle[rows])
-    return True
-
-
 def _status_codes(
     rule: Rule,
     q: Operands,
-    cases: _Cases,
     shape: tuple[int, int],
     *,
-    exact: bool,
     detail: bool = False,
 ) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """The codes of one rule for the block (:meth:`~actuator_selection.core.checks.Rule.check`
@@ -376,8 +284,6 @@ def _status_codes(
             if k:
                 others_missing = others_missing | lacking
         value, limit = rule.value(q, xp), rule.limit(q, xp)
-        if not exact and rule.reads_rms and _settle_near_limit(q, value, limit, cases, shape):
-            value, limit = rule.value(q, xp), rule.limit(q, xp)
         within = True if rule.within is None else rule.within(q, xp)
         ok = (value <= limit) & within
         binding = True if rule.binding is None else rule.binding(q, xp)
@@ -424,41 +330,63 @@ def _evaluate_block(
     zone_limits: FloatArray,
     rules: Sequence[Rule],
     *,
-    exact: bool,
     detail: bool = False,
 ) -> _Block:
-    """The flowchart for ``cases`` × every actuator (rows × columns).
+    """The flowchart for ``cases`` × every actuator (rows × columns); ``detail``: the
+    checks' values and limits too.
 
-    ``exact``: T_rms bit for bit as Python computes it. Otherwise its squares are
-    ``x * x`` and only the T_rms near a limit are made exact: the statuses are the
-    same, at about half the cost. ``detail`` (with ``exact``): the checks' values and
-    limits too.
+    The torques are :meth:`~actuator_selection.core.motion.Profile.torques` on arrays,
+    piece by piece: T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in
+    order, T_1, T_2, T_3 the signed torques of largest magnitude (the first one on a tie).
     """
     col = np.newaxis
-    square = _python_square if exact else _square
+    p = cases.pieces
+    shape = (cases.size, cat.inertia.size)
+    energy = np.zeros(shape)
+    accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
+    decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
+    constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
-        # Eq. 514.1 as cycle.py writes it: (n_2·2π/60)/t, then T_L ± (J_A + J_L)·that.
-        angular = cases.speed * RAD_PER_S_PER_RPM
-        inertia = cat.inertia + cases.load_inertia[:, col]
-        accel_torque = cases.load_torque[:, col] + inertia * (angular / cases.accel)[:, col]
-        decel_torque = cases.load_torque[:, col] - inertia * (angular / cases.decel)[:, col]
-        # Eq. 514.2: (T_1²·t_1 + T_2²·t_2 + T_3²·t_3) / t_0, left to right, then √.
-        energy = (
-            square(accel_torque) * cases.accel[:, col]
-            + (cases.load_torque_squared * cases.constant)[:, col]
-            + square(decel_torque) * cases.decel[:, col]
-        )
-        rms_torque = np.sqrt(energy / cases.cycle[:, col])
-    shape = (cases.speed.size, cat.inertia.size)
+        for k in range(p.duration.shape[1]):
+            inertia = cat.inertia + p.inertia[:, k, col]
+            static = p.static[:, k, col]
+            t0 = static + inertia * p.accel_start[:, k, col]
+            t1 = static + inertia * p.accel_end[:, k, col]
+            t = p.duration[:, k, col]
+            energy = energy + np.where(
+                (p.accel_start[:, k] == p.accel_end[:, k])[:, col],
+                t0 * t0 * t,
+                (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 * t,
+            )
+            braking = p.braking[:, k, col]
+            steady = p.constant_speed[:, k, col]
+            for torque in (t0, t1):
+                magnitude = np.abs(torque)
+                take = braking & (magnitude > decel_abs)
+                decel = np.where(take, torque, decel)
+                decel_abs = np.where(take, magnitude, decel_abs)
+                take = ~braking & (magnitude > accel_abs)
+                accel = np.where(take, torque, accel)
+                accel_abs = np.where(take, magnitude, accel_abs)
+                take = steady & (magnitude > constant_abs)
+                constant = np.where(take, torque, constant)
+                constant_abs = np.where(take, magnitude, constant_abs)
+        rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
+    unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
+    accel_torque = np.where(unknown, math.nan, accel)
+    decel_torque = np.where(unknown, math.nan, decel)
+    rms_torque = np.where(unknown, math.nan, rms_torque)
+    constant_torque = np.where(unknown, math.nan, constant)
+    f = cases.figures
     zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
     if cat.zone_columns.size:
         zone_torque = np.full(shape, math.nan)
         zone_torque[:, cat.zone_columns] = zone_limits
     q = Operands(
-        speed_rpm=cases.speed[:, col],
+        speed_rpm=f.peak_speed_rpm[:, col],
         load_inertia_kgm2=cases.load_inertia[:, col],
         high_dynamics=cases.high_dynamics[:, col],
-        mean_speed_rpm=cases.mean_speed[:, col],
+        mean_speed_rpm=f.mean_speed_rpm[:, col],
         accel_torque_nm=accel_torque,
         decel_torque_nm=decel_torque,
         rms_torque_nm=rms_torque,
@@ -470,21 +398,22 @@ def _evaluate_block(
         has_zone=cat.has_zone,
         zone_torque_nm=zone_torque,
         zone_max_speed_rpm=cat.zone_max_speed,
-        accel_torque_floor_nm=cases.accel_floor[:, col],
-        decel_torque_floor_nm=cases.decel_floor[:, col],
-        rms_torque_floor_nm=cases.rms_floor[:, col],
+        accel_torque_floor_nm=f.accel_floor_nm[:, col],
+        decel_torque_floor_nm=f.decel_floor_nm[:, col],
+        rms_torque_floor_nm=f.rms_floor_nm[:, col],
         continuous_speed_rpm=cat.continuous_speed,
         rated_speed_rpm=cat.rated_speed,
-        load_torque_nm=cases.load_torque[:, col],
+        load_torque_nm=p.holding[:, col],
         brake_holding_torque_nm=cat.brake_holding,
     )
-    results = [_status_codes(r, q, cases, shape, exact=exact, detail=detail) for r in rules]
+    results = [_status_codes(r, q, shape, detail=detail) for r in rules]
     details = [d for _, _, d in results if d is not None]
     overload = np.zeros(shape)
     for _, over, _ in results:
         np.maximum(overload, over, out=overload)
     return _Block(
         accel_torque=accel_torque,
+        constant_torque=constant_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
         statuses=tuple(codes for codes, _, _ in results),
@@ -514,6 +443,8 @@ class BatchEvaluation:
     """t_0 per case [s]."""
     accel_torque_nm: FloatArray
     """T_1 per case × actuator (Eq. 514.1) [Nm]."""
+    constant_torque_nm: FloatArray
+    """T_2 per case × actuator [Nm]; NaN where the cycle never runs at constant speed."""
     decel_torque_nm: FloatArray
     """T_3 per case × actuator [Nm]."""
     rms_torque_nm: FloatArray
@@ -580,7 +511,7 @@ def evaluate_batch(
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))
-    accel, decel, rms = (np.empty(shape) for _ in range(3))
+    accel, constant, decel, rms = (np.empty(shape) for _ in range(4))
     checks = (*shape, len(rules))
     statuses = np.empty(checks, dtype=np.int8)
     values, limits = np.empty(checks), np.empty(checks)
@@ -590,9 +521,10 @@ def evaluate_batch(
     worst_overload = np.empty(shape)
     for start, stop in _blocks(actuators, apps):
         rows = cases.rows(start, stop)
-        block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, exact=True, detail=True)
+        block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, detail=True)
         assert block.details is not None
         accel[start:stop] = block.accel_torque
+        constant[start:stop] = block.constant_torque
         decel[start:stop] = block.decel_torque
         rms[start:stop] = block.rms_torque
         for k, (codes, detail) in enumerate(zip(block.statuses, block.details, strict=True)):
@@ -604,10 +536,11 @@ def evaluate_batch(
         verdicts[start:stop] = block.verdicts()
         worst_overload[start:stop] = block.overload
     return BatchEvaluation(
-        mean_speed_rpm=cases.mean_speed,
-        duty_cycle_percent=cases.duty,
-        cycle_time_s=cases.cycle,
+        mean_speed_rpm=cases.figures.mean_speed_rpm,
+        duty_cycle_percent=cases.figures.duty_cycle_percent,
+        cycle_time_s=cases.figures.cycle_s,
         accel_torque_nm=accel,
+        constant_torque_nm=constant,
         decel_torque_nm=decel,
         rms_torque_nm=rms,
         statuses=statuses,
@@ -658,10 +591,8 @@ def _rank(
     excluded = np.int8(len(VERDICT_BY_CODE))  # a verdict code beyond every verdict
     keep = min(top, n)
     chosen: list[list[int]] = []
-    for start, stop in _blocks(actuators, range(cases.speed.size)):
-        block = _evaluate_block(
-            cat, cases.rows(start, stop), zone_limits[start:stop], rules, exact=False
-        )
+    for start, stop in _blocks(actuators, range(cases.size)):
+        block = _evaluate_block(cat, cases.rows(start, stop), zone_limits[start:stop], rules)
         # ranking_key: verdict, the worst overload (0 unless unsuitable), then the
         # actuator's place in the static order (T_max, J_A, model).
         verdicts = block.verdicts()
@@ -759,15 +690,20 @@ def select_batch(
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     chosen = _rank(actuators, cat, cases, zone_limits, top, models, rules)
-    mean_speed = cases.mean_speed.tolist()
-    duty = cases.duty.tolist()
-    cycle = cases.cycle.tolist()
-    return [
-        Selection(
-            mean_speed_rpm=mean_speed[i],
-            duty_cycle_percent=duty[i],
-            cycle_time_s=cycle[i],
-            candidates=tuple(evaluate_each([actuators[j] for j in columns], app, rules=rules)),
+    selections = []
+    for i, (app, columns) in enumerate(zip(apps, chosen, strict=True)):
+        profile = profile_from(app.cycle, cases.figures, i, float(cases.pieces.holding[i]))
+        selections.append(
+            Selection(
+                mean_speed_rpm=profile.mean_speed_rpm,
+                duty_cycle_percent=profile.duty_cycle_percent,
+                cycle_time_s=profile.cycle_s,
+                candidates=tuple(
+                    evaluate_each(
+                        [actuators[j] for j in columns], app, rules=rules, profile=profile
+                    )
+                ),
+                profile=profile,
+            )
         )
-        for i, (app, columns) in enumerate(zip(apps, chosen, strict=True))
-    ]
+    return selections

@@ -195,7 +195,7 @@ class Operands(NamedTuple):
     """
 
     speed_rpm: Real
-    """Load speed n_2 [rpm] (Table 516.1)."""
+    """Load speed n_2 [rpm] (Table 516.1): the highest |speed| of the cycle."""
     load_inertia_kgm2: Real
     """Load moment of inertia J_L [kgm²]."""
     high_dynamics: Truth
@@ -207,8 +207,7 @@ class Operands(NamedTuple):
     decel_torque_nm: Real
     """Deceleration torque T_3 [Nm] (Eq. 514.1), negative while braking; NaN without J_A."""
     rms_torque_nm: Real
-    """RMS torque T_rms [Nm] (Eq. 514.2); NaN without J_A. The vectorised ranking computes
-    it within a few ulps; a rule that reads it says so (:attr:`Rule.reads_rms`)."""
+    """RMS torque T_rms [Nm] (Eq. 514.2); NaN without J_A."""
     max_torque_nm: Real
     """Repeated peak torque T_max [Nm]."""
     max_speed_rpm: Real
@@ -237,7 +236,8 @@ class Operands(NamedTuple):
     rated_speed_rpm: Real
     """Rated output speed [rpm] (CHA: rated motor speed / i); NaN where not published."""
     load_torque_nm: Real
-    """T_L [Nm]: the load torque, taken as acting at standstill for the brake."""
+    """The torque held at standstill [Nm]: |T_G| + T_F of the axis (for the chapter's load,
+    T_L, taken as acting at standstill for the brake)."""
     brake_holding_torque_nm: Real
     """The holding brake's holding torque at the output [Nm]; NaN where not published."""
 
@@ -340,9 +340,6 @@ class Rule:
     """Where an exceeded limit fails (elsewhere it warns); None: it always fails."""
     approximate: Formula | None = None
     """Where the limit is a simplified stand-in (reported with the check); None: never."""
-    reads_rms: bool = False
-    """True if value or limit reads T_rms: the vectorised ranking, which squares as
-    ``x * x``, then makes T_rms exact where the value lies near the limit."""
     lower_bound: Formula | None = None
     """The least value over every J_A ≥ 0, or None. Where the catalogue lacks only the
     rule's first requirement (J_A) and even this least value fails (it exceeds the limit,
@@ -507,13 +504,14 @@ PEAK_TORQUE = Rule(
     name="peak_torque",
     reference="Eq. 514.1",
     unit="Nm",
-    value=lambda q, xp: q.accel_torque_nm,
+    value=lambda q, xp: abs(q.accel_torque_nm),
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
     message=_torque_message("acceleration torque T_1"),
     lower_bound=lambda q, xp: q.accel_torque_floor_nm,
 )
-"""T_1 ≤ T_max (Eq. 514.1)."""
+"""|T_1| ≤ T_max (Eq. 514.1); T_1 is positive in the chapter's cycle, negative where a
+cycle's largest accelerating torque drives the other way."""
 
 DECEL_TORQUE = Rule(
     name="decel_torque",
@@ -598,7 +596,6 @@ CONTINUOUS_DUTY = Rule(
     # rated speed, and n_max is a peak.
     within=lambda q, xp: q.has_zone | (q.mean_speed_rpm <= _continuous_speed(q, xp)),
     approximate=lambda q, xp: xp.not_(q.has_zone),
-    reads_rms=True,
     message=_continuous_message,
     lower_bound=lambda q, xp: q.rms_torque_floor_nm,
 )

@@ -20,7 +20,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.motion import CycleTorques, profile_of, trapezoid
 from actuator_selection.core.units import rpm_to_rad_per_s
 
 
@@ -122,16 +124,6 @@ class Load:
             raise InvalidInputError("inertia_kgm2", "must be ≥ 0: a moment of inertia")
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
-class CycleTorques:
-    """Torques of one actuator over the cycle (Eq. 514.1, 514.2) [Nm]."""
-
-    accel_torque_nm: float
-    constant_torque_nm: float
-    decel_torque_nm: float
-    rms_torque_nm: float
-
-
 def acceleration_torque_nm(
     *,
     load_torque_nm: float,
@@ -209,14 +201,11 @@ def rms_torque_nm(
     ...                     decel_torque_nm=-85.478, pattern=p), 2)
     35.57
     """
-    try:
-        energy = (
-            accel_torque_nm**2 * pattern.accel_s
-            + constant_torque_nm**2 * pattern.constant_s
-            + decel_torque_nm**2 * pattern.decel_s
-        )
-    except OverflowError:  # float ** raises where float * would give inf
-        energy = math.inf
+    energy = (
+        accel_torque_nm * accel_torque_nm * pattern.accel_s
+        + constant_torque_nm * constant_torque_nm * pattern.constant_s
+        + decel_torque_nm * decel_torque_nm * pattern.decel_s
+    )
     rms = math.sqrt(energy / pattern.cycle_s)
     _require_finite_result("load", rms, what="T_rms (Eq. 514.2)")
     return rms
@@ -251,83 +240,23 @@ def duty_cycle_percent(pattern: SpeedPattern) -> float:
 def cycle_torques(
     *, pattern: SpeedPattern, load: Load, actuator_inertia_kgm2: float
 ) -> CycleTorques:
-    """T_1, T_2, T_3 and T_rms of one actuator driving ``load`` through ``pattern``.
+    """T_1, T_2, T_3 and T_rms of one actuator driving ``load`` through ``pattern``
+    (Eq. 514.1 and 514.2; T_2 = T_L): the pattern as the chapter's trapezoid of segments
+    (:func:`~actuator_selection.core.motion.trapezoid`), whose torques the flowchart uses.
 
-    Eq. 514.1 and 514.2; T_2 = T_L.
+    >>> p = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0)
+    >>> t = cycle_torques(pattern=p, load=Load(torque_nm=5, inertia_kgm2=1.3),
+    ...                   actuator_inertia_kgm2=0.86)
+    >>> t.accel_torque_nm == acceleration_torque_nm(load_torque_nm=5,
+    ...     actuator_inertia_kgm2=0.86, load_inertia_kgm2=1.3, speed_rpm=40, time_s=0.1)
+    True
     """
-    accel = acceleration_torque_nm(
-        load_torque_nm=load.torque_nm,
-        actuator_inertia_kgm2=actuator_inertia_kgm2,
-        load_inertia_kgm2=load.inertia_kgm2,
+    motion = trapezoid(
         speed_rpm=pattern.speed_rpm,
-        time_s=pattern.accel_s,
+        accel_s=pattern.accel_s,
+        constant_s=pattern.constant_s,
+        decel_s=pattern.decel_s,
+        pause_s=pattern.pause_s,
+        load=AxisLoad(inertia_kgm2=load.inertia_kgm2, friction_torque_nm=load.torque_nm),
     )
-    decel = deceleration_torque_nm(
-        load_torque_nm=load.torque_nm,
-        actuator_inertia_kgm2=actuator_inertia_kgm2,
-        load_inertia_kgm2=load.inertia_kgm2,
-        speed_rpm=pattern.speed_rpm,
-        time_s=pattern.decel_s,
-    )
-    constant = load.torque_nm
-    _require_finite_result("load", accel, what="T_1 (Eq. 514.1)")
-    _require_finite_result("load", decel, what="T_3 (Eq. 514.1)")
-    return CycleTorques(
-        accel_torque_nm=accel,
-        constant_torque_nm=constant,
-        decel_torque_nm=decel,
-        rms_torque_nm=rms_torque_nm(
-            accel_torque_nm=accel,
-            constant_torque_nm=constant,
-            decel_torque_nm=decel,
-            pattern=pattern,
-        ),
-    )
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class TorqueFloors:
-    """The least T_1, |T_3| and T_rms any actuator can give for a load case: their values
-    over every actuator inertia J_A ≥ 0 (Eq. 514.1, 514.2) [Nm].
-
-    An actuator whose J_A is not published still fails a check that even these least
-    values fail. T_1 = T_L + (J_A + J_L)·ω/t_1 grows with J_A, so its least value is at
-    J_A = 0; T_3 = T_L − (J_A + J_L)·ω/t_3 falls with J_A, so |T_3| is least at J_A = 0
-    when T_3 ≤ 0 there, and 0 otherwise (some J_A makes T_3 vanish). T_rms² is, with
-    T_1 = a + b·J_A and T_3 = d − e·J_A, the convex quadratic
-    (t_1·(a + b·J_A)² + T_L²·t_2 + t_3·(d − e·J_A)²)/t_0, least at
-    J* = (t_3·e·d − t_1·a·b)/(t_1·b² + t_3·e²), or at J_A = 0 where J* ≤ 0.
-
-    The worked example (Table 516.1) with J_A = 0: T_1 = 5 + 1.3·(2π/60·40)/0.1 = 59.45 Nm.
-
-    >>> f = torque_floors(pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1,
-    ...     decel_s=0.1, pause_s=1), load=Load(torque_nm=5, inertia_kgm2=1.3))
-    >>> round(f.accel_torque_nm, 2), round(f.decel_torque_nm, 2)
-    (59.45, 49.45)
-    """
-
-    accel_torque_nm: float
-    decel_torque_nm: float
-    """The least |T_3|."""
-    rms_torque_nm: float
-
-
-def torque_floors(*, pattern: SpeedPattern, load: Load) -> TorqueFloors:
-    """:class:`TorqueFloors` of a load case; written operation for operation like the
-    vectorised flowchart's (``core/batch.py``), so that both give the same floats."""
-    t1, t2, t3 = pattern.accel_s, pattern.constant_s, pattern.decel_s
-    angular = rpm_to_rad_per_s(pattern.speed_rpm)
-    b = angular / t1
-    e = angular / t3
-    a = load.torque_nm + load.inertia_kgm2 * b  # T_1 at J_A = 0
-    d = load.torque_nm - load.inertia_kgm2 * e  # T_3 at J_A = 0
-    denominator = t1 * (b * b) + t3 * (e * e)
-    best = (t3 * e * d - t1 * a * b) / denominator if denominator > 0 else 0.0
-    if best > 0:
-        a, d = a + b * best, d - e * best
-    energy = a * a * t1 + load.torque_nm * load.torque_nm * t2 + d * d * t3
-    return TorqueFloors(
-        accel_torque_nm=load.torque_nm + load.inertia_kgm2 * b,
-        decel_torque_nm=max(-(load.torque_nm - load.inertia_kgm2 * e), 0.0),
-        rms_torque_nm=math.sqrt(energy / pattern.cycle_s),
-    )
+    return profile_of(motion).torques(actuator_inertia_kgm2)

@@ -35,10 +35,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import StrEnum
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.checks import (
     BRAKE_RULES,
     INERTIA_RATIO_LIMIT,
@@ -48,16 +49,9 @@ from actuator_selection.core.checks import (
     Rule,
     Status,
 )
-from actuator_selection.core.cycle import (
-    CycleTorques,
-    Load,
-    SpeedPattern,
-    TorqueFloors,
-    cycle_torques,
-    duty_cycle_percent,
-    mean_speed_rpm,
-    torque_floors,
-)
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.motion import CycleTorques, Motion, Profile, profile_of, trapezoid
 
 __all__ = [
     "INERTIA_RATIO_LIMIT",
@@ -87,14 +81,58 @@ class Verdict(StrEnum):
 
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Application:
-    """The load case: speed pattern, load at the output, and how dynamic it is."""
+    """The load case: the motion (a cycle of segments driving an axis load, or the
+    chapter's trapezoid ``pattern`` with its ``load`` as a shorthand), and how dynamic it is.
 
-    pattern: SpeedPattern
-    load: Load
+    Give either ``motion`` or both ``pattern`` and ``load``; :attr:`cycle` is the motion
+    either way (:func:`~actuator_selection.core.motion.trapezoid` for the shorthand).
+    """
+
+    pattern: SpeedPattern | None = None
+    load: Load | None = None
+    motion: Motion | None = None
     high_dynamics: bool = True
     brake: bool = False
     """Whether the actuator is fitted with its holding brake (checked by
     :data:`~actuator_selection.core.checks.BRAKE_HOLDING`)."""
+    _profile: list[Profile] = field(
+        default_factory=list, init=False, repr=False, compare=False, hash=False
+    )
+    """The cycle's :class:`~actuator_selection.core.motion.Profile`, once computed."""
+
+    def __post_init__(self) -> None:
+        if self.motion is None and (self.pattern is None or self.load is None):
+            raise InvalidInputError("cycle", "needs a motion, or a speed pattern and a load")
+        if self.motion is not None and (self.pattern is not None or self.load is not None):
+            raise InvalidInputError(
+                "cycle", "give segments or the t_1…t_p pattern with its load, not both"
+            )
+
+    @property
+    def cycle(self) -> Motion:
+        """The motion: :attr:`motion`, or the chapter's trapezoid of the shorthand."""
+        if self.motion is not None:
+            return self.motion
+        assert self.pattern is not None
+        assert self.load is not None
+        p = self.pattern
+        return trapezoid(
+            speed_rpm=p.speed_rpm,
+            accel_s=p.accel_s,
+            constant_s=p.constant_s,
+            decel_s=p.decel_s,
+            pause_s=p.pause_s,
+            load=AxisLoad(
+                inertia_kgm2=self.load.inertia_kgm2, friction_torque_nm=self.load.torque_nm
+            ),
+        )
+
+    @property
+    def profile(self) -> Profile:
+        """The cycle prepared for the flowchart (computed once)."""
+        if not self._profile:
+            self._profile.append(profile_of(self.cycle))
+        return self._profile[0]
 
     @property
     def rules(self) -> tuple[Rule, ...]:
@@ -131,6 +169,8 @@ class Selection:
     duty_cycle_percent: float
     cycle_time_s: float
     candidates: tuple[Candidate, ...]
+    profile: Profile
+    """The cycle as the flowchart saw it (peak speed, load, pieces)."""
 
 
 def _verdict(checks: Iterable[Check]) -> Verdict:
@@ -146,8 +186,7 @@ def operands(
     actuator: Actuator,
     app: Application,
     torques: CycleTorques | None,
-    n_av: float,
-    floors: TorqueFloors,
+    profile: Profile,
 ) -> Operands:
     """The floats the rules compute from, NaN for what the catalogue does not publish.
 
@@ -159,19 +198,19 @@ def operands(
         The load case.
     torques
         T_1, T_2, T_3, T_rms (Eq. 514.1, 514.2) [Nm]; None without J_A.
-    n_av
-        Average output speed (Eq. 514.3) [rpm].
-    floors
-        The least T_1, |T_3|, T_rms over every J_A ≥ 0 (:func:`torque_floors`).
+    profile
+        The cycle's figures: n_av (Eq. 514.3), peak speed, the least T_1, |T_3|, T_rms
+        over every J_A ≥ 0, the torque held at standstill.
     """
     nan = math.nan
     zone = actuator.zone
+    n_av = profile.mean_speed_rpm
     zone_torque = None if zone is None else zone.torque_limit_nm(n_av)
     # Positional, in the order of the fields (a test checks each): a third of the time
     # that keywords take, for every actuator of every case.
     return Operands(
-        app.pattern.speed_rpm,
-        app.load.inertia_kgm2,
+        profile.peak_speed_rpm,
+        profile.motion.load.inertia_kgm2,
         app.high_dynamics,
         n_av,
         nan if torques is None else torques.accel_torque_nm,
@@ -185,12 +224,12 @@ def operands(
         zone is not None,
         nan if zone_torque is None else zone_torque,
         nan if zone is None else zone.max_speed_rpm,
-        floors.accel_torque_nm,
-        floors.decel_torque_nm,
-        floors.rms_torque_nm,
+        profile.accel_floor_nm,
+        profile.decel_floor_nm,
+        profile.rms_floor_nm,
         nan if actuator.continuous_speed_rpm is None else actuator.continuous_speed_rpm,
         nan if actuator.rated_speed_rpm is None else actuator.rated_speed_rpm,
-        app.load.torque_nm,
+        profile.holding_torque_nm,
         nan if actuator.brake_holding_torque_nm is None else actuator.brake_holding_torque_nm,
     )
 
@@ -205,27 +244,24 @@ def evaluate(
 
 
 def evaluate_each(
-    actuators: Iterable[Actuator], app: Application, *, rules: Sequence[Rule] | None = None
+    actuators: Iterable[Actuator],
+    app: Application,
+    *,
+    rules: Sequence[Rule] | None = None,
+    profile: Profile | None = None,
 ) -> list[Candidate]:
-    """:func:`evaluate` for each of ``actuators`` in turn, n_av (Eq. 514.3) computed once."""
+    """:func:`evaluate` for each of ``actuators`` in turn, the cycle prepared once
+    (``profile``: as the vectorised flowchart computed it, else :attr:`Application.profile`)."""
     if rules is None:
         rules = app.rules
-    n_av: float | None = None
-    floors: TorqueFloors | None = None
+    if profile is None:
+        profile = app.profile
     candidates = []
     for actuator in actuators:
         torques = (
-            cycle_torques(
-                pattern=app.pattern, load=app.load, actuator_inertia_kgm2=actuator.inertia_kgm2
-            )
-            if actuator.inertia_kgm2 is not None
-            else None
+            profile.torques(actuator.inertia_kgm2) if actuator.inertia_kgm2 is not None else None
         )
-        if n_av is None:  # after the torques: an input that overflows both is named as before
-            n_av = mean_speed_rpm(app.pattern)
-        if floors is None:
-            floors = torque_floors(pattern=app.pattern, load=app.load)
-        q = operands(actuator, app, torques, n_av, floors)
+        q = operands(actuator, app, torques, profile)
         checks = tuple([rule.check(q) for rule in rules])
         candidates.append(
             Candidate(actuator=actuator, verdict=_verdict(checks), torques=torques, checks=checks)
@@ -265,9 +301,11 @@ def select(
 ) -> Selection:
     """Run the flowchart for every actuator and rank the candidates (:func:`ranking_key`)."""
     candidates = sorted(evaluate_each(actuators, app, rules=rules), key=ranking_key)
+    profile = app.profile
     return Selection(
-        mean_speed_rpm=mean_speed_rpm(app.pattern),
-        duty_cycle_percent=duty_cycle_percent(app.pattern),
-        cycle_time_s=app.pattern.cycle_s,
+        mean_speed_rpm=profile.mean_speed_rpm,
+        duty_cycle_percent=profile.duty_cycle_percent,
+        cycle_time_s=profile.cycle_s,
         candidates=tuple(candidates),
+        profile=profile,
     )

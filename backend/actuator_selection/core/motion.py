@@ -1,0 +1,595 @@
+"""Motion cycles as segments: several moves, reversals, dwells, S-curves (issue "Real axes").
+
+The chapter's cycle (Fig. 516.2) is one trapezoid: accelerate in t_1, run for t_2, brake
+in t_3, pause for t_p. Machines move in several steps, both ways, with jerk-limited
+ramps, and hold weights at standstill. A :class:`Motion` is a closed list of
+:class:`Segment` (each a duration with its start and end speed at the output, a share
+of jerk-limited ramp, and a process torque) driving an
+:class:`~actuator_selection.core.axis.AxisLoad`. The CHA manual sums the RMS torque
+over n segments; so does this module:
+
+    T_rms = √( Σ_k ∫ T_k(t)² dt / t_0 ),   n_av = Σ_k ∫ |n_k(t)| dt / t_0,
+
+with the torque of each piece from :mod:`~actuator_selection.core.axis` (Eq. 514.1 with
+the load's friction, gravity, process torque and efficiency). Within a piece the
+acceleration is constant or varies linearly (a jerk ramp), so the torque varies linearly
+and ∫T² dt = t·(T_a² + T_a·T_b + T_b²)/3 exactly.
+
+The chapter's trapezoid is the shorthand :func:`trapezoid`: its four segments give the
+chapter's T_1, T_2, T_3, n_av and ED operation for operation (Eq. 514.1, 514.3, 514.4),
+and T_rms of Eq. 514.2 with squares taken as ``x * x``.
+
+What the flowchart reads from a cycle, per actuator (J_A):
+
+- ``accel_torque_nm`` T_1: of the torques at every piece's ends while the speed does not
+  fall in magnitude (accelerating, running, standing), the one of largest magnitude,
+  signed; in the trapezoid the chapter's T_1;
+- ``decel_torque_nm`` T_3: the same over the braking pieces (speed falling in magnitude);
+  0 where the cycle never brakes; in the trapezoid the chapter's T_3;
+- ``constant_torque_nm`` T_2: the same over pieces at constant nonzero speed; None
+  where the cycle has none; in the trapezoid T_L.
+
+Worked example (Table 516.1 with the FHA-25C-50-L's J_A = 0.86 kgm²):
+
+>>> from actuator_selection.core.axis import AxisLoad
+>>> m = trapezoid(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0,
+...               load=AxisLoad(inertia_kgm2=1.3, friction_torque_nm=5))
+>>> profile = profile_of(m)
+>>> t = profile.torques(0.86)
+>>> round(t.accel_torque_nm, 2), round(t.decel_torque_nm, 2), round(t.rms_torque_nm, 2)
+(95.48, -85.48, 35.57)
+>>> round(profile.mean_speed_rpm, 2), round(profile.duty_cycle_percent, 2)
+(6.15, 23.08)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from actuator_selection.core.axis import AxisLoad
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.units import RAD_PER_S_PER_RPM, rpm_to_rad_per_s
+
+FloatArray = npt.NDArray[np.float64]
+BoolArray = npt.NDArray[np.bool_]
+
+MAX_SEGMENTS = 200
+"""Segments in one cycle: more than any machine cycle an engineer sizes by hand."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Segment:
+    """One step of a cycle at the actuator output.
+
+    Parameters
+    ----------
+    duration_s
+        Duration [s], ≥ 0; > 0 where the speed changes.
+    start_rpm, end_rpm
+        Output speed at the start and at the end [rpm], signed (negative: the other
+        way). The speed changes at constant acceleration, or along an S-curve
+        (``jerk_share``). A segment does not pass through standstill: a reversal is two
+        segments, one braking to 0 and one accelerating the other way.
+    jerk_share
+        Share of the duration in which the acceleration ramps up and down [-], 0…1: 0 a
+        constant acceleration, 1 a pure S-curve (the acceleration rises linearly to its
+        peak and falls back to 0). Its peak is Δω/(t·(1 − share/2)).
+    process_torque_nm
+        An external torque during the segment at the output [Nm], signed; positive
+        opposes positive rotation (a pressing or cutting force, at the output).
+    """
+
+    duration_s: float
+    start_rpm: float
+    end_rpm: float
+    jerk_share: float = 0.0
+    process_torque_nm: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("duration_s", "start_rpm", "end_rpm", "jerk_share", "process_torque_nm"):
+            value = getattr(self, name)
+            if not math.isfinite(value):
+                raise InvalidInputError(name, f"must be a finite number, got {value!r}")
+        if self.duration_s < 0:
+            raise InvalidInputError("duration_s", "must be ≥ 0: a duration")
+        if self.start_rpm != self.end_rpm and self.duration_s <= 0:
+            raise InvalidInputError(
+                "duration_s", "must be > 0 where the speed changes: Δω/t is the acceleration"
+            )
+        if self.start_rpm * self.end_rpm < 0:
+            raise InvalidInputError(
+                "end_rpm",
+                "must not change sign within a segment: brake to 0 in one segment and "
+                "accelerate the other way in the next",
+            )
+        if not 0 <= self.jerk_share <= 1:
+            raise InvalidInputError("jerk_share", "must be between 0 and 1: a share of t")
+
+    @property
+    def direction(self) -> int:
+        """+1, −1, or 0 at standstill: the sign of the speed."""
+        speed = self.end_rpm if self.end_rpm != 0 else self.start_rpm
+        return (speed > 0) - (speed < 0)
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Motion:
+    """A closed cycle: segments in order, the last ending at the speed the first starts at."""
+
+    segments: tuple[Segment, ...]
+    load: AxisLoad
+
+    def __post_init__(self) -> None:
+        if not self.segments:
+            raise InvalidInputError("segments", "must hold at least one segment")
+        if len(self.segments) > MAX_SEGMENTS:
+            raise InvalidInputError("segments", f"must hold at most {MAX_SEGMENTS} segments")
+        for k, (a, b) in enumerate(zip(self.segments, self.segments[1:], strict=False)):
+            if a.end_rpm != b.start_rpm:
+                raise InvalidInputError(
+                    f"segments.{k + 1}.start_rpm",
+                    "must equal the end speed of the segment before: speed cannot jump",
+                )
+        if self.segments[-1].end_rpm != self.segments[0].start_rpm:
+            raise InvalidInputError(
+                "segments",
+                "the cycle must end at the speed it starts at: it repeats",
+            )
+        if not sum(s.duration_s for s in self.segments) > 0:
+            raise InvalidInputError("segments", "the cycle must last longer than 0 s")
+
+
+def trapezoid(
+    *,
+    speed_rpm: float,
+    accel_s: float,
+    constant_s: float,
+    decel_s: float,
+    pause_s: float,
+    load: AxisLoad,
+) -> Motion:
+    """The chapter's cycle (Fig. 516.2) as four segments: 0 → n_2 in t_1, n_2 for t_2,
+    n_2 → 0 in t_3, standstill for t_p (kept even where t_2 or t_p is 0, so that T_2 is
+    reported as the chapter reports it)."""
+    return Motion(
+        segments=(
+            Segment(duration_s=accel_s, start_rpm=0.0, end_rpm=speed_rpm),
+            Segment(duration_s=constant_s, start_rpm=speed_rpm, end_rpm=speed_rpm),
+            Segment(duration_s=decel_s, start_rpm=speed_rpm, end_rpm=0.0),
+            Segment(duration_s=pause_s, start_rpm=0.0, end_rpm=0.0),
+        ),
+        load=load,
+    )
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Piece:
+    """A stretch of a segment in which the acceleration is constant or linear and the
+    torque's efficiency factor does not change: T = c + (J_A + J)·α at each end."""
+
+    segment: int
+    """Index of the segment it belongs to."""
+    duration_s: float
+    start_rpm: float
+    end_rpm: float
+    accel_start: float
+    """Output acceleration at the start [rad/s²]."""
+    accel_end: float
+    """… at the end [rad/s²] (equal to the start where constant)."""
+    static_nm: float
+    """c: the load's torque without inertia, times the efficiency factor [Nm]."""
+    inertia_kgm2: float
+    """J: the load's inertia times the efficiency factor [kgm²]."""
+    braking: bool
+    """Whether the speed falls in magnitude."""
+    direction: int
+
+    @property
+    def constant_speed(self) -> bool:
+        """Moving at constant speed."""
+        return self.direction != 0 and self.accel_start == 0.0 and self.accel_end == 0.0
+
+
+def _pieces_of(k: int, seg: Segment, load: AxisLoad) -> list[Piece]:
+    s = seg.direction
+    # T_G + s·T_F + T_P (the trapezoid: 0 + 1·T_L + 0 = T_L exactly).
+    static = load.gravity_torque_nm + s * load.friction_torque_nm + seg.process_torque_nm
+    braking = s != 0 and abs(seg.end_rpm) < abs(seg.start_rpm)
+    if seg.start_rpm == seg.end_rpm:
+        ramps = [(seg.duration_s, seg.start_rpm, seg.end_rpm, 0.0, 0.0)]
+    else:
+        t = seg.duration_s
+        dn = seg.end_rpm - seg.start_rpm
+        if seg.jerk_share == 0:
+            alpha = rpm_to_rad_per_s(dn) / t  # Eq. 514.1: (n_2·2π/60)/t_1
+            ramps = [(t, seg.start_rpm, seg.end_rpm, alpha, alpha)]
+        else:
+            t_j = seg.jerk_share * t / 2
+            t_c = t - 2 * t_j
+            peak = rpm_to_rad_per_s(dn) / (t - t_j)
+            gained = dn * (t_j / 2) / (t - t_j)  # [rpm] while the acceleration ramps
+            n_a, n_b = seg.start_rpm + gained, seg.end_rpm - gained
+            ramps = [
+                (t_j, seg.start_rpm, n_a, 0.0, peak),
+                (t_c, n_a, n_b, peak, peak),
+                (t_j, n_b, seg.end_rpm, peak, 0.0),
+            ]
+    pieces: list[Piece] = []
+    eta = load.efficiency
+    for t, n0, n1, a0, a1 in ramps:
+        for part in _split_by_power_flow(t, n0, n1, a0, a1, static, load.inertia_kgm2, s, eta):
+            pt, pn0, pn1, pa0, pa1, factor = part
+            pieces.append(
+                Piece(
+                    segment=k,
+                    duration_s=pt,
+                    start_rpm=pn0,
+                    end_rpm=pn1,
+                    accel_start=pa0,
+                    accel_end=pa1,
+                    static_nm=static * factor,
+                    inertia_kgm2=load.inertia_kgm2 * factor,
+                    braking=braking,
+                    direction=s,
+                )
+            )
+    return pieces
+
+
+def _split_by_power_flow(
+    t: float,
+    n0: float,
+    n1: float,
+    a0: float,
+    a1: float,
+    static: float,
+    inertia: float,
+    s: int,
+    eta: float,
+) -> list[tuple[float, float, float, float, float, float]]:
+    """The piece with its efficiency factor (1/η where the actuator drives the load, η
+    where the load drives back; :mod:`~actuator_selection.core.axis`), split where the
+    load side's torque T_load = c + J_L·α changes sign within it."""
+    if eta == 1.0 or s == 0:
+        return [(t, n0, n1, a0, a1, 1.0)]
+    x0, x1 = static + inertia * a0, static + inertia * a1
+
+    def factor(x: float) -> float:
+        return 1.0 / eta if x * s > 0 else eta
+
+    if x0 * x1 >= 0 or t == 0:
+        return [(t, n0, n1, a0, a1, factor(x0 if x0 != 0 else x1))]
+    share = x0 / (x0 - x1)
+    tau = share * t
+    a_mid = a0 + (a1 - a0) * share
+    # speed at τ: n0 + (a0·τ + (a1 − a0)·τ²/(2t)) in rpm
+    n_mid = n0 + (a0 * tau + (a1 - a0) * tau * tau / (2 * t)) / RAD_PER_S_PER_RPM
+    return [
+        (tau, n0, n_mid, a0, a_mid, factor(x0)),
+        (t - tau, n_mid, n1, a_mid, a1, factor(x1)),
+    ]
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class CycleTorques:
+    """Torques of one actuator over the cycle [Nm] (module docstring)."""
+
+    accel_torque_nm: float
+    constant_torque_nm: float | None
+    decel_torque_nm: float
+    rms_torque_nm: float
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class SegmentTorque:
+    """The torque at the start and end of each piece of one segment, for the cycle chart."""
+
+    segment: int
+    times_s: tuple[float, ...]
+    """Times from the cycle's start at which the torques hold."""
+    torques_nm: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Profile:
+    """A cycle prepared for the flowchart: its pieces and the figures that do not depend
+    on the actuator (arrays built by :func:`profile_arrays`, read back as floats)."""
+
+    motion: Motion
+    pieces: tuple[Piece, ...]
+    cycle_s: float
+    mean_speed_rpm: float
+    duty_cycle_percent: float
+    peak_speed_rpm: float
+    accel_floor_nm: float
+    decel_floor_nm: float
+    rms_floor_nm: float
+    holding_torque_nm: float
+
+    def torques(self, actuator_inertia_kgm2: float) -> CycleTorques:
+        """T_1, T_2, T_3, T_rms for an actuator of inertia J_A, written operation for
+        operation like the vectorised flowchart's (``core/batch.py``)."""
+        j_a = actuator_inertia_kgm2
+        energy = 0.0
+        accel, accel_abs = 0.0, -1.0
+        decel, decel_abs = 0.0, -1.0
+        constant, constant_abs = math.nan, -1.0
+        for p in self.pieces:
+            inertia = j_a + p.inertia_kgm2
+            t0 = p.static_nm + inertia * p.accel_start
+            t1 = p.static_nm + inertia * p.accel_end
+            if p.accel_start == p.accel_end:
+                energy += t0 * t0 * p.duration_s
+            else:
+                energy += (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 * p.duration_s
+            for torque in (t0, t1):
+                magnitude = abs(torque)
+                if p.braking:
+                    if magnitude > decel_abs:
+                        decel, decel_abs = torque, magnitude
+                elif magnitude > accel_abs:
+                    accel, accel_abs = torque, magnitude
+                if p.constant_speed and magnitude > constant_abs:
+                    constant, constant_abs = torque, magnitude
+        rms = math.sqrt(energy / self.cycle_s)
+        for value, what in ((accel, "T_1 (Eq. 514.1)"), (decel, "T_3 (Eq. 514.1)")):
+            _require_finite_result(value, what)
+        _require_finite_result(rms, "T_rms (Eq. 514.2)")
+        return CycleTorques(
+            accel_torque_nm=accel,
+            constant_torque_nm=None if constant_abs < 0 else constant,
+            decel_torque_nm=decel,
+            rms_torque_nm=rms,
+        )
+
+    def segment_torques(self, actuator_inertia_kgm2: float) -> tuple[SegmentTorque, ...]:
+        """Per segment, the torque at the ends of its pieces along the cycle's time."""
+        out: dict[int, tuple[list[float], list[float]]] = {}
+        clock = 0.0
+        for p in self.pieces:
+            inertia = actuator_inertia_kgm2 + p.inertia_kgm2
+            times, torques = out.setdefault(p.segment, ([], []))
+            times.extend((clock, clock + p.duration_s))
+            torques.extend(
+                (p.static_nm + inertia * p.accel_start, p.static_nm + inertia * p.accel_end)
+            )
+            clock += p.duration_s
+        return tuple(
+            SegmentTorque(segment=k, times_s=tuple(ts), torques_nm=tuple(qs))
+            for k, (ts, qs) in out.items()
+        )
+
+
+def pieces_of(motion: Motion) -> tuple[Piece, ...]:
+    """The cycle's pieces in order (:class:`Piece`)."""
+    return tuple(
+        p for k, seg in enumerate(motion.segments) for p in _pieces_of(k, seg, motion.load)
+    )
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class PieceArrays:
+    """The pieces of many cycles as arrays, cycles × pieces, padded with empty standstill
+    pieces (no time, no torque: they change no sum and no maximum)."""
+
+    duration: FloatArray
+    start_rpm: FloatArray
+    end_rpm: FloatArray
+    accel_start: FloatArray
+    accel_end: FloatArray
+    static: FloatArray
+    inertia: FloatArray
+    braking: BoolArray
+    constant_speed: BoolArray
+    moving: BoolArray
+    direction: FloatArray
+    holding: FloatArray
+    """Per cycle: the torque the actuator or its brake holds at standstill, |T_G| + T_F
+    (friction counted as the chapter's conservative reading: a T_L that may act at rest)."""
+
+
+def piece_arrays(motions: Sequence[Motion]) -> PieceArrays:
+    """:class:`PieceArrays` of ``motions``."""
+    lists = [pieces_of(m) for m in motions]
+    width = max((len(ps) for ps in lists), default=1)
+    shape = (len(lists), width)
+
+    def fill(attr: str) -> FloatArray:
+        out = np.zeros(shape)
+        for i, ps in enumerate(lists):
+            out[i, : len(ps)] = [getattr(p, attr) for p in ps]
+        return out
+
+    def flags(attr: str) -> BoolArray:
+        out = np.zeros(shape, dtype=np.bool_)
+        for i, ps in enumerate(lists):
+            out[i, : len(ps)] = [getattr(p, attr) for p in ps]
+        return out
+
+    direction = fill("direction")
+    return PieceArrays(
+        duration=fill("duration_s"),
+        start_rpm=fill("start_rpm"),
+        end_rpm=fill("end_rpm"),
+        accel_start=fill("accel_start"),
+        accel_end=fill("accel_end"),
+        static=fill("static_nm"),
+        inertia=fill("inertia_kgm2"),
+        braking=flags("braking"),
+        constant_speed=flags("constant_speed"),
+        moving=direction != 0,
+        direction=direction,
+        holding=np.array(
+            [abs(m.load.gravity_torque_nm) + m.load.friction_torque_nm for m in motions],
+            dtype=np.float64,
+        ),
+    )
+
+
+def trapezoid_piece_arrays(
+    *,
+    speed_rpm: FloatArray,
+    accel_s: FloatArray,
+    constant_s: FloatArray,
+    decel_s: FloatArray,
+    pause_s: FloatArray,
+    torque_nm: FloatArray,
+    inertia_kgm2: FloatArray,
+) -> PieceArrays:
+    """:func:`piece_arrays` of the chapter's trapezoids (:func:`trapezoid` with a friction
+    load T_L, J_L), built as columns: the same arrays, bit for bit (a test compares them),
+    without a Python object per piece, for batches of thousands of cases."""
+    rows = speed_rpm.size
+    zero = np.zeros(rows)
+    with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
+        accel = speed_rpm * RAD_PER_S_PER_RPM / accel_s
+        decel = -speed_rpm * RAD_PER_S_PER_RPM / decel_s
+
+    def columns(*values: FloatArray) -> FloatArray:
+        return np.stack(values, axis=1)
+
+    pattern = np.array([[False, True, False, False]])
+    inertia = columns(inertia_kgm2, inertia_kgm2, inertia_kgm2, inertia_kgm2)
+    return PieceArrays(
+        duration=columns(accel_s, constant_s, decel_s, pause_s),
+        start_rpm=columns(zero, speed_rpm, speed_rpm, zero),
+        end_rpm=columns(speed_rpm, speed_rpm, zero, zero),
+        accel_start=columns(accel, zero, decel, zero),
+        accel_end=columns(accel, zero, decel, zero),
+        static=columns(torque_nm, torque_nm, torque_nm, zero),
+        inertia=inertia,
+        braking=np.repeat(np.array([[False, False, True, False]]), rows, axis=0),
+        constant_speed=np.repeat(pattern, rows, axis=0),
+        moving=np.repeat(np.array([[True, True, True, False]]), rows, axis=0),
+        direction=np.repeat(np.array([[1.0, 1.0, 1.0, 0.0]]), rows, axis=0),
+        holding=torque_nm.copy(),
+    )
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class CycleFigures:
+    """What the flowchart needs of each cycle that does not depend on the actuator."""
+
+    cycle_s: FloatArray
+    mean_speed_rpm: FloatArray
+    duty_cycle_percent: FloatArray
+    peak_speed_rpm: FloatArray
+    accel_floor_nm: FloatArray
+    """The least |T_1| over every J_A ≥ 0."""
+    decel_floor_nm: FloatArray
+    """The least |T_3| over every J_A ≥ 0."""
+    rms_floor_nm: FloatArray
+    """The least T_rms over every J_A ≥ 0."""
+
+
+def cycle_figures(p: PieceArrays) -> CycleFigures:
+    """t_0, n_av (Eq. 514.3), ED (Eq. 514.4), the peak speed and the torque floors of each
+    cycle, summed piece by piece in order (the trapezoid: the chapter's operations).
+
+    n_av sums ∫|n| dt: (n_a + n_b)/2·t for a piece of constant acceleration, plus
+    (α_a − α_b)·t²/12 (in rpm) where the acceleration ramps (a jerk ramp's speed is
+    quadratic in time).
+
+    The floors bound the checks from below where J_A is unknown (issue "The checks a
+    sizing engineer signs", item 7): the torque T = c + (J_A + J)·α of a piece that does
+    not brake grows in the direction of motion with J_A, so |T| ≥ s·T(J_A = 0); that of a
+    braking piece falls, so |T| ≥ max(−s·T(0), 0); at standstill it does not depend on
+    J_A. T_rms² is a convex quadratic in J_A, least at −B/(2C) or at J_A = 0.
+    """
+    rows, width = p.duration.shape
+    with np.errstate(all="ignore"):  # as Python floats: overflow gives inf, no error
+        cycle = np.zeros(rows)
+        travel = np.zeros(rows)
+        moving = np.zeros(rows)
+        peak = np.zeros(rows)
+        accel_floor = np.zeros(rows)
+        decel_floor = np.zeros(rows)
+        a_coef, b_coef, c_coef = np.zeros(rows), np.zeros(rows), np.zeros(rows)
+        for k in range(width):
+            t = p.duration[:, k]
+            n0, n1 = p.start_rpm[:, k], p.end_rpm[:, k]
+            a0, a1 = p.accel_start[:, k], p.accel_end[:, k]
+            cycle = cycle + t
+            ramp = (a0 - a1) * (t * t) / 12.0 / RAD_PER_S_PER_RPM
+            distance = np.where(a0 == a1, (n0 + n1) / 2 * t, (n0 + n1) / 2 * t + ramp)
+            travel = travel + np.abs(distance)
+            moving = moving + np.where(p.moving[:, k], t, 0.0)
+            peak = np.maximum(peak, np.maximum(np.abs(n0), np.abs(n1)))
+            s = p.direction[:, k]
+            for alpha in (a0, a1):
+                at_zero = p.static[:, k] + (0.0 + p.inertia[:, k]) * alpha
+                standing = s == 0
+                grows = np.where(standing, np.abs(at_zero), s * at_zero)
+                accel_floor = np.where(p.braking[:, k], accel_floor, np.maximum(accel_floor, grows))
+                decel_floor = np.where(
+                    p.braking[:, k], np.maximum(decel_floor, -(s * at_zero)), decel_floor
+                )
+            # ∫T² dt as a quadratic in J_A: T_a = p_a + a0·J_A, T_b = p_b + a1·J_A.
+            pa = p.static[:, k] + p.inertia[:, k] * a0
+            pb = p.static[:, k] + p.inertia[:, k] * a1
+            third = t / 3.0
+            a_coef = a_coef + third * (pa * pa + pa * pb + pb * pb)
+            b_coef = b_coef + third * (2 * pa * a0 + pa * a1 + pb * a0 + 2 * pb * a1)
+            c_coef = c_coef + third * (a0 * a0 + a0 * a1 + a1 * a1)
+        best = np.where(c_coef > 0, -b_coef / (2 * c_coef), 0.0)
+        best = np.where(best > 0, best, 0.0)
+        energy = a_coef + best * (b_coef + best * c_coef)
+        rms_floor = np.sqrt(np.maximum(energy, 0.0) / cycle)
+        mean = travel / cycle
+        duty = moving / cycle * 100.0
+    return CycleFigures(
+        cycle_s=cycle,
+        mean_speed_rpm=mean,
+        duty_cycle_percent=duty,
+        peak_speed_rpm=peak,
+        accel_floor_nm=accel_floor,
+        decel_floor_nm=decel_floor,
+        rms_floor_nm=rms_floor,
+    )
+
+
+def profile_of(motion: Motion) -> Profile:
+    """The :class:`Profile` of one cycle (the figures as :func:`cycle_figures` gives them
+    for many, so that a single selection and a batch agree bit for bit)."""
+    arrays = piece_arrays((motion,))
+    figures = cycle_figures(arrays)
+    return profile_from(motion, figures, 0, float(arrays.holding[0]))
+
+
+def profile_from(motion: Motion, figures: CycleFigures, row: int, holding: float) -> Profile:
+    """The :class:`Profile` of ``motion`` with its figures taken from row ``row`` of
+    arrays computed for many cycles at once."""
+    profile = Profile(
+        motion=motion,
+        pieces=pieces_of(motion),
+        cycle_s=float(figures.cycle_s[row]),
+        mean_speed_rpm=float(figures.mean_speed_rpm[row]),
+        duty_cycle_percent=float(figures.duty_cycle_percent[row]),
+        peak_speed_rpm=float(figures.peak_speed_rpm[row]),
+        accel_floor_nm=float(figures.accel_floor_nm[row]),
+        decel_floor_nm=float(figures.decel_floor_nm[row]),
+        rms_floor_nm=float(figures.rms_floor_nm[row]),
+        holding_torque_nm=holding,
+    )
+    if not math.isfinite(profile.mean_speed_rpm):
+        _require_finite_result(profile.mean_speed_rpm, "n_av (Eq. 514.3)", field="speed_rpm")
+    _require_finite_result(profile.accel_floor_nm, "T_1 (Eq. 514.1)")
+    _require_finite_result(profile.decel_floor_nm, "T_3 (Eq. 514.1)")
+    _require_finite_result(profile.rms_floor_nm, "T_rms (Eq. 514.2)")
+    return profile
+
+
+def _require_finite_result(value: float, what: str, *, field: str = "load") -> None:
+    """Finite inputs can still overflow a product: a 422 naming the input, never ±∞ or a
+    500 (PostgreSQL's JSON refuses ``Infinity``)."""
+    if not math.isfinite(value):
+        raise InvalidInputError(
+            field,
+            f"gives {what} beyond any floating-point number: no real drive has such a load "
+            "and cycle",
+        )
