@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import io
 import struct
-import time
 import zipfile
 from typing import Any
 
@@ -130,16 +129,15 @@ def test_location_of_a_non_latin1_model_is_percent_encoded(api: SalesApi) -> Non
 
 def test_too_many_batch_cases_are_refused_at_once(client: TestClient) -> None:
     case = {**worked_example.request(), "high_dynamics": True}
-    body = {"cases": [case] * (MAX_BATCH_CASES + 1), "top": 1}
-    started = time.perf_counter()
+    bad = worked_example.request()
+    bad["load"]["torque_nm"] = -1  # would be an error of its own, were the cases validated
+    body = {"cases": [case] * MAX_BATCH_CASES + [bad], "top": 1}
     response = client.post("/api/v1/selections/batch", json=body)
-    elapsed = time.perf_counter() - started
+    # Only the count is named: the cases were not validated one by one (that took ~3.4 s).
     error = only_error(response)
     assert error["loc"] == ["body", "cases"]
     assert f"at most {MAX_BATCH_CASES} cases" in error["msg"]
     assert f"got {MAX_BATCH_CASES + 1}" in error["msg"]
-    # Validating every case took ~3.4 s; refusing by count alone is JSON decoding only.
-    assert elapsed < 1.5, elapsed
 
 
 # 7. Strict JSON types: a boolean is no number, a number no boolean, text no number.
