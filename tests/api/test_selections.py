@@ -49,7 +49,13 @@ def test_worked_example_over_http(client: TestClient) -> None:
     response = post(client, WORKED_EXAMPLE)
     assert response.status_code == 201
     body = response.json()
-    assert body["load"] == {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3}
+    assert body["load"] == {
+        "speed_rpm": 40,
+        "torque_nm": 5,
+        "inertia_kgm2": 1.3,
+        "gravity_torque_nm": 0,
+        "efficiency": 1,
+    }
     assert body["models"] == ["FHA-25C-50-L"]
     assert body["mean_speed_rpm"] == pytest.approx(6.15, abs=0.005)
     assert body["duty_cycle_percent"] == pytest.approx(23.08, abs=0.005)

@@ -95,7 +95,7 @@ def without(candidate: dict[str, Any], *keys: str) -> dict[str, Any]:
     return {k: v for k, v in candidate.items() if k not in keys}
 
 
-SELECTION_KEYS = ("selection_id", "catalogue_version", "actuator")
+SELECTION_KEYS = ("selection_id", "catalogue_version", "actuator", "segment_torques")
 """What a single selection's candidate detail adds to a candidate."""
 
 
@@ -196,7 +196,13 @@ def test_worked_example_in_a_batch(batch_client: TestClient) -> None:
     assert c["verdict"] == "unconfirmed"
     assert c["accel_torque_nm"] == pytest.approx(95.48, abs=0.005)
     assert first["mean_speed_rpm"] == pytest.approx(6.15, abs=0.005)
-    assert first["load"] == {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3}
+    assert first["load"] == {
+        "speed_rpm": 40,
+        "torque_nm": 5,
+        "inertia_kgm2": 1.3,
+        "gravity_torque_nm": 0,
+        "efficiency": 1,
+    }
     assert len(second["candidates"]) == 2
     assert second["candidates"][0]["verdict"] == "suitable"
 

@@ -276,9 +276,10 @@ def _result_chunks(
                 result_body(
                     id=id_,
                     request=case,
-                    load=app.load,
                     selection=selection,
-                    candidates=_candidates(selection, case.load.speed_rpm, body, drives),
+                    candidates=_candidates(
+                        selection, selection.profile.peak_speed_rpm, body, drives
+                    ),
                 )
             )
             for id_, case, app, selection in zip(

@@ -15,7 +15,6 @@ from typing import Any
 
 from pydantic import ConfigDict, Field, field_validator
 
-from actuator_selection.core.cycle import Load
 from actuator_selection.core.selection import Candidate, Check, Selection, Status, Verdict
 from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import ResponseModel, StrictModel
@@ -26,6 +25,7 @@ from actuator_selection.schemas.selections import (
     CandidateFigures,
     ResolvedLoad,
     SelectionRequest,
+    resolved_load,
 )
 
 MAX_BATCH_CASES = 20_000
@@ -216,18 +216,13 @@ def result_body(
     *,
     id: str | None,
     request: SelectionRequest,
-    load: Load,
     selection: Selection,
     candidates: list[dict[str, Any]],
 ) -> dict[str, Any]:
     """One entry of ``results`` (:class:`BatchResultOut`) as a JSON-ready dict."""
     return {
         "id": id,
-        "load": {
-            "speed_rpm": float(request.load.speed_rpm),
-            "torque_nm": float(load.torque_nm),
-            "inertia_kgm2": float(load.inertia_kgm2),
-        },
+        "load": resolved_load(selection.profile),
         "cycle_time_s": selection.cycle_time_s,
         "mean_speed_rpm": selection.mean_speed_rpm,
         "duty_cycle_percent": selection.duty_cycle_percent,

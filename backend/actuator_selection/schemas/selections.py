@@ -10,10 +10,12 @@ from typing import Annotated, Any, Literal
 
 from pydantic import ConfigDict, Discriminator, Field, Tag
 
+from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.drive import DriveOptions
-from actuator_selection.core.errors import DomainError
+from actuator_selection.core.errors import DomainError, InvalidInputError
 from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
+from actuator_selection.core.motion import MAX_SEGMENTS, Motion, Profile, Segment, trapezoid
 from actuator_selection.core.selection import Application, Candidate
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import CheckOut
@@ -38,7 +40,13 @@ from actuator_selection.schemas.controllers import (
 )
 
 SpeedRpm = Annotated[
-    float, Field(gt=0, le=MAX_SPEED_RPM, description="n_2, load speed at the output [rpm]")
+    float,
+    Field(
+        gt=0,
+        le=MAX_SPEED_RPM,
+        description="n_2, load speed at the output [rpm]; with the t_1…t_p cycle only "
+        "(segments give their own speeds)",
+    ),
 ]
 Mass = Annotated[float, Field(ge=0, le=MAX_MASS_KG, description="moved mass m [kg]")]
 Friction = Annotated[
@@ -56,12 +64,24 @@ def _renamed(exc: DomainError, prefix: str) -> DomainError:
 class _LoadIn(StrictModel):
     """A load as sent; :meth:`to_core` resolves it to T_L and J_L at the output."""
 
+    speed_rpm: SpeedRpm | None = None
+
     def to_core(self) -> Load:
         """The load as the core sees it; a core error names its field under ``load``."""
         try:
             return self._resolve()
         except DomainError as exc:
             raise _renamed(exc, "load") from None
+
+    def to_axis(self) -> AxisLoad:
+        """The load at the output with its friction, weight and losses (``core/axis.py``)."""
+        load = self.to_core()
+        return AxisLoad(inertia_kgm2=load.inertia_kgm2, friction_torque_nm=load.torque_nm)
+
+    @property
+    def chapter_shorthand(self) -> bool:
+        """Whether the load is the chapter's T_L, J_L alone (no weight, no losses)."""
+        return True
 
     def _resolve(self) -> Load:
         raise NotImplementedError
@@ -71,21 +91,46 @@ class DirectLoad(_LoadIn):
     """T_L and J_L given directly, at the actuator output."""
 
     type: Literal["direct"] = "direct"
-    speed_rpm: SpeedRpm
     torque_nm: float = Field(
         ge=0, le=MAX_TORQUE_NM, description="T_L, load torque opposing the motion [Nm]"
     )
     inertia_kgm2: Inertia = Field(description="J_L, load moment of inertia [kgm²]")
+    gravity_torque_nm: float = Field(
+        default=0.0,
+        ge=-MAX_TORQUE_NM,
+        le=MAX_TORQUE_NM,
+        description="T_G, a torque that acts at standstill too (a weight less its "
+        "counterweight) [Nm], signed: positive opposes positive rotation; negative "
+        "overhauls (drives the axis)",
+    )
+    efficiency: float = Field(
+        default=1.0,
+        ge=MIN_EFFICIENCY,
+        le=1,
+        description="η between actuator and load: torques are divided by η where the "
+        "actuator drives, multiplied where the load drives back",
+    )
 
     def _resolve(self) -> Load:
         return Load(torque_nm=self.torque_nm, inertia_kgm2=self.inertia_kgm2)
+
+    def to_axis(self) -> AxisLoad:
+        return AxisLoad(
+            inertia_kgm2=self.inertia_kgm2,
+            friction_torque_nm=self.torque_nm,
+            gravity_torque_nm=self.gravity_torque_nm,
+            efficiency=self.efficiency,
+        )
+
+    @property
+    def chapter_shorthand(self) -> bool:
+        return self.gravity_torque_nm == 0 and self.efficiency == 1
 
 
 class BallScrewLoad(_LoadIn):
     """Linear horizontal motion by a ball screw (Fig. 515.2, Eq. 515.4)."""
 
     type: Literal["ball_screw"]
-    speed_rpm: SpeedRpm
     mass_kg: Mass
     lead_m: float = Field(
         ge=MIN_LENGTH_M, le=MAX_LENGTH_M, description="screw lead P [m/rev], ≥ 1 µm"
@@ -113,7 +158,6 @@ class RotaryTableLoad(_LoadIn):
     """A rotary table, a uniform disc (Fig. 515.3/515.5, Eq. 515.6)."""
 
     type: Literal["rotary_table"]
-    speed_rpm: SpeedRpm
     mass_kg: Mass
     diameter_m: float = Field(
         ge=MIN_LENGTH_M, le=MAX_LENGTH_M, description="table diameter D [m], ≥ 1 µm"
@@ -153,7 +197,7 @@ LoadIn = Annotated[
 
 
 class CycleIn(StrictModel):
-    """The speed pattern of Fig. 516.2."""
+    """The speed pattern of Fig. 516.2: the chapter's trapezoid, at the load speed n_2."""
 
     accel_s: float = Field(
         ge=MIN_RAMP_S, le=MAX_TIME_S, description="t_1, acceleration time [s], > 0"
@@ -163,6 +207,131 @@ class CycleIn(StrictModel):
         ge=MIN_RAMP_S, le=MAX_TIME_S, description="t_3, deceleration time [s], > 0"
     )
     pause_s: float = Field(ge=0, le=MAX_TIME_S, description="t_p, standstill [s]")
+
+    def to_motion(self, speed: float | None, axis: AxisLoad) -> Motion:
+        """The trapezoid as segments at the output (``speed`` in the load's unit)."""
+        if speed is None:
+            raise InvalidInputError("load.speed_rpm", "is required with the t_1…t_p cycle")
+        return trapezoid(
+            speed_rpm=speed * axis.speed_rpm_per_unit,
+            accel_s=self.accel_s,
+            constant_s=self.constant_s,
+            decel_s=self.decel_s,
+            pause_s=self.pause_s,
+            load=axis,
+        )
+
+
+class SegmentIn(StrictModel):
+    """One step of a cycle: to ``speed`` in ``duration_s`` (or at ``accel``), along a ramp
+    or an S-curve, with a process load. Speeds and loads are in the load's units (rpm and
+    Nm at the output for the chapter's loads)."""
+
+    speed: float | None = Field(
+        default=None,
+        ge=-MAX_SPEED_RPM,
+        le=MAX_SPEED_RPM,
+        description="speed at the segment's end, signed (negative: the other way); omitted: "
+        "the speed the segment starts at (a run at constant speed, or a dwell at 0)",
+    )
+    duration_s: float | None = Field(
+        default=None,
+        ge=0,
+        le=MAX_TIME_S,
+        description="duration [s]; give it or `accel`",
+    )
+    accel: float | None = Field(
+        default=None,
+        gt=0,
+        le=1e9,
+        description="acceleration (magnitude) in speed units per second, instead of "
+        "`duration_s` for a change of speed",
+    )
+    jerk_share: float = Field(
+        default=0.0,
+        ge=0,
+        le=1,
+        description="share of the duration in which the acceleration ramps up and down: 0 "
+        "constant acceleration, 1 a pure S-curve",
+    )
+    process_load: float = Field(
+        default=0.0,
+        ge=-MAX_TORQUE_NM,
+        le=MAX_TORQUE_NM,
+        description="external torque [Nm] (or force [N] on a linear axis) during the "
+        "segment, signed: positive opposes positive motion",
+    )
+
+
+class SegmentsCycleIn(StrictModel):
+    """A cycle of segments (issue "Real axes"); it repeats, so it must end at the speed it
+    starts at. The CHA manual sums T_rms and n_av over n segments; so does the service."""
+
+    start_speed: float = Field(
+        default=0.0,
+        ge=-MAX_SPEED_RPM,
+        le=MAX_SPEED_RPM,
+        description="speed at the cycle's start, in the load's unit",
+    )
+    segments: list[SegmentIn] = Field(min_length=1, max_length=MAX_SEGMENTS)
+
+    def to_motion(self, speed: float | None, axis: AxisLoad) -> Motion:
+        """The segments at the output; a core error names the segment's field."""
+        if speed is not None:
+            raise InvalidInputError(
+                "load.speed_rpm", "must be left out with segments: they give the speeds"
+            )
+        to_rpm, to_nm = axis.speed_rpm_per_unit, axis.torque_nm_per_force_unit
+        segments = []
+        start = self.start_speed
+        for k, seg in enumerate(self.segments):
+            where = f"cycle.segments.{k}"
+            end = start if seg.speed is None else seg.speed
+            if (seg.duration_s is None) == (seg.accel is None):
+                raise InvalidInputError(f"{where}.duration_s", "give either duration_s or accel")
+            if seg.accel is not None:
+                if end == start:
+                    raise InvalidInputError(
+                        f"{where}.accel", "needs a change of speed; give duration_s for a run"
+                    )
+                duration = abs(end - start) / seg.accel
+            else:
+                assert seg.duration_s is not None
+                duration = seg.duration_s
+            try:
+                segments.append(
+                    Segment(
+                        duration_s=duration,
+                        start_rpm=start * to_rpm,
+                        end_rpm=end * to_rpm,
+                        jerk_share=seg.jerk_share,
+                        process_torque_nm=seg.process_load * to_nm,
+                    )
+                )
+            except DomainError as exc:
+                field = {"end_rpm": "speed", "start_rpm": "speed"}.get(exc.field, exc.field)
+                raise type(exc)(f"{where}.{field}", exc.message) from None
+            start = end
+        try:
+            return Motion(segments=tuple(segments), load=axis)
+        except DomainError as exc:
+            raise _renamed(exc, "cycle") from None
+
+
+def _cycle_kind(value: Any) -> str:
+    if isinstance(value, dict):
+        return "segments" if "segments" in value else "trapezoid"
+    return "segments" if isinstance(value, SegmentsCycleIn) else "trapezoid"
+
+
+AnyCycleIn = Annotated[
+    Annotated[CycleIn, Tag("trapezoid")] | Annotated[SegmentsCycleIn, Tag("segments")],
+    Discriminator(
+        _cycle_kind,
+        custom_error_type="cycle_form",
+        custom_error_message="cycle must be the t_1…t_p pattern or a list of segments",
+    ),
+]
 
 
 ModelName = Annotated[str, Field(min_length=1, max_length=60)]
@@ -181,7 +350,7 @@ class SelectionRequest(StrictModel):
     model_config = ConfigDict(json_schema_extra={"examples": [WORKED_EXAMPLE]})
 
     load: LoadIn
-    cycle: CycleIn
+    cycle: AnyCycleIn
     high_dynamics: bool = Field(
         default=True, description="J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise"
     )
@@ -193,16 +362,26 @@ class SelectionRequest(StrictModel):
     models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
 
     def to_core(self) -> Application:
-        """The application as the core sees it."""
+        """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
+        t_1…t_p pattern) where that is what was sent, else a motion of segments."""
+        speed = self.load.speed_rpm
+        if isinstance(self.cycle, CycleIn) and self.load.chapter_shorthand:
+            if speed is None:
+                raise InvalidInputError("load.speed_rpm", "is required with the t_1…t_p cycle")
+            return Application(
+                pattern=SpeedPattern(
+                    speed_rpm=speed,
+                    accel_s=self.cycle.accel_s,
+                    constant_s=self.cycle.constant_s,
+                    decel_s=self.cycle.decel_s,
+                    pause_s=self.cycle.pause_s,
+                ),
+                load=self.load.to_core(),
+                high_dynamics=self.high_dynamics,
+                brake=self.brake,
+            )
         return Application(
-            pattern=SpeedPattern(
-                speed_rpm=self.load.speed_rpm,
-                accel_s=self.cycle.accel_s,
-                constant_s=self.cycle.constant_s,
-                decel_s=self.cycle.decel_s,
-                pause_s=self.cycle.pause_s,
-            ),
-            load=self.load.to_core(),
+            motion=self.cycle.to_motion(speed, self.load.to_axis()),
             high_dynamics=self.high_dynamics,
             brake=self.brake,
         )
@@ -211,9 +390,23 @@ class SelectionRequest(StrictModel):
 class ResolvedLoad(ResponseModel):
     """The load at the output after a mechanism's conversion (Eq. 515.4/515.6)."""
 
-    speed_rpm: float
-    torque_nm: float
-    inertia_kgm2: float
+    speed_rpm: float = Field(description="n_2: the cycle's highest |speed| at the output [rpm]")
+    torque_nm: float = Field(description="T_L: friction, opposing the motion [Nm]")
+    inertia_kgm2: float = Field(description="J_L at the output [kgm²]")
+    gravity_torque_nm: float = Field(description="T_G: acts at standstill too, signed [Nm]")
+    efficiency: float = Field(description="η between actuator and load")
+
+
+def resolved_load(profile: Profile) -> dict[str, float]:
+    """:class:`ResolvedLoad` of a cycle, as a JSON-ready dict."""
+    axis = profile.motion.load
+    return {
+        "speed_rpm": profile.peak_speed_rpm,
+        "torque_nm": axis.friction_torque_nm,
+        "inertia_kgm2": axis.inertia_kgm2,
+        "gravity_torque_nm": axis.gravity_torque_nm,
+        "efficiency": axis.efficiency,
+    }
 
 
 class CheckBrief(ResponseModel):
@@ -303,6 +496,44 @@ class CandidateOut(CandidateFigures):
     )
 
 
+class SegmentTorqueOut(ResponseModel):
+    """The torque along one segment of the cycle, for the cycle chart: the torque at each
+    end of its pieces (straight between them), at times from the cycle's start."""
+
+    segment: int = Field(description="index of the segment (the trapezoid: t_1, t_2, t_3, t_p)")
+    times_s: list[float]
+    torques_nm: list[float]
+
+
+class SegmentOut(ResponseModel):
+    """One segment of the cycle at the actuator output."""
+
+    start_s: float = Field(description="time from the cycle's start [s]")
+    duration_s: float
+    start_rpm: float = Field(description="output speed at the start, signed [rpm]")
+    end_rpm: float = Field(description="output speed at the end, signed [rpm]")
+    jerk_share: float
+    process_torque_nm: float
+
+
+def segments_out(profile: Profile) -> list[dict[str, float]]:
+    """The cycle's segments at the output (:class:`SegmentOut`), as JSON-ready dicts."""
+    out, clock = [], 0.0
+    for seg in profile.motion.segments:
+        out.append(
+            {
+                "start_s": clock,
+                "duration_s": seg.duration_s,
+                "start_rpm": seg.start_rpm,
+                "end_rpm": seg.end_rpm,
+                "jerk_share": seg.jerk_share,
+                "process_torque_nm": seg.process_torque_nm,
+            }
+        )
+        clock += seg.duration_s
+    return out
+
+
 class CandidateDetailOut(CandidateFigures):
     """One candidate of a stored selection in full: every check in words, every controller
     of Table 521.1 with its criteria and voltage check, and the actuator's catalogue data."""
@@ -318,6 +549,10 @@ class CandidateDetailOut(CandidateFigures):
     controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
     controllers_note: str = Field(description="what the controller list rests on")
     actuator: ActuatorOut = Field(description="the catalogue entry, as GET /actuators/{model}")
+    segment_torques: list[SegmentTorqueOut] = Field(
+        default_factory=list,
+        description="the torque along each segment with this actuator's J_A (empty without J_A)",
+    )
 
     @classmethod
     def build(
@@ -326,12 +561,24 @@ class CandidateDetailOut(CandidateFigures):
         selection_id: str,
         catalogue_version: int,
         candidate: Candidate,
+        profile: Profile,
         drive: DriveOptions,
         actuator: ActuatorOut,
     ) -> CandidateDetailOut:
         """The detail of one candidate with its drive options."""
         t = candidate.torques
         a = candidate.actuator
+        j_a = a.inertia_kgm2
+        segment_torques = (
+            []
+            if j_a is None
+            else [
+                SegmentTorqueOut(
+                    segment=st.segment, times_s=list(st.times_s), torques_nm=list(st.torques_nm)
+                )
+                for st in profile.segment_torques(j_a)
+            ]
+        )
         return cls(
             selection_id=selection_id,
             catalogue_version=catalogue_version,
@@ -349,6 +596,7 @@ class CandidateDetailOut(CandidateFigures):
             controllers_excluded=drive.excluded,
             controllers_note=controllers_note(drive),
             actuator=actuator,
+            segment_torques=segment_torques,
         )
 
 
@@ -367,13 +615,20 @@ class SelectionOut(ResponseModel):
     catalogue_version: int = Field(description="version of the catalogue the selection used")
     load: ResolvedLoad
     mechanism: dict[str, Any] | None = Field(description="the mechanism as sent, if any")
-    cycle: CycleIn
+    cycle: AnyCycleIn
     high_dynamics: bool
     brake: bool = Field(default=False, description="whether a holding brake is fitted")
     models: list[str] | None = Field(
         default=None, description="the catalogue restriction as sent; null = whole catalogue"
     )
-    cycle_time_s: float = Field(description="t_0 = t_1 + t_2 + t_3 + t_p [s]")
+    segments: list[SegmentOut] = Field(
+        default_factory=list,
+        description="the cycle at the actuator output, segment by segment (the trapezoid: "
+        "t_1, t_2, t_3, t_p)",
+    )
+    cycle_time_s: float = Field(
+        description="t_0 = t_1 + t_2 + t_3 + t_p, the sum of the segments [s]"
+    )
     mean_speed_rpm: float = Field(description="n_av (Eq. 514.3) [rpm]")
     duty_cycle_percent: float = Field(description="ED (Eq. 514.4) [%]")
     ranking: str = Field(default=RANKING_RULE, description="how candidates are ordered")

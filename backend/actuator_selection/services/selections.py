@@ -36,7 +36,6 @@ from actuator_selection.core.batch import (
     evaluate_batch,
 )
 from actuator_selection.core.checks import Rule
-from actuator_selection.core.cycle import duty_cycle_percent, mean_speed_rpm
 from actuator_selection.core.drive import shared_voltage_check
 from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.core.errors import ConflictError, NotFoundError
@@ -48,6 +47,8 @@ from actuator_selection.schemas.selections import (
     CandidateDetailOut,
     DirectLoad,
     SelectionRequest,
+    resolved_load,
+    segments_out,
 )
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
 
@@ -199,11 +200,11 @@ def _candidates(
     verdicts = ev.verdicts[0].tolist()
     overload = ev.worst_overload[0].tolist()
     accel = ev.accel_torque_nm[0].tolist()
+    constant = ev.constant_torque_nm[0].tolist()
     decel = ev.decel_torque_nm[0].tolist()
     rms = ev.rms_torque_nm[0].tolist()
     checks = _checks(ev)
-    load_torque = app.load.torque_nm
-    speed = app.pattern.speed_rpm
+    speed = app.profile.peak_speed_rpm
     out = []
     ranked = sorted(
         range(len(actuators)), key=lambda j: (verdicts[j], overload[j], *size_key(actuators[j]))
@@ -220,7 +221,7 @@ def _candidates(
                 "gear_ratio": a.gear_ratio,
                 "verdict": verdict.value,
                 "accel_torque_nm": accel[j] if known else None,
-                "constant_torque_nm": load_torque if known else None,
+                "constant_torque_nm": constant[j] if constant[j] == constant[j] else None,
                 "decel_torque_nm": decel[j] if known else None,
                 "rms_torque_nm": rms[j] if known else None,
                 "checks": checks[j],
@@ -241,27 +242,22 @@ def size_selection(
     """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
     groups = _DriveOptionGroups(catalogue)
     candidates = _candidates(actuators, app, catalogue, groups)
-    speed = body.load.speed_rpm
-    pattern = app.pattern
+    profile = app.profile
     request = body.model_dump(mode="json")
-    load = app.load
     answer = {
         "id": str(uuid.uuid4()),
         "created_at": created_at,
         "catalogue_version": catalogue.version,
-        "load": {
-            "speed_rpm": speed,
-            "torque_nm": load.torque_nm,
-            "inertia_kgm2": load.inertia_kgm2,
-        },
+        "load": resolved_load(profile),
+        "segments": segments_out(profile),
         "mechanism": None if isinstance(body.load, DirectLoad) else request["load"],
         "cycle": request["cycle"],
         "high_dynamics": body.high_dynamics,
         "brake": body.brake,
         "models": body.models,
-        "cycle_time_s": pattern.cycle_s,
-        "mean_speed_rpm": mean_speed_rpm(pattern),
-        "duty_cycle_percent": duty_cycle_percent(pattern),
+        "cycle_time_s": profile.cycle_s,
+        "mean_speed_rpm": profile.mean_speed_rpm,
+        "duty_cycle_percent": profile.duty_cycle_percent,
         "ranking": RANKING_RULE,
         "check_rules": _check_rules(app.rules),
         "controllers": groups.refs(),
@@ -338,10 +334,12 @@ def candidate_detail(
         raise NotFoundError(
             "model", f"{model!r} is no candidate of selection {selection_id!r}", where="path"
         )
+    app = body.to_core()
     return CandidateDetailOut.build(
         selection_id=selection_id,
         catalogue_version=version,
-        candidate=evaluate(actuator, body.to_core()),
-        drive=DriveContext(catalogue).options(actuator, speed_rpm=body.load.speed_rpm),
+        candidate=evaluate(actuator, app),
+        profile=app.profile,
+        drive=DriveContext(catalogue).options(actuator, speed_rpm=app.profile.peak_speed_rpm),
         actuator=ActuatorOut.from_record(record),
     )
