@@ -224,9 +224,7 @@ def test_friction_reverses_with_the_motion() -> None:
         ((Segment(duration_s=0, start_rpm=0, end_rpm=0),), "segments"),  # lasts 0 s
     ],
 )
-def test_a_cycle_that_cannot_repeat_is_refused(
-    segments: tuple[Segment, ...], field: str
-) -> None:
+def test_a_cycle_that_cannot_repeat_is_refused(segments: tuple[Segment, ...], field: str) -> None:
     with pytest.raises(InvalidInputError) as caught:
         Motion(segments=segments, load=AxisLoad(inertia_kgm2=1, friction_torque_nm=0))
     assert caught.value.field == field
