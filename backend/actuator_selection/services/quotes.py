@@ -20,10 +20,12 @@ import hashlib
 import json
 from dataclasses import dataclass
 from datetime import UTC, date, datetime
+from typing import Any
 from urllib.parse import quote as quote_path
 
 from sqlalchemy.orm import Session
 
+from actuator_selection.core.compatibility import match_controller
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.money import QuoteLine, quote_totals
 from actuator_selection.core.quote_status import IllegalTransitionError, QuoteStatus, transition
@@ -35,6 +37,7 @@ from actuator_selection.core.sales import (
     QuoteRecord,
 )
 from actuator_selection.db.admin import CatalogueAdminRepository
+from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.sales import (
     ApiKeyRepository,
@@ -142,6 +145,73 @@ def _price(
     return prices[0]
 
 
+CONTROLLER_RULE = (
+    "Table 521.1: the controller must be one the selection lists for the actuator "
+    "(family, DC bus class, temperature sensor and feedback not excluded)"
+)
+
+
+def _compatible(stored: dict[str, Any], model: str) -> dict[int, str]:
+    """The Table 521.1 rows the stored answer lists for ``model``, with their level."""
+    refs = stored.get("controllers") or []
+    raw: dict[str, Any] = next(
+        (c for c in stored.get("candidates", ()) if c.get("model") == model), {}
+    )
+    rows: dict[int, str] = {}
+    for group in raw.get("drive_options") or ():
+        for index in group.get("controllers", ()):
+            row = refs[index].get("source_row") if 0 <= index < len(refs) else None
+            if isinstance(row, int):
+                rows.setdefault(row, str(group.get("level", "")))
+    return rows
+
+
+def _controller_description(
+    session: Session, body: QuoteCreate, stored: dict[str, Any], model: str
+) -> str:
+    """The controller line's text; with ``source_row``, checked against Table 521.1 as the
+    selection matched it for ``model`` (422 naming the field and the rule otherwise)."""
+    assert body.controller is not None
+    item = body.controller
+    if item.source_row is None:
+        return f"Servo controller {item.type_name}"
+    loc: list[str | int] = ["body", "controller", "source_row"]
+    row = item.source_row
+    repository = ProtectionRepository(session)
+    record = repository.controller(row)
+    if record is None:
+        raise invalid(
+            loc,
+            f"Table 521.1 (and the catalogue) has no active controller in row {row}",
+            "unknown_controller",
+        )
+    controller = record.controller
+    compatible = _compatible(stored, model)
+    level = compatible.get(row)
+    if level is None:
+        interface = repository.interfaces([model]).get(model)
+        reasons = (
+            [
+                r.message
+                for r in match_controller(
+                    controller=controller, actuator=interface.interface
+                ).excluded_by
+            ]
+            if interface is not None
+            else []
+        )
+        listed = ", ".join(str(r) for r in sorted(compatible)[:12])
+        raise invalid(
+            loc,
+            f"{controller.name} (row {row}) is not a controller Table 521.1 matches for "
+            f"{model}"
+            + (f": {'; '.join(reasons)}" if reasons else "")
+            + f". Rule: {CONTROLLER_RULE}; rows listed for {model}: {listed or 'none'}",
+            "controller_not_compatible",
+        )
+    return f"Servo controller {item.type_name} ({controller.name}, Table 521.1 row {row}: {level})"
+
+
 def _new_quote(
     body: QuoteCreate,
     *,
@@ -217,7 +287,7 @@ def _new_quote(
             (
                 "controller",
                 body.controller.item_code,
-                f"Servo controller {body.controller.type_name}",
+                _controller_description(session, body, stored, candidate.model),
                 body.controller.quantity,
                 controller_price,
             )
