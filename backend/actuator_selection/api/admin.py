@@ -1,5 +1,7 @@
 """Catalogue management for admin keys: actuators, zones, controllers, import/export.
 
+The use cases live in ``services/catalogue_admin.py``; each endpoint calls one.
+
 Writes are validated by the seed files' rules (``core/catalogue_files.py``), so
 an actuator or controller the API accepts is one the seed loader accepts and
 vice versa. Every change raises the catalogue version. Retiring is a soft
@@ -20,10 +22,7 @@ and writes nothing.
 
 from __future__ import annotations
 
-import io
 import json
-import zipfile
-from collections.abc import Callable, Mapping
 from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
 from urllib.parse import quote
@@ -32,12 +31,6 @@ from fastapi import APIRouter, Body, Depends, Path, Query, Response
 
 from actuator_selection.api.auth import AdminDep
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import (
-    ConflictError,
-    RequestFieldError,
-    ResourceNotFoundError,
-    field_error,
-)
 from actuator_selection.api.uploads import (
     Upload,
     file_errors,
@@ -51,22 +44,13 @@ from actuator_selection.core.catalogue_files import (
     CATALOGUE_SPECS,
     CONTROLLERS,
     INTERFACES,
-    JSON_KEYS,
 )
-from actuator_selection.core.csvio import (
-    WHOLE_NUMBER_MAX,
-    CatalogueFileError,
-    Problem,
-    to_json_values,
-    write,
-)
-from actuator_selection.db.admin import CatalogueAdminRepository
-from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
-from actuator_selection.db.seed import catalogue_from_json, parse_catalogue
+from actuator_selection.core.csvio import WHOLE_NUMBER_MAX, CatalogueFileError, Problem
+from actuator_selection.db.seed import CatalogueFiles, catalogue_from_json, parse_catalogue
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, write_json_schema
 from actuator_selection.schemas.controllers import ControllerOut, InterfaceOut
+from actuator_selection.services import catalogue_admin
 
 router = APIRouter(tags=["catalogue management"])
 
@@ -89,64 +73,6 @@ Row = Annotated[
 ]
 
 
-def _field_errors(exc: CatalogueFileError, *prefix: str | int, rows: bool = False) -> Exception:
-    """422 entries at ``body.<prefix>.<column>`` (or ``<prefix>.<index>.<column>`` for rows)."""
-    entries = []
-    for p in exc.problems:
-        loc: list[str | int] = ["body", *prefix]
-        if rows:
-            loc.append(p.line)
-        if p.column:
-            loc.append(p.column)
-        entries.append(field_error(loc, f"{p.column or 'value'} {p.message}", "invalid_value"))
-    return RequestFieldError(entries)
-
-
-def _validated(
-    validate: Callable[[Mapping[str, object]], dict[str, Any]], values: Mapping[str, object]
-) -> dict[str, Any]:
-    """``validate(values)``, its problems as 422 entries at ``body.<column>``."""
-    try:
-        return validate(values)
-    except CatalogueFileError as exc:
-        raise _field_errors(exc) from None
-
-
-def _keyed_by_path(body: Mapping[str, Any], column: str, value: str | int) -> dict[str, Any]:
-    """``body`` with ``column`` set to the path's ``value``; a body that names another
-    value is refused (null or absent: the path's)."""
-    if body.get(column) not in (None, value, str(value)):
-        raise RequestFieldError(
-            [field_error(["body", column], f"must be {value!r}, as in the path", "mismatch")]
-        )
-    return {**body, column: value}
-
-
-def _unknown_model(model: str) -> ResourceNotFoundError:
-    return ResourceNotFoundError.at(
-        ["path", "model"], f"unknown actuator model {model!r}", "not_found"
-    )
-
-
-def _actuator_out(session: SessionDep, model: str) -> ActuatorOut:
-    record = CatalogueRepository(session).actuator(model)
-    if record is None:
-        raise _unknown_model(model)
-    return ActuatorOut.from_record(record)
-
-
-def _known(session: SessionDep, model: str, *, active: bool = False) -> None:
-    state = CatalogueAdminRepository(session).state(model)
-    if state is None:
-        raise _unknown_model(model)
-    if active and state.retired_at is not None:
-        raise ConflictError.at(
-            ["path", "model"],
-            f"actuator {model!r} is retired; PUT /actuators/{model} brings it back first",
-            "retired",
-        )
-
-
 @router.post(
     "/actuators", status_code=201, openapi_extra=_ACTUATOR_BODY, responses={**_ERRORS, 409: {}}
 )
@@ -154,19 +80,10 @@ def create_actuator(
     _: AdminDep, session: SessionDep, response: Response, body: Annotated[dict[str, Any], Body()]
 ) -> ActuatorOut:
     """Add an actuator (the columns of actuators.csv, units in the names)."""
-    repository = CatalogueAdminRepository(session)
-    values = _validated(repository.validate_actuator, body)
-    if repository.state(values["model"]) is not None:
-        raise ConflictError.at(
-            ["body", "model"],
-            f"actuator {values['model']!r} exists (retired ones too); "
-            "PUT /actuators/{model} replaces it",
-            "exists",
-        )
-    repository.save_actuator(values)
+    out = catalogue_admin.create_actuator(session, body)
     # A header is Latin-1: a model such as "FHA-Ω" is sent percent-encoded (RFC 3986).
-    response.headers["Location"] = f"/api/v1/actuators/{quote(values['model'], safe='')}"
-    return _actuator_out(session, values["model"])
+    response.headers["Location"] = f"/api/v1/actuators/{quote(out.model, safe='')}"
+    return out
 
 
 @router.put(
@@ -181,11 +98,7 @@ def replace_actuator(
 
     A retired actuator is brought back.
     """
-    _known(session, model)
-    repository = CatalogueAdminRepository(session)
-    values = _validated(repository.validate_actuator, _keyed_by_path(body, "model", model))
-    repository.save_actuator(values)
-    return _actuator_out(session, model)
+    return catalogue_admin.replace_actuator(session, model, body)
 
 
 @router.delete(
@@ -195,8 +108,7 @@ def replace_actuator(
 )
 def retire_actuator(model: str, _: AdminDep, session: SessionDep) -> Response:
     """Retire an actuator: gone from listings and selections, kept for quotes (idempotent)."""
-    _known(session, model)
-    CatalogueAdminRepository(session).retire(model, now=datetime.now(UTC))
+    catalogue_admin.retire_actuator(session, model, now=datetime.now(UTC))
     return Response(status_code=204)
 
 
@@ -206,18 +118,7 @@ def retire_actuator(model: str, _: AdminDep, session: SessionDep) -> Response:
 )
 def set_zone(model: str, body: ZoneIn, _: AdminDep, session: SessionDep) -> ActuatorOut:
     """Replace the continuous-duty zone's edge (Fig. 517.1) of an actuator."""
-    _known(session, model, active=True)
-    repository = CatalogueAdminRepository(session)
-    points = [p.model_dump() for p in body.points]
-    try:
-        checked = repository.validate_zone(model, points, body.source)
-    except CatalogueFileError as exc:
-        source = [p for p in exc.problems if p.column == "source"]
-        if source:
-            raise _field_errors(CatalogueFileError(source[:1])) from None
-        raise _field_errors(exc, "points", rows=True) from None
-    repository.set_zone(model, checked, source=str(body.source).strip())
-    return _actuator_out(session, model)
+    return catalogue_admin.set_zone(session, model, body)
 
 
 @router.delete(
@@ -227,13 +128,8 @@ def set_zone(model: str, body: ZoneIn, _: AdminDep, session: SessionDep) -> Actu
 )
 def delete_zone(model: str, _: AdminDep, session: SessionDep) -> Response:
     """Remove an actuator's zone (its continuous-duty check then uses T₀ or says no data)."""
-    _known(session, model, active=True)
-    CatalogueAdminRepository(session).set_zone(model, [], source=None)
+    catalogue_admin.delete_zone(session, model)
     return Response(status_code=204)
-
-
-def _interface_out(session: SessionDep, model: str) -> InterfaceOut:
-    return InterfaceOut.from_record(ProtectionRepository(session).interfaces([model])[model])
 
 
 @router.put(
@@ -250,17 +146,7 @@ def set_interface(
     empty or missing one is "no data" (the criterion is then neither confirmed nor
     excluded).
     """
-    _known(session, model, active=True)
-    given = {
-        k: " ".join(v) if isinstance(v, list) and all(isinstance(o, str) for o in v) else v
-        for k, v in body.items()
-    }
-    repository = CatalogueAdminRepository(session)
-    values = _validated(
-        repository.validate_interface, _keyed_by_path(given, "actuator_model", model)
-    )
-    repository.set_interface(model, values)
-    return _interface_out(session, model)
+    return catalogue_admin.set_interface(session, model, body)
 
 
 @router.delete(
@@ -270,20 +156,8 @@ def set_interface(
 )
 def delete_interface(model: str, _: AdminDep, session: SessionDep) -> Response:
     """Forget an actuator's interface: its bus, sensor and feedback criteria say no data."""
-    _known(session, model, active=True)
-    CatalogueAdminRepository(session).set_interface(model, None)
+    catalogue_admin.delete_interface(session, model)
     return Response(status_code=204)
-
-
-def _controller_out(session: SessionDep, row: int) -> ControllerOut:
-    record = ProtectionRepository(session).controller(row)
-    assert record is not None, "written in this request"
-    return ControllerOut.from_record(record)
-
-
-def _known_controller(session: SessionDep, row: int) -> None:
-    if CatalogueAdminRepository(session).controller_state(row) is None:
-        raise ResourceNotFoundError.at(["path", "row"], f"no controller in row {row}", "not_found")
 
 
 @router.post(
@@ -300,20 +174,9 @@ def create_controller(
     Marks are ``tested`` (●), ``possible`` (○) or empty. Without ``source_row``
     the row takes the next free number; Table 521.1's rows keep 1–28.
     """
-    repository = CatalogueAdminRepository(session)
-    if body.get("source_row") is None:
-        body = {**body, "source_row": repository.next_controller_row()}
-    values = _validated(repository.validate_controller, body)
-    row = values["source_row"]
-    if repository.controller_state(row) is not None:
-        raise ConflictError.at(
-            ["body", "source_row"],
-            f"controller row {row} exists (retired ones too); PUT /controllers/{row} replaces it",
-            "exists",
-        )
-    repository.save_controller(values)
-    response.headers["Location"] = f"/api/v1/controllers/{row}"
-    return _controller_out(session, row)
+    out = catalogue_admin.create_controller(session, body)
+    response.headers["Location"] = f"/api/v1/controllers/{out.source_row}"
+    return out
 
 
 @router.put(
@@ -328,11 +191,7 @@ def replace_controller(
 
     A retired controller is brought back.
     """
-    _known_controller(session, row)
-    repository = CatalogueAdminRepository(session)
-    values = _validated(repository.validate_controller, _keyed_by_path(body, "source_row", row))
-    repository.save_controller(values)
-    return _controller_out(session, row)
+    return catalogue_admin.replace_controller(session, row, body)
 
 
 @router.delete(
@@ -342,8 +201,7 @@ def replace_controller(
 )
 def retire_controller(row: Row, _: AdminDep, session: SessionDep) -> Response:
     """Retire a controller: gone from the matrix and from selections (idempotent)."""
-    _known_controller(session, row)
-    CatalogueAdminRepository(session).retire_controller(row, now=datetime.now(UTC))
+    catalogue_admin.retire_controller(session, row, now=datetime.now(UTC))
     return Response(status_code=204)
 
 
@@ -364,25 +222,35 @@ def export_catalogue(
     ] = "zip",
 ) -> Response:
     """The active catalogue in the seed format (retired actuators and controllers left out)."""
-    stored = CatalogueAdminRepository(session).export()
-    version = CatalogueVersionRepository(session).current()
-    headers = {"X-Catalogue-Version": str(version)}
-    if format == "json":
-        body = {
-            JSON_KEYS[spec.file]: [to_json_values(spec, row) for row in stored[spec.file]]
-            for spec in CATALOGUE_SPECS
-        }
-        return Response(
-            json.dumps(body, ensure_ascii=False, allow_nan=False),
-            media_type="application/json",
-            headers=headers,
-        )
-    buffer = io.BytesIO()
-    with zipfile.ZipFile(buffer, "w", compression=zipfile.ZIP_DEFLATED) as archive:
-        for spec in CATALOGUE_SPECS:
-            archive.writestr(spec.file, write(spec, stored[spec.file]))
-    headers["Content-Disposition"] = f'attachment; filename="catalogue-v{version}.zip"'
-    return Response(buffer.getvalue(), media_type="application/zip", headers=headers)
+    export = catalogue_admin.export_catalogue(session, format)
+    headers = {"X-Catalogue-Version": str(export.version)}
+    if export.filename is not None:
+        headers["Content-Disposition"] = f'attachment; filename="{export.filename}"'
+    return Response(export.body, media_type=export.media_type, headers=headers)
+
+
+def catalogue_upload(upload: Annotated[Upload, Depends(raw_upload)]) -> CatalogueFiles:
+    """The request body as the seed files: a ZIP of CSV files or their JSON form (415
+    otherwise, 422 naming file, line and column of every problem)."""
+    try:
+        if upload.media_type == "application/zip":
+            return parse_catalogue(
+                unzip_csv(upload.body, wanted=tuple(s.file for s in CATALOGUE_SPECS))
+            )
+        if upload.media_type == "application/json":
+            try:
+                document = json.loads(text_of(upload.body, file="(body)"))
+            except ValueError:
+                document = None
+            if not isinstance(document, dict):
+                problem = Problem(
+                    file="(body)", line=0, column=None, message="must be a JSON object"
+                )
+                raise CatalogueFileError([problem])
+            return catalogue_from_json(document)
+    except CatalogueFileError as exc:
+        raise file_errors(exc) from None
+    raise unsupported(upload.media_type, ("application/zip", "application/json"))
 
 
 @router.post(
@@ -404,32 +272,9 @@ def export_catalogue(
 )
 def import_catalogue(
     _: AdminDep,
-    upload: Annotated[Upload, Depends(raw_upload)],
+    files: Annotated[CatalogueFiles, Depends(catalogue_upload)],
     session: SessionDep,
     dry_run: Annotated[bool, Query(description="report what would change, change nothing")] = False,
 ) -> CatalogueImportOut:
     """Replace the whole catalogue from the seed files, atomically."""
-    try:
-        if upload.media_type == "application/zip":
-            files = parse_catalogue(
-                unzip_csv(upload.body, wanted=tuple(s.file for s in CATALOGUE_SPECS))
-            )
-        elif upload.media_type == "application/json":
-            try:
-                document = json.loads(text_of(upload.body, file="(body)"))
-            except ValueError:
-                document = None
-            if not isinstance(document, dict):
-                problem = Problem(
-                    file="(body)", line=0, column=None, message="must be a JSON object"
-                )
-                raise CatalogueFileError([problem])
-            files = catalogue_from_json(document)
-        else:
-            raise unsupported(upload.media_type, ("application/zip", "application/json"))
-        changes = CatalogueAdminRepository(session).import_catalogue(files, dry_run=dry_run)
-    except CatalogueFileError as exc:
-        raise file_errors(exc) from None
-    return CatalogueImportOut.build(
-        changes, dry_run=dry_run, version=CatalogueVersionRepository(session).current()
-    )
+    return catalogue_admin.import_catalogue(session, files, dry_run=dry_run)

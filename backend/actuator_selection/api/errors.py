@@ -234,6 +234,9 @@ def _validation(request: Request, exc: Exception) -> JSONResponse:
 
 def _domain(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, DomainError)
+    entries = getattr(exc, "entries", None)  # services.errors.UseCaseError: all its entries
+    if entries:
+        return error_response(exc.http_status, entries)
     loc: list[str | int] = [exc.where, *exc.field.split(".")]
     code = exc.code or type(exc).__name__
     return error_response(exc.http_status, [field_error(loc, exc.message, code)])

@@ -5,7 +5,8 @@ from __future__ import annotations
 import gzip
 from datetime import UTC, datetime
 from functools import partial
-from typing import Annotated
+from typing import Annotated, Any
+from urllib.parse import quote
 
 from fastapi import APIRouter, Path, Request, Response
 
@@ -21,6 +22,12 @@ from actuator_selection.schemas.selections import (
     CandidateDetailOut,
     SelectionOut,
     SelectionRequest,
+)
+from actuator_selection.services.reports import (
+    CHECK_COLUMNS,
+    report_csv,
+    report_pdf,
+    selection_report,
 )
 from actuator_selection.services.selections import (
     candidate_detail,
@@ -105,3 +112,55 @@ def get_candidate(
     """One candidate of a stored selection in full: every check in words, every controller
     of Table 521.1 with its criteria and voltage check, the actuator's catalogue data."""
     return candidate_detail(session, catalogue_snapshot(request, session), selection_id, model)
+
+
+_REPORT_ERRORS: dict[int | str, dict[str, Any]] = {404: {"description": "unknown selection"}}
+
+
+@router.get(
+    "/selections/{selection_id}/report.csv",
+    response_class=Response,
+    responses={
+        200: {
+            "content": {"text/csv": {"schema": {"type": "string"}}},
+            "description": "two tables, separated by an empty line: `quantity,value,unit` "
+            "(load case and cycle figures), then one row per check of each candidate: "
+            + ",".join(CHECK_COLUMNS)
+            + ". Numbers are the stored answer's exactly; unknown values are empty cells.",
+        },
+        **_REPORT_ERRORS,
+    },
+)
+def get_selection_report_csv(
+    selection_id: Annotated[str, Path(max_length=36)], session: SessionDep
+) -> Response:
+    """The selection's engineering report as CSV: load case, cycle, every candidate's checks."""
+    text = report_csv(selection_report(session, selection_id))
+    return Response(
+        text, media_type="text/csv; charset=utf-8", headers=_attachment(selection_id, "csv")
+    )
+
+
+@router.get(
+    "/selections/{selection_id}/report.pdf",
+    response_class=Response,
+    responses={
+        200: {
+            "content": {"application/pdf": {"schema": {"type": "string", "format": "binary"}}},
+            "description": "A4, the same content as the CSV for print, with page numbers",
+        },
+        **_REPORT_ERRORS,
+    },
+)
+def get_selection_report_pdf(
+    selection_id: Annotated[str, Path(max_length=36)], session: SessionDep
+) -> Response:
+    """The selection's engineering report as PDF: load case, cycle, every candidate's checks."""
+    body = report_pdf(selection_report(session, selection_id))
+    return Response(body, media_type="application/pdf", headers=_attachment(selection_id, "pdf"))
+
+
+def _attachment(selection_id: str, extension: str) -> dict[str, str]:
+    # The id is a UUID the service made; quote() keeps any other path value a header.
+    name = quote(f"selection-{selection_id}.{extension}", safe="")
+    return {"Content-Disposition": f'attachment; filename="{name}"'}

@@ -15,7 +15,6 @@ import zipfile
 import zlib
 from dataclasses import dataclass
 from pathlib import PurePosixPath
-from typing import Any
 
 from fastapi import Request
 
@@ -25,6 +24,7 @@ from actuator_selection.api.errors import (
     UnsupportedMediaTypeError,
 )
 from actuator_selection.core.csvio import CatalogueFileError, Problem
+from actuator_selection.services.errors import problem_entry
 
 MAX_UPLOAD_BYTES = 20 * 1024 * 1024
 """Largest body or unpacked ZIP member accepted [bytes]: the starter catalogue is < 50 kB."""
@@ -65,21 +65,6 @@ def unsupported(media_type: str, accepted: tuple[str, ...]) -> UnsupportedMediaT
         f"Content-Type {media_type or '(none)'} is not accepted here; send {' or '.join(accepted)}",
         "unsupported_media_type",
     )
-
-
-def problem_entry(problem: Problem) -> dict[str, Any]:
-    """One entry of a 422 body for a file problem."""
-    loc: list[str | int] = ["body", problem.file, problem.line]
-    if problem.column:
-        loc.append(problem.column)
-    return {
-        "loc": loc,
-        "msg": str(problem),
-        "type": "invalid_file",
-        "file": problem.file,
-        "line": problem.line,
-        "column": problem.column,
-    }
 
 
 def file_errors(exc: CatalogueFileError) -> RequestFieldError:

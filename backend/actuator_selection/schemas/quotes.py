@@ -102,13 +102,22 @@ class ActuatorItemIn(StrictModel):
 
 
 class ControllerItemIn(StrictModel):
-    """A servo controller: its type as the customer should read it, priced by ``item_code``."""
+    """A servo controller: its type as the customer should read it, priced by ``item_code``,
+    and (``source_row``) which controller of Table 521.1 it is."""
 
     type_name: Annotated[Text, Field(min_length=1, max_length=200)] = Field(
         description="free text, e.g. 'SINAMICS S120, 400 V, 5 A'"
     )
     item_code: Annotated[str, Field(min_length=1, max_length=80)] = Field(
         description="the controller's code in the price list"
+    )
+    source_row: StrictInt | None = Field(
+        default=None,
+        ge=1,
+        le=1_000_000,
+        description="the controller's row in Table 521.1 (`source_row` of the selection "
+        "answer's `controllers`): it must be one the selection lists for the chosen actuator "
+        "(its drive options), else 422; the line then names the controller and its match level",
     )
     quantity: Quantity = 1
 

@@ -1,0 +1,450 @@
+"""Quotes: from a stored selection to a priced, numbered offer and its document.
+
+The use cases of ``api/quotes.py``. Rules (the README's "Quotes" section says the same):
+
+- The chosen actuator must be a candidate of the selection. ``unsuitable``:
+  refused (422, with the failed checks); ``unconfirmed``: allowed, flagged on the
+  quote and its document with the checks that lack data.
+- Prices come from the named price list, valid on the day the quote is made.
+  All lines share one currency (422 otherwise). Figures follow
+  ``core.money.ROUNDING_RULE``.
+- An ``Idempotency-Key`` repeated with the same body returns the first quote; with
+  a different body it is a 422.
+- Status flow draft → sent → accepted | rejected; expired by date (computed).
+  Illegal moves are 409.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass
+from datetime import UTC, date, datetime
+from typing import Any
+from urllib.parse import quote as quote_path
+
+from sqlalchemy.orm import Session
+
+from actuator_selection.core.compatibility import match_controller
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.money import QuoteLine, quote_totals
+from actuator_selection.core.quote_status import IllegalTransitionError, QuoteStatus, transition
+from actuator_selection.core.sales import (
+    ApiKeyRecord,
+    NewQuote,
+    PriceRecord,
+    QuoteItem,
+    QuoteRecord,
+)
+from actuator_selection.db.admin import CatalogueAdminRepository
+from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+from actuator_selection.db.sales import (
+    ApiKeyRepository,
+    IdempotencyKeyReusedError,
+    PriceRepository,
+    QuoteRepository,
+    QuoteSearch,
+)
+from actuator_selection.schemas.actuators import ActuatorOut
+from actuator_selection.schemas.documents import DocumentLinkOut
+from actuator_selection.schemas.quotes import (
+    QuoteCreate,
+    QuoteListOut,
+    QuoteOut,
+    StoredCandidate,
+    StoredSelection,
+)
+from actuator_selection.services.errors import UseCaseError, conflict, invalid, not_found
+from actuator_selection.services.selections import stored_answer_json
+
+API_PREFIX = "/api/v1"
+DOCUMENT_LINK_TTL_S = 300
+"""How long a signed document link works [s]."""
+
+
+def _out(record: QuoteRecord, today: date) -> QuoteOut:
+    return QuoteOut.from_record(record, today=today, prefix=API_PREFIX)
+
+
+def _request_sha256(body: QuoteCreate) -> str:
+    canonical = json.dumps(body.model_dump(mode="json"), sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
+
+
+def _reused(number: str) -> UseCaseError:
+    return invalid(
+        ["header", "Idempotency-Key"],
+        f"this key was used for quote {number} with a different request body; "
+        "use a new key for a new quote",
+        "idempotency_key_reused",
+    )
+
+
+def _candidate(body: QuoteCreate, selection: StoredSelection) -> StoredCandidate:
+    """The chosen candidate; 422 when it is not one or it is unsuitable."""
+    model = body.actuator.model
+    candidate = next((c for c in selection.candidates if c.model == model), None)
+    loc: list[str | int] = ["body", "actuator", "model"]
+    if candidate is None:
+        listed = [c.model for c in selection.candidates if c.verdict != "unsuitable"]
+        shown = ", ".join(listed[:10]) + (" …" if len(listed) > 10 else "")
+        raise invalid(
+            loc,
+            f"{model!r} is not a candidate of selection {selection.id}"
+            + (f" (choose one of: {shown})" if listed else " (it has no usable candidate)"),
+            "not_a_candidate",
+        )
+    if candidate.verdict == "unsuitable":
+        raise invalid(
+            loc,
+            f"{model} is unsuitable for this load case and cannot be quoted: "
+            + "; ".join(candidate.reasons),
+            "unsuitable",
+        )
+    return candidate
+
+
+def _price(
+    repository: PriceRepository,
+    *,
+    body: QuoteCreate,
+    kind: str,
+    code: str,
+    on: date,
+    currency: str | None,
+    loc: list[str | int],
+) -> PriceRecord:
+    """The one price of an item on ``on``, in ``currency`` when given; 422 otherwise."""
+    prices = repository.lookup(
+        price_list=body.price_list, item_kind=kind, item_code=code, on=on, currency=None
+    )
+    if not prices:
+        raise invalid(
+            loc,
+            f"the price list {body.price_list!r} has no {kind} price for {code!r} valid on "
+            f"{on.isoformat()}",
+            "no_price",
+        )
+    if currency is not None:
+        matching = [p for p in prices if p.currency == currency]
+        if not matching:
+            raise invalid(
+                loc,
+                f"{code} is priced in {', '.join(p.currency for p in prices)}, not in {currency}"
+                " (one currency per quote)",
+                "currency_mismatch",
+            )
+        return matching[0]
+    if len(prices) > 1:
+        raise invalid(
+            ["body", "currency"],
+            f"{code} is priced in {', '.join(p.currency for p in prices)}: choose one",
+            "currency_required",
+        )
+    return prices[0]
+
+
+CONTROLLER_RULE = (
+    "Table 521.1: the controller must be one the selection lists for the actuator "
+    "(family, DC bus class, temperature sensor and feedback not excluded)"
+)
+
+
+def _compatible(stored: dict[str, Any], model: str) -> dict[int, str]:
+    """The Table 521.1 rows the stored answer lists for ``model``, with their level."""
+    refs = stored.get("controllers") or []
+    raw: dict[str, Any] = next(
+        (c for c in stored.get("candidates", ()) if c.get("model") == model), {}
+    )
+    rows: dict[int, str] = {}
+    for group in raw.get("drive_options") or ():
+        for index in group.get("controllers", ()):
+            row = refs[index].get("source_row") if 0 <= index < len(refs) else None
+            if isinstance(row, int):
+                rows.setdefault(row, str(group.get("level", "")))
+    return rows
+
+
+def _controller_description(
+    session: Session, body: QuoteCreate, stored: dict[str, Any], model: str
+) -> str:
+    """The controller line's text; with ``source_row``, checked against Table 521.1 as the
+    selection matched it for ``model`` (422 naming the field and the rule otherwise)."""
+    assert body.controller is not None
+    item = body.controller
+    if item.source_row is None:
+        return f"Servo controller {item.type_name}"
+    loc: list[str | int] = ["body", "controller", "source_row"]
+    row = item.source_row
+    repository = ProtectionRepository(session)
+    record = repository.controller(row)
+    if record is None:
+        raise invalid(
+            loc,
+            f"Table 521.1 (and the catalogue) has no active controller in row {row}",
+            "unknown_controller",
+        )
+    controller = record.controller
+    compatible = _compatible(stored, model)
+    level = compatible.get(row)
+    if level is None:
+        interface = repository.interfaces([model]).get(model)
+        reasons = (
+            [
+                r.message
+                for r in match_controller(
+                    controller=controller, actuator=interface.interface
+                ).excluded_by
+            ]
+            if interface is not None
+            else []
+        )
+        listed = ", ".join(str(r) for r in sorted(compatible)[:12])
+        raise invalid(
+            loc,
+            f"{controller.name} (row {row}) is not a controller Table 521.1 matches for "
+            f"{model}"
+            + (f": {'; '.join(reasons)}" if reasons else "")
+            + f". Rule: {CONTROLLER_RULE}; rows listed for {model}: {listed or 'none'}",
+            "controller_not_compatible",
+        )
+    return f"Servo controller {item.type_name} ({controller.name}, Table 521.1 row {row}: {level})"
+
+
+def _new_quote(
+    body: QuoteCreate,
+    *,
+    session: Session,
+    key_id: int,
+    idempotency_key: str | None,
+    now: datetime,
+) -> NewQuote:
+    """Everything the quote holds, checked and priced (422s name the field)."""
+    today = now.date()
+    # First, so that the actuator data and the version below come from one snapshot.
+    catalogue_version = CatalogueVersionRepository(session).pin()
+    if body.valid_until < today:
+        raise invalid(
+            ["body", "valid_until"],
+            f"must be today ({today.isoformat()}) or later",
+            "valid_until_past",
+        )
+    stored = stored_answer_json(session, body.selection_id)
+    if stored is None:
+        raise invalid(
+            ["body", "selection_id"], f"no stored selection {body.selection_id!r}", "unknown"
+        )
+    selection = StoredSelection.model_validate(stored)
+    candidate = _candidate(body, selection)
+
+    model_loc: list[str | int] = ["body", "actuator", "model"]
+    state = CatalogueAdminRepository(session).state(candidate.model)
+    record = CatalogueRepository(session).actuator(candidate.model)
+    if state is None or state.retired_at is not None or record is None:
+        raise invalid(
+            model_loc,
+            f"{candidate.model} has been retired from the catalogue and can no longer be quoted",
+            "retired",
+        )
+
+    prices = PriceRepository(session)
+    is_example = prices.is_example(body.price_list)
+    if is_example is None:
+        raise invalid(["body", "price_list"], f"no price list {body.price_list!r}", "unknown")
+    actuator_price = _price(
+        prices,
+        body=body,
+        kind="actuator",
+        code=candidate.model,
+        on=today,
+        currency=body.currency,
+        loc=model_loc,
+    )
+    currency = actuator_price.currency
+    items = [
+        (
+            "actuator",
+            candidate.model,
+            actuator_price.description
+            or f"Servo actuator {candidate.model} ({candidate.family}, "
+            f"gear ratio {candidate.gear_ratio:g})",
+            body.actuator.quantity,
+            actuator_price,
+        )
+    ]
+    if body.controller is not None:
+        controller_price = _price(
+            prices,
+            body=body,
+            kind="controller",
+            code=body.controller.item_code,
+            on=today,
+            currency=currency,
+            loc=["body", "controller", "item_code"],
+        )
+        items.append(
+            (
+                "controller",
+                body.controller.item_code,
+                _controller_description(session, body, stored, candidate.model),
+                body.controller.quantity,
+                controller_price,
+            )
+        )
+    try:
+        totals = quote_totals(
+            [QuoteLine(unit_price=p.unit_price, quantity=q) for _, _, _, q, p in items],
+            discount_percent=body.discount_percent,
+        )
+    except InvalidInputError as exc:
+        raise invalid(["body", *exc.field.split(".")], exc.message, "invalid_amount") from None
+    return NewQuote(
+        created_at=now,
+        valid_until=body.valid_until,
+        api_key_id=key_id,
+        idempotency_key=idempotency_key,
+        request_sha256=_request_sha256(body),
+        selection_id=selection.id,
+        selection_catalogue_version=selection.catalogue_version,
+        catalogue_version=catalogue_version,
+        customer_name=body.customer.name,
+        customer_address=body.customer.address,
+        customer_reference=body.customer.reference,
+        notes=body.notes,
+        actuator_model=candidate.model,
+        verdict=candidate.verdict,
+        verdict_reasons=tuple(candidate.reasons),
+        actuator_snapshot=ActuatorOut.from_record(record).model_dump(mode="json"),
+        price_list_name=body.price_list,
+        price_list_is_example=is_example,
+        price_date=today,
+        currency=currency,
+        subtotal=totals.subtotal,
+        discount_percent=totals.discount_percent,
+        discount_amount=totals.discount_amount,
+        total=totals.total,
+        items=tuple(
+            QuoteItem(
+                position=position,
+                item_kind=kind,
+                item_code=code,
+                description=description,
+                quantity=quantity,
+                unit_price=price.unit_price,
+                line_total=line,
+            )
+            for position, ((kind, code, description, quantity, price), line) in enumerate(
+                zip(items, totals.line_totals, strict=True), start=1
+            )
+        ),
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class CreatedQuote:
+    """A quote as POST /quotes answers it; ``replayed``: an earlier request's quote."""
+
+    quote: QuoteOut
+    replayed: bool
+
+    @property
+    def location(self) -> str:
+        """The quote's path."""
+        return f"{API_PREFIX}/quotes/{self.quote.number}"
+
+
+def create_quote(
+    session: Session,
+    body: QuoteCreate,
+    *,
+    key_id: int,
+    idempotency_key: str | None,
+    now: datetime,
+) -> CreatedQuote:
+    """Make a quote from a stored selection; numbered Q-<year>-<5 digits>.
+
+    A key seen before with the same body answers the first quote (``replayed``).
+    """
+    repository = QuoteRepository(session)
+    today = now.date()
+    if idempotency_key is not None:
+        found = repository.by_idempotency_key(key_id, idempotency_key)
+        if found is not None:
+            if found.request_sha256 != _request_sha256(body):
+                raise _reused(found.number)
+            return CreatedQuote(_out(found, today), replayed=True)
+    new = _new_quote(body, session=session, key_id=key_id, idempotency_key=idempotency_key, now=now)
+    try:
+        record, created = repository.create(new)
+    except IdempotencyKeyReusedError as exc:
+        raise _reused(exc.number) from None
+    return CreatedQuote(_out(record, today), replayed=not created)
+
+
+def search_quotes(session: Session, search: QuoteSearch) -> QuoteListOut:
+    """Quotes matching ``search``, newest first, their status as of ``search.today``."""
+    records, total = QuoteRepository(session).search(search)
+    return QuoteListOut(total=total, quotes=[_out(r, search.today) for r in records])
+
+
+def _quote(session: Session, number: str, *, for_update: bool = False) -> QuoteRecord:
+    record = QuoteRepository(session).by_number(number, for_update=for_update)
+    if record is None:
+        raise not_found(["path", "number"], f"no quote {number!r}")
+    return record
+
+
+def get_quote(session: Session, number: str, *, today: date) -> QuoteOut:
+    """One quote, its status as of ``today``; 404 when unknown."""
+    return _out(_quote(session, number), today)
+
+
+def change_status(session: Session, number: str, target: QuoteStatus, *, now: datetime) -> QuoteOut:
+    """Move a quote along draft → sent → accepted | rejected (409 for an illegal move)."""
+    record = _quote(session, number, for_update=True)
+    try:
+        transition(record.status, target, valid_until=record.valid_until, today=now.date())
+    except IllegalTransitionError as exc:
+        raise conflict(["body", "status"], exc.message, "illegal_transition") from None
+    QuoteRepository(session).set_status(number, target, now=now)
+    return _out(_quote(session, number), now.date())
+
+
+def document_resource(number: str) -> str:
+    """What a signed document link grants access to."""
+    return f"quote-document:{number}"
+
+
+def document_link(
+    session: Session, principal: ApiKeyRecord, number: str, *, now: datetime
+) -> DocumentLinkOut:
+    """A link to the quote's document, signed for ``principal``'s key for
+    ``DOCUMENT_LINK_TTL_S`` seconds (and no longer than the key lives)."""
+    _quote(session, number)
+    expires_at = int(now.timestamp()) + DOCUMENT_LINK_TTL_S
+    token = ApiKeyRepository(session).sign_access(
+        principal, document_resource(number), expires_at=expires_at
+    )
+    return DocumentLinkOut(
+        url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}",
+        expires_at=datetime.fromtimestamp(expires_at, UTC),
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class QuoteDocumentData:
+    """What the quote document shows: the quote as of today, its stored record (with the
+    actuator's data as quoted) and the stored selection it rests on."""
+
+    quote: QuoteOut
+    record: QuoteRecord
+    selection: StoredSelection | None
+
+
+def quote_document(session: Session, number: str, *, today: date) -> QuoteDocumentData:
+    """Everything the quote's printable document shows; 404 when unknown."""
+    record = _quote(session, number)
+    stored = stored_answer_json(session, record.selection_id)
+    selection = StoredSelection.model_validate(stored) if stored is not None else None
+    return QuoteDocumentData(_out(record, today), record, selection)

@@ -1,0 +1,312 @@
+"""The engineering report of a stored selection, as CSV and as PDF.
+
+Both list the load case, the cycle figures and every candidate in the answer's order
+with its verdict, torques and checks (reference, value, limit, margin). Every number
+is the stored answer's (``GET /selections/{id}``), read through
+``services.selections.stored_answer_json``; the margin is the core's
+``(limit − value)/limit`` (``core.checks.margin_percent``).
+
+**CSV** (UTF-8, RFC 4180 quoting, CRLF line ends, written by the stdlib ``csv``
+module): two tables separated by one empty line. The first has the columns
+``quantity,value,unit`` and one row per figure of the selection (load, cycle, n_av,
+ED, …); the second has one row per check of each candidate, the candidate's columns
+repeated on each of its rows (``CHECK_COLUMNS``). Numbers are written as Python's
+shortest repr of the stored double, so they read back as exactly the answer's value;
+an unknown value is an empty cell. Text cells that a spreadsheet would run as a
+formula get a leading single quote (``core.csvio.neutralised``, as the catalogue
+export does).
+
+**PDF** (A4, fpdf2's built-in Helvetica, page numbers in the footer): the same content
+for print, numbers to six significant digits. The built-in fonts hold Latin-1 only,
+so the chapter's symbols are written in ASCII there (``≤`` → ``<=``, ``T₁`` → ``T1``,
+``−`` → ``-``): no font file needs shipping.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass
+from typing import Any
+
+from fpdf import FPDF
+from fpdf.enums import XPos, YPos
+from sqlalchemy.orm import Session
+
+from actuator_selection.core.checks import margin_percent
+from actuator_selection.core.csvio import neutralised
+from actuator_selection.schemas.quotes import StoredCandidate, StoredCheck, StoredSelection
+from actuator_selection.services.errors import not_found
+from actuator_selection.services.selections import stored_answer_json
+
+SUMMARY_COLUMNS = ("quantity", "value", "unit")
+CHECK_COLUMNS = (
+    "rank",
+    "model",
+    "family",
+    "gear_ratio",
+    "verdict",
+    "accel_torque_nm",
+    "constant_torque_nm",
+    "decel_torque_nm",
+    "rms_torque_nm",
+    "check",
+    "status",
+    "reference",
+    "unit",
+    "value",
+    "limit",
+    "margin_percent",
+    "approximate",
+    "missing",
+)
+"""The columns of the CSV's second table, one row per check of each candidate."""
+
+
+@dataclass(frozen=True, slots=True)
+class SelectionReport:
+    """A stored selection as the report shows it."""
+
+    selection: StoredSelection
+
+    @property
+    def summary(self) -> list[tuple[str, float | int | str | None, str]]:
+        """(quantity, value, unit) of the load case and the cycle figures."""
+        s = self.selection
+        return [
+            ("selection_id", s.id, ""),
+            ("created_at", s.created_at.isoformat(), "UTC"),
+            ("catalogue_version", s.catalogue_version, ""),
+            ("speed_rpm", s.load.speed_rpm, "rpm"),
+            ("torque_nm", s.load.torque_nm, "Nm"),
+            ("inertia_kgm2", s.load.inertia_kgm2, "kgm²"),
+            ("high_dynamics", "true" if s.high_dynamics else "false", ""),
+            ("accel_s", s.cycle.accel_s, "s"),
+            ("constant_s", s.cycle.constant_s, "s"),
+            ("decel_s", s.cycle.decel_s, "s"),
+            ("pause_s", s.cycle.pause_s, "s"),
+            ("cycle_time_s", s.cycle_time_s, "s"),
+            ("mean_speed_rpm", s.mean_speed_rpm, "rpm"),
+            ("duty_cycle_percent", s.duty_cycle_percent, "%"),
+            ("candidates", len(s.candidates), ""),
+        ]
+
+
+def selection_report(session: Session, selection_id: str) -> SelectionReport:
+    """The report of a stored selection; 404 when there is none."""
+    stored = stored_answer_json(session, selection_id)
+    if stored is None:
+        raise not_found(["path", "selection_id"], f"no selection {selection_id!r}")
+    return SelectionReport(StoredSelection.model_validate(stored))
+
+
+def _cell(value: Any) -> str:
+    """A CSV cell: numbers as their shortest repr (exact round trip), text neutralised."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int | float):
+        return repr(value)
+    return neutralised(str(value))
+
+
+def report_csv(report: SelectionReport) -> str:
+    """The report as CSV (see the module's docstring for the layout)."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\r\n")
+    writer.writerow(SUMMARY_COLUMNS)
+    writer.writerows([_cell(q), _cell(v), _cell(u)] for q, v, u in report.summary)
+    writer.writerow([])
+    writer.writerow(CHECK_COLUMNS)
+    for rank, c in enumerate(report.selection.candidates, start=1):
+        head = [
+            rank,
+            c.model,
+            c.family,
+            c.gear_ratio,
+            c.verdict,
+            c.accel_torque_nm,
+            c.constant_torque_nm,
+            c.decel_torque_nm,
+            c.rms_torque_nm,
+        ]
+        for check in c.checks:
+            row = [
+                *head,
+                check.name,
+                check.status,
+                check.reference,
+                check.unit,
+                check.value,
+                check.limit,
+                margin_percent(check.value, check.limit),
+                check.approximate,
+                check.missing,
+            ]
+            writer.writerow([_cell(v) for v in row])
+    return buffer.getvalue()
+
+
+_ASCII = str.maketrans(
+    {
+        "≤": "<=",
+        "≥": ">=",
+        "−": "-",
+        "–": "-",
+        "—": "-",
+        "₀": "0",
+        "₁": "1",
+        "₂": "2",
+        "₃": "3",
+        "⁻": "^-",
+        "…": "...",
+        "“": '"',
+        "”": '"',
+        "‘": "'",
+        "’": "'",
+        "√": "sqrt",
+        "Ω": "Ohm",
+    }
+)
+
+
+def pdf_text(text: str) -> str:
+    """``text`` in the built-in fonts' Latin-1; what has no Latin-1 form becomes '?'.
+
+    >>> pdf_text("T₁ ≤ T_max, −85.48 Nm, 2 kgm²")
+    'T1 <= T_max, -85.48 Nm, 2 kgm²'
+    """
+    return text.translate(_ASCII).encode("latin-1", "replace").decode("latin-1")
+
+
+def pdf_number(value: float | None, unit: str = "") -> str:
+    """A number to six significant digits with its unit; '-' when unknown."""
+    if value is None:
+        return "-"
+    return pdf_text(f"{value:.6g} {unit}".strip())
+
+
+STATUS_WORDS = {"pass": "pass", "fail": "FAIL", "warn": "warning", "no_data": "no data"}
+
+
+class _Pdf(FPDF):
+    def __init__(self, title: str) -> None:
+        super().__init__(orientation="portrait", unit="mm", format="A4")
+        self._title = title
+        self.set_auto_page_break(auto=True, margin=15)
+        self.set_margins(15, 15, 15)
+        self.set_title(title)
+        self.set_creator("actuator selection service")
+
+    def footer(self) -> None:
+        self.set_y(-12)
+        self.set_font("Helvetica", size=8)
+        self.cell(0, 5, pdf_text(self._title), align="L")
+        self.set_x(self.l_margin)
+        self.cell(0, 5, f"page {self.page_no()} of {{nb}}", align="R")
+
+
+def _facts(pdf: FPDF, rows: list[tuple[str, str]]) -> None:
+    pdf.set_font("Helvetica", size=9)
+    with pdf.table(col_widths=(60, 60), width=120, align="LEFT", first_row_as_headings=False) as t:
+        for label, value in rows:
+            row = t.row()
+            row.cell(pdf_text(label))
+            row.cell(value)
+
+
+def _check_rows(checks: list[StoredCheck]) -> list[tuple[str, ...]]:
+    return [
+        (
+            pdf_text(c.name),
+            STATUS_WORDS.get(c.status, c.status) + (" (approx.)" if c.approximate else ""),
+            pdf_text(c.reference),
+            pdf_number(c.value, c.unit),
+            pdf_number(c.limit, c.unit),
+            pdf_number(margin_percent(c.value, c.limit), "%"),
+        )
+        for c in checks
+    ]
+
+
+def _candidate(pdf: FPDF, rank: int, c: StoredCandidate) -> None:
+    pdf.set_font("Helvetica", style="B", size=10)
+    pdf.cell(
+        0,
+        6,
+        pdf_text(f"{rank}. {c.model} ({c.family}, i = {c.gear_ratio:g}): {c.verdict}"),
+        new_x=XPos.LMARGIN,
+        new_y=YPos.NEXT,
+    )
+    pdf.set_font("Helvetica", size=8.5)
+    torques = (
+        f"T1 = {pdf_number(c.accel_torque_nm, 'Nm')}, T2 = {pdf_number(c.constant_torque_nm, 'Nm')}"
+        f", T3 = {pdf_number(c.decel_torque_nm, 'Nm')}, T_rms = {pdf_number(c.rms_torque_nm, 'Nm')}"
+    )
+    pdf.cell(0, 5, torques, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    with pdf.table(col_widths=(34, 22, 26, 30, 30, 24), line_height=4.6) as t:
+        t.row(("check", "status", "reference", "value", "limit", "margin"))
+        for cells in _check_rows(c.checks):
+            t.row(cells)
+    pdf.ln(3)
+
+
+def report_pdf(report: SelectionReport) -> bytes:
+    """The report as a PDF document (A4)."""
+    s = report.selection
+    pdf = _Pdf(f"Selection report {s.id}")
+    pdf.add_page()
+    pdf.set_font("Helvetica", style="B", size=16)
+    pdf.cell(0, 9, "Selection report", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    pdf.set_font("Helvetica", size=9)
+    pdf.multi_cell(
+        0,
+        4.5,
+        pdf_text(
+            f"Selection {s.id} of {s.created_at:%Y-%m-%d %H:%M} UTC, catalogue version "
+            f"{s.catalogue_version}. Sized by Engineering Data for Harmonic Drive Servo "
+            "Actuators (Eq. 514.1-522.3); every figure is the one stored with the selection."
+        ),
+        new_x=XPos.LMARGIN,
+        new_y=YPos.NEXT,
+    )
+    pdf.ln(2)
+    for title, rows in (
+        (
+            "Load case (at the actuator output)",
+            [
+                ("load speed n2", pdf_number(s.load.speed_rpm, "rpm")),
+                ("load torque T_L", pdf_number(s.load.torque_nm, "Nm")),
+                ("load inertia J_L", pdf_number(s.load.inertia_kgm2, "kgm²")),
+                ("J_L <= 3 J_A binding", "yes" if s.high_dynamics else "no"),
+            ],
+        ),
+        (
+            "Cycle (Fig. 516.2, Eq. 514.3, 514.4)",
+            [
+                ("acceleration t1", pdf_number(s.cycle.accel_s, "s")),
+                ("constant speed t2", pdf_number(s.cycle.constant_s, "s")),
+                ("deceleration t3", pdf_number(s.cycle.decel_s, "s")),
+                ("pause tp", pdf_number(s.cycle.pause_s, "s")),
+                ("cycle time", pdf_number(s.cycle_time_s, "s")),
+                ("mean speed n_av", pdf_number(s.mean_speed_rpm, "rpm")),
+                ("duty cycle ED", pdf_number(s.duty_cycle_percent, "%")),
+            ],
+        ),
+    ):
+        pdf.set_font("Helvetica", style="B", size=11)
+        pdf.cell(0, 7, title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        _facts(pdf, rows)
+        pdf.ln(2)
+    pdf.set_font("Helvetica", style="B", size=11)
+    pdf.cell(
+        0,
+        7,
+        f"Candidates ({len(s.candidates)}, ranked as answered)",
+        new_x=XPos.LMARGIN,
+        new_y=YPos.NEXT,
+    )
+    for rank, candidate in enumerate(s.candidates, start=1):
+        _candidate(pdf, rank, candidate)
+    return bytes(pdf.output())

@@ -1,0 +1,176 @@
+"""The engineering report of a stored selection: CSV and PDF carry the answer's numbers."""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+from typing import Any
+
+import pypdf
+import pytest
+from fastapi.testclient import TestClient
+from tests import worked_example
+
+from actuator_selection.services.reports import CHECK_COLUMNS
+
+
+def _selection(client: TestClient, **changes: Any) -> dict[str, Any]:
+    body = {**worked_example.request(), "high_dynamics": True, **changes}
+    response = client.post("/api/v1/selections", json=body)
+    assert response.status_code == 201, response.text
+    answer: dict[str, Any] = response.json()
+    return answer
+
+
+def _number(cell: str) -> float | None:
+    return None if cell == "" else float(cell)
+
+
+def _tables(text: str) -> tuple[list[list[str]], list[dict[str, str]]]:
+    """The CSV's two tables, split at the one empty line."""
+    rows = list(csv.reader(io.StringIO(text, newline="")))
+    blank = rows.index([])
+    summary, checks = rows[:blank], rows[blank + 1 :]
+    assert checks[0] == list(CHECK_COLUMNS)
+    return summary, [dict(zip(checks[0], r, strict=True)) for r in checks[1:]]
+
+
+def test_csv_holds_the_answer_numbers_exactly(client: TestClient) -> None:
+    answer = _selection(client)
+    response = client.get(f"/api/v1/selections/{answer['id']}/report.csv")
+    assert response.status_code == 200, response.text
+    assert response.headers["content-type"] == "text/csv; charset=utf-8"
+    assert f"selection-{answer['id']}.csv" in response.headers["content-disposition"]
+    summary, rows = _tables(response.text)
+
+    assert summary[0] == ["quantity", "value", "unit"]
+    figures = {q: v for q, v, _ in summary[1:]}
+    assert figures["selection_id"] == answer["id"]
+    assert int(figures["catalogue_version"]) == answer["catalogue_version"]
+    for name in ("speed_rpm", "torque_nm", "inertia_kgm2"):
+        assert float(figures[name]) == answer["load"][name]
+    for name in ("accel_s", "constant_s", "decel_s", "pause_s"):
+        assert float(figures[name]) == answer["cycle"][name]
+    for name in ("cycle_time_s", "mean_speed_rpm", "duty_cycle_percent"):
+        assert float(figures[name]) == answer[name]
+    # First principles for the worked example: t0 = 1.3 s, n_av = 40·(0.05+0.1+0.05)/1.3.
+    assert float(figures["mean_speed_rpm"]) == pytest.approx(40 * 0.2 / 1.3, rel=1e-12)
+    assert float(figures["duty_cycle_percent"]) == pytest.approx(0.3 / 1.3 * 100, rel=1e-12)
+
+    rules = {r["name"]: r for r in answer["check_rules"]}
+    expected = [(rank, c, k) for rank, c in enumerate(answer["candidates"], 1) for k in c["checks"]]
+    assert len(rows) == len(expected) > 0
+    for row, (rank, candidate, check) in zip(rows, expected, strict=True):
+        assert int(row["rank"]) == rank
+        assert (row["model"], row["family"], row["verdict"]) == (
+            candidate["model"],
+            candidate["family"],
+            candidate["verdict"],
+        )
+        assert float(row["gear_ratio"]) == candidate["gear_ratio"]
+        for name in ("accel_torque_nm", "constant_torque_nm", "decel_torque_nm", "rms_torque_nm"):
+            assert _number(row[name]) == candidate[name]
+        assert (row["check"], row["status"]) == (check["name"], check["status"])
+        assert (row["reference"], row["unit"]) == (
+            rules[check["name"]]["reference"],
+            rules[check["name"]]["unit"],
+        )
+        value, limit = _number(row["value"]), _number(row["limit"])
+        assert (value, limit) == (check["value"], check["limit"])
+        if value is None or limit is None or limit <= 0:
+            assert row["margin_percent"] == ""
+        else:
+            assert float(row["margin_percent"]) == pytest.approx((limit - value) / limit * 100)
+        assert row["approximate"] == ("true" if check.get("approximate") else "false")
+        assert row["missing"] == (check.get("missing") or "")
+
+
+def test_csv_of_the_worked_example_actuator(client: TestClient) -> None:
+    """FHA-25C-50-L alone: the chapter's figures T1 = 95.48 Nm, T3 = −85.48 Nm."""
+    answer = _selection(client, models=["FHA-25C-50-L"])
+    _, rows = _tables(client.get(f"/api/v1/selections/{answer['id']}/report.csv").text)
+    assert {r["model"] for r in rows} == {"FHA-25C-50-L"}
+    assert float(rows[0]["accel_torque_nm"]) == pytest.approx(95.48, abs=0.01)
+    assert float(rows[0]["decel_torque_nm"]) == pytest.approx(-85.48, abs=0.01)
+    peak = next(r for r in rows if r["check"] == "peak_torque")
+    assert (peak["reference"], peak["status"]) == ("Eq. 514.1", "pass")
+
+
+_TORQUES = re.compile(
+    r"T1 = (\S+) Nm, T2 = (\S+) Nm, T3 = (\S+) Nm, T_rms = (\S+) Nm"
+    r"|T1 = -, T2 = -, T3 = -, T_rms = -"
+)
+
+
+def _pdf_text(content: bytes) -> tuple[str, int]:
+    reader = pypdf.PdfReader(io.BytesIO(content))
+    return "\n".join(page.extract_text() for page in reader.pages), len(reader.pages)
+
+
+def test_pdf_shows_the_answer(client: TestClient) -> None:
+    answer = _selection(client)
+    response = client.get(f"/api/v1/selections/{answer['id']}/report.pdf")
+    assert response.status_code == 200, response.text
+    assert response.headers["content-type"] == "application/pdf"
+    assert response.content.startswith(b"%PDF-")
+    text, pages = _pdf_text(response.content)
+    assert answer["id"] in text
+    assert f"page {pages} of {pages}" in text
+    n_av = re.search(r"mean speed n_av (\S+) rpm", text)
+    assert n_av is not None
+    assert float(n_av.group(1)) == pytest.approx(answer["mean_speed_rpm"], rel=5e-6)
+    # Every candidate in the answer's order, with its verdict and its torques.
+    place = 0
+    for rank, candidate in enumerate(answer["candidates"], start=1):
+        heading = f"{rank}. {candidate['model']} ("
+        place = text.index(heading, place)
+        line_end = text.index("\n", place)
+        assert text[place:line_end].endswith(f": {candidate['verdict']}")
+        torques = _TORQUES.search(text, line_end)
+        assert torques is not None
+        assert torques.start() == line_end + 1
+        if candidate["accel_torque_nm"] is not None:
+            shown = [float(g) for g in torques.groups()]
+            wanted = [
+                candidate[k]
+                for k in (
+                    "accel_torque_nm",
+                    "constant_torque_nm",
+                    "decel_torque_nm",
+                    "rms_torque_nm",
+                )
+            ]
+            assert shown == pytest.approx(wanted, rel=5e-6)
+        # Each check: its name, then the reference the answer gives for it.
+        rules = {r["name"]: r for r in answer["check_rules"]}
+        for check in candidate["checks"]:
+            row = re.compile(
+                re.escape(check["name"]) + r" \S.*? " + re.escape(rules[check["name"]]["reference"])
+            )
+            assert row.search(text, torques.end()) is not None
+
+
+@pytest.mark.parametrize("suffix", ["csv", "pdf"])
+def test_unknown_selection_is_404_in_the_error_shape(client: TestClient, suffix: str) -> None:
+    response = client.get(f"/api/v1/selections/no-such-selection/report.{suffix}")
+    assert response.status_code == 404
+    assert response.json() == {
+        "detail": [
+            {
+                "loc": ["path", "selection_id"],
+                "msg": "no selection 'no-such-selection'",
+                "type": "not_found",
+            }
+        ]
+    }
+
+
+def test_reports_are_in_the_openapi_document(client: TestClient) -> None:
+    paths = client.get("/openapi.json").json()["paths"]
+    csv_op = paths["/api/v1/selections/{selection_id}/report.csv"]["get"]
+    pdf_op = paths["/api/v1/selections/{selection_id}/report.pdf"]["get"]
+    assert "text/csv" in csv_op["responses"]["200"]["content"]
+    assert "application/pdf" in pdf_op["responses"]["200"]["content"]
+    assert "404" in csv_op["responses"]
+    assert "404" in pdf_op["responses"]
