@@ -103,7 +103,8 @@ def test_tilting_moment_by_hand_pass_and_fail() -> None:
         radial_force_n=1100, axial_force_n=500, radial_lever_m=0.05, axial_lever_m=0.02
     )
     over = check(FHA_14C_50, heavier, "bearing_moment")
-    assert over.value == pytest.approx(1100 * 0.064 + 10) and over.status is Status.FAIL
+    assert over.value == pytest.approx(1100 * 0.064 + 10)
+    assert over.status is Status.FAIL
     assert "allowable moment load = 75 Nm" in over.message
 
 

@@ -146,7 +146,8 @@ def test_peak_current_inverts_the_torque_from_current_of_eq_522() -> None:
     application = app(100, 5.0, 0.2)
     c = check(CHA_25A_50, application, "drive_current")
     torques = evaluate(CHA_25A_50, application).torques
-    assert torques is not None and c.value is not None
+    assert torques is not None
+    assert c.value is not None
     back = output_torque_from_current(
         current_a=c.value,
         output_speed_rpm=100,
@@ -258,7 +259,8 @@ def test_new_operands_land_in_their_fields() -> None:
     assert q.inductance_line_h == 6.0 / 1000
     assert q.pole_pairs == 6
     assert q.dc_bus_voltage_v == 560
-    assert math.isnan(q.radial_force_n) and math.isnan(q.required_life_h)
+    assert math.isnan(q.radial_force_n)
+    assert math.isnan(q.required_life_h)
     assert Operands._fields[-1] == "bearing_dynamic_tilting_moment_nm"
 
 
