@@ -141,8 +141,11 @@ def test_operands_name_each_value() -> None:
         "brake_holding_torque_nm": 18,
     }
     bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, 50.0, floors)
+    first_new = Operands._fields.index("decel_s")  # later ones: test_drive_current.py
     unpublished = [
-        name for name, v in bare._asdict().items() if isinstance(v, float) and math.isnan(v)
+        name
+        for name, v in list(bare._asdict().items())[:first_new]
+        if isinstance(v, float) and math.isnan(v)
     ]
     assert unpublished == [
         "accel_torque_nm",

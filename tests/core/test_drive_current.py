@@ -8,6 +8,7 @@ bit for bit."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Sequence
 
@@ -233,9 +234,7 @@ def test_voltage_says_no_data_without_pole_pairs_or_rms_k_e() -> None:
     c = check(FHA_25C_50, app(60, 20, 1.0), "drive_voltage")
     assert c.status is Status.NO_DATA
     assert c.missing == "motor voltage constant K_E (V_rms)"
-    no_poles = Actuator(
-        **{**{f: getattr(CHA_25A_50, f) for f in CHA_25A_50.__slots__}, "pole_pairs": None}  # type: ignore[arg-type]
-    )
+    no_poles = dataclasses.replace(CHA_25A_50, pole_pairs=None)
     assert check(no_poles, app(60, 20, 1.0), "drive_voltage").missing == "number of pole pairs p"
 
 

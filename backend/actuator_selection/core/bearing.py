@@ -41,6 +41,7 @@ manual Table 1: d_p = 54 mm, R = 14 mm, C = 7400 N, C_0 = 12800 N):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -170,4 +171,4 @@ def l10_life_h(
     if equivalent_load_n <= 0 or mean_speed_rpm <= 0:
         return float("inf")
     ratio = dynamic_load_rating_n / (load_factor * equivalent_load_n)
-    return REVOLUTIONS_PER_RATING / (60.0 * mean_speed_rpm) * ratio**LIFE_EXPONENT
+    return REVOLUTIONS_PER_RATING / (60.0 * mean_speed_rpm) * math.pow(ratio, LIFE_EXPONENT)

@@ -36,6 +36,12 @@ from actuator_selection.schemas.controllers import (
     DriveOptionOut,
     controllers_note,
 )
+from actuator_selection.schemas.output_load import (
+    DRIVE_FIELD,
+    OUTPUT_LOAD_FIELD,
+    OutputLoadIn,
+    output_load_core,
+)
 
 SpeedRpm = Annotated[
     float, Field(gt=0, le=MAX_SPEED_RPM, description="n_2, load speed at the output [rpm]")
@@ -191,6 +197,8 @@ class SelectionRequest(StrictModel):
         "checked against T_L at standstill (check `brake_holding`)",
     )
     models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
+    drive: bool = DRIVE_FIELD
+    output_load: OutputLoadIn | None = OUTPUT_LOAD_FIELD
 
     def to_core(self) -> Application:
         """The application as the core sees it."""
@@ -205,6 +213,8 @@ class SelectionRequest(StrictModel):
             load=self.load.to_core(),
             high_dynamics=self.high_dynamics,
             brake=self.brake,
+            drive=self.drive,
+            output_load=output_load_core(self.output_load),
         )
 
 
@@ -370,6 +380,9 @@ class SelectionOut(ResponseModel):
     cycle: CycleIn
     high_dynamics: bool
     brake: bool = Field(default=False, description="whether a holding brake is fitted")
+    drive: bool = Field(default=False, description="whether the drive was sized too")
+    output_load: OutputLoadIn | None = Field(default=None, description="as sent, if any")
+    output_bearing: str = Field(default="", description="whether the output bearing was checked")
     models: list[str] | None = Field(
         default=None, description="the catalogue restriction as sent; null = whole catalogue"
     )
