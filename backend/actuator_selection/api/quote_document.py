@@ -53,6 +53,11 @@ CHECK_TITLES = {
     "decel_torque": "Deceleration torque |T₃| ≤ T_max",
     "continuous_duty": "Continuous duty (n_av, T_rms) in zone",
     "brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
+    "drive_current": "Peak motor current ≤ I_max",
+    "drive_voltage": "Output voltage with ωL·I ≤ DC bus output",
+    "bearing_moment": "Output bearing: tilting moment ≤ allowable",
+    "bearing_static_safety": "Output bearing: static safety f_s ≥ required",
+    "bearing_life": "Output bearing: L₁₀ life ≥ required",
 }
 GRID = "#e4e6ea"
 STATUS_TEXT = {"pass": "pass", "fail": "FAIL", "warn": "warning", "no_data": "no data"}

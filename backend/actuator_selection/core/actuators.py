@@ -54,6 +54,14 @@ class Actuator:
         Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini).
     output_bearing_moment_stiffness_nm_per_rad
         Moment stiffness of the output bearing [Nm/rad] (FHA-C, FHA-C mini).
+    inductance_line_mh
+        Winding inductance line-to-line L [mH] (CHA).
+    pole_pairs
+        The motor's number of pole pairs p (CHA tables).
+    dc_bus_voltage_v
+        The highest nominal DC bus voltage among the Table 521.1 bus classes the actuator
+        runs on [V]; derived from its interface by the catalogue snapshot, None where no
+        bus class is published.
     """
 
     model: str
@@ -89,3 +97,6 @@ class Actuator:
     output_bearing_axial_load_n: float | None = None
     output_bearing_moment_load_nm: float | None = None
     output_bearing_moment_stiffness_nm_per_rad: float | None = None
+    inductance_line_mh: float | None = None
+    pole_pairs: float | None = None
+    dc_bus_voltage_v: float | None = None

@@ -47,6 +47,8 @@ from __future__ import annotations
 import math
 from collections.abc import Collection, Sequence, Sized
 from dataclasses import dataclass, fields
+from itertools import repeat
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -77,7 +79,18 @@ IndexArray = npt.NDArray[np.intp]
 CHECK_NAMES = tuple(rule.name for rule in RULES)
 """The chapter's checks in flowchart order (:data:`~actuator_selection.core.checks.RULES`)."""
 
-ARRAY_OPS = Ops(where=np.where, isnan=np.isnan, not_=np.logical_not)
+
+def _python_pow(x: Any, exponent: float) -> Any:
+    """``math.pow`` element by element: bit for bit what the scalar flowchart computes
+    (numpy's power differs in the last bit for some inputs). The rules raise only case
+    quantities to a power, so the arrays are one column of cases."""
+    base = np.asarray(x, dtype=np.float64)
+    flat = base.ravel().tolist()
+    powers = np.fromiter(map(math.pow, flat, repeat(exponent)), np.float64, len(flat))
+    return powers.reshape(base.shape)
+
+
+ARRAY_OPS = Ops(where=np.where, isnan=np.isnan, not_=np.logical_not, sqrt=np.sqrt, pow=_python_pow)
 """The rules' operations on numpy arrays (the scalar flowchart uses
 :data:`~actuator_selection.core.checks.FLOAT_OPS`)."""
 
@@ -112,6 +125,8 @@ class _Catalogue:
     rated_speed: FloatArray
     brake_holding: FloatArray
     has_zone: BoolArray
+    drive: dict[str, FloatArray]
+    """The drive's and the output bearing's values, by their :class:`Operands` name."""
     zone_max_speed: FloatArray
     zone_columns: IndexArray
     rank_position: npt.NDArray[np.int32]
@@ -143,10 +158,61 @@ def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
         rated_speed=_optional([a.rated_speed_rpm for a in actuators]),
         brake_holding=_optional([a.brake_holding_torque_nm for a in actuators]),
         has_zone=has_zone,
+        drive=_drive_columns(actuators),
         zone_max_speed=_optional([a.zone.max_speed_rpm if a.zone else None for a in actuators]),
         zone_columns=np.flatnonzero(has_zone),
         rank_position=rank_position,
     )
+
+
+def _drive_columns(actuators: Sequence[Actuator]) -> dict[str, FloatArray]:
+    """The actuators' drive and output bearing values as selection.operands reads them."""
+
+    def milli(value: float | None) -> float | None:
+        return None if value is None else value / 1000.0
+
+    def column(values: Sequence[float | None]) -> FloatArray:
+        return _optional(values)
+
+    a = actuators
+    return {
+        "gear_ratio": column([x.gear_ratio for x in a]),
+        "torque_constant_nm_per_a": column([x.torque_constant_nm_per_a for x in a]),
+        "max_current_a": column([x.max_current_a for x in a]),
+        "no_load_starting_current_a": column([x.no_load_starting_current_a for x in a]),
+        "no_load_current_constant_a_per_rpm": column(
+            [x.no_load_current_constant_30c_a_per_rpm for x in a]
+        ),
+        "motor_voltage_constant_v_per_krpm": column(
+            [x.motor_voltage_constant_v_per_krpm for x in a]
+        ),
+        "resistance_line_ohm": column([x.resistance_line_ohm for x in a]),
+        "inductance_line_h": column([milli(x.inductance_line_mh) for x in a]),
+        "pole_pairs": column([x.pole_pairs for x in a]),
+        "dc_bus_voltage_v": column([x.dc_bus_voltage_v for x in a]),
+        "bearing_pitch_diameter_m": column([x.output_bearing_pitch_diameter_m for x in a]),
+        "bearing_offset_m": column([x.output_bearing_offset_m for x in a]),
+        "bearing_dynamic_load_rating_n": column(
+            [x.output_bearing_dynamic_load_rating_n for x in a]
+        ),
+        "bearing_static_load_rating_n": column([x.output_bearing_static_load_rating_n for x in a]),
+        "bearing_moment_load_nm": column([x.output_bearing_moment_load_nm for x in a]),
+        "bearing_dynamic_tilting_moment_nm": column(
+            [x.output_bearing_dynamic_tilting_moment_nm for x in a]
+        ),
+    }
+
+
+_OUTPUT_LOAD_FIELDS = (
+    "radial_force_n",
+    "axial_force_n",
+    "radial_lever_m",
+    "axial_lever_m",
+    "load_factor",
+    "static_safety_min",
+    "required_life_h",
+)
+"""The output load's fields, as :class:`Operands` and ``OutputLoad`` name them."""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -157,6 +223,8 @@ class _Cases:
     figures: CycleFigures
     load_inertia: FloatArray
     high_dynamics: BoolArray
+    output_load: FloatArray
+    """The output load per case (cases × :data:`_OUTPUT_LOAD_FIELDS`); NaN where none."""
 
     @property
     def size(self) -> int:
@@ -174,6 +242,7 @@ class _Cases:
             figures=CycleFigures(**{x.name: getattr(f, x.name)[start:stop] for x in fields(f)}),
             load_inertia=self.load_inertia[start:stop],
             high_dynamics=self.high_dynamics[start:stop],
+            output_load=self.output_load[start:stop],
         )
 
 
@@ -203,7 +272,22 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         figures=cycle_figures(pieces),
         load_inertia=inertia,
         high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
+        output_load=_output_loads(apps),
     )
+
+
+def _output_loads(apps: Sequence[Application]) -> FloatArray:
+    nan = math.nan
+    rows = [
+        [nan] * len(_OUTPUT_LOAD_FIELDS)
+        if a.output_load is None
+        else [
+            nan if v is None else v
+            for v in (getattr(a.output_load, name) for name in _OUTPUT_LOAD_FIELDS)
+        ]
+        for a in apps
+    ]
+    return np.array(rows, dtype=np.float64).reshape(len(apps), len(_OUTPUT_LOAD_FIELDS))
 
 
 def _zone_limits(
@@ -405,6 +489,9 @@ def _evaluate_block(
         rated_speed_rpm=cat.rated_speed,
         load_torque_nm=p.holding[:, col],
         brake_holding_torque_nm=cat.brake_holding,
+        decel_s=f.braking_s[:, col],
+        **cat.drive,
+        **{name: cases.output_load[:, k, col] for k, name in enumerate(_OUTPUT_LOAD_FIELDS)},
     )
     results = [_status_codes(r, q, shape, detail=detail) for r in rules]
     details = [d for _, _, d in results if d is not None]
@@ -619,7 +706,8 @@ def _rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequ
     if len(needed) > 1:
         raise InvalidInputError(
             "brake",
-            "cases with and without a brake need separate runs (their checks differ)",
+            "cases with different checks (with and without a brake or an output load) "
+            "need separate runs",
         )
     return needed.pop() if needed else RULES
 

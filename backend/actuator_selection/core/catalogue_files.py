@@ -122,6 +122,7 @@ ACTUATORS = CsvSpec(
             scale=KILO,
             target="output_bearing_moment_stiffness_nm_per_rad",
         ),
+        Column(name="pole_pairs", numeric=True, rule=_P),
         Column(name="notes"),
         Column(name="derivation"),
         Column(name="source", required=True),

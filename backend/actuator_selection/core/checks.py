@@ -60,6 +60,9 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any, NamedTuple
 
+from actuator_selection.core import bearing
+from actuator_selection.core.units import RAD_PER_S_PER_RPM
+
 INERTIA_RATIO_LIMIT = 3.0
 """J_L ≤ 3·J_A, the pre-selection rule of Table 515.1."""
 
@@ -240,6 +243,56 @@ class Operands(NamedTuple):
     T_L, taken as acting at standstill for the brake)."""
     brake_holding_torque_nm: Real
     """The holding brake's holding torque at the output [Nm]; NaN where not published."""
+    decel_s: Real
+    """Deceleration time t_3 [s] (Table 516.1), for the energy braking returns."""
+    gear_ratio: Real
+    """Gear ratio i [-]."""
+    torque_constant_nm_per_a: Real
+    """Torque constant at the output k_T [Nm/A] (CHA k_Tout); NaN where not published."""
+    max_current_a: Real
+    """Maximum current I_max [A]; NaN where not published."""
+    no_load_starting_current_a: Real
+    """No-load starting current I_NLS [A] (Eq. 522.2); NaN where not published."""
+    no_load_current_constant_a_per_rpm: Real
+    """No-load running current constant K_INL at 30 °C [A/rpm] (Eq. 522.2); NaN where not
+    published (the cold value: the larger, so the safe side)."""
+    motor_voltage_constant_v_per_krpm: Real
+    """Motor voltage constant K_E [V_rms line-to-line per 1000 rpm] (CHA k_EM)."""
+    resistance_line_ohm: Real
+    """Winding resistance line-to-line R [Ω]."""
+    inductance_line_h: Real
+    """Winding inductance line-to-line L [H]."""
+    pole_pairs: Real
+    """The motor's number of pole pairs p; NaN where not published."""
+    dc_bus_voltage_v: Real
+    """The highest nominal DC bus voltage the actuator runs on (its Table 521.1 bus
+    classes) [V]; NaN where no bus class is published."""
+    radial_force_n: Real
+    """External radial force F_r on the output flange [N]; NaN without an output load."""
+    axial_force_n: Real
+    """External axial force F_a [N]; NaN without an output load."""
+    radial_lever_m: Real
+    """L_r [m]: where F_r acts, from the output flange."""
+    axial_lever_m: Real
+    """L_a [m]: the distance of F_a from the axis."""
+    load_factor: Real
+    """f_w of the bearing life formula [-]."""
+    static_safety_min: Real
+    """The least static safety factor f_s the application needs [-]."""
+    required_life_h: Real
+    """The bearing life L_10 the application needs [h]; NaN where not asked."""
+    bearing_pitch_diameter_m: Real
+    """Output bearing pitch circle diameter d_p [m]; NaN where not published."""
+    bearing_offset_m: Real
+    """Output bearing offset R [m]; NaN where not published."""
+    bearing_dynamic_load_rating_n: Real
+    """Output bearing basic dynamic load rating C [N]; NaN where not published."""
+    bearing_static_load_rating_n: Real
+    """Output bearing basic static load rating C_0 [N]; NaN where not published."""
+    bearing_moment_load_nm: Real
+    """Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini)."""
+    bearing_dynamic_tilting_moment_nm: Real
+    """Allowable dynamic tilting moment M_dyn(max) [Nm] (CHA)."""
 
 
 def _where(condition: bool, if_true: float, if_false: float) -> float:
@@ -256,9 +309,15 @@ class Ops:
     """NaN test: an unpublished catalogue value."""
     not_: Callable[[Any], Any]
     """Logical negation (``~`` would turn a Python bool into −1 or −2)."""
+    sqrt: Callable[[Any], Any]
+    """Square root (correctly rounded in IEEE 754, so equal on floats and arrays)."""
+    pow: Callable[[Any, float], Any]
+    """``x`` to a float power, as Python's ``math.pow`` computes it: numpy's own power
+    differs from the C library's in the last bit for some inputs, so the vectorised
+    flowchart maps ``math.pow`` over its (case-only) arrays."""
 
 
-FLOAT_OPS = Ops(where=_where, isnan=math.isnan, not_=operator.not_)
+FLOAT_OPS = Ops(where=_where, isnan=math.isnan, not_=operator.not_, sqrt=math.sqrt, pow=math.pow)
 """The operations on Python floats, for the scalar flowchart."""
 
 Formula = Callable[[Operands, Ops], Any]
@@ -636,6 +695,315 @@ and needs no holding at standstill when it is friction; taken as acting at stand
 covers a load that does (a weight, a spring, a process force), so the check is on the
 safe side."""
 
+# --- drive_current: peak motor current ≤ I_max (Eq. 522.2, 522.3 reversed) --------------------
+
+
+def _no_load_current(q: Operands, xp: Ops) -> Real:
+    """I_NLR = I_NLS + K_INL(30 °C)·n_2 (Eq. 522.2) at the load speed, the largest over the
+    cycle; 0 where the catalogue gives neither (the check is then approximate)."""
+    unknown = xp.isnan(q.no_load_starting_current_a) | xp.isnan(
+        q.no_load_current_constant_a_per_rpm
+    )
+    running = q.no_load_starting_current_a + q.no_load_current_constant_a_per_rpm * q.speed_rpm
+    return xp.where(unknown, 0.0, running)
+
+
+def _larger(a: Real, b: Real, xp: Ops) -> Real:
+    return xp.where(b > a, b, a)
+
+
+def _peak_current(q: Operands, xp: Ops) -> Real:
+    """I = max(T_1, |T_3|)/k_T + I_NLR (Eq. 522.3 solved for I, Eq. 522.2)."""
+    torque = _larger(q.accel_torque_nm, abs(q.decel_torque_nm), xp)
+    return torque / q.torque_constant_nm_per_a + _no_load_current(q, xp)
+
+
+def _peak_current_floor(q: Operands, xp: Ops) -> Real:
+    """The least peak current over every J_A ≥ 0: from the least T_1 and |T_3|."""
+    torque = _larger(q.accel_torque_floor_nm, q.decel_torque_floor_nm, xp)
+    return torque / q.torque_constant_nm_per_a + _no_load_current(q, xp)
+
+
+def regenerative_energy_j(*, decel_torque_nm: float, speed_rpm: float, decel_s: float) -> float:
+    """Mechanical energy braking returns per cycle [J]: −T_3·(2π/60)·n_2·t_3/2 where T_3 < 0.
+
+    The output torque T_3 is constant while the speed falls linearly from n_2 to 0 in
+    t_3 (Table 516.1), so the energy is the torque times the angle turned. It is what
+    flows back into the actuator; the gear's and winding's losses take part of it
+    before it reaches the DC bus, so it bounds what a braking resistor or the bus
+    capacitors must take. The chapter's worked example (T_3 = −85.48 Nm, 40 rpm, 0.1 s):
+
+    >>> round(regenerative_energy_j(decel_torque_nm=-85.48, speed_rpm=40, decel_s=0.1), 2)
+    17.9
+    """
+    if decel_torque_nm >= 0:
+        return 0.0
+    return -decel_torque_nm * (speed_rpm * RAD_PER_S_PER_RPM) * decel_s / 2.0
+
+
+def _rms_current_bound(q: Operands) -> float:
+    """An upper bound of the rms current: T_rms/k_T + the largest I_NLR (Minkowski)."""
+    return float(q.rms_torque_nm / q.torque_constant_nm_per_a + _no_load_current(q, FLOAT_OPS))
+
+
+def _current_message(q: Operands, status: Status, current: float, i_max: float) -> str:
+    relation = "≤" if status is Status.PASS else "exceeds"
+    no_load = _no_load_current(q, FLOAT_OPS)
+    words = (
+        f"peak motor current I = max(T_1, |T_3|)/k_T + I_NLR = {current:.4g} A {relation} "
+        f"I_max = {i_max:.4g} A"
+    )
+    if math.isnan(q.no_load_starting_current_a) or math.isnan(q.no_load_current_constant_a_per_rpm):
+        words += " (approximate: the catalogue gives no no-load current, left out)"
+    else:
+        words += f" (I_NLR = {no_load:.3g} A at n_2, K_INL at 30 °C)"
+    if not math.isnan(q.rms_torque_nm):
+        words += f"; rms current ≤ {_rms_current_bound(q):.4g} A"
+    if not math.isnan(q.decel_torque_nm):
+        energy = regenerative_energy_j(
+            decel_torque_nm=q.decel_torque_nm, speed_rpm=q.speed_rpm, decel_s=q.decel_s
+        )
+        words += f"; braking returns up to {energy:.4g} J per cycle to the drive"
+    return words
+
+
+DRIVE_CURRENT = Rule(
+    name="drive_current",
+    reference="Eq. 522.2, Eq. 522.3",
+    unit="A",
+    value=_peak_current,
+    limit=lambda q, xp: q.max_current_a,
+    requires=(
+        published("inertia_kgm2", "moment of inertia J_A (T_1 and T_3 need it)"),
+        published("torque_constant_nm_per_a", "torque constant k_T"),
+        published("max_current_a", "maximum current I_max"),
+    ),
+    approximate=lambda q, xp: (
+        xp.isnan(q.no_load_starting_current_a) | xp.isnan(q.no_load_current_constant_a_per_rpm)
+    ),
+    message=_current_message,
+    lower_bound=_peak_current_floor,
+)
+"""Peak motor current I = max(T_1, |T_3|)/k_T + I_NLR ≤ I_max (Eq. 522.3 solved for the
+current, I_NLR by Eq. 522.2 at n_2 with K_INL at 30 °C, the larger cold value).
+
+Adding I_NLR while braking is on the safe side (the no-load losses help to brake).
+Where the catalogue gives no no-load current (FHA-C) it is left out and the check is
+approximate. The message reports an upper bound of the rms current and the energy
+braking returns per cycle (:func:`regenerative_energy_j`)."""
+
+
+# --- drive_voltage: U with ωL·I in quadrature ≤ the bus's output voltage (Eq. 521.2) ---------
+
+SQRT2 = math.sqrt(2.0)
+"""U_DC/√2: the largest sinusoidal line-to-line rms voltage of a bus with space-vector
+modulation (:func:`~actuator_selection.core.electrical.max_output_voltage_v`)."""
+
+
+def _resistive_sum(q: Operands) -> Real:
+    """Eq. 521.2 as printed: U_OUT = n·i·K_E + I_MAX·R (line-to-line rms)."""
+    motor_rpm = q.speed_rpm * q.gear_ratio
+    return motor_rpm * (q.motor_voltage_constant_v_per_krpm / 1000.0) + (
+        q.max_current_a * q.resistance_line_ohm
+    )
+
+
+def _inductive_drop(q: Operands) -> Real:
+    """ω·L·I_MAX with ω = 2π·p·n·i/60, the electrical angular frequency [V]."""
+    omega = q.speed_rpm * q.gear_ratio * RAD_PER_S_PER_RPM * q.pole_pairs
+    return omega * q.inductance_line_h * q.max_current_a
+
+
+def _drive_voltage(q: Operands, xp: Ops) -> Real:
+    """U = √((n·i·K_E + I·R)² + (ω·L·I)²): Eq. 521.2 with the inductive drop in quadrature."""
+    resistive, inductive = _resistive_sum(q), _inductive_drop(q)
+    return xp.sqrt(resistive * resistive + inductive * inductive)
+
+
+def _voltage_message(q: Operands, status: Status, volts: float, available: float) -> str:
+    relation = "≤" if status is Status.PASS else "exceeds"
+    return (
+        f"U = √((n·i·K_E + I_max·R)² + (ω·L·I_max)²) = {volts:.4g} V_rms at n_2 = "
+        f"{q.speed_rpm:.4g} rpm {relation} {available:.4g} V_rms from a "
+        f"{q.dc_bus_voltage_v:g} V DC bus (space-vector modulation); Eq. 521.2 as printed "
+        f"(no inductive drop) gives {_resistive_sum(q):.4g} V_rms"
+    )
+
+
+DRIVE_VOLTAGE = Rule(
+    name="drive_voltage",
+    reference="Eq. 521.2 with ωL·I in quadrature",
+    unit="V",
+    value=_drive_voltage,
+    limit=lambda q, xp: q.dc_bus_voltage_v / SQRT2,
+    requires=(
+        published("motor_voltage_constant_v_per_krpm", "motor voltage constant K_E (V_rms)"),
+        published("max_current_a", "maximum current I_max"),
+        published("resistance_line_ohm", "line-to-line resistance R"),
+        published("inductance_line_h", "line-to-line inductance L"),
+        published("pole_pairs", "number of pole pairs p"),
+        published("dc_bus_voltage_v", "DC bus class"),
+    ),
+    message=_voltage_message,
+)
+"""The controller's output voltage at the load speed n_2 and I_max: Eq. 521.2 with the
+inductive drop ω·L·I in quadrature, U = √((n·i·K_E + I·R)² + (ω·L·I)²), all line-to-line
+rms, ω = 2π·p·n·i/60 the electrical angular frequency, against U_DC/√2 of the highest
+DC bus class the actuator runs on. The resistive drop stays in phase with the back-EMF
+and uses R and L line-to-line, as the chapter does: on the safe side (between two
+terminals of a star winding the drops are 2/√3 of their line-to-line share). Eq. 521.2
+as printed is reported beside it. Only the CHA-style constants (motor K_E in V_rms
+line-to-line, R and L line-to-line, pole pairs) are published; elsewhere no data."""
+
+
+# --- output bearing: tilting moment, static safety, L_10 life (CHA §4.3; FHA-C ch. 2) -------
+
+
+def _moment(q: Operands) -> Real:
+    return bearing.tilting_moment_nm(
+        radial_force_n=q.radial_force_n,
+        axial_force_n=q.axial_force_n,
+        radial_lever_m=q.radial_lever_m,
+        axial_lever_m=q.axial_lever_m,
+        offset_m=q.bearing_offset_m,
+    )
+
+
+def _moment_limit(q: Operands, xp: Ops) -> Real:
+    """The allowable moment load (FHA-C, FHA-C mini), else the CHA's M_dyn(max)."""
+    return xp.where(
+        xp.isnan(q.bearing_moment_load_nm),
+        q.bearing_dynamic_tilting_moment_nm,
+        q.bearing_moment_load_nm,
+    )
+
+
+def _moment_message(q: Operands, status: Status, moment: float, limit: float) -> str:
+    relation = "≤" if status is Status.PASS else "exceeds"
+    what = (
+        "the allowable dynamic tilting moment M_dyn"
+        if math.isnan(q.bearing_moment_load_nm)
+        else "the allowable moment load"
+    )
+    return (
+        f"tilting moment M = F_r·(L_r + R) + F_a·L_a = {moment:.4g} Nm {relation} {what} "
+        f"= {limit:.4g} Nm (R = {q.bearing_offset_m * 1000:.3g} mm)"
+    )
+
+
+BEARING_MOMENT = Rule(
+    name="bearing_moment",
+    reference="CHA §4.3; FHA-C manual ch. 2, formula (1)",
+    unit="Nm",
+    value=lambda q, xp: _moment(q),
+    limit=_moment_limit,
+    requires=(
+        published("bearing_offset_m", "output bearing offset R"),
+        Requirement(
+            any_of=("bearing_moment_load_nm", "bearing_dynamic_tilting_moment_nm"),
+            what="allowable tilting moment of the output bearing",
+        ),
+    ),
+    message=_moment_message,
+)
+"""M = F_r·(L_r + R) + F_a·L_a ≤ the allowable moment (FHA-C "permissible moment
+capacity"; CHA M_dyn(max), the moving bearing's limit, stricter than the static M_0,
+which the static safety factor covers)."""
+
+
+def _static_load(q: Operands) -> Real:
+    return bearing.static_equivalent_load_n(
+        radial_force_n=q.radial_force_n,
+        axial_force_n=q.axial_force_n,
+        moment_nm=_moment(q),
+        pitch_diameter_m=q.bearing_pitch_diameter_m,
+    )
+
+
+def _static_message(q: Operands, status: Status, needed: float, c_0: float) -> str:
+    p_0 = _static_load(q)
+    f_s = c_0 / p_0 if p_0 > 0 else math.inf
+    relation = "≥" if status is Status.PASS else "below"
+    return (
+        f"static safety factor f_s = C_0/P_0 = {c_0:.4g} N / {p_0:.4g} N = {f_s:.3g} "
+        f"{relation} the required {q.static_safety_min:.3g} "
+        f"(P_0 = F_r + 2M/d_p + 0.44·F_a)"
+    )
+
+
+BEARING_STATIC = Rule(
+    name="bearing_static_safety",
+    reference="CHA §4.3; FHA-C manual ch. 2, formulas (9), (10)",
+    unit="N",
+    value=lambda q, xp: q.static_safety_min * _static_load(q),
+    limit=lambda q, xp: q.bearing_static_load_rating_n,
+    requires=(
+        published("bearing_pitch_diameter_m", "output bearing pitch circle diameter d_p"),
+        published("bearing_offset_m", "output bearing offset R"),
+        published("bearing_static_load_rating_n", "output bearing static load rating C_0"),
+    ),
+    message=_static_message,
+)
+"""f_s = C_0/P_0 ≥ f_s,min, checked as f_s,min·P_0 ≤ C_0 [N] (no division by a load that
+may be 0): the static capacity the application needs against the one it has."""
+
+
+def _dynamic_load(q: Operands, xp: Ops) -> Real:
+    return bearing.dynamic_equivalent_load_n(
+        radial_force_n=q.radial_force_n,
+        axial_force_n=q.axial_force_n,
+        moment_nm=_moment(q),
+        pitch_diameter_m=q.bearing_pitch_diameter_m,
+        xp=xp,
+    )
+
+
+def _required_rating(q: Operands, xp: Ops) -> Real:
+    """C_req = f_w·P_c·(L_h·60·n_av/10⁶)^(3/10): formula (7) solved for C."""
+    factor = bearing.life_revolutions_factor(
+        required_life_h=q.required_life_h, mean_speed_rpm=q.mean_speed_rpm, xp=xp
+    )
+    return q.load_factor * _dynamic_load(q, xp) * factor
+
+
+def _life_message(q: Operands, status: Status, needed: float, c: float) -> str:
+    p_c = _dynamic_load(q, FLOAT_OPS)
+    life = bearing.l10_life_h(
+        dynamic_load_rating_n=c,
+        load_factor=q.load_factor,
+        equivalent_load_n=p_c,
+        mean_speed_rpm=q.mean_speed_rpm,
+    )
+    relation = "≥" if status is Status.PASS else "below"
+    return (
+        f"output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life:.4g} h at "
+        f"n_av = {q.mean_speed_rpm:.4g} rpm {relation} the required {q.required_life_h:.4g} h "
+        f"(P_c = {p_c:.4g} N, f_w = {q.load_factor:.3g}; C needed {needed:.4g} N, "
+        f"C = {c:.4g} N)"
+    )
+
+
+BEARING_LIFE = Rule(
+    name="bearing_life",
+    reference="CHA §4.3, Table 70.4; FHA-C manual ch. 2, formulas (5)–(7)",
+    unit="N",
+    value=_required_rating,
+    limit=lambda q, xp: q.bearing_dynamic_load_rating_n,
+    requires=(
+        published("bearing_pitch_diameter_m", "output bearing pitch circle diameter d_p"),
+        published("bearing_offset_m", "output bearing offset R"),
+        published("bearing_dynamic_load_rating_n", "output bearing dynamic load rating C"),
+    ),
+    message=_life_message,
+)
+"""L_10 at the cycle's mean speed n_av ≥ the required life, checked as the dynamic load
+rating that life needs, f_w·P_c·(L_h·60·n_av/10⁶)^(3/10), against C [N]; the message
+gives L_10 in hours."""
+
+BEARING_RULES: tuple[Rule, ...] = (BEARING_MOMENT, BEARING_STATIC)
+"""The output bearing's checks where an output load is given (``Application.output_load``);
+:data:`BEARING_LIFE` joins them where a required life is given."""
+
 RULES: tuple[Rule, ...] = (
     MAX_SPEED,
     INERTIA_RATIO,
@@ -644,6 +1012,13 @@ RULES: tuple[Rule, ...] = (
     CONTINUOUS_DUTY,
 )
 """The flowchart's checks in the manufacturer's order (chapter p. 514–517)."""
+
+DRIVE_RULES: tuple[Rule, ...] = (DRIVE_CURRENT, DRIVE_VOLTAGE)
+"""The drive's checks, where asked for (``Application.drive``): peak current (Eq. 522.2,
+522.3) and output voltage (Eq. 521.2 with the inductive drop). Not in :data:`RULES`:
+the chapter's flowchart ends at the continuous-duty zone, and the drive's data (pole
+pairs, a K_E in V_rms) is published for the CHA only, so in the default set every other
+actuator would lose its verdict to "no data"."""
 
 BRAKE_RULES: tuple[Rule, ...] = (*RULES, BRAKE_HOLDING)
 """The checks of an actuator fitted with its holding brake: the flowchart's, then the

@@ -310,6 +310,7 @@ class Profile:
     decel_floor_nm: float
     rms_floor_nm: float
     holding_torque_nm: float
+    braking_s: float
 
     def torques(self, actuator_inertia_kgm2: float) -> CycleTorques:
         """T_1, T_2, T_3, T_rms for an actuator of inertia J_A, written operation for
@@ -485,6 +486,8 @@ class CycleFigures:
     """The least |T_3| over every J_A ≥ 0."""
     rms_floor_nm: FloatArray
     """The least T_rms over every J_A ≥ 0."""
+    braking_s: FloatArray
+    """Time spent braking (speed falling in magnitude) [s]: t_3 in the trapezoid."""
 
 
 def cycle_figures(p: PieceArrays) -> CycleFigures:
@@ -506,6 +509,7 @@ def cycle_figures(p: PieceArrays) -> CycleFigures:
         cycle = np.zeros(rows)
         travel = np.zeros(rows)
         moving = np.zeros(rows)
+        braking = np.zeros(rows)
         peak = np.zeros(rows)
         accel_floor = np.zeros(rows)
         decel_floor = np.zeros(rows)
@@ -519,6 +523,7 @@ def cycle_figures(p: PieceArrays) -> CycleFigures:
             distance = np.where(a0 == a1, (n0 + n1) / 2 * t, (n0 + n1) / 2 * t + ramp)
             travel = travel + np.abs(distance)
             moving = moving + np.where(p.moving[:, k], t, 0.0)
+            braking = braking + np.where(p.braking[:, k], t, 0.0)
             peak = np.maximum(peak, np.maximum(np.abs(n0), np.abs(n1)))
             s = p.direction[:, k]
             for alpha in (a0, a1):
@@ -550,6 +555,7 @@ def cycle_figures(p: PieceArrays) -> CycleFigures:
         accel_floor_nm=accel_floor,
         decel_floor_nm=decel_floor,
         rms_floor_nm=rms_floor,
+        braking_s=braking,
     )
 
 
@@ -575,6 +581,7 @@ def profile_from(motion: Motion, figures: CycleFigures, row: int, holding: float
         decel_floor_nm=float(figures.decel_floor_nm[row]),
         rms_floor_nm=float(figures.rms_floor_nm[row]),
         holding_torque_nm=holding,
+        braking_s=float(figures.braking_s[row]),
     )
     if not math.isfinite(profile.mean_speed_rpm):
         _require_finite_result(profile.mean_speed_rpm, "n_av (Eq. 514.3)", field="speed_rpm")

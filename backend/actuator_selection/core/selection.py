@@ -37,11 +37,16 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
+from functools import lru_cache
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
+from actuator_selection.core.bearing import OutputLoad
 from actuator_selection.core.checks import (
+    BEARING_LIFE,
+    BEARING_RULES,
     BRAKE_RULES,
+    DRIVE_RULES,
     INERTIA_RATIO_LIMIT,
     RULES,
     Check,
@@ -134,10 +139,37 @@ class Application:
             self._profile.append(profile_of(self.cycle))
         return self._profile[0]
 
+    drive: bool = False
+    """Whether the drive is sized too: peak current and output voltage
+    (:data:`~actuator_selection.core.checks.DRIVE_RULES`)."""
+    output_load: OutputLoad | None = None
+    """An external load on the output flange, or None: the output bearing is not checked
+    (:data:`~actuator_selection.core.checks.BEARING_RULES`)."""
+
     @property
     def rules(self) -> tuple[Rule, ...]:
-        """The checks this application needs: the flowchart's, and the brake's if fitted."""
-        return BRAKE_RULES if self.brake else RULES
+        """The checks this application needs: the flowchart's, the brake's if fitted, the
+        output bearing's if an output load is given (its life if a life is required)."""
+        load = self.output_load
+        return _rule_set(
+            self.brake,
+            self.drive,
+            load is not None,
+            load is not None and load.required_life_h is not None,
+        )
+
+
+@lru_cache(maxsize=16)
+def _rule_set(brake: bool, drive: bool, bearing: bool, life: bool) -> tuple[Rule, ...]:
+    """One tuple per combination, so that cases group by their rules cheaply."""
+    rules = BRAKE_RULES if brake else RULES
+    if drive:
+        rules = (*rules, *DRIVE_RULES)
+    if bearing:
+        rules = (*rules, *BEARING_RULES)
+    if life:
+        rules = (*rules, BEARING_LIFE)
+    return rules
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -231,6 +263,52 @@ def operands(
         nan if actuator.rated_speed_rpm is None else actuator.rated_speed_rpm,
         profile.holding_torque_nm,
         nan if actuator.brake_holding_torque_nm is None else actuator.brake_holding_torque_nm,
+        *_drive_and_bearing(actuator, app, profile),
+    )
+
+
+def _value(value: float | None) -> float:
+    return math.nan if value is None else value
+
+
+def _drive_and_bearing(actuator: Actuator, app: Application, profile: Profile) -> tuple[float, ...]:
+    """The operands after ``brake_holding_torque_nm``: the drive's and the output bearing's
+    catalogue values and the output load, in the order of :class:`Operands`."""
+    a, nan = actuator, math.nan
+    k_inl = a.no_load_current_constant_30c_a_per_rpm
+    inductance = a.inductance_line_mh
+    load = app.output_load
+    if load is None:
+        forces: tuple[float, ...] = (nan,) * 7
+    else:
+        forces = (
+            load.radial_force_n,
+            load.axial_force_n,
+            load.radial_lever_m,
+            load.axial_lever_m,
+            load.load_factor,
+            load.static_safety_min,
+            _value(load.required_life_h),
+        )
+    return (
+        profile.braking_s,
+        a.gear_ratio,
+        _value(a.torque_constant_nm_per_a),
+        _value(a.max_current_a),
+        _value(a.no_load_starting_current_a),
+        _value(k_inl),
+        _value(a.motor_voltage_constant_v_per_krpm),
+        _value(a.resistance_line_ohm),
+        nan if inductance is None else inductance / 1000.0,
+        _value(a.pole_pairs),
+        _value(a.dc_bus_voltage_v),
+        *forces,
+        _value(a.output_bearing_pitch_diameter_m),
+        _value(a.output_bearing_offset_m),
+        _value(a.output_bearing_dynamic_load_rating_n),
+        _value(a.output_bearing_static_load_rating_n),
+        _value(a.output_bearing_moment_load_nm),
+        _value(a.output_bearing_dynamic_tilting_moment_nm),
     )
 
 

@@ -80,6 +80,8 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
         output_bearing_axial_load_n=row.output_bearing_axial_load_n,
         output_bearing_moment_load_nm=row.output_bearing_moment_load_nm,
         output_bearing_moment_stiffness_nm_per_rad=row.output_bearing_moment_stiffness_nm_per_rad,
+        inductance_line_mh=row.inductance_line_mh,
+        pole_pairs=row.pole_pairs,
     )
     return ActuatorRecord(
         actuator=actuator,

@@ -101,6 +101,7 @@ class ActuatorOut(ResponseModel):
     output_bearing_moment_stiffness_nm_per_rad: float | None = Field(
         description="moment stiffness of the output bearing [Nm/rad]"
     )
+    pole_pairs: float | None = Field(description="the motor's number of pole pairs p")
     notes: str | None
     derivation: str | None = Field(description="how the row's derived values were obtained")
     source: str
@@ -156,6 +157,7 @@ class ActuatorOut(ResponseModel):
             output_bearing_axial_load_n=a.output_bearing_axial_load_n,
             output_bearing_moment_load_nm=a.output_bearing_moment_load_nm,
             output_bearing_moment_stiffness_nm_per_rad=a.output_bearing_moment_stiffness_nm_per_rad,
+            pole_pairs=a.pole_pairs,
             notes=record.notes,
             derivation=record.derivation,
             source=record.source,

@@ -38,6 +38,12 @@ from actuator_selection.schemas.controllers import (
     DriveOptionOut,
     controllers_note,
 )
+from actuator_selection.schemas.output_load import (
+    DRIVE_FIELD,
+    OUTPUT_LOAD_FIELD,
+    OutputLoadIn,
+    output_load_core,
+)
 
 SpeedRpm = Annotated[
     float,
@@ -360,31 +366,31 @@ class SelectionRequest(StrictModel):
         "checked against T_L at standstill (check `brake_holding`)",
     )
     models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
+    drive: bool = DRIVE_FIELD
+    output_load: OutputLoadIn | None = OUTPUT_LOAD_FIELD
 
     def to_core(self) -> Application:
         """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
         t_1…t_p pattern) where that is what was sent, else a motion of segments."""
         speed = self.load.speed_rpm
+        options: dict[str, Any] = {
+            "high_dynamics": self.high_dynamics,
+            "brake": self.brake,
+            "drive": self.drive,
+            "output_load": output_load_core(self.output_load),
+        }
         if isinstance(self.cycle, CycleIn) and self.load.chapter_shorthand:
             if speed is None:
                 raise InvalidInputError("load.speed_rpm", "is required with the t_1…t_p cycle")
-            return Application(
-                pattern=SpeedPattern(
-                    speed_rpm=speed,
-                    accel_s=self.cycle.accel_s,
-                    constant_s=self.cycle.constant_s,
-                    decel_s=self.cycle.decel_s,
-                    pause_s=self.cycle.pause_s,
-                ),
-                load=self.load.to_core(),
-                high_dynamics=self.high_dynamics,
-                brake=self.brake,
+            pattern = SpeedPattern(
+                speed_rpm=speed,
+                accel_s=self.cycle.accel_s,
+                constant_s=self.cycle.constant_s,
+                decel_s=self.cycle.decel_s,
+                pause_s=self.cycle.pause_s,
             )
-        return Application(
-            motion=self.cycle.to_motion(speed, self.load.to_axis()),
-            high_dynamics=self.high_dynamics,
-            brake=self.brake,
-        )
+            return Application(pattern=pattern, load=self.load.to_core(), **options)
+        return Application(motion=self.cycle.to_motion(speed, self.load.to_axis()), **options)
 
 
 class ResolvedLoad(ResponseModel):
@@ -618,6 +624,9 @@ class SelectionOut(ResponseModel):
     cycle: AnyCycleIn
     high_dynamics: bool
     brake: bool = Field(default=False, description="whether a holding brake is fitted")
+    drive: bool = Field(default=False, description="whether the drive was sized too")
+    output_load: OutputLoadIn | None = Field(default=None, description="as sent, if any")
+    output_bearing: str = Field(default="", description="whether the output bearing was checked")
     models: list[str] | None = Field(
         default=None, description="the catalogue restriction as sent; null = whole catalogue"
     )

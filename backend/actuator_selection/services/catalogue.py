@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 
 from sqlalchemy.orm import Session
@@ -116,14 +116,17 @@ class CatalogueSnapshot:
     def read(cls, session: Session, version: int) -> CatalogueSnapshot:
         """Read the catalogue in ``session``'s transaction (pinned at ``version``)."""
         repo = ProtectionRepository(session)
+        buses = tuple(repo.bus_classes())
+        interfaces = {model: r.interface for model, r in repo.interfaces(None).items()}
         return cls(
             version=version,
-            actuators=tuple(r.actuator for r in CatalogueRepository(session).actuators()),
-            controllers=tuple(r.controller for r in repo.controllers()),
-            buses=tuple(repo.bus_classes()),
-            interfaces=MappingProxyType(
-                {model: r.interface for model, r in repo.interfaces(None).items()}
+            actuators=tuple(
+                with_bus_voltage(r.actuator, interfaces.get(r.actuator.model), buses)
+                for r in CatalogueRepository(session).actuators()
             ),
+            controllers=tuple(r.controller for r in repo.controllers()),
+            buses=buses,
+            interfaces=MappingProxyType(interfaces),
         )
 
     def actuators_of(self, models: Iterable[str] | None) -> list[Actuator]:
@@ -132,6 +135,19 @@ class CatalogueSnapshot:
             return list(self.actuators)
         wanted = set(models)
         return [a for a in self.actuators if a.model in wanted]
+
+
+def with_bus_voltage(
+    actuator: Actuator, interface: ActuatorInterface | None, buses: Iterable[DcBusClass]
+) -> Actuator:
+    """``actuator`` with :attr:`~Actuator.dc_bus_voltage_v`: the highest nominal voltage of
+    the DC bus classes (Table 521.1) its interface runs on; None where none is published."""
+    if interface is None or interface.bus_classes is None:
+        return actuator
+    voltages = [b.nominal_voltage_v for b in buses if b.bus_class in interface.bus_classes]
+    if not voltages:
+        return actuator
+    return replace(actuator, dc_bus_voltage_v=max(voltages))
 
 
 class CatalogueCache:

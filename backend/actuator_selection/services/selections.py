@@ -42,6 +42,7 @@ from actuator_selection.core.errors import ConflictError, NotFoundError
 from actuator_selection.core.selection import Application, Verdict, evaluate, select, size_key
 from actuator_selection.db.repositories import CatalogueRepository, SelectionRepository
 from actuator_selection.schemas.actuators import ActuatorOut
+from actuator_selection.schemas.output_load import output_bearing_note
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
     CandidateDetailOut,
@@ -254,6 +255,9 @@ def size_selection(
         "cycle": request["cycle"],
         "high_dynamics": body.high_dynamics,
         "brake": body.brake,
+        "drive": body.drive,
+        "output_load": request.get("output_load"),
+        "output_bearing": output_bearing_note(body.output_load),
         "models": body.models,
         "cycle_time_s": profile.cycle_s,
         "mean_speed_rpm": profile.mean_speed_rpm,

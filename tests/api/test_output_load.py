@@ -1,0 +1,116 @@
+"""POST /selections (and the batch) with the optional output load and drive sizing: the
+bearing checks appear only with an output load, the drive checks only when asked, and
+bad output load values are a 422 naming the field. Runs on the seeded catalogue."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+BODY: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+    "models": ["CHA-25A-50", "FHA-14C-50", "FHA-25C-50"],
+}
+LOAD = {
+    "radial_force_n": 1000,
+    "axial_force_n": 500,
+    "radial_lever_m": 0.05,
+    "axial_lever_m": 0.02,
+    "required_life_h": 20000,
+}
+BEARING = {"bearing_moment", "bearing_static_safety", "bearing_life"}
+DRIVE = {"drive_current", "drive_voltage"}
+
+
+def post(client: TestClient, body: dict[str, Any]) -> Any:
+    return client.post("/api/v1/selections", json=body)
+
+
+def detail(client: TestClient, selection: str, model: str) -> dict[str, Any]:
+    response = client.get(f"/api/v1/selections/{selection}/candidates/{model}")
+    assert response.status_code == 200
+    result: dict[str, Any] = response.json()
+    return result
+
+
+def test_output_load_omitted_means_no_bearing_check(client: TestClient) -> None:
+    response = post(client, BODY)
+    assert response.status_code == 201
+    answer = response.json()
+    names = {r["name"] for r in answer["check_rules"]}
+    assert not names & BEARING
+    assert not names & DRIVE
+    assert answer["output_load"] is None
+    assert answer["output_bearing"] == "not checked: no output_load given"
+    for candidate in answer["candidates"]:
+        assert not {c["name"] for c in candidate["checks"]} & BEARING
+
+
+def test_output_load_and_drive_add_their_checks(client: TestClient) -> None:
+    response = post(client, {**BODY, "output_load": LOAD, "drive": True})
+    assert response.status_code == 201
+    answer = response.json()
+    names = [r["name"] for r in answer["check_rules"]]
+    assert names[-5:] == [
+        "drive_current",
+        "drive_voltage",
+        "bearing_moment",
+        "bearing_static_safety",
+        "bearing_life",
+    ]
+    assert answer["output_bearing"] == "tilting moment, static safety and L_10 life checked"
+    assert answer["output_load"]["radial_force_n"] == 1000
+    mini = {c["name"]: c for c in detail(client, answer["id"], "FHA-14C-50")["checks"]}
+    # FHA-14C: R = 14 mm (FHA-C mini manual Table 1), moment capacity 75 Nm.
+    assert mini["bearing_moment"]["value"] == pytest.approx(1000 * 0.064 + 500 * 0.02)
+    assert mini["bearing_moment"]["limit"] == 75
+    assert mini["bearing_moment"]["reference"].startswith("CHA §4.3; FHA-C manual ch. 2")
+    # FHA-25C (LLC manual): no R, d_p, C: no data; no pole pairs, no V_rms K_E.
+    fha = {c["name"]: c for c in detail(client, answer["id"], "FHA-25C-50")["checks"]}
+    assert fha["bearing_moment"]["status"] == "no_data"
+    assert fha["drive_voltage"]["status"] == "no_data"
+    cha = {c["name"]: c for c in detail(client, answer["id"], "CHA-25A-50")["checks"]}
+    assert cha["drive_voltage"]["status"] in {"pass", "fail"}
+    motor_rpm = 40 * 50
+    full = math.hypot(motor_rpm * 0.037 + 4.0 * 3.7, 2 * math.pi * motor_rpm / 60 * 6 * 6e-3 * 4.0)
+    assert cha["drive_voltage"]["value"] == pytest.approx(full, rel=1e-12)
+    assert cha["drive_voltage"]["limit"] == pytest.approx(560 / math.sqrt(2))
+    assert cha["drive_current"]["limit"] == 4.0
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [
+        ("radial_force_n", -1),
+        ("axial_lever_m", "far"),
+        ("load_factor", 0.5),
+        ("required_life_h", 0),
+        ("unknown", 1),
+    ],
+)
+def test_bad_output_load_is_a_422_naming_the_field(
+    client: TestClient, field: str, value: Any
+) -> None:
+    response = post(client, {**BODY, "output_load": {**LOAD, field: value}})
+    assert response.status_code == 422
+    locs = [e["loc"] for e in response.json()["detail"]]
+    assert ["body", "output_load", field] in locs
+
+
+def test_missing_output_load_field_is_a_422(client: TestClient) -> None:
+    load = {k: v for k, v in LOAD.items() if k != "radial_lever_m"}
+    response = post(client, {**BODY, "output_load": load})
+    assert response.status_code == 422
+    assert ["body", "output_load", "radial_lever_m"] in [
+        e["loc"] for e in response.json()["detail"]
+    ]
+
+
+def test_batch_groups_cases_by_their_checks(client: TestClient) -> None:
+    cases = [BODY, {**BODY, "output_load": LOAD}, {**BODY, "drive": True}]
+    response = client.post("/api/v1/selections/batch", json={"cases": cases, "top": 3})
+    assert response.status_code == 200, response.text

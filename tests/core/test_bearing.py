@@ -1,0 +1,209 @@
+"""Output bearing checks: tilting moment, static safety factor and L_10 life (CHA manual
+§4.3; Harmonic Drive LLC FHA-C manual ch. 2, formulas (1), (5)–(7), (9), (10)).
+
+Reference values are worked by hand from the manuals' formulas with the bearing data of
+the FHA-C mini manual (§2-3 Table 1: FHA-14C d_p = 54 mm, R = 14 mm, C = 7400 N,
+C_0 = 12800 N, moment capacity 75 Nm) and the CHA tables (CHA-25A: d_p = 0.088 m,
+R = 0.018 m, C = 30000 N, C_0 = 45000 N, M_dyn = 254 Nm). No numeric worked example of
+the bearing check was found in the public copies searched, so none is reproduced."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.batch import evaluate_batch
+from actuator_selection.core.bearing import OutputLoad, l10_life_h
+from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, RULES, Status
+from actuator_selection.core.cycle import Load, SpeedPattern, mean_speed_rpm
+from actuator_selection.core.selection import Application, evaluate
+
+FHA_14C_50 = Actuator(
+    model="FHA-14C-50",
+    family="FHA-C mini",
+    gear_ratio=50,
+    max_torque_nm=18,
+    max_speed_rpm=116,
+    inertia_kgm2=0.05,
+    output_bearing_pitch_diameter_m=0.054,
+    output_bearing_offset_m=0.014,
+    output_bearing_dynamic_load_rating_n=7400,
+    output_bearing_static_load_rating_n=12800,
+    output_bearing_moment_load_nm=75,
+)
+CHA_25A_50 = Actuator(
+    model="CHA-25A-50",
+    family="CHA",
+    gear_ratio=50,
+    max_torque_nm=98,
+    max_speed_rpm=112,
+    inertia_kgm2=0.97,
+    output_bearing_pitch_diameter_m=0.088,
+    output_bearing_offset_m=0.018,
+    output_bearing_dynamic_load_rating_n=30000,
+    output_bearing_static_load_rating_n=45000,
+    output_bearing_dynamic_tilting_moment_nm=254,
+    output_bearing_static_tilting_moment_nm=1050,
+)
+FHA_25C_50 = Actuator(  # FHA-C manual §1-4-2 gives no R, d_p, C, C_0
+    model="FHA-25C-50",
+    family="FHA-C",
+    gear_ratio=50,
+    max_torque_nm=150,
+    max_speed_rpm=90,
+    inertia_kgm2=0.8,
+    output_bearing_radial_load_n=4900,
+    output_bearing_axial_load_n=14700,
+    output_bearing_moment_load_nm=370,
+)
+PATTERN = SpeedPattern(speed_rpm=30, accel_s=0.2, constant_s=1.0, decel_s=0.2, pause_s=1.0)
+
+
+def app(load: OutputLoad | None) -> Application:
+    return Application(pattern=PATTERN, load=Load(torque_nm=2, inertia_kgm2=0.1), output_load=load)
+
+
+def check(a: Actuator, load: OutputLoad, name: str):  # type: ignore[no-untyped-def]
+    return next(c for c in evaluate(a, app(load)).checks if c.name == name)
+
+
+LIGHT = OutputLoad(
+    radial_force_n=300,
+    axial_force_n=200,
+    radial_lever_m=0.05,
+    axial_lever_m=0.01,
+    required_life_h=20000,
+)
+HEAVY = OutputLoad(
+    radial_force_n=1000,
+    axial_force_n=500,
+    radial_lever_m=0.05,
+    axial_lever_m=0.02,
+    required_life_h=20000,
+)
+
+
+def test_no_output_load_adds_no_bearing_check() -> None:
+    assert app(None).rules == RULES
+    assert app(LIGHT).rules == (*RULES, *BEARING_RULES, BEARING_LIFE)
+    no_life = OutputLoad(radial_force_n=1, axial_force_n=0, radial_lever_m=0, axial_lever_m=0)
+    assert app(no_life).rules == (*RULES, *BEARING_RULES)
+
+
+def test_tilting_moment_by_hand_pass_and_fail() -> None:
+    light = check(FHA_14C_50, LIGHT, "bearing_moment")
+    assert light.value == pytest.approx(300 * (0.05 + 0.014) + 200 * 0.01)  # 21.2 Nm
+    assert (light.limit, light.status) == (75, Status.PASS)
+    heavy = check(FHA_14C_50, HEAVY, "bearing_moment")
+    assert heavy.value == pytest.approx(1000 * 0.064 + 500 * 0.02)  # 74 Nm ≤ 75 Nm
+    assert heavy.status is Status.PASS
+    heavier = OutputLoad(
+        radial_force_n=1100, axial_force_n=500, radial_lever_m=0.05, axial_lever_m=0.02
+    )
+    over = check(FHA_14C_50, heavier, "bearing_moment")
+    assert over.value == pytest.approx(1100 * 0.064 + 10)
+    assert over.status is Status.FAIL
+    assert "allowable moment load = 75 Nm" in over.message
+
+
+def test_cha_moment_is_held_against_m_dyn() -> None:
+    c = check(CHA_25A_50, HEAVY, "bearing_moment")
+    assert c.value == pytest.approx(1000 * (0.05 + 0.018) + 500 * 0.02)
+    assert c.limit == 254
+    assert "M_dyn" in c.message
+
+
+def test_static_safety_by_hand() -> None:
+    m = 1000 * 0.064 + 500 * 0.02
+    p_0 = 1000 + 2 * m / 0.054 + 0.44 * 500  # formula (9): 3960.7 N
+    c = check(FHA_14C_50, HEAVY, "bearing_static_safety")
+    assert c.value == pytest.approx(1.5 * p_0)
+    assert c.limit == 12800
+    assert c.status is Status.PASS  # f_s = 3.23 ≥ 1.5
+    assert f"= {12800 / p_0:.3g} ≥ the required 1.5" in c.message
+    precise = OutputLoad(
+        radial_force_n=1000,
+        axial_force_n=500,
+        radial_lever_m=0.05,
+        axial_lever_m=0.02,
+        static_safety_min=3.5,
+    )
+    assert check(FHA_14C_50, precise, "bearing_static_safety").status is Status.FAIL
+
+
+def test_life_by_hand_and_against_the_required_life() -> None:
+    n_av = mean_speed_rpm(PATTERN)
+    m = 300 * 0.064 + 200 * 0.01
+    radial = 300 + 2 * m / 0.054
+    assert 1.5 * radial >= 200  # formula (5): X = 1, Y = 0.45
+    p_c = radial + 0.45 * 200
+    life = 1e6 / (60 * n_av) * (7400 / (1.5 * p_c)) ** (10 / 3)
+    c = check(FHA_14C_50, LIGHT, "bearing_life")
+    assert c.status is Status.PASS
+    assert c.value == pytest.approx(1.5 * p_c * (20000 * 60 * n_av / 1e6) ** 0.3, rel=1e-12)
+    assert c.limit == 7400
+    assert life == pytest.approx(
+        l10_life_h(
+            dynamic_load_rating_n=7400, load_factor=1.5, equivalent_load_n=p_c, mean_speed_rpm=n_av
+        ),
+        rel=1e-12,
+    )
+    assert f"L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life:.4g} h" in c.message
+    # The check passes exactly when L_10 ≥ the required life.
+    heavy = check(FHA_14C_50, HEAVY, "bearing_life")
+    m = 74.0
+    p_c = 1000 + 2 * m / 0.054 + 0.45 * 500
+    heavy_life = 1e6 / (60 * n_av) * (7400 / (1.5 * p_c)) ** (10 / 3)
+    assert (heavy_life >= 20000) is (heavy.status is Status.PASS)
+
+
+def test_high_axial_share_uses_x_y_of_0_67() -> None:
+    axial = OutputLoad(
+        radial_force_n=0,
+        axial_force_n=1000,
+        radial_lever_m=0,
+        axial_lever_m=0,
+        required_life_h=1000,
+    )
+    c = check(FHA_14C_50, axial, "bearing_life")
+    n_av = mean_speed_rpm(PATTERN)
+    assert c.value == pytest.approx(1.5 * 0.67 * 1000 * (1000 * 60 * n_av / 1e6) ** 0.3, rel=1e-12)
+
+
+def test_fha_c_without_r_or_c_says_no_data() -> None:
+    statuses = {c.name: (c.status, c.missing) for c in evaluate(FHA_25C_50, app(LIGHT)).checks}
+    assert statuses["bearing_moment"] == (Status.NO_DATA, "output bearing offset R")
+    assert statuses["bearing_static_safety"][0] is Status.NO_DATA
+    assert statuses["bearing_life"][0] is Status.NO_DATA
+
+
+def test_batch_equals_single_for_the_bearing_checks() -> None:
+    actuators = [FHA_14C_50, CHA_25A_50, FHA_25C_50]
+    loads = [
+        OutputLoad(
+            radial_force_n=fr,
+            axial_force_n=fa,
+            radial_lever_m=lr,
+            axial_lever_m=la,
+            static_safety_min=fs,
+            required_life_h=life,
+        )
+        for fr, fa in ((0, 0), (300, 200), (1000, 500), (0, 1000), (5000, 100))
+        for lr, la in ((0.0, 0.0), (0.05, 0.02))
+        for fs, life in ((1.5, 20000), (3.0, 500))
+    ]
+    apps = [app(load) for load in loads]
+    rules = apps[0].rules
+    ev = evaluate_batch(actuators, apps, rules=rules)
+    for i, application in enumerate(apps):
+        for j, actuator in enumerate(actuators):
+            c = evaluate(actuator, application)
+            assert ev.verdict(i, j) is c.verdict
+            for k, one in enumerate(c.checks):
+                assert ev.status(i, j, one.name) is one.status, (i, j, one.name)
+                value, limit = ev.values[i, j, k], ev.limits[i, j, k]
+                assert (None if math.isnan(value) else value) == one.value, (i, j, one.name)
+                assert (None if math.isnan(limit) else limit) == one.limit, (i, j, one.name)
+                assert ev.missing(i, j, one.name) == one.missing
