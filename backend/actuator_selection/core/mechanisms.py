@@ -659,7 +659,8 @@ def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
     i_squared = _square(i)
     if i_squared == 0:
         raise InvalidInputError("ratio", "is so small that J/i² has no value: no real gear")
-    inertia = transmission.inertia_kgm2 + load.inertia_kgm2 / i_squared
+    reflected = load.inertia_kgm2 / i_squared
+    inertia = transmission.inertia_kgm2 + reflected
     friction = load.friction_torque_nm / i
     gravity = load.gravity_torque_nm / i
     speed = load.speed_rpm_per_unit * i
@@ -673,8 +674,16 @@ def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
         (force, "the force factor / i"),
     ):
         _check_result("ratio", value, what=what)
-    if force == 0 or speed == 0:
-        raise InvalidInputError("ratio", "is so far from 1 that the axis vanishes: no real gear")
+    for before, after in (
+        (load.inertia_kgm2, reflected),
+        (load.friction_torque_nm, friction),
+        (load.gravity_torque_nm, gravity),
+        (load.torque_nm_per_force_unit, force),
+    ):
+        if before != 0 and after == 0:
+            raise InvalidInputError(
+                "ratio", "is so large that the load vanishes behind it (underflow): no real gear"
+            )
     if efficiency == 0:
         raise InvalidInputError("efficiency", "η_tr·η is 0: no power reaches the load")
     return AxisLoad(
