@@ -56,6 +56,15 @@ MAX_INCLINE_DEG = 90.0
 """|θ| bound [°]: vertical. Beyond it the axis is the same one with its direction reversed."""
 
 
+def mm_to_m(length_mm: float) -> float:
+    """A length given in millimetres [mm] in metres [m].
+
+    >>> mm_to_m(10.0)
+    0.01
+    """
+    return length_mm / MM_PER_M
+
+
 def rpm_per_mm_per_s(radius_m: float) -> float:
     """Shaft speed [rpm] per mm/s of a load moving at v = r·ω.
 
