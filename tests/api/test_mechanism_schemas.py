@@ -7,6 +7,8 @@ Expected conversions come from the definitions of the units (1 in = 25.4 mm exac
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 from typing import Any
 
 import pytest
@@ -333,6 +335,24 @@ def test_any_text_is_a_value_or_a_validation_error(text: str) -> None:
     else:
         assert isinstance(belt, BeltIn)
         assert 1e-3 <= belt.pulley_diameter_mm <= 1e5
+
+
+def test_exponent_towers_are_refused_at_once() -> None:
+    """pint evaluates ``m^9^9^9`` with Python integers (9^387420489: no end). The text rule
+    refuses chained exponents before pint sees them; in a subprocess, so that a regression
+    fails here instead of hanging the run."""
+    code = (
+        "from actuator_selection.schemas.quantities import LENGTH_MM, to_unit\n"
+        "from pydantic_core import PydanticCustomError\n"
+        "for text in ['1 m^9^9^9', '1 m**9**9**9', '1 m⁹⁹⁹⁹', '1 (m^9)^9^9', '1 m²³²³²³']:\n"
+        "    try:\n"
+        "        to_unit(text, LENGTH_MM)\n"
+        "    except PydanticCustomError as e:\n"
+        "        assert e.type == 'quantity_text', (text, e.type)\n"
+        "    else:\n"
+        "        raise AssertionError(text)\n"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True, timeout=60)
 
 
 def test_json_schema_offers_a_number_with_its_bounds_or_text() -> None:

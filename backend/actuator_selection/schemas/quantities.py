@@ -39,11 +39,17 @@ from pydantic_core import CoreSchema, PydanticCustomError, core_schema
 MAX_QUANTITY_TEXT = 64
 """Longest text of a quantity [characters]: ``"1234.5678 kg*m^2"`` needs 16."""
 
+_NAME = r"(?:[^\W\d\u00b2\u00b3\u00b9\u2070-\u207f]|°)+"
+"""A unit name: letters (µ included) or °; no digits, no superscripts (pint reads those as
+exponents)."""
+_EXPONENT = r"(?:(?:\^|\*\*)-?[0-9]|[²³])"
+"""One exponent of one digit, ``^2``, ``**-1`` or ``²``, allowed right after a name only:
+``m^9^9^9`` or ``(m^9)^9`` would make pint raise integers to powers without end."""
 _TEXT = re.compile(
     r"\s*(?P<number>[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)"
-    r"\s*(?P<unit>(?:\^-?[0-9]|\*\*-?[0-9]|[^\W\d]|[°·/*() ])+?)\s*"
+    rf"\s*(?P<unit>(?:{_NAME}{_EXPONENT}?|[·/*() ])+?)\s*"
 )
-"""A decimal number, then a unit expression whose only digits are single-digit exponents."""
+"""A decimal number, then a unit expression of names, exponents and ``* · / ( )``."""
 
 _ALIASES = ("@alias revolution = rev", "@alias pound = lbm")
 """Spellings engineers use that pint's default registry lacks (``rev/min``, ``lbm``)."""
