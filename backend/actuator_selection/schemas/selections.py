@@ -38,6 +38,16 @@ from actuator_selection.schemas.controllers import (
     DriveOptionOut,
     controllers_note,
 )
+from actuator_selection.schemas.mechanisms import (
+    MECHANISM_TYPES,
+    BallScrewInclineIn,
+    BeltIn,
+    ConveyorIn,
+    LiftIn,
+    RackPinionIn,
+    RotaryIn,
+    _MechanismIn,
+)
 from actuator_selection.schemas.output_load import (
     DRIVE_FIELD,
     OUTPUT_LOAD_FIELD,
@@ -190,16 +200,33 @@ def _load_kind(value: Any) -> str:
     return kind if isinstance(kind, str) else "direct"
 
 
+LOAD_TYPES = ("direct", "ball_screw", "rotary_table", *MECHANISM_TYPES)
+
 LoadIn = Annotated[
     Annotated[DirectLoad, Tag("direct")]
     | Annotated[BallScrewLoad, Tag("ball_screw")]
-    | Annotated[RotaryTableLoad, Tag("rotary_table")],
+    | Annotated[RotaryTableLoad, Tag("rotary_table")]
+    | Annotated[BallScrewInclineIn, Tag("ball_screw_incline")]
+    | Annotated[BeltIn, Tag("belt")]
+    | Annotated[RackPinionIn, Tag("rack_pinion")]
+    | Annotated[ConveyorIn, Tag("conveyor")]
+    | Annotated[LiftIn, Tag("lift")]
+    | Annotated[RotaryIn, Tag("rotary")],
     Discriminator(
         _load_kind,
         custom_error_type="load_type",
-        custom_error_message="type must be 'direct', 'ball_screw' or 'rotary_table'",
+        custom_error_message="type must be one of " + ", ".join(f"'{k}'" for k in LOAD_TYPES),
     ),
 ]
+"""The chapter's loads (T_L and J_L, Eq. 515.4, 515.6; speeds in rpm at the output) and the
+mechanisms of ``schemas/mechanisms.py`` (speeds in mm/s on linear axes, units at the edge)."""
+
+
+def _load_speed(load: _LoadIn | _MechanismIn) -> tuple[float | None, str]:
+    """The trapezoid's load speed as sent, and its field."""
+    if isinstance(load, _LoadIn):
+        return load.speed_rpm, "load.speed_rpm"
+    return getattr(load, "speed", None), "load.speed"
 
 
 class CycleIn(StrictModel):
@@ -214,10 +241,10 @@ class CycleIn(StrictModel):
     )
     pause_s: float = Field(ge=0, le=MAX_TIME_S, description="t_p, standstill [s]")
 
-    def to_motion(self, speed: float | None, axis: AxisLoad) -> Motion:
+    def to_motion(self, speed: float | None, axis: AxisLoad, speed_field: str) -> Motion:
         """The trapezoid as segments at the output (``speed`` in the load's unit)."""
         if speed is None:
-            raise InvalidInputError("load.speed_rpm", "is required with the t_1…t_p cycle")
+            raise InvalidInputError(speed_field, "is required with the t_1…t_p cycle")
         return trapezoid(
             speed_rpm=speed * axis.speed_rpm_per_unit,
             accel_s=self.accel_s,
@@ -281,11 +308,11 @@ class SegmentsCycleIn(StrictModel):
     )
     segments: list[SegmentIn] = Field(min_length=1, max_length=MAX_SEGMENTS)
 
-    def to_motion(self, speed: float | None, axis: AxisLoad) -> Motion:
+    def to_motion(self, speed: float | None, axis: AxisLoad, speed_field: str) -> Motion:
         """The segments at the output; a core error names the segment's field."""
         if speed is not None:
             raise InvalidInputError(
-                "load.speed_rpm", "must be left out with segments: they give the speeds"
+                speed_field, "must be left out with segments: they give the speeds"
             )
         to_rpm, to_nm = axis.speed_rpm_per_unit, axis.torque_nm_per_force_unit
         segments = []
@@ -372,16 +399,17 @@ class SelectionRequest(StrictModel):
     def to_core(self) -> Application:
         """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
         t_1…t_p pattern) where that is what was sent, else a motion of segments."""
-        speed = self.load.speed_rpm
+        speed, speed_field = _load_speed(self.load)
         options: dict[str, Any] = {
             "high_dynamics": self.high_dynamics,
             "brake": self.brake,
             "drive": self.drive,
             "output_load": output_load_core(self.output_load),
         }
-        if isinstance(self.cycle, CycleIn) and self.load.chapter_shorthand:
+        load = self.load
+        if isinstance(self.cycle, CycleIn) and isinstance(load, _LoadIn) and load.chapter_shorthand:
             if speed is None:
-                raise InvalidInputError("load.speed_rpm", "is required with the t_1…t_p cycle")
+                raise InvalidInputError(speed_field, "is required with the t_1…t_p cycle")
             pattern = SpeedPattern(
                 speed_rpm=speed,
                 accel_s=self.cycle.accel_s,
@@ -389,8 +417,9 @@ class SelectionRequest(StrictModel):
                 decel_s=self.cycle.decel_s,
                 pause_s=self.cycle.pause_s,
             )
-            return Application(pattern=pattern, load=self.load.to_core(), **options)
-        return Application(motion=self.cycle.to_motion(speed, self.load.to_axis()), **options)
+            return Application(pattern=pattern, load=load.to_core(), **options)
+        motion = self.cycle.to_motion(speed, load.to_axis(), speed_field)
+        return Application(motion=motion, **options)
 
 
 class ResolvedLoad(ResponseModel):
