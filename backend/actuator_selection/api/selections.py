@@ -17,12 +17,14 @@ from actuator_selection.api.deps import (
     write_transaction,
 )
 from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
     CandidateDetailOut,
     SelectionOut,
     SelectionRequest,
 )
+from actuator_selection.services.limits import solve_limits
 from actuator_selection.services.reports import (
     CHECK_COLUMNS,
     report_csv,
@@ -78,6 +80,18 @@ def _json(request: Request, plain: bytes, compressed: bytes, *, status_code: int
         headers = {"Content-Encoding": "gzip", "Vary": "Accept-Encoding"}
         return Response(compressed, status_code, headers, media_type="application/json")
     return Response(plain, status_code, media_type="application/json")
+
+
+@router.post(
+    "/selections/limits",
+    responses={422: {"description": "invalid load case, or a model the catalogue lacks"}},
+)
+@reads_only
+def solve_selection_limits(body: LimitsRequest, request: Request, session: SessionDep) -> LimitsOut:
+    """How far the load case may go for one actuator: the shortest pause, the shortest
+    acceleration time (t_1…t_p cycle) and the largest load inertia with no check failing,
+    each with the check that fails just beyond it (bisection over the flowchart)."""
+    return solve_limits(body, catalogue_snapshot(request, session))
 
 
 @router.get(

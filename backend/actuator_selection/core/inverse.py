@@ -1,0 +1,299 @@
+"""Inverse sizing: how far a load case may go for one actuator (issue "Real axes").
+
+For a chosen actuator and load case, the shortest pause, the shortest acceleration time
+and the largest load inertia with which no check of the flowchart fails, each found from
+the same rules (:func:`~actuator_selection.core.selection.evaluate`) by bisection, and
+answered with the check that fails just beyond it (the limiting check).
+
+"No check fails" is the flowchart's verdict ``suitable`` or ``unconfirmed``: a check that
+lacks catalogue data cannot be passed by any value, so the limit is stated with the
+verdict at the limit, and an ``unconfirmed`` one says which data is missing.
+
+The search assumes what the physics gives in the usable range: a longer pause only lowers
+T_rms and n_av (monotone); a larger J_L only raises T_1, |T_3|, T_rms and J_L/J_A
+(monotone); a longer t_1 lowers T_1 and, where the acceleration dominates, T_rms (checked
+at both ends of the range; where it is not monotone the bound is one where the checks
+change, found to the stated tolerance).
+
+The chapter's worked example on the FHA-25C-50-L (Table 516.1/516.3, J_A = 0.86 kgm²,
+T_max = 151 Nm): T_1 = 5 + (0.86 + J_L)·(2π/60·40)/0.1 ≤ 151 gives J_L ≤ 2.6256 kgm²,
+and J_L ≤ 3·J_A = 2.58 kgm² binds first:
+
+>>> from actuator_selection.core.actuators import Actuator
+>>> from actuator_selection.core.cycle import Load, SpeedPattern
+>>> from actuator_selection.core.selection import Application
+>>> fha = Actuator(model="FHA-25C-50-L", family="FHA-C", gear_ratio=50,
+...                max_torque_nm=151, max_speed_rpm=90, inertia_kgm2=0.86)
+>>> app = Application(
+...     pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1),
+...     load=Load(torque_nm=5, inertia_kgm2=1.3))
+>>> limit = largest_load_inertia(fha, app)
+>>> round(limit.value, 6), limit.limiting_checks
+(2.58, ('inertia_ratio',))
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.checks import Check, Rule, Status
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.selection import Application, Candidate, Verdict, evaluate
+
+RELATIVE_TOLERANCE = 1e-9
+"""Bisection stops when the bracket is this small relative to the bound."""
+MAX_PAUSE_S = 86_400.0
+"""The longest pause searched: a day (the API's bound on a duration)."""
+MIN_ACCEL_S = 1e-4
+"""The shortest acceleration time searched (the API's bound on a ramp)."""
+MAX_ACCEL_S = 86_400.0
+MAX_LOAD_INERTIA_KGM2 = 1e6
+"""The largest load inertia searched (the API's bound)."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Limit:
+    """How far one quantity of the load case may go with one actuator."""
+
+    quantity: str
+    """``pause_s``, ``accel_s`` or ``load_inertia_kgm2``."""
+    bound: str
+    """``min`` (the shortest pause or ramp) or ``max`` (the largest inertia)."""
+    value: float | None
+    """The bound; None where no value in the searched range lets every check pass."""
+    unit: str
+    limiting_checks: tuple[str, ...]
+    """The checks that fail just beyond the bound (at the end of the range where there is
+    no bound); empty where the range's end is reached with every check passing."""
+    messages: tuple[str, ...]
+    """Those checks' messages just beyond the bound."""
+    verdict: Verdict | None
+    """The flowchart's verdict at the bound (``unconfirmed``: a check lacks data)."""
+    note: str
+
+
+Vary = Callable[[Application, float], Application]
+
+
+def _fails(candidate: Candidate) -> tuple[Check, ...]:
+    return tuple(c for c in candidate.checks if c.status is Status.FAIL)
+
+
+def _bisect(
+    actuator: Actuator,
+    vary: Callable[[float], Application],
+    ok_side: float,
+    bad_side: float,
+    rules: Sequence[Rule] | None,
+) -> tuple[float, Candidate, Candidate]:
+    """Narrow [bad, ok] to the tolerance; the ok end, its candidate and the bad end's."""
+    ok = evaluate(actuator, vary(ok_side), rules=rules)
+    bad = evaluate(actuator, vary(bad_side), rules=rules)
+    while abs(ok_side - bad_side) > RELATIVE_TOLERANCE * max(abs(ok_side), abs(bad_side)):
+        middle = (ok_side + bad_side) / 2
+        if middle in (ok_side, bad_side):
+            break
+        candidate = evaluate(actuator, vary(middle), rules=rules)
+        if _fails(candidate):
+            bad_side, bad = middle, candidate
+        else:
+            ok_side, ok = middle, candidate
+    return ok_side, ok, bad
+
+
+def _search(
+    actuator: Actuator,
+    vary: Callable[[float], Application],
+    *,
+    quantity: str,
+    unit: str,
+    bound: str,
+    start: float,
+    end: float,
+    rules: Sequence[Rule] | None,
+) -> Limit:
+    """The bound between ``start`` (where the search begins: the best end for a ``min``,
+    0 for a ``max``) and ``end`` (the range's far end), stepping by factors of 2."""
+    at_start = evaluate(actuator, vary(start), rules=rules)
+    if bound == "min":
+        if not _fails(at_start):
+            return Limit(
+                quantity=quantity,
+                bound=bound,
+                value=start,
+                unit=unit,
+                limiting_checks=(),
+                messages=(),
+                verdict=at_start.verdict,
+                note="every check passes at the shortest value searched",
+            )
+        # step up from the failing start until no check fails
+        bad_side, probe = start, max(start * 2, start + 1e-3)
+        while True:
+            candidate = evaluate(actuator, vary(probe), rules=rules)
+            if not _fails(candidate):
+                break
+            bad_side = probe
+            if probe >= end:
+                return _none_in_range(quantity, unit, bound, end, candidate)
+            probe = min(probe * 2, end)
+        value, ok, bad = _bisect(actuator, vary, probe, bad_side, rules)
+    else:
+        if _fails(at_start):
+            return _none_in_range(quantity, unit, bound, start, at_start)
+        ok_side, probe = start, max(start * 2, 1e-3)
+        while True:
+            candidate = evaluate(actuator, vary(probe), rules=rules)
+            if _fails(candidate):
+                break
+            ok_side = probe
+            if probe >= end:
+                return Limit(
+                    quantity=quantity,
+                    bound=bound,
+                    value=end,
+                    unit=unit,
+                    limiting_checks=(),
+                    messages=(),
+                    verdict=candidate.verdict,
+                    note=f"every check passes up to the largest value searched ({end:g} {unit})",
+                )
+            probe = min(probe * 2, end)
+        value, ok, bad = _bisect(actuator, vary, ok_side, probe, rules)
+    failing = _fails(bad)
+    return Limit(
+        quantity=quantity,
+        bound=bound,
+        value=value,
+        unit=unit,
+        limiting_checks=tuple(c.name for c in failing),
+        messages=tuple(c.message for c in failing),
+        verdict=ok.verdict,
+        note=f"found by bisection over the flowchart to {RELATIVE_TOLERANCE:g} relative",
+    )
+
+
+def _none_in_range(
+    quantity: str, unit: str, bound: str, where: float, candidate: Candidate
+) -> Limit:
+    failing = _fails(candidate)
+    return Limit(
+        quantity=quantity,
+        bound=bound,
+        value=None,
+        unit=unit,
+        limiting_checks=tuple(c.name for c in failing),
+        messages=tuple(c.message for c in failing),
+        verdict=candidate.verdict,
+        note=f"a check fails at every value searched (still at {where:g} {unit})",
+    )
+
+
+def shortest_pause(
+    actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
+) -> Limit:
+    """The shortest pause t_p with which no check fails: t_p of the chapter's cycle, or the
+    last segment of a cycle of segments where that is a standstill."""
+    if app.pattern is not None:
+        pattern = app.pattern
+
+        def vary(t: float) -> Application:
+            return dataclasses.replace(app, pattern=dataclasses.replace(pattern, pause_s=t))
+
+    else:
+        motion = app.cycle
+        last = motion.segments[-1]
+        if last.start_rpm != 0 or last.end_rpm != 0:
+            raise InvalidInputError(
+                "cycle.segments",
+                "the shortest pause is solved for a cycle that ends at standstill: make the "
+                "last segment a dwell at speed 0",
+            )
+
+        def vary(t: float) -> Application:
+            dwell = dataclasses.replace(last, duration_s=t)
+            segments = (*motion.segments[:-1], dwell)
+            return dataclasses.replace(app, motion=dataclasses.replace(motion, segments=segments))
+
+    return _search(
+        actuator,
+        vary,
+        quantity="pause_s",
+        unit="s",
+        bound="min",
+        start=0.0,
+        end=MAX_PAUSE_S,
+        rules=rules,
+    )
+
+
+def shortest_accel(
+    actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
+) -> Limit:
+    """The shortest acceleration time t_1 (t_3 as given) with which no check fails, for the
+    chapter's cycle."""
+    if app.pattern is None:
+        raise InvalidInputError(
+            "cycle", "the shortest acceleration time is solved for the t_1…t_p cycle"
+        )
+    pattern = app.pattern
+
+    def vary(t: float) -> Application:
+        return dataclasses.replace(app, pattern=dataclasses.replace(pattern, accel_s=t))
+
+    return _search(
+        actuator,
+        vary,
+        quantity="accel_s",
+        unit="s",
+        bound="min",
+        start=MIN_ACCEL_S,
+        end=MAX_ACCEL_S,
+        rules=rules,
+    )
+
+
+def largest_load_inertia(
+    actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
+) -> Limit:
+    """The largest load inertia J_L at the output with which no check fails."""
+    if app.load is not None:
+        load = app.load
+
+        def vary(j: float) -> Application:
+            return dataclasses.replace(app, load=dataclasses.replace(load, inertia_kgm2=j))
+
+    else:
+        motion = app.cycle
+
+        def vary(j: float) -> Application:
+            axis = dataclasses.replace(motion.load, inertia_kgm2=j)
+            return dataclasses.replace(app, motion=dataclasses.replace(motion, load=axis))
+
+    return _search(
+        actuator,
+        vary,
+        quantity="load_inertia_kgm2",
+        unit="kgm²",
+        bound="max",
+        start=0.0,
+        end=MAX_LOAD_INERTIA_KGM2,
+        rules=rules,
+    )
+
+
+def limits(
+    actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
+) -> tuple[Limit, ...]:
+    """Every limit that applies to the load case's form (t_1 for the chapter's cycle only)."""
+    found = [shortest_pause(actuator, app, rules=rules)]
+    if app.pattern is not None:
+        found.append(shortest_accel(actuator, app, rules=rules))
+    found.append(largest_load_inertia(actuator, app, rules=rules))
+    if any(math.isnan(x.value) for x in found if x.value is not None):
+        raise InvalidInputError("load", "gives no finite limit")  # pragma: no cover
+    return tuple(found)

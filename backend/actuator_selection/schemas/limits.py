@@ -1,0 +1,88 @@
+"""The inverse solve's contract: how far a load case may go for one actuator."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import ConfigDict, Field
+
+from actuator_selection.core.inverse import Limit
+from actuator_selection.core.selection import Application
+from actuator_selection.schemas.common import ResponseModel
+from actuator_selection.schemas.selections import (
+    WORKED_EXAMPLE,
+    ModelName,
+    SelectionRequest,
+)
+
+
+class LimitsRequest(SelectionRequest):
+    """A load case and the actuator to solve it for (``models`` is not used here)."""
+
+    model_config = ConfigDict(
+        json_schema_extra={"examples": [WORKED_EXAMPLE | {"model": "FHA-25C-50-L"}]}
+    )
+
+    model: ModelName = Field(description="the actuator, as the catalogue names it")
+
+
+class LimitingCheck(ResponseModel):
+    """A check that fails just beyond the limit, with its reference and its message there."""
+
+    name: str
+    reference: str
+    message: str
+
+
+class LimitOut(ResponseModel):
+    """How far one quantity may go with every check passing (or lacking data)."""
+
+    quantity: Literal["pause_s", "accel_s", "load_inertia_kgm2"] = Field(
+        description="t_p (the last dwell of a cycle of segments), t_1, or J_L at the output"
+    )
+    bound: Literal["min", "max"]
+    value: float | None = Field(
+        description="the shortest (min) or largest (max) value with no check failing; null "
+        "where a check fails at every value searched"
+    )
+    unit: str
+    verdict: Literal["suitable", "unconfirmed", "unsuitable"] | None = Field(
+        description="the flowchart's verdict at the limit: unconfirmed where a check lacks data"
+    )
+    limiting_checks: list[LimitingCheck] = Field(
+        description="the checks that fail just beyond the limit"
+    )
+    note: str
+
+
+class LimitsOut(ResponseModel):
+    """The limits of a load case for one actuator, found over the same rules as a selection."""
+
+    model: str
+    catalogue_version: int
+    limits: list[LimitOut]
+
+    @classmethod
+    def build(
+        cls, *, model: str, catalogue_version: int, app: Application, found: tuple[Limit, ...]
+    ) -> LimitsOut:
+        """The answer from the core's limits; references from the application's rules."""
+        reference = {rule.name: rule.reference for rule in app.rules}
+        out: list[dict[str, Any]] = [
+            {
+                "quantity": limit.quantity,
+                "bound": limit.bound,
+                "value": limit.value,
+                "unit": limit.unit,
+                "verdict": None if limit.verdict is None else limit.verdict.value,
+                "limiting_checks": [
+                    {"name": name, "reference": reference.get(name, ""), "message": message}
+                    for name, message in zip(limit.limiting_checks, limit.messages, strict=True)
+                ],
+                "note": limit.note,
+            }
+            for limit in found
+        ]
+        return cls.model_validate(
+            {"model": model, "catalogue_version": catalogue_version, "limits": out}
+        )
