@@ -47,6 +47,7 @@ from __future__ import annotations
 import math
 from collections.abc import Collection, Sequence, Sized
 from dataclasses import dataclass, fields
+from dataclasses import field as dataclasses_field
 from itertools import repeat
 from typing import Any
 
@@ -113,7 +114,7 @@ def _optional(values: Sequence[float | None]) -> FloatArray:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
-class _Catalogue:
+class CatalogueArrays:
     """The actuators as columns; NaN where the catalogue gives no value."""
 
     max_torque: FloatArray
@@ -132,7 +133,9 @@ class _Catalogue:
     rank_position: npt.NDArray[np.int32]
 
 
-def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
+def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
+    """The actuators as the vectorised flowchart reads them; build once per catalogue and
+    pass to :func:`evaluate_batch` to spare it per request."""
     has_zone = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
     # ranking_key after the verdict: T_max, then J_A (unknown last), then the model name;
     # the column index mirrors sorted()'s stability for equal keys.
@@ -148,7 +151,7 @@ def _catalogue(actuators: Sequence[Actuator]) -> _Catalogue:
     )
     rank_position = np.empty(len(actuators), dtype=np.int32)
     rank_position[order] = np.arange(len(actuators), dtype=np.int32)
-    return _Catalogue(
+    return CatalogueArrays(
         max_torque=_optional([a.max_torque_nm for a in actuators]),
         max_speed=_optional([a.max_speed_rpm for a in actuators]),
         inertia=_optional([a.inertia_kgm2 for a in actuators]),
@@ -409,7 +412,7 @@ def _status_codes(
 
 
 def _evaluate_block(
-    cat: _Catalogue,
+    cat: CatalogueArrays,
     cases: _Cases,
     zone_limits: FloatArray,
     rules: Sequence[Rule],
@@ -557,6 +560,10 @@ class BatchEvaluation:
     Requirement`), in order."""
     check_names: tuple[str, ...] = CHECK_NAMES
     """The checks (the rules' names) along the last axis of :attr:`statuses`."""
+    rank_position: npt.NDArray[np.int32] = dataclasses_field(
+        default_factory=lambda: np.empty(0, dtype=np.int32)
+    )
+    """Each actuator's place in the static order (T_max, J_A, model) that breaks ties."""
 
     def status(self, case: int, actuator: int, check: str) -> Status:
         """The status of one check of one case and actuator."""
@@ -572,12 +579,21 @@ class BatchEvaluation:
         """The verdict of one case and actuator."""
         return VERDICT_BY_CODE[int(self.verdicts[case, actuator])]
 
+    def ranking(self, case: int) -> list[int]:
+        """The actuators of one case, best first
+        (:func:`~actuator_selection.core.selection.ranking_key`: verdict, worst overload,
+        then T_max, J_A and model)."""
+        order = np.lexsort((self.rank_position, self.worst_overload[case], self.verdicts[case]))
+        ranked: list[int] = order.tolist()
+        return ranked
+
 
 def evaluate_batch(
     actuators: Sequence[Actuator],
     apps: Sequence[Application],
     *,
     rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
 ) -> BatchEvaluation:
     """Run the flowchart for every case × actuator and keep every array.
 
@@ -589,12 +605,14 @@ def evaluate_batch(
         The load cases, rows in this order.
     rules
         The checks (:data:`~actuator_selection.core.checks.RULES`: the chapter's).
+    arrays
+        ``catalogue_arrays(actuators)``, where the caller keeps it.
 
     Memory grows with cases × actuators (about 40 bytes a cell); for ranking alone
     use :func:`select_batch`, which keeps only the best of each case.
     """
     rules = _rules_of(apps, rules)
-    cat = _catalogue(actuators)
+    cat = catalogue_arrays(actuators) if arrays is None else arrays
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))
@@ -639,6 +657,7 @@ def evaluate_batch(
         worst_overload=worst_overload,
         missing_what=tuple(tuple(need.what for need in rule.requires) for rule in rules),
         check_names=tuple(rule.name for rule in rules),
+        rank_position=cat.rank_position,
     )
 
 
@@ -666,7 +685,7 @@ def _allowed_columns(
 
 def _rank(
     actuators: Sequence[Actuator],
-    cat: _Catalogue,
+    cat: CatalogueArrays,
     cases: _Cases,
     zone_limits: FloatArray,
     top: int,
@@ -736,7 +755,7 @@ def rank_batch(
     """
     _check_arguments(apps, top, models)
     rules = _rules_of(apps, rules)
-    cat = _catalogue(actuators)
+    cat = catalogue_arrays(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     return _rank(actuators, cat, cases, zone_limits, top, models, rules)
@@ -774,7 +793,7 @@ def select_batch(
     """
     _check_arguments(apps, top, models)
     rules = _rules_of(apps, rules)
-    cat = _catalogue(actuators)
+    cat = catalogue_arrays(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     chosen = _rank(actuators, cat, cases, zone_limits, top, models, rules)

@@ -16,6 +16,7 @@ from types import MappingProxyType
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.batch import CatalogueArrays, catalogue_arrays
 from actuator_selection.core.compatibility import (
     ActuatorInterface,
     CompatibilityResult,
@@ -62,6 +63,32 @@ class CatalogueSnapshot:
         default_factory=dict, repr=False, compare=False
     )
     """The controllers not excluded per interface, grouped (:meth:`match_groups`)."""
+    _arrays: dict[tuple[str, ...], CatalogueArrays] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+    """The vectorised flowchart's catalogue arrays, per list of models asked for."""
+    _excluded_by_model: dict[str, int] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+
+    def excluded_by_model(self) -> Mapping[str, int]:
+        """:meth:`excluded` of every actuator's interface, by model, built once."""
+        found = self._excluded_by_model
+        if not found:
+            counts = {a.model: self.excluded(self.interfaces[a.model]) for a in self.actuators}
+            found.update(counts)
+        return found
+
+    def arrays(self, actuators: tuple[Actuator, ...]) -> CatalogueArrays:
+        """:func:`~actuator_selection.core.batch.catalogue_arrays` of ``actuators`` (the
+        whole catalogue or a ``models`` subset of it), built once per version."""
+        key = tuple(a.model for a in actuators)
+        found = self._arrays.get(key)
+        if found is None:
+            if len(self._arrays) > 256:  # subsets named by requests: keep it bounded
+                self._arrays.clear()
+            found = self._arrays.setdefault(key, catalogue_arrays(actuators))
+        return found
 
     def match_groups(self, interface: ActuatorInterface) -> tuple[MatchGroup, ...]:
         """The controllers not excluded for ``interface``, best first, grouped by level,

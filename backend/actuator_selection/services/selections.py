@@ -33,13 +33,14 @@ from actuator_selection.core.batch import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
     BatchEvaluation,
+    FloatArray,
     evaluate_batch,
 )
 from actuator_selection.core.checks import Rule
 from actuator_selection.core.drive import shared_voltage_check
 from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.core.errors import ConflictError, NotFoundError
-from actuator_selection.core.selection import Application, Verdict, evaluate, select, size_key
+from actuator_selection.core.selection import Application, Verdict, evaluate, select
 from actuator_selection.db.repositories import CatalogueRepository, SelectionRepository
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.output_load import output_bearing_note
@@ -84,37 +85,46 @@ class SizedSelection:
     """The same, gzip-compressed: stored, and sent to clients that accept gzip."""
 
 
+DRIVE_OPTIONS_LISTED = 100
+"""Drive options are listed for the first this many candidates of a ranking (and never for
+an unsuitable one); below, the candidate's detail lists them. The starter catalogue's 64
+are all within; a catalogue of thousands would otherwise spend most of its answer on
+controller checks for actuators nobody picks."""
+
+
+def _or_none(column: FloatArray) -> list[float | None]:
+    """The column's floats, None where NaN (unknown)."""
+    out = column.astype(object)
+    out[np.isnan(column)] = None
+    values: list[float | None] = out.tolist()
+    return values
+
+
 def _checks(ev: BatchEvaluation) -> list[list[JSON]]:
     """Each actuator's checks of the (single) case in ``ev``, as the answer lists them:
-    what :meth:`~actuator_selection.core.checks.Rule.check` reports, less its words."""
-    names = ev.check_names
-    statuses = [[STATUS_BY_CODE[c].value for c in row] for row in ev.statuses[0].tolist()]
-    rows = zip(
-        statuses,
-        ev.values[0].tolist(),
-        ev.limits[0].tolist(),
-        ev.approximate[0].tolist(),
-        ev.first_missing[0].tolist(),
-        strict=True,
-    )
-    out = []
-    for status_row, value_row, limit_row, approximate_row, missing_row in rows:
-        checks = []
-        for k, name in enumerate(names):
-            value, limit = value_row[k], limit_row[k]
-            check: JSON = {
-                "name": name,
-                "status": status_row[k],
-                "value": None if value != value else value,  # NaN: unknown
-                "limit": None if limit != limit else limit,
-            }
-            if approximate_row[k]:
-                check["approximate"] = True
-            if missing_row[k] >= 0:
-                check["missing"] = ev.missing_what[k][missing_row[k]]
-            checks.append(check)
-        out.append(checks)
-    return out
+    what :meth:`~actuator_selection.core.checks.Rule.check` reports, less its words.
+
+    Built check by check from the arrays' columns (NaN → None in numpy), then turned
+    into one list per actuator: a whole catalogue of 6,400 actuators in a few ms.
+    """
+    statuses = ev.statuses[0]
+    values, limits = ev.values[0], ev.limits[0]
+    status_names = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
+    columns = []
+    for k, name in enumerate(ev.check_names):
+        value, limit = _or_none(values[:, k]), _or_none(limits[:, k])
+        status = status_names[statuses[:, k]].tolist()
+        column: list[JSON] = [
+            {"name": name, "status": st, "value": v, "limit": li}
+            for st, v, li in zip(status, value, limit, strict=True)
+        ]
+        for j in np.nonzero(ev.approximate[0, :, k])[0].tolist():
+            column[j]["approximate"] = True
+        missing = ev.first_missing[0, :, k]
+        for j in np.nonzero(missing >= 0)[0].tolist():
+            column[j]["missing"] = ev.missing_what[k][missing[j]]
+        columns.append(column)
+    return [list(row) for row in zip(*columns, strict=True)]
 
 
 class _DriveOptionGroups:
@@ -193,43 +203,47 @@ def _candidates(
     bit what the scalar one gives (tests/core/test_batch.py); the candidate's detail
     runs the scalar one, with the checks in words.
     """
-    ev = evaluate_batch(actuators, [app])
+    ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(tuple(actuators)))
     torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
     if any(np.isinf(t).any() for t in torques):
         # Finite inputs that overflow a torque: the scalar flowchart names the input (422).
         select(actuators, app)
-    verdicts = ev.verdicts[0].tolist()
-    overload = ev.worst_overload[0].tolist()
-    accel = ev.accel_torque_nm[0].tolist()
-    constant = ev.constant_torque_nm[0].tolist()
-    decel = ev.decel_torque_nm[0].tolist()
-    rms = ev.rms_torque_nm[0].tolist()
+    order = np.array(ev.ranking(0), dtype=np.intp)
     checks = _checks(ev)
-    speed = app.profile.peak_speed_rpm
-    out = []
-    ranked = sorted(
-        range(len(actuators)), key=lambda j: (verdicts[j], overload[j], *size_key(actuators[j]))
-    )
-    for j in ranked:
-        a = actuators[j]
-        known = accel[j] == accel[j]  # NaN without J_A: no torques
-        verdict = VERDICT_BY_CODE[verdicts[j]]
-        options = None if verdict is Verdict.UNSUITABLE else groups.groups(a, speed)
-        out.append(
-            {
-                "model": a.model,
-                "family": a.family,
-                "gear_ratio": a.gear_ratio,
-                "verdict": verdict.value,
-                "accel_torque_nm": accel[j] if known else None,
-                "constant_torque_nm": constant[j] if constant[j] == constant[j] else None,
-                "decel_torque_nm": decel[j] if known else None,
-                "rms_torque_nm": rms[j] if known else None,
-                "checks": checks[j],
-                "controllers_excluded": catalogue.excluded(catalogue.interfaces[a.model]),
-                "drive_options": options,
-            }
+    verdicts = ev.verdicts[0][order]
+    verdict_names = np.array([v.value for v in VERDICT_BY_CODE], dtype=object)[verdicts]
+    excluded_by_model = catalogue.excluded_by_model()
+    excluded = [excluded_by_model[a.model] for a in actuators]
+    out: list[JSON] = [
+        {
+            "model": a.model,
+            "family": a.family,
+            "gear_ratio": a.gear_ratio,
+            "verdict": verdict,
+            "accel_torque_nm": t_1,  # None without J_A
+            "constant_torque_nm": t_2,  # None also where the cycle never runs steadily
+            "decel_torque_nm": t_3,
+            "rms_torque_nm": t_rms,
+            "checks": checks[j],
+            "controllers_excluded": excluded[j],
+            "drive_options": None,
+        }
+        for j, a, verdict, t_1, t_2, t_3, t_rms in zip(
+            order.tolist(),
+            [actuators[j] for j in order.tolist()],
+            verdict_names.tolist(),
+            _or_none(ev.accel_torque_nm[0][order]),
+            _or_none(ev.constant_torque_nm[0][order]),
+            _or_none(ev.decel_torque_nm[0][order]),
+            _or_none(ev.rms_torque_nm[0][order]),
+            strict=True,
         )
+    ]
+    # Drive options for the first candidates that are not unsuitable (DRIVE_OPTIONS_LISTED).
+    speed = app.profile.peak_speed_rpm
+    unsuitable = VERDICT_BY_CODE.index(Verdict.UNSUITABLE)
+    for place in np.nonzero(verdicts[:DRIVE_OPTIONS_LISTED] != unsuitable)[0].tolist():
+        out[place]["drive_options"] = groups.groups(actuators[int(order[place])], speed)
     return out
 
 
@@ -281,19 +295,18 @@ def size_selection(
 def store_selections(writer: Writer, sized: Iterable[SizedSelection]) -> None:
     """Store selections in one short write transaction, committed before this returns.
 
-    The answers are compressed before the transaction begins: on SQLite the write lock
-    is held for the inserts alone.
+    The answers were compressed when they were sized (:attr:`SizedSelection.answer_gzip`),
+    before the transaction begins: on SQLite the write lock is held for the inserts alone.
     """
-    rows = [(s, gzip.compress(s.answer, compresslevel=STORE_COMPRESSION, mtime=0)) for s in sized]
     with writer() as session:
         repository = SelectionRepository(session)
-        for s, answer_gzip in rows:
+        for s in sized:
             repository.add(
                 id=s.id,
                 created_at=s.created_at,
                 catalogue_version=s.catalogue_version,
                 request=s.request,
-                answer_gzip=answer_gzip,
+                answer_gzip=s.answer_gzip,
             )
 
 
