@@ -716,11 +716,6 @@ async function drawCharts() {
   const detail = await detailPending;
   const actuator = detail?.actuator ?? null;
   if (token !== drawToken) return;
-  // the torque along each segment comes with the detail: the cycle is drawn again with it
-  const withTorques = cycleFigure(sel, candidate, lang, detail);
-  await Plotly.react(cycleDiv, withTorques.data, withTorques.layout, config("cycle"));
-  if (token !== drawToken) return;
-  cycleDiv.dataset.torques = detail ? "detail" : "lean";
   $("#diagram-caption").replaceChildren(
     appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),
   );
@@ -729,6 +724,13 @@ async function drawCharts() {
   await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
   diagramDiv.dataset.model = candidate.model;
   diagramDiv.dataset.state = "ready";
+  if (token !== drawToken) return;
+  // the torque along each segment comes with the detail: the cycle is drawn again with it
+  // (after the diagram, which the detail's catalogue data completes)
+  const withTorques = cycleFigure(sel, candidate, lang, detail);
+  await Plotly.react(cycleDiv, withTorques.data, withTorques.layout, config("cycle"));
+  if (token !== drawToken) return;
+  cycleDiv.dataset.torques = detail ? "detail" : "lean";
 }
 
 // ---------------------------------------------------------------- flow
