@@ -182,11 +182,6 @@ def reports_answer(page: Page, selection_id: str) -> None:
         assert answer.headers["content-type"].startswith(kind)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="backend: the report reads the stored selection through schemas/quotes.py "
-    "StoredSelection, whose cycle must be t_1…t_p; a segment cycle's report is a 500",
-)
 def test_the_reports_of_a_segment_cycle_are_served(page: Page) -> None:
     page.goto("/")
     fill_worked_example(page)

@@ -28,6 +28,7 @@ from actuator_selection.schemas.quotes import (
     StoredCandidate,
     StoredCheck,
     StoredSelection,
+    cycle_facts,
 )
 
 DOCUMENT_SCRIPT_PATH = "/quote-document.js"
@@ -450,12 +451,10 @@ def render_quote_document(
                     e(", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())),
                 )
             )
-        cycle = selection.cycle
         cycle_rows = [
-            ("Acceleration t₁", num(cycle.accel_s, "s")),
-            ("Constant speed t₂", num(cycle.constant_s, "s")),
-            ("Deceleration t₃", num(cycle.decel_s, "s")),
-            ("Pause t_p", num(cycle.pause_s, "s")),
+            (e(label[0].upper() + label[1:]), num(value, unit))
+            for _, label, value, unit in cycle_facts(selection.cycle, selection.segments)
+        ] + [
             ("Cycle time t₀", num(selection.cycle_time_s, "s")),
             ("Mean speed n_av (Eq. 514.3)", num(selection.mean_speed_rpm, "rpm")),
             ("Duty cycle ED (Eq. 514.4)", num(selection.duty_cycle_percent, "%")),
