@@ -199,8 +199,9 @@ class Candidate:
 
     @property
     def reasons(self) -> tuple[str, ...]:
-        """Messages of the checks that fail, lack data or warn, in flowchart order."""
-        return tuple(c.message for c in self.checks if c.status is not Status.PASS)
+        """Messages of the checks that fail, lack data or warn, in flowchart order, each
+        once (``continuous_duty`` and ``thermal_peak`` lack the same catalogue value)."""
+        return tuple(dict.fromkeys(c.message for c in self.checks if c.status is not Status.PASS))
 
     @property
     def worst_overload(self) -> float:
