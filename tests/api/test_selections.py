@@ -502,7 +502,7 @@ def test_an_hour_at_1_45_t0_then_ten_hours_pause_fails_on_the_winding_heating(
     selection = post(client, body).json()
     assert {
         "name": "thermal_peak",
-        "reference": "Fig. 520.1 (first-order thermal model); Eq. 514.2",
+        "reference": "Fig. 520.1 (model); Eq. 514.2",
         "unit": "Nm",
     } in selection["check_rules"]
     (candidate,) = selection["candidates"]

@@ -43,7 +43,7 @@ def test_the_table_holds_the_chapters_five_checks_in_flowchart_order() -> None:
         ("peak_torque", "Eq. 514.1", "Nm"),
         ("decel_torque", "Eq. 514.1", "Nm"),
         ("continuous_duty", "Fig. 517.1", "Nm"),
-        ("thermal_peak", "Fig. 520.1 (first-order thermal model); Eq. 514.2", "Nm"),
+        ("thermal_peak", "Fig. 520.1 (model); Eq. 514.2", "Nm"),
     ]
     assert tuple(r.name for r in RULES) == CHECK_NAMES
 

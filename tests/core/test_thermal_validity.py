@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
+from collections.abc import Callable
 
 import numpy as np
 import pytest
@@ -20,11 +21,11 @@ import pytest
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.batch import evaluate_batch
-from actuator_selection.core.checks import Check, Status
+from actuator_selection.core.checks import Check, Operands, Status
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.selection import Application, Verdict, evaluate
+from actuator_selection.core.selection import Application, Verdict, evaluate, operands
 from actuator_selection.core.thermal import (
     DEFAULT_THERMAL_TIME_CONSTANT_S,
     overload_duration_s,
@@ -53,6 +54,12 @@ def thermal(actuator: Actuator, app: Application) -> Check:
 
 def continuous(actuator: Actuator, app: Application) -> Check:
     return next(c for c in evaluate(actuator, app).checks if c.name == "continuous_duty")
+
+
+def value(check: Check) -> float:
+    """The check's value, which these cases always have."""
+    assert check.value is not None
+    return check.value
 
 
 def hold(*steps: tuple[float, float], tau: float | None = None) -> Application:
@@ -140,7 +147,7 @@ def test_the_issue_case_with_a_ten_minute_pause_fails_on_t_rms_already() -> None
     assert continuous(CHA_25A_50, app).value == pytest.approx(80 * math.sqrt(3602 / 4202), rel=2e-3)
     check = thermal(CHA_25A_50, app)
     assert check.status is Status.FAIL
-    assert check.value > continuous(CHA_25A_50, app).value
+    assert value(check) > value(continuous(CHA_25A_50, app))
 
 
 def test_a_time_constant_long_against_the_hour_gives_t_rms_back() -> None:
@@ -163,7 +170,7 @@ def test_the_same_torque_for_one_second_in_eleven_is_judged_by_t_rms() -> None:
     check = thermal(CHA_25A_50, app)
     assert rms.value == pytest.approx(80 / math.sqrt(11), rel=1e-12)
     assert (rms.status, check.status) == (Status.PASS, Status.PASS)
-    assert rms.value <= check.value <= rms.value * 1.005
+    assert value(rms) <= value(check) <= value(rms) * 1.005
     assert check.value == pytest.approx(periodic_peak([(80.0, 1.0), (0.0, 10.0)], TAU), rel=1e-9)
     assert "short against τ_th: T_rms = 24.12 Nm governs" in check.message
 
@@ -240,15 +247,15 @@ def test_the_short_cycle_limit_is_t_rms() -> None:
 def test_a_smaller_time_constant_is_the_safe_side() -> None:
     """The heating peak never falls as τ_th shrinks (so an assumed τ_th on the short side
     errs towards failing), over cycles short and long against it."""
-    apps = [
+    apps: list[Callable[[float], Application]] = [
         lambda tau: long_trapezoid(pause_s=36000.0, tau=tau),
         lambda tau: hold((80.0, 1.0), (0.0, 10.0), tau=tau),
         lambda tau: hold((30.0, 0.5), (60.0, 45.0), (-40.0, 900.0), (0.0, 5.0), tau=tau),
     ]
     taus = [30.0, 60.0, 120.0, 300.0, 600.0, 1200.0, 3600.0, 36000.0]
     for make in apps:
-        peaks = [thermal(CHA_25A_50, make(tau)).value for tau in taus]
-        assert all(a is not None and b is not None and a >= b for a, b in itertools.pairwise(peaks))
+        peaks = [value(thermal(CHA_25A_50, make(tau))) for tau in taus]
+        assert all(a >= b for a, b in itertools.pairwise(peaks))
 
 
 def test_the_default_leaves_a_one_minute_cycle_to_t_rms_within_three_percent() -> None:
@@ -327,6 +334,29 @@ def test_the_catalogues_time_constant_comes_first() -> None:
     assert thermal(
         dataclasses.replace(zoned, thermal_time_constant_s=None), hold(*steps)
     ).approximate
+
+
+def test_the_thermal_operands_land_in_their_fields() -> None:
+    """operands() appends t_0, τ_th, whether it is assumed, and the heating peak."""
+    app = hold((80.0, 1.0), (0.0, 10.0), tau=123.0)
+    q = operands(CHA_25A_50, app, app.profile.torques(0.97), app.profile)
+    assert Operands._fields[-4:] == (
+        "cycle_s",
+        "thermal_time_constant_s",
+        "thermal_time_constant_assumed",
+        "thermal_torque_nm",
+    )
+    assert (q.cycle_s, q.thermal_time_constant_s, q.thermal_time_constant_assumed) == (
+        11.0,
+        123.0,
+        False,
+    )
+    assert q.thermal_torque_nm == pytest.approx(periodic_peak([(80.0, 1.0), (0.0, 10.0)], 123.0))
+    bare = operands(
+        dataclasses.replace(CHA_25A_50, inertia_kgm2=None), hold((8.0, 1.0)), None, app.profile
+    )
+    assert math.isnan(bare.thermal_torque_nm)
+    assert (bare.thermal_time_constant_s, bare.thermal_time_constant_assumed) == (TAU, True)
 
 
 @pytest.mark.parametrize("tau", [0.0, -1.0, math.inf, math.nan])

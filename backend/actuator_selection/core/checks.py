@@ -713,7 +713,7 @@ def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> 
 
 THERMAL_PEAK = Rule(
     name="thermal_peak",
-    reference="Fig. 520.1 (first-order thermal model); Eq. 514.2",
+    reference="Fig. 520.1 (model); Eq. 514.2",
     unit="Nm",
     value=lambda q, xp: q.thermal_torque_nm,
     limit=_continuous_limit,
