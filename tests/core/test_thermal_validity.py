@@ -410,6 +410,8 @@ def test_batch_equals_single_bit_for_bit() -> None:
         dataclasses.replace(pressing(dwell_s=20.0, idle_s=58.0), thermal_time_constant_s=300.0),
         hold((80.0, 1.0), (0.0, 10.0)),
         hold((30.0, 0.5), (60.0, 45.0), (-40.0, 900.0), (0.0, 5.0), tau=77.7),
+        # More pieces than the batch keeps between its passes: recomputed there.
+        hold(*((10.0 * (k % 7), 30.0 + k) for k in range(40))),
     ]
     for apps in (trapezoids, segments, trapezoids + segments):
         ev = evaluate_batch(actuators, apps)

@@ -105,6 +105,10 @@ VERDICT_BY_CODE = (Verdict.SUITABLE, Verdict.UNCONFIRMED, Verdict.UNSUITABLE)
 
 _PASS, _WARN, _NO_DATA, _FAIL = (np.int8(c) for c in range(4))
 
+_KEPT_PIECES = 16
+"""Cycles of up to this many pieces keep each piece's mean T² between the heating check's
+two passes (16 arrays of a block: 8 MiB); longer ones recompute it."""
+
 _BLOCK_CELLS = 1 << 16
 """Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
 and memory stays bounded whatever the number of cases."""
@@ -499,7 +503,12 @@ def _mean_square(p: PieceArrays, k: int, t0: FloatArray, t1: FloatArray) -> Floa
 
 
 def _thermal_torque(
-    cat: _Catalogue, cases: _Cases, gains: _HeatingGains, heat: FloatArray, energy: FloatArray
+    cat: _Catalogue,
+    cases: _Cases,
+    gains: _HeatingGains,
+    heat: FloatArray,
+    energy: FloatArray,
+    squares: list[FloatArray] | None,
 ) -> FloatArray:
     """:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm` on arrays: the
     periodic start x_0 = B/(1 − A) from the first pass's ``heat`` (B), then the peak of x
@@ -513,11 +522,15 @@ def _thermal_torque(
     )
     peak = heat = start
     for k in range(p.duration.shape[1]):
-        inertia = cat.inertia + p.inertia[:, k, col]
-        static = p.static[:, k, col]
-        t0 = static + inertia * p.accel_start[:, k, col]
-        t1 = static + inertia * p.accel_end[:, k, col]
-        heat = heat + (_mean_square(p, k, t0, t1) - heat) * gains.piece(k)
+        if squares is None:
+            inertia = cat.inertia + p.inertia[:, k, col]
+            static = p.static[:, k, col]
+            t0 = static + inertia * p.accel_start[:, k, col]
+            t1 = static + inertia * p.accel_end[:, k, col]
+            square = _mean_square(p, k, t0, t1)
+        else:
+            square = squares[k]
+        heat = heat + (square - heat) * gains.piece(k)
         peak = np.where(heat > peak, heat, peak)
     return np.sqrt(peak)
 
@@ -543,6 +556,9 @@ def _evaluate_block(
     gains = _HeatingGains(cat, cases)
     energy = np.zeros(shape)
     heat = np.zeros(shape)
+    # Each piece's mean T², kept for the second pass where the cycle has few pieces (else
+    # recomputed there, so that memory stays bounded).
+    squares: list[FloatArray] | None = [] if p.duration.shape[1] <= _KEPT_PIECES else None
     accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
     decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
     constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
@@ -560,6 +576,8 @@ def _evaluate_block(
             )
             square = _mean_square(p, k, t0, t1)
             heat = heat + (square - heat) * gains.piece(k)
+            if squares is not None:
+                squares.append(square)
             braking = p.braking[:, k, col]
             steady = p.constant_speed[:, k, col]
             for torque in (t0, t1):
@@ -574,7 +592,7 @@ def _evaluate_block(
                 constant = np.where(take, torque, constant)
                 constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
-        thermal_torque = _thermal_torque(cat, cases, gains, heat, energy)
+        thermal_torque = _thermal_torque(cat, cases, gains, heat, energy, squares)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
     accel_torque = np.where(unknown, math.nan, accel)
     decel_torque = np.where(unknown, math.nan, decel)
