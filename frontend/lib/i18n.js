@@ -156,6 +156,7 @@ const TEXTS = {
     "check.decel_torque": "Bremsmoment |T_3| ≤ T_max",
     "check.continuous_duty": "Dauerbetrieb (n_av, T_rms) im Dauerbetriebsbereich",
     "check.brake_holding": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
+    "check.thermal_peak": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze (Modell Fig. 520.1)",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -163,6 +164,7 @@ const TEXTS = {
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "Dauerbetrieb",
     "check.short.brake_holding": "Haltebremse",
+    "check.short.thermal_peak": "Erwärmung",
 
     "check.finding.against": "{value}, Grenze {limit}",
     "check.finding.missing": "nicht im Katalog: {what}",
@@ -570,6 +572,7 @@ const TEXTS = {
     "check.decel_torque": "Deceleration torque |T_3| ≤ T_max",
     "check.continuous_duty": "Continuous duty (n_av, T_rms) in the continuous-duty zone",
     "check.brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
+    "check.thermal_peak": "Winding heating over the cycle ≤ continuous limit (Fig. 520.1 model)",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -577,6 +580,7 @@ const TEXTS = {
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "continuous duty",
     "check.short.brake_holding": "holding brake",
+    "check.short.thermal_peak": "heating",
 
     "check.finding.against": "{value}, limit {limit}",
     "check.finding.missing": "not in the catalogue: {what}",

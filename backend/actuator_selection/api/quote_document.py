@@ -53,6 +53,7 @@ CHECK_TITLES = {
     "peak_torque": "Acceleration torque T₁ ≤ T_max",
     "decel_torque": "Deceleration torque |T₃| ≤ T_max",
     "continuous_duty": "Continuous duty (n_av, T_rms) in zone",
+    "thermal_peak": "Winding heating over the cycle ≤ continuous limit",
     "brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
     "drive_current": "Peak motor current ≤ I_max",
     "drive_voltage": "Output voltage with ωL·I ≤ DC bus output",
