@@ -120,3 +120,19 @@ def test_a_bad_limits_request_is_a_422_naming_the_field(
     response = client.post(f"{API}/limits", json=body)
     assert response.status_code == 422, response.text
     assert [str(x) for x in response.json()["detail"][0]["loc"]] == loc
+
+
+def test_a_stored_candidates_limits_equal_the_posted_ones(client: TestClient) -> None:
+    body = worked_example.request()
+    created = client.post(API, json=body)
+    assert created.status_code == 201
+    selection_id = created.json()["id"]
+    stored = client.get(f"{API}/{selection_id}/candidates/FHA-25C-50/limits")
+    assert stored.status_code == 200, stored.text
+    posted = client.post(f"{API}/limits", json=body | {"model": "FHA-25C-50"})
+    assert stored.json() == posted.json()
+    missing = client.get(f"{API}/{selection_id}/candidates/NO-SUCH/limits")
+    assert missing.status_code == 404
+    assert missing.json()["detail"][0]["loc"] == ["path", "model"]
+    unknown = client.get(f"{API}/00000000-0000-0000-0000-000000000000/candidates/FHA-25C-50/limits")
+    assert unknown.status_code == 404

@@ -208,7 +208,10 @@ def test_worked_example_gives_the_chapters_numbers(page: Page, traffic: Traffic)
 
     # every check with value, limit, status and the chapter's reference
     checks = page.locator("#checks-table tbody tr")
-    expect(checks).to_have_count(5)
+    expect(checks).to_have_count(6)  # the chapter's five and the winding's thermal_peak
+    thermal = page.locator('#checks-table tr[data-check="thermal_peak"]')
+    expect(thermal).to_have_attribute("data-status", "no_data")
+    expect(thermal).to_contain_text("520.1")
     peak = page.locator('#checks-table tr[data-check="peak_torque"]')
     expect(peak).to_contain_text("95.48\u202fNm")
     expect(peak).to_contain_text("151\u202fNm")

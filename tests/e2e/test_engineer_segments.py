@@ -347,3 +347,26 @@ def test_the_new_checks_are_labelled_in_both_languages(page: Page) -> None:
     reports_answer(page, body["id"])
     expect(page.locator('label[for="f-drive"]')).to_contain_text("Regler auslegen")
     expect(page.locator("#sum-drive")).to_contain_text("ja")
+
+
+def test_the_limits_of_the_worked_example_on_fha_25c_50(page: Page) -> None:
+    """The inverse solve on the page: the shortest pause for FHA-25C-50 in the chapter's
+    example, with the check that sets it, as the API answers it; labelled in both languages."""
+    page.goto("/")
+    fill_worked_example(page)
+    page.locator("#f-models").fill("FHA-25C-50")
+    status, _ = post_selection(page)
+    assert status == 201
+    with page.expect_response(lambda r: r.url.endswith("/candidates/FHA-25C-50/limits")) as info:
+        page.locator("#limits-button").click()
+    limits = {x["quantity"]: x for x in info.value.json()["limits"]}
+    pause = page.locator('#limits-table tr[data-quantity="pause_s"]')
+    expect(pause).to_be_visible()
+    shown_value = float(pause.locator("[data-value]").get_attribute("data-value") or "nan")
+    assert shown_value == limits["pause_s"]["value"]
+    assert 0.96 < shown_value < 0.98  # E/T_c² − 0.3 s = 0.969 s, a little more by thermal_peak
+    expect(pause).to_contain_text("520.1")  # the limiting check's reference (Fig. 520.1)
+    expect(page.locator('#limits-table tr[data-quantity="load_inertia_kgm2"]')).to_be_visible()
+    page.get_by_role("button", name="Deutsch").click()
+    expect(page.locator("#limits-button")).to_have_text("Grenzen bestimmen")
+    assert_no_leaked_values(page)

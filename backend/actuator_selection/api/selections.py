@@ -24,7 +24,7 @@ from actuator_selection.schemas.selections import (
     SelectionOut,
     SelectionRequest,
 )
-from actuator_selection.services.limits import solve_limits
+from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.reports import (
     CHECK_COLUMNS,
     report_csv,
@@ -126,6 +126,25 @@ def get_candidate(
     """One candidate of a stored selection in full: every check in words, every controller
     of Table 521.1 with its criteria and voltage check, the actuator's catalogue data."""
     return candidate_detail(session, catalogue_snapshot(request, session), selection_id, model)
+
+
+@router.get(
+    "/selections/{selection_id}/candidates/{model}/limits",
+    responses={
+        404: {"description": "unknown selection, or a model that is no candidate of it"},
+        409: {"description": "the catalogue has changed since the selection"},
+    },
+)
+@reads_only
+def get_candidate_limits(
+    selection_id: Annotated[str, Path(max_length=36)],
+    model: Annotated[str, Path(max_length=60)],
+    request: Request,
+    session: SessionDep,
+) -> LimitsOut:
+    """How far the stored load case may go for one of its candidates (as
+    POST /selections/limits answers for it)."""
+    return stored_limits(session, catalogue_snapshot(request, session), selection_id, model)
 
 
 _REPORT_ERRORS: dict[int | str, dict[str, Any]] = {404: {"description": "unknown selection"}}

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from sqlalchemy.orm import Session
+
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.inverse import limits
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.services.selections import stored_candidate
 
 
 def solve_limits(body: LimitsRequest, catalogue: CatalogueSnapshot) -> LimitsOut:
@@ -13,6 +16,20 @@ def solve_limits(body: LimitsRequest, catalogue: CatalogueSnapshot) -> LimitsOut
     actuator = next(iter(catalogue.actuators_of([body.model])), None)
     if actuator is None:
         raise InvalidInputError("model", f"unknown actuator model {body.model!r}")
+    app = body.to_core()
+    return LimitsOut.build(
+        model=actuator.model,
+        catalogue_version=catalogue.version,
+        app=app,
+        found=limits(actuator, app),
+    )
+
+
+def stored_limits(
+    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str
+) -> LimitsOut:
+    """The limits of a stored selection's load case for one of its candidates."""
+    body, actuator = stored_candidate(session, catalogue, selection_id, model, what="the limits")
     app = body.to_core()
     return LimitsOut.build(
         model=actuator.model,

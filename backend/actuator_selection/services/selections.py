@@ -324,14 +324,15 @@ def stored_answer_json(session: Session, selection_id: str) -> JSON | None:
     return None if stored is None else pydantic_core.from_json(gzip.decompress(stored))
 
 
-def candidate_detail(
-    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str
-) -> CandidateDetailOut:
-    """One candidate of a stored selection in full, computed again from its load case.
+def stored_candidate(
+    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str, *, what: str
+) -> tuple[SelectionRequest, Actuator]:
+    """The stored load case of a selection and one of its candidates' actuator, for what
+    is computed again from them (``what``: the detail, the limits).
 
-    The flowchart is deterministic, so the detail is the stored answer's candidate in
-    full, as long as the catalogue is the one the selection used; after a catalogue
-    change it would not be, and the caller is told to run the selection again.
+    The flowchart is deterministic, so a candidate computed again is the stored answer's,
+    as long as the catalogue is the one the selection used; after a catalogue change it
+    would not be, and the caller is told to run the selection again (409).
     """
     stored = SelectionRepository(session).request(selection_id)
     if stored is None:
@@ -341,16 +342,28 @@ def candidate_detail(
         raise ConflictError(
             "selection_id",
             f"the catalogue has changed since this selection (version {version}, now "
-            f"{catalogue.version}); run the selection again for the detail",
+            f"{catalogue.version}); run the selection again for {what}",
             where="path",
         )
     body = SelectionRequest.model_validate(request)
     actuator = next((a for a in catalogue.actuators_of([model])), None)
-    record = CatalogueRepository(session).actuator(model)
-    if actuator is None or record is None or (body.models is not None and model not in body.models):
+    if actuator is None or (body.models is not None and model not in body.models):
         raise NotFoundError(
             "model", f"{model!r} is no candidate of selection {selection_id!r}", where="path"
         )
+    return body, actuator
+
+
+def candidate_detail(
+    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str
+) -> CandidateDetailOut:
+    """One candidate of a stored selection in full, computed again from its load case
+    (:func:`stored_candidate`)."""
+    body, actuator = stored_candidate(session, catalogue, selection_id, model, what="the detail")
+    record = CatalogueRepository(session).actuator(model)
+    if record is None:  # pragma: no cover - the snapshot and the table agree
+        raise NotFoundError("model", f"no actuator {model!r}", where="path")
+    version = catalogue.version
     app = body.to_core()
     return CandidateDetailOut.build(
         selection_id=selection_id,

@@ -19,6 +19,7 @@ import {
 import {
   fillDetail,
   renderDetail,
+  renderLimits,
   renderPermalink,
   renderRanking,
   renderReports,
@@ -88,6 +89,26 @@ const getSelection = (id) => api.get(encodePath`/selections/${id}`);
 
 /** GET /api/v1/selections/{id}/candidates/{model}: one candidate in full, with its catalogue data. */
 const getCandidateDetail = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}`);
+
+/** GET …/candidates/{model}/limits: the shortest pause and t_1, the largest J_L (inverse solve). */
+const getCandidateLimits = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}/limits`);
+
+/** Ask for the chosen candidate's limits and show them in its panel (once it still shows it). */
+async function showLimits() {
+  const sel = state.selection;
+  const model = chosenCandidate()?.model;
+  const slot = document.querySelector('#detail [data-slot="limits"]');
+  if (!sel || !model || !slot) return;
+  const still = () => sel === state.selection && $("#detail")?.dataset.model === model;
+  slot.replaceChildren(renderLimits({ status: "loading" }, state.lang));
+  let view;
+  try {
+    view = { status: "ready", limits: await getCandidateLimits(sel.id, model) };
+  } catch (error) {
+    view = { status: "failed", error };
+  }
+  if (still()) slot.replaceChildren(renderLimits(view, state.lang));
+}
 
 /**
  * Candidates' details asked for, by selection id and model, for the page's lifetime:
@@ -872,6 +893,9 @@ function init() {
     }
   });
   $("#example").addEventListener("click", fillExample);
+  $("#results").addEventListener("click", (event) => {
+    if (event.target.closest("#limits-button")) showLimits();
+  });
   for (const button of document.querySelectorAll(".lang-button")) {
     button.addEventListener("click", () => {
       rememberLang(button.dataset.lang);

@@ -786,6 +786,62 @@ export function renderReports(sel, lang) {
   );
 }
 
+/**
+ * The limits of the load case for the chosen actuator (GET …/candidates/{model}/limits):
+ * a button until asked, then each quantity's limit and the check that sets it.
+ * ``view`` is ``null`` | ``{status: "loading" | "ready" | "failed", limits, error}``.
+ */
+export function renderLimits(view, lang) {
+  const t = (k, p) => translate(lang, k, p);
+  const heading = h("h4", { id: "limits-heading" }, t("limits.heading"));
+  if (!view) {
+    return h(
+      "section",
+      { class: "limits", "aria-labelledby": "limits-heading" },
+      heading,
+      h("button", { type: "button", id: "limits-button", class: "secondary" }, t("limits.button")),
+    );
+  }
+  if (view.status === "loading") {
+    return h("section", { class: "limits", "aria-labelledby": "limits-heading", "aria-busy": "true" }, heading, h("p", { class: "muted" }, t("limits.loading")));
+  }
+  if (view.status === "failed") {
+    return h("section", { class: "limits", "aria-labelledby": "limits-heading" }, heading, notice("warn", h("p", {}, t("limits.failed", { why: view.error?.message ?? "" }))));
+  }
+  const rows = (Array.isArray(view.limits?.limits) ? view.limits.limits : []).map((limit) => {
+    const by = Array.isArray(limit.limiting_checks) ? limit.limiting_checks : [];
+    const value =
+      typeof limit.value === "number"
+        ? valueCell(limit.value, limit.unit === "kgm²" ? "kgm²" : limit.unit, lang)
+        : t("limits.none");
+    const reason = by.length
+      ? by.map((c) => `${checkLabel(c.name, lang)} (${translateReference(lang, c.reference)})`).join("; ")
+      : t("limits.free");
+    return h(
+      "tr",
+      { "data-quantity": limit.quantity },
+      h("th", { scope: "row" }, plainSymbols(t(`limits.quantity.${limit.quantity}`))),
+      h("td", { class: "num" }, value),
+      h("td", {}, reason),
+    );
+  });
+  return h(
+    "section",
+    { class: "limits", "aria-labelledby": "limits-heading" },
+    heading,
+    h(
+      "div",
+      { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("limits.heading") },
+      h(
+        "table",
+        { id: "limits-table" },
+        h("thead", {}, h("tr", {}, h("th", { scope: "col" }, ""), h("th", { scope: "col" }, t("limits.value")), h("th", { scope: "col" }, t("limits.by")))),
+        h("tbody", {}, ...rows),
+      ),
+    ),
+  );
+}
+
 /** The chosen candidate: key figures, every check, reasons, controllers, chart frames. */
 export function renderDetail(sel, candidate, view, lang) {
   const t = (k) => translate(lang, k);
@@ -833,6 +889,7 @@ export function renderDetail(sel, candidate, view, lang) {
       ),
     ),
     h("div", { "data-slot": "segments" }),
+    h("div", { "data-slot": "limits" }, renderLimits(null, lang)),
     h("div", { "data-slot": "controllers" }),
   );
   fillDetail(panel, sel, candidate, view, lang);
