@@ -115,7 +115,8 @@ def _check_row(c: StoredCheck, t: DocumentText) -> str:
         f"</td><td class='status-{e(c.status)}'>{e(_label(t, 'result_' + c.status, c.status))}"
         f"{e(approximate)}</td><td class='num'>{num(c.value, c.unit, t)}</td>"
         f"<td class='num'>{num(c.limit, c.unit, t)}</td>"
-        f"<td class='num'>{num(c.margin_percent, '%', t)}</td><td>{e(c.reference)}</td></tr>"
+        f"<td class='num'>{num(c.margin_percent, '%', t)}</td>"
+        f"<td>{e(t.reference(c.reference))}</td></tr>"
     )
 
 

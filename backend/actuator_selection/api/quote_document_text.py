@@ -13,6 +13,7 @@ stored selection's check messages) is shown as it was written.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from datetime import date
 from decimal import Decimal
@@ -230,6 +231,10 @@ TEXT: dict[str, dict[str, str]] = {
     "axis_speed": {"en": "output speed n [{rpm}]", "de": "Abtriebsdrehzahl n [{rpm}]"},
     "axis_torque": {"en": "output torque T [Nm]", "de": "Abtriebsdrehmoment T [Nm]"},
     "rpm": {"en": "rpm", "de": "min⁻¹"},
+    # The chapter's reference words, as a check's stored reference uses them.
+    "ref_Table": {"en": "Table", "de": "Tabelle"},
+    "ref_Eq.": {"en": "Eq.", "de": "Gl."},
+    "ref_Fig.": {"en": "Fig.", "de": "Abb."},
     "catalogue_source": {"en": "Catalogue data: {source}.", "de": "Katalogdaten: {source}."},
     "selection_footer": {
         "en": "Selection {id} of {date}, made with catalogue version {version}; catalogue "
@@ -250,6 +255,9 @@ TEXT: dict[str, dict[str, str]] = {
         "sie ändern sich danach nicht.",
     },
 }
+
+
+_REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.")
 
 
 def negotiate_language(query: str | None, accept_language: str | None) -> Language:
@@ -320,6 +328,15 @@ class DocumentText:
     def date(self, value: date) -> str:
         """``24 Nov 2026`` / ``24.11.2026``."""
         return format_date(value, format="medium", locale=self.locale)
+
+    def reference(self, reference: str) -> str:
+        """A stored reference (``Table 515.1; Eq. 514.1``) with the chapter's words in this
+        language (``Tabelle 515.1; Gl. 514.1``).
+
+        >>> DocumentText("de").reference("Table 515.1, Eq. 514.2 and Fig. 517.1")
+        'Tabelle 515.1, Gl. 514.2 and Abb. 517.1'
+        """
+        return _REFERENCE_WORD.sub(lambda m: self(f"ref_{m.group(0)}"), reference)
 
     def unit(self, unit: str) -> str:
         """A unit as the chapter prints it in this language (min⁻¹ for rpm in German)."""
