@@ -367,3 +367,19 @@ def test_quote_made_before_terms_existed_still_renders(
         assert "data-field='vat'" not in response.text
         assert "Antriebstechnik Muster AG" in text
         assert terms in text
+
+
+def test_a_document_link_carries_the_language(seller_api: SalesApi, selection_id: str) -> None:
+    number = create(seller_api, seller_api.quote_body(selection_id)).json()["number"]
+    link = seller_api.post(f"/api/v1/quotes/{number}/document-link?lang=de")
+    assert link.status_code == 200, link.text
+    url = link.json()["url"]
+    assert url.endswith("&lang=de")
+    # A browser window with an English Accept-Language still gets the German document.
+    response = seller_api.client.get(url, headers={"Accept-Language": "en-US"})
+    assert response.status_code == 200
+    assert response.headers["content-language"] == "de"
+    assert "Nettobetrag" in response.text
+    bad = seller_api.post(f"/api/v1/quotes/{number}/document-link?lang=xx")
+    assert bad.status_code == 422
+    assert bad.json()["detail"][0]["loc"] == ["query", "lang"]

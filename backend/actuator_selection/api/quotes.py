@@ -155,7 +155,14 @@ def change_status(
 )
 @reads_only
 def quote_document_link(
-    number: str, principal: SalesDep, session: SessionDep, clock: ClockDep
+    number: str,
+    principal: SalesDep,
+    session: SessionDep,
+    clock: ClockDep,
+    lang: Annotated[
+        Literal["de", "en"] | None,
+        Query(description="the document's language, carried in the link (`&lang=`)"),
+    ] = None,
 ) -> DocumentLinkOut:
     """A link to the quote's document that a new browser window can open by itself.
 
@@ -163,7 +170,7 @@ def quote_document_link(
     headers (its Content-Security-Policy among them). The link works for
     ``DOCUMENT_LINK_TTL_S`` seconds and no longer than the key that asked for it.
     """
-    return quotes.document_link(session, principal, number, now=clock.now())
+    return quotes.document_link(session, principal, number, now=clock.now(), language=lang)
 
 
 def _document_reader(

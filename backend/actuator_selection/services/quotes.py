@@ -439,17 +439,24 @@ def document_resource(number: str) -> str:
 
 
 def document_link(
-    session: Session, principal: ApiKeyRecord, number: str, *, now: datetime
+    session: Session,
+    principal: ApiKeyRecord,
+    number: str,
+    *,
+    now: datetime,
+    language: str | None = None,
 ) -> DocumentLinkOut:
     """A link to the quote's document, signed for ``principal``'s key for
-    ``DOCUMENT_LINK_TTL_S`` seconds (and no longer than the key lives)."""
+    ``DOCUMENT_LINK_TTL_S`` seconds (and no longer than the key lives); with
+    ``language``, the link asks for the document in it."""
     _quote(session, number)
     expires_at = int(now.timestamp()) + DOCUMENT_LINK_TTL_S
     token = ApiKeyRepository(session).sign_access(
         principal, document_resource(number), expires_at=expires_at
     )
     return DocumentLinkOut(
-        url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}",
+        url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}"
+        + (f"&lang={language}" if language is not None else ""),
         expires_at=datetime.fromtimestamp(expires_at, UTC),
     )
 
