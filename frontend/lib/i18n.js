@@ -156,6 +156,7 @@ const TEXTS = {
     "check.decel_torque": "Bremsmoment |T_3| ≤ T_max",
     "check.continuous_duty": "Dauerbetrieb (n_av, T_rms) im Dauerbetriebsbereich",
     "check.brake_holding": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
+    "check.thermal_peak": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze (Modell Fig. 520.1)",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -163,6 +164,7 @@ const TEXTS = {
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "Dauerbetrieb",
     "check.short.brake_holding": "Haltebremse",
+    "check.short.thermal_peak": "Erwärmung",
 
     "check.finding.against": "{value}, Grenze {limit}",
     "check.finding.missing": "nicht im Katalog: {what}",
@@ -203,6 +205,121 @@ const TEXTS = {
 
     "unit.rpm": "min⁻¹",
     "noscript": "Diese Seite braucht JavaScript.",
+
+
+    // ---- mechanisms, segments, drive, output bearing, reports (issues 11–13)
+    "load.belt": "Zahnriemenachse (z. B. senkrechte Pick-and-Place-Achse)",
+    "load.rack_pinion": "Zahnstange und Ritzel",
+    "load.ball_screw_incline": "Kugelgewindetrieb, geneigt oder senkrecht (Einheiten mm, mm/s)",
+    "load.lift": "Hubwerk (Seiltrommel)",
+    "load.conveyor": "Förderband",
+    "load.rotary": "Drehende Last hinter einem Getriebe",
+    "load.speed.linear": "Geschwindigkeit der Last",
+    "load.gravity": "Gewichtsmoment, wirkt auch im Stillstand",
+    "mech.optional": "(optional)",
+    "mech.mass": "Bewegte Masse (Schlitten und Nutzlast)",
+    "mech.incline": "Neigung (90° senkrecht; positiv hebt)",
+    "mech.counterweight": "Gegengewicht",
+    "mech.friction_force": "Reibkraft, unabhängig vom Gewicht",
+    "mech.pulley_diameter": "Wirkdurchmesser der Antriebsscheibe",
+    "mech.belt_mass": "Masse des Riemens",
+    "mech.pulley_inertia": "Trägheitsmoment der Antriebsscheibe",
+    "mech.idler_inertia": "Trägheitsmoment der Umlenkscheibe",
+    "mech.idler_diameter": "Durchmesser der Umlenkscheibe (leer: wie Antriebsscheibe)",
+    "mech.pinion_diameter": "Teilkreisdurchmesser des Ritzels",
+    "mech.pinion_inertia": "Trägheitsmoment des Ritzels",
+    "mech.lift_mass": "Masse von Korb oder Haken und Last",
+    "mech.drum_diameter": "Trommeldurchmesser (Seilmitte)",
+    "mech.drum_inertia": "Trägheitsmoment der Trommel",
+    "mech.conveyor_load": "Masse auf dem Band",
+    "mech.roller_diameter": "Durchmesser der Antriebsrolle",
+    "mech.drive_roller_inertia": "Trägheitsmoment der Antriebsrolle",
+    "mech.tail_roller_inertia": "Trägheitsmoment der Umlenkrolle",
+    "mech.tail_roller_diameter": "Durchmesser der Umlenkrolle (leer: wie Antriebsrolle)",
+    "mech.friction_torque": "Reibmoment",
+    "mech.gravity_torque": "Unwuchtmoment, wirkt auch im Stillstand (positiv: gegen positive Drehung)",
+    "mech.tr.legend": "Übersetzung zwischen Antrieb und Mechanik",
+    "mech.tr.ratio": "Übersetzung (Drehzahl Antrieb / Mechanik)",
+    "mech.tr.inertia": "Trägheitsmoment der Übersetzung, antriebsseitig",
+    "mech.tr.efficiency": "Wirkungsgrad der Übersetzung",
+    "mech.belt.hint": "Längen in mm, Geschwindigkeit in mm/s; Text mit Einheit geht auch, z. B. „2 in“.",
+    "mech.rack_pinion.hint": "Längen in mm, Geschwindigkeit in mm/s; Text mit Einheit geht auch, z. B. „2 in“.",
+    "mech.ball_screw_incline.hint": "Steigung in mm, Geschwindigkeit in mm/s; Text mit Einheit geht auch, z. B. „0.2 in“.",
+    "mech.lift.hint": "Längen in mm, Geschwindigkeit in mm/s; positiv hebt die Last.",
+    "mech.conveyor.hint": "Längen in mm, Geschwindigkeit in mm/s.",
+    "mech.rotary.hint": "Trägheit und Momente an der Welle der Mechanik; Drehzahl in min⁻¹.",
+    "sketch.belt": "Skizze: Schlitten mit Masse m auf einem Zahnriemen zwischen zwei Scheiben, Durchmesser D, Geschwindigkeit v",
+    "sketch.rack_pinion": "Skizze: Ritzel mit Durchmesser d auf einer Zahnstange, Schlitten mit Masse m, Geschwindigkeit v",
+    "sketch.ball_screw_incline": "Skizze: Motor treibt eine Spindel mit Steigung P, Mutter mit Masse m, Geschwindigkeit v",
+    "sketch.lift": "Skizze: Seiltrommel mit Durchmesser D, Last m am Seil, Gegengewicht m_c, Geschwindigkeit v",
+    "sketch.conveyor": "Skizze: Förderband zwischen zwei Rollen mit Durchmesser D, Last m_L, Geschwindigkeit v",
+    "sketch.rotary": "Skizze: drehende Last mit Trägheitsmoment J auf der Welle des Antriebs",
+
+    "cycle.mode": "Form des Zyklus",
+    "cycle.mode.trapezoid": "t_1 … t_p (Abb. 516.2)",
+    "cycle.mode.segments": "Segmente (mehrere Bewegungen, S-Kurven, Prozesslast)",
+    "seg.hint": "Jedes Segment endet bei seiner Geschwindigkeit (leer: unverändert – Fahrt oder Stillstand); das Vorzeichen ist die Richtung. Der Zyklus wiederholt sich und endet daher bei der Startgeschwindigkeit.",
+    "seg.start": "Geschwindigkeit zu Beginn",
+    "seg.add": "Segment hinzufügen",
+    "seg.title": "Segment {n}",
+    "seg.speed": "Endgeschwindigkeit",
+    "seg.speed.same": "unverändert",
+    "seg.mode": "Angabe",
+    "seg.mode.duration": "Dauer",
+    "seg.mode.accel": "Beschleunigung",
+    "seg.duration": "Dauer",
+    "seg.accel": "Beschleunigung",
+    "seg.jerk_share": "S-Kurven-Anteil (0 … 1)",
+    "seg.process_load": "Prozesslast",
+    "seg.up": "Segment {n} nach oben",
+    "seg.down": "Segment {n} nach unten",
+    "seg.remove": "Segment {n} entfernen",
+
+    "options.drive": "Regler auslegen: Spitzenstrom ≤ I_max und Ausgangsspannung (Gl. 522.2/522.3, 521.2)",
+    "options.output_load": "Last am Abtriebsflansch: Abtriebslager prüfen",
+    "ol.legend": "Äußere Last am Abtriebsflansch",
+    "ol.radial_force": "Radialkraft",
+    "ol.axial_force": "Axialkraft",
+    "ol.radial_lever": "Hebelarm der Radialkraft ab Flansch",
+    "ol.axial_lever": "Abstand der Axialkraft von der Achse",
+    "ol.load_factor": "Lastfaktor (Standard 1,5)",
+    "ol.static_safety": "Geforderte statische Sicherheit (Standard 1,5)",
+    "ol.required_life": "Geforderte Lebensdauer (leer: nicht geprüft)",
+
+    "summary.gravity": "Gewichtsmoment",
+    "summary.efficiency": "Wirkungsgrad",
+    "summary.drive": "Regler ausgelegt",
+    "summary.output_bearing": "Abtriebslager",
+    "segtable.heading": "Zyklus je Segment am Abtrieb",
+    "segtable.segment": "Segment",
+    "segtable.start": "Beginn",
+    "segtable.duration": "Dauer",
+    "segtable.jerk": "S-Anteil",
+    "segtable.peak": "Spitze",
+    "reports.label": "Bericht dieser Auswahl",
+    "reports.pdf": "Technischer Bericht (PDF)",
+    "reports.csv": "Antriebe als CSV",
+
+    "check.drive_current": "Spitzenstrom I ≤ I_max (Regler)",
+    "check.drive_voltage": "Ausgangsspannung mit ωL·I ≤ U_OUT des Reglers",
+    "check.bearing_moment": "Abtriebslager: Kippmoment M ≤ M_dyn",
+    "check.bearing_static_safety": "Abtriebslager: statische Sicherheit f_s·P_0 ≤ C_0",
+    "check.bearing_life": "Abtriebslager: Lebensdauer L_10 (nötige Tragzahl ≤ C)",
+    "check.short.drive_current": "I ≤ I_max",
+    "check.short.drive_voltage": "U ≤ U_OUT",
+    "check.short.bearing_moment": "M ≤ M_dyn",
+    "check.short.bearing_static_safety": "f_s·P_0 ≤ C_0",
+    "check.short.bearing_life": "Lagerlebensdauer L_10",
+    "ref.manual": "Handbuch",
+    "ref.ch.": "Kap.",
+    "ref.formulas": "Formeln",
+    "ref.formula": "Formel",
+    "ref.with ωL·I in quadrature": "mit ωL·I in Quadratur",
+    "ref.catalogue brake data (holding torque)": "Katalogdaten der Bremse (Haltemoment)",
+
+    "fig.torque_segments": "Drehmoment T(t) je Segment",
+    "fig.torques_loading": "Drehmoment je Segment wird geladen …",
+    "fig.caption.segments": "{count} Segmente; höchste Drehzahl n_2 = {n2}; T_1 = {t1}, T_3 = {t3}, T_rms = {trms}; t_0 = {t0}.",
 
     // ---- the sales page (sales.html); the quote document stays English
     "sales.title": "Angebote",
@@ -455,6 +572,7 @@ const TEXTS = {
     "check.decel_torque": "Deceleration torque |T_3| ≤ T_max",
     "check.continuous_duty": "Continuous duty (n_av, T_rms) in the continuous-duty zone",
     "check.brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
+    "check.thermal_peak": "Winding heating over the cycle ≤ continuous limit (Fig. 520.1 model)",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -462,6 +580,7 @@ const TEXTS = {
     "check.short.decel_torque": "|T_3| ≤ T_max",
     "check.short.continuous_duty": "continuous duty",
     "check.short.brake_holding": "holding brake",
+    "check.short.thermal_peak": "heating",
 
     "check.finding.against": "{value}, limit {limit}",
     "check.finding.missing": "not in the catalogue: {what}",
@@ -502,6 +621,115 @@ const TEXTS = {
 
     "unit.rpm": "rpm",
     "noscript": "This page needs JavaScript.",
+
+
+    // ---- mechanisms, segments, drive, output bearing, reports (issues 11–13)
+    "load.belt": "Belt axis (e.g. a vertical pick-and-place axis)",
+    "load.rack_pinion": "Rack and pinion",
+    "load.ball_screw_incline": "Ball screw, inclined or vertical (units mm, mm/s)",
+    "load.lift": "Lift (rope drum)",
+    "load.conveyor": "Belt conveyor",
+    "load.rotary": "Rotary load behind a gearbox",
+    "load.speed.linear": "Load speed",
+    "load.gravity": "Weight torque, acts at standstill too",
+    "mech.optional": "(optional)",
+    "mech.mass": "Moved mass (carriage and payload)",
+    "mech.incline": "Incline (90° vertical; positive lifts)",
+    "mech.counterweight": "Counterweight",
+    "mech.friction_force": "Friction force independent of the weight",
+    "mech.pulley_diameter": "Pitch diameter of the drive pulley",
+    "mech.belt_mass": "Belt mass",
+    "mech.pulley_inertia": "Drive pulley inertia",
+    "mech.idler_inertia": "Idler pulley inertia",
+    "mech.idler_diameter": "Idler diameter (blank: as the drive pulley)",
+    "mech.pinion_diameter": "Pinion pitch diameter",
+    "mech.pinion_inertia": "Pinion inertia",
+    "mech.lift_mass": "Mass of cage or hook and payload",
+    "mech.drum_diameter": "Drum diameter (rope centre line)",
+    "mech.drum_inertia": "Drum inertia",
+    "mech.conveyor_load": "Mass on the belt",
+    "mech.roller_diameter": "Drive roller diameter",
+    "mech.drive_roller_inertia": "Drive roller inertia",
+    "mech.tail_roller_inertia": "Tail roller inertia",
+    "mech.tail_roller_diameter": "Tail roller diameter (blank: as the drive roller)",
+    "mech.friction_torque": "Friction torque",
+    "mech.gravity_torque": "Unbalance torque, acts at standstill too (positive opposes positive rotation)",
+    "mech.tr.legend": "Transmission between actuator and mechanism",
+    "mech.tr.ratio": "Ratio (actuator speed / mechanism speed)",
+    "mech.tr.inertia": "Transmission inertia, actuator side",
+    "mech.tr.efficiency": "Transmission efficiency",
+    "mech.belt.hint": "Lengths in mm, speed in mm/s; text with a unit works too, e.g. “2 in”.",
+    "mech.rack_pinion.hint": "Lengths in mm, speed in mm/s; text with a unit works too, e.g. “2 in”.",
+    "mech.ball_screw_incline.hint": "Lead in mm, speed in mm/s; text with a unit works too, e.g. “0.2 in”.",
+    "mech.lift.hint": "Lengths in mm, speed in mm/s; positive lifts the load.",
+    "mech.conveyor.hint": "Lengths in mm, speed in mm/s.",
+    "mech.rotary.hint": "Inertia and torques at the mechanism's shaft; speed in rpm.",
+    "sketch.belt": "Sketch: carriage of mass m on a timing belt between two pulleys of diameter D, speed v",
+    "sketch.rack_pinion": "Sketch: pinion of diameter d on a rack, carriage of mass m, speed v",
+    "sketch.ball_screw_incline": "Sketch: motor driving a screw of lead P, nut with mass m, speed v",
+    "sketch.lift": "Sketch: rope drum of diameter D, load m on the rope, counterweight m_c, speed v",
+    "sketch.conveyor": "Sketch: conveyor belt between two rollers of diameter D, load m_L, speed v",
+    "sketch.rotary": "Sketch: rotary load of inertia J on the actuator's shaft",
+
+    "cycle.mode": "Cycle form",
+    "cycle.mode.trapezoid": "t_1 … t_p (Fig. 516.2)",
+    "cycle.mode.segments": "Segments (several moves, S-curves, process load)",
+    "seg.hint": "Each segment ends at its speed (blank: unchanged – a run or a dwell); the sign is the direction. The cycle repeats, so it ends at its start speed.",
+    "seg.start": "Speed at the start",
+    "seg.add": "Add segment",
+    "seg.title": "Segment {n}",
+    "seg.speed": "End speed",
+    "seg.speed.same": "unchanged",
+    "seg.mode": "Given by",
+    "seg.mode.duration": "duration",
+    "seg.mode.accel": "acceleration",
+    "seg.duration": "Duration",
+    "seg.accel": "Acceleration",
+    "seg.jerk_share": "S-curve share (0 … 1)",
+    "seg.process_load": "Process load",
+    "seg.up": "Move segment {n} up",
+    "seg.down": "Move segment {n} down",
+    "seg.remove": "Remove segment {n}",
+
+    "options.drive": "Size the drive: peak current ≤ I_max and output voltage (Eq. 522.2/522.3, 521.2)",
+    "options.output_load": "Load on the output flange: check the output bearing",
+    "ol.legend": "External load on the output flange",
+    "ol.radial_force": "Radial force",
+    "ol.axial_force": "Axial force",
+    "ol.radial_lever": "Lever arm of the radial force from the flange",
+    "ol.axial_lever": "Distance of the axial force from the axis",
+    "ol.load_factor": "Load factor (default 1.5)",
+    "ol.static_safety": "Required static safety (default 1.5)",
+    "ol.required_life": "Required life (blank: not checked)",
+
+    "summary.gravity": "Weight torque",
+    "summary.efficiency": "Efficiency",
+    "summary.drive": "Drive sized",
+    "summary.output_bearing": "Output bearing",
+    "segtable.heading": "Cycle per segment at the output",
+    "segtable.segment": "Segment",
+    "segtable.start": "Start",
+    "segtable.duration": "Duration",
+    "segtable.jerk": "S share",
+    "segtable.peak": "Peak",
+    "reports.label": "Report of this selection",
+    "reports.pdf": "Engineering report (PDF)",
+    "reports.csv": "Candidates as CSV",
+
+    "check.drive_current": "Peak current I ≤ I_max (drive)",
+    "check.drive_voltage": "Output voltage with ωL·I ≤ the controller's U_OUT",
+    "check.bearing_moment": "Output bearing: tilting moment M ≤ M_dyn",
+    "check.bearing_static_safety": "Output bearing: static safety f_s·P_0 ≤ C_0",
+    "check.bearing_life": "Output bearing: life L_10 (load rating needed ≤ C)",
+    "check.short.drive_current": "I ≤ I_max",
+    "check.short.drive_voltage": "U ≤ U_OUT",
+    "check.short.bearing_moment": "M ≤ M_dyn",
+    "check.short.bearing_static_safety": "f_s·P_0 ≤ C_0",
+    "check.short.bearing_life": "bearing life L_10",
+
+    "fig.torque_segments": "Torque T(t) per segment",
+    "fig.torques_loading": "Torque per segment is loading …",
+    "fig.caption.segments": "{count} segments; highest speed n_2 = {n2}; T_1 = {t1}, T_3 = {t3}, T_rms = {trms}; t_0 = {t0}.",
 
     // ---- the sales page (sales.html); the quote document stays English
     "sales.title": "Quotes",
@@ -620,7 +848,17 @@ export function translate(lang, key, params = {}) {
 /** The chapter's reference ("Table 515.1") in ``lang`` ("Tabelle 515.1"). */
 export function translateReference(lang, reference) {
   if (typeof reference !== "string") return "";
-  return reference.replace(/^(Table|Eq\.|Fig\.)/, (word) => translate(lang, `ref.${word}`));
+  // every "Eq." of "Eq. 522.2, Eq. 522.3"; whole phrases first, then words
+  return reference
+    .replace(/with ωL·I in quadrature|catalogue brake data \(holding torque\)/g, (phrase) => refWord(lang, phrase))
+    .replace(/\b(Table|Eq\.|Fig\.|manual|ch\.|formulas|formula)(?=\s|$|,|;)/g, (word) => refWord(lang, word));
+}
+
+/** A word of a reference in ``lang``; the word itself where the catalogue has none. */
+function refWord(lang, word) {
+  const key = `ref.${word}`;
+  const text = translate(lang, key);
+  return text === key ? word : text;
 }
 
 /** The language remembered in localStorage, else the browser's, else German. */
@@ -663,6 +901,6 @@ export function applyStaticTexts(root, lang) {
 
 /** A unit as written in ``lang``: rpm is min⁻¹ in German, as in the chapter. */
 export function unitText(lang, unit) {
-  if (unit === "rpm") return translate(lang, "unit.rpm");
+  if (typeof unit === "string" && unit.startsWith("rpm")) return translate(lang, "unit.rpm") + unit.slice(3);
   return unit ?? "";
 }

@@ -383,3 +383,35 @@ def test_a_document_link_carries_the_language(seller_api: SalesApi, selection_id
     bad = seller_api.post(f"/api/v1/quotes/{number}/document-link?lang=xx")
     assert bad.status_code == 422
     assert bad.json()["detail"][0]["loc"] == ["query", "lang"]
+
+
+TWO_WAY_SEGMENTS: dict[str, Any] = {
+    "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {
+        "segments": [
+            {"speed": 40, "duration_s": 0.1},
+            {"duration_s": 0.1},
+            {"speed": 0, "duration_s": 0.1},
+            {"duration_s": 0.5},
+            {"speed": -40, "duration_s": 0.1},
+            {"duration_s": 0.1},
+            {"speed": 0, "duration_s": 0.1},
+            {"duration_s": 0.5},
+        ]
+    },
+    "high_dynamics": True,
+    "models": ["FHA-25C-50-L"],
+}
+
+
+def test_a_cycle_of_segments_is_listed_in_either_language(seller_api: SalesApi) -> None:
+    response = seller_api.client.post("/api/v1/selections", json=TWO_WAY_SEGMENTS)
+    assert response.status_code == 201, response.text
+    number = create(seller_api, seller_api.quote_body(response.json()["id"])).json()["number"]
+    english = _text(document(seller_api, number, lang="en").text)
+    german = _text(document(seller_api, number, lang="de").text)
+    assert "Segment 8: duration 0.5 s" in english
+    assert "Segment 5: end speed -40.00 rpm" in english
+    assert "Abschnitt 8: Dauer 0,5 s" in german
+    assert "Abschnitt 5: Enddrehzahl -40,00 min⁻¹" in german
+    assert "Segment" not in german

@@ -166,3 +166,16 @@ def test_a_bad_segment_is_a_422_naming_it(
     errors = response.json()["detail"]
     assert [str(x) for x in errors[0]["loc"]] == [str(x) for x in loc], errors
     assert errors[0]["msg"]
+
+
+def test_reports_of_a_segment_cycle_list_its_segments(client: TestClient) -> None:
+    answer = created(client, VERTICAL_TWO_MOVES)
+    csv_text = client.get(f"{API}/{answer['id']}/report.csv").text
+    rows = dict(line.split(",")[:2] for line in csv_text.splitlines()[:40] if "," in line)
+    for k, segment in enumerate(answer["segments"], start=1):
+        assert float(rows[f"segment_{k}_duration_s"]) == segment["duration_s"]
+        assert float(rows[f"segment_{k}_end_rpm"]) == segment["end_rpm"]
+    assert "accel_s" not in rows
+    pdf = client.get(f"{API}/{answer['id']}/report.pdf")
+    assert pdf.status_code == 200
+    assert pdf.headers["content-type"] == "application/pdf"

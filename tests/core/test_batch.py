@@ -528,7 +528,7 @@ def test_empty_inputs() -> None:
     assert select_batch([FHA], []) == []
     (empty,) = select_batch([], [EXAMPLE])
     assert empty == select([], EXAMPLE)
-    assert evaluate_batch([], [EXAMPLE]).statuses.shape == (1, 0, 5)
+    assert evaluate_batch([], [EXAMPLE]).statuses.shape == (1, 0, len(CHECK_NAMES))
 
 
 def test_bad_arguments_are_domain_errors() -> None:

@@ -16,6 +16,7 @@ plus the actuator's catalogue entry as copied into the quote when it was made.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
 from html import escape
@@ -33,6 +34,7 @@ from actuator_selection.schemas.quotes import (
     StoredCandidate,
     StoredCheck,
     StoredSelection,
+    cycle_facts,
 )
 
 DOCUMENT_SCRIPT_PATH = "/quote-document.js"
@@ -104,6 +106,24 @@ def _rows(rows: Iterable[tuple[str, str]]) -> str:
 def _label(t: DocumentText, key: str, fallback: str) -> str:
     """The label ``key`` if the table has it, else ``fallback`` (a name added later)."""
     return t(key) if key in TEXT else fallback
+
+
+_SEGMENT_FACT = re.compile(r"segment_(\d+)_(duration_s|start_rpm|end_rpm)")
+_CYCLE_FACTS = {
+    "accel_s": "accel_time",
+    "constant_s": "constant_time",
+    "decel_s": "decel_time",
+    "pause_s": "pause_time",
+}
+
+
+def _cycle_label(t: DocumentText, key: str, label: str) -> str:
+    """The label of a cycle fact (``schemas.quotes.cycle_facts``) in the document's language."""
+    if key in _CYCLE_FACTS:
+        return t(_CYCLE_FACTS[key])
+    if (match := _SEGMENT_FACT.fullmatch(key)) is not None:
+        return t(f"segment_{match.group(2)}", k=match.group(1))
+    return label[:1].upper() + label[1:]
 
 
 def _check_row(c: StoredCheck, t: DocumentText) -> str:
@@ -519,12 +539,10 @@ def render_quote_document(
                     e(", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())),
                 )
             )
-        cycle = selection.cycle
         cycle_rows = [
-            (e(t("accel_time")), num(cycle.accel_s, "s", t)),
-            (e(t("constant_time")), num(cycle.constant_s, "s", t)),
-            (e(t("decel_time")), num(cycle.decel_s, "s", t)),
-            (e(t("pause_time")), num(cycle.pause_s, "s", t)),
+            (e(_cycle_label(t, key, label)), num(value, unit, t))
+            for key, label, value, unit in cycle_facts(selection.cycle, selection.segments)
+        ] + [
             (e(t("cycle_time")), num(selection.cycle_time_s, "s", t)),
             (e(t("mean_speed")), num(selection.mean_speed_rpm, "rpm", t)),
             (e(t("duty_cycle")), num(selection.duty_cycle_percent, "%", t)),

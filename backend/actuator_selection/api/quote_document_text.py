@@ -162,6 +162,9 @@ TEXT: dict[str, dict[str, str]] = {
     "constant_time": {"en": "Constant speed t₂", "de": "Konstantfahrt t₂"},
     "decel_time": {"en": "Deceleration t₃", "de": "Verzögerung t₃"},
     "pause_time": {"en": "Pause t_p", "de": "Pause t_p"},
+    "segment_duration_s": {"en": "Segment {k}: duration", "de": "Abschnitt {k}: Dauer"},
+    "segment_start_rpm": {"en": "Segment {k}: start speed", "de": "Abschnitt {k}: Anfangsdrehzahl"},
+    "segment_end_rpm": {"en": "Segment {k}: end speed", "de": "Abschnitt {k}: Enddrehzahl"},
     "cycle_time": {"en": "Cycle time t₀", "de": "Zykluszeit t₀"},
     "mean_speed": {"en": "Mean speed n_av (Eq. 514.3)", "de": "Mittlere Drehzahl n_av (Gl. 514.3)"},
     "duty_cycle": {"en": "Duty cycle ED (Eq. 514.4)", "de": "Einschaltdauer ED (Gl. 514.4)"},
@@ -190,6 +193,10 @@ TEXT: dict[str, dict[str, str]] = {
     "check_continuous_duty": {
         "en": "Continuous duty (n_av, T_rms) in zone",
         "de": "Dauerbetrieb (n_av, T_rms) im Bereich",
+    },
+    "check_thermal_peak": {
+        "en": "Winding heating over the cycle ≤ continuous limit",
+        "de": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze",
     },
     "check_brake_holding": {
         "en": "Holding brake: T_L at standstill ≤ holding torque",

@@ -61,6 +61,7 @@ from actuator_selection.core.motion import (
     CycleFigures,
     PieceArrays,
     cycle_figures,
+    heating_gain,
     piece_arrays,
     profile_from,
     trapezoid_piece_arrays,
@@ -71,6 +72,7 @@ from actuator_selection.core.selection import (
     Verdict,
     evaluate_each,
 )
+from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
@@ -104,6 +106,10 @@ VERDICT_BY_CODE = (Verdict.SUITABLE, Verdict.UNCONFIRMED, Verdict.UNSUITABLE)
 
 _PASS, _WARN, _NO_DATA, _FAIL = (np.int8(c) for c in range(4))
 
+_KEPT_PIECES = 16
+"""Cycles of up to this many pieces keep each piece's mean T² between the heating check's
+two passes (16 arrays of a block: 8 MiB); longer ones recompute it."""
+
 _BLOCK_CELLS = 1 << 16
 """Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
 and memory stays bounded whatever the number of cases."""
@@ -125,6 +131,7 @@ class CatalogueArrays:
     continuous_speed: FloatArray
     rated_speed: FloatArray
     brake_holding: FloatArray
+    thermal_time_constant: FloatArray
     has_zone: BoolArray
     drive: dict[str, FloatArray]
     """The drive's and the output bearing's values, by their :class:`Operands` name."""
@@ -160,6 +167,7 @@ def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
         continuous_speed=_optional([a.continuous_speed_rpm for a in actuators]),
         rated_speed=_optional([a.rated_speed_rpm for a in actuators]),
         brake_holding=_optional([a.brake_holding_torque_nm for a in actuators]),
+        thermal_time_constant=_optional([a.thermal_time_constant_s for a in actuators]),
         has_zone=has_zone,
         drive=_drive_columns(actuators),
         zone_max_speed=_optional([a.zone.max_speed_rpm if a.zone else None for a in actuators]),
@@ -228,6 +236,10 @@ class _Cases:
     high_dynamics: BoolArray
     output_load: FloatArray
     """The output load per case (cases × :data:`_OUTPUT_LOAD_FIELDS`); NaN where none."""
+    thermal_time_constant: FloatArray
+    """τ_th per case where the catalogue gives none: the case's, else the default."""
+    thermal_assumed: BoolArray
+    """Whether that τ_th is the assumed default."""
 
     @property
     def size(self) -> int:
@@ -246,6 +258,8 @@ class _Cases:
             load_inertia=self.load_inertia[start:stop],
             high_dynamics=self.high_dynamics[start:stop],
             output_load=self.output_load[start:stop],
+            thermal_time_constant=self.thermal_time_constant[start:stop],
+            thermal_assumed=self.thermal_assumed[start:stop],
         )
 
 
@@ -276,6 +290,14 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         load_inertia=inertia,
         high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
         output_load=_output_loads(apps),
+        thermal_time_constant=np.array(
+            [
+                DEFAULT_THERMAL_TIME_CONSTANT_S if tau is None else tau
+                for tau in (a.thermal_time_constant_s for a in apps)
+            ],
+            dtype=np.float64,
+        ),
+        thermal_assumed=np.array([a.thermal_time_constant_s is None for a in apps], dtype=np.bool_),
     )
 
 
@@ -411,6 +433,111 @@ def _status_codes(
     )
 
 
+class _HeatingGains:
+    """g = 1 − e^(−t/τ_th) of each piece and of the whole cycle for a block, case ×
+    actuator (:meth:`~actuator_selection.core.motion.Profile.heating_gains`).
+
+    τ_th is the actuator's catalogue value where published, else the case's (given or
+    assumed). The gains are computed with ``math.expm1`` on Python floats
+    (:func:`~actuator_selection.core.motion.heating_gain`), as the scalar flowchart
+    computes them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
+    the distinct τ_th values are computed: the case's, and each published one.
+    """
+
+    def __init__(self, cat: CatalogueArrays, cases: _Cases) -> None:
+        published = cat.thermal_time_constant
+        values = sorted({float(v) for v in published.tolist() if v == v})
+        # Per case, gains for its own τ_th (column 0) and each published τ_th (1, 2, …).
+        taus = [cases.thermal_time_constant.tolist(), *([v] * cases.size for v in values)]
+        durations = cases.pieces.duration.tolist()
+        cycles = cases.figures.cycle_s.tolist()
+        self._pieces = np.array(
+            [
+                [_gains(row, tau) for row, tau in zip(durations, column, strict=True)]
+                for column in taus
+            ],
+            dtype=np.float64,
+        ).reshape(len(taus), cases.size, cases.pieces.duration.shape[1])
+        self._cycle = np.array(
+            [
+                [heating_gain(c, tau) for c, tau in zip(cycles, column, strict=True)]
+                for column in taus
+            ],
+            dtype=np.float64,
+        ).reshape(len(taus), cases.size)
+        lookup = {v: i + 1 for i, v in enumerate(values)}
+        self._index = np.array(
+            [0 if v != v else lookup[float(v)] for v in published.tolist()], dtype=np.intp
+        )
+        self._mixed = bool(values)
+        shape = (cases.size, published.size)
+        case_tau = cases.thermal_time_constant[:, np.newaxis]
+        self.time_constant: FloatArray = np.where(np.isnan(published), case_tau, published)
+        self.assumed: BoolArray = np.isnan(published) & cases.thermal_assumed[:, np.newaxis]
+        self._shape = shape
+
+    def _pick(self, table: FloatArray) -> FloatArray:
+        """Cases × actuators from a (τ_th columns × cases) table."""
+        if not self._mixed:
+            return np.broadcast_to(table[0][:, np.newaxis], self._shape)
+        return table[self._index].T
+
+    def piece(self, k: int) -> FloatArray:
+        """The gains of piece ``k``, cases × actuators."""
+        return self._pick(self._pieces[:, :, k])
+
+    def cycle(self) -> FloatArray:
+        """The gains of the whole cycle, cases × actuators."""
+        return self._pick(self._cycle)
+
+
+def _gains(durations: list[float], tau: float) -> list[float]:
+    return [heating_gain(t, tau) for t in durations]
+
+
+def _mean_square(p: PieceArrays, k: int, t0: FloatArray, t1: FloatArray) -> FloatArray:
+    """The mean of T² over piece ``k`` (:meth:`~actuator_selection.core.motion.Profile.
+    thermal_torque_nm`): T_a² where the torque is constant, else (T_a² + T_a·T_b + T_b²)/3."""
+    return np.where(
+        (p.accel_start[:, k] == p.accel_end[:, k])[:, np.newaxis],
+        t0 * t0,
+        (t0 * t0 + t0 * t1 + t1 * t1) / 3.0,
+    )
+
+
+def _thermal_torque(
+    cat: CatalogueArrays,
+    cases: _Cases,
+    gains: _HeatingGains,
+    heat: FloatArray,
+    energy: FloatArray,
+    squares: list[FloatArray] | None,
+) -> FloatArray:
+    """:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm` on arrays: the
+    periodic start x_0 = B/(1 − A) from the first pass's ``heat`` (B), then the peak of x
+    over the pieces' ends, the torques recomputed piece by piece as in the first pass."""
+    col = np.newaxis
+    p = cases.pieces
+    cycle_gain = gains.cycle()
+    cycle_s = cases.figures.cycle_s[:, col]
+    start = np.where(
+        cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), energy / cycle_s
+    )
+    peak = heat = start
+    for k in range(p.duration.shape[1]):
+        if squares is None:
+            inertia = cat.inertia + p.inertia[:, k, col]
+            static = p.static[:, k, col]
+            t0 = static + inertia * p.accel_start[:, k, col]
+            t1 = static + inertia * p.accel_end[:, k, col]
+            square = _mean_square(p, k, t0, t1)
+        else:
+            square = squares[k]
+        heat = heat + (square - heat) * gains.piece(k)
+        peak = np.where(heat > peak, heat, peak)
+    return np.sqrt(peak)
+
+
 def _evaluate_block(
     cat: CatalogueArrays,
     cases: _Cases,
@@ -429,7 +556,12 @@ def _evaluate_block(
     col = np.newaxis
     p = cases.pieces
     shape = (cases.size, cat.inertia.size)
+    gains = _HeatingGains(cat, cases)
     energy = np.zeros(shape)
+    heat = np.zeros(shape)
+    # Each piece's mean T², kept for the second pass where the cycle has few pieces (else
+    # recomputed there, so that memory stays bounded).
+    squares: list[FloatArray] | None = [] if p.duration.shape[1] <= _KEPT_PIECES else None
     accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
     decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
     constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
@@ -445,6 +577,10 @@ def _evaluate_block(
                 t0 * t0 * t,
                 (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 * t,
             )
+            square = _mean_square(p, k, t0, t1)
+            heat = heat + (square - heat) * gains.piece(k)
+            if squares is not None:
+                squares.append(square)
             braking = p.braking[:, k, col]
             steady = p.constant_speed[:, k, col]
             for torque in (t0, t1):
@@ -459,10 +595,12 @@ def _evaluate_block(
                 constant = np.where(take, torque, constant)
                 constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
+        thermal_torque = _thermal_torque(cat, cases, gains, heat, energy, squares)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
     accel_torque = np.where(unknown, math.nan, accel)
     decel_torque = np.where(unknown, math.nan, decel)
     rms_torque = np.where(unknown, math.nan, rms_torque)
+    thermal_torque = np.where(unknown, math.nan, thermal_torque)
     constant_torque = np.where(unknown, math.nan, constant)
     f = cases.figures
     zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
@@ -495,6 +633,10 @@ def _evaluate_block(
         decel_s=f.braking_s[:, col],
         **cat.drive,
         **{name: cases.output_load[:, k, col] for k, name in enumerate(_OUTPUT_LOAD_FIELDS)},
+        cycle_s=f.cycle_s[:, col],
+        thermal_time_constant_s=gains.time_constant,
+        thermal_time_constant_assumed=gains.assumed,
+        thermal_torque_nm=thermal_torque,
     )
     results = [_status_codes(r, q, shape, detail=detail) for r in rules]
     details = [d for _, _, d in results if d is not None]

@@ -21,11 +21,14 @@ The rules, in the manufacturer's order (value ≤ limit passes):
 4. ``decel_torque``: |T_3| ≤ T_max (Eq. 514.1);
 5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1;
    Eq. 514.2, 514.3), approximately T_rms ≤ T_0 and n_av ≤ n_max where no zone is
-   published.
+   published;
+6. ``thermal_peak``: T_rms stands only for a cycle short against the winding's thermal
+   time constant: the peak of the winding's heating over the repeating cycle (the
+   first-order model of Fig. 520.1), as a torque, against the same limit.
 
 **Adding a check is adding one rule** (its formulas and its message) to
 :data:`RULES`; the scalar and the vectorised flowchart, the verdicts and the ranking
-follow. Here n_av ≤ n_max (Eq. 514.3) as a sixth check, given to both flowcharts with
+follow. Here n_av ≤ n_max (Eq. 514.3) as a further check, given to both flowcharts with
 the chapter's worked example (Table 516.1, FHA-25C-50-L of Table 516.3):
 
 >>> from actuator_selection.core.actuators import Actuator
@@ -293,6 +296,17 @@ class Operands(NamedTuple):
     """Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini)."""
     bearing_dynamic_tilting_moment_nm: Real
     """Allowable dynamic tilting moment M_dyn(max) [Nm] (CHA)."""
+    cycle_s: Real
+    """Cycle time t_0 [s] (Table 516.1: t_1 + t_2 + t_3 + t_p)."""
+    thermal_time_constant_s: Real
+    """The winding's thermal time constant τ_th [s]: the catalogue's, else the
+    application's, else :data:`~actuator_selection.core.thermal.
+    DEFAULT_THERMAL_TIME_CONSTANT_S`."""
+    thermal_time_constant_assumed: Truth
+    """Whether τ_th is that assumed default (neither catalogue nor application gives one)."""
+    thermal_torque_nm: Real
+    """The peak of the winding's heating over the repeating cycle as a torque, √max x [Nm]
+    (:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm`); NaN without J_A."""
 
 
 def _where(condition: bool, if_true: float, if_false: float) -> float:
@@ -669,6 +683,77 @@ where neither speed is published the check lacks data. It never passes on n_max,
 peak speed (issue "The checks a sizing engineer signs", item 2).
 """
 
+# --- 6. thermal_peak: the cycle's heating peak ≤ the continuous limit (Fig. 520.1 model) ------
+
+
+def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> str:
+    tau, t_0 = q.thermal_time_constant_s, q.cycle_s
+    words = f"winding heating over the repeating cycle peaks at {peak:.4g} Nm as a torque"
+    if math.isnan(limit):
+        words += (
+            f", with n_av = {q.mean_speed_rpm:.4g} rpm beyond the continuous-duty zone, which "
+            f"ends at {q.zone_max_speed_rpm:.4g} rpm"
+        )
+    else:
+        relation = "≤" if status is Status.PASS else "exceeds"
+        words += f" {relation} the continuous limit {limit:.4g} Nm"
+    assumed = " assumed: not published for this actuator" if q.thermal_time_constant_assumed else ""
+    ratio = t_0 / tau
+    regime = (
+        f"short against τ_th: T_rms = {q.rms_torque_nm:.4g} Nm governs"
+        if ratio <= 0.1
+        else f"not short against τ_th: its long segments govern, not T_rms = "
+        f"{q.rms_torque_nm:.4g} Nm"
+    )
+    return (
+        f"{words} (first-order thermal model, τ_th = {tau:.4g} s{assumed}; cycle t_0 = "
+        f"{t_0:.4g} s = {ratio:.3g}·τ_th, {regime})"
+    )
+
+
+THERMAL_PEAK = Rule(
+    name="thermal_peak",
+    reference="Fig. 520.1 (model); Eq. 514.2",
+    unit="Nm",
+    value=lambda q, xp: q.thermal_torque_nm,
+    limit=_continuous_limit,
+    requires=(
+        published("inertia_kgm2", "moment of inertia J_A (the cycle's torques need it)"),
+        Requirement(
+            any_of=("stall_torque_nm", "continuous_torque_nm"),
+            unless="has_zone",
+            what="continuous-duty zone or continuous torque",
+        ),
+    ),
+    approximate=lambda q, xp: q.thermal_time_constant_assumed | xp.not_(q.has_zone),
+    message=_thermal_message,
+    # The peak of a periodic x is at least its mean, T_rms²: T_rms's least over J_A ≥ 0
+    # bounds the peak from below.
+    lower_bound=lambda q, xp: q.rms_torque_floor_nm,
+)
+"""T_rms stands only for a cycle short against the winding's thermal time constant
+(issue "The checks a sizing engineer signs", item 3): CHA-25A-50 carrying 80 Nm
+(1.45·T_0 = 1.45·55 Nm) for an hour and then pausing for ten hours has T_rms =
+80·√(1/11) = 24 Nm and passes ``continuous_duty``, though the winding passes its
+continuous limit within that hour (Fig. 520.1's model: after τ_th·ln(k²/(k² − 1)),
+0.65·τ_th at k = 1.45).
+
+The check follows the winding's temperature through the repeating cycle with the
+first-order model that stands in for Fig. 520.1 (losses ∝ T², time constant τ_th, the
+continuous limit T_c reached in steady state at T_c): its peak, as a torque
+(:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm`), against the same
+continuous limit as ``continuous_duty`` (the zone's edge at n_av, else T_0 or the
+allowable continuous torque). For a cycle short against τ_th the peak tends to T_rms
+(the chapter's check, Eq. 514.2); a segment long against τ_th counts with its own
+torque, and a step from cold to k·T_c crosses the limit after τ_th·ln(k²/(k² − 1)),
+the overload duration of Fig. 520.1's model (:func:`~actuator_selection.core.thermal.
+overload_duration_s`). Torque stands for current (T = k_T·I; the no-load current and the
+speed-dependent iron losses are left out, as T_rms leaves them out). τ_th is the
+catalogue's where published, else the application's, else an assumed default
+(:data:`~actuator_selection.core.thermal.DEFAULT_THERMAL_TIME_CONSTANT_S`, reported as
+approximate); the limit is approximate without a zone, as in ``continuous_duty``.
+"""
+
 # --- brake_holding: T_L ≤ the brake's holding torque (catalogue brake data) -----------------
 
 
@@ -1010,8 +1095,10 @@ RULES: tuple[Rule, ...] = (
     PEAK_TORQUE,
     DECEL_TORQUE,
     CONTINUOUS_DUTY,
+    THERMAL_PEAK,
 )
-"""The flowchart's checks in the manufacturer's order (chapter p. 514–517)."""
+"""The flowchart's checks in the manufacturer's order (chapter p. 514–517), then whether
+T_rms stands for the cycle's length (:data:`THERMAL_PEAK`, Fig. 520.1's model)."""
 
 DRIVE_RULES: tuple[Rule, ...] = (DRIVE_CURRENT, DRIVE_VOLTAGE)
 """The drive's checks, where asked for (``Application.drive``): peak current (Eq. 522.2,

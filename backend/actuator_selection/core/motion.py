@@ -348,6 +348,67 @@ class Profile:
             rms_torque_nm=rms,
         )
 
+    def heating_gains(self, thermal_time_constant_s: float) -> tuple[tuple[float, ...], float]:
+        """g_k = 1 − e^(−t_k/τ_th) for each piece, and 1 − e^(−t_0/τ_th) for the cycle
+        (:func:`heating_gain`)."""
+        tau = thermal_time_constant_s
+        return tuple([heating_gain(p.duration_s, tau) for p in self.pieces]), heating_gain(
+            self.cycle_s, tau
+        )
+
+    def thermal_torque_nm(
+        self, actuator_inertia_kgm2: float, gains: Sequence[float], cycle_gain: float
+    ) -> float:
+        """The peak of the winding's heating over the repeating cycle, as a torque [Nm].
+
+        A first-order thermal model of the winding (losses ∝ T², one time constant
+        τ_th; the model of Fig. 520.1's overload durations, :func:`~actuator_selection.
+        core.thermal.overload_duration_s`), in torque² units: x → T² with
+        dx/dt = (T² − x)/τ_th, so that x = T_c² is the continuous limit T_c reached in
+        steady state. Over a piece of duration t_k whose T² is taken as its mean m_k,
+
+            x_end = x_start + (m_k − x_start)·g_k,   g_k = 1 − e^(−t_k/τ_th),
+
+        exact for a constant torque, within (T_b² − T_a²)·t_k/τ_th of the truth for a
+        ramp (m_k = (T_a² + T_a·T_b + T_b²)/3, the mean of a linear torque's square, as
+        in T_rms). Once around the cycle x_N = A·x_0 + B with A = e^(−t_0/τ_th) and B
+        the end of a cycle started at 0, so the repeating cycle starts at
+        x_0 = B/(1 − A) (the periodic steady state, what a machine reaches after a few
+        τ_th). The peak of x is at a piece's end (within a piece x moves monotonically
+        towards m_k); its square root is returned. A cycle short against τ_th gives
+        √x → T_rms (Eq. 514.2); a segment long against it gives its own torque.
+        Written operation for operation like the vectorised flowchart (``core/batch.py``).
+
+        Parameters
+        ----------
+        actuator_inertia_kgm2
+            J_A [kgm²].
+        gains, cycle_gain
+            :meth:`heating_gains` for τ_th.
+        """
+        j_a = actuator_inertia_kgm2
+        energy, heat = 0.0, 0.0
+        squares = []
+        for p, gain in zip(self.pieces, gains, strict=True):
+            inertia = j_a + p.inertia_kgm2
+            t0 = p.static_nm + inertia * p.accel_start
+            t1 = p.static_nm + inertia * p.accel_end
+            if p.accel_start == p.accel_end:
+                square = t0 * t0
+            else:
+                square = (t0 * t0 + t0 * t1 + t1 * t1) / 3.0
+            squares.append(square)
+            energy += square * p.duration_s
+            heat = heat + (square - heat) * gain
+        # cycle_gain is 0 only where t_0/τ_th underflows: then x stays at the mean, T_rms².
+        start = heat / cycle_gain if cycle_gain > 0 else energy / self.cycle_s
+        peak = heat = start
+        for square, gain in zip(squares, gains, strict=True):
+            heat = heat + (square - heat) * gain
+            if heat > peak:
+                peak = heat
+        return math.sqrt(peak)
+
     def segment_torques(self, actuator_inertia_kgm2: float) -> tuple[SegmentTorque, ...]:
         """Per segment, the torque at the ends of its pieces along the cycle's time."""
         out: dict[int, tuple[list[float], list[float]]] = {}
@@ -364,6 +425,17 @@ class Profile:
             SegmentTorque(segment=k, times_s=tuple(ts), torques_nm=tuple(qs))
             for k, (ts, qs) in out.items()
         )
+
+
+def heating_gain(duration_s: float, thermal_time_constant_s: float) -> float:
+    """1 − e^(−t/τ_th), the share of the way to its steady state that a first-order
+    system covers in t, by ``math.expm1`` (exact for short t, where 1 − exp(−t/τ) would
+    cancel). Both flowcharts call this on Python floats, so they agree bit for bit.
+
+    >>> round(heating_gain(600.0, 600.0), 6)  # 1 − 1/e
+    0.632121
+    """
+    return -math.expm1(-duration_s / thermal_time_constant_s)
 
 
 def pieces_of(motion: Motion) -> tuple[Piece, ...]:

@@ -8,7 +8,10 @@ in the manufacturer's order:
    dynamic applications, so a failure there and a warning otherwise);
 3. ``peak_torque``: T_1 ≤ T_max (Eq. 514.1);
 4. ``decel_torque``: |T_3| ≤ T_max (Eq. 514.1);
-5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1).
+5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1);
+6. ``thermal_peak``: whether T_rms stands for the cycle's length: the peak of the
+   winding's heating over the repeating cycle against the same limit (the first-order
+   thermal model of Fig. 520.1).
 
 A check never passes without data: a missing catalogue value gives ``no_data``. The
 rules live in :mod:`actuator_selection.core.checks`, one table that the vectorised
@@ -24,7 +27,7 @@ Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here
 >>> c = evaluate(fha, app)
 >>> [(k.name, k.status.value) for k in c.checks]  # doctest: +NORMALIZE_WHITESPACE
 [('max_speed', 'pass'), ('inertia_ratio', 'pass'), ('peak_torque', 'pass'),
- ('decel_torque', 'pass'), ('continuous_duty', 'no_data')]
+ ('decel_torque', 'pass'), ('continuous_duty', 'no_data'), ('thermal_peak', 'no_data')]
 >>> c.verdict.value
 'unconfirmed'
 >>> c.checks[2].message
@@ -57,6 +60,7 @@ from actuator_selection.core.checks import (
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import CycleTorques, Motion, Profile, profile_of, trapezoid
+from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
 __all__ = [
     "INERTIA_RATIO_LIMIT",
@@ -112,6 +116,13 @@ class Application:
             raise InvalidInputError(
                 "cycle", "give segments or the t_1…t_p pattern with its load, not both"
             )
+        tau = self.thermal_time_constant_s
+        if tau is not None and not (math.isfinite(tau) and tau > 0):
+            raise InvalidInputError(
+                "thermal_time_constant_s",
+                f"must be a finite number > 0: τ_th divides the time in the thermal model, "
+                f"got {tau!r}",
+            )
 
     @property
     def cycle(self) -> Motion:
@@ -145,6 +156,11 @@ class Application:
     output_load: OutputLoad | None = None
     """An external load on the output flange, or None: the output bearing is not checked
     (:data:`~actuator_selection.core.checks.BEARING_RULES`)."""
+    thermal_time_constant_s: float | None = None
+    """The winding's thermal time constant τ_th [s] for the heating check
+    (:data:`~actuator_selection.core.checks.THERMAL_PEAK`) where the catalogue gives
+    none; None: :data:`~actuator_selection.core.thermal.DEFAULT_THERMAL_TIME_CONSTANT_S`,
+    an assumption (the check then says approximate)."""
 
     @property
     def rules(self) -> tuple[Rule, ...]:
@@ -183,8 +199,9 @@ class Candidate:
 
     @property
     def reasons(self) -> tuple[str, ...]:
-        """Messages of the checks that fail, lack data or warn, in flowchart order."""
-        return tuple(c.message for c in self.checks if c.status is not Status.PASS)
+        """Messages of the checks that fail, lack data or warn, in flowchart order, each
+        once (``continuous_duty`` and ``thermal_peak`` lack the same catalogue value)."""
+        return tuple(dict.fromkeys(c.message for c in self.checks if c.status is not Status.PASS))
 
     @property
     def worst_overload(self) -> float:
@@ -264,7 +281,27 @@ def operands(
         profile.holding_torque_nm,
         nan if actuator.brake_holding_torque_nm is None else actuator.brake_holding_torque_nm,
         *_drive_and_bearing(actuator, app, profile),
+        *_thermal(actuator, app, torques, profile),
     )
+
+
+def _thermal(
+    actuator: Actuator, app: Application, torques: CycleTorques | None, profile: Profile
+) -> tuple[float, ...]:
+    """The operands after the output bearing's: t_0, τ_th (the catalogue's, else the
+    application's, else the assumed default), whether τ_th is that assumption, and the
+    peak of the cycle's heating as a torque (NaN without J_A)."""
+    tau = actuator.thermal_time_constant_s
+    assumed = False
+    if tau is None:
+        tau = app.thermal_time_constant_s
+        if tau is None:
+            tau, assumed = DEFAULT_THERMAL_TIME_CONSTANT_S, True
+    if torques is None or actuator.inertia_kgm2 is None:
+        peak = math.nan
+    else:
+        peak = profile.thermal_torque_nm(actuator.inertia_kgm2, *profile.heating_gains(tau))
+    return profile.cycle_s, tau, assumed, peak
 
 
 def _value(value: float | None) -> float:

@@ -635,6 +635,31 @@ def classify_sensor_reading(
 
 # --------------------------------------------------------------------------- overload
 
+DEFAULT_THERMAL_TIME_CONSTANT_S = 600.0
+"""τ_th [s] assumed where neither the catalogue nor the request gives one: 10 min.
+
+No public Harmonic Drive document we found publishes a winding thermal time constant
+for the CHA, FHA-C or FHA-C mini (``shared/reference/public-catalogue-data.md``, "Not
+published as numbers anywhere we found"), so this is an assumption, not catalogue data,
+and a check that uses it says ``approximate``. Why 10 min:
+
+- a smaller τ_th is the safe side: every time to shutdown τ_th·ln((k² − p²)/(k² − 1))
+  is proportional to it, and the peak of the cycle's heating grows as τ_th shrinks
+  (tests/core/test_thermal_validity.py checks both);
+- it must still let the chapter's own rule stand where the manufacturer applies it: the
+  continuous-duty diagram of the worked example is drawn for a duty cycle of one minute
+  ("ED = 1 min.", Fig. 517.1; the reading of that note is unconfirmed), and T_rms over a
+  cycle only stands for cycles short against τ_th; at τ_th = 10 × 1 min a one-minute
+  cycle's heating peak lies within a few per cent of T_rms, at smaller τ_th it would not;
+- the issue that asked for this check expects shutdown after 10–40 min at 1.45·T_0
+  (τ_th ≈ 15–62 min in this model); a drive maker's generic I²t default for servomotors
+  is 540 s (Beckhoff, object 32C8:01 "Motor thermal time constant"). 600 s is at the
+  short end of these, so the check is strict rather than lenient.
+
+Give the actuator's real τ_th (the catalogue column ``thermal_time_constant_s``, or
+the request's ``thermal_time_constant_s``) where it is known.
+"""
+
 
 def _check_overload_inputs(
     overload_factor: float,

@@ -444,12 +444,51 @@ class StoredLoad(_Stored):
 
 
 class StoredCycle(_Stored):
-    """The speed pattern's times [s]."""
+    """The cycle as sent: the chapter's t_1…t_p [s], or segments (then the times are None
+    and the selection's :attr:`StoredSelection.segments` list them at the output)."""
 
-    accel_s: float
-    constant_s: float
-    decel_s: float
-    pause_s: float
+    accel_s: float | None = None
+    constant_s: float | None = None
+    decel_s: float | None = None
+    pause_s: float | None = None
+
+    @property
+    def is_trapezoid(self) -> bool:
+        """Whether the cycle is the chapter's t_1…t_p pattern."""
+        return self.accel_s is not None
+
+
+class StoredSegment(_Stored):
+    """One segment of the cycle at the actuator output, as the answer lists it."""
+
+    start_s: float
+    duration_s: float
+    start_rpm: float
+    end_rpm: float
+    jerk_share: float = 0.0
+    process_torque_nm: float = 0.0
+
+
+def cycle_facts(
+    cycle: StoredCycle, segments: list[StoredSegment]
+) -> list[tuple[str, str, float | None, str]]:
+    """The cycle as a report lists it: (key, label, value, unit) per time of the chapter's
+    t_1…t_p, or per segment its duration and its speeds at the output."""
+    if cycle.is_trapezoid:
+        return [
+            ("accel_s", "acceleration t₁", cycle.accel_s, "s"),
+            ("constant_s", "constant speed t₂", cycle.constant_s, "s"),
+            ("decel_s", "deceleration t₃", cycle.decel_s, "s"),
+            ("pause_s", "pause t_p", cycle.pause_s, "s"),
+        ]
+    facts: list[tuple[str, str, float | None, str]] = []
+    for k, seg in enumerate(segments, start=1):
+        facts += [
+            (f"segment_{k}_duration_s", f"segment {k}: duration", seg.duration_s, "s"),
+            (f"segment_{k}_start_rpm", f"segment {k}: start speed", seg.start_rpm, "rpm"),
+            (f"segment_{k}_end_rpm", f"segment {k}: end speed", seg.end_rpm, "rpm"),
+        ]
+    return facts
 
 
 class StoredSelection(_Stored):
@@ -461,6 +500,7 @@ class StoredSelection(_Stored):
     load: StoredLoad
     mechanism: dict[str, Any] | None = None
     cycle: StoredCycle
+    segments: list[StoredSegment] = []
     high_dynamics: bool = True
     cycle_time_s: float
     mean_speed_rpm: float

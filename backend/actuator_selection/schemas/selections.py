@@ -395,6 +395,13 @@ class SelectionRequest(StrictModel):
     models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
     drive: bool = DRIVE_FIELD
     output_load: OutputLoadIn | None = OUTPUT_LOAD_FIELD
+    thermal_time_constant_s: float | None = Field(
+        default=None,
+        gt=0,
+        le=MAX_TIME_S,
+        description="the winding's thermal time constant τ_th [s] where the catalogue gives "
+        "none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate",
+    )
 
     def to_core(self) -> Application:
         """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
@@ -405,6 +412,7 @@ class SelectionRequest(StrictModel):
             "brake": self.brake,
             "drive": self.drive,
             "output_load": output_load_core(self.output_load),
+            "thermal_time_constant_s": self.thermal_time_constant_s,
         }
         load = self.load
         if isinstance(self.cycle, CycleIn) and isinstance(load, _LoadIn) and load.chapter_shorthand:

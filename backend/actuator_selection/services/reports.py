@@ -35,7 +35,12 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.core.checks import margin_percent
 from actuator_selection.core.csvio import neutralised
-from actuator_selection.schemas.quotes import StoredCandidate, StoredCheck, StoredSelection
+from actuator_selection.schemas.quotes import (
+    StoredCandidate,
+    StoredCheck,
+    StoredSelection,
+    cycle_facts,
+)
 from actuator_selection.services.errors import not_found
 from actuator_selection.services.selections import stored_answer_json
 
@@ -81,10 +86,7 @@ class SelectionReport:
             ("torque_nm", s.load.torque_nm, "Nm"),
             ("inertia_kgm2", s.load.inertia_kgm2, "kgm²"),
             ("high_dynamics", "true" if s.high_dynamics else "false", ""),
-            ("accel_s", s.cycle.accel_s, "s"),
-            ("constant_s", s.cycle.constant_s, "s"),
-            ("decel_s", s.cycle.decel_s, "s"),
-            ("pause_s", s.cycle.pause_s, "s"),
+            *((key, value, unit) for key, _, value, unit in cycle_facts(s.cycle, s.segments)),
             ("cycle_time_s", s.cycle_time_s, "s"),
             ("mean_speed_rpm", s.mean_speed_rpm, "rpm"),
             ("duty_cycle_percent", s.duty_cycle_percent, "%"),
@@ -285,10 +287,10 @@ def report_pdf(report: SelectionReport) -> bytes:
         (
             "Cycle (Fig. 516.2, Eq. 514.3, 514.4)",
             [
-                ("acceleration t1", pdf_number(s.cycle.accel_s, "s")),
-                ("constant speed t2", pdf_number(s.cycle.constant_s, "s")),
-                ("deceleration t3", pdf_number(s.cycle.decel_s, "s")),
-                ("pause tp", pdf_number(s.cycle.pause_s, "s")),
+                *(
+                    (label, pdf_number(value, unit))
+                    for _, label, value, unit in cycle_facts(s.cycle, s.segments)
+                ),
                 ("cycle time", pdf_number(s.cycle_time_s, "s")),
                 ("mean speed n_av", pdf_number(s.mean_speed_rpm, "rpm")),
                 ("duty cycle ED", pdf_number(s.duty_cycle_percent, "%")),

@@ -5,19 +5,47 @@
 import { ApiError, createClient, encodePath } from "../../lib/api.js";
 import { $, h, notice } from "../../lib/dom.js";
 import { appendSymbols, num, qty } from "../../lib/format.js";
-import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
+import { LANGS, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
+import {
+  MECHANISMS,
+  MECHANISM_KINDS,
+  TRANSMISSION_FIELDS,
+  quantityField,
+  renderMechanisms,
+  setTransmission,
+} from "./mechanisms.js";
 import {
   fillDetail,
   renderDetail,
   renderPermalink,
   renderRanking,
+  renderReports,
   renderSummary,
   resultSentence,
 } from "./results.js";
+import {
+  fillSegments,
+  initSegments,
+  readSegments,
+  segmentCount,
+  setSegmentLang,
+  setSegmentUnits,
+} from "./segments.js";
 
-const LOAD_KINDS = ["direct", "ball_screw", "rotary_table"];
+const CHAPTER_KINDS = ["direct", "ball_screw", "rotary_table"];
+const LOAD_KINDS = [...CHAPTER_KINDS, ...MECHANISM_KINDS];
+/** The optional load on the output flange (schemas/output_load.py). */
+const OUTPUT_LOAD_FIELDS = [
+  { name: "radial_force_n", symbol: "F_r", unit: "N", key: "ol.radial_force", required: true },
+  { name: "axial_force_n", symbol: "F_a", unit: "N", key: "ol.axial_force", required: true },
+  { name: "radial_lever_m", symbol: "L_r", unit: "m", key: "ol.radial_lever", required: true },
+  { name: "axial_lever_m", symbol: "L_a", unit: "m", key: "ol.axial_lever", required: true },
+  { name: "load_factor", symbol: "f_w", unit: "–", key: "ol.load_factor" },
+  { name: "static_safety_min", symbol: "f_s", unit: "–", key: "ol.static_safety" },
+  { name: "required_life_h", symbol: "L_10", unit: "h", key: "ol.required_life" },
+];
 const MECHANISM_FIELDS = {
   ball_screw: ["mass_kg", "lead_m", "friction_coefficient", "efficiency", "screw_inertia_kgm2"],
   rotary_table: ["mass_kg", "diameter_m", "friction_coefficient", "friction_radius_m"],
@@ -111,6 +139,32 @@ function loadKind() {
   return LOAD_KINDS.includes(checked?.value) ? checked.value : "direct";
 }
 
+function cycleMode() {
+  return $('input[name="cycle-mode"]:checked')?.value === "segments" ? "segments" : "trapezoid";
+}
+
+/** Whether ``kind`` is a linear axis: speeds in mm/s, process loads in N. */
+const isLinear = (kind) => Boolean(MECHANISMS[kind]?.linear);
+
+/** The speed field as the load kind asks for it: n_2 [rpm] (speed_rpm or speed) or v [mm/s]. */
+function updateSpeedField(kind) {
+  const speed = $("#f-speed");
+  const linear = isLinear(kind);
+  speed.dataset.path = CHAPTER_KINDS.includes(kind) ? "load.speed_rpm" : "load.speed";
+  const label = $("#speed-label");
+  label.dataset.i18n = linear ? "load.speed.linear" : "load.speed";
+  label.textContent = t(label.dataset.i18n);
+  $("#speed-sym").replaceChildren(...(linear ? [h("var", {}, "v")] : [h("var", {}, "n"), h("sub", {}, "2")]));
+  const unit = $("#u-speed");
+  unit.dataset.unit = linear ? "mm/s" : "rpm";
+  unit.textContent = unitText(state.lang, unit.dataset.unit);
+  setSegmentUnits(
+    linear
+      ? { speed: "mm/s", accel: "mm/s²", load: "N" }
+      : { speed: "rpm", accel: "rpm/s", load: "Nm" },
+  );
+}
+
 function setLoadKind(kind) {
   for (const radio of document.querySelectorAll('input[name="load-kind"]')) {
     radio.checked = radio.value === kind;
@@ -120,52 +174,127 @@ function setLoadKind(kind) {
     fs.hidden = !active;
     fs.disabled = !active; // inactive fields are neither validated nor sent
   }
+  updateSpeedField(kind);
+}
+
+/** t_1…t_p or segments; switching to segments with none yet starts from the t_1…t_p inputs. */
+function setCycleMode(mode) {
+  const prefill = mode === "segments" && segmentCount() === 0;
+  const [t1, t2, t3, tp] = ["cycle.accel_s", "cycle.constant_s", "cycle.decel_s", "cycle.pause_s"].map(
+    (path) => readNumber(path, { any: true }),
+  );
+  const n = readNumber("load.speed_rpm", { any: true }) ?? readNumber("load.speed", { any: true });
+  for (const radio of document.querySelectorAll('input[name="cycle-mode"]')) {
+    radio.checked = radio.value === mode;
+  }
+  for (const fs of document.querySelectorAll("fieldset.cycle-form")) {
+    const active = fs.dataset.mode === mode;
+    fs.hidden = !active;
+    fs.disabled = !active;
+  }
+  // segments give their own speeds: the load speed is left out of the request
+  const speedField = $("#speed-field");
+  speedField.hidden = mode === "segments";
+  $("#f-speed").disabled = mode === "segments";
+  if (prefill) {
+    // the chapter's four phases restated as segments: the same inputs, nothing computed
+    fillSegments([
+      { speed: n, duration_s: t1 },
+      { duration_s: t2 },
+      { speed: 0, duration_s: t3 },
+      { duration_s: tp },
+    ]);
+  }
 }
 
 /** The input for an API path among the active fields ("load.mass_kg" → #f-rt-mass …). */
-function fieldFor(path) {
+function fieldFor(path, { any = false } = {}) {
   for (const el of form().querySelectorAll(`[data-path="${CSS.escape(path)}"]`)) {
-    if (!el.closest("fieldset[disabled]")) return el;
+    if (any || !el.closest("fieldset[disabled]")) return el;
   }
   return null;
 }
 
-function readNumber(path) {
-  const el = fieldFor(path);
-  if (!el || el.value.trim() === "") return null;
+function readNumber(path, options) {
+  const el = fieldFor(path, options);
+  if (!el || el.disabled || el.value.trim() === "") return null;
   const value = Number(el.value);
   return Number.isFinite(value) ? value : null;
 }
 
-/** The request body; empty fields go as null so that the API names them. */
-function readForm() {
-  const kind = loadKind();
-  let load;
+/**
+ * A quantity as typed: a number ("0,5" read as 0.5), else the text itself for the API to
+ * read with its unit ("0.5 in") or to refuse at the field; null when blank.
+ */
+function readQuantity(path) {
+  const el = fieldFor(path);
+  const text = el?.value.trim() ?? "";
+  if (!text) return null;
+  const plain = /^[-+]?\d*,\d+$/.test(text) ? text.replace(",", ".") : text;
+  const value = Number(plain);
+  return plain !== "" && Number.isFinite(value) ? value : text;
+}
+
+/** The fields of ``specs`` under ``prefix``: required ones always (null when blank), others when given. */
+function readQuantities(prefix, specs) {
+  const out = {};
+  for (const spec of specs) {
+    const value = readQuantity(`${prefix}.${spec.name}`);
+    if (value !== null || spec.required) out[spec.name] = value;
+  }
+  return out;
+}
+
+function readLoad(kind, segments) {
   if (kind === "direct") {
-    load = {
-      speed_rpm: readNumber("load.speed_rpm"),
+    const load = {
       torque_nm: readNumber("load.torque_nm"),
       inertia_kgm2: readNumber("load.inertia_kgm2"),
     };
-  } else {
-    load = { type: kind, speed_rpm: readNumber("load.speed_rpm") };
+    const gravity = readNumber("load.gravity_torque_nm");
+    const efficiency = readNumber("load.efficiency");
+    if (gravity !== null) load.gravity_torque_nm = gravity;
+    if (efficiency !== null) load.efficiency = efficiency;
+    return segments ? load : { speed_rpm: readNumber("load.speed_rpm"), ...load };
+  }
+  if (CHAPTER_KINDS.includes(kind)) {
+    const load = { type: kind };
+    if (!segments) load.speed_rpm = readNumber("load.speed_rpm");
     for (const field of MECHANISM_FIELDS[kind]) {
       const value = readNumber(`load.${field}`);
       // J_S may be left empty: the API's default (0) applies
       if (value !== null || field !== "screw_inertia_kgm2") load[field] = value;
     }
+    return load;
   }
+  const load = { type: kind };
+  if (!segments) load.speed = readNumber("load.speed");
+  Object.assign(load, readQuantities("load", MECHANISMS[kind].fields));
+  const fs = $(`#mech-${kind}`);
+  if (fs?.querySelector(".transmission-toggle")?.checked) {
+    load.transmission = readQuantities("load.transmission", TRANSMISSION_FIELDS);
+  }
+  return load;
+}
+
+/** The request body; empty fields go as null so that the API names them. */
+function readForm() {
+  const segments = cycleMode() === "segments";
   const body = {
-    load,
-    cycle: {
-      accel_s: readNumber("cycle.accel_s"),
-      constant_s: readNumber("cycle.constant_s"),
-      decel_s: readNumber("cycle.decel_s"),
-      pause_s: readNumber("cycle.pause_s"),
-    },
+    load: readLoad(loadKind(), segments),
+    cycle: segments
+      ? readSegments()
+      : {
+          accel_s: readNumber("cycle.accel_s"),
+          constant_s: readNumber("cycle.constant_s"),
+          decel_s: readNumber("cycle.decel_s"),
+          pause_s: readNumber("cycle.pause_s"),
+        },
     high_dynamics: $("#f-hd").checked,
     brake: $("#f-brake").checked,
   };
+  if ($("#f-drive").checked) body.drive = true;
+  if ($("#f-ol").checked) body.output_load = readQuantities("output_load", OUTPUT_LOAD_FIELDS);
   const models = $("#f-models")
     .value.split(/[,;\s]+/)
     .map((m) => m.trim())
@@ -176,32 +305,66 @@ function readForm() {
 
 function setField(path, value) {
   const el = fieldFor(path);
-  if (el) el.value = typeof value === "number" && Number.isFinite(value) ? String(value) : "";
+  if (el) {
+    el.value =
+      (typeof value === "number" && Number.isFinite(value)) || (typeof value === "string" && el.dataset.quantity !== undefined)
+        ? String(value)
+        : "";
+  }
 }
 
-/** Refill the form from a stored selection's echo (load, mechanism, cycle, high_dynamics). */
+function setOutputLoad(on) {
+  $("#f-ol").checked = on;
+  const fs = $("#output-load");
+  fs.hidden = !on;
+  fs.disabled = !on;
+}
+
+/** Refill the form from a stored selection's echo (load, mechanism, cycle, options). */
 function fillForm(sel) {
   const mech = sel.mechanism && typeof sel.mechanism === "object" ? sel.mechanism : null;
   const kind = mech && LOAD_KINDS.includes(mech.type) ? mech.type : "direct";
+  const segments = Array.isArray(sel.cycle?.segments);
   setLoadKind(kind);
-  setField("load.speed_rpm", mech?.speed_rpm ?? sel.load.speed_rpm);
   if (kind === "direct") {
+    setField("load.speed_rpm", segments ? null : sel.load.speed_rpm);
     setField("load.torque_nm", sel.load.torque_nm);
     setField("load.inertia_kgm2", sel.load.inertia_kgm2);
-  } else {
+    setField("load.gravity_torque_nm", sel.load.gravity_torque_nm || null);
+    setField("load.efficiency", sel.load.efficiency === 1 ? null : sel.load.efficiency);
+  } else if (CHAPTER_KINDS.includes(kind)) {
+    setField("load.speed_rpm", mech.speed_rpm);
     for (const field of MECHANISM_FIELDS[kind]) setField(`load.${field}`, mech[field]);
+  } else {
+    setField("load.speed", mech.speed);
+    for (const field of MECHANISMS[kind].fields) setField(`load.${field.name}`, mech[field.name]);
+    const fs = $(`#mech-${kind}`);
+    const tr = mech.transmission && typeof mech.transmission === "object" ? mech.transmission : null;
+    setTransmission(fs, Boolean(tr));
+    if (tr) for (const field of TRANSMISSION_FIELDS) setField(`load.transmission.${field.name}`, tr[field.name]);
   }
-  setField("cycle.accel_s", sel.cycle.accel_s);
-  setField("cycle.constant_s", sel.cycle.constant_s);
-  setField("cycle.decel_s", sel.cycle.decel_s);
-  setField("cycle.pause_s", sel.cycle.pause_s);
+  if (segments) {
+    fillSegments(sel.cycle.segments, sel.cycle.start_speed);
+    setCycleMode("segments");
+  } else {
+    setCycleMode("trapezoid");
+    setField("cycle.accel_s", sel.cycle.accel_s);
+    setField("cycle.constant_s", sel.cycle.constant_s);
+    setField("cycle.decel_s", sel.cycle.decel_s);
+    setField("cycle.pause_s", sel.cycle.pause_s);
+  }
   $("#f-hd").checked = Boolean(sel.high_dynamics);
   $("#f-brake").checked = Boolean(sel.brake);
+  $("#f-drive").checked = Boolean(sel.drive);
+  const ol = sel.output_load && typeof sel.output_load === "object" ? sel.output_load : null;
+  setOutputLoad(Boolean(ol));
+  if (ol) for (const field of OUTPUT_LOAD_FIELDS) setField(`output_load.${field.name}`, ol[field.name]);
   updateCycleSum();
 }
 
 function fillExample() {
   setLoadKind(EXAMPLE.kind);
+  setCycleMode("trapezoid");
   for (const [path, value] of Object.entries(EXAMPLE)) if (path !== "kind") setField(path, value);
   $("#f-hd").checked = true;
   $("#f-models").value = "";
@@ -239,10 +402,23 @@ function updateResolved() {
         " = ",
         h("output", { id, "data-value": String(value) }, qty(value, unit, state.lang)),
       );
+    const kind = fs.dataset.kind;
+    // a mechanism also has a speed at the output, a weight and losses (the answer's load block)
+    const more = CHAPTER_KINDS.includes(kind)
+      ? []
+      : [
+          " ",
+          item("n_2", sel.load.speed_rpm, "rpm", `resolved-${kind}-speed`),
+          " ",
+          item("T_G", sel.load.gravity_torque_nm, "Nm", `resolved-${kind}-gravity`),
+          " ",
+          item("η", sel.load.efficiency, null, `resolved-${kind}-efficiency`),
+        ];
     box.append(
-      item("T_L", sel.load.torque_nm, "Nm", `resolved-${fs.dataset.kind}-torque`),
+      item("T_L", sel.load.torque_nm, "Nm", `resolved-${kind}-torque`),
       " ",
-      item("J_L", sel.load.inertia_kgm2, "kgm²", `resolved-${fs.dataset.kind}-inertia`),
+      item("J_L", sel.load.inertia_kgm2, "kgm²", `resolved-${kind}-inertia`),
+      ...more,
       // DOM append writes null as the text "null": an empty string adds nothing
       state.stale ? h("span", { class: "muted" }, ` ${t("resolved.stale")}`) : "",
     );
@@ -261,8 +437,11 @@ function clearErrors() {
   for (const el of form().querySelectorAll(".has-error")) el.classList.remove("has-error");
 }
 
+/** A group (fieldset, the segment list) rather than one input. */
+const isGroup = (control) => control.matches("fieldset, ol");
+
 function errorElementFor(control) {
-  if (control.matches("fieldset")) {
+  if (isGroup(control)) {
     const id = control.getAttribute("aria-describedby");
     return id ? document.getElementById(id) : null;
   }
@@ -275,10 +454,12 @@ function controlForLoc(loc) {
   const parts = loc.filter((p, i) => !(i === 0 && p === "body"));
   // the union tag of a mechanism load is not a field
   if (parts[0] === "load" && LOAD_KINDS.includes(parts[1])) parts.splice(1, 1);
-  const names = parts.filter((p) => typeof p === "string");
+  // segment indexes stay: ["cycle", "segments", 1, "speed"] → cycle.segments.1.speed
+  const names = parts.map(String);
   for (let n = names.length; n > 0; n -= 1) {
     const path = names.slice(0, n).join(".");
-    const control = fieldFor(path) ?? form().querySelector(`fieldset[data-path="${CSS.escape(path)}"]`);
+    const group = `:is(fieldset, ol)[data-path="${CSS.escape(path)}"]`;
+    const control = fieldFor(path) ?? [...form().querySelectorAll(group)].find((el) => !el.closest("fieldset[disabled]"));
     if (control) return control;
   }
   return null;
@@ -298,8 +479,8 @@ function showFieldErrors(errors) {
     const prefix = typeof index === "number" && error.loc.includes("models") ? `#${index + 1}: ` : "";
     target.append(appendSymbols(h("span", { class: "error-line", lang: "en" }), `${prefix}${error.msg}`));
     target.hidden = false;
-    if (!control.matches("fieldset")) control.setAttribute("aria-invalid", "true");
-    control.closest(".field")?.classList.add("has-error");
+    if (!isGroup(control)) control.setAttribute("aria-invalid", "true");
+    control.closest(".field, .seg-field")?.classList.add("has-error");
     first ??= control;
   }
   const status = $("#form-status");
@@ -316,7 +497,7 @@ function showFieldErrors(errors) {
     );
   }
   status.classList.add("is-error");
-  (first && !first.matches("fieldset") ? first : status).focus?.();
+  (first && !isGroup(first) ? first : status).focus?.();
 }
 
 function describeFailure(error) {
@@ -400,7 +581,11 @@ function renderResults() {
     return;
   }
   if (state.stale) body.append(notice("warn", h("p", {}, t("results.stale"))));
-  body.append(renderSummary(sel, state.lang), renderPermalink(permalinkUrl(), state.lang, copyLink));
+  body.append(
+    renderSummary(sel, state.lang),
+    renderPermalink(permalinkUrl(), state.lang, copyLink),
+    renderReports(sel, state.lang),
+  );
   if (!sel.candidates.length) {
     body.append(notice("info", h("p", {}, t("results.none"))));
     updateResolved();
@@ -526,8 +711,10 @@ async function drawCharts() {
   await Plotly.react(cycleDiv, cycle.data, cycle.layout, config("cycle"));
   cycleDiv.dataset.model = candidate.model;
   cycleDiv.dataset.state = "ready";
+  cycleDiv.dataset.torques = "pending";
 
-  const actuator = (await detailPending)?.actuator ?? null;
+  const detail = await detailPending;
+  const actuator = detail?.actuator ?? null;
   if (token !== drawToken) return;
   $("#diagram-caption").replaceChildren(
     appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),
@@ -537,6 +724,13 @@ async function drawCharts() {
   await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
   diagramDiv.dataset.model = candidate.model;
   diagramDiv.dataset.state = "ready";
+  if (token !== drawToken) return;
+  // the torque along each segment comes with the detail: the cycle is drawn again with it
+  // (after the diagram, which the detail's catalogue data completes)
+  const withTorques = cycleFigure(sel, candidate, lang, detail);
+  await Plotly.react(cycleDiv, withTorques.data, withTorques.layout, config("cycle"));
+  if (token !== drawToken) return;
+  cycleDiv.dataset.torques = detail ? "detail" : "lean";
 }
 
 // ---------------------------------------------------------------- flow
@@ -618,6 +812,7 @@ function applyLang(lang) {
   state.lang = LANGS.includes(lang) ? lang : "de";
   document.documentElement.lang = state.lang;
   applyStaticTexts(document, state.lang);
+  setSegmentLang(state.lang);
   for (const button of document.querySelectorAll(".lang-button")) {
     button.setAttribute("aria-pressed", String(button.dataset.lang === state.lang));
   }
@@ -633,13 +828,26 @@ function applyLang(lang) {
   }
 }
 
+/** The generated parts of the form: the mechanisms' fieldsets and the output load's fields. */
+function buildForm() {
+  renderMechanisms($("#mech-rotary_table"));
+  $("#output-load").append(
+    ...OUTPUT_LOAD_FIELDS.map((field) =>
+      quantityField({ id: `f-ol-${field.name}`, path: `output_load.${field.name}`, ...field }),
+    ),
+  );
+  initSegments({ onChange: onFormEdited });
+}
+
 function init() {
+  buildForm();
   applyLang(initialLang());
   setLoadKind(loadKind());
+  setCycleMode(cycleMode());
   const f = form();
   f.addEventListener("submit", onSubmit);
   f.addEventListener("input", (event) => {
-    const field = event.target.closest(".field");
+    const field = event.target.closest(".field, .seg-field");
     if (field?.classList.contains("has-error")) {
       field.classList.remove("has-error");
       event.target.removeAttribute("aria-invalid");
@@ -652,6 +860,14 @@ function init() {
   f.addEventListener("change", (event) => {
     if (event.target.name === "load-kind") {
       setLoadKind(loadKind());
+      onFormEdited();
+    } else if (event.target.name === "cycle-mode") {
+      setCycleMode(cycleMode());
+      onFormEdited();
+    } else if (event.target.id === "f-ol") {
+      setOutputLoad(event.target.checked);
+      onFormEdited();
+    } else if (event.target.matches(".transmission-toggle")) {
       onFormEdited();
     }
   });

@@ -5,7 +5,7 @@
 // rectangle of an approximate zone) laid through those numbers.
 //
 // Trace uids name what a trace is, so tests and readers can find it:
-//   cycle:   "cycle-speed", "cycle-torque", "cycle-rms"
+//   cycle:   "cycle-speed", "cycle-torque" (per segment once the detail is there), "cycle-rms"
 //   diagram: "zone" | "zone-approx", "t-max", "n-max", "operating-point",
 //            "peak-accel", "peak-decel"
 
@@ -67,23 +67,77 @@ function hover(lang, xUnit, yUnit) {
   );
 }
 
+/** The cycle's segments at the output as the API answers them, or null (an answer without). */
+function answerSegments(selection) {
+  const segs = Array.isArray(selection.segments) ? selection.segments : [];
+  const ok = segs.every(
+    (seg) => seg && isNum(seg.start_s) && isNum(seg.duration_s) && isNum(seg.start_rpm) && isNum(seg.end_rpm),
+  );
+  return ok && segs.length ? segs : null;
+}
+
+/** Whether the request gave the chapter's t_1…t_p (its four segments are t_1, t_2, t_3, t_p). */
+function isTrapezoid(selection) {
+  return isNum(selection.cycle?.accel_s);
+}
+
+/** The detail's torque along each segment, joined into one polyline, or null. */
+function segmentTorqueLine(detail) {
+  const parts = Array.isArray(detail?.segment_torques) ? detail.segment_torques : [];
+  if (!parts.length) return null;
+  const x = [];
+  const y = [];
+  for (const part of parts) {
+    const times = Array.isArray(part?.times_s) ? part.times_s : [];
+    const torques = Array.isArray(part?.torques_nm) ? part.torques_nm : [];
+    if (times.length !== torques.length || !times.every(isNum) || !torques.every(isNum)) return null;
+    x.push(...times);
+    y.push(...torques);
+  }
+  return { x, y };
+}
+
 /**
- * Fig. 516.2: speed n(t) and torque T(t) over one period.
+ * Fig. 516.2, generalised to segments: speed n(t) and torque T(t) over one period.
  *
- * Times from the request echo ``selection.cycle``, the period end from
- * ``selection.cycle_time_s``, n_2 from ``selection.load.speed_rpm``, torques
- * T_1, T_2, T_3 and T_rms from ``candidate``. Torques are absent (no J_A in the
- * catalogue) → the torque panel says "no data".
+ * Speeds from the answer's ``selection.segments`` (output speed at each segment's start
+ * and end; straight between them, also for an S-curve segment, whose share is in the
+ * segment table), else from the request echo ``selection.cycle`` and n_2. Torque from the
+ * candidate's ``detail.segment_torques`` (the API's points, straight between them) once
+ * it is there; before (``detail`` undefined) or without it, the chapter's steps T_1, T_2,
+ * T_3 of ``candidate`` for the t_1…t_p form, and for segments a note. ``detail`` null: it
+ * failed.
  */
-export function cycleFigure(selection, candidate, lang) {
+export function cycleFigure(selection, candidate, lang, detail = undefined) {
   const t = (key) => translate(lang, key);
-  const { accel_s: t1, constant_s: t2, decel_s: t3 } = selection.cycle;
-  const n2 = selection.load.speed_rpm;
-  // Phase boundaries on the time axis: where the chapter's figure changes segment.
-  const a = t1;
-  const b = t1 + t2;
-  const c = t1 + t2 + t3;
+  const segments = answerSegments(selection);
+  const trapezoid = isTrapezoid(selection);
   const end = selection.cycle_time_s;
+  let speedX;
+  let speedY;
+  let bounds; // [label, from, to] per phase or segment
+  if (segments) {
+    // each segment starts at the speed the one before ends at: one point per boundary
+    const last = segments[segments.length - 1];
+    speedX = [...segments.map((seg) => seg.start_s), isNum(end) ? end : last.start_s + last.duration_s];
+    speedY = [...segments.map((seg) => seg.start_rpm), last.end_rpm];
+    const names = trapezoid && segments.length === 4 ? ["t_1", "t_2", "t_3", "t_p"] : null;
+    bounds = segments.map((seg, k) => [names ? names[k] : String(k + 1), seg.start_s, seg.start_s + seg.duration_s]);
+  } else {
+    const { accel_s: t1, constant_s: t2, decel_s: t3 } = selection.cycle;
+    const n2 = selection.load.speed_rpm;
+    const a = t1;
+    const b = t1 + t2;
+    const c = t1 + t2 + t3;
+    speedX = [0, a, b, c, end];
+    speedY = [0, n2, n2, 0, 0];
+    bounds = [
+      ["t_1", 0, a],
+      ["t_2", a, b],
+      ["t_3", b, c],
+      ["t_p", c, end],
+    ];
+  }
 
   const layout = baseLayout(lang);
   layout.margin = { l: 64, r: 16, t: 24, b: 48 };
@@ -98,8 +152,8 @@ export function cycleFigure(selection, candidate, lang) {
       name: plotlySymbols(t("fig.speed_trace")),
       type: "scatter",
       mode: "lines",
-      x: [0, a, b, c, end],
-      y: [0, n2, n2, 0, 0],
+      x: speedX,
+      y: speedY,
       xaxis: "x",
       yaxis: "y",
       line: { color: COLORS.speed, width: 2.5 },
@@ -111,34 +165,27 @@ export function cycleFigure(selection, candidate, lang) {
   const T2 = candidate.constant_torque_nm;
   const T3 = candidate.decel_torque_nm;
   const Trms = candidate.rms_torque_nm;
-  if (isNum(T1) && isNum(T2) && isNum(T3)) {
-    data.push({
-      uid: "cycle-torque",
-      name: plotlySymbols(t("fig.torque_trace")),
-      type: "scatter",
-      mode: "lines",
-      x: [0, 0, a, a, b, b, c, c, end],
-      y: [0, T1, T1, T2, T2, T3, T3, 0, 0],
-      xaxis: "x",
-      yaxis: "y2",
-      line: { color: COLORS.torque, width: 2.5 },
-      hovertemplate: hover(lang, "s", "Nm"),
-    });
-    if (isNum(Trms)) {
-      data.push({
-        uid: "cycle-rms",
-        name: plotlySymbols(t("fig.rms_trace")),
-        type: "scatter",
-        mode: "lines",
-        x: [0, end],
-        y: [Trms, Trms],
-        xaxis: "x",
-        yaxis: "y2",
-        line: { color: COLORS.rms, width: 1.5, dash: "dash" },
-        hovertemplate: hover(lang, "s", "Nm"),
-      });
-    }
-    // Short labels centred on their segment; the values are in hover and caption.
+  const perSegment = segmentTorqueLine(detail);
+  const torqueTrace = (x, y) => ({
+    uid: "cycle-torque",
+    name: plotlySymbols(t(perSegment ? "fig.torque_segments" : "fig.torque_trace")),
+    type: "scatter",
+    mode: "lines",
+    x,
+    y,
+    xaxis: "x",
+    yaxis: "y2",
+    line: { color: COLORS.torque, width: 2.5 },
+    hovertemplate: hover(lang, "s", "Nm"),
+  });
+  let drawn = false;
+  if (perSegment) {
+    data.push(torqueTrace(perSegment.x, perSegment.y));
+    drawn = true;
+  } else if (trapezoid && isNum(T1) && isNum(T2) && isNum(T3)) {
+    const [[, , a], [, , b], [, , c]] = bounds;
+    data.push(torqueTrace([0, 0, a, a, b, b, c, c, end], [0, T1, T1, T2, T2, T3, T3, 0, 0]));
+    // Short labels centred on their phase; the values are in hover and caption.
     const label = (x, y, symbol, yshift) => ({
       x,
       y,
@@ -154,27 +201,39 @@ export function cycleFigure(selection, candidate, lang) {
       label((a + b) / 2, T2, "T_2", T2 >= 0 ? 10 : -10),
       label((b + c) / 2, T3, "T_3", -10),
     );
-  } else {
+    drawn = true;
+  }
+  if (drawn && isNum(Trms)) {
+    data.push({
+      uid: "cycle-rms",
+      name: plotlySymbols(t("fig.rms_trace")),
+      type: "scatter",
+      mode: "lines",
+      x: [0, end],
+      y: [Trms, Trms],
+      xaxis: "x",
+      yaxis: "y2",
+      line: { color: COLORS.rms, width: 1.5, dash: "dash" },
+      hovertemplate: hover(lang, "s", "Nm"),
+    });
+  }
+  if (!drawn) {
+    // before the detail, a segment cycle has no torque to draw yet; after it, none means no J_A
+    const key = detail === undefined && segments && !trapezoid ? "fig.torques_loading" : "fig.torques_nodata";
     layout.annotations.push({
       xref: "paper",
       yref: "y2 domain",
       x: 0.5,
       y: 0.5,
-      text: plotlySymbols(t("fig.torques_nodata")),
+      text: plotlySymbols(t(key)),
       showarrow: false,
-      font: { size: 14, color: COLORS.fail },
+      font: { size: 14, color: key === "fig.torques_nodata" ? COLORS.fail : "#555" },
     });
     layout.yaxis2.range = [-1, 1];
   }
 
-  // The phases t_1, t_2, t_3, t_p named above the speed panel, split by thin lines.
-  const phases = [
-    ["t_1", 0, a],
-    ["t_2", a, b],
-    ["t_3", b, c],
-    ["t_p", c, end],
-  ];
-  for (const [symbol, from, to] of phases) {
+  // The phases (t_1 … t_p) or segments (1 … n) named above the speed panel, split by thin lines.
+  for (const [symbol, from, to] of bounds) {
     if (to > from) {
       layout.annotations.push({
         x: (from + to) / 2,
@@ -188,13 +247,13 @@ export function cycleFigure(selection, candidate, lang) {
       });
     }
   }
-  for (const x of [a, b, c]) {
+  for (const [, , to] of bounds.slice(0, -1)) {
     layout.shapes.push({
       type: "line",
       xref: "x",
       yref: "paper",
-      x0: x,
-      x1: x,
+      x0: to,
+      x1: to,
       y0: 0,
       y1: 1,
       line: { color: "#bbb", width: 1, dash: "dot" },
@@ -395,6 +454,16 @@ export function diagramFigure(selection, candidate, actuator, lang) {
 /** A text alternative of the cycle chart, for the figure's caption. */
 export function cycleCaption(selection, candidate, lang) {
   const q = (v, u) => qty(v, u, lang);
+  if (!isTrapezoid(selection)) {
+    return translate(lang, "fig.caption.segments", {
+      count: Array.isArray(selection.segments) ? selection.segments.length : "–",
+      n2: q(selection.load.speed_rpm, "rpm"),
+      t1: q(candidate.accel_torque_nm, "Nm"),
+      t3: q(candidate.decel_torque_nm, "Nm"),
+      trms: q(candidate.rms_torque_nm, "Nm"),
+      t0: q(selection.cycle_time_s, "s"),
+    });
+  }
   return translate(lang, "fig.caption.cycle", {
     n2: q(selection.load.speed_rpm, "rpm"),
     t1: q(candidate.accel_torque_nm, "Nm"),

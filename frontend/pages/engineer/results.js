@@ -83,6 +83,14 @@ export function renderSummary(sel, lang) {
         { id: "sum-inertia" },
       ),
       definition(
+        termWithSym("summary.gravity", "T_G"),
+        valueCell(sel.load.gravity_torque_nm, "Nm", lang),
+        { id: "sum-gravity" },
+      ),
+      definition(termWithSym("summary.efficiency", "η"), valueCell(sel.load.efficiency, null, lang), {
+        id: "sum-efficiency",
+      }),
+      definition(
         termWithSym("summary.cycle_time", "t_0"),
         valueCell(sel.cycle_time_s, "s", lang),
         { id: "sum-cycle-time" },
@@ -98,6 +106,10 @@ export function renderSummary(sel, lang) {
       definition(t("summary.high_dynamics"), t(sel.high_dynamics ? "summary.yes" : "summary.no"), {
         id: "sum-high-dynamics",
       }),
+      definition(t("summary.drive"), t(sel.drive ? "summary.yes" : "summary.no"), { id: "sum-drive" }),
+      sel.output_load && typeof sel.output_bearing === "string"
+        ? definition(t("summary.output_bearing"), sym(sel.output_bearing, { lang: "en" }), { id: "sum-output-bearing" })
+        : null,
       mech
         ? definition(t("summary.mechanism"), t(`load.${mech}`), { id: "sum-mechanism" })
         : null,
@@ -666,6 +678,112 @@ export function fillDetail(panel, sel, candidate, view, lang) {
       : []),
   );
   slot("controllers").replaceChildren(...[controllerList(sel, candidate, detail, lang)].filter(Boolean));
+  slot("segments").replaceChildren(...[segmentTable(sel, detail, view, lang)].filter(Boolean));
+}
+
+/** The torque at a segment's ends and its largest magnitude, from the detail's points. */
+function segmentTorqueEnds(detail, index) {
+  const parts = Array.isArray(detail?.segment_torques) ? detail.segment_torques : [];
+  const part = parts.find((p) => p && p.segment === index);
+  const torques = Array.isArray(part?.torques_nm) ? part.torques_nm.filter((x) => typeof x === "number") : [];
+  if (!torques.length) return null;
+  const peak = torques.reduce((a, b) => (Math.abs(b) > Math.abs(a) ? b : a));
+  return { start: torques[0], end: torques[torques.length - 1], peak };
+}
+
+/**
+ * The cycle segment by segment at the actuator output (the answer's ``segments``), with
+ * the torque at each segment's ends from the candidate's detail (``segment_torques``).
+ */
+function segmentTable(sel, detail, view, lang) {
+  const segments = Array.isArray(sel.segments) ? sel.segments.filter((s) => s && typeof s === "object") : [];
+  if (!segments.length) return null;
+  const t = (k) => translate(lang, k);
+  const col = (key, symbol, unit) =>
+    h(
+      "th",
+      { scope: "col", role: "columnheader", class: "num" },
+      key ? t(key) : null,
+      symbol ? [" ", sym(symbol, { class: "sym" })] : null,
+      unit ? h("span", { class: "unit" }, ` [${unitText(lang, unit)}]`) : null,
+    );
+  const pending = view?.status === "loading";
+  const torqueCell = (value, label) =>
+    h(
+      "td",
+      { role: "cell", class: "num", "data-label": label },
+      typeof value === "number"
+        ? valueCell(value, null, lang)
+        : h("span", { class: "muted" }, pending ? "…" : "–"),
+    );
+  const trapezoid = typeof sel.cycle?.accel_s === "number" && segments.length === 4;
+  const names = ["t_1", "t_2", "t_3", "t_p"];
+  return h(
+    "section",
+    { class: "segments-result", "aria-labelledby": "segments-heading" },
+    h("h4", { id: "segments-heading" }, t("segtable.heading")),
+    h(
+      "div",
+      { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("segtable.heading") },
+      h(
+        "table",
+        { class: "segment-table", id: "segment-table", role: "table" },
+        h(
+          "thead",
+          { role: "rowgroup" },
+          h(
+            "tr",
+            { role: "row" },
+            h("th", { scope: "col", role: "columnheader" }, t("segtable.segment")),
+            col("segtable.start", null, "s"),
+            col("segtable.duration", null, "s"),
+            col(null, "n_start", "rpm"),
+            col(null, "n_end", "rpm"),
+            col("segtable.jerk", null, null),
+            col(null, "T_process", "Nm"),
+            col(null, "T_start", "Nm"),
+            col(null, "T_end", "Nm"),
+            col("segtable.peak", null, "Nm"),
+          ),
+        ),
+        h(
+          "tbody",
+          { role: "rowgroup" },
+          segments.map((seg, k) => {
+            const ends = segmentTorqueEnds(detail, k);
+            return h(
+              "tr",
+              { role: "row", "data-segment": String(k) },
+              h("th", { scope: "row", role: "rowheader", "data-label": t("segtable.segment") }, trapezoid ? sym(names[k]) : String(k + 1)),
+              h("td", { role: "cell", class: "num", "data-label": t("segtable.start") }, valueCell(seg.start_s, "s", lang)),
+              h("td", { role: "cell", class: "num", "data-label": t("segtable.duration") }, valueCell(seg.duration_s, "s", lang)),
+              h("td", { role: "cell", class: "num", "data-label": "n start", "data-field": "start_rpm" }, valueCell(seg.start_rpm, null, lang)),
+              h("td", { role: "cell", class: "num", "data-label": "n end", "data-field": "end_rpm" }, valueCell(seg.end_rpm, null, lang)),
+              h("td", { role: "cell", class: "num", "data-label": t("segtable.jerk") }, valueCell(seg.jerk_share, null, lang)),
+              h("td", { role: "cell", class: "num", "data-label": "T process" }, valueCell(seg.process_torque_nm, null, lang)),
+              torqueCell(ends?.start, "T start"),
+              torqueCell(ends?.end, "T end"),
+              torqueCell(ends?.peak, t("segtable.peak")),
+            );
+          }),
+        ),
+      ),
+    ),
+  );
+}
+
+/** Links to the selection's engineering report (PDF) and its candidates (CSV). */
+export function renderReports(sel, lang) {
+  const t = (k) => translate(lang, k);
+  const base = `/api/v1/selections/${encodeURIComponent(sel.id)}`;
+  return h(
+    "p",
+    { class: "reports" },
+    h("span", { class: "reports-label" }, `${t("reports.label")}: `),
+    h("a", { id: "report-pdf", href: `${base}/report.pdf`, download: "" }, t("reports.pdf")),
+    " · ",
+    h("a", { id: "report-csv", href: `${base}/report.csv`, download: "" }, t("reports.csv")),
+  );
 }
 
 /** The chosen candidate: key figures, every check, reasons, controllers, chart frames. */
@@ -714,6 +832,7 @@ export function renderDetail(sel, candidate, view, lang) {
         h("div", { class: "chart", id: "chart-diagram", "data-state": "loading" }, h("p", { class: "chart-placeholder" }, t("charts.loading"))),
       ),
     ),
+    h("div", { "data-slot": "segments" }),
     h("div", { "data-slot": "controllers" }),
   );
   fillDetail(panel, sel, candidate, view, lang);
