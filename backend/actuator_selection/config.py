@@ -1,13 +1,16 @@
-"""Settings from the environment: database, address, API keys, request and database limits."""
+"""Settings from the environment: database, address, API keys, request and database limits,
+the seller and the default terms of quotes."""
 
 from __future__ import annotations
 
+from decimal import Decimal
 from functools import lru_cache
 from pathlib import Path
 
 from pydantic import Field
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
+from actuator_selection.core.quote_terms import QuoteDefaults, SellerParty
 from actuator_selection.db.engine import EngineLimits
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -16,6 +19,9 @@ REPO_ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_DATABASE_URL = f"sqlite:///{REPO_ROOT / 'var' / 'actuator_selection.sqlite3'}"
 SEED_DIR = REPO_ROOT / "seed_data"
 FRONTEND_DIR = REPO_ROOT / "frontend"
+
+PLACEHOLDER_SELLER_NAME = "Your company"
+"""The default ``SELLER_NAME``: a quote document made with it carries a warning banner."""
 
 
 class Settings(BaseSettings):
@@ -48,6 +54,57 @@ class Settings(BaseSettings):
     """Longest wait for a database lock [s] (SQLite busy timeout, PostgreSQL lock_timeout)."""
     db_statement_timeout_s: float = Field(default=60.0, gt=0)
     """Longest database statement [s] (PostgreSQL statement_timeout)."""
+
+    # The seller block of quote documents. The defaults are placeholders that read as
+    # such: set them for the company that sends the quotes.
+    seller_name: str = Field(default=PLACEHOLDER_SELLER_NAME, min_length=1, max_length=200)
+    seller_address: str = Field(
+        default="Your street 1\n12345 Your town\nYour country", min_length=1, max_length=2000
+    )
+    """Several lines: write ``\\n`` between them in the environment variable."""
+    seller_vat_id: str = Field(default="XX000000000", min_length=1, max_length=40)
+    """The seller's VAT identification number (e.g. DE123456789)."""
+    seller_email: str = Field(default="sales@example.com", min_length=1, max_length=200)
+    seller_phone: str | None = Field(default=None, max_length=60)
+
+    # Default terms of a new quote (a request may state its own).
+    quote_vat_percent: Decimal = Field(default=Decimal("19"), ge=0, le=100, decimal_places=2)
+    """VAT rate [%] of a quote whose request gives no ``vat_percent`` (19: Germany's
+    standard rate)."""
+    quote_payment_terms_en: str = Field(
+        default="Payable within 30 days of the invoice date without deduction.", min_length=1
+    )
+    quote_payment_terms_de: str = Field(
+        default="Zahlbar innerhalb von 30 Tagen ab Rechnungsdatum ohne Abzug.", min_length=1
+    )
+    quote_delivery_terms_en: str = Field(
+        default="FCA seller's works (Incoterms® 2020), packing included.", min_length=1
+    )
+    quote_delivery_terms_de: str = Field(
+        default="FCA Werk des Verkäufers (Incoterms® 2020), einschließlich Verpackung.",
+        min_length=1,
+    )
+    """The seller's standard terms in each language of the quote document: a quote whose
+    request states no terms shows these, in the document's language."""
+
+    def seller(self) -> SellerParty:
+        """The seller block and standard terms that a new quote stores."""
+        return SellerParty(
+            name=self.seller_name,
+            address=self.seller_address.replace("\\n", "\n"),
+            vat_id=self.seller_vat_id,
+            email=self.seller_email,
+            phone=self.seller_phone,
+            payment_terms={"en": self.quote_payment_terms_en, "de": self.quote_payment_terms_de},
+            delivery_terms={
+                "en": self.quote_delivery_terms_en,
+                "de": self.quote_delivery_terms_de,
+            },
+        )
+
+    def quote_defaults(self) -> QuoteDefaults:
+        """The VAT rate and seller of a quote whose request gives none."""
+        return QuoteDefaults(vat_percent=self.quote_vat_percent, seller=self.seller())
 
     def engine_limits(self) -> EngineLimits:
         """The database limits that go with the admission limits."""

@@ -5,16 +5,31 @@ from __future__ import annotations
 import gzip
 import json
 from collections.abc import Callable
-from datetime import UTC, datetime
+from datetime import UTC, date, datetime
+from decimal import Decimal
+from typing import Any
 
 from alembic import command
 from alembic.autogenerate import compare_metadata
 from alembic.migration import MigrationContext
-from sqlalchemy import JSON, column, insert, inspect, select, table, text
+from sqlalchemy import (
+    JSON,
+    Date,
+    DateTime,
+    Numeric,
+    column,
+    insert,
+    inspect,
+    select,
+    table,
+    text,
+)
+from sqlalchemy.orm import Session
 
 from actuator_selection.db.engine import make_engine
 from actuator_selection.db.migrate import alembic_config, upgrade
 from actuator_selection.db.models import Base
+from actuator_selection.db.sales import QuoteRepository
 
 
 def test_upgrade_from_empty_creates_every_table(
@@ -77,5 +92,78 @@ def test_stored_selections_keep_their_answer_across_0005(
         with engine.connect() as conn:
             back = conn.execute(select(old.c.response)).scalar_one()
         assert back == answer
+    finally:
+        engine.dispose()
+
+
+def test_quotes_made_before_0008_keep_their_figures_and_read_without_terms(
+    backend: str, new_database: Callable[[str], str]
+) -> None:
+    """A quote stored before 0008 reads after it with no VAT, terms or seller (all NULL),
+    its net figures unchanged; a downgrade drops the new columns and keeps the quote."""
+    url = new_database(backend)
+    config = alembic_config(url=url)
+    command.upgrade(config, "0007")
+    now = datetime(2026, 11, 20, tzinfo=UTC)
+    engine = make_engine(url)
+    api_keys = table("api_keys", column("id"), column("prefix"), column("key_sha256"),
+                     column("name"), column("role"), column("created_at"))  # fmt: skip
+    selections = table("selections", column("id"), column("created_at"),
+                       column("catalogue_version"), column("request", JSON),
+                       column("answer_gzip"))  # fmt: skip
+    old_quote = {
+        "id": 1, "number": "Q-2026-00001", "year": 2026, "sequence": 1, "status": "sent",
+        "created_at": now, "status_changed_at": now, "valid_until": date(2026, 12, 31),
+        "api_key_id": 1, "idempotency_key": None, "request_sha256": "0" * 64,
+        "selection_id": "s-1", "selection_catalogue_version": 1, "catalogue_version": 1,
+        "customer_name": "Muster GmbH", "customer_address": None, "customer_reference": None,
+        "notes": None, "actuator_model": "FHA-25C-50-L", "verdict": "suitable",
+        "verdict_reasons": [], "actuator_snapshot": {"model": "FHA-25C-50-L"},
+        "price_list_name": "list", "price_list_is_example": False,
+        "price_date": date(2026, 11, 20), "currency": "EUR", "subtotal": Decimal("2950.00"),
+        "discount_percent": Decimal("0.00"), "discount_amount": Decimal("0.00"),
+        "total": Decimal("2950.00"),
+    }  # fmt: skip
+    types: dict[str, Any] = {
+        "verdict_reasons": JSON(),
+        "actuator_snapshot": JSON(),
+        "created_at": DateTime(timezone=True),
+        "status_changed_at": DateTime(timezone=True),
+        "valid_until": Date(),
+        "price_date": Date(),
+        **{name: Numeric(14, 2) for name in ("subtotal", "discount_amount", "total")},
+        "discount_percent": Numeric(5, 2),
+    }
+    quotes = table("quotes", *(column(name, types.get(name)) for name in old_quote))
+    try:
+        with engine.begin() as conn:
+            conn.execute(
+                insert(api_keys).values(
+                    id=1, prefix="p", key_sha256="0" * 64, name="k", role="sales", created_at=now
+                )
+            )
+            conn.execute(
+                insert(selections).values(
+                    id="s-1", created_at=now, catalogue_version=1, request={}, answer_gzip=b""
+                )
+            )
+            conn.execute(insert(quotes).values(**old_quote))
+        command.upgrade(config, "0008")
+        with Session(engine) as session:
+            record = QuoteRepository(session).by_number("Q-2026-00001")
+        assert record is not None
+        assert (record.tax, record.seller, record.payment_terms, record.delivery_terms) == (
+            None,
+            None,
+            None,
+            None,
+        )
+        assert (record.subtotal, record.total) == (Decimal("2950.00"), Decimal("2950.00"))
+        command.downgrade(config, "0007")
+        columns = {c["name"] for c in inspect(engine).get_columns("quotes")}
+        assert not columns & {"vat_percent", "vat_amount", "gross_total", "seller"}
+        with engine.connect() as conn:
+            assert conn.execute(select(quotes.c.total)).scalar_one() == Decimal("2950.00")
+        command.upgrade(config, "head")
     finally:
         engine.dispose()

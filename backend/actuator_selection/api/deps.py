@@ -9,7 +9,7 @@ from typing import Annotated, Any, TypeVar
 from fastapi import Depends, Request
 from sqlalchemy.orm import Session, sessionmaker
 
-from actuator_selection.config import Settings, get_settings
+from actuator_selection.config import Settings
 from actuator_selection.db.engine import begin_write
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 
@@ -79,7 +79,13 @@ def write_transaction(request: Request) -> Iterator[Session]:
         yield begin_write(session)
 
 
-SettingsDep = Annotated[Settings, Depends(get_settings)]
+def app_settings(request: Request) -> Settings:
+    """The settings the app was built with (``create_app(settings)``)."""
+    settings: Settings = request.app.state.settings
+    return settings
+
+
+SettingsDep = Annotated[Settings, Depends(app_settings)]
 
 
 def catalogue_snapshot(request: Request, session: Session) -> CatalogueSnapshot:

@@ -1,5 +1,9 @@
 """The printable quote: HTML laid out for A4, with the engineering that justifies the offer.
 
+In English or German (``api/quote_document_text.py``: every label from one table,
+numbers, money and dates formatted by Babel for the locale); the seller block, net,
+VAT and gross totals, payment, delivery and validity terms, and page numbers in print.
+
 Built by hand with :func:`html.escape` on every value (Jinja2 is not installed
 and not needed): customer text can hold anything and must never become markup.
 The speed/torque diagram is a plotly figure built here with
@@ -12,6 +16,7 @@ plus the actuator's catalogue entry as copied into the quote when it was made.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
 from html import escape
@@ -20,8 +25,9 @@ from typing import Any
 
 import plotly.graph_objects as go
 
+from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
 from actuator_selection.api.static import PLOTLY_URL
-from actuator_selection.core.money import ROUNDING_RULE
+from actuator_selection.core.quote_terms import SellerParty
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.quotes import (
     QuoteOut,
@@ -47,22 +53,8 @@ DOCUMENT_SCRIPT = """\
 })();
 """
 
-CHECK_TITLES = {
-    "max_speed": "Maximum speed n₂ ≤ n_max",
-    "inertia_ratio": "Inertia ratio J_L ≤ 3·J_A",
-    "peak_torque": "Acceleration torque T₁ ≤ T_max",
-    "decel_torque": "Deceleration torque |T₃| ≤ T_max",
-    "continuous_duty": "Continuous duty (n_av, T_rms) in zone",
-    "thermal_peak": "Winding heating over the cycle ≤ continuous limit",
-    "brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
-    "drive_current": "Peak motor current ≤ I_max",
-    "drive_voltage": "Output voltage with ωL·I ≤ DC bus output",
-    "bearing_moment": "Output bearing: tilting moment ≤ allowable",
-    "bearing_static_safety": "Output bearing: static safety f_s ≥ required",
-    "bearing_life": "Output bearing: L₁₀ life ≥ required",
-}
 GRID = "#e4e6ea"
-STATUS_TEXT = {"pass": "pass", "fail": "FAIL", "warn": "warning", "no_data": "no data"}
+ENGLISH = DocumentText("en")
 
 
 def e(value: object) -> str:
@@ -70,30 +62,30 @@ def e(value: object) -> str:
     return "—" if value is None else escape(str(value), quote=True)
 
 
-def num(value: float | None, unit: str = "") -> str:
+def num(value: float | None, unit: str = "", t: DocumentText = ENGLISH) -> str:
     """A measured value for print: 2 decimals from 1 up, 4 significant digits below."""
     if value is None:
         return "—"
     size = abs(value)
     if size >= 1000:
-        text = f"{value:,.0f}"
+        text = t.number(value, "#,##0")
     elif size >= 1 or value == 0:
-        text = f"{value:.2f}"
+        text = t.number(value, "#,##0.00")
     else:
-        text = f"{value:.4g}"
-    return e(f"{text} {unit}".strip())
+        text = t.number(value, "@###")
+    return e(f"{text} {t.unit(unit)}".strip())
 
 
-def num_plain(value: object) -> str:
+def num_plain(value: object, t: DocumentText = ENGLISH) -> str:
     """A catalogue number as printed there (50, 0.86); '—' when absent."""
     if isinstance(value, int | float) and not isinstance(value, bool):
-        return e(f"{value:g}")
+        return e(t.number(value, "#,##0.######"))
     return e(value)
 
 
-def money(amount: Decimal, currency: str) -> str:
-    """``1,234.50 EUR``."""
-    return e(f"{amount:,.2f} {currency}")
+def money(amount: Decimal, currency: str, t: DocumentText = ENGLISH) -> str:
+    """``1,234.50 EUR`` (``1.234,50 EUR`` in German)."""
+    return e(t.money(amount, currency))
 
 
 def script_safe_json(text: str) -> str:
@@ -111,16 +103,40 @@ def _rows(rows: Iterable[tuple[str, str]]) -> str:
     return "".join(f"<tr><th scope='row'>{k}</th><td>{v}</td></tr>" for k, v in rows)
 
 
-def _check_row(c: StoredCheck) -> str:
+def _label(t: DocumentText, key: str, fallback: str) -> str:
+    """The label ``key`` if the table has it, else ``fallback`` (a name added later)."""
+    return t(key) if key in TEXT else fallback
+
+
+_SEGMENT_FACT = re.compile(r"segment_(\d+)_(duration_s|start_rpm|end_rpm)")
+_CYCLE_FACTS = {
+    "accel_s": "accel_time",
+    "constant_s": "constant_time",
+    "decel_s": "decel_time",
+    "pause_s": "pause_time",
+}
+
+
+def _cycle_label(t: DocumentText, key: str, label: str) -> str:
+    """The label of a cycle fact (``schemas.quotes.cycle_facts``) in the document's language."""
+    if key in _CYCLE_FACTS:
+        return t(_CYCLE_FACTS[key])
+    if (match := _SEGMENT_FACT.fullmatch(key)) is not None:
+        return t(f"segment_{match.group(2)}", k=match.group(1))
+    return label[:1].upper() + label[1:]
+
+
+def _check_row(c: StoredCheck, t: DocumentText) -> str:
     """One row of the checks table; the message only where the check did not pass."""
     message = f"<div class='small muted'>{e(c.summary)}</div>" if c.status != "pass" else ""
-    approximate = " (approx.)" if c.approximate else ""
+    approximate = t("approximate") if c.approximate else ""
     return (
-        f"<tr data-check='{e(c.name)}'><td>{e(CHECK_TITLES.get(c.name, c.name))}{message}</td>"
-        f"<td class='status-{e(c.status)}'>{e(STATUS_TEXT.get(c.status, c.status))}"
-        f"{approximate}</td><td class='num'>{num(c.value, c.unit)}</td>"
-        f"<td class='num'>{num(c.limit, c.unit)}</td>"
-        f"<td class='num'>{num(c.margin_percent, '%')}</td><td>{e(c.reference)}</td></tr>"
+        f"<tr data-check='{e(c.name)}'><td>{e(_label(t, 'check_' + c.name, c.name))}{message}"
+        f"</td><td class='status-{e(c.status)}'>{e(_label(t, 'result_' + c.status, c.status))}"
+        f"{e(approximate)}</td><td class='num'>{num(c.value, c.unit, t)}</td>"
+        f"<td class='num'>{num(c.limit, c.unit, t)}</td>"
+        f"<td class='num'>{num(c.margin_percent, '%', t)}</td>"
+        f"<td>{e(t.reference(c.reference))}</td></tr>"
     )
 
 
@@ -129,7 +145,10 @@ def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
 
 
 def speed_torque_figure(
-    candidate: StoredCandidate, selection: StoredSelection, actuator: Mapping[str, Any]
+    candidate: StoredCandidate,
+    selection: StoredSelection,
+    actuator: Mapping[str, Any],
+    t: DocumentText = ENGLISH,
 ) -> go.Figure:
     """The speed/torque diagram (Fig. 517.1 style) of the quoted actuator and load case.
 
@@ -156,7 +175,7 @@ def speed_torque_figure(
                 y=[0, *ys, 0],
                 fill="toself",
                 mode="lines",
-                name="continuous-duty zone",
+                name=t("zone"),
                 line={"color": "#2e8b57"},
                 fillcolor="rgba(46,139,87,0.22)",
             )
@@ -169,7 +188,7 @@ def speed_torque_figure(
                 y=[0, continuous.limit, continuous.limit, 0, 0],
                 fill="toself",
                 mode="lines",
-                name="continuous limit (approximate)",
+                name=t("zone_approximate"),
                 line={"color": "#2e8b57", "dash": "dash"},
                 fillcolor="rgba(46,139,87,0.15)",
             )
@@ -180,7 +199,7 @@ def speed_torque_figure(
                 x=[0, n_max or n2],
                 y=[t_max, t_max],
                 mode="lines",
-                name=f"T_max = {t_max:g} Nm",
+                name=f"T_max = {t.number(t_max, '#,##0.###')} Nm",
                 line={"color": "#444", "width": 2},
             )
         )
@@ -190,22 +209,22 @@ def speed_torque_figure(
                 x=[n_max, n_max],
                 y=[0, t_max or 0],
                 mode="lines",
-                name=f"n_max = {n_max:g} rpm",
+                name=f"n_max = {t.number(n_max, '#,##0.###')} {t.unit('rpm')}",
                 line={"color": "#444", "width": 2, "dash": "dot"},
             )
         )
     t3 = candidate.decel_torque_nm
     points = [
-        ("T₁ (acceleration)", n2, candidate.accel_torque_nm, "#b3471d", "triangle-up", "top right"),
+        (t("point_accel"), n2, candidate.accel_torque_nm, "#b3471d", "triangle-up", "top right"),
         (
-            "|T₃| (deceleration)",
+            t("point_decel"),
             n2,
             abs(t3) if t3 is not None else None,
             "#c0262d",
             "triangle-down",
             "bottom right",
         ),
-        ("T_rms at n_av", n_av, candidate.rms_torque_nm, "#6b4fa0", "circle", "top right"),
+        (t("point_rms"), n_av, candidate.rms_torque_nm, "#6b4fa0", "circle", "top right"),
     ]
     tops = [y for _, _, y, _, _, _ in points]
     for label, x, y, color, symbol, position in points:
@@ -217,7 +236,7 @@ def speed_torque_figure(
                 y=[y],
                 mode="markers+text",
                 name=label,
-                text=[f"{y:.1f} Nm"],
+                text=[f"{t.number(y, '#,##0.0')} Nm"],
                 textposition=position,
                 marker={"color": color, "size": 11, "symbol": symbol},
             )
@@ -229,31 +248,35 @@ def speed_torque_figure(
         margin={"l": 56, "r": 8, "t": 12, "b": 44},
         font={"family": "system-ui, 'Segoe UI', Roboto, sans-serif", "size": 11},
         xaxis={
-            "title": {"text": "output speed n [rpm]"},
+            "title": {"text": t("axis_speed", rpm=t.unit("rpm"))},
             "range": [0, 1.1 * max(n_max or 0, n2)],
             "gridcolor": GRID,
         },
         yaxis={
-            "title": {"text": "output torque T [Nm]"},
+            "title": {"text": t("axis_torque")},
             "range": [0, 1.15 * max([t for t in (t_max, *tops) if t is not None] or [1])],
             "gridcolor": GRID,
         },
         legend={"orientation": "v", "x": 1.02, "xanchor": "left", "y": 1, "yanchor": "top"},
         showlegend=True,
+        # Plotly's own number formatting (axis ticks) in the document's locale.
+        separators=t.number(1000.5, "#,##0.0")[-2] + t.number(1000.5, "#,##0.0")[1],
     )
     return fig
 
 
 _PAGE = Template(
     """<!doctype html>
-<html lang="en">
+<html lang="$lang">
 <head>
 <meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
-<title>Quote $number</title>
+<title>$title</title>
 <link rel="icon" href="data:,">
 <style>
-@page { size: A4; margin: 14mm 15mm 14mm 15mm; }
+@page { size: A4; margin: 14mm 15mm 16mm 15mm;
+  @bottom-right { content: "$page_label " counter(page) " $of_label " counter(pages);
+                  font: 8pt system-ui, sans-serif; color: #555; } }
 * { box-sizing: border-box; }
 html { color: #1b1f24; background: #eef0f3; }
 body { font: 10.5pt/1.4 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; margin: 0; }
@@ -266,7 +289,12 @@ h3 { font-size: 11pt; margin: 4mm 0 1.5mm; }
 .meta th { text-align: left; font-weight: 600; padding-right: 4mm; white-space: nowrap; }
 .meta td { white-space: nowrap; }
 .meta td, .meta th { padding: .4mm 0; vertical-align: top; }
-.customer { white-space: pre-line; }
+.customer, .address, .terms { white-space: pre-line; }
+.parties { display: grid; grid-template-columns: 1fr 1fr; gap: 8mm; }
+table.totals td { padding: 1mm 2mm; }
+table.terms-table th { text-align: left; font-weight: 600; padding: .6mm 4mm .6mm 0;
+      vertical-align: top; white-space: nowrap; width: 30%; }
+table.terms-table td { padding: .6mm 0; vertical-align: top; }
 .muted { color: #555; }
 .small { font-size: 8.5pt; }
 .banner { border: 2px solid #c0262d; background: #fdecea; color: #7d1419; padding: 3mm 4mm;
@@ -313,74 +341,85 @@ footer { margin-top: 3mm; border-top: .5px solid #c8ccd2; padding-top: 1.5mm; }
 </head>
 <body>
 <main class="sheet">
-<p class="screen-only small muted">Print this page (Ctrl+P) to A4 or to PDF;
-the layout is made for it.</p>
-$example_banner
+<p class="screen-only small muted">$print_hint</p>
+$example_banner$placeholder_banner
 <div class="head">
   <div>
-    <h1>Quotation</h1>
-    <div class="muted">Harmonic Drive servo actuator, sized by the actuator selection service</div>
+    <h1>$heading</h1>
+    <div class="muted">$subtitle</div>
   </div>
-  <table class="meta" aria-label="quote details">
-    <tr><th scope="row">Quote no.</th><td data-field="number">$number</td></tr>
-    <tr><th scope="row">Date</th><td>$date</td></tr>
-    <tr><th scope="row">Valid until</th><td>$valid_until</td></tr>
-    <tr><th scope="row">Status</th><td data-field="status">$status</td></tr>
+  <table class="meta" aria-label="$quote_details">
+    <tr><th scope="row">$l_number</th><td data-field="number">$number</td></tr>
+    <tr><th scope="row">$l_date</th><td data-field="date">$date</td></tr>
+    <tr><th scope="row">$l_valid_until</th><td data-field="valid-until">$valid_until</td></tr>
+    <tr><th scope="row">$l_status</th><td data-field="status">$status</td></tr>
   </table>
 </div>
-<h2>Customer</h2>
-<div class="cols">
-  <div class="customer" data-field="customer">$customer</div>
-  <table class="meta">$customer_reference</table>
+<div class="parties">
+  <section aria-labelledby="seller-heading">
+    <h2 id="seller-heading">$l_seller</h2>
+    <div data-field="seller"><strong>$seller_name</strong>
+    <div class="address">$seller_address</div>
+    <table class="meta">$seller_rows</table></div>
+  </section>
+  <section aria-labelledby="customer-heading">
+    <h2 id="customer-heading">$l_customer</h2>
+    <div class="customer" data-field="customer">$customer</div>
+    <table class="meta">$customer_reference</table>
+  </section>
 </div>
 $unconfirmed_banner
-<h2>Items</h2>
+<h2>$l_items</h2>
 <table class="lines">
-<thead><tr><th>Pos.</th><th>Item</th><th>Description</th><th class="num">Qty</th>
-<th class="num">Unit price</th><th class="num">Amount</th></tr></thead>
+<thead><tr><th>$col_position</th><th>$col_item</th><th>$col_description</th>
+<th class="num">$col_quantity</th><th class="num">$col_unit_price</th>
+<th class="num">$col_amount</th></tr></thead>
 <tbody>$lines</tbody>
 <tfoot>
-<tr><td colspan="5" class="num">Subtotal</td>
+<tr><td colspan="5" class="num">$l_subtotal</td>
 <td class="num" data-field="subtotal">$subtotal</td></tr>
-<tr><td colspan="5" class="num">Discount $discount_percent %</td>
+<tr><td colspan="5" class="num">$l_discount</td>
 <td class="num" data-field="discount">− $discount_amount</td></tr>
-<tr class="total"><td colspan="5" class="num">Total ($currency, excluding taxes)</td>
-<td class="num" data-field="total">$total</td></tr>
+$total_rows
 </tfoot>
 </table>
-<p class="small muted">Prices from the price list “$price_list”, valid on $price_date.
-Rounding: $rounding.</p>
+<p class="small muted">$prices_from
+$rounding</p>
+<h2>$l_terms</h2>
+<table class="terms-table">
+<tr><th scope="row">$l_payment_terms</th>
+<td class="terms" data-field="payment-terms">$payment_terms</td></tr>
+<tr><th scope="row">$l_delivery_terms</th>
+<td class="terms" data-field="delivery-terms">$delivery_terms</td></tr>
+<tr><th scope="row">$l_validity</th><td data-field="validity">$validity</td></tr>
+</table>
 $notes
 <section class="justification" aria-labelledby="why">
-<h2 id="why">Engineering justification</h2>
-<p>$model for the load case below, by <em>Engineering Data for Harmonic Drive Servo
-Actuators</em>. Verdict: <strong data-field="verdict">$verdict</strong>.</p>
+<h2 id="why">$l_justification</h2>
+<p>$justification_intro</p>
 <div class="cols keep">
-  <div><h3>Load (at the actuator output)</h3><table class="facts">$load</table>
-  <h3>Torques (Eq. 514.1, 514.2)</h3><table class="facts">$torques</table></div>
-  <div><h3>Cycle (Fig. 516.2)</h3><table class="facts">$cycle</table>
-  <h3>Catalogue data used</h3><table class="facts">$catalogue</table></div>
+  <div><h3>$l_load</h3><table class="facts">$load</table>
+  <h3>$l_torques</h3><table class="facts">$torques</table></div>
+  <div><h3>$l_cycle</h3><table class="facts">$cycle</table>
+  <h3>$l_catalogue</h3><table class="facts">$catalogue</table></div>
 </div>
 <div class="keep">
-<h3>Checks of the selection flowchart</h3>
+<h3>$l_checks</h3>
 <table class="checks">
-<thead><tr><th>Check</th><th>Result</th><th class="num">Value</th><th class="num">Limit</th>
-<th class="num">Margin</th><th>Reference</th></tr></thead>
+<thead><tr><th>$col_check</th><th>$col_result</th><th class="num">$col_value</th>
+<th class="num">$col_limit</th><th class="num">$col_margin</th><th>$col_reference</th></tr></thead>
 <tbody>$checks</tbody>
 </table>
 </div>
 <div class="keep">
-<h3>Speed/torque diagram</h3>
-<div id="speed-torque" role="img"
- aria-label="speed/torque diagram of $model with the operating points"></div>
+<h3>$l_diagram</h3>
+<div id="speed-torque" role="img" aria-label="$diagram_label"></div>
 <script type="application/json" id="figure-data">$figure</script>
 </div>
 <footer class="small muted">
-Catalogue data: $catalogue_source.<br>
-Selection $selection_id of $selection_date, made with catalogue version $selection_version;
-catalogue version $quote_version when this quote was made.$version_note
-Figures are those computed by the service and stored with the selection;
-they do not change afterwards.
+$catalogue_source<br>
+$selection_footer$version_note
+$figures_fixed
 </footer>
 </section>
 </main>
@@ -393,25 +432,41 @@ they do not change afterwards.
 
 
 def render_quote_document(
-    quote: QuoteOut, *, selection: StoredSelection | None, record: QuoteRecord
+    quote: QuoteOut,
+    *,
+    selection: StoredSelection | None,
+    record: QuoteRecord,
+    language: Language = "en",
+    current_seller: SellerParty,
+    placeholder_seller_name: str | None = None,
 ) -> str:
-    """The HTML document of ``quote``; every text from outside is escaped."""
+    """The HTML document of ``quote`` in ``language``; every text from outside is escaped.
+
+    ``current_seller`` (the settings' seller) stands in for the seller of a quote made
+    before quotes stored theirs. A seller named ``placeholder_seller_name`` (the
+    settings' default) is flagged with a banner.
+    """
+    t = DocumentText(language)
     candidate = (
         next((c for c in selection.candidates if c.model == quote.actuator_model), None)
         if selection is not None
         else None
     )
     actuator = record.actuator_snapshot
+    seller = record.seller or current_seller
     example_banner = (
-        "<div class='banner' data-field='example-prices'>EXAMPLE PRICES — not real prices. "
-        f"The price list “{e(quote.price_list.name)}” holds invented figures for trying the "
-        "service out; do not send this document to a customer.</div>"
+        f"<div class='banner' data-field='example-prices'>"
+        f"{e(t('example_banner', name=quote.price_list.name))}</div>"
         if quote.price_list.is_example
         else ""
     )
+    placeholder_banner = (
+        f"<div class='banner' data-field='placeholder-seller'>{e(t('placeholder_seller'))}</div>"
+        if placeholder_seller_name is not None and seller.name == placeholder_seller_name
+        else ""
+    )
     unconfirmed_banner = (
-        "<div class='banner warn' data-field='unconfirmed'>Suitability unconfirmed: "
-        "no check failed, but these could not be made for lack of published data:<ul>"
+        f"<div class='banner warn' data-field='unconfirmed'>{e(t('unconfirmed_banner'))}<ul>"
         + "".join(f"<li>{e(reason)}</li>" for reason in quote.verdict_reasons)
         + "</ul></div>"
         if quote.unconfirmed
@@ -419,18 +474,50 @@ def render_quote_document(
     )
     lines = "".join(
         f"<tr><td>{item.position}</td><td>{e(item.item_code)}</td><td>{e(item.description)}</td>"
-        f"<td class='num'>{item.quantity}</td>"
-        f"<td class='num'>{money(item.unit_price, quote.currency)}</td>"
-        f"<td class='num'>{money(item.line_total, quote.currency)}</td></tr>"
+        f"<td class='num'>{e(t.number(item.quantity, '#,##0'))}</td>"
+        f"<td class='num'>{money(item.unit_price, quote.currency, t)}</td>"
+        f"<td class='num'>{money(item.line_total, quote.currency, t)}</td></tr>"
         for item in quote.items
     )
+    currency = quote.currency
+    if record.tax is not None:
+        tax = record.tax
+        total_rows = (
+            f"<tr class='net'><td colspan='5' class='num'>{e(t('net_total'))}</td>"
+            f"<td class='num' data-field='total'>{money(tax.net, currency, t)}</td></tr>"
+            f"<tr><td colspan='5' class='num'>"
+            f"{e(t('vat', percent=t.percent(tax.vat_percent)))}</td>"
+            f"<td class='num' data-field='vat'>{money(tax.vat_amount, currency, t)}</td></tr>"
+            f"<tr class='total'><td colspan='5' class='num'>"
+            f"{e(t('gross_total', currency=currency))}</td>"
+            f"<td class='num' data-field='gross'>{money(tax.gross, currency, t)}</td></tr>"
+        )
+        rounding = f"{t('rounding')} {t('vat_rounding')}"
+    else:
+        # A quote made before VAT was stated: net only, as it was sent.
+        total_rows = (
+            f"<tr class='total'><td colspan='5' class='num'>"
+            f"{e(t('total_no_tax', currency=currency))}</td>"
+            f"<td class='num' data-field='total'>{money(quote.total, currency, t)}</td></tr>"
+        )
+        rounding = t("rounding")
+    seller_rows = [(e(t("vat_id")), f"<span data-field='seller-vat-id'>{e(seller.vat_id)}</span>")]
+    seller_rows.append((e(t("email")), e(seller.email)))
+    if seller.phone:
+        seller_rows.append((e(t("phone")), e(seller.phone)))
+    payment_terms = record.payment_terms or seller.standard_terms("payment", language)
+    delivery_terms = record.delivery_terms or seller.standard_terms("delivery", language)
     customer = e(quote.customer.name) + (
         "\n" + e(quote.customer.address) if quote.customer.address else ""
     )
     reference = (
-        _rows([("Your reference", e(quote.customer.reference))]) if quote.customer.reference else ""
+        _rows([(e(t("your_reference")), e(quote.customer.reference))])
+        if quote.customer.reference
+        else ""
     )
-    notes = f"<h2>Notes</h2><p class='customer'>{e(quote.notes)}</p>" if quote.notes else ""
+    notes = (
+        f"<h2>{e(t('notes'))}</h2><p class='customer'>{e(quote.notes)}</p>" if quote.notes else ""
+    )
     load_rows: list[tuple[str, str]] = []
     cycle_rows: list[tuple[str, str]] = []
     torque_rows: list[tuple[str, str]] = []
@@ -440,88 +527,154 @@ def render_quote_document(
     if selection is not None:
         load = selection.load
         load_rows = [
-            ("Load speed n₂", num(load.speed_rpm, "rpm")),
-            ("Load torque T_L", num(load.torque_nm, "Nm")),
-            ("Load inertia J_L", num(load.inertia_kgm2, "kgm²")),
-            ("J_L ≤ 3·J_A binding (high dynamics)", "yes" if selection.high_dynamics else "no"),
+            (e(t("load_speed")), num(load.speed_rpm, "rpm", t)),
+            (e(t("load_torque")), num(load.torque_nm, "Nm", t)),
+            (e(t("load_inertia")), num(load.inertia_kgm2, "kgm²", t)),
+            (e(t("high_dynamics")), e(t("yes" if selection.high_dynamics else "no"))),
         ]
         if selection.mechanism:
             load_rows.append(
                 (
-                    "Mechanism (as entered)",
+                    e(t("mechanism")),
                     e(", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())),
                 )
             )
         cycle_rows = [
-            (e(label[0].upper() + label[1:]), num(value, unit))
-            for _, label, value, unit in cycle_facts(selection.cycle, selection.segments)
+            (e(_cycle_label(t, key, label)), num(value, unit, t))
+            for key, label, value, unit in cycle_facts(selection.cycle, selection.segments)
         ] + [
-            ("Cycle time t₀", num(selection.cycle_time_s, "s")),
-            ("Mean speed n_av (Eq. 514.3)", num(selection.mean_speed_rpm, "rpm")),
-            ("Duty cycle ED (Eq. 514.4)", num(selection.duty_cycle_percent, "%")),
+            (e(t("cycle_time")), num(selection.cycle_time_s, "s", t)),
+            (e(t("mean_speed")), num(selection.mean_speed_rpm, "rpm", t)),
+            (e(t("duty_cycle")), num(selection.duty_cycle_percent, "%", t)),
         ]
-        selection_date = e(selection.created_at.strftime("%Y-%m-%d %H:%M UTC"))
+        created = selection.created_at
+        selection_date = f"{t.date(created.date())} {created.strftime('%H:%M')} UTC"
     if candidate is not None and selection is not None:
         torque_rows = [
-            ("Acceleration T₁", num(candidate.accel_torque_nm, "Nm")),
-            ("Constant speed T₂", num(candidate.constant_torque_nm, "Nm")),
-            ("Deceleration T₃", num(candidate.decel_torque_nm, "Nm")),
-            ("RMS T_rms", num(candidate.rms_torque_nm, "Nm")),
+            (e(t("accel_torque")), num(candidate.accel_torque_nm, "Nm", t)),
+            (e(t("constant_torque")), num(candidate.constant_torque_nm, "Nm", t)),
+            (e(t("decel_torque")), num(candidate.decel_torque_nm, "Nm", t)),
+            (e(t("rms_torque")), num(candidate.rms_torque_nm, "Nm", t)),
         ]
-        check_rows = "".join(_check_row(c) for c in candidate.checks)
+        check_rows = "".join(_check_row(c, t) for c in candidate.checks)
         figure_json = script_safe_json(
-            speed_torque_figure(candidate, selection, actuator).to_json()
+            speed_torque_figure(candidate, selection, actuator, t).to_json()
         )
     catalogue_rows = [
         (
-            "Family, gear ratio",
-            f"{e(actuator.get('family'))}, i = {num_plain(actuator.get('gear_ratio'))}",
+            e(t("family_ratio")),
+            f"{e(actuator.get('family'))}, i = {num_plain(actuator.get('gear_ratio'), t)}",
         ),
-        ("Peak torque T_max", num(actuator.get("max_torque_nm"), "Nm")),
-        ("Max. speed n_max", num(actuator.get("max_speed_rpm"), "rpm")),
-        ("Inertia J_A", num(actuator.get("inertia_kgm2"), "kgm²")),
-        ("Stall torque T₀", num(actuator.get("stall_torque_nm"), "Nm")),
+        (e(t("max_torque")), num(actuator.get("max_torque_nm"), "Nm", t)),
+        (e(t("max_speed")), num(actuator.get("max_speed_rpm"), "rpm", t)),
+        (e(t("inertia")), num(actuator.get("inertia_kgm2"), "kgm²", t)),
+        (e(t("stall_torque")), num(actuator.get("stall_torque_nm"), "Nm", t)),
     ]
     version_note = (
-        f" The catalogue changed between selection and quote "
-        f"(v{quote.selection_catalogue_version} → v{quote.catalogue_version}); the "
-        "justification shows the selection's figures."
+        t("version_note", old=quote.selection_catalogue_version, new=quote.catalogue_version)
         if quote.selection_catalogue_version != quote.catalogue_version
         else ""
     )
+    verdict = t("verdict_suitable" if quote.verdict == "suitable" else "verdict_unconfirmed")
+    labels = {
+        f"l_{key}": e(t(key))
+        for key in (
+            "number",
+            "date",
+            "valid_until",
+            "status",
+            "seller",
+            "customer",
+            "items",
+            "subtotal",
+            "terms",
+            "payment_terms",
+            "delivery_terms",
+            "validity",
+            "justification",
+        )
+    }
+    columns = {
+        key: e(t(key))
+        for key in (
+            "col_position",
+            "col_item",
+            "col_description",
+            "col_quantity",
+            "col_unit_price",
+            "col_amount",
+            "col_check",
+            "col_result",
+            "col_value",
+            "col_limit",
+            "col_margin",
+            "col_reference",
+        )
+    }
     return _PAGE.substitute(
+        labels,
+        **columns,
+        lang=language,
+        title=e(t("title", number=quote.number)),
+        print_hint=e(t("print_hint")),
+        page_label=e(t("page")),
+        of_label=e(t("of")),
+        heading=e(t("heading")),
+        subtitle=e(t("subtitle")),
+        quote_details=e(t("quote_details")),
         number=e(quote.number),
-        date=e(quote.created_at.strftime("%Y-%m-%d")),
-        valid_until=e(quote.valid_until.isoformat()),
-        status=e(quote.status.value),
+        date=e(t.date(quote.created_at.date())),
+        valid_until=e(t.date(quote.valid_until)),
+        status=e(t(f"status_{quote.status.value}")),
+        seller_name=e(seller.name),
+        seller_address=e(seller.address),
+        seller_rows=_rows(seller_rows),
         customer=customer,
         customer_reference=reference,
         example_banner=example_banner,
+        placeholder_banner=placeholder_banner,
         unconfirmed_banner=unconfirmed_banner,
         lines=lines,
-        subtotal=money(quote.subtotal, quote.currency),
-        discount_percent=e(f"{quote.discount_percent.normalize():f}"),
-        discount_amount=money(quote.discount_amount, quote.currency),
-        currency=e(quote.currency),
-        total=money(quote.total, quote.currency),
-        price_list=e(quote.price_list.name),
-        price_date=e(quote.price_list.priced_on.isoformat()),
-        rounding=e(ROUNDING_RULE),
+        subtotal=money(quote.subtotal, currency, t),
+        l_discount=e(t("discount", percent=t.percent(quote.discount_percent))),
+        discount_amount=money(quote.discount_amount, currency, t),
+        total_rows=total_rows,
+        prices_from=e(
+            t("prices_from", name=quote.price_list.name, date=t.date(quote.price_list.priced_on))
+        ),
+        rounding=e(rounding),
+        payment_terms=e(payment_terms),
+        delivery_terms=e(delivery_terms),
+        validity=e(t("validity_text", date=t.date(quote.valid_until))),
         notes=notes,
-        model=e(quote.actuator_model),
-        verdict=e(quote.verdict),
+        justification_intro=t(
+            "justification_intro", model=e(quote.actuator_model), verdict=e(verdict)
+        ),
+        l_load=e(t("load_heading")),
+        l_torques=e(t("torques_heading")),
+        l_cycle=e(t("cycle_heading")),
+        l_catalogue=e(t("catalogue_heading")),
+        l_checks=e(t("checks_heading")),
+        l_diagram=e(t("diagram_heading")),
+        diagram_label=e(t("diagram_label", model=quote.actuator_model)),
         load=_rows(load_rows),
         cycle=_rows(cycle_rows),
         torques=_rows(torque_rows),
         catalogue=_rows(catalogue_rows),
         checks=check_rows,
         figure=figure_json,
-        selection_id=e(quote.selection_id),
-        selection_date=selection_date,
-        selection_version=e(quote.selection_catalogue_version),
-        quote_version=e(quote.catalogue_version),
-        version_note=version_note,
-        catalogue_source=e(actuator.get("source")),
+        catalogue_source=e(t("catalogue_source", source=actuator.get("source"))),
+        selection_footer=e(
+            t(
+                "selection_footer",
+                id=quote.selection_id,
+                date=selection_date,
+                version=quote.selection_catalogue_version,
+                quote_version=quote.catalogue_version,
+            )
+        ),
+        version_note=e(version_note),
+        figures_fixed=e(t("figures_fixed")),
         plotly_url=e(PLOTLY_URL),
         document_script=e("/api/v1" + DOCUMENT_SCRIPT_PATH),
     )

@@ -8,19 +8,21 @@ from __future__ import annotations
 
 import re
 from datetime import UTC, date, datetime
-from typing import Annotated
+from typing import Annotated, Literal
 
 from fastapi import APIRouter, Depends, Header, Query, Response
 from fastapi.responses import HTMLResponse
 
 from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
-from actuator_selection.api.deps import SessionDep, reads_only
+from actuator_selection.api.deps import SessionDep, SettingsDep, reads_only
 from actuator_selection.api.errors import RequestFieldError, UnauthorizedError, field_error
 from actuator_selection.api.quote_document import (
     DOCUMENT_SCRIPT,
     DOCUMENT_SCRIPT_PATH,
     render_quote_document,
 )
+from actuator_selection.api.quote_document_text import negotiate_language
+from actuator_selection.config import PLACEHOLDER_SELLER_NAME
 from actuator_selection.core.quote_status import QuoteStatus
 from actuator_selection.core.sales import ApiKeyRecord
 from actuator_selection.db.sales import ApiKeyRepository, QuoteSearch
@@ -72,6 +74,7 @@ def create_quote(
     principal: SalesDep,
     session: SessionDep,
     clock: ClockDep,
+    settings: SettingsDep,
     response: Response,
     idempotency_key: Annotated[
         str | None,
@@ -94,7 +97,12 @@ def create_quote(
             ]
         )
     created = quotes.create_quote(
-        session, body, key_id=principal.id, idempotency_key=idempotency_key, now=clock.now()
+        session,
+        body,
+        key_id=principal.id,
+        idempotency_key=idempotency_key,
+        now=clock.now(),
+        defaults=settings.quote_defaults(),
     )
     if created.replayed:
         response.headers["Idempotent-Replayed"] = "true"
@@ -147,7 +155,14 @@ def change_status(
 )
 @reads_only
 def quote_document_link(
-    number: str, principal: SalesDep, session: SessionDep, clock: ClockDep
+    number: str,
+    principal: SalesDep,
+    session: SessionDep,
+    clock: ClockDep,
+    lang: Annotated[
+        Literal["de", "en"] | None,
+        Query(description="the document's language, carried in the link (`&lang=`)"),
+    ] = None,
 ) -> DocumentLinkOut:
     """A link to the quote's document that a new browser window can open by itself.
 
@@ -155,7 +170,7 @@ def quote_document_link(
     headers (its Content-Security-Policy among them). The link works for
     ``DOCUMENT_LINK_TTL_S`` seconds and no longer than the key that asked for it.
     """
-    return quotes.document_link(session, principal, number, now=clock.now())
+    return quotes.document_link(session, principal, number, now=clock.now(), language=lang)
 
 
 def _document_reader(
@@ -203,6 +218,7 @@ def quote_document(
     principal: PrincipalDep,
     session: SessionDep,
     clock: ClockDep,
+    settings: SettingsDep,
     access: Annotated[
         str | None,
         Query(
@@ -211,12 +227,28 @@ def quote_document(
             "window that cannot send the API key",
         ),
     ] = None,
+    lang: Annotated[
+        Literal["de", "en"] | None,
+        Query(description="the document's language; left out: from Accept-Language, else en"),
+    ] = None,
+    accept_language: Annotated[str | None, Header(include_in_schema=False)] = None,
 ) -> HTMLResponse:
     """The quote as an HTML page laid out for A4 print (print to PDF from the browser)."""
     _document_reader(principal, access, number=number, session=session, now=clock.now())
     data = quotes.quote_document(session, number, today=clock.today())
-    html = render_quote_document(data.quote, selection=data.selection, record=data.record)
-    return HTMLResponse(html, headers=DOCUMENT_HEADERS)
+    language = negotiate_language(lang, accept_language)
+    html = render_quote_document(
+        data.quote,
+        selection=data.selection,
+        record=data.record,
+        language=language,
+        current_seller=settings.seller(),
+        placeholder_seller_name=PLACEHOLDER_SELLER_NAME,
+    )
+    return HTMLResponse(
+        html,
+        headers={**DOCUMENT_HEADERS, "Content-Language": language, "Vary": "Accept-Language"},
+    )
 
 
 @router.get(DOCUMENT_SCRIPT_PATH, include_in_schema=False)

@@ -13,6 +13,7 @@ from decimal import Decimal
 from typing import Any
 
 from actuator_selection.core.quote_status import QuoteStatus
+from actuator_selection.core.quote_terms import SellerParty, TaxTotals
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -95,7 +96,17 @@ class NewQuote:
     discount_percent: Decimal
     discount_amount: Decimal
     total: Decimal
+    """The net total: subtotal − discount."""
     items: tuple[QuoteItem, ...]
+    # The commercial terms (migration 0008). None on quotes made before: they stated
+    # no VAT and no terms, and their document shows the seller as configured now.
+    tax: TaxTotals | None = None
+    payment_terms: str | None = None
+    """As entered for this quote; None: the seller's standard terms."""
+    delivery_terms: str | None = None
+    """As entered for this quote; None: the seller's standard terms."""
+    seller: SellerParty | None = None
+    """The seller as configured when the quote was made."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

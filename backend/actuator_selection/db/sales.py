@@ -42,6 +42,7 @@ from actuator_selection.core.csvio import (
     parse,
 )
 from actuator_selection.core.quote_status import QuoteStatus
+from actuator_selection.core.quote_terms import SellerParty, TaxTotals
 from actuator_selection.core.sales import (
     ApiKeyRecord,
     NewQuote,
@@ -470,6 +471,21 @@ def _quote_record(row: QuoteRow) -> QuoteRecord:
             )
             for i in row.items
         ),
+        tax=(
+            TaxTotals(
+                net=row.total,
+                vat_percent=row.vat_percent,
+                vat_amount=row.vat_amount,
+                gross=row.gross_total,
+            )
+            if row.vat_percent is not None
+            and row.vat_amount is not None
+            and row.gross_total is not None
+            else None
+        ),
+        payment_terms=row.payment_terms,
+        delivery_terms=row.delivery_terms,
+        seller=SellerParty.from_json(row.seller) if row.seller is not None else None,
     )
 
 
@@ -537,6 +553,10 @@ class QuoteRepository:
                     status_changed_at=new.created_at,
                     verdict_reasons=list(new.verdict_reasons),
                     actuator_snapshot=dict(new.actuator_snapshot),
+                    vat_percent=new.tax.vat_percent if new.tax is not None else None,
+                    vat_amount=new.tax.vat_amount if new.tax is not None else None,
+                    gross_total=new.tax.gross if new.tax is not None else None,
+                    seller=new.seller.to_json() if new.seller is not None else None,
                     items=[
                         QuoteItemRow(
                             position=i.position,
@@ -574,6 +594,8 @@ class QuoteRepository:
                             "discount_percent",
                             "discount_amount",
                             "total",
+                            "payment_terms",
+                            "delivery_terms",
                         )
                     },
                 )

@@ -9,6 +9,7 @@ most cents exactly); in responses always a string with two decimal places
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from datetime import UTC, date, datetime, timedelta
 from decimal import Decimal
 from typing import Annotated, Any, Literal
@@ -31,6 +32,7 @@ from actuator_selection.core.quote_status import (
     allowed_transitions,
     effective_status,
 )
+from actuator_selection.core.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, SellerParty
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 
@@ -77,6 +79,9 @@ def _not_too_late(value: date) -> date:
 ValidUntil = Annotated[date, BeforeValidator(_date_text), AfterValidator(_not_too_late)]
 Text = Annotated[str, StringConstraints(strip_whitespace=True)]
 Quantity = Annotated[StrictInt, Field(ge=1, le=MAX_QUANTITY, description="pieces, ≥ 1")]
+Percent = Annotated[DecimalIn, Field(ge=0, le=100, decimal_places=2)]
+"""A percentage 0–100 with at most two decimal places, as a JSON string or integer."""
+Terms = Annotated[Text, Field(min_length=1, max_length=1000)]
 
 
 class CustomerIn(StrictModel):
@@ -125,7 +130,9 @@ class ControllerItemIn(StrictModel):
 class QuoteCreate(StrictModel):
     """A quote for the selection ``selection_id``; prices come from ``price_list``.
 
-    ``notes`` may span lines (tab, LF, CR); every other text is one line.
+    ``notes`` and the terms may span lines (tab, LF, CR); every other text is one line.
+    VAT and terms left out take the server's defaults (``QUOTE_VAT_PERCENT``; the seller's
+    standard terms, shown in the document's language).
     """
 
     model_config = ConfigDict(
@@ -138,13 +145,16 @@ class QuoteCreate(StrictModel):
                     "price_list": "EXAMPLE — not real prices",
                     "discount_percent": "5",
                     "valid_until": "2026-12-31",
+                    "vat_percent": "19",
+                    "payment_terms": "30 days net",
+                    "delivery_terms": "FCA Musterstadt (Incoterms® 2020), 6 weeks after order",
                     "notes": "delivery 6 weeks after order",
                 }
             ]
         }
     )
 
-    line_break_fields = frozenset({"notes"})
+    line_break_fields = frozenset({"notes", "payment_terms", "delivery_terms"})
 
     selection_id: Annotated[str, Field(min_length=1, max_length=36)]
     customer: CustomerIn
@@ -161,6 +171,21 @@ class QuoteCreate(StrictModel):
     valid_until: ValidUntil = Field(
         description="last day the customer may accept (inclusive), YYYY-MM-DD, today at the "
         f"earliest and at most {MAX_VALIDITY_DAYS} days ahead"
+    )
+    vat_percent: Percent | None = Field(
+        default=None,
+        description='VAT rate [%], 0–100, e.g. "19"; left out: the server\'s QUOTE_VAT_PERCENT. '
+        "Applied once to the net total (after discount)",
+    )
+    payment_terms: Terms | None = Field(
+        default=None,
+        description="as the customer should read them; left out: the seller's standard "
+        "payment terms, in the document's language",
+    )
+    delivery_terms: Terms | None = Field(
+        default=None,
+        description="e.g. an Incoterm with its place; left out: the seller's standard "
+        "delivery terms, in the document's language",
     )
     notes: Annotated[Text, Field(max_length=4000)] | None = None
 
@@ -191,6 +216,35 @@ class QuoteItemOut(ResponseModel):
     quantity: int
     unit_price: Decimal = Field(description="decimal string, from the price list")
     line_total: Decimal = Field(description="unit_price × quantity, rounded to cents half up")
+
+
+def _by_language(texts: Mapping[str, str]) -> dict[str, str]:
+    return {language: texts[language] for language in LANGUAGES if language in texts}
+
+
+class SellerOut(ResponseModel):
+    """Who makes the offer (the seller block), as configured when the quote was made."""
+
+    name: str
+    address: str
+    vat_id: str
+    email: str
+    phone: str | None
+    payment_terms: dict[str, str] = Field(description="standard payment terms by language")
+    delivery_terms: dict[str, str] = Field(description="standard delivery terms by language")
+
+    @classmethod
+    def from_party(cls, party: SellerParty) -> SellerOut:
+        """The seller block of a quote."""
+        return cls(
+            name=party.name,
+            address=party.address,
+            vat_id=party.vat_id,
+            email=party.email,
+            phone=party.phone,
+            payment_terms=_by_language(party.payment_terms),
+            delivery_terms=_by_language(party.delivery_terms),
+        )
 
 
 class PriceListRef(ResponseModel):
@@ -224,8 +278,26 @@ class QuoteOut(ResponseModel):
     subtotal: Decimal
     discount_percent: Decimal
     discount_amount: Decimal
-    total: Decimal
-    rounding: str = Field(default=ROUNDING_RULE)
+    total: Decimal = Field(description="the net total: subtotal − discount (= net_total)")
+    net_total: Decimal = Field(description="subtotal − discount, before VAT")
+    vat_percent: Decimal | None = Field(
+        description="VAT rate [%]; null on quotes made before VAT was stated"
+    )
+    vat_amount: Decimal | None = Field(
+        description="net_total × vat_percent / 100, rounded once to cents, half up"
+    )
+    gross_total: Decimal | None = Field(description="net_total + vat_amount")
+    rounding: str = Field(default=f"{ROUNDING_RULE}; {VAT_ROUNDING_RULE}")
+    payment_terms: str | None = Field(
+        description="as entered; null: the seller's standard terms (seller.payment_terms)"
+    )
+    delivery_terms: str | None = Field(
+        description="as entered; null: the seller's standard terms (seller.delivery_terms)"
+    )
+    seller: SellerOut | None = Field(
+        description="null on quotes made before the seller was stored (their document shows "
+        "the seller as configured now)"
+    )
     notes: str | None
     document_url: str
 
@@ -275,6 +347,13 @@ class QuoteOut(ResponseModel):
             discount_percent=record.discount_percent,
             discount_amount=record.discount_amount,
             total=record.total,
+            net_total=record.total,
+            vat_percent=record.tax.vat_percent if record.tax is not None else None,
+            vat_amount=record.tax.vat_amount if record.tax is not None else None,
+            gross_total=record.tax.gross if record.tax is not None else None,
+            payment_terms=record.payment_terms,
+            delivery_terms=record.delivery_terms,
+            seller=SellerOut.from_party(record.seller) if record.seller is not None else None,
             notes=record.notes,
             document_url=f"{prefix}/quotes/{record.number}/document",
         )

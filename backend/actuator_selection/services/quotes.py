@@ -7,7 +7,11 @@ The use cases of ``api/quotes.py``. Rules (the README's "Quotes" section says th
   quote and its document with the checks that lack data.
 - Prices come from the named price list, valid on the day the quote is made.
   All lines share one currency (422 otherwise). Figures follow
-  ``core.money.ROUNDING_RULE``.
+  ``core.money.ROUNDING_RULE``; the VAT (the request's rate, else ``QUOTE_VAT_PERCENT``)
+  is applied once to the net total (``core.quote_terms.VAT_ROUNDING_RULE``).
+- The seller block (settings) is copied into the quote, so a later change of the
+  settings does not alter a quote already made; terms the request leaves out are the
+  seller's standard terms, shown in the document's language.
 - An ``Idempotency-Key`` repeated with the same body returns the first quote; with
   a different body it is a 422.
 - Status flow draft → sent → accepted | rejected; expired by date (computed).
@@ -29,6 +33,7 @@ from actuator_selection.core.compatibility import match_controller
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.money import QuoteLine, quote_totals
 from actuator_selection.core.quote_status import IllegalTransitionError, QuoteStatus, transition
+from actuator_selection.core.quote_terms import QuoteDefaults, tax_totals
 from actuator_selection.core.sales import (
     ApiKeyRecord,
     NewQuote,
@@ -219,6 +224,7 @@ def _new_quote(
     key_id: int,
     idempotency_key: str | None,
     now: datetime,
+    defaults: QuoteDefaults,
 ) -> NewQuote:
     """Everything the quote holds, checked and priced (422s name the field)."""
     today = now.date()
@@ -297,6 +303,10 @@ def _new_quote(
             [QuoteLine(unit_price=p.unit_price, quantity=q) for _, _, _, q, p in items],
             discount_percent=body.discount_percent,
         )
+        tax = tax_totals(
+            totals.total,
+            vat_percent=defaults.vat_percent if body.vat_percent is None else body.vat_percent,
+        )
     except InvalidInputError as exc:
         raise invalid(["body", *exc.field.split(".")], exc.message, "invalid_amount") from None
     return NewQuote(
@@ -324,6 +334,10 @@ def _new_quote(
         discount_percent=totals.discount_percent,
         discount_amount=totals.discount_amount,
         total=totals.total,
+        tax=tax,
+        payment_terms=body.payment_terms,
+        delivery_terms=body.delivery_terms,
+        seller=defaults.seller,
         items=tuple(
             QuoteItem(
                 position=position,
@@ -361,6 +375,7 @@ def create_quote(
     key_id: int,
     idempotency_key: str | None,
     now: datetime,
+    defaults: QuoteDefaults,
 ) -> CreatedQuote:
     """Make a quote from a stored selection; numbered Q-<year>-<5 digits>.
 
@@ -374,7 +389,14 @@ def create_quote(
             if found.request_sha256 != _request_sha256(body):
                 raise _reused(found.number)
             return CreatedQuote(_out(found, today), replayed=True)
-    new = _new_quote(body, session=session, key_id=key_id, idempotency_key=idempotency_key, now=now)
+    new = _new_quote(
+        body,
+        session=session,
+        key_id=key_id,
+        idempotency_key=idempotency_key,
+        now=now,
+        defaults=defaults,
+    )
     try:
         record, created = repository.create(new)
     except IdempotencyKeyReusedError as exc:
@@ -417,17 +439,24 @@ def document_resource(number: str) -> str:
 
 
 def document_link(
-    session: Session, principal: ApiKeyRecord, number: str, *, now: datetime
+    session: Session,
+    principal: ApiKeyRecord,
+    number: str,
+    *,
+    now: datetime,
+    language: str | None = None,
 ) -> DocumentLinkOut:
     """A link to the quote's document, signed for ``principal``'s key for
-    ``DOCUMENT_LINK_TTL_S`` seconds (and no longer than the key lives)."""
+    ``DOCUMENT_LINK_TTL_S`` seconds (and no longer than the key lives); with
+    ``language``, the link asks for the document in it."""
     _quote(session, number)
     expires_at = int(now.timestamp()) + DOCUMENT_LINK_TTL_S
     token = ApiKeyRepository(session).sign_access(
         principal, document_resource(number), expires_at=expires_at
     )
     return DocumentLinkOut(
-        url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}",
+        url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}"
+        + (f"&lang={language}" if language is not None else ""),
         expires_at=datetime.fromtimestamp(expires_at, UTC),
     )
 

@@ -108,6 +108,7 @@ class QuoteRow(Base):
         UniqueConstraint("api_key_id", "idempotency_key"),
         CheckConstraint("status IN ('draft', 'sent', 'accepted', 'rejected')", name="status"),
         CheckConstraint("discount_percent >= 0 AND discount_percent <= 100", name="discount"),
+        CheckConstraint("vat_percent >= 0 AND vat_percent <= 100", name="vat"),
     )
 
     id: Mapped[int] = mapped_column(primary_key=True)
@@ -142,6 +143,18 @@ class QuoteRow(Base):
     discount_percent: Mapped[Decimal] = mapped_column(Numeric(5, 2, asdecimal=True))
     discount_amount: Mapped[Decimal] = mapped_column(Money)
     total: Mapped[Decimal] = mapped_column(Money)
+    """The net total: subtotal − discount."""
+    # Migration 0008: NULL on quotes made before, which stated no VAT and no terms.
+    vat_percent: Mapped[Decimal | None] = mapped_column(Numeric(5, 2, asdecimal=True))
+    vat_amount: Mapped[Decimal | None] = mapped_column(Money)
+    gross_total: Mapped[Decimal | None] = mapped_column(Money)
+    payment_terms: Mapped[str | None] = mapped_column(Text)
+    """As entered; NULL: the seller's standard terms (``seller``)."""
+    delivery_terms: Mapped[str | None] = mapped_column(Text)
+    """As entered; NULL: the seller's standard terms (``seller``)."""
+    seller: Mapped[dict[str, Any] | None] = mapped_column(JSONDocument)
+    """The seller block (name, address, VAT id, contact, standard terms by language) as
+    configured when the quote was made."""
 
     items: Mapped[list[QuoteItemRow]] = relationship(
         back_populates="quote", order_by="QuoteItemRow.position", cascade="all, delete-orphan"
