@@ -11,6 +11,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -76,6 +77,10 @@ def test_the_image_installs_the_runtime_lock_only() -> None:
     for name, entry in runtime.items():  # the same versions and hashes as the tests ran
         assert entry == full[name], name
     assert {"fastapi", "uvicorn", "sqlalchemy", "psycopg", "alembic"} <= set(runtime)
+    declared = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["dependencies"]
+    for requirement in declared:  # every runtime dependency is in the image
+        name = re.split(r"[<>=!~\[ ;]", requirement, maxsplit=1)[0].lower()
+        assert name in runtime, f"{name}: run `make lock`"
     assert not {"pytest", "mypy", "ruff", "hypothesis", "schemathesis", "pypdf"} & set(runtime)
 
 
