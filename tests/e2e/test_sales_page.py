@@ -408,11 +408,14 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
     expect(row).to_be_visible()
     assert_no_untranslated_keys(page)
 
-    # the quote document stays English, whatever the page's language
+    # the quote document in the page's language: German numbers and labels
     with page.expect_popup() as popup:
         row.get_by_role("button", name="Dokument öffnen").click()
     document = popup.value
-    expect(document.locator("[data-field=total]")).to_have_text("8,861.50 EUR", timeout=SLOW_MS)
+    expect(document.locator("[data-field=total]")).to_have_text(
+        re.compile(r"8\.861,50\s?€|8\.861,50\s?EUR"), timeout=SLOW_MS
+    )
+    expect(document.locator("html")).to_have_attribute("lang", "de")
     document.close()
 
     # switching back rewrites what is already on the page

@@ -510,7 +510,8 @@ async function openDocument(number) {
   try {
     // A signed, short-lived link: the window loads the document from the server itself,
     // with the document's own Content-Security-Policy (never written into the window).
-    const link = await api.post(encodePath`/quotes/${number}/document-link`);
+    // The document in the page's language (the link carries it as &lang=).
+    const link = await api.post(`${encodePath`/quotes/${number}/document-link`}?lang=${state.lang}`);
     win.location.replace(link.url);
   } catch (error) {
     win.document.body.textContent = `${t("sales.document.failed")}${error.message}`;
