@@ -35,7 +35,7 @@ from actuator_selection.schemas.batch import (
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
 from actuator_selection.schemas.selections import RANKING_RULE, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
-from actuator_selection.services.selections import size_selection, store_selections
+from actuator_selection.services.selections import dump_json, size_selection, store_selections
 
 router = APIRouter(tags=["selections"])
 
@@ -272,7 +272,7 @@ def _result_chunks(
         cases = body.cases[start:end]
         selections = _select(actuators, apps[start:end], cases, body.top)
         results = [
-            pydantic_core.to_json(
+            dump_json(
                 result_body(
                     id=id_,
                     request=case,
