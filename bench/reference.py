@@ -21,6 +21,7 @@ import numpy.typing as npt
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.selection import Application
+from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -77,6 +78,23 @@ def numpy_reference(
             torques = [p.torque_nm for p in a.zone.points]
             edge[:, k] = np.interp(n_av[:, 0], speeds, torques, right=np.nan)
     limit = np.where(zoned, edge, t_0)
+    # the winding's heating over the repeating cycle (first-order model, τ_th as published,
+    # else the service's assumed default): x → mean T² of each phase by 1 − e^(−t/τ)
+    tau = _row([a.thermal_time_constant_s for a in actuators])
+    tau = np.where(np.isnan(tau), DEFAULT_THERMAL_TIME_CONSTANT_S, tau)
+    phases = [(t1, accel * accel), (t2, tl * tl + 0 * ja), (t3, decel * decel), (tp, 0 * j)]
+    gains = [-np.expm1(-t / tau) for t, _ in phases]
+    x = np.zeros(rms.shape)
+    kept = np.ones(rms.shape)
+    for (_, heat), gain in zip(phases, gains, strict=True):
+        x = x + (heat - x) * gain
+        kept = kept * (1 - gain)
+    x = x / (1 - kept)  # the start that the cycle repeats
+    peak = x
+    for (_, heat), gain in zip(phases, gains, strict=True):
+        x = x + (heat - x) * gain
+        peak = np.maximum(peak, x)
+    thermal = np.sqrt(peak)
 
     no_ja, no_t_max, no_n_max = np.isnan(ja), np.isnan(t_max), np.isnan(n_max)
     no_data = [
@@ -85,15 +103,17 @@ def numpy_reference(
         no_ja | no_t_max,
         no_ja | no_t_max,
         no_ja | (~zoned & (np.isnan(t_0) | np.isnan(speed_bound))),
+        no_ja | (~zoned & (np.isnan(t_0) | np.isnan(speed_bound))),
     ]
-    values = [n2 + 0 * n_max, jl + 0 * ja, accel, -decel, rms]
-    limits = [n_max, 3 * ja, t_max, t_max, limit]
+    values = [n2 + 0 * n_max, jl + 0 * ja, accel, -decel, rms, thermal]
+    limits = [n_max, 3 * ja, t_max, t_max, limit, limit]
     exceeded = [
         n2 > n_max,
         (jl > 3 * ja) & dyn,
         accel > t_max,
         -decel > t_max,
         ~((rms <= limit) & (zoned | (n_av <= speed_bound))),
+        ~((thermal <= limit) & (zoned | (n_av <= speed_bound))),
     ]
     fails = np.zeros(rms.shape, dtype=bool)
     missing = np.zeros(rms.shape, dtype=bool)
