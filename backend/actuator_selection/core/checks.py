@@ -645,6 +645,13 @@ def _continuous_message(q: Operands, status: Status, t_rms: float, limit: float)
     )
 
 
+_CONTINUOUS_LIMIT_DATA = Requirement(
+    any_of=("stall_torque_nm", "continuous_torque_nm"),
+    unless="has_zone",
+    what="continuous-duty zone or continuous torque",
+)
+"""The continuous limit's data, for the checks that compare with it (``_continuous_limit``)."""
+
 CONTINUOUS_DUTY = Rule(
     name="continuous_duty",
     reference="Fig. 517.1",
@@ -653,11 +660,7 @@ CONTINUOUS_DUTY = Rule(
     limit=_continuous_limit,
     requires=(
         published("inertia_kgm2", "moment of inertia J_A (T_rms needs it)"),
-        Requirement(
-            any_of=("stall_torque_nm", "continuous_torque_nm"),
-            unless="has_zone",
-            what="continuous-duty zone or continuous torque",
-        ),
+        _CONTINUOUS_LIMIT_DATA,
         Requirement(
             any_of=("continuous_speed_rpm", "rated_speed_rpm"),
             unless="has_zone",
@@ -719,11 +722,7 @@ THERMAL_PEAK = Rule(
     limit=_continuous_limit,
     requires=(
         published("inertia_kgm2", "moment of inertia J_A (the cycle's torques need it)"),
-        Requirement(
-            any_of=("stall_torque_nm", "continuous_torque_nm"),
-            unless="has_zone",
-            what="continuous-duty zone or continuous torque",
-        ),
+        _CONTINUOUS_LIMIT_DATA,
     ),
     approximate=lambda q, xp: q.thermal_time_constant_assumed | xp.not_(q.has_zone),
     message=_thermal_message,
