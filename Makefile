@@ -8,7 +8,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
 NODE_STAMP := node_modules/.installed-$(shell cat package.json package-lock.json | cksum | cut -d' ' -f1)
 
-.PHONY: install run test lint typecheck pytest bench lock clean
+.PHONY: install run test lint typecheck pytest bench lock messages clean
 
 $(STAMP): requirements.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -66,6 +66,15 @@ lock: install
 	$(BIN)/uv pip compile pyproject.toml --generate-hashes --python-version 3.11 \
 		--python-platform x86_64-manylinux_2_28 --no-header --no-annotate \
 		--constraint requirements.lock -o requirements-runtime.lock
+
+## Re-extract the error message templates (N_) and merge them into the catalogs; then
+## translate every new msgid in backend/actuator_selection/locale/*/LC_MESSAGES/messages.po.
+## The catalogs are read as .po at run time: nothing to compile.
+messages: install
+	$(BIN)/pybabel extract -F babel.cfg -k N_ --no-default-keywords --sort-output \
+		--no-location --project actuator-selection -o var/messages.pot backend
+	$(BIN)/pybabel update -i var/messages.pot -d backend/actuator_selection/locale -D messages \
+		--no-location --ignore-obsolete
 
 clean:
 	rm -rf $(VENV) node_modules var .mypy_cache .ruff_cache .pytest_cache

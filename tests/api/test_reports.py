@@ -161,6 +161,8 @@ def test_unknown_selection_is_404_in_the_error_shape(client: TestClient, suffix:
                 "loc": ["path", "selection_id"],
                 "msg": "no selection 'no-such-selection'",
                 "type": "not_found",
+                "code": "not_found",
+                "params": {},
             }
         ]
     }

@@ -95,5 +95,7 @@ def test_json_nested_past_the_parser_is_400_in_the_error_shape(client: Any, body
             "loc": ["body"],
             "msg": "the body could not be parsed as JSON (malformed, or nested too deeply)",
             "type": "json_invalid",
+            "code": "json_invalid",
+            "params": {},
         }
     ]

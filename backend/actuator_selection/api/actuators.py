@@ -7,7 +7,7 @@ from typing import Annotated
 from fastapi import APIRouter, Query
 
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import ResourceNotFoundError
+from actuator_selection.api.errors import ResourceNotFoundError, service_error
 from actuator_selection.db.repositories import (
     ActuatorFilter,
     CatalogueRepository,
@@ -49,8 +49,8 @@ def get_actuator(model: str, session: SessionDep) -> ActuatorOut:
     """One catalogue actuator."""
     record = CatalogueRepository(session).actuator(model)
     if record is None:
-        raise ResourceNotFoundError.at(
-            ["path", "model"], f"unknown actuator model {model!r}", "not_found"
+        raise ResourceNotFoundError(
+            [service_error(["path", "model"], "not_found", "unknown_actuator", model=model)]
         )
     return ActuatorOut.from_record(record)
 

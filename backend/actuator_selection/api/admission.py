@@ -18,7 +18,7 @@ import math
 import anyio
 from starlette.types import ASGIApp, Receive, Scope, Send
 
-from actuator_selection.api.errors import service_unavailable
+from actuator_selection.api.errors import language_of, service_unavailable
 
 
 class AdmissionControl:
@@ -69,4 +69,7 @@ class AdmissionControl:
 
     async def _reject(self, scope: Scope, receive: Receive, send: Send, reason: str) -> None:
         retry_after = max(1, math.ceil(self._timeout_s / 10))
-        await service_unavailable(reason, retry_after_s=retry_after)(scope, receive, send)
+        response = service_unavailable(
+            reason, retry_after_s=retry_after, language=language_of(scope)
+        )
+        await response(scope, receive, send)

@@ -21,7 +21,7 @@ from typing import Annotated, Literal, cast
 from fastapi import APIRouter, Depends, Request
 
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import ForbiddenError, UnauthorizedError
+from actuator_selection.api.errors import ForbiddenError, UnauthorizedError, service_error
 from actuator_selection.config import Settings, get_settings
 from actuator_selection.core.sales import ApiKeyRecord
 from actuator_selection.db.sales import ApiKeyRepository
@@ -29,13 +29,13 @@ from actuator_selection.schemas.auth import PrincipalOut
 
 router = APIRouter(tags=["auth"])
 
-UNAUTHORIZED = "a valid API key is required: send Authorization: Bearer <key>"
 CHALLENGE = {"WWW-Authenticate": 'Bearer realm="actuator-selection"'}
 
 
 def _unauthorized() -> UnauthorizedError:
-    return UnauthorizedError.at(
-        ["header", "Authorization"], UNAUTHORIZED, "unauthorized", headers=CHALLENGE
+    return UnauthorizedError(
+        [service_error(["header", "Authorization"], "unauthorized", "unauthorized")],
+        headers=CHALLENGE,
     )
 
 
@@ -74,11 +74,16 @@ def authorize(principal: ApiKeyRecord | None, *roles: str) -> ApiKeyRecord:
     if principal is None:
         raise _unauthorized()
     if principal.role not in roles:
-        raise ForbiddenError.at(
-            ["header", "Authorization"],
-            f"this API key has the role {principal.role!r}; "
-            f"this needs {' or '.join(repr(r) for r in roles)}",
-            "forbidden",
+        raise ForbiddenError(
+            [
+                service_error(
+                    ["header", "Authorization"],
+                    "forbidden",
+                    "forbidden",
+                    role=principal.role,
+                    roles=list(roles),
+                )
+            ]
         )
     return principal
 

@@ -18,7 +18,12 @@ from actuator_selection.api.deps import (
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.errors import (
+    RequestFieldError,
+    domain_entry,
+    field_error,
+    service_error,
+)
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
 from actuator_selection.core.errors import DomainError
@@ -84,10 +89,8 @@ def _applications(
     for i, case in enumerate(body.cases):
         if case.models is not None:
             errors += [
-                field_error(
-                    ["body", "cases", i, "models", j],
-                    f"unknown actuator model {m!r}",
-                    "unknown_model",
+                service_error(
+                    ["body", "cases", i, "models", j], "unknown_model", "unknown_actuator", model=m
                 )
                 for j, m in enumerate(case.models)
                 if m not in known
@@ -96,7 +99,7 @@ def _applications(
             apps.append(case.to_core())
         except DomainError as exc:
             loc: list[str | int] = ["body", "cases", i, *exc.field.split(".")]
-            errors.append(field_error(loc, exc.message, type(exc).__name__))
+            errors.append(domain_entry(loc, exc))
     return apps, errors
 
 

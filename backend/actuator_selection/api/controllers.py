@@ -7,7 +7,12 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, Path, Query
 
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import RequestFieldError, ResourceNotFoundError, field_error
+from actuator_selection.api.errors import (
+    RequestFieldError,
+    ResourceNotFoundError,
+    field_error,
+    service_error,
+)
 from actuator_selection.core.compatibility import (
     BusClass,
     FeedbackSystem,
@@ -75,7 +80,9 @@ def get_controller(
     """One row of the compatibility matrix (Table 521.1's rows keep their printed number)."""
     record = ProtectionRepository(session).controller(row)
     if record is None:
-        raise ResourceNotFoundError.at(["path", "row"], f"no controller in row {row}", "not_found")
+        raise ResourceNotFoundError(
+            [service_error(["path", "row"], "not_found", "unknown_controller_row", row=row)]
+        )
     return ControllerOut.from_record(record)
 
 
@@ -83,8 +90,8 @@ def get_controller(
 def actuator_controllers(model: str, session: SessionDep) -> ActuatorControllersOut:
     """Every controller matched against the actuator, supported ones first."""
     if CatalogueRepository(session).actuator(model) is None:
-        raise ResourceNotFoundError.at(
-            ["path", "model"], f"unknown actuator model {model!r}", "not_found"
+        raise ResourceNotFoundError(
+            [service_error(["path", "model"], "not_found", "unknown_actuator", model=model)]
         )
     repo = ProtectionRepository(session)
     interface = repo.interfaces([model])[model]

@@ -8,6 +8,10 @@ validation shape): ``loc`` says where the problem is (``["body", "cycle",
 what rule it breaks in words, ``type`` names the rule for programs. Catalogue file
 errors add ``file``, ``line`` and ``column``. Nothing answers with a stack trace.
 
+Every entry also has ``code`` and ``params`` (``api/messages.py``): the rule's stable
+name and the values its message names, so that a client can word the message itself;
+``msg`` is in the language ``Accept-Language`` asks for (English or German).
+
 Endpoints raise :class:`ApiError` (or a subclass naming its status); core raises
 ``DomainError``; both end in a handler here.
 
@@ -38,22 +42,75 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.middleware.body_limit import MAX_BODY_SIZE_SCOPE_KEY
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
+from actuator_selection.api.messages import (
+    DEFAULT_LANGUAGE,
+    SERVICE_MESSAGES,
+    localized,
+    negotiate,
+    pydantic_message,
+)
 from actuator_selection.core.errors import DomainError
+from actuator_selection.core.messages import Text
 from actuator_selection.core.text import NUL_RULE
 
 log = logging.getLogger(__name__)
 
 
-def field_error(loc: list[str | int], msg: str, type_: str) -> dict[str, Any]:
-    """One entry of an error body."""
-    return {"loc": loc, "msg": msg, "type": type_}
+def field_error(
+    loc: list[str | int],
+    msg: str,
+    type_: str,
+    *,
+    code: str | None = None,
+    params: Mapping[str, Any] | None = None,
+    template: str | None = None,
+) -> dict[str, Any]:
+    """One entry of an error body: ``msg`` in English; with a ``template`` (English, over
+    ``params``) it is rendered in the request's language when it is sent. ``code`` is the
+    rule's name (default: ``type_``)."""
+    entry: dict[str, Any] = {"loc": loc, "msg": msg, "type": type_}
+    entry["code"] = code or type_
+    entry["params"] = dict(params or {})
+    if template is not None:
+        entry["_template"] = template
+    return entry
+
+
+def service_error(loc: list[str | int], type_: str, code: str, **params: Any) -> dict[str, Any]:
+    """An entry worded by one of the service's templates (``SERVICE_MESSAGES[code]``)."""
+    template = SERVICE_MESSAGES[code]
+    msg = template.format(**params)
+    return field_error(loc, msg, type_, code=code, params=params, template=template)
+
+
+def domain_entry(loc: list[str | int], exc: DomainError) -> dict[str, Any]:
+    """The entry of a domain error at ``loc``: its rule's code and params where it has a
+    template, else its type as its code and its text as it is."""
+    type_ = exc.error_type or type(exc).__name__
+    return field_error(
+        loc, exc.message, type_, code=exc.code, params=exc.params, template=exc.template
+    )
+
+
+def language_of(scope: Scope) -> str:
+    """The language of the messages to ``scope``'s request (``Accept-Language``)."""
+    for name, value in scope.get("headers") or ():
+        if name == b"accept-language":
+            return negotiate(value.decode("latin-1"))
+    return DEFAULT_LANGUAGE
 
 
 def error_response(
-    status_code: int, errors: list[dict[str, Any]], headers: Mapping[str, str] | None = None
+    status_code: int,
+    errors: list[dict[str, Any]],
+    headers: Mapping[str, str] | None = None,
+    *,
+    language: str = DEFAULT_LANGUAGE,
 ) -> JSONResponse:
-    """An error answer in the one shape."""
-    return JSONResponse(status_code=status_code, content={"detail": errors}, headers=headers)
+    """An error answer in the one shape, its messages in ``language``."""
+    content = {"detail": [localized(e, language) for e in errors]}
+    response_headers = {"Content-Language": language, **(headers or {})}
+    return JSONResponse(status_code=status_code, content=content, headers=response_headers)
 
 
 class ApiError(Exception):
@@ -116,9 +173,11 @@ class UnsupportedMediaTypeError(ApiError):
     status_code = 415
 
 
-def _api_error(_: Request, exc: Exception) -> JSONResponse:
+def _api_error(request: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, ApiError)
-    return error_response(exc.status_code, exc.errors, exc.headers or None)
+    return error_response(
+        exc.status_code, exc.errors, exc.headers or None, language=language_of(request.scope)
+    )
 
 
 def _members(annotation: Any) -> tuple[Any, list[Any]]:
@@ -224,40 +283,43 @@ def _validation(request: Request, exc: Exception) -> JSONResponse:
     # Rebuilt rather than passed through: pydantic's entries echo the input, and an
     # input of NaN or ±Infinity cannot be written as JSON. Body locations lose the union
     # tags pydantic inserts (``loc`` names body fields only).
+    # pydantic's ``type`` is the code and its ``ctx`` the params (bounds gain the unit).
     assert isinstance(exc, RequestValidationError)
-    detail = [
-        field_error(_body_loc(request, e["loc"]), str(e["msg"]), str(e["type"]))
-        for e in exc.errors()
-    ]
-    return error_response(422, detail)
+    language = language_of(request.scope)
+    detail = []
+    for e in exc.errors():
+        loc = _body_loc(request, e["loc"])
+        code, params, msg = pydantic_message(loc, e, language)
+        detail.append(field_error(loc, msg, str(e["type"]), code=code, params=params))
+    return error_response(422, detail, language=language)
 
 
-def _domain(_: Request, exc: Exception) -> JSONResponse:
+def _domain(request: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, DomainError)
+    language = language_of(request.scope)
     entries = getattr(exc, "entries", None)  # services.errors.UseCaseError: all its entries
     if entries:
-        return error_response(exc.http_status, entries)
+        return error_response(exc.http_status, entries, language=language)
     loc: list[str | int] = [exc.where, *exc.field.split(".")]
-    code = exc.code or type(exc).__name__
-    return error_response(exc.http_status, [field_error(loc, exc.message, code)])
+    return error_response(exc.http_status, [domain_entry(loc, exc)], language=language)
 
 
-def _conflict(_: Request, exc: Exception) -> JSONResponse:
+def _conflict(request: Request, exc: Exception) -> JSONResponse:
     # A concurrent request wrote the same key first (e.g. two admins creating the next
     # controller row at once): the transaction has been rolled back, a retry succeeds.
     log.info("write conflict: %s", exc)
-    message = (
-        "a concurrent change wrote the same record first; nothing was changed by this "
-        "request, send it again"
-    )
-    return error_response(409, [field_error(["request"], message, "write_conflict")])
+    entry = service_error(["request"], "write_conflict", "write_conflict")
+    return error_response(409, [entry], language=language_of(request.scope))
 
 
-def body_too_large(limit: int | None) -> JSONResponse:
+def body_too_large(limit: int | None, *, language: str = DEFAULT_LANGUAGE) -> JSONResponse:
     """413 in the error shape, naming the limit (``MAX_BODY_BYTES`` / ``MAX_BULK_BODY_BYTES``)."""
-    size = f"{limit} bytes" if limit is not None else "the limit"
-    message = f"the request body is larger than {size}; send less per request"
-    return error_response(413, [field_error(["body"], message, "body_too_large")])
+    entry = (
+        service_error(["body"], "body_too_large", "body_too_large", limit=limit)
+        if limit is not None
+        else service_error(["body"], "body_too_large", "body_too_large_no_limit")
+    )
+    return error_response(413, [entry], language=language)
 
 
 _FASTAPI_BODY_ERROR = "There was an error parsing the body"
@@ -275,15 +337,22 @@ def _http_error(request: Request, exc: Exception) -> JSONResponse:
     """Errors the framework raises before an endpoint runs (no such route, a method not
     allowed, a body too large or that JSON cannot parse), in the one shape."""
     assert isinstance(exc, StarletteHTTPException)
+    language = language_of(request.scope)
     if exc.status_code == 413:
-        return body_too_large(request.scope.get(MAX_BODY_SIZE_SCOPE_KEY))
+        return body_too_large(request.scope.get(MAX_BODY_SIZE_SCOPE_KEY), language=language)
     loc, type_ = _HTTP_ERRORS.get(exc.status_code, (["request"], f"http_{exc.status_code}"))
-    message = (
-        "the body could not be parsed as JSON (malformed, or nested too deeply)"
-        if exc.detail == _FASTAPI_BODY_ERROR
-        else str(exc.detail)
-    )
-    return error_response(exc.status_code, [field_error(loc, message, type_)], exc.headers)
+    allowed = (exc.headers or {}).get("Allow", "")
+    if exc.detail == _FASTAPI_BODY_ERROR:
+        entry = service_error(loc, type_, "json_invalid")
+    elif exc.status_code == 404 and exc.detail == "Not Found":
+        entry = service_error(loc, type_, "route_not_found", path=request.url.path)
+    elif exc.status_code == 405 and allowed:
+        entry = service_error(
+            loc, type_, "method_not_allowed", method=request.method, allowed=allowed
+        )
+    else:
+        entry = field_error(loc, str(exc.detail), type_)
+    return error_response(exc.status_code, [entry], exc.headers, language=language)
 
 
 class UniformBodyTooLarge:
@@ -306,9 +375,10 @@ class UniformBodyTooLarge:
                 if headers.get(b"content-type", b"").startswith(b"text/plain"):
                     replaced = True
                     limit = scope.get(MAX_BODY_SIZE_SCOPE_KEY)
-                    await body_too_large(limit if isinstance(limit, int) else None)(
-                        scope, receive, send
+                    response = body_too_large(
+                        limit if isinstance(limit, int) else None, language=language_of(scope)
                     )
+                    await response(scope, receive, send)
                     return
             if not replaced:
                 await send(message)
@@ -330,14 +400,19 @@ _BUSY_SQLSTATES = frozenset(
 )
 
 
-def service_unavailable(reason: str, *, retry_after_s: int = RETRY_AFTER_S) -> JSONResponse:
-    """503 with ``Retry-After``: nothing was changed, the same request may be sent again."""
-    message = f"{reason}; nothing was changed, retry after {retry_after_s} s"
-    return error_response(
-        503,
-        [field_error(["request"], message, "service_unavailable")],
-        {"Retry-After": str(retry_after_s)},
+def service_unavailable(
+    reason: str, *, retry_after_s: int = RETRY_AFTER_S, language: str = DEFAULT_LANGUAGE
+) -> JSONResponse:
+    """503 with ``Retry-After``: nothing was changed, the same request may be sent again.
+    ``reason`` is translated where it is one of ``api.messages.REASONS``."""
+    entry = service_error(
+        ["request"],
+        "service_unavailable",
+        "service_unavailable",
+        reason=Text(reason),
+        retry_after_s=retry_after_s,
     )
+    return error_response(503, [entry], {"Retry-After": str(retry_after_s)}, language=language)
 
 
 def database_busy(exc: BaseException) -> bool:
@@ -353,17 +428,18 @@ def database_busy(exc: BaseException) -> bool:
     return "database is locked" in message or "database is busy" in message
 
 
-def _operational(_: Request, exc: Exception) -> JSONResponse:
+def _operational(request: Request, exc: Exception) -> JSONResponse:
+    language = language_of(request.scope)
     if database_busy(exc):
         log.warning("database busy: %s", exc)
-        return service_unavailable("the database is busy")
-    return _internal_error(exc)
+        return service_unavailable("the database is busy", language=language)
+    return _internal_error(exc, language)
 
 
-def _internal_error(exc: BaseException) -> JSONResponse:
+def _internal_error(exc: BaseException, language: str = DEFAULT_LANGUAGE) -> JSONResponse:
     log.error("unhandled error", exc_info=exc)
-    message = "internal error; it has been logged"
-    return error_response(500, [field_error(["request"], message, "internal_error")])
+    entry = service_error(["request"], "internal_error", "internal_error")
+    return error_response(500, [entry], language=language)
 
 
 class AnswerUnexpectedErrors:
@@ -392,10 +468,11 @@ class AnswerUnexpectedErrors:
         except Exception as exc:
             if started:
                 raise
+            language = language_of(scope)
             response = (
-                service_unavailable("the database is busy")
+                service_unavailable("the database is busy", language=language)
                 if database_busy(exc)
-                else _internal_error(exc)
+                else _internal_error(exc, language)
             )
             await response(scope, receive, send)
 
@@ -414,7 +491,9 @@ class RejectNulInUrl:
         if scope["type"] == "http":
             loc = self._nul_at(scope)
             if loc is not None:
-                response = error_response(422, [field_error(loc, NUL_RULE, "value_error")])
+                response = error_response(
+                    422, [field_error(loc, NUL_RULE, "value_error")], language=language_of(scope)
+                )
                 await response(scope, receive, send)
                 return
         await self.app(scope, receive, send)

@@ -13,7 +13,7 @@ from fastapi import APIRouter, Depends, Query
 
 from actuator_selection.api.auth import AdminDep, PriceReaderDep
 from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import ResourceNotFoundError
+from actuator_selection.api.errors import ResourceNotFoundError, service_error
 from actuator_selection.api.uploads import Upload, file_errors, raw_upload, text_of, unsupported
 from actuator_selection.core.csvio import CatalogueFileError
 from actuator_selection.db.sales import PRICES, PriceRepository, parse_prices
@@ -47,7 +47,9 @@ def get_price_list(name: str, _: PriceReaderDep, session: SessionDep) -> PriceLi
     repository = PriceRepository(session)
     prices = repository.prices(name)
     if prices is None:
-        raise ResourceNotFoundError.at(["path", "name"], f"no price list {name!r}", "not_found")
+        raise ResourceNotFoundError(
+            [service_error(["path", "name"], "not_found", "unknown_price_list", name=name)]
+        )
     return PriceListDetailOut(
         name=name,
         is_example=bool(repository.is_example(name)),

@@ -16,7 +16,7 @@ from actuator_selection.api.deps import (
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.errors import RequestFieldError, field_error
+from actuator_selection.api.errors import RequestFieldError, service_error
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
@@ -57,7 +57,7 @@ def create_selection(body: SelectionRequest, request: Request, session: SessionD
     if body.models is not None:
         known = {a.model for a in actuators}
         unknown = [
-            field_error(["body", "models", i], f"unknown actuator model {m!r}", "unknown_model")
+            service_error(["body", "models", i], "unknown_model", "unknown_actuator", model=m)
             for i, m in enumerate(body.models)
             if m not in known
         ]

@@ -24,6 +24,7 @@ import math
 from dataclasses import dataclass
 
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.messages import N_
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -76,14 +77,22 @@ class AxisLoad:
         ):
             value = getattr(self, name)
             if not math.isfinite(value):
-                raise InvalidInputError(name, f"must be a finite number, got {value!r}")
+                raise InvalidInputError(name, code="not_finite", params={"value": value})
         if self.inertia_kgm2 < 0:
-            raise InvalidInputError("inertia_kgm2", "must be ≥ 0: a moment of inertia")
+            raise InvalidInputError(
+                "inertia_kgm2",
+                code="must_be_nonnegative",
+                params={"rule": N_("a moment of inertia")},
+            )
         if self.friction_torque_nm < 0:
-            raise InvalidInputError("friction_torque_nm", "must be ≥ 0: friction opposes motion")
+            raise InvalidInputError(
+                "friction_torque_nm",
+                code="must_be_nonnegative",
+                params={"rule": N_("friction opposes motion")},
+            )
         if not 0 < self.efficiency <= 1:
-            raise InvalidInputError("efficiency", "must be > 0 and ≤ 1")
+            raise InvalidInputError("efficiency", code="efficiency_range")
         if self.speed_rpm_per_unit <= 0:
-            raise InvalidInputError("speed_rpm_per_unit", "must be > 0")
+            raise InvalidInputError("speed_rpm_per_unit", code="positive")
         if self.torque_nm_per_force_unit <= 0:
-            raise InvalidInputError("torque_nm_per_force_unit", "must be > 0")
+            raise InvalidInputError("torque_nm_per_force_unit", code="positive")

@@ -22,13 +22,14 @@ from dataclasses import dataclass
 
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.messages import N_
 from actuator_selection.core.motion import CycleTorques, profile_of, trapezoid
 from actuator_selection.core.units import rpm_to_rad_per_s
 
 
 def _require_finite(field: str, value: float) -> None:
     if not math.isfinite(value):
-        raise InvalidInputError(field, f"must be a finite number, got {value!r}")
+        raise InvalidInputError(field, code="not_finite", params={"value": value})
 
 
 def _require_finite_result(field: str, value: float, *, what: str) -> None:
@@ -37,11 +38,7 @@ def _require_finite_result(field: str, value: float, *, what: str) -> None:
     (PostgreSQL's JSON refuses ``Infinity``; SQLite would store it and answer null.)
     """
     if not math.isfinite(value):
-        raise InvalidInputError(
-            field,
-            f"gives {what} beyond any floating-point number: no real drive has such a load "
-            "and cycle",
-        )
+        raise InvalidInputError(field, code="result_overflow", params={"what": what})
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -72,19 +69,31 @@ class SpeedPattern:
         for name in ("speed_rpm", "accel_s", "constant_s", "decel_s", "pause_s"):
             _require_finite(name, getattr(self, name))
         if self.speed_rpm <= 0:
-            raise InvalidInputError("speed_rpm", "must be > 0: n_2 is the speed the load reaches")
+            raise InvalidInputError(
+                "speed_rpm",
+                code="must_be_positive",
+                params={"rule": N_("n_2 is the speed the load reaches")},
+            )
         if self.accel_s <= 0:
             raise InvalidInputError(
-                "accel_s", "must be > 0: the acceleration time t_1 divides Eq. 514.1"
+                "accel_s",
+                code="must_be_positive",
+                params={"rule": N_("the acceleration time t_1 divides Eq. 514.1")},
             )
         if self.decel_s <= 0:
             raise InvalidInputError(
-                "decel_s", "must be > 0: the deceleration time t_3 divides the braking torque"
+                "decel_s",
+                code="must_be_positive",
+                params={"rule": N_("the deceleration time t_3 divides the braking torque")},
             )
         if self.constant_s < 0:
-            raise InvalidInputError("constant_s", "must be ≥ 0: t_2 is a duration")
+            raise InvalidInputError(
+                "constant_s", code="must_be_nonnegative", params={"rule": N_("t_2 is a duration")}
+            )
         if self.pause_s < 0:
-            raise InvalidInputError("pause_s", "must be ≥ 0: t_p is a duration")
+            raise InvalidInputError(
+                "pause_s", code="must_be_nonnegative", params={"rule": N_("t_p is a duration")}
+            )
 
     @property
     def moving_s(self) -> float:
@@ -118,10 +127,17 @@ class Load:
         if self.torque_nm < 0:
             raise InvalidInputError(
                 "torque_nm",
-                "must be ≥ 0: Eq. 514.1 treats T_L as a load torque that opposes the motion",
+                code="must_be_nonnegative",
+                params={
+                    "rule": N_("Eq. 514.1 treats T_L as a load torque that opposes the motion")
+                },
             )
         if self.inertia_kgm2 < 0:
-            raise InvalidInputError("inertia_kgm2", "must be ≥ 0: a moment of inertia")
+            raise InvalidInputError(
+                "inertia_kgm2",
+                code="must_be_nonnegative",
+                params={"rule": N_("a moment of inertia")},
+            )
 
 
 def acceleration_torque_nm(

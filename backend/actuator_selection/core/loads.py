@@ -11,16 +11,18 @@ from dataclasses import dataclass
 
 from actuator_selection.core.cycle import Load
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.messages import N_, Text
 
 STANDARD_GRAVITY_M_PER_S2 = 9.81
 """g as the chapter writes it under Eq. 515.6 (g = 9,81 m/s²)."""
 
 
-def _check(field: str, value: float, *, positive: bool, rule: str) -> None:
+def _check(field: str, value: float, *, positive: bool, rule: Text) -> None:
     if not math.isfinite(value):
-        raise InvalidInputError(field, f"must be a finite number, got {value!r}")
+        raise InvalidInputError(field, code="not_finite", params={"value": value})
     if (value <= 0) if positive else (value < 0):
-        raise InvalidInputError(field, f"must be {'> 0' if positive else '≥ 0'}: {rule}")
+        code = "must_be_positive" if positive else "must_be_nonnegative"
+        raise InvalidInputError(field, code=code, params={"rule": rule})
 
 
 def _square(x: float) -> float:
@@ -34,10 +36,7 @@ def _square(x: float) -> float:
 def _check_result(field: str, value: float, *, what: str) -> None:
     """A result that overflowed names the input that drove it there (422, never ∞ or a 500)."""
     if not math.isfinite(value):
-        raise InvalidInputError(
-            field,
-            f"gives {what} beyond any floating-point number: no real mechanism has such values",
-        )
+        raise InvalidInputError(field, code="mechanism_overflow", params={"what": what})
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -65,24 +64,24 @@ class BallScrew:
     screw_inertia_kgm2: float = 0.0
 
     def __post_init__(self) -> None:
-        _check("mass_kg", self.mass_kg, positive=False, rule="a mass")
-        _check("lead_m", self.lead_m, positive=True, rule="the screw advances per revolution")
+        _check("mass_kg", self.mass_kg, positive=False, rule=N_("a mass"))
+        _check("lead_m", self.lead_m, positive=True, rule=N_("the screw advances per revolution"))
         _check(
             "friction_coefficient",
             self.friction_coefficient,
             positive=False,
-            rule="friction opposes motion",
+            rule=N_("friction opposes motion"),
         )
-        _check("efficiency", self.efficiency, positive=True, rule="η divides Eq. 515.4")
+        _check("efficiency", self.efficiency, positive=True, rule=N_("η divides Eq. 515.4"))
         if self.efficiency > 1:
             raise InvalidInputError(
-                "efficiency", "must be ≤ 1: no screw returns more than it takes"
+                "efficiency", code="efficiency_above_one", params={"what": N_("screw")}
             )
         _check(
             "screw_inertia_kgm2",
             self.screw_inertia_kgm2,
             positive=False,
-            rule="a moment of inertia",
+            rule=N_("a moment of inertia"),
         )
 
 
@@ -108,15 +107,15 @@ class RotaryTable:
     friction_radius_m: float
 
     def __post_init__(self) -> None:
-        _check("mass_kg", self.mass_kg, positive=False, rule="a mass")
-        _check("diameter_m", self.diameter_m, positive=True, rule="a disc has a size")
+        _check("mass_kg", self.mass_kg, positive=False, rule=N_("a mass"))
+        _check("diameter_m", self.diameter_m, positive=True, rule=N_("a disc has a size"))
         _check(
             "friction_coefficient",
             self.friction_coefficient,
             positive=False,
-            rule="friction opposes motion",
+            rule=N_("friction opposes motion"),
         )
-        _check("friction_radius_m", self.friction_radius_m, positive=False, rule="a radius")
+        _check("friction_radius_m", self.friction_radius_m, positive=False, rule=N_("a radius"))
 
 
 def ball_screw_load(screw: BallScrew, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> Load:
@@ -135,8 +134,8 @@ def ball_screw_load(screw: BallScrew, *, g: float = STANDARD_GRAVITY_M_PER_S2) -
     torque = screw.friction_coefficient * screw.mass_kg * g * radius_per_rad / screw.efficiency
     inertia = screw.screw_inertia_kgm2 + screw.mass_kg * _square(radius_per_rad)
     # Each input is finite, but a tiny η divides the friction torque past the largest float.
-    _check_result("efficiency", torque, what="T_L = μ·m·P·g/(2π·η) (Eq. 515.4)")
-    _check_result("lead_m", inertia, what="J_L = J_S + m·(P/2π)² (Eq. 515.4)")
+    _check_result("efficiency", torque, what=N_("T_L = μ·m·P·g/(2π·η) (Eq. 515.4)"))
+    _check_result("lead_m", inertia, what=N_("J_L = J_S + m·(P/2π)² (Eq. 515.4)"))
     return Load(torque_nm=torque, inertia_kgm2=inertia)
 
 
@@ -152,6 +151,6 @@ def rotary_table_load(table: RotaryTable, *, g: float = STANDARD_GRAVITY_M_PER_S
     """
     torque = table.friction_coefficient * table.mass_kg * g * table.friction_radius_m
     inertia = table.mass_kg * _square(table.diameter_m) / 8
-    _check_result("friction_radius_m", torque, what="T_L = μ·m·g·r (Eq. 515.6)")
-    _check_result("diameter_m", inertia, what="J_L = m·D²/8 (Eq. 515.6)")
+    _check_result("friction_radius_m", torque, what=N_("T_L = μ·m·g·r (Eq. 515.6)"))
+    _check_result("diameter_m", inertia, what=N_("J_L = m·D²/8 (Eq. 515.6)"))
     return Load(torque_nm=torque, inertia_kgm2=inertia)

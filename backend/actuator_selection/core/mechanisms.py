@@ -47,6 +47,7 @@ from actuator_selection.core.loads import (
     ball_screw_load,
     rotary_table_load,
 )
+from actuator_selection.core.messages import N_, Text
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
 MM_PER_M = 1000.0
@@ -82,27 +83,26 @@ def _speed_factor(radius_m: float, field: str) -> float:
     """:func:`rpm_per_mm_per_s`, or an error naming ``field`` where r is too small for it."""
     denominator = MM_PER_M * radius_m * RAD_PER_S_PER_RPM
     if denominator == 0 or radius_m * radius_m == 0:
-        raise InvalidInputError(field, "is so small that m·r² vanishes: no real axis")
+        raise InvalidInputError(field, code="radius_vanishes")
     speed = 1.0 / denominator
-    _check_result(field, speed, what="n per mm/s = 1/(1000·r·2π/60)")
+    _check_result(field, speed, what=N_("n per mm/s = 1/(1000·r·2π/60)"))
     return speed
 
 
-def _check_efficiency(field: str, value: float, *, what: str) -> None:
-    _check(field, value, positive=True, rule=f"η of {what} divides the torque the actuator gives")
+def _check_efficiency(field: str, value: float, *, what: Text) -> None:
+    if not math.isfinite(value):
+        raise InvalidInputError(field, code="not_finite", params={"value": value})
+    if value <= 0:
+        raise InvalidInputError(field, code="efficiency_positive", params={"what": what})
     if value > 1:
-        raise InvalidInputError(field, f"must be ≤ 1: no {what} returns more than it takes")
+        raise InvalidInputError(field, code="efficiency_above_one", params={"what": what})
 
 
 def _check_incline(field: str, value: float) -> None:
     if not math.isfinite(value):
-        raise InvalidInputError(field, f"must be a finite number, got {value!r}")
+        raise InvalidInputError(field, code="not_finite", params={"value": value})
     if abs(value) > MAX_INCLINE_DEG:
-        raise InvalidInputError(
-            field,
-            "must be between −90° and 90°: positive motion lifts the load for θ > 0, lowers "
-            "it for θ < 0; beyond vertical, reverse the axis instead",
-        )
+        raise InvalidInputError(field, code="incline_range")
 
 
 def _sin_cos(incline_deg: float) -> tuple[float, float]:
@@ -116,7 +116,7 @@ def _sin_cos(incline_deg: float) -> tuple[float, float]:
     return math.sin(theta), math.cos(theta)
 
 
-def _nonnegative(field: str, value: float, rule: str) -> None:
+def _nonnegative(field: str, value: float, rule: Text) -> None:
     _check(field, value, positive=False, rule=rule)
 
 
@@ -138,9 +138,9 @@ def _linear_axis(
     inertia = rotating_inertia_kgm2 + moving_mass_kg * _square(radius_m)
     gravity = gravity_force_n * radius_m
     friction = friction_force_n * radius_m
-    _check_result(radius_field, inertia, what="J_L = J + m·r²")
-    _check_result(radius_field, gravity, what="T_G = F_G·r")
-    _check_result(radius_field, friction, what="T_F = F_F·r")
+    _check_result(radius_field, inertia, what=N_("J_L = J + m·r²"))
+    _check_result(radius_field, gravity, what=N_("T_G = F_G·r"))
+    _check_result(radius_field, friction, what=N_("T_F = F_F·r"))
     return AxisLoad(
         inertia_kgm2=inertia,
         friction_torque_nm=friction,
@@ -236,14 +236,16 @@ class InclinedBallScrew:
     friction_force_n: float = 0.0
 
     def __post_init__(self) -> None:
-        _nonnegative("mass_kg", self.mass_kg, "a mass")
-        _check("lead_m", self.lead_m, positive=True, rule="the screw advances per revolution")
-        _nonnegative("friction_coefficient", self.friction_coefficient, "friction opposes motion")
-        _check_efficiency("efficiency", self.efficiency, what="screw")
+        _nonnegative("mass_kg", self.mass_kg, N_("a mass"))
+        _check("lead_m", self.lead_m, positive=True, rule=N_("the screw advances per revolution"))
+        _nonnegative(
+            "friction_coefficient", self.friction_coefficient, N_("friction opposes motion")
+        )
+        _check_efficiency("efficiency", self.efficiency, what=N_("screw"))
         _check_incline("incline_deg", self.incline_deg)
-        _nonnegative("screw_inertia_kgm2", self.screw_inertia_kgm2, "a moment of inertia")
-        _nonnegative("counterweight_kg", self.counterweight_kg, "a mass")
-        _nonnegative("friction_force_n", self.friction_force_n, "friction opposes motion")
+        _nonnegative("screw_inertia_kgm2", self.screw_inertia_kgm2, N_("a moment of inertia"))
+        _nonnegative("counterweight_kg", self.counterweight_kg, N_("a mass"))
+        _nonnegative("friction_force_n", self.friction_force_n, N_("friction opposes motion"))
 
 
 def inclined_ball_screw_axis(
@@ -324,18 +326,20 @@ class BeltDrive:
     friction_force_n: float = 0.0
 
     def __post_init__(self) -> None:
-        _nonnegative("mass_kg", self.mass_kg, "a mass")
-        _check("pulley_diameter_m", self.pulley_diameter_m, positive=True, rule="a pulley")
-        _nonnegative("friction_coefficient", self.friction_coefficient, "friction opposes motion")
-        _check_efficiency("efficiency", self.efficiency, what="belt drive")
+        _nonnegative("mass_kg", self.mass_kg, N_("a mass"))
+        _check("pulley_diameter_m", self.pulley_diameter_m, positive=True, rule=N_("a pulley"))
+        _nonnegative(
+            "friction_coefficient", self.friction_coefficient, N_("friction opposes motion")
+        )
+        _check_efficiency("efficiency", self.efficiency, what=N_("belt drive"))
         _check_incline("incline_deg", self.incline_deg)
-        _nonnegative("belt_mass_kg", self.belt_mass_kg, "a mass")
-        _nonnegative("pulley_inertia_kgm2", self.pulley_inertia_kgm2, "a moment of inertia")
-        _nonnegative("idler_inertia_kgm2", self.idler_inertia_kgm2, "a moment of inertia")
+        _nonnegative("belt_mass_kg", self.belt_mass_kg, N_("a mass"))
+        _nonnegative("pulley_inertia_kgm2", self.pulley_inertia_kgm2, N_("a moment of inertia"))
+        _nonnegative("idler_inertia_kgm2", self.idler_inertia_kgm2, N_("a moment of inertia"))
         if self.idler_diameter_m is not None:
-            _check("idler_diameter_m", self.idler_diameter_m, positive=True, rule="a pulley")
-        _nonnegative("counterweight_kg", self.counterweight_kg, "a mass")
-        _nonnegative("friction_force_n", self.friction_force_n, "friction opposes motion")
+            _check("idler_diameter_m", self.idler_diameter_m, positive=True, rule=N_("a pulley"))
+        _nonnegative("counterweight_kg", self.counterweight_kg, N_("a mass"))
+        _nonnegative("friction_force_n", self.friction_force_n, N_("friction opposes motion"))
 
 
 def _reflected_roller(
@@ -346,7 +350,7 @@ def _reflected_roller(
     if roller_diameter_m is None:
         return inertia_kgm2
     reflected = inertia_kgm2 * _square(diameter_m / roller_diameter_m)
-    _check_result(field, reflected, what="J·(D/D_R)²")
+    _check_result(field, reflected, what=N_("J·(D/D_R)²"))
     return reflected
 
 
@@ -417,14 +421,16 @@ class RackPinion:
     friction_force_n: float = 0.0
 
     def __post_init__(self) -> None:
-        _nonnegative("mass_kg", self.mass_kg, "a mass")
-        _check("pinion_diameter_m", self.pinion_diameter_m, positive=True, rule="a pinion")
-        _nonnegative("friction_coefficient", self.friction_coefficient, "friction opposes motion")
-        _check_efficiency("efficiency", self.efficiency, what="rack and pinion")
+        _nonnegative("mass_kg", self.mass_kg, N_("a mass"))
+        _check("pinion_diameter_m", self.pinion_diameter_m, positive=True, rule=N_("a pinion"))
+        _nonnegative(
+            "friction_coefficient", self.friction_coefficient, N_("friction opposes motion")
+        )
+        _check_efficiency("efficiency", self.efficiency, what=N_("rack and pinion"))
         _check_incline("incline_deg", self.incline_deg)
-        _nonnegative("pinion_inertia_kgm2", self.pinion_inertia_kgm2, "a moment of inertia")
-        _nonnegative("counterweight_kg", self.counterweight_kg, "a mass")
-        _nonnegative("friction_force_n", self.friction_force_n, "friction opposes motion")
+        _nonnegative("pinion_inertia_kgm2", self.pinion_inertia_kgm2, N_("a moment of inertia"))
+        _nonnegative("counterweight_kg", self.counterweight_kg, N_("a mass"))
+        _nonnegative("friction_force_n", self.friction_force_n, N_("friction opposes motion"))
 
 
 def rack_pinion_axis(rack: RackPinion, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> AxisLoad:
@@ -497,26 +503,28 @@ class Conveyor:
     friction_force_n: float = 0.0
 
     def __post_init__(self) -> None:
-        _nonnegative("load_mass_kg", self.load_mass_kg, "a mass")
-        _nonnegative("belt_mass_kg", self.belt_mass_kg, "a mass")
-        _check("roller_diameter_m", self.roller_diameter_m, positive=True, rule="a roller")
-        _nonnegative("friction_coefficient", self.friction_coefficient, "friction opposes motion")
-        _check_efficiency("efficiency", self.efficiency, what="conveyor")
+        _nonnegative("load_mass_kg", self.load_mass_kg, N_("a mass"))
+        _nonnegative("belt_mass_kg", self.belt_mass_kg, N_("a mass"))
+        _check("roller_diameter_m", self.roller_diameter_m, positive=True, rule=N_("a roller"))
+        _nonnegative(
+            "friction_coefficient", self.friction_coefficient, N_("friction opposes motion")
+        )
+        _check_efficiency("efficiency", self.efficiency, what=N_("conveyor"))
         _check_incline("incline_deg", self.incline_deg)
         _nonnegative(
-            "drive_roller_inertia_kgm2", self.drive_roller_inertia_kgm2, "a moment of inertia"
+            "drive_roller_inertia_kgm2", self.drive_roller_inertia_kgm2, N_("a moment of inertia")
         )
         _nonnegative(
-            "tail_roller_inertia_kgm2", self.tail_roller_inertia_kgm2, "a moment of inertia"
+            "tail_roller_inertia_kgm2", self.tail_roller_inertia_kgm2, N_("a moment of inertia")
         )
         if self.tail_roller_diameter_m is not None:
             _check(
                 "tail_roller_diameter_m",
                 self.tail_roller_diameter_m,
                 positive=True,
-                rule="a roller",
+                rule=N_("a roller"),
             )
-        _nonnegative("friction_force_n", self.friction_force_n, "friction opposes motion")
+        _nonnegative("friction_force_n", self.friction_force_n, N_("friction opposes motion"))
 
 
 def conveyor_axis(conveyor: Conveyor, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> AxisLoad:
@@ -583,12 +591,12 @@ class Hoist:
     friction_force_n: float = 0.0
 
     def __post_init__(self) -> None:
-        _nonnegative("load_mass_kg", self.load_mass_kg, "a mass")
-        _check("drum_diameter_m", self.drum_diameter_m, positive=True, rule="a drum")
-        _check_efficiency("efficiency", self.efficiency, what="hoist")
-        _nonnegative("counterweight_kg", self.counterweight_kg, "a mass")
-        _nonnegative("drum_inertia_kgm2", self.drum_inertia_kgm2, "a moment of inertia")
-        _nonnegative("friction_force_n", self.friction_force_n, "friction opposes motion")
+        _nonnegative("load_mass_kg", self.load_mass_kg, N_("a mass"))
+        _check("drum_diameter_m", self.drum_diameter_m, positive=True, rule=N_("a drum"))
+        _check_efficiency("efficiency", self.efficiency, what=N_("hoist"))
+        _nonnegative("counterweight_kg", self.counterweight_kg, N_("a mass"))
+        _nonnegative("drum_inertia_kgm2", self.drum_inertia_kgm2, N_("a moment of inertia"))
+        _nonnegative("friction_force_n", self.friction_force_n, N_("friction opposes motion"))
 
 
 def hoist_axis(hoist: Hoist, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> AxisLoad:
@@ -637,9 +645,9 @@ class Transmission:
     efficiency: float = 1.0
 
     def __post_init__(self) -> None:
-        _check("ratio", self.ratio, positive=True, rule="output speed over mechanism speed")
-        _nonnegative("inertia_kgm2", self.inertia_kgm2, "a moment of inertia")
-        _check_efficiency("efficiency", self.efficiency, what="transmission")
+        _check("ratio", self.ratio, positive=True, rule=N_("output speed over mechanism speed"))
+        _nonnegative("inertia_kgm2", self.inertia_kgm2, N_("a moment of inertia"))
+        _check_efficiency("efficiency", self.efficiency, what=N_("transmission"))
 
 
 def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
@@ -667,7 +675,7 @@ def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
     i = transmission.ratio
     i_squared = _square(i)
     if i_squared == 0:
-        raise InvalidInputError("ratio", "is so small that J/i² has no value: no real gear")
+        raise InvalidInputError("ratio", code="ratio_too_small")
     reflected = load.inertia_kgm2 / i_squared
     inertia = transmission.inertia_kgm2 + reflected
     friction = load.friction_torque_nm / i
@@ -679,8 +687,8 @@ def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
         (inertia, "J_L = J_tr + J/i²"),
         (friction, "T_F/i"),
         (gravity, "T_G/i"),
-        (speed, "the speed factor × i"),
-        (force, "the force factor / i"),
+        (speed, N_("the speed factor × i")),
+        (force, N_("the force factor / i")),
     ):
         _check_result("ratio", value, what=what)
     for before, after in (
@@ -690,11 +698,9 @@ def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
         (load.torque_nm_per_force_unit, force),
     ):
         if before != 0 and after == 0:
-            raise InvalidInputError(
-                "ratio", "is so large that the load vanishes behind it (underflow): no real gear"
-            )
+            raise InvalidInputError("ratio", code="ratio_too_large")
     if efficiency == 0:
-        raise InvalidInputError("efficiency", "η_tr·η is 0: no power reaches the load")
+        raise InvalidInputError("efficiency", code="efficiency_product_zero")
     return AxisLoad(
         inertia_kgm2=inertia,
         friction_torque_nm=friction,

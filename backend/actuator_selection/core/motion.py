@@ -53,6 +53,7 @@ import numpy.typing as npt
 
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.messages import N_
 from actuator_selection.core.units import RAD_PER_S_PER_RPM, rpm_to_rad_per_s
 
 FloatArray = npt.NDArray[np.float64]
@@ -94,21 +95,17 @@ class Segment:
         for name in ("duration_s", "start_rpm", "end_rpm", "jerk_share", "process_torque_nm"):
             value = getattr(self, name)
             if not math.isfinite(value):
-                raise InvalidInputError(name, f"must be a finite number, got {value!r}")
+                raise InvalidInputError(name, code="not_finite", params={"value": value})
         if self.duration_s < 0:
-            raise InvalidInputError("duration_s", "must be ≥ 0: a duration")
+            raise InvalidInputError(
+                "duration_s", code="must_be_nonnegative", params={"rule": N_("a duration")}
+            )
         if self.start_rpm != self.end_rpm and self.duration_s <= 0:
-            raise InvalidInputError(
-                "duration_s", "must be > 0 where the speed changes: Δω/t is the acceleration"
-            )
+            raise InvalidInputError("duration_s", code="duration_zero_with_speed_change")
         if self.start_rpm * self.end_rpm < 0:
-            raise InvalidInputError(
-                "end_rpm",
-                "must not change sign within a segment: brake to 0 in one segment and "
-                "accelerate the other way in the next",
-            )
+            raise InvalidInputError("end_rpm", code="speed_sign_change")
         if not 0 <= self.jerk_share <= 1:
-            raise InvalidInputError("jerk_share", "must be between 0 and 1: a share of t")
+            raise InvalidInputError("jerk_share", code="share_range")
 
     @property
     def direction(self) -> int:
@@ -126,22 +123,18 @@ class Motion:
 
     def __post_init__(self) -> None:
         if not self.segments:
-            raise InvalidInputError("segments", "must hold at least one segment")
+            raise InvalidInputError("segments", code="segments_empty")
         if len(self.segments) > MAX_SEGMENTS:
-            raise InvalidInputError("segments", f"must hold at most {MAX_SEGMENTS} segments")
+            raise InvalidInputError(
+                "segments", code="segments_too_many", params={"max": MAX_SEGMENTS}
+            )
         for k, (a, b) in enumerate(zip(self.segments, self.segments[1:], strict=False)):
             if a.end_rpm != b.start_rpm:
-                raise InvalidInputError(
-                    f"segments.{k + 1}.start_rpm",
-                    "must equal the end speed of the segment before: speed cannot jump",
-                )
+                raise InvalidInputError(f"segments.{k + 1}.start_rpm", code="speed_jump")
         if self.segments[-1].end_rpm != self.segments[0].start_rpm:
-            raise InvalidInputError(
-                "segments",
-                "the cycle must end at the speed it starts at: it repeats",
-            )
+            raise InvalidInputError("segments", code="cycle_not_closed")
         if not sum(s.duration_s for s in self.segments) > 0:
-            raise InvalidInputError("segments", "the cycle must last longer than 0 s")
+            raise InvalidInputError("segments", code="cycle_zero_duration")
 
 
 def trapezoid(
@@ -667,8 +660,4 @@ def _require_finite_result(value: float, what: str, *, field: str = "load") -> N
     """Finite inputs can still overflow a product: a 422 naming the input, never ±∞ or a
     500 (PostgreSQL's JSON refuses ``Infinity``)."""
     if not math.isfinite(value):
-        raise InvalidInputError(
-            field,
-            f"gives {what} beyond any floating-point number: no real drive has such a load "
-            "and cycle",
-        )
+        raise InvalidInputError(field, code="result_overflow", params={"what": what})

@@ -99,7 +99,7 @@ def _request_field(core_field: str) -> str:
 
 def _renamed(exc: DomainError, prefix: str) -> DomainError:
     """``exc`` naming the request's field under ``prefix`` (``lead_m`` → ``load.lead_mm``)."""
-    return type(exc)(f"{prefix}.{_request_field(exc.field)}", exc.message)
+    return exc.moved(f"{prefix}.{_request_field(exc.field)}")
 
 
 class TransmissionIn(StrictModel):

@@ -36,6 +36,43 @@ from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler, ValidationError
 from pydantic.json_schema import JsonSchemaValue
 from pydantic_core import CoreSchema, PydanticCustomError, core_schema
 
+from actuator_selection.core.messages import N_, Text
+
+QUANTITY_MESSAGES: dict[tuple[str, str], str] = {
+    ("quantity_text", "too_long"): N_(
+        "must be a number in {unit}, or text of a number and a unit of at most "
+        "{max_length} characters, e.g. '{example}'"
+    ),
+    ("quantity_text", "not_quantity"): N_(
+        "must be a number in {unit}, or text of a number and then a unit, e.g. '{example}' "
+        "(no formulas; exponents of one digit): got '{text}'"
+    ),
+    ("quantity_unit", "unknown_unit"): N_(
+        "must be a number in {unit}, or text with a known unit, e.g. '{example}': "
+        "'{given_unit}' is not one ({reason})"
+    ),
+    ("quantity_unit", "wrong_kind"): N_(
+        "must be {kind}, a number in {unit} or text like '{example}': '{given_unit}' is not "
+        "a unit of {kind_words}{note}"
+    ),
+    ("finite_number", "overflow"): N_("Input should be a finite number: '{text}' in {unit}"),
+}
+"""The errors of quantity text by ``type`` and ``ctx["rule"]``: English templates over the
+error's ``ctx`` (``api/messages.py`` renders them in the request's language)."""
+
+
+def _error(type_: str, rule: str, kind: QuantityKind, **ctx: Any) -> PydanticCustomError:
+    context = {
+        "rule": rule,
+        "unit": kind.label,
+        "kind": kind.kind,
+        "kind_words": kind_words(kind),
+        "example": kind.example,
+        **ctx,
+    }
+    return PydanticCustomError(type_, QUANTITY_MESSAGES[type_, rule], context)
+
+
 MAX_QUANTITY_TEXT = 64
 """Longest text of a quantity [characters]: ``"1234.5678 kg*m^2"`` needs 16."""
 
@@ -94,7 +131,7 @@ class QuantityKind:
     label: str
     kind: str
     example: str
-    note: str = ""
+    note: str = Text("")
 
 
 def to_unit(text: str, kind: QuantityKind) -> float:
@@ -115,18 +152,10 @@ def to_unit(text: str, kind: QuantityKind) -> float:
     120.0
     """
     if len(text) > MAX_QUANTITY_TEXT:
-        raise PydanticCustomError(
-            "quantity_text",
-            f"must be a number in {kind.label}, or text of a number and a unit of at most "
-            f"{MAX_QUANTITY_TEXT} characters, e.g. {kind.example!r}",
-        )
+        raise _error("quantity_text", "too_long", kind, max_length=MAX_QUANTITY_TEXT)
     match = _TEXT.fullmatch(text)
     if match is None:
-        raise PydanticCustomError(
-            "quantity_text",
-            f"must be a number in {kind.label}, or text of a number and then a unit, e.g. "
-            f"{kind.example!r} (no formulas; exponents of one digit): got {text!r}",
-        )
+        raise _error("quantity_text", "not_quantity", kind, text=text)
     number = float(match["number"])
     if not math.isfinite(number):
         raise PydanticCustomError("finite_number", "Input should be a finite number")
@@ -138,28 +167,24 @@ def to_unit(text: str, kind: QuantityKind) -> float:
     # tokenizer errors, ZeroDivisionError …); for text from a request each one means
     # "not a unit", never a server error.
     except Exception as exc:
-        raise PydanticCustomError(
+        raise _error(
             "quantity_unit",
-            f"must be a number in {kind.label}, or text with a known unit, e.g. "
-            f"{kind.example!r}: {match['unit']!r} is not one ({_pint_reason(exc)})",
+            "unknown_unit",
+            kind,
+            given_unit=match["unit"],
+            reason=_pint_reason(exc),
         ) from None
     target = registry.parse_units(kind.unit)
     # Base units, not dimensions: pint counts the radian as dimensionless, so "1/s" has
     # the dimension of "rpm" while its base units (1/s against rad/s) tell them apart.
     if given_base != registry.get_base_units(target)[1]:
-        raise PydanticCustomError(
-            "quantity_unit",
-            f"must be {kind.kind}, a number in {kind.label} or text like {kind.example!r}: "
-            f"{match['unit']!r} is not a unit of {kind_words(kind)}{kind.note}",
-        )
+        raise _error("quantity_unit", "wrong_kind", kind, given_unit=match["unit"], note=kind.note)
     try:
         value = float(registry.Quantity(number, unit).to(target).magnitude)
     except (ArithmeticError, pint.PintError):  # a factor past the largest float
         value = math.inf
     if not math.isfinite(value):
-        raise PydanticCustomError(
-            "finite_number", f"Input should be a finite number: {text!r} in {kind.label}"
-        )
+        raise _error("finite_number", "overflow", kind, text=text)
     return value
 
 
@@ -194,9 +219,16 @@ class InUnit:
                 return inner(converted)
             except ValidationError as exc:
                 error = exc.errors(include_url=False)[0]
+                # The bound's own ctx, and what was given: the message shows the conversion.
+                context = {
+                    **error.get("ctx", {}),
+                    "unit": kind.label,
+                    "given": value,
+                    "converted": converted,
+                }
+                message = f"{error['msg']} ({kind.label}): {value!r} is {converted:g} {kind.label}"
                 raise PydanticCustomError(
-                    error["type"],
-                    f"{error['msg']} ({kind.label}): {value!r} is {converted:g} {kind.label}",
+                    error["type"], message.replace("{", "{{").replace("}", "}}"), context
                 ) from None
 
         return core_schema.no_info_wrap_validator_function(validate, handler(source))
@@ -219,31 +251,46 @@ class InUnit:
 
 def kind_words(kind: QuantityKind) -> str:
     """``kind.kind`` without its article, for a description ("a length" → "length")."""
-    return kind.kind.removeprefix("a ").removeprefix("an ")
+    return Text(kind.kind.removeprefix("a ").removeprefix("an "))
 
 
-LENGTH_MM = QuantityKind(unit="mm", label="mm", kind="a length", example="0.5 in")
+KIND_WORDS = (
+    N_("length"),
+    N_("linear speed"),
+    N_("rotary speed"),
+    N_("mass"),
+    N_("moment of inertia"),
+    N_("angle"),
+    N_("force"),
+    N_("torque"),
+)
+"""What the kinds measure, as :func:`kind_words` gives it: marked for the catalogs."""
+
+
+LENGTH_MM = QuantityKind(unit="mm", label="mm", kind=N_("a length"), example="0.5 in")
 LINEAR_SPEED_MM_PER_S = QuantityKind(
-    unit="mm/s", label="mm/s", kind="a linear speed", example="12 in/s"
+    unit="mm/s", label="mm/s", kind=N_("a linear speed"), example="12 in/s"
 )
 ROTARY_SPEED_RPM = QuantityKind(
     unit="rpm",
     label="rpm",
-    kind="a rotary speed",
+    kind=N_("a rotary speed"),
     example="2 rad/s",
-    note=" (an angle per time, e.g. rpm, rev/s, deg/s, rad/s; Hz and 1/s do not say whether "
-    "they count revolutions or radians)",
+    note=N_(
+        " (an angle per time, e.g. rpm, rev/s, deg/s, rad/s; Hz and 1/s do not say whether "
+        "they count revolutions or radians)"
+    ),
 )
-MASS_KG = QuantityKind(unit="kg", label="kg", kind="a mass", example="22 lb")
+MASS_KG = QuantityKind(unit="kg", label="kg", kind=N_("a mass"), example="22 lb")
 INERTIA_KGM2 = QuantityKind(
-    unit="kg*m^2", label="kgm²", kind="a moment of inertia", example="3 lb*in^2"
+    unit="kg*m^2", label="kgm²", kind=N_("a moment of inertia"), example="3 lb*in^2"
 )
 ANGLE_DEG = QuantityKind(
     unit="deg",
     label="°",
-    kind="an angle",
+    kind=N_("an angle"),
     example="0.5 rad",
-    note=" (deg, rad, turn; a bare number in text or % is not an angle)",
+    note=N_(" (deg, rad, turn; a bare number in text or % is not an angle)"),
 )
-FORCE_N = QuantityKind(unit="N", label="N", kind="a force", example="20 lbf")
-TORQUE_NM = QuantityKind(unit="N*m", label="Nm", kind="a torque", example="10 lbf*ft")
+FORCE_N = QuantityKind(unit="N", label="N", kind=N_("a force"), example="20 lbf")
+TORQUE_NM = QuantityKind(unit="N*m", label="Nm", kind=N_("a torque"), example="10 lbf*ft")

@@ -74,7 +74,7 @@ Inertia = Annotated[float, Field(ge=0, le=MAX_INERTIA_KGM2)]
 def _renamed(exc: DomainError, prefix: str) -> DomainError:
     """``exc`` with its field under ``prefix`` (``efficiency`` → ``load.efficiency``), so that
     a core error names the field where the request body has it."""
-    return type(exc)(f"{prefix}.{exc.field}", exc.message)
+    return exc.moved(f"{prefix}.{exc.field}")
 
 
 class _LoadIn(StrictModel):
@@ -244,7 +244,7 @@ class CycleIn(StrictModel):
     def to_motion(self, speed: float | None, axis: AxisLoad, speed_field: str) -> Motion:
         """The trapezoid as segments at the output (``speed`` in the load's unit)."""
         if speed is None:
-            raise InvalidInputError(speed_field, "is required with the t_1…t_p cycle")
+            raise InvalidInputError(speed_field, code="speed_required")
         return trapezoid(
             speed_rpm=speed * axis.speed_rpm_per_unit,
             accel_s=self.accel_s,
@@ -311,9 +311,7 @@ class SegmentsCycleIn(StrictModel):
     def to_motion(self, speed: float | None, axis: AxisLoad, speed_field: str) -> Motion:
         """The segments at the output; a core error names the segment's field."""
         if speed is not None:
-            raise InvalidInputError(
-                speed_field, "must be left out with segments: they give the speeds"
-            )
+            raise InvalidInputError(speed_field, code="speed_with_segments")
         to_rpm, to_nm = axis.speed_rpm_per_unit, axis.torque_nm_per_force_unit
         segments = []
         start = self.start_speed
@@ -321,12 +319,10 @@ class SegmentsCycleIn(StrictModel):
             where = f"cycle.segments.{k}"
             end = start if seg.speed is None else seg.speed
             if (seg.duration_s is None) == (seg.accel is None):
-                raise InvalidInputError(f"{where}.duration_s", "give either duration_s or accel")
+                raise InvalidInputError(f"{where}.duration_s", code="duration_or_accel")
             if seg.accel is not None:
                 if end == start:
-                    raise InvalidInputError(
-                        f"{where}.accel", "needs a change of speed; give duration_s for a run"
-                    )
+                    raise InvalidInputError(f"{where}.accel", code="accel_without_speed_change")
                 duration = abs(end - start) / seg.accel
             else:
                 assert seg.duration_s is not None
@@ -343,7 +339,7 @@ class SegmentsCycleIn(StrictModel):
                 )
             except DomainError as exc:
                 field = {"end_rpm": "speed", "start_rpm": "speed"}.get(exc.field, exc.field)
-                raise type(exc)(f"{where}.{field}", exc.message) from None
+                raise exc.moved(f"{where}.{field}") from None
             start = end
         try:
             return Motion(segments=tuple(segments), load=axis)
@@ -417,7 +413,7 @@ class SelectionRequest(StrictModel):
         load = self.load
         if isinstance(self.cycle, CycleIn) and isinstance(load, _LoadIn) and load.chapter_shorthand:
             if speed is None:
-                raise InvalidInputError(speed_field, "is required with the t_1…t_p cycle")
+                raise InvalidInputError(speed_field, code="speed_required")
             pattern = SpeedPattern(
                 speed_rpm=speed,
                 accel_s=self.cycle.accel_s,

@@ -34,7 +34,7 @@ class UseCaseError(DomainError):
         super().__init__(".".join(str(f) for f in field), first["msg"], where=str(where))
         self.entries = list(entries)
         self.http_status = http_status
-        self.code = first["type"]
+        self.error_type = first["type"]
 
     @classmethod
     def at(cls, loc: Loc, msg: str, type_: str, *, http_status: int = 422) -> UseCaseError:

@@ -1,0 +1,76 @@
+"""The rules the core's input checks enforce: a stable code for each, and its English text.
+
+A :class:`~actuator_selection.core.errors.DomainError` raised with ``code=`` takes its
+message from :data:`MESSAGES`: the template there, filled with the error's ``params``
+(``str.format`` fields such as ``{value}``). The API answers with the code and the
+params beside the text and renders the text in the request's language from the gettext
+catalogs under ``locale/`` (``api/messages.py``), where the templates are the msgids.
+
+Parameters that are words rather than numbers (the reason a bound exists, the kind of
+mechanism) are :class:`Text`: the API translates them too. Every string marked with
+:func:`N_` is extracted into the catalogs by ``pybabel extract`` (``babel.cfg``).
+Codes are part of the API contract: add new ones, never rename or reuse one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Final
+
+
+class Text(str):
+    """A parameter in words (English), translated where the message is rendered."""
+
+    __slots__ = ()
+
+
+def N_(text: str) -> Text:  # noqa: N802 (gettext's name for "mark for translation")
+    """Marks ``text`` for the catalogs; the translation happens when the message is rendered."""
+    return Text(text)
+
+
+MESSAGES: Final[Mapping[str, str]] = {
+    # Any number
+    "not_finite": N_("must be a finite number, got {value}"),
+    "must_be_positive": N_("must be > 0: {rule}"),
+    "must_be_nonnegative": N_("must be ≥ 0: {rule}"),
+    "positive": N_("must be > 0"),
+    "result_overflow": N_(
+        "gives {what} beyond any floating-point number: no real drive has such a load and cycle"
+    ),
+    "mechanism_overflow": N_(
+        "gives {what} beyond any floating-point number: no real mechanism has such values"
+    ),
+    # Efficiencies
+    "efficiency_range": N_("must be > 0 and ≤ 1"),
+    "efficiency_positive": N_("must be > 0: η of {what} divides the torque the actuator gives"),
+    "efficiency_above_one": N_("must be ≤ 1: no {what} returns more than it takes"),
+    "efficiency_product_zero": N_("η_tr·η is 0: no power reaches the load"),
+    # Segments and cycles (core/motion.py, schemas/selections.py)
+    "duration_zero_with_speed_change": N_(
+        "must be > 0 where the speed changes: Δω/t is the acceleration"
+    ),
+    "speed_sign_change": N_(
+        "must not change sign within a segment: brake to 0 in one segment and accelerate "
+        "the other way in the next"
+    ),
+    "share_range": N_("must be between 0 and 1: a share of t"),
+    "segments_empty": N_("must hold at least one segment"),
+    "segments_too_many": N_("must hold at most {max} segments"),
+    "speed_jump": N_("must equal the end speed of the segment before: speed cannot jump"),
+    "cycle_not_closed": N_("the cycle must end at the speed it starts at: it repeats"),
+    "cycle_zero_duration": N_("the cycle must last longer than 0 s"),
+    "speed_required": N_("is required with the t_1…t_p cycle"),
+    "speed_with_segments": N_("must be left out with segments: they give the speeds"),
+    "duration_or_accel": N_("give either duration_s or accel"),
+    "accel_without_speed_change": N_("needs a change of speed; give duration_s for a run"),
+    # Mechanisms (core/mechanisms.py)
+    "radius_vanishes": N_("is so small that m·r² vanishes: no real axis"),
+    "incline_range": N_(
+        "must be between −90° and 90°: positive motion lifts the load for θ > 0, lowers it "
+        "for θ < 0; beyond vertical, reverse the axis instead"
+    ),
+    "ratio_too_small": N_("is so small that J/i² has no value: no real gear"),
+    "ratio_too_large": N_("is so large that the load vanishes behind it (underflow): no real gear"),
+}
+"""Code → English template of every rule the core raises with a code."""
