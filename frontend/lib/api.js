@@ -24,7 +24,7 @@ export class ApiError extends Error {
 }
 
 /** The ApiError for a non-2xx answer with the (parsed, possibly null) body ``data``. */
-export function errorFromBody(status, data) {
+export function errorFromBody(status, data, lang = "en") {
   const detail = data && typeof data === "object" ? data.detail : undefined;
   if (Array.isArray(detail)) {
     const fieldErrors = detail
@@ -33,6 +33,9 @@ export function errorFromBody(status, data) {
         loc: Array.isArray(e.loc) ? e.loc : [],
         msg: String(e.msg ?? ""),
         type: String(e.type ?? ""),
+        code: String(e.code ?? e.type ?? ""),
+        /** the language the server wrote ``msg`` in (its Content-Language) */
+        lang,
       }));
     const text = fieldErrors.map((e) => e.msg).filter(Boolean).join("; ");
     return new ApiError({ status, fieldErrors, detail: text || null });
@@ -44,7 +47,8 @@ export function errorFromBody(status, data) {
 /**
  * A client for JSON endpoints under ``base``.
  *
- * ``headers()`` gives headers for every request (the sales page's Bearer key);
+ * ``headers()`` gives headers for every request (the sales page's Bearer key, the
+ * page's language as Accept-Language, so that the server's messages come in it);
  * ``onError(error)`` sees every ApiError before it is thrown (the sales page goes
  * back to its key prompt on a 401).
  */
@@ -72,7 +76,8 @@ export function createClient({ base = API, headers = () => ({}), onError = null 
     } catch {
       data = null;
     }
-    if (!response.ok) throw fail(errorFromBody(response.status, data));
+    const language = (response.headers.get("Content-Language") ?? "en").split(",")[0].trim() || "en";
+    if (!response.ok) throw fail(errorFromBody(response.status, data, language));
     if (response.status === 204) return null;
     if (data === null || typeof data !== "object") {
       throw fail(new ApiError({ status: response.status, kind: "bad_response" }));

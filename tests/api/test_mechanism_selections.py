@@ -126,3 +126,30 @@ def test_a_bad_mechanism_value_is_a_422_naming_it(
     assert [str(x) for x in got][: len(loc)] == loc or [str(x) for x in got] == [
         x for x in loc if x != "belt"
     ], got
+
+
+def test_a_batch_takes_machine_axes_and_answers_as_single(client: TestClient) -> None:
+    geared_screw = {
+        "load": {
+            "type": "ball_screw_incline",
+            "mass_kg": 50,
+            "lead_mm": 10,
+            "friction_coefficient": 0.05,
+            "efficiency": 0.9,
+            "speed": 300,
+            "transmission": {"ratio": 0.1},
+        },
+        "cycle": {"accel_s": 0.1, "constant_s": 0.5, "decel_s": 0.1, "pause_s": 0.5},
+    }
+    cases = [PICK_AND_PLACE, geared_screw]
+    response = client.post(f"{API}/batch", json={"cases": cases, "top": 2})
+    assert response.status_code == 200, response.text
+    for case, result in zip(cases, response.json()["results"], strict=True):
+        single = created(client, case)
+        assert result["load"] == single["load"]
+        assert result["mean_speed_rpm"] == single["mean_speed_rpm"]
+        assert [c["model"] for c in result["candidates"]] == [
+            c["model"] for c in single["candidates"][:2]
+        ]
+        for got, want in zip(result["candidates"], single["candidates"], strict=False):
+            assert got["rms_torque_nm"] == want["rms_torque_nm"]

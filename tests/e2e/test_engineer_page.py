@@ -909,3 +909,27 @@ def test_a_brake_is_checked_when_the_box_is_ticked(page: Page) -> None:
     expect(brake).to_contain_text("90")
     page.wait_for_selector('#detail[data-detail="ready"]')
     expect(brake).to_contain_text("holding torque = 90 Nm")
+
+
+def test_the_servers_field_errors_come_in_the_pages_language(page: Page) -> None:
+    """The page asks in its language (Accept-Language): a German page shows the API's
+    German message at the field, marked as German, with the unit of the bound."""
+    page.goto("/")
+    page.get_by_role("button", name="Deutsch").click()
+    fill_worked_example(page)
+    page.locator("#f-t1").fill("0")  # HTML allows it, the API's bound is t_1 ≥ 0.0001 s
+    with page.expect_response(lambda r: r.url.endswith("/api/v1/selections")) as info:
+        page.locator("#submit").click()
+    answer = info.value
+    assert answer.status == 422
+    assert answer.headers["content-language"] == "de"
+    error = page.locator("#err-t1 .error-line")
+    expect(error).to_have_attribute("lang", "de")
+    expect(error).to_contain_text("0,0001 s")
+    expect(error).not_to_contain_text("greater than")
+    # and in English once the page is English
+    page.get_by_role("button", name="English").click()
+    with page.expect_response(lambda r: r.url.endswith("/api/v1/selections")):
+        page.locator("#submit").click()
+    expect(page.locator("#err-t1 .error-line")).to_contain_text("0.0001 s")
+    expect(page.locator("#err-t1 .error-line")).to_have_attribute("lang", "en")

@@ -79,7 +79,8 @@ const t = (key, params) => translate(state.lang, key, params);
 
 // ---------------------------------------------------------------- API
 
-const api = createClient();
+// The page's language travels as Accept-Language: the server's error messages come in it.
+const api = createClient({ headers: () => ({ "Accept-Language": state.lang }) });
 
 /** POST /api/v1/selections: run and store a selection. */
 const createSelection = (body) => api.post("/selections", body);
@@ -498,7 +499,7 @@ function showFieldErrors(errors) {
     }
     const index = error.loc.at(-1);
     const prefix = typeof index === "number" && error.loc.includes("models") ? `#${index + 1}: ` : "";
-    target.append(appendSymbols(h("span", { class: "error-line", lang: "en" }), `${prefix}${error.msg}`));
+    target.append(appendSymbols(h("span", { class: "error-line", lang: error.lang ?? "en" }), `${prefix}${error.msg}`));
     target.hidden = false;
     if (!isGroup(control)) control.setAttribute("aria-invalid", "true");
     control.closest(".field, .seg-field")?.classList.add("has-error");
@@ -513,7 +514,7 @@ function showFieldErrors(errors) {
       h(
         "ul",
         {},
-        unplaced.map((e) => h("li", { lang: "en" }, `${e.loc.join(" › ")}: ${e.msg}`)),
+        unplaced.map((e) => h("li", { lang: e.lang ?? "en" }, `${e.loc.join(" › ")}: ${e.msg}`)),
       ),
     );
   }

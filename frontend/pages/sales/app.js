@@ -39,7 +39,8 @@ function apiKey() {
 const api = createClient({
   headers: () => {
     const key = apiKey();
-    return key ? { Authorization: `Bearer ${key}` } : {};
+    // the page's language as Accept-Language: the server's messages come in it
+    return { "Accept-Language": state.lang, ...(key ? { Authorization: `Bearer ${key}` } : {}) };
   },
   onError: (error) => {
     if (error.status === 401) signedOut(() => t("sales.key.rejected"));
