@@ -14,10 +14,12 @@ import math
 import pytest
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.batch import evaluate_batch
-from actuator_selection.core.bearing import OutputLoad, l10_life_h
+from actuator_selection.core.bearing import OutputLoad, l10_life_h, oscillating_life_h
 from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, RULES, Status
 from actuator_selection.core.cycle import Load, SpeedPattern, mean_speed_rpm
+from actuator_selection.core.motion import Motion, Segment
 from actuator_selection.core.selection import Application, evaluate
 
 FHA_14C_50 = Actuator(
@@ -207,3 +209,37 @@ def test_batch_equals_single_for_the_bearing_checks() -> None:
                 assert (None if math.isnan(value) else value) == one.value, (i, j, one.name)
                 assert (None if math.isnan(limit) else limit) == one.limit, (i, j, one.name)
                 assert ev.missing(i, j, one.name) == one.missing
+
+
+def test_a_to_and_fro_cycle_is_checked_as_formula_8_reads_it() -> None:
+    """An indexing axis swinging ±60° (a 120° stroke each way, θ = 60°) 10 times a minute:
+    formula (8) with n_1 = 10 cpm gives the life the check reads at the cycle's n_av,
+    since n_1·θ/90 revolutions per minute is the travel that n_av sums."""
+    stroke_deg, t_ramp, t_run, t_dwell = 120.0, 0.5, 1.0, 1.0
+    # trapezoidal move of the stroke: travel = n·(t_ramp + t_run)/60 rev
+    speed = stroke_deg / 360 / ((t_ramp + t_run) / 60)
+    go = [
+        Segment(duration_s=t_ramp, start_rpm=0, end_rpm=speed),
+        Segment(duration_s=t_run, start_rpm=speed, end_rpm=speed),
+        Segment(duration_s=t_ramp, start_rpm=speed, end_rpm=0),
+        Segment(duration_s=t_dwell, start_rpm=0, end_rpm=0),
+    ]
+    back = [
+        Segment(duration_s=s.duration_s, start_rpm=-s.start_rpm, end_rpm=-s.end_rpm) for s in go
+    ]
+    motion = Motion(segments=(*go, *back), load=AxisLoad(inertia_kgm2=0.1, friction_torque_nm=2))
+    swing = Application(motion=motion, output_load=LIGHT)
+    cycles_per_min = 60 / swing.profile.cycle_s
+    assert cycles_per_min == pytest.approx(10)
+    m = 300 * 0.064 + 200 * 0.01
+    p_c = 300 + 2 * m / 0.054 + 0.45 * 200
+    formula_8 = oscillating_life_h(
+        dynamic_load_rating_n=7400,
+        load_factor=1.5,
+        equivalent_load_n=p_c,
+        oscillations_per_min=cycles_per_min,
+        half_angle_deg=stroke_deg / 2,
+    )
+    c = next(k for k in evaluate(FHA_14C_50, swing).checks if k.name == "bearing_life")
+    assert f"= {formula_8:.4g} h" in c.message
+    assert (formula_8 >= LIGHT.required_life_h) is (c.status is Status.PASS)

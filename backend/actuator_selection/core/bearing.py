@@ -17,6 +17,15 @@ easymanua.ls/harmonic-drive/fha-series/manual?p=25 and p=26):
    (formula (7)), P_c = X·(F_r + 2M/d_p) + Y·F_a with X, Y = 1, 0.45 where
    F_a/(F_r + 2M/d_p) ≤ 1.5, else 0.67, 0.67 (formula (5), CHA Table 70.4).
 
+**Oscillating motion** (FHA-C formula (8), CSF manual §2-7 "life under oscillating
+movement"): L_oc = 10⁶/(60·n_1)·(90/θ)·(C/(f_w·P_c))^(10/3) with n_1 reciprocating
+oscillations per minute and θ half the oscillating angle [°]. One reciprocation of
+amplitude 2θ turns the bearing through 4θ degrees = θ/90 revolutions, so n_1·θ/90 is the
+bearing's travel in revolutions per minute: the cycle's mean |speed| n_av (Eq. 514.3 sums
+|n|). L_10 at n_av is therefore formula (8) for a cycle that moves to and fro, and the
+same check covers rotation and oscillation (:func:`oscillating_life_h`; a test computes
+both for a reciprocating cycle of segments).
+
 The forces are taken as acting throughout the cycle, so the manual's averages F_rav,
 F_aav (formulas (2), (3)) are the forces themselves. The functions take the ``xp``
 operations of :mod:`actuator_selection.core.checks` so that the flowchart's rules run
@@ -152,6 +161,36 @@ def life_revolutions_factor(*, required_life_h: Any, mean_speed_rpm: Any, xp: An
     newton of f_w·P_c (FHA-C formula (7) solved for C). Depends on the case alone."""
     revolutions = required_life_h * 60.0 * mean_speed_rpm / REVOLUTIONS_PER_RATING
     return xp.pow(revolutions, LIFE_EXPONENT_INVERSE)
+
+
+def oscillating_life_h(
+    *,
+    dynamic_load_rating_n: float,
+    load_factor: float,
+    equivalent_load_n: float,
+    oscillations_per_min: float,
+    half_angle_deg: float,
+) -> float:
+    """L_oc = 10⁶/(60·n_1)·(90/θ)·(C/(f_w·P_c))^(10/3) [h] (FHA-C formula (8)): n_1
+    reciprocations per minute [cpm], θ half the oscillating angle [°].
+
+    Equal to :func:`l10_life_h` at n_av = n_1·θ/90 (module docstring):
+
+    >>> l10 = l10_life_h(dynamic_load_rating_n=7400, load_factor=1.5,
+    ...                  equivalent_load_n=1000, mean_speed_rpm=12 * 45 / 90)
+    >>> oc = oscillating_life_h(dynamic_load_rating_n=7400, load_factor=1.5,
+    ...                         equivalent_load_n=1000, oscillations_per_min=12,
+    ...                         half_angle_deg=45)
+    >>> abs(oc - l10) < 1e-9 * l10
+    True
+    """
+    ratio = dynamic_load_rating_n / (load_factor * equivalent_load_n)
+    return (
+        REVOLUTIONS_PER_RATING
+        / (60.0 * oscillations_per_min)
+        * (90.0 / half_angle_deg)
+        * math.pow(ratio, LIFE_EXPONENT)
+    )
 
 
 def l10_life_h(
