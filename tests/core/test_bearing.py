@@ -242,4 +242,5 @@ def test_a_to_and_fro_cycle_is_checked_as_formula_8_reads_it() -> None:
     )
     c = next(k for k in evaluate(FHA_14C_50, swing).checks if k.name == "bearing_life")
     assert f"= {formula_8:.4g} h" in c.message
+    assert LIGHT.required_life_h is not None
     assert (formula_8 >= LIGHT.required_life_h) is (c.status is Status.PASS)
