@@ -2,11 +2,12 @@
 # worker processes. Migrations run once, before the replicas start, in docker-compose.yml's
 # `migrate` service (the same image with another command).
 
-# The page's plotly.js bundle, installed exactly as package-lock.json pins it.
+# The page's plotly.js bundle, installed exactly as package-lock.json pins it (not the
+# browser tests' axe-core, a dev dependency).
 FROM node:20-slim AS assets
 WORKDIR /app
 COPY package.json package-lock.json ./
-RUN npm ci --ignore-scripts --no-audit --no-fund
+RUN npm ci --omit=dev --ignore-scripts --no-audit --no-fund
 
 FROM python:3.11-slim
 RUN useradd --create-home --uid 10001 --shell /usr/sbin/nologin app

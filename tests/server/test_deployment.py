@@ -84,6 +84,10 @@ def test_the_image_installs_the_runtime_lock_only() -> None:
     assert not {"pytest", "mypy", "ruff", "hypothesis", "schemathesis", "pypdf"} & set(runtime)
 
 
+def test_the_image_leaves_the_test_tools_out() -> None:
+    assert re.search(r"npm ci --omit=dev", DOCKERFILE)  # no axe-core in the image
+
+
 def test_the_image_runs_as_a_non_root_user() -> None:
     users = re.findall(r"^USER\s+(\S+)", DOCKERFILE, re.MULTILINE)
     assert users
