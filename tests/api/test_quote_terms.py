@@ -195,7 +195,7 @@ def test_document_in_english(seller_api: SalesApi, selection_id: str) -> None:
         "Muster GmbH",
     ):
         assert expected in (html if "\n" in expected else text), expected
-    assert "data-field='seller-vat-id'>DE123456789<" in html
+    assert 'data-field="seller-vat-id">DE123456789<' in html
     for field, figure in (
         ("subtotal", "9,580.00 EUR"),
         ("total", "8,861.50 EUR"),
@@ -328,7 +328,7 @@ def test_quote_keeps_the_seller_it_was_made_with(
 def test_placeholder_seller_is_flagged(api: SalesApi, selection_id: str) -> None:
     number = create(api, api.quote_body(selection_id)).json()["number"]
     html = document(api, number, lang="de").text
-    assert "data-field='placeholder-seller'" in html
+    assert 'data-field="placeholder-seller"' in html
     assert "Your company" in html  # the placeholder itself, as configured
 
 
@@ -364,7 +364,7 @@ def test_quote_made_before_terms_existed_still_renders(
         assert response.status_code == 200
         text = _text(response.text)
         assert total_label in text
-        assert "data-field='vat'" not in response.text
+        assert 'data-field="vat"' not in response.text
         assert "Antriebstechnik Muster AG" in text
         assert terms in text
 

@@ -4,8 +4,9 @@ In English or German (``api/quote_document_text.py``: every label from one table
 numbers, money and dates formatted by Babel for the locale); the seller block, net,
 VAT and gross totals, payment, delivery and validity terms, and page numbers in print.
 
-Built by hand with :func:`html.escape` on every value (Jinja2 is not installed
-and not needed): customer text can hold anything and must never become markup.
+Rendered from ``api/templates/quote_document.html`` by Jinja2 with autoescaping:
+customer text can hold anything and must never become markup, so every value is
+escaped by the template engine, not by hand.
 The speed/torque diagram is a plotly figure built here with
 ``plotly.graph_objects`` and drawn in the browser by the app's own plotly.js
 (``PLOTLY_URL``) through a small script of this module; no CDN, no inline code.
@@ -19,11 +20,11 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
-from html import escape
-from string import Template
 from typing import Any
 
 import plotly.graph_objects as go
+from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
+from markupsafe import Markup
 
 from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
 from actuator_selection.api.static import PLOTLY_URL
@@ -57,11 +58,6 @@ GRID = "#e4e6ea"
 ENGLISH = DocumentText("en")
 
 
-def e(value: object) -> str:
-    """``value`` as HTML text, every markup character escaped; '—' for None."""
-    return "—" if value is None else escape(str(value), quote=True)
-
-
 def num(value: float | None, unit: str = "", t: DocumentText = ENGLISH) -> str:
     """A measured value for print: 2 decimals from 1 up, 4 significant digits below."""
     if value is None:
@@ -73,19 +69,19 @@ def num(value: float | None, unit: str = "", t: DocumentText = ENGLISH) -> str:
         text = t.number(value, "#,##0.00")
     else:
         text = t.number(value, "@###")
-    return e(f"{text} {t.unit(unit)}".strip())
+    return f"{text} {t.unit(unit)}".strip()
 
 
 def num_plain(value: object, t: DocumentText = ENGLISH) -> str:
     """A catalogue number as printed there (50, 0.86); '—' when absent."""
     if isinstance(value, int | float) and not isinstance(value, bool):
-        return e(t.number(value, "#,##0.######"))
-    return e(value)
+        return t.number(value, "#,##0.######")
+    return "—" if value is None else str(value)
 
 
 def money(amount: Decimal, currency: str, t: DocumentText = ENGLISH) -> str:
     """``1,234.50 EUR`` (``1.234,50 EUR`` in German)."""
-    return e(t.money(amount, currency))
+    return t.money(amount, currency)
 
 
 def script_safe_json(text: str) -> str:
@@ -97,10 +93,6 @@ def script_safe_json(text: str) -> str:
     '{"name": "\\\\u003c/script>\\\\u003cb>"}'
     """
     return text.replace("<", "\\u003c")
-
-
-def _rows(rows: Iterable[tuple[str, str]]) -> str:
-    return "".join(f"<tr><th scope='row'>{k}</th><td>{v}</td></tr>" for k, v in rows)
 
 
 def _label(t: DocumentText, key: str, fallback: str) -> str:
@@ -126,18 +118,20 @@ def _cycle_label(t: DocumentText, key: str, label: str) -> str:
     return label[:1].upper() + label[1:]
 
 
-def _check_row(c: StoredCheck, t: DocumentText) -> str:
+def _check_row(c: StoredCheck, t: DocumentText) -> dict[str, str | None]:
     """One row of the checks table; the message only where the check did not pass."""
-    message = f"<div class='small muted'>{e(c.summary)}</div>" if c.status != "pass" else ""
-    approximate = t("approximate") if c.approximate else ""
-    return (
-        f"<tr data-check='{e(c.name)}'><td>{e(_label(t, 'check_' + c.name, c.name))}{message}"
-        f"</td><td class='status-{e(c.status)}'>{e(_label(t, 'result_' + c.status, c.status))}"
-        f"{e(approximate)}</td><td class='num'>{num(c.value, c.unit, t)}</td>"
-        f"<td class='num'>{num(c.limit, c.unit, t)}</td>"
-        f"<td class='num'>{num(c.margin_percent, '%', t)}</td>"
-        f"<td>{e(t.reference(c.reference))}</td></tr>"
-    )
+    return {
+        "name": c.name,
+        "label": _label(t, "check_" + c.name, c.name),
+        "message": c.summary if c.status != "pass" else None,
+        "status": c.status,
+        "status_label": _label(t, "result_" + c.status, c.status),
+        "approximate": t("approximate") if c.approximate else "",
+        "value": num(c.value, c.unit, t),
+        "limit": num(c.limit, c.unit, t),
+        "margin": num(c.margin_percent, "%", t),
+        "reference": t.reference(c.reference),
+    }
 
 
 def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
@@ -265,170 +259,14 @@ def speed_torque_figure(
     return fig
 
 
-_PAGE = Template(
-    """<!doctype html>
-<html lang="$lang">
-<head>
-<meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<title>$title</title>
-<link rel="icon" href="data:,">
-<style>
-@page { size: A4; margin: 14mm 15mm 16mm 15mm;
-  @bottom-right { content: "$page_label " counter(page) " $of_label " counter(pages);
-                  font: 8pt system-ui, sans-serif; color: #555; } }
-* { box-sizing: border-box; }
-html { color: #1b1f24; background: #eef0f3; }
-body { font: 10.5pt/1.4 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; margin: 0; }
-.sheet { background: #fff; width: 210mm; min-height: 297mm; margin: 12px auto; padding: 16mm 15mm;
-         box-shadow: 0 1px 6px rgba(0,0,0,.15); }
-h1 { font-size: 20pt; margin: 0 0 2mm; letter-spacing: .02em; }
-h2 { font-size: 13pt; margin: 7mm 0 2mm; border-bottom: 1.5px solid #1b1f24; padding-bottom: 1mm; }
-h3 { font-size: 11pt; margin: 4mm 0 1.5mm; }
-.head { display: flex; justify-content: space-between; gap: 10mm; align-items: flex-start; }
-.meta th { text-align: left; font-weight: 600; padding-right: 4mm; white-space: nowrap; }
-.meta td { white-space: nowrap; }
-.meta td, .meta th { padding: .4mm 0; vertical-align: top; }
-.customer, .address, .terms { white-space: pre-line; }
-.parties { display: grid; grid-template-columns: 1fr 1fr; gap: 8mm; }
-table.totals td { padding: 1mm 2mm; }
-table.terms-table th { text-align: left; font-weight: 600; padding: .6mm 4mm .6mm 0;
-      vertical-align: top; white-space: nowrap; width: 30%; }
-table.terms-table td { padding: .6mm 0; vertical-align: top; }
-.muted { color: #555; }
-.small { font-size: 8.5pt; }
-.banner { border: 2px solid #c0262d; background: #fdecea; color: #7d1419; padding: 3mm 4mm;
-          margin: 4mm 0; font-weight: 600; }
-.banner.warn { border-color: #a67c00; background: #fff6d6; color: #5c4500; }
-.banner ul { margin: 1mm 0 0 5mm; padding: 0; font-weight: 400; }
-table.lines, table.checks, table.facts { width: 100%; border-collapse: collapse; }
-table.lines th, table.lines td, table.checks th, table.checks td { padding: 1.3mm 2mm;
-      border-bottom: .5px solid #c8ccd2; vertical-align: top; text-align: left; }
-table.lines thead th, table.checks thead th { border-bottom: 1.5px solid #1b1f24;
-      font-weight: 600; }
-table.checks td:nth-child(2), table.checks td:nth-child(6) { white-space: nowrap; }
-.num { text-align: right !important; font-variant-numeric: tabular-nums; white-space: nowrap; }
-table.lines tfoot td { border-bottom: none; }
-table.lines tfoot tr.total td { border-top: 1.5px solid #1b1f24; font-weight: 700;
-      font-size: 11.5pt; }
-table.facts th { text-align: left; font-weight: 500; color: #333; padding: .5mm 4mm .5mm 0;
-      width: 45%; }
-table.facts td { padding: .5mm 0; font-variant-numeric: tabular-nums; }
-.cols { display: grid; grid-template-columns: 1fr 1fr; gap: 8mm; }
-.status-pass { color: #1e7b3c; font-weight: 600; }
-.status-fail { color: #c0262d; font-weight: 700; }
-.status-warn, .status-no_data { color: #7a6a00; font-weight: 600; }
-#speed-torque { width: 640px; height: 280px; margin: 1mm auto 0; }
-.justification { font-size: 9pt; line-height: 1.3; }
-.justification h3 { font-size: 10pt; margin: 3mm 0 1mm; }
-.justification .small { font-size: 7.5pt; }
-.justification table.checks td, .justification table.checks th { padding: .8mm 1.5mm; }
-.justification { break-before: page; page-break-before: always; }
-.keep { break-inside: avoid; page-break-inside: avoid; }
-footer { margin-top: 3mm; border-top: .5px solid #c8ccd2; padding-top: 1.5mm; }
-.justification h2 { margin-top: 0; }
-.justification p { margin: 1mm 0; }
-@media print {
-  html, body { background: #fff; }
-  .sheet { width: auto; min-height: 0; margin: 0; padding: 0; box-shadow: none; }
-  .screen-only { display: none; }
-  a { color: inherit; text-decoration: none; }
-}
-@media screen {
-  .justification { border-top: 1px dashed #c8ccd2; padding-top: 6mm; margin-top: 10mm; }
-}
-</style>
-</head>
-<body>
-<main class="sheet">
-<p class="screen-only small muted">$print_hint</p>
-$example_banner$placeholder_banner
-<div class="head">
-  <div>
-    <h1>$heading</h1>
-    <div class="muted">$subtitle</div>
-  </div>
-  <table class="meta" aria-label="$quote_details">
-    <tr><th scope="row">$l_number</th><td data-field="number">$number</td></tr>
-    <tr><th scope="row">$l_date</th><td data-field="date">$date</td></tr>
-    <tr><th scope="row">$l_valid_until</th><td data-field="valid-until">$valid_until</td></tr>
-    <tr><th scope="row">$l_status</th><td data-field="status">$status</td></tr>
-  </table>
-</div>
-<div class="parties">
-  <section aria-labelledby="seller-heading">
-    <h2 id="seller-heading">$l_seller</h2>
-    <div data-field="seller"><strong>$seller_name</strong>
-    <div class="address">$seller_address</div>
-    <table class="meta">$seller_rows</table></div>
-  </section>
-  <section aria-labelledby="customer-heading">
-    <h2 id="customer-heading">$l_customer</h2>
-    <div class="customer" data-field="customer">$customer</div>
-    <table class="meta">$customer_reference</table>
-  </section>
-</div>
-$unconfirmed_banner
-<h2>$l_items</h2>
-<table class="lines">
-<thead><tr><th>$col_position</th><th>$col_item</th><th>$col_description</th>
-<th class="num">$col_quantity</th><th class="num">$col_unit_price</th>
-<th class="num">$col_amount</th></tr></thead>
-<tbody>$lines</tbody>
-<tfoot>
-<tr><td colspan="5" class="num">$l_subtotal</td>
-<td class="num" data-field="subtotal">$subtotal</td></tr>
-<tr><td colspan="5" class="num">$l_discount</td>
-<td class="num" data-field="discount">− $discount_amount</td></tr>
-$total_rows
-</tfoot>
-</table>
-<p class="small muted">$prices_from
-$rounding</p>
-<h2>$l_terms</h2>
-<table class="terms-table">
-<tr><th scope="row">$l_payment_terms</th>
-<td class="terms" data-field="payment-terms">$payment_terms</td></tr>
-<tr><th scope="row">$l_delivery_terms</th>
-<td class="terms" data-field="delivery-terms">$delivery_terms</td></tr>
-<tr><th scope="row">$l_validity</th><td data-field="validity">$validity</td></tr>
-</table>
-$notes
-<section class="justification" aria-labelledby="why">
-<h2 id="why">$l_justification</h2>
-<p>$justification_intro</p>
-<div class="cols keep">
-  <div><h3>$l_load</h3><table class="facts">$load</table>
-  <h3>$l_torques</h3><table class="facts">$torques</table></div>
-  <div><h3>$l_cycle</h3><table class="facts">$cycle</table>
-  <h3>$l_catalogue</h3><table class="facts">$catalogue</table></div>
-</div>
-<div class="keep">
-<h3>$l_checks</h3>
-<table class="checks">
-<thead><tr><th>$col_check</th><th>$col_result</th><th class="num">$col_value</th>
-<th class="num">$col_limit</th><th class="num">$col_margin</th><th>$col_reference</th></tr></thead>
-<tbody>$checks</tbody>
-</table>
-</div>
-<div class="keep">
-<h3>$l_diagram</h3>
-<div id="speed-torque" role="img" aria-label="$diagram_label"></div>
-<script type="application/json" id="figure-data">$figure</script>
-</div>
-<footer class="small muted">
-$catalogue_source<br>
-$selection_footer$version_note
-$figures_fixed
-</footer>
-</section>
-</main>
-<script src="$plotly_url"></script>
-<script src="$document_script"></script>
-</body>
-</html>
-"""
+_TEMPLATES = Environment(
+    loader=PackageLoader("actuator_selection.api", "templates"),
+    autoescape=select_autoescape(["html"], default=True),
+    undefined=StrictUndefined,
+    trim_blocks=False,
 )
+"""Jinja2 with autoescaping: every value is HTML-escaped unless it is :class:`Markup`
+(the one translation that carries markup, and the figure's script-safe JSON)."""
 
 
 def render_quote_document(
@@ -454,121 +292,76 @@ def render_quote_document(
     )
     actuator = record.actuator_snapshot
     seller = record.seller or current_seller
-    example_banner = (
-        f"<div class='banner' data-field='example-prices'>"
-        f"{e(t('example_banner', name=quote.price_list.name))}</div>"
-        if quote.price_list.is_example
-        else ""
-    )
-    placeholder_banner = (
-        f"<div class='banner' data-field='placeholder-seller'>{e(t('placeholder_seller'))}</div>"
-        if placeholder_seller_name is not None and seller.name == placeholder_seller_name
-        else ""
-    )
-    unconfirmed_banner = (
-        f"<div class='banner warn' data-field='unconfirmed'>{e(t('unconfirmed_banner'))}<ul>"
-        + "".join(f"<li>{e(reason)}</li>" for reason in quote.verdict_reasons)
-        + "</ul></div>"
-        if quote.unconfirmed
-        else ""
-    )
-    lines = "".join(
-        f"<tr><td>{item.position}</td><td>{e(item.item_code)}</td><td>{e(item.description)}</td>"
-        f"<td class='num'>{e(t.number(item.quantity, '#,##0'))}</td>"
-        f"<td class='num'>{money(item.unit_price, quote.currency, t)}</td>"
-        f"<td class='num'>{money(item.line_total, quote.currency, t)}</td></tr>"
-        for item in quote.items
-    )
     currency = quote.currency
     if record.tax is not None:
         tax = record.tax
-        total_rows = (
-            f"<tr class='net'><td colspan='5' class='num'>{e(t('net_total'))}</td>"
-            f"<td class='num' data-field='total'>{money(tax.net, currency, t)}</td></tr>"
-            f"<tr><td colspan='5' class='num'>"
-            f"{e(t('vat', percent=t.percent(tax.vat_percent)))}</td>"
-            f"<td class='num' data-field='vat'>{money(tax.vat_amount, currency, t)}</td></tr>"
-            f"<tr class='total'><td colspan='5' class='num'>"
-            f"{e(t('gross_total', currency=currency))}</td>"
-            f"<td class='num' data-field='gross'>{money(tax.gross, currency, t)}</td></tr>"
-        )
+        totals = [
+            {"cls": "net", "label": t("net_total"), "field": "total",
+             "value": money(tax.net, currency, t)},
+            {"cls": "", "label": t("vat", percent=t.percent(tax.vat_percent)), "field": "vat",
+             "value": money(tax.vat_amount, currency, t)},
+            {"cls": "total", "label": t("gross_total", currency=currency), "field": "gross",
+             "value": money(tax.gross, currency, t)},
+        ]  # fmt: skip
         rounding = f"{t('rounding')} {t('vat_rounding')}"
     else:
         # A quote made before VAT was stated: net only, as it was sent.
-        total_rows = (
-            f"<tr class='total'><td colspan='5' class='num'>"
-            f"{e(t('total_no_tax', currency=currency))}</td>"
-            f"<td class='num' data-field='total'>{money(quote.total, currency, t)}</td></tr>"
-        )
+        totals = [
+            {"cls": "total", "label": t("total_no_tax", currency=currency), "field": "total",
+             "value": money(quote.total, currency, t)},
+        ]  # fmt: skip
         rounding = t("rounding")
-    seller_rows = [(e(t("vat_id")), f"<span data-field='seller-vat-id'>{e(seller.vat_id)}</span>")]
-    seller_rows.append((e(t("email")), e(seller.email)))
+    seller_rows = [{"label": t("vat_id"), "value": seller.vat_id, "field": "seller-vat-id"}]
+    seller_rows.append({"label": t("email"), "value": seller.email, "field": ""})
     if seller.phone:
-        seller_rows.append((e(t("phone")), e(seller.phone)))
-    payment_terms = record.payment_terms or seller.standard_terms("payment", language)
-    delivery_terms = record.delivery_terms or seller.standard_terms("delivery", language)
-    customer = e(quote.customer.name) + (
-        "\n" + e(quote.customer.address) if quote.customer.address else ""
-    )
-    reference = (
-        _rows([(e(t("your_reference")), e(quote.customer.reference))])
-        if quote.customer.reference
-        else ""
-    )
-    notes = (
-        f"<h2>{e(t('notes'))}</h2><p class='customer'>{e(quote.notes)}</p>" if quote.notes else ""
-    )
+        seller_rows.append({"label": t("phone"), "value": seller.phone, "field": ""})
     load_rows: list[tuple[str, str]] = []
     cycle_rows: list[tuple[str, str]] = []
     torque_rows: list[tuple[str, str]] = []
-    check_rows = ""
+    checks: list[dict[str, str | None]] = []
     figure_json = "null"
     selection_date = "—"
     if selection is not None:
         load = selection.load
         load_rows = [
-            (e(t("load_speed")), num(load.speed_rpm, "rpm", t)),
-            (e(t("load_torque")), num(load.torque_nm, "Nm", t)),
-            (e(t("load_inertia")), num(load.inertia_kgm2, "kgm²", t)),
-            (e(t("high_dynamics")), e(t("yes" if selection.high_dynamics else "no"))),
+            (t("load_speed"), num(load.speed_rpm, "rpm", t)),
+            (t("load_torque"), num(load.torque_nm, "Nm", t)),
+            (t("load_inertia"), num(load.inertia_kgm2, "kgm²", t)),
+            (t("high_dynamics"), t("yes" if selection.high_dynamics else "no")),
         ]
         if selection.mechanism:
-            load_rows.append(
-                (
-                    e(t("mechanism")),
-                    e(", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())),
-                )
-            )
+            mechanism = ", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())
+            load_rows.append((t("mechanism"), mechanism))
         cycle_rows = [
-            (e(_cycle_label(t, key, label)), num(value, unit, t))
+            (_cycle_label(t, key, label), num(value, unit, t))
             for key, label, value, unit in cycle_facts(selection.cycle, selection.segments)
         ] + [
-            (e(t("cycle_time")), num(selection.cycle_time_s, "s", t)),
-            (e(t("mean_speed")), num(selection.mean_speed_rpm, "rpm", t)),
-            (e(t("duty_cycle")), num(selection.duty_cycle_percent, "%", t)),
+            (t("cycle_time"), num(selection.cycle_time_s, "s", t)),
+            (t("mean_speed"), num(selection.mean_speed_rpm, "rpm", t)),
+            (t("duty_cycle"), num(selection.duty_cycle_percent, "%", t)),
         ]
         created = selection.created_at
         selection_date = f"{t.date(created.date())} {created.strftime('%H:%M')} UTC"
     if candidate is not None and selection is not None:
         torque_rows = [
-            (e(t("accel_torque")), num(candidate.accel_torque_nm, "Nm", t)),
-            (e(t("constant_torque")), num(candidate.constant_torque_nm, "Nm", t)),
-            (e(t("decel_torque")), num(candidate.decel_torque_nm, "Nm", t)),
-            (e(t("rms_torque")), num(candidate.rms_torque_nm, "Nm", t)),
+            (t("accel_torque"), num(candidate.accel_torque_nm, "Nm", t)),
+            (t("constant_torque"), num(candidate.constant_torque_nm, "Nm", t)),
+            (t("decel_torque"), num(candidate.decel_torque_nm, "Nm", t)),
+            (t("rms_torque"), num(candidate.rms_torque_nm, "Nm", t)),
         ]
-        check_rows = "".join(_check_row(c, t) for c in candidate.checks)
+        checks = [_check_row(c, t) for c in candidate.checks]
         figure_json = script_safe_json(
             speed_torque_figure(candidate, selection, actuator, t).to_json()
         )
+    family_ratio = (
+        f"{num_plain(actuator.get('family'), t)}, i = {num_plain(actuator.get('gear_ratio'), t)}"
+    )
     catalogue_rows = [
-        (
-            e(t("family_ratio")),
-            f"{e(actuator.get('family'))}, i = {num_plain(actuator.get('gear_ratio'), t)}",
-        ),
-        (e(t("max_torque")), num(actuator.get("max_torque_nm"), "Nm", t)),
-        (e(t("max_speed")), num(actuator.get("max_speed_rpm"), "rpm", t)),
-        (e(t("inertia")), num(actuator.get("inertia_kgm2"), "kgm²", t)),
-        (e(t("stall_torque")), num(actuator.get("stall_torque_nm"), "Nm", t)),
+        (t("family_ratio"), family_ratio),
+        (t("max_torque"), num(actuator.get("max_torque_nm"), "Nm", t)),
+        (t("max_speed"), num(actuator.get("max_speed_rpm"), "rpm", t)),
+        (t("inertia"), num(actuator.get("inertia_kgm2"), "kgm²", t)),
+        (t("stall_torque"), num(actuator.get("stall_torque_nm"), "Nm", t)),
     ]
     version_note = (
         t("version_note", old=quote.selection_catalogue_version, new=quote.catalogue_version)
@@ -577,104 +370,108 @@ def render_quote_document(
     )
     verdict = t("verdict_suitable" if quote.verdict == "suitable" else "verdict_unconfirmed")
     labels = {
-        f"l_{key}": e(t(key))
+        f"l_{key}": t(key)
         for key in (
-            "number",
-            "date",
-            "valid_until",
-            "status",
-            "seller",
-            "customer",
-            "items",
-            "subtotal",
-            "terms",
-            "payment_terms",
-            "delivery_terms",
-            "validity",
+            "number", "date", "valid_until", "status", "seller", "customer", "items",
+            "subtotal", "terms", "payment_terms", "delivery_terms", "validity",
             "justification",
         )
-    }
+    }  # fmt: skip
     columns = {
-        key: e(t(key))
+        key: t(key)
         for key in (
-            "col_position",
-            "col_item",
-            "col_description",
-            "col_quantity",
-            "col_unit_price",
-            "col_amount",
-            "col_check",
-            "col_result",
-            "col_value",
-            "col_limit",
-            "col_margin",
+            "col_position", "col_item", "col_description", "col_quantity", "col_unit_price",
+            "col_amount", "col_check", "col_result", "col_value", "col_limit", "col_margin",
             "col_reference",
         )
-    }
-    return _PAGE.substitute(
-        labels,
+    }  # fmt: skip
+    customer = quote.customer.name + (
+        "\n" + quote.customer.address if quote.customer.address else ""
+    )
+    return _TEMPLATES.get_template("quote_document.html").render(
+        **labels,
         **columns,
         lang=language,
-        title=e(t("title", number=quote.number)),
-        print_hint=e(t("print_hint")),
-        page_label=e(t("page")),
-        of_label=e(t("of")),
-        heading=e(t("heading")),
-        subtitle=e(t("subtitle")),
-        quote_details=e(t("quote_details")),
-        number=e(quote.number),
-        date=e(t.date(quote.created_at.date())),
-        valid_until=e(t.date(quote.valid_until)),
-        status=e(t(f"status_{quote.status.value}")),
-        seller_name=e(seller.name),
-        seller_address=e(seller.address),
-        seller_rows=_rows(seller_rows),
+        title=t("title", number=quote.number),
+        print_hint=t("print_hint"),
+        page_label=t("page"),
+        of_label=t("of"),
+        heading=t("heading"),
+        subtitle=t("subtitle"),
+        quote_details=t("quote_details"),
+        number=quote.number,
+        date=t.date(quote.created_at.date()),
+        valid_until=t.date(quote.valid_until),
+        status=t(f"status_{quote.status.value}"),
+        seller={"name": seller.name, "address": seller.address, "rows": seller_rows},
         customer=customer,
-        customer_reference=reference,
-        example_banner=example_banner,
-        placeholder_banner=placeholder_banner,
-        unconfirmed_banner=unconfirmed_banner,
-        lines=lines,
+        customer_reference=(
+            [(t("your_reference"), quote.customer.reference)] if quote.customer.reference else []
+        ),
+        example_banner=(
+            t("example_banner", name=quote.price_list.name) if quote.price_list.is_example else ""
+        ),
+        placeholder_banner=(
+            t("placeholder_seller")
+            if placeholder_seller_name is not None and seller.name == placeholder_seller_name
+            else ""
+        ),
+        unconfirmed=(
+            {"text": t("unconfirmed_banner"), "reasons": quote.verdict_reasons}
+            if quote.unconfirmed
+            else None
+        ),
+        items=[
+            {
+                "position": item.position,
+                "code": item.item_code,
+                "description": item.description,
+                "quantity": t.number(item.quantity, "#,##0"),
+                "unit_price": money(item.unit_price, currency, t),
+                "total": money(item.line_total, currency, t),
+            }
+            for item in quote.items
+        ],
         subtotal=money(quote.subtotal, currency, t),
-        l_discount=e(t("discount", percent=t.percent(quote.discount_percent))),
+        discount_label=t("discount", percent=t.percent(quote.discount_percent)),
         discount_amount=money(quote.discount_amount, currency, t),
-        total_rows=total_rows,
-        prices_from=e(
-            t("prices_from", name=quote.price_list.name, date=t.date(quote.price_list.priced_on))
+        totals=totals,
+        prices_from=t(
+            "prices_from", name=quote.price_list.name, date=t.date(quote.price_list.priced_on)
         ),
-        rounding=e(rounding),
-        payment_terms=e(payment_terms),
-        delivery_terms=e(delivery_terms),
-        validity=e(t("validity_text", date=t.date(quote.valid_until))),
-        notes=notes,
-        justification_intro=t(
-            "justification_intro", model=e(quote.actuator_model), verdict=e(verdict)
+        rounding=rounding,
+        payment_terms=record.payment_terms or seller.standard_terms("payment", language),
+        delivery_terms=record.delivery_terms or seller.standard_terms("delivery", language),
+        validity=t("validity_text", date=t.date(quote.valid_until)),
+        notes_heading=t("notes"),
+        notes=quote.notes or "",
+        # the one label with markup (<em> around the chapter's title): its arguments escaped
+        justification_intro=Markup(
+            t("justification_intro", model="{model}", verdict="{verdict}")
+        ).format(model=quote.actuator_model, verdict=verdict),
+        l_load=t("load_heading"),
+        l_torques=t("torques_heading"),
+        l_cycle=t("cycle_heading"),
+        l_catalogue=t("catalogue_heading"),
+        l_checks=t("checks_heading"),
+        l_diagram=t("diagram_heading"),
+        diagram_label=t("diagram_label", model=quote.actuator_model),
+        load_rows=load_rows,
+        cycle_rows=cycle_rows,
+        torque_rows=torque_rows,
+        catalogue_rows=catalogue_rows,
+        checks=checks,
+        figure=Markup(figure_json),  # script-safe JSON (no "<"), not HTML
+        catalogue_source=t("catalogue_source", source=actuator.get("source")),
+        selection_footer=t(
+            "selection_footer",
+            id=quote.selection_id,
+            date=selection_date,
+            version=quote.selection_catalogue_version,
+            quote_version=quote.catalogue_version,
         ),
-        l_load=e(t("load_heading")),
-        l_torques=e(t("torques_heading")),
-        l_cycle=e(t("cycle_heading")),
-        l_catalogue=e(t("catalogue_heading")),
-        l_checks=e(t("checks_heading")),
-        l_diagram=e(t("diagram_heading")),
-        diagram_label=e(t("diagram_label", model=quote.actuator_model)),
-        load=_rows(load_rows),
-        cycle=_rows(cycle_rows),
-        torques=_rows(torque_rows),
-        catalogue=_rows(catalogue_rows),
-        checks=check_rows,
-        figure=figure_json,
-        catalogue_source=e(t("catalogue_source", source=actuator.get("source"))),
-        selection_footer=e(
-            t(
-                "selection_footer",
-                id=quote.selection_id,
-                date=selection_date,
-                version=quote.selection_catalogue_version,
-                quote_version=quote.catalogue_version,
-            )
-        ),
-        version_note=e(version_note),
-        figures_fixed=e(t("figures_fixed")),
-        plotly_url=e(PLOTLY_URL),
-        document_script=e("/api/v1" + DOCUMENT_SCRIPT_PATH),
+        version_note=version_note,
+        figures_fixed=t("figures_fixed"),
+        plotly_url=PLOTLY_URL,
+        document_script="/api/v1" + DOCUMENT_SCRIPT_PATH,
     )
