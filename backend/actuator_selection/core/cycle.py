@@ -1,5 +1,11 @@
 """Torques, RMS torque, mean speed and duty cycle of a motion cycle (Eq. 514.1–514.4).
 
+The chapter's equations as it prints them, for its one cycle. The flowchart computes
+every cycle, this one included, as segments (:mod:`actuator_selection.core.motion`);
+these functions stay as the chapter's own statement of the numbers, and the tests hold
+the segment flowchart to them operation for operation (tests/core/test_motion.py).
+:class:`SpeedPattern` and :class:`Load` are the chapter's shorthand for a load case.
+
 The speed pattern of Fig. 516.2: accelerate from standstill to the load speed n_2
 in t_1, run at n_2 for t_2, brake to standstill in t_3, pause for t_p. All values
 refer to the output shaft of the actuator (chapter, note under Table 516.1).
