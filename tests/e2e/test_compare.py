@@ -10,7 +10,7 @@ carries the marks and a new selection clears them.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 from urllib.parse import parse_qs, urlsplit
 
 import pytest
@@ -29,8 +29,11 @@ def box(page: Page, model: str) -> Any:
 
 
 def compared_models(page: Page) -> list[str]:
-    return page.locator("#compare-table thead th[data-model]").evaluate_all(
-        "ths => ths.map(th => th.dataset.model)"
+    return cast(
+        list[str],
+        page.locator("#compare-table thead th[data-model]").evaluate_all(
+            "ths => ths.map(th => th.dataset.model)"
+        ),
     )
 
 
@@ -46,7 +49,7 @@ def margin(check: dict[str, Any]) -> float | None:
     value, limit = check["value"], check["limit"]
     if value is None or limit is None or not limit > 0:
         return None
-    return (limit - value) / limit * 100
+    return float((limit - value) / limit * 100)
 
 
 def assert_matches_answer(page: Page, answer: dict[str, Any], models: list[str]) -> None:
@@ -81,11 +84,12 @@ def assert_matches_answer(page: Page, answer: dict[str, Any], models: list[str])
             expect(status).to_have_attribute("data-status", check["status"])
     # the largest margin of each check, and only it, is highlighted
     for rule in answer["check_rules"]:
-        margins = {}
+        margins: dict[str, float] = {}
         for model in models:
             check = next((k for k in by_model[model]["checks"] if k["name"] == rule["name"]), None)
-            if check is not None and margin(check) is not None:
-                margins[model] = margin(check)
+            found = None if check is None else margin(check)
+            if found is not None:
+                margins[model] = found
         best = (
             sorted(m for m, v in margins.items() if v == max(margins.values()))
             if len(margins) > 1
