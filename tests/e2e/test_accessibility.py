@@ -1,7 +1,8 @@
 """axe-core over both pages in the states a user sees them (issue 13): the form, results
 with a candidate's detail, stale results after an edit, the segment editor and a machine
-axis, the limits table, both languages, and the sales page's key prompt. No serious or
-critical violation of WCAG 2 A/AA.
+axis, the limits table, the comparison of candidates (a fifth mark refused), both
+languages, and the sales page's key prompt. No serious or critical violation of WCAG 2
+A/AA.
 
 axe-core comes from the npm lock (node_modules/axe-core, a dev dependency installed by
 ``make install``; never served by the app) and is injected into a context that bypasses
@@ -74,6 +75,16 @@ def test_the_engineers_page_in_every_state(axe_page: Page) -> None:
     page.locator("#limits-button").click()
     page.wait_for_selector("#limits-table")
     assert violations(page) == [], "limits"
+    for model in page.locator("#ranking-table .compare-toggle").evaluate_all(
+        "boxes => boxes.slice(0, 3).map(b => b.dataset.model)"
+    ):
+        page.locator(f'#ranking-table .compare-toggle[data-model="{model}"]').check()
+    page.wait_for_selector("#compare-table thead th[data-model] >> nth=2")
+    assert violations(page) == [], "comparison of three candidates"
+    page.locator("#ranking-table .compare-toggle:not(:checked)").first.check()
+    page.locator("#ranking-table .compare-toggle:not(:checked)").first.click()
+    page.wait_for_selector("#compare-status:has-text('at most 4')")
+    assert violations(page) == [], "comparison with a fifth mark refused"
     page.locator("#f-torque").fill("6")  # an edit makes the results stale
     page.wait_for_selector("#results.is-stale")
     assert violations(page) == [], "stale results"

@@ -754,7 +754,8 @@ def test_keyboard_and_screen_reader_affordances(page: Page) -> None:
         page.keyboard.press("Enter")  # Enter in a field submits the form
     wait_for_charts(page)
     expect(page.locator("#results-status")).to_contain_text("suitable")
-    expect(page.locator("#ranking-table thead th")).to_have_count(7)
+    # rank, compare mark, model, verdict · checks, T_1, T_3, T_rms, reason
+    expect(page.locator("#ranking-table thead th")).to_have_count(8)
     expect(page.locator("#checks-table thead th")).to_have_count(6)
     choose(page, FHA, by_keyboard=True)
     expect(page.locator(f'#ranking-table tr[data-model="{FHA}"] .model-button')).to_have_attribute(

@@ -7,6 +7,7 @@ import { $, h, notice } from "../../lib/dom.js";
 import { appendSymbols, num, qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
 import { loadPlotly } from "../../lib/plotly.js";
+import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
 import {
   MECHANISMS,
@@ -68,6 +69,10 @@ const state = {
   selection: null,
   chosen: null,
   filter: "all",
+  /** models marked for the side-by-side comparison, in the order marked (at most four) */
+  compare: [],
+  /** the model whose mark was refused last (a fifth), for the status line */
+  compareRefused: null,
   stale: false,
   busy: false,
   /** the last thing the results area should say when there is no selection */
@@ -546,6 +551,7 @@ function permalinkUrl() {
   if (state.chosen && state.chosen !== state.selection.candidates[0]?.model) {
     url.searchParams.set("model", state.chosen);
   }
+  if (state.compare.length) url.searchParams.set("compare", state.compare.join(","));
   return url.toString();
 }
 
@@ -620,11 +626,73 @@ function renderResults() {
         state.filter = f;
         applyFilter();
       },
+      compareCell: (model) => compareToggle(model, state.compare.includes(model), state.lang, toggleCompare),
+      compareStatus: compareStatusText(state.compare, state.lang, state.compareRefused),
     }),
+    h("div", { id: "compare-slot" }),
     h("div", { id: "detail-slot" }),
   );
+  renderComparison();
   renderChosen();
   updateResolved();
+}
+
+// ---------------------------------------------------------------- comparison
+
+/** The comparison below the ranking, from the marks; the ranking's boxes and status follow them. */
+function renderComparison() {
+  const slot = $("#compare-slot");
+  if (!slot || !state.selection) return;
+  const section = renderCompare(state.selection, state.compare, state.lang, {
+    onRemove: (model) => unmark(model, { focusBox: true }),
+    onClear: clearMarks,
+  });
+  slot.replaceChildren(...(section ? [section] : []));
+  for (const box of document.querySelectorAll("#ranking-table .compare-toggle")) {
+    const marked = state.compare.includes(box.dataset.model);
+    box.checked = marked;
+    box.closest("tr")?.classList.toggle("compared", marked);
+  }
+  const status = $("#compare-status");
+  if (status) status.textContent = compareStatusText(state.compare, state.lang, state.compareRefused);
+}
+
+/** A box in the ranking was ticked or cleared: mark or unmark, a fifth mark refused. */
+function toggleCompare(model, box) {
+  if (box.checked && !state.compare.includes(model)) {
+    if (state.compare.length >= MAX_COMPARED) {
+      box.checked = false;
+      state.compareRefused = model;
+      renderComparison();
+      return;
+    }
+    state.compare = [...state.compare, model];
+  } else if (!box.checked) {
+    state.compare = state.compare.filter((m) => m !== model);
+  }
+  state.compareRefused = null;
+  renderComparison();
+  updateUrl();
+}
+
+function unmark(model, { focusBox = false } = {}) {
+  state.compare = state.compare.filter((m) => m !== model);
+  state.compareRefused = null;
+  renderComparison();
+  updateUrl();
+  if (focusBox) {
+    const box = document.querySelector(`#ranking-table .compare-toggle[data-model="${CSS.escape(model)}"]`);
+    if (box && !box.closest("tr")?.hidden) box.focus();
+    else $("#compare-status")?.focus?.();
+  }
+}
+
+function clearMarks() {
+  state.compare = [];
+  state.compareRefused = null;
+  renderComparison();
+  updateUrl();
+  $("#ranking-table .compare-toggle")?.focus();
 }
 
 function applyFilter() {
@@ -766,13 +834,16 @@ function setBusy(busy, messageKey = "results.loading") {
   $("#results").setAttribute("aria-busy", String(busy));
 }
 
-function acceptSelection(sel, preferredModel) {
+function acceptSelection(sel, preferredModel, marks = []) {
   if (!sel || !Array.isArray(sel.candidates) || !sel.load || !sel.cycle) {
     throw new ApiError({ status: 200, kind: "bad_response" });
   }
   state.selection = sel;
   state.stale = false;
   state.filter = "all";
+  // a new selection starts without marks; a permalink brings its own
+  state.compare = validMarks(sel, marks);
+  state.compareRefused = null;
   const models = sel.candidates.map((c) => c.model);
   state.chosen = models.includes(preferredModel) ? preferredModel : (models[0] ?? null);
   renderResults();
@@ -805,14 +876,14 @@ async function onSubmit(event) {
   }
 }
 
-async function openPermalink(id, model) {
+async function openPermalink(id, model, marks) {
   setBusy(true, "results.loading.permalink");
   renderResults();
   try {
     const sel = await getSelection(id);
     setBusy(false);
     fillForm(sel);
-    acceptSelection(sel, model);
+    acceptSelection(sel, model, marks);
   } catch (error) {
     setBusy(false);
     showAlert(describeFailure(error));
@@ -905,7 +976,7 @@ function init() {
   }
   const params = new URLSearchParams(window.location.search);
   const id = params.get("selection");
-  if (id) openPermalink(id, params.get("model"));
+  if (id) openPermalink(id, params.get("model"), (params.get("compare") ?? "").split(",").filter(Boolean));
   else loadPlotly().catch(() => {}); // the page's own <script> loads it; else ask where it is
 }
 

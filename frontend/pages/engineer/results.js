@@ -23,7 +23,7 @@ import { translate, translateReference, unitText } from "../../lib/i18n.js";
 export const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
 const STATUS_MARK = { pass: "✓", fail: "✗", warn: "!", no_data: "?" };
 
-function statusBadge(status, lang) {
+export function statusBadge(status, lang) {
   return h(
     "span",
     { class: `badge status-${status}` },
@@ -33,7 +33,7 @@ function statusBadge(status, lang) {
   );
 }
 
-function verdictBadge(verdict, lang) {
+export function verdictBadge(verdict, lang) {
   return h("span", { class: `badge verdict-${verdict}` }, translate(lang, `verdict.${verdict}`));
 }
 
@@ -47,7 +47,7 @@ function approxBadge(lang) {
 }
 
 /** A value with its unit; the number keeps the API's full value in data-value. */
-function valueCell(value, unit, lang, props = {}) {
+export function valueCell(value, unit, lang, props = {}) {
   return h(
     "span",
     { class: "value", "data-value": typeof value === "number" ? String(value) : null, ...props },
@@ -234,8 +234,12 @@ function checkMarks(sel, candidate, lang) {
   );
 }
 
-/** The ranked candidates with a verdict filter; ``onChoose(model)`` when a row is picked. */
-export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilter }) {
+/**
+ * The ranked candidates with a verdict filter; ``onChoose(model)`` when a row is picked.
+ * ``compareCell(model)`` gives a row's mark for the comparison, ``compareStatus`` the
+ * line that says how many are marked (or why a mark was refused).
+ */
+export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilter, compareCell, compareStatus }) {
   const t = (k, p) => translate(lang, k, p);
   const counts = countVerdicts(sel.candidates);
   const filters = h(
@@ -282,6 +286,9 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
         hidden: filter !== "all" && filter !== c.verdict,
       },
       h("td", { role: "cell", class: "num rank", "data-label": t("table.rank") }, String(i + 1)),
+      compareCell
+        ? h("td", { role: "cell", class: "compare-cell", "data-label": t("compare.column") }, compareCell(c.model))
+        : null,
       h(
         "th",
         { role: "rowheader", scope: "row", class: "model", "data-label": t("table.model") },
@@ -333,6 +340,7 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
         "tr",
         { role: "row" },
         header("table.rank"),
+        compareCell ? header("compare.column") : null,
         header("table.model"),
         h("th", { scope: "col", role: "columnheader" }, `${t("table.verdict")} · ${t("table.checks")}`),
         header(null, "T_1", "Nm"),
@@ -347,7 +355,7 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
         role: "rowgroup",
         // a click anywhere on a row chooses it; the model button serves the keyboard
         onclick: (event) => {
-          if (event.target.closest("button, a, summary")) return;
+          if (event.target.closest("button, a, summary, input, label")) return;
           const row = event.target.closest("tr[data-model]");
           if (row) onChoose(row.dataset.model);
         },
@@ -360,6 +368,9 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
     { class: "card ranking-card", "aria-labelledby": "ranking-heading" },
     h("h3", { id: "ranking-heading", class: "visually-hidden" }, t("table.caption")),
     filters,
+    compareCell
+      ? h("p", { id: "compare-status", class: "compare-status hint", role: "status", "aria-live": "polite" }, compareStatus ?? "")
+      : null,
     h(
       "div",
       { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("table.caption") },
