@@ -215,7 +215,6 @@ def candidate_body(
 def result_body(
     *,
     id: str | None,
-    request: SelectionRequest,
     selection: Selection,
     candidates: list[dict[str, Any]],
 ) -> dict[str, Any]:
