@@ -20,9 +20,8 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import plotly.graph_objects as go
 from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 from markupsafe import Markup
 
@@ -37,6 +36,9 @@ from actuator_selection.schemas.quotes import (
     StoredSelection,
     cycle_facts,
 )
+
+if TYPE_CHECKING:
+    import plotly.graph_objects as go
 
 DOCUMENT_SCRIPT_PATH = "/quote-document.js"
 """Route (under /api/v1) of the script that draws the figure from the page's JSON."""
@@ -150,6 +152,8 @@ def speed_torque_figure(
     the zone edge from the actuator's catalogue entry as quoted, the operating
     points from the candidate's torques and the selection's speeds.
     """
+    import plotly.graph_objects as go  # ~15 MB: loaded with the first quote document
+
     checks = candidate.checks
     n_max_check = _check(checks, "max_speed")
     n_max = n_max_check.limit if n_max_check else None

@@ -29,14 +29,16 @@ import re
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import pint
 from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler, ValidationError
 from pydantic.json_schema import JsonSchemaValue
 from pydantic_core import CoreSchema, PydanticCustomError, core_schema
 
 from actuator_selection.core.messages import N_, Text
+
+if TYPE_CHECKING:
+    import pint
 
 QUANTITY_MESSAGES: dict[tuple[str, str], str] = {
     ("quantity_text", "too_long"): N_(
@@ -95,12 +97,21 @@ _registry: pint.UnitRegistry[float] | None = None
 _registry_lock = threading.Lock()
 
 
+def _pint_error() -> type[Exception]:
+    """pint's base error, from the module the registry loaded."""
+    import pint
+
+    return pint.PintError
+
+
 def unit_registry() -> pint.UnitRegistry[float]:
-    """The one unit registry, built on first use (pint reads its definitions in ~0.2 s, a
-    cost that requests with plain numbers never pay)."""
+    """The one unit registry, built on first use (pint reads its definitions in ~0.2 s and
+    takes ~13 MB: a cost that requests with plain numbers never pay)."""
     global _registry
     with _registry_lock:
         if _registry is None:
+            import pint
+
             registry: pint.UnitRegistry[float] = pint.UnitRegistry()
             for alias in _ALIASES:
                 registry.define(alias)
@@ -181,7 +192,7 @@ def to_unit(text: str, kind: QuantityKind) -> float:
         raise _error("quantity_unit", "wrong_kind", kind, given_unit=match["unit"], note=kind.note)
     try:
         value = float(registry.Quantity(number, unit).to(target).magnitude)
-    except (ArithmeticError, pint.PintError):  # a factor past the largest float
+    except (ArithmeticError, _pint_error()):  # a factor past the largest float
         value = math.inf
     if not math.isfinite(value):
         raise _error("finite_number", "overflow", kind, text=text)
