@@ -203,12 +203,12 @@ def test_belt_inertia_through_a_ratio_is_its_kinetic_energy() -> None:
 
 @settings(max_examples=200, deadline=None)
 @given(
-    mass=st.floats(0, 5000),
-    diameter=st.floats(0.005, 1.0),
-    j_pinion=st.floats(0, 1.0),
-    ratio=st.floats(0.05, 200),
-    j_tr=st.floats(0, 1.0),
-    omega_out=st.floats(0.1, 1000),
+    mass=st.floats(0, 5000, allow_subnormal=False),
+    diameter=st.floats(0.005, 1.0, allow_subnormal=False),
+    j_pinion=st.floats(0, 1.0, allow_subnormal=False),
+    ratio=st.floats(0.05, 200, allow_subnormal=False),
+    j_tr=st.floats(0, 1.0, allow_subnormal=False),
+    omega_out=st.floats(0.1, 1000, allow_subnormal=False),
 )
 def test_rack_inertia_through_a_ratio_is_its_kinetic_energy(
     mass: float, diameter: float, j_pinion: float, ratio: float, j_tr: float, omega_out: float
