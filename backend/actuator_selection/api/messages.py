@@ -21,9 +21,9 @@ from __future__ import annotations
 
 import functools
 import math
-from decimal import Decimal
 import re
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from decimal import Decimal
 from pathlib import Path
 from typing import Any, Final
 
@@ -393,6 +393,10 @@ def render_check(message: str, language: str) -> str:
     )
 
 
-def check_code(message: str) -> str | None:
-    """The stable code of a check message, None for one without (free text)."""
-    return message.code if isinstance(message, check_messages.Phrase) else None
+def localizer(language: str) -> Callable[[str], str]:
+    """:func:`render_check` in ``language``, for the schemas' ``localize``."""
+    return functools.partial(_render_in, language=language)
+
+
+def _render_in(message: str, *, language: str) -> str:
+    return render_check(message, language)

@@ -30,7 +30,7 @@ class Phrase(str):
     code: str
     params: Mapping[str, Any]
 
-    def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:  # noqa: D102
+    def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:
         text = str.__new__(cls, _ENGLISH.vformat(CHECK_MESSAGES[code], (), params))
         text.code = code
         text.params = params
@@ -131,9 +131,7 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
     "peak_torque.fail": N_(
         "acceleration torque T_1 = {value:.4g} Nm exceeds T_max = {limit:.4g} Nm"
     ),
-    "decel_torque.pass": N_(
-        "deceleration torque |T_3| = {value:.4g} Nm ≤ T_max = {limit:.4g} Nm"
-    ),
+    "decel_torque.pass": N_("deceleration torque |T_3| = {value:.4g} Nm ≤ T_max = {limit:.4g} Nm"),
     "decel_torque.fail": N_(
         "deceleration torque |T_3| = {value:.4g} Nm exceeds T_max = {limit:.4g} Nm"
     ),

@@ -515,9 +515,7 @@ def _floor_message(message: str) -> str:
     """A failure at the least value over every J_A ≥ 0, in words."""
     if isinstance(message, Phrase):
         return phrase("fail_for_any_inertia", message=message)
-    return (
-        f"{message}, at its least for any J_A ≥ 0 (the catalogue gives no J_A for this actuator)"
-    )
+    return f"{message}, at its least for any J_A ≥ 0 (the catalogue gives no J_A for this actuator)"
 
 
 def _outcome(status: Status) -> str:
