@@ -82,7 +82,7 @@ def _german_catalog() -> dict[str, str]:
 
 
 def _fields(template: str) -> set[tuple[str, str]]:
-    return {(name, spec) for _, name, spec, _ in string.Formatter().parse(template) if name}
+    return {(name, spec or "") for _, name, spec, _ in string.Formatter().parse(template) if name}
 
 
 def _assert_german(text: str) -> None:
