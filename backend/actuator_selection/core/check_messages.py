@@ -31,7 +31,10 @@ class Phrase(str):
     params: Mapping[str, Any]
 
     def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:
-        text = str.__new__(cls, _ENGLISH.vformat(CHECK_MESSAGES[code], (), params))
+        # str.format in C: a Phrase among the params formats as its English text; a clause
+        # left out (None) as nothing.
+        fields = {k: "" if v is None else v for k, v in params.items()}
+        text = str.__new__(cls, CHECK_MESSAGES[code].format_map(fields))
         text.code = code
         text.params = params
         return text
@@ -73,9 +76,6 @@ class _Renderer(Formatter):
 
     def render(self, message: Phrase) -> str:
         return self.vformat(self._translate(CHECK_MESSAGES[message.code]), (), message.params)
-
-
-_ENGLISH: Final = _Renderer(str, None)
 
 
 def render(
