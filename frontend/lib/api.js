@@ -44,6 +44,17 @@ export function errorFromBody(status, data, lang = "en") {
   return new ApiError({ status });
 }
 
+/** The language of a successful answer's messages (its Content-Language), by its data. */
+const answerLanguages = new WeakMap();
+
+/**
+ * The language the server wrote ``data``'s messages in (the answer's Content-Language,
+ * "en" where it named none): the page marks those messages with it (``lang``).
+ */
+export function answerLanguage(data) {
+  return (data !== null && typeof data === "object" && answerLanguages.get(data)) || "en";
+}
+
 /**
  * A client for JSON endpoints under ``base``.
  *
@@ -82,6 +93,7 @@ export function createClient({ base = API, headers = () => ({}), onError = null 
     if (data === null || typeof data !== "object") {
       throw fail(new ApiError({ status: response.status, kind: "bad_response" }));
     }
+    answerLanguages.set(data, language);
     return data;
   }
   return {

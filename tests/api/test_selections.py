@@ -86,6 +86,8 @@ def test_worked_example_over_http(client: TestClient) -> None:
         "reference": "Table 515.1",
         "approximate": False,
         "message": None,
+        "message_code": "max_speed.pass",
+        "message_params": {"value": 40, "limit": 90},
         "margin_percent": pytest.approx((90 - 40) / 90 * 100),
         "utilisation": 40 / 90,
     }

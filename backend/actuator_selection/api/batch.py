@@ -22,8 +22,10 @@ from actuator_selection.api.errors import (
     RequestFieldError,
     domain_entry,
     field_error,
+    language_of,
     service_error,
 )
+from actuator_selection.api.messages import localizer
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
 from actuator_selection.core.errors import DomainError
@@ -37,6 +39,7 @@ from actuator_selection.schemas.batch import (
     candidate_body,
     result_body,
 )
+from actuator_selection.schemas.checks import Localize
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
 from actuator_selection.schemas.selections import RANKING_RULE
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
@@ -159,7 +162,11 @@ def _store(
 
 
 def _candidates(
-    selection: Selection, speed_rpm: float, body: BatchSelectionRequest, drives: _Drives
+    selection: Selection,
+    speed_rpm: float,
+    body: BatchSelectionRequest,
+    drives: _Drives,
+    localize: Localize,
 ) -> list[dict[str, Any]]:
     out = []
     for c in selection.candidates:
@@ -173,6 +180,7 @@ def _candidates(
                 ),
                 controllers_excluded=excluded,
                 controllers_note=note,
+                localize=localize,
             )
         )
     return out
@@ -215,7 +223,10 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
     # The cases are in ``apps`` now; their request models (36 MB for 20,000 cases) are let
     # go before the answer streams, which keeps the peak memory of a large batch down.
     body.cases.clear()
-    chunks = _result_chunks(body, actuators, apps, models, ids, _Drives(context))
+    language = language_of(request.scope)
+    chunks = _result_chunks(
+        body, actuators, apps, models, ids, _Drives(context), localizer(language)
+    )
     head = (
         b'{"catalogue_version":'
         + pydantic_core.to_json(version)
@@ -230,6 +241,7 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
         itertools.chain((head, first), chunks, (b"]}",)),
         media_type="application/json",
         status_code=201 if body.store else 200,
+        headers={"Content-Language": language, "Vary": "Accept-Language"},
     )
 
 
@@ -271,6 +283,7 @@ def _result_chunks(
     models: list[list[str] | None],
     ids: list[str | None],
     drives: _Drives,
+    localize: Localize,
 ) -> Iterator[bytes]:
     """The ``results`` array's JSON, ``STREAM_CASES`` cases at a time, comma-joined.
 
@@ -286,7 +299,7 @@ def _result_chunks(
                     id=id_,
                     selection=selection,
                     candidates=_candidates(
-                        selection, selection.profile.peak_speed_rpm, body, drives
+                        selection, selection.profile.peak_speed_rpm, body, drives, localize
                     ),
                 )
             )

@@ -22,7 +22,8 @@ from __future__ import annotations
 import functools
 import math
 import re
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from decimal import Decimal
 from pathlib import Path
 from typing import Any, Final
 
@@ -32,6 +33,9 @@ from babel.numbers import format_decimal
 from werkzeug.datastructures import LanguageAccept
 from werkzeug.http import parse_accept_header
 
+from actuator_selection.core import check_messages
+from actuator_selection.core.check_messages import CHECK_MESSAGES, CHECK_WORDS
+from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, BRAKE_RULES, DRIVE_RULES
 from actuator_selection.core.messages import MESSAGES as DOMAIN_MESSAGES
 from actuator_selection.core.messages import N_, Text
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
@@ -340,3 +344,59 @@ def localized(entry: Mapping[str, Any], language: str) -> dict[str, Any]:
     out["code"] = entry.get("code") or entry.get("type")
     out["params"] = jsonable(params)
     return out
+
+
+# --- the flowchart's check messages ---------------------------------------------------
+
+
+def check_templates() -> dict[str, str]:
+    """Every template and word of the check messages (``core/check_messages.py``) and the
+    catalogue values the rules name where data is missing, by ``<group>:<code>`` (for the
+    tests). Their templates carry format specs (``{value:.4g}``), which
+    :func:`render_check` follows."""
+    templates = {f"check:{c}": t for c, t in CHECK_MESSAGES.items()}
+    templates |= {f"check_word:{w}": w for w in CHECK_WORDS}
+    for rule in (*BRAKE_RULES, *DRIVE_RULES, *BEARING_RULES, BEARING_LIFE):
+        templates |= {f"check_word:{need.what}": need.what for need in rule.requires}
+    return templates
+
+
+def _spec_number(language: str) -> check_messages.NumberFormat:
+    """Numbers of a check message as ``language`` writes them: rounded by the template's
+    format spec as English rounds them, then written by Babel (decimal comma in German)."""
+
+    def number(value: float, spec: str) -> str:
+        english = format(value, spec)
+        if language == DEFAULT_LANGUAGE:
+            return english
+        if not math.isfinite(value):
+            return "∞" if value > 0 else "−∞" if value < 0 else english
+        return str(
+            format_decimal(
+                Decimal(english),
+                locale=language,
+                decimal_quantization=False,
+                group_separator=False,
+            )
+        )
+
+    return number
+
+
+def render_check(message: str, language: str) -> str:
+    """A check's message (or a candidate's reason) in ``language``; the English text where
+    the language is English or the message has no code."""
+    if language == DEFAULT_LANGUAGE:
+        return message
+    return check_messages.render(
+        message, translate=lambda text: translate(text, language), number=_spec_number(language)
+    )
+
+
+def localizer(language: str) -> Callable[[str], str]:
+    """:func:`render_check` in ``language``, for the schemas' ``localize``."""
+    return functools.partial(_render_in, language=language)
+
+
+def _render_in(message: str, *, language: str) -> str:
+    return render_check(message, language)

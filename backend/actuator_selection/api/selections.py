@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import gzip
+from collections.abc import Callable
 from datetime import UTC, datetime
 from functools import partial
 from typing import Annotated, Any
@@ -16,7 +17,8 @@ from actuator_selection.api.deps import (
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.errors import RequestFieldError, service_error
+from actuator_selection.api.errors import RequestFieldError, language_of, service_error
+from actuator_selection.api.messages import localizer
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
@@ -39,6 +41,15 @@ from actuator_selection.services.selections import (
 )
 
 router = APIRouter(tags=["selections"])
+
+
+def _localize(request: Request, response: Response) -> Callable[[str], str]:
+    """The check messages in the request's language (``Accept-Language``), which the
+    answer names in ``Content-Language``."""
+    language = language_of(request.scope)
+    response.headers["Content-Language"] = language
+    response.headers["Vary"] = "Accept-Language"
+    return localizer(language)
 
 
 @router.post(
@@ -87,11 +98,13 @@ def _json(request: Request, plain: bytes, compressed: bytes, *, status_code: int
     responses={422: {"description": "invalid load case, or a model the catalogue lacks"}},
 )
 @reads_only
-def solve_selection_limits(body: LimitsRequest, request: Request, session: SessionDep) -> LimitsOut:
+def solve_selection_limits(
+    body: LimitsRequest, request: Request, response: Response, session: SessionDep
+) -> LimitsOut:
     """How far the load case may go for one actuator: the shortest pause, the shortest
     acceleration time (t_1…t_p cycle) and the largest load inertia with no check failing,
     each with the check that fails just beyond it (bisection over the flowchart)."""
-    return solve_limits(body, catalogue_snapshot(request, session))
+    return solve_limits(body, catalogue_snapshot(request, session), _localize(request, response))
 
 
 @router.get(
@@ -121,11 +134,18 @@ def get_candidate(
     selection_id: Annotated[str, Path(max_length=36)],
     model: Annotated[str, Path(max_length=60)],
     request: Request,
+    response: Response,
     session: SessionDep,
 ) -> CandidateDetailOut:
     """One candidate of a stored selection in full: every check in words, every controller
     of Table 521.1 with its criteria and voltage check, the actuator's catalogue data."""
-    return candidate_detail(session, catalogue_snapshot(request, session), selection_id, model)
+    return candidate_detail(
+        session,
+        catalogue_snapshot(request, session),
+        selection_id,
+        model,
+        _localize(request, response),
+    )
 
 
 @router.get(
@@ -140,11 +160,18 @@ def get_candidate_limits(
     selection_id: Annotated[str, Path(max_length=36)],
     model: Annotated[str, Path(max_length=60)],
     request: Request,
+    response: Response,
     session: SessionDep,
 ) -> LimitsOut:
     """How far the stored load case may go for one of its candidates (as
     POST /selections/limits answers for it)."""
-    return stored_limits(session, catalogue_snapshot(request, session), selection_id, model)
+    return stored_limits(
+        session,
+        catalogue_snapshot(request, session),
+        selection_id,
+        model,
+        _localize(request, response),
+    )
 
 
 _REPORT_ERRORS: dict[int | str, dict[str, Any]] = {404: {"description": "unknown selection"}}

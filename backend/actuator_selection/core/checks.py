@@ -64,6 +64,8 @@ from enum import StrEnum
 from typing import Any, NamedTuple
 
 from actuator_selection.core import bearing
+from actuator_selection.core.check_messages import Phrase, phrase
+from actuator_selection.core.messages import N_
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
 INERTIA_RATIO_LIMIT = 3.0
@@ -428,7 +430,7 @@ class Rule:
             (
                 need.unless,
                 need.any_of,
-                f"no data: the catalogue gives no {need.what} for this actuator",
+                phrase("no_data", what=need.what),
                 need.what,
             )
             for need in self.requires
@@ -503,19 +505,29 @@ class Rule:
             limit if limit == limit else None,
             self.unit,
             self.reference,
-            f"{self.message(q, Status.FAIL, floor, limit)}, at its least for any J_A ≥ 0 "
-            f"(the catalogue gives no J_A for this actuator)",
+            _floor_message(self.message(q, Status.FAIL, floor, limit)),
             self.approximate is not None and self.approximate(q, xp),
             what,
         )
+
+
+def _floor_message(message: str) -> str:
+    """A failure at the least value over every J_A ≥ 0, in words."""
+    if isinstance(message, Phrase):
+        return phrase("fail_for_any_inertia", message=message)
+    return f"{message}, at its least for any J_A ≥ 0 (the catalogue gives no J_A for this actuator)"
+
+
+def _outcome(status: Status) -> str:
+    """The message variant of ``status`` for a rule that only passes or fails."""
+    return "pass" if status is Status.PASS else "fail"
 
 
 # --- 1. max_speed: n_2 ≤ n_max (Table 515.1) ------------------------------------------------
 
 
 def _max_speed_message(q: Operands, status: Status, n_2: float, n_max: float) -> str:
-    relation = "≤" if status is Status.PASS else "exceeds"
-    return f"load speed n_2 = {n_2:.4g} rpm {relation} n_max = {n_max:.4g} rpm"
+    return phrase(f"max_speed.{_outcome(status)}", value=n_2, limit=n_max)
 
 
 MAX_SPEED = Rule(
@@ -524,7 +536,7 @@ MAX_SPEED = Rule(
     unit="rpm",
     value=lambda q, xp: q.speed_rpm,
     limit=lambda q, xp: q.max_speed_rpm,
-    requires=(published("max_speed_rpm", "maximum output speed n_max"),),
+    requires=(published("max_speed_rpm", N_("maximum output speed n_max")),),
     message=_max_speed_message,
 )
 """n_2 ≤ n_max (Table 515.1)."""
@@ -534,14 +546,7 @@ MAX_SPEED = Rule(
 
 
 def _inertia_ratio_message(q: Operands, status: Status, j_l: float, limit: float) -> str:
-    if status is Status.PASS:
-        return f"load inertia J_L = {j_l:.4g} kgm² ≤ 3·J_A = {limit:.4g} kgm²"
-    consequence = (
-        "the limit is binding for a highly dynamic application"
-        if status is Status.FAIL
-        else "recommended for highly dynamic applications only"
-    )
-    return f"load inertia J_L = {j_l:.4g} kgm² exceeds 3·J_A = {limit:.4g} kgm²: {consequence}"
+    return phrase(f"inertia_ratio.{status.value}", value=j_l, limit=limit)
 
 
 INERTIA_RATIO = Rule(
@@ -550,7 +555,7 @@ INERTIA_RATIO = Rule(
     unit="kgm²",
     value=lambda q, xp: q.load_inertia_kgm2,
     limit=lambda q, xp: INERTIA_RATIO_LIMIT * q.inertia_kgm2,
-    requires=(published("inertia_kgm2", "moment of inertia J_A"),),
+    requires=(published("inertia_kgm2", N_("moment of inertia J_A")),),
     binding=lambda q, xp: q.high_dynamics,
     message=_inertia_ratio_message,
 )
@@ -560,17 +565,16 @@ INERTIA_RATIO = Rule(
 # --- 3., 4. peak_torque, decel_torque: T_1, |T_3| ≤ T_max (Eq. 514.1) -----------------------
 
 
-def _torque_message(label: str) -> Message:
+def _torque_message(rule: str) -> Message:
     def message(q: Operands, status: Status, torque: float, t_max: float) -> str:
-        relation = "≤" if status is Status.PASS else "exceeds"
-        return f"{label} = {torque:.4g} Nm {relation} T_max = {t_max:.4g} Nm"
+        return phrase(f"{rule}.{_outcome(status)}", value=torque, limit=t_max)
 
     return message
 
 
 _TORQUE_REQUIRES = (
-    published("inertia_kgm2", "moment of inertia J_A"),  # T_1, T_3 need it
-    published("max_torque_nm", "maximum torque T_max"),
+    published("inertia_kgm2", N_("moment of inertia J_A")),  # T_1, T_3 need it
+    published("max_torque_nm", N_("maximum torque T_max")),
 )
 
 PEAK_TORQUE = Rule(
@@ -580,7 +584,7 @@ PEAK_TORQUE = Rule(
     value=lambda q, xp: abs(q.accel_torque_nm),
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
-    message=_torque_message("acceleration torque T_1"),
+    message=_torque_message("peak_torque"),
     lower_bound=lambda q, xp: q.accel_torque_floor_nm,
 )
 """|T_1| ≤ T_max (Eq. 514.1); T_1 is positive in the chapter's cycle, negative where a
@@ -593,7 +597,7 @@ DECEL_TORQUE = Rule(
     value=lambda q, xp: abs(q.decel_torque_nm),
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
-    message=_torque_message("deceleration torque |T_3|"),
+    message=_torque_message("decel_torque"),
     lower_bound=lambda q, xp: q.decel_torque_floor_nm,
 )
 """|T_3| ≤ T_max (Eq. 514.1): braking loads the gear as much as accelerating."""
@@ -615,40 +619,42 @@ def _continuous_speed(q: Operands, xp: Ops) -> Real:
 
 
 def _continuous_message(q: Operands, status: Status, t_rms: float, limit: float) -> str:
-    ok = status is Status.PASS
-    point = f"(n_av = {q.mean_speed_rpm:.4g} rpm, T_rms = {t_rms:.4g} Nm)"
+    outcome = _outcome(status)
+    n_av = q.mean_speed_rpm
     if q.has_zone:
         if math.isnan(limit):
-            return (
-                f"operating point {point} lies beyond the continuous-duty zone, "
-                f"which ends at {q.zone_max_speed_rpm:.4g} rpm"
+            return phrase(
+                "continuous_duty.beyond_zone",
+                value=t_rms,
+                mean_speed_rpm=n_av,
+                zone_max_speed_rpm=q.zone_max_speed_rpm,
             )
-        return (
-            f"operating point {point} lies {'inside' if ok else 'above'} the "
-            f"continuous-duty zone (limit {limit:.4g} Nm at n_av)"
-        )
+        return phrase(f"continuous_duty.{outcome}", value=t_rms, limit=limit, mean_speed_rpm=n_av)
     what = (
-        "allowable continuous torque"
+        N_("allowable continuous torque")
         if math.isnan(q.stall_torque_nm)
-        else "continuous stall torque T_0"
+        else N_("continuous stall torque T_0")
     )
     speed, speed_what = (
-        (q.continuous_speed_rpm, "allowable continuous speed")
+        (q.continuous_speed_rpm, N_("allowable continuous speed"))
         if not math.isnan(q.continuous_speed_rpm)
-        else (q.rated_speed_rpm, "rated speed")
+        else (q.rated_speed_rpm, N_("rated speed"))
     )
-    return (
-        f"approximate: operating point {point} {'within' if ok else 'outside'} "
-        f"{what} = {limit:.4g} Nm up to the {speed_what} {speed:.4g} rpm "
-        "(no continuous-duty zone published; continuous operation above that speed "
-        "is not allowed)"
+    return phrase(
+        f"continuous_duty.approximate_{outcome}",
+        value=t_rms,
+        limit=limit,
+        mean_speed_rpm=n_av,
+        what=what,
+        speed_rpm=speed,
+        speed_what=speed_what,
     )
 
 
 _CONTINUOUS_LIMIT_DATA = Requirement(
     any_of=("stall_torque_nm", "continuous_torque_nm"),
     unless="has_zone",
-    what="continuous-duty zone or continuous torque",
+    what=N_("continuous-duty zone or continuous torque"),
 )
 """The continuous limit's data, for the checks that compare with it (``_continuous_limit``)."""
 
@@ -659,12 +665,12 @@ CONTINUOUS_DUTY = Rule(
     value=lambda q, xp: q.rms_torque_nm,
     limit=_continuous_limit,
     requires=(
-        published("inertia_kgm2", "moment of inertia J_A (T_rms needs it)"),
+        published("inertia_kgm2", N_("moment of inertia J_A (T_rms needs it)")),
         _CONTINUOUS_LIMIT_DATA,
         Requirement(
             any_of=("continuous_speed_rpm", "rated_speed_rpm"),
             unless="has_zone",
-            what="continuous-duty zone or allowable continuous or rated speed",
+            what=N_("continuous-duty zone or allowable continuous or rated speed"),
         ),
     ),
     # A zone bounds the speed itself (NaN edge beyond it); without one, the published
@@ -691,27 +697,27 @@ peak speed (issue "The checks a sizing engineer signs", item 2).
 
 def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> str:
     tau, t_0 = q.thermal_time_constant_s, q.cycle_s
-    words = f"winding heating over the repeating cycle peaks at {peak:.4g} Nm as a torque"
-    if math.isnan(limit):
-        words += (
-            f", with n_av = {q.mean_speed_rpm:.4g} rpm beyond the continuous-duty zone, which "
-            f"ends at {q.zone_max_speed_rpm:.4g} rpm"
-        )
-    else:
-        relation = "≤" if status is Status.PASS else "exceeds"
-        words += f" {relation} the continuous limit {limit:.4g} Nm"
-    assumed = " assumed: not published for this actuator" if q.thermal_time_constant_assumed else ""
     ratio = t_0 / tau
-    regime = (
-        f"short against τ_th: T_rms = {q.rms_torque_nm:.4g} Nm governs"
-        if ratio <= 0.1
-        else f"not short against τ_th: its long segments govern, not T_rms = "
-        f"{q.rms_torque_nm:.4g} Nm"
+    model = phrase(
+        "thermal_peak.model",
+        tau_s=tau,
+        assumed=phrase("thermal_peak.assumed") if q.thermal_time_constant_assumed else None,
+        cycle_s=t_0,
+        ratio=ratio,
+        regime=phrase(
+            "thermal_peak.short" if ratio <= 0.1 else "thermal_peak.long",
+            rms_torque_nm=q.rms_torque_nm,
+        ),
     )
-    return (
-        f"{words} (first-order thermal model, τ_th = {tau:.4g} s{assumed}; cycle t_0 = "
-        f"{t_0:.4g} s = {ratio:.3g}·τ_th, {regime})"
-    )
+    if math.isnan(limit):
+        return phrase(
+            "thermal_peak.beyond_zone",
+            value=peak,
+            mean_speed_rpm=q.mean_speed_rpm,
+            zone_max_speed_rpm=q.zone_max_speed_rpm,
+            model=model,
+        )
+    return phrase(f"thermal_peak.{_outcome(status)}", value=peak, limit=limit, model=model)
 
 
 THERMAL_PEAK = Rule(
@@ -721,7 +727,7 @@ THERMAL_PEAK = Rule(
     value=lambda q, xp: q.thermal_torque_nm,
     limit=_continuous_limit,
     requires=(
-        published("inertia_kgm2", "moment of inertia J_A (the cycle's torques need it)"),
+        published("inertia_kgm2", N_("moment of inertia J_A (the cycle's torques need it)")),
         _CONTINUOUS_LIMIT_DATA,
     ),
     approximate=lambda q, xp: q.thermal_time_constant_assumed | xp.not_(q.has_zone),
@@ -757,11 +763,7 @@ approximate); the limit is approximate without a zone, as in ``continuous_duty``
 
 
 def _brake_message(q: Operands, status: Status, t_l: float, holding: float) -> str:
-    relation = "≤" if status is Status.PASS else "exceeds"
-    return (
-        f"load torque at standstill T_L = {t_l:.4g} Nm {relation} the brake's holding "
-        f"torque = {holding:.4g} Nm"
-    )
+    return phrase(f"brake_holding.{_outcome(status)}", value=t_l, limit=holding)
 
 
 BRAKE_HOLDING = Rule(
@@ -770,7 +772,7 @@ BRAKE_HOLDING = Rule(
     unit="Nm",
     value=lambda q, xp: q.load_torque_nm,
     limit=lambda q, xp: q.brake_holding_torque_nm,
-    requires=(published("brake_holding_torque_nm", "brake holding torque"),),
+    requires=(published("brake_holding_torque_nm", N_("brake holding torque")),),
     message=_brake_message,
 )
 """T_L ≤ the holding torque of the actuator's brake (CHA tables; FHA-C manual §4-2), for
@@ -831,24 +833,29 @@ def _rms_current_bound(q: Operands) -> float:
 
 
 def _current_message(q: Operands, status: Status, current: float, i_max: float) -> str:
-    relation = "≤" if status is Status.PASS else "exceeds"
-    no_load = _no_load_current(q, FLOAT_OPS)
-    words = (
-        f"peak motor current I = max(T_1, |T_3|)/k_T + I_NLR = {current:.4g} A {relation} "
-        f"I_max = {i_max:.4g} A"
-    )
     if math.isnan(q.no_load_starting_current_a) or math.isnan(q.no_load_current_constant_a_per_rpm):
-        words += " (approximate: the catalogue gives no no-load current, left out)"
+        no_load = phrase("drive_current.no_load_unknown")
     else:
-        words += f" (I_NLR = {no_load:.3g} A at n_2, K_INL at 30 °C)"
+        no_load = phrase(
+            "drive_current.no_load", no_load_current_a=float(_no_load_current(q, FLOAT_OPS))
+        )
+    rms = None
     if not math.isnan(q.rms_torque_nm):
-        words += f"; rms current ≤ {_rms_current_bound(q):.4g} A"
+        rms = phrase("drive_current.rms", rms_current_a=_rms_current_bound(q))
+    braking = None
     if not math.isnan(q.decel_torque_nm):
         energy = regenerative_energy_j(
             decel_torque_nm=q.decel_torque_nm, speed_rpm=q.speed_rpm, decel_s=q.decel_s
         )
-        words += f"; braking returns up to {energy:.4g} J per cycle to the drive"
-    return words
+        braking = phrase("drive_current.braking", energy_j=energy)
+    return phrase(
+        f"drive_current.{_outcome(status)}",
+        value=current,
+        limit=i_max,
+        no_load=no_load,
+        rms=rms,
+        braking=braking,
+    )
 
 
 DRIVE_CURRENT = Rule(
@@ -858,9 +865,9 @@ DRIVE_CURRENT = Rule(
     value=_peak_current,
     limit=lambda q, xp: q.max_current_a,
     requires=(
-        published("inertia_kgm2", "moment of inertia J_A (T_1 and T_3 need it)"),
-        published("torque_constant_nm_per_a", "torque constant k_T"),
-        published("max_current_a", "maximum current I_max"),
+        published("inertia_kgm2", N_("moment of inertia J_A (T_1 and T_3 need it)")),
+        published("torque_constant_nm_per_a", N_("torque constant k_T")),
+        published("max_current_a", N_("maximum current I_max")),
     ),
     approximate=lambda q, xp: (
         xp.isnan(q.no_load_starting_current_a) | xp.isnan(q.no_load_current_constant_a_per_rpm)
@@ -905,12 +912,13 @@ def _drive_voltage(q: Operands, xp: Ops) -> Real:
 
 
 def _voltage_message(q: Operands, status: Status, volts: float, available: float) -> str:
-    relation = "≤" if status is Status.PASS else "exceeds"
-    return (
-        f"U = √((n·i·K_E + I_max·R)² + (ω·L·I_max)²) = {volts:.4g} V_rms at n_2 = "
-        f"{q.speed_rpm:.4g} rpm {relation} {available:.4g} V_rms from a "
-        f"{q.dc_bus_voltage_v:g} V DC bus (space-vector modulation); Eq. 521.2 as printed "
-        f"(no inductive drop) gives {_resistive_sum(q):.4g} V_rms"
+    return phrase(
+        f"drive_voltage.{_outcome(status)}",
+        value=volts,
+        limit=available,
+        speed_rpm=q.speed_rpm,
+        dc_bus_voltage_v=q.dc_bus_voltage_v,
+        printed_v=float(_resistive_sum(q)),
     )
 
 
@@ -921,12 +929,12 @@ DRIVE_VOLTAGE = Rule(
     value=_drive_voltage,
     limit=lambda q, xp: q.dc_bus_voltage_v / SQRT2,
     requires=(
-        published("motor_voltage_constant_v_per_krpm", "motor voltage constant K_E (V_rms)"),
-        published("max_current_a", "maximum current I_max"),
-        published("resistance_line_ohm", "line-to-line resistance R"),
-        published("inductance_line_h", "line-to-line inductance L"),
-        published("pole_pairs", "number of pole pairs p"),
-        published("dc_bus_voltage_v", "DC bus class"),
+        published("motor_voltage_constant_v_per_krpm", N_("motor voltage constant K_E (V_rms)")),
+        published("max_current_a", N_("maximum current I_max")),
+        published("resistance_line_ohm", N_("line-to-line resistance R")),
+        published("inductance_line_h", N_("line-to-line inductance L")),
+        published("pole_pairs", N_("number of pole pairs p")),
+        published("dc_bus_voltage_v", N_("DC bus class")),
     ),
     message=_voltage_message,
 )
@@ -963,15 +971,17 @@ def _moment_limit(q: Operands, xp: Ops) -> Real:
 
 
 def _moment_message(q: Operands, status: Status, moment: float, limit: float) -> str:
-    relation = "≤" if status is Status.PASS else "exceeds"
     what = (
-        "the allowable dynamic tilting moment M_dyn"
+        N_("the allowable dynamic tilting moment M_dyn")
         if math.isnan(q.bearing_moment_load_nm)
-        else "the allowable moment load"
+        else N_("the allowable moment load")
     )
-    return (
-        f"tilting moment M = F_r·(L_r + R) + F_a·L_a = {moment:.4g} Nm {relation} {what} "
-        f"= {limit:.4g} Nm (R = {q.bearing_offset_m * 1000:.3g} mm)"
+    return phrase(
+        f"bearing_moment.{_outcome(status)}",
+        value=moment,
+        limit=limit,
+        what=what,
+        offset_mm=q.bearing_offset_m * 1000,
     )
 
 
@@ -982,10 +992,10 @@ BEARING_MOMENT = Rule(
     value=lambda q, xp: _moment(q),
     limit=_moment_limit,
     requires=(
-        published("bearing_offset_m", "output bearing offset R"),
+        published("bearing_offset_m", N_("output bearing offset R")),
         Requirement(
             any_of=("bearing_moment_load_nm", "bearing_dynamic_tilting_moment_nm"),
-            what="allowable tilting moment of the output bearing",
+            what=N_("allowable tilting moment of the output bearing"),
         ),
     ),
     message=_moment_message,
@@ -1007,11 +1017,13 @@ def _static_load(q: Operands) -> Real:
 def _static_message(q: Operands, status: Status, needed: float, c_0: float) -> str:
     p_0 = _static_load(q)
     f_s = c_0 / p_0 if p_0 > 0 else math.inf
-    relation = "≥" if status is Status.PASS else "below"
-    return (
-        f"static safety factor f_s = C_0/P_0 = {c_0:.4g} N / {p_0:.4g} N = {f_s:.3g} "
-        f"{relation} the required {q.static_safety_min:.3g} "
-        f"(P_0 = F_r + 2M/d_p + 0.44·F_a)"
+    return phrase(
+        f"bearing_static_safety.{_outcome(status)}",
+        value=needed,
+        limit=c_0,
+        p_0_n=float(p_0),
+        f_s=float(f_s),
+        f_s_min=q.static_safety_min,
     )
 
 
@@ -1022,9 +1034,9 @@ BEARING_STATIC = Rule(
     value=lambda q, xp: q.static_safety_min * _static_load(q),
     limit=lambda q, xp: q.bearing_static_load_rating_n,
     requires=(
-        published("bearing_pitch_diameter_m", "output bearing pitch circle diameter d_p"),
-        published("bearing_offset_m", "output bearing offset R"),
-        published("bearing_static_load_rating_n", "output bearing static load rating C_0"),
+        published("bearing_pitch_diameter_m", N_("output bearing pitch circle diameter d_p")),
+        published("bearing_offset_m", N_("output bearing offset R")),
+        published("bearing_static_load_rating_n", N_("output bearing static load rating C_0")),
     ),
     message=_static_message,
 )
@@ -1058,12 +1070,15 @@ def _life_message(q: Operands, status: Status, needed: float, c: float) -> str:
         equivalent_load_n=p_c,
         mean_speed_rpm=q.mean_speed_rpm,
     )
-    relation = "≥" if status is Status.PASS else "below"
-    return (
-        f"output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life:.4g} h at "
-        f"n_av = {q.mean_speed_rpm:.4g} rpm {relation} the required {q.required_life_h:.4g} h "
-        f"(P_c = {p_c:.4g} N, f_w = {q.load_factor:.3g}; C needed {needed:.4g} N, "
-        f"C = {c:.4g} N)"
+    return phrase(
+        f"bearing_life.{_outcome(status)}",
+        value=needed,
+        limit=c,
+        life_h=float(life),
+        mean_speed_rpm=q.mean_speed_rpm,
+        required_life_h=q.required_life_h,
+        p_c_n=float(p_c),
+        load_factor=q.load_factor,
     )
 
 
@@ -1074,9 +1089,9 @@ BEARING_LIFE = Rule(
     value=_required_rating,
     limit=lambda q, xp: q.bearing_dynamic_load_rating_n,
     requires=(
-        published("bearing_pitch_diameter_m", "output bearing pitch circle diameter d_p"),
-        published("bearing_offset_m", "output bearing offset R"),
-        published("bearing_dynamic_load_rating_n", "output bearing dynamic load rating C"),
+        published("bearing_pitch_diameter_m", N_("output bearing pitch circle diameter d_p")),
+        published("bearing_offset_m", N_("output bearing offset R")),
+        published("bearing_dynamic_load_rating_n", N_("output bearing dynamic load rating C")),
     ),
     message=_life_message,
 )

@@ -15,8 +15,9 @@ from typing import Any
 
 from pydantic import ConfigDict, Field, field_validator
 
+from actuator_selection.core.check_messages import jsonable_params
 from actuator_selection.core.selection import Candidate, Check, Selection, Status, Verdict
-from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.controllers import DriveOptionOut
 from actuator_selection.schemas.selections import (
@@ -162,8 +163,9 @@ _TEXT: dict[Status | Verdict, str] = {e: e.value for e in (*Status, *Verdict)}
 """Enum values by member: a dict lookup is several times cheaper than ``.value``."""
 
 
-def check_body(check: Check) -> dict[str, Any]:
-    """``CheckOut.from_core(check).model_dump(mode="json")``, without building the model."""
+def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
+    """``CheckOut.from_core(check, localize).model_dump(mode="json")``, without building the
+    model."""
     value, limit = check.value, check.limit
     margin, utilisation = check.margin_percent, check.utilisation
     return {
@@ -173,7 +175,9 @@ def check_body(check: Check) -> dict[str, Any]:
         "limit": None if limit is None else float(limit),
         "unit": check.unit,
         "reference": check.reference,
-        "message": check.message,
+        "message": localize(check.message),
+        "message_code": message_code(check.message),
+        "message_params": jsonable_params(check.message),
         "approximate": check.approximate,
         "margin_percent": None if margin is None else float(margin),
         "utilisation": None if utilisation is None else float(utilisation),
@@ -187,6 +191,7 @@ def candidate_body(
     controllers: list[dict[str, Any]] | None,
     controllers_excluded: int,
     controllers_note: str,
+    localize: Localize = english,
 ) -> dict[str, Any]:
     """``CandidateOut.from_core(...)`` as a JSON-ready dict; ``checks`` and ``controllers``
     only when given."""
@@ -201,10 +206,10 @@ def candidate_body(
         "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
         "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
         "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
-        "reasons": list(candidate.reasons),
+        "reasons": [localize(r) for r in candidate.reasons],
     }
     if include_checks:
-        body["checks"] = [check_body(c) for c in candidate.checks]
+        body["checks"] = [check_body(c, localize) for c in candidate.checks]
     if controllers is not None:
         body["controllers"] = controllers
     body["controllers_excluded"] = controllers_excluded

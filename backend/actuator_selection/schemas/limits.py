@@ -6,8 +6,10 @@ from typing import Any, Literal
 
 from pydantic import ConfigDict, Field
 
+from actuator_selection.core.check_messages import jsonable_params
 from actuator_selection.core.inverse import Limit
 from actuator_selection.core.selection import Application
+from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.schemas.common import ResponseModel
 from actuator_selection.schemas.selections import (
     WORKED_EXAMPLE,
@@ -31,7 +33,13 @@ class LimitingCheck(ResponseModel):
 
     name: str
     reference: str
-    message: str
+    message: str = Field(description="the check in words there, in the answer's language")
+    message_code: str | None = Field(
+        default=None, description="stable code of the message, as a check's `message_code`"
+    )
+    message_params: dict[str, Any] | None = Field(
+        default=None, description="the values the message names, as a check's `message_params`"
+    )
 
 
 class LimitOut(ResponseModel):
@@ -64,9 +72,16 @@ class LimitsOut(ResponseModel):
 
     @classmethod
     def build(
-        cls, *, model: str, catalogue_version: int, app: Application, found: tuple[Limit, ...]
+        cls,
+        *,
+        model: str,
+        catalogue_version: int,
+        app: Application,
+        found: tuple[Limit, ...],
+        localize: Localize = english,
     ) -> LimitsOut:
-        """The answer from the core's limits; references from the application's rules."""
+        """The answer from the core's limits; references from the application's rules;
+        messages in words by ``localize``."""
         reference = {rule.name: rule.reference for rule in app.rules}
         out: list[dict[str, Any]] = [
             {
@@ -76,7 +91,13 @@ class LimitsOut(ResponseModel):
                 "unit": limit.unit,
                 "verdict": None if limit.verdict is None else limit.verdict.value,
                 "limiting_checks": [
-                    {"name": name, "reference": reference.get(name, ""), "message": message}
+                    {
+                        "name": name,
+                        "reference": reference.get(name, ""),
+                        "message": localize(message),
+                        "message_code": message_code(message),
+                        "message_params": jsonable_params(message),
+                    }
                     for name, message in zip(limit.limiting_checks, limit.messages, strict=True)
                 ],
                 "note": limit.note,

@@ -18,7 +18,7 @@ from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_loa
 from actuator_selection.core.motion import MAX_SEGMENTS, Motion, Profile, Segment, trapezoid
 from actuator_selection.core.selection import Application, Candidate
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.checks import CheckOut, Localize, english
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
     MAX_INERTIA_KGM2,
@@ -603,8 +603,10 @@ class CandidateDetailOut(CandidateFigures):
         profile: Profile,
         drive: DriveOptions,
         actuator: ActuatorOut,
+        localize: Localize = english,
     ) -> CandidateDetailOut:
-        """The detail of one candidate with its drive options."""
+        """The detail of one candidate with its drive options, its messages in words by
+        ``localize``."""
         t = candidate.torques
         a = candidate.actuator
         j_a = a.inertia_kgm2
@@ -629,8 +631,8 @@ class CandidateDetailOut(CandidateFigures):
             constant_torque_nm=t.constant_torque_nm if t else None,
             decel_torque_nm=t.decel_torque_nm if t else None,
             rms_torque_nm=t.rms_torque_nm if t else None,
-            reasons=list(candidate.reasons),
-            checks=[CheckOut.from_core(c) for c in candidate.checks],
+            reasons=[localize(r) for r in candidate.reasons],
+            checks=[CheckOut.from_core(c, localize) for c in candidate.checks],
             controllers=DriveOptionBodies().controllers(drive),
             controllers_excluded=drive.excluded,
             controllers_note=controllers_note(drive),

@@ -6,12 +6,15 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.inverse import limits
+from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.selections import stored_candidate
 
 
-def solve_limits(body: LimitsRequest, catalogue: CatalogueSnapshot) -> LimitsOut:
+def solve_limits(
+    body: LimitsRequest, catalogue: CatalogueSnapshot, localize: Localize = english
+) -> LimitsOut:
     """Shortest pause, shortest t_1 and largest J_L for ``body.model`` (``core/inverse.py``)."""
     actuator = next(iter(catalogue.actuators_of([body.model])), None)
     if actuator is None:
@@ -22,11 +25,16 @@ def solve_limits(body: LimitsRequest, catalogue: CatalogueSnapshot) -> LimitsOut
         catalogue_version=catalogue.version,
         app=app,
         found=limits(actuator, app),
+        localize=localize,
     )
 
 
 def stored_limits(
-    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str
+    session: Session,
+    catalogue: CatalogueSnapshot,
+    selection_id: str,
+    model: str,
+    localize: Localize = english,
 ) -> LimitsOut:
     """The limits of a stored selection's load case for one of its candidates."""
     body, actuator = stored_candidate(session, catalogue, selection_id, model, what="the limits")
@@ -36,4 +44,5 @@ def stored_limits(
         catalogue_version=catalogue.version,
         app=app,
         found=limits(actuator, app),
+        localize=localize,
     )

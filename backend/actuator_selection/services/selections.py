@@ -43,6 +43,7 @@ from actuator_selection.core.errors import ConflictError, NotFoundError
 from actuator_selection.core.selection import Application, Verdict, evaluate, select
 from actuator_selection.db.repositories import CatalogueRepository, SelectionRepository
 from actuator_selection.schemas.actuators import ActuatorOut
+from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.output_load import output_bearing_note
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
@@ -362,10 +363,14 @@ def stored_candidate(
 
 
 def candidate_detail(
-    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str
+    session: Session,
+    catalogue: CatalogueSnapshot,
+    selection_id: str,
+    model: str,
+    localize: Localize = english,
 ) -> CandidateDetailOut:
     """One candidate of a stored selection in full, computed again from its load case
-    (:func:`stored_candidate`)."""
+    (:func:`stored_candidate`), its check messages in words by ``localize``."""
     body, actuator = stored_candidate(session, catalogue, selection_id, model, what="the detail")
     record = CatalogueRepository(session).actuator(model)
     if record is None:  # pragma: no cover - the snapshot and the table agree
@@ -379,4 +384,5 @@ def candidate_detail(
         profile=app.profile,
         drive=DriveContext(catalogue).options(actuator, speed_rpm=app.profile.peak_speed_rpm),
         actuator=ActuatorOut.from_record(record),
+        localize=localize,
     )

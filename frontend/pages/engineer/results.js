@@ -16,6 +16,7 @@ import {
   openChecks,
   shortCheckLabel,
 } from "../../lib/checks.js";
+import { answerLanguage } from "../../lib/api.js";
 import { h, notice, sym } from "../../lib/dom.js";
 import { dateTime, num, plainSymbols, qty } from "../../lib/format.js";
 import { translate, translateReference, unitText } from "../../lib/i18n.js";
@@ -197,6 +198,7 @@ function reasonList(sel, candidate, lang, { short = false } = {}) {
 
 /** The checks that did not pass in the server's words (the detail's), and any further reason it gives. */
 function detailReasonList(detail, lang) {
+  const said = answerLanguage(detail);
   const open = (Array.isArray(detail.checks) ? detail.checks : []).filter((c) => c && c.status !== "pass");
   const messages = new Set(open.map((c) => c.message));
   const further = (Array.isArray(detail.reasons) ? detail.reasons : []).filter(
@@ -206,9 +208,9 @@ function detailReasonList(detail, lang) {
     "ul",
     { class: "reasons" },
     open.map((c) =>
-      reasonItem(c, lang, checkLabel(c.name, lang), h("br"), sym(c.message, { class: "api-message", lang: "en" })),
+      reasonItem(c, lang, checkLabel(c.name, lang), h("br"), sym(c.message, { class: "api-message", lang: said })),
     ),
-    further.map((r) => h("li", {}, sym(r, { class: "api-message", lang: "en" }))),
+    further.map((r) => h("li", {}, sym(r, { class: "api-message", lang: said }))),
   );
 }
 
@@ -554,7 +556,7 @@ function checkRows(sel, candidate, detail) {
 }
 
 function messageCell(check, view, lang) {
-  if (typeof check.message === "string") return sym(check.message, { lang: "en" });
+  if (typeof check.message === "string") return sym(check.message, { lang: answerLanguage(readyDetail(view)) });
   if (check.status === "no_data") return checkFinding(check, check.unit, lang);
   if (view?.status === "loading") {
     return h(

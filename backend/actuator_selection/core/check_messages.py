@@ -1,0 +1,264 @@
+"""The flowchart's check messages: a stable code and parameters beside the English text.
+
+A rule's message (:attr:`~actuator_selection.core.checks.Rule.message`) is a
+:class:`Phrase`: a ``str`` holding the English text, as the checks have always said it,
+that also carries :attr:`Phrase.code` (a name in :data:`CHECK_MESSAGES`, part of the
+API contract: add codes, never rename or reuse one) and :attr:`Phrase.params`, the
+values the template is filled with. The templates are ``str.format`` strings with
+format specs (``{value:.4g}``) and the msgids of the gettext catalogs: the API renders
+them in the request's language (``api/messages.py``, :func:`render` with a language's
+number format and translations).
+
+A parameter is a number (in the unit its name or the check gives), a :class:`Text`
+(English words, translated where rendered), a nested :class:`Phrase` (a clause of its
+own code and params), or None (a clause left out: rendered as nothing).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from string import Formatter
+from typing import Any, Final
+
+from actuator_selection.core.messages import N_, Text
+
+
+class Phrase(str):
+    """English text with the code and params it was rendered from (:func:`phrase`)."""
+
+    code: str
+    params: Mapping[str, Any]
+
+    def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:
+        # str.format in C: a Phrase among the params formats as its English text; a clause
+        # left out (None) as nothing.
+        fields = {k: "" if v is None else v for k, v in params.items()}
+        text = str.__new__(cls, CHECK_MESSAGES[code].format_map(fields))
+        text.code = code
+        text.params = params
+        return text
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (Phrase, (self.code, dict(self.params)))
+
+
+def phrase(code: str, **params: Any) -> Phrase:
+    """The message ``code`` filled with ``params``; it reads as the English text."""
+    return Phrase(code, params)
+
+
+NumberFormat = Callable[[float, str], str]
+"""A number as a language writes it, from the value and its format spec."""
+
+
+class _Renderer(Formatter):
+    """``str.format`` whose fields are numbers, words and clauses in one language."""
+
+    def __init__(self, translate: Callable[[str], str], number: NumberFormat | None) -> None:
+        self._translate = translate
+        self._number = number
+
+    def format_field(self, value: Any, format_spec: str) -> str:
+        if value is None:
+            return ""
+        if isinstance(value, Phrase):
+            return self.render(value)
+        if isinstance(value, Text):
+            return self._translate(value)
+        if (
+            self._number is not None
+            and isinstance(value, int | float)
+            and not isinstance(value, bool)
+        ):
+            return self._number(float(value), format_spec)
+        return str(format(value, format_spec))
+
+    def render(self, message: Phrase) -> str:
+        return self.vformat(self._translate(CHECK_MESSAGES[message.code]), (), message.params)
+
+
+def render(
+    message: str, *, translate: Callable[[str], str], number: NumberFormat | None = None
+) -> str:
+    """``message`` with its template and words passed through ``translate`` and its
+    numbers written by ``number`` (``format(value, spec)`` where None); a message that
+    is no :class:`Phrase` (a rule written elsewhere) stays as it is."""
+    if not isinstance(message, Phrase):
+        return message
+    return _Renderer(translate, number).render(message)
+
+
+def jsonable_params(message: str) -> dict[str, Any] | None:
+    """The params of ``message`` as JSON carries them: clauses as ``{"code", "params"}``,
+    words as their English text, ±∞ and NaN as text; None for a message without a code."""
+    if not isinstance(message, Phrase):
+        return None
+
+    def one(value: Any) -> Any:
+        if isinstance(value, Phrase):
+            return {"code": value.code, "params": jsonable_params(value)}
+        if isinstance(value, str):
+            return str(value)
+        if isinstance(value, float) and not math.isfinite(value):
+            return repr(value)
+        return value
+
+    return {k: one(v) for k, v in message.params.items()}
+
+
+CHECK_MESSAGES: Final[Mapping[str, str]] = {
+    # Shared
+    "no_data": N_("no data: the catalogue gives no {what} for this actuator"),
+    "fail_for_any_inertia": N_(
+        "{message}, at its least for any J_A ≥ 0 (the catalogue gives no J_A for this actuator)"
+    ),
+    # 1. max_speed
+    "max_speed.pass": N_("load speed n_2 = {value:.4g} rpm ≤ n_max = {limit:.4g} rpm"),
+    "max_speed.fail": N_("load speed n_2 = {value:.4g} rpm exceeds n_max = {limit:.4g} rpm"),
+    # 2. inertia_ratio
+    "inertia_ratio.pass": N_("load inertia J_L = {value:.4g} kgm² ≤ 3·J_A = {limit:.4g} kgm²"),
+    "inertia_ratio.fail": N_(
+        "load inertia J_L = {value:.4g} kgm² exceeds 3·J_A = {limit:.4g} kgm²: the limit is "
+        "binding for a highly dynamic application"
+    ),
+    "inertia_ratio.warn": N_(
+        "load inertia J_L = {value:.4g} kgm² exceeds 3·J_A = {limit:.4g} kgm²: recommended "
+        "for highly dynamic applications only"
+    ),
+    # 3., 4. peak_torque, decel_torque
+    "peak_torque.pass": N_("acceleration torque T_1 = {value:.4g} Nm ≤ T_max = {limit:.4g} Nm"),
+    "peak_torque.fail": N_(
+        "acceleration torque T_1 = {value:.4g} Nm exceeds T_max = {limit:.4g} Nm"
+    ),
+    "decel_torque.pass": N_("deceleration torque |T_3| = {value:.4g} Nm ≤ T_max = {limit:.4g} Nm"),
+    "decel_torque.fail": N_(
+        "deceleration torque |T_3| = {value:.4g} Nm exceeds T_max = {limit:.4g} Nm"
+    ),
+    # 5. continuous_duty
+    "continuous_duty.beyond_zone": N_(
+        "operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) lies "
+        "beyond the continuous-duty zone, which ends at {zone_max_speed_rpm:.4g} rpm"
+    ),
+    "continuous_duty.pass": N_(
+        "operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) lies "
+        "inside the continuous-duty zone (limit {limit:.4g} Nm at n_av)"
+    ),
+    "continuous_duty.fail": N_(
+        "operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) lies "
+        "above the continuous-duty zone (limit {limit:.4g} Nm at n_av)"
+    ),
+    "continuous_duty.approximate_pass": N_(
+        "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} "
+        "Nm) within {what} = {limit:.4g} Nm up to the {speed_what} {speed_rpm:.4g} rpm (no "
+        "continuous-duty zone published; continuous operation above that speed is not "
+        "allowed)"
+    ),
+    "continuous_duty.approximate_fail": N_(
+        "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} "
+        "Nm) outside {what} = {limit:.4g} Nm up to the {speed_what} {speed_rpm:.4g} rpm (no "
+        "continuous-duty zone published; continuous operation above that speed is not "
+        "allowed)"
+    ),
+    # 6. thermal_peak
+    "thermal_peak.beyond_zone": N_(
+        "winding heating over the repeating cycle peaks at {value:.4g} Nm as a torque, with "
+        "n_av = {mean_speed_rpm:.4g} rpm beyond the continuous-duty zone, which ends at "
+        "{zone_max_speed_rpm:.4g} rpm ({model})"
+    ),
+    "thermal_peak.pass": N_(
+        "winding heating over the repeating cycle peaks at {value:.4g} Nm as a torque ≤ the "
+        "continuous limit {limit:.4g} Nm ({model})"
+    ),
+    "thermal_peak.fail": N_(
+        "winding heating over the repeating cycle peaks at {value:.4g} Nm as a torque exceeds "
+        "the continuous limit {limit:.4g} Nm ({model})"
+    ),
+    "thermal_peak.model": N_(
+        "first-order thermal model, τ_th = {tau_s:.4g} s{assumed}; cycle t_0 = {cycle_s:.4g} s "
+        "= {ratio:.3g}·τ_th, {regime}"
+    ),
+    "thermal_peak.assumed": N_(" assumed: not published for this actuator"),
+    "thermal_peak.short": N_("short against τ_th: T_rms = {rms_torque_nm:.4g} Nm governs"),
+    "thermal_peak.long": N_(
+        "not short against τ_th: its long segments govern, not T_rms = {rms_torque_nm:.4g} Nm"
+    ),
+    # brake_holding
+    "brake_holding.pass": N_(
+        "load torque at standstill T_L = {value:.4g} Nm ≤ the brake's holding torque = "
+        "{limit:.4g} Nm"
+    ),
+    "brake_holding.fail": N_(
+        "load torque at standstill T_L = {value:.4g} Nm exceeds the brake's holding torque = "
+        "{limit:.4g} Nm"
+    ),
+    # drive_current
+    "drive_current.pass": N_(
+        "peak motor current I = max(T_1, |T_3|)/k_T + I_NLR = {value:.4g} A ≤ I_max = "
+        "{limit:.4g} A{no_load}{rms}{braking}"
+    ),
+    "drive_current.fail": N_(
+        "peak motor current I = max(T_1, |T_3|)/k_T + I_NLR = {value:.4g} A exceeds I_max = "
+        "{limit:.4g} A{no_load}{rms}{braking}"
+    ),
+    "drive_current.no_load_unknown": N_(
+        " (approximate: the catalogue gives no no-load current, left out)"
+    ),
+    "drive_current.no_load": N_(" (I_NLR = {no_load_current_a:.3g} A at n_2, K_INL at 30 °C)"),
+    "drive_current.rms": N_("; rms current ≤ {rms_current_a:.4g} A"),
+    "drive_current.braking": N_("; braking returns up to {energy_j:.4g} J per cycle to the drive"),
+    # drive_voltage
+    "drive_voltage.pass": N_(
+        "U = √((n·i·K_E + I_max·R)² + (ω·L·I_max)²) = {value:.4g} V_rms at n_2 = "
+        "{speed_rpm:.4g} rpm ≤ {limit:.4g} V_rms from a {dc_bus_voltage_v:g} V DC bus "
+        "(space-vector modulation); Eq. 521.2 as printed (no inductive drop) gives "
+        "{printed_v:.4g} V_rms"
+    ),
+    "drive_voltage.fail": N_(
+        "U = √((n·i·K_E + I_max·R)² + (ω·L·I_max)²) = {value:.4g} V_rms at n_2 = "
+        "{speed_rpm:.4g} rpm exceeds {limit:.4g} V_rms from a {dc_bus_voltage_v:g} V DC bus "
+        "(space-vector modulation); Eq. 521.2 as printed (no inductive drop) gives "
+        "{printed_v:.4g} V_rms"
+    ),
+    # bearing_moment
+    "bearing_moment.pass": N_(
+        "tilting moment M = F_r·(L_r + R) + F_a·L_a = {value:.4g} Nm ≤ {what} = {limit:.4g} Nm "
+        "(R = {offset_mm:.3g} mm)"
+    ),
+    "bearing_moment.fail": N_(
+        "tilting moment M = F_r·(L_r + R) + F_a·L_a = {value:.4g} Nm exceeds {what} = "
+        "{limit:.4g} Nm (R = {offset_mm:.3g} mm)"
+    ),
+    # bearing_static_safety
+    "bearing_static_safety.pass": N_(
+        "static safety factor f_s = C_0/P_0 = {limit:.4g} N / {p_0_n:.4g} N = {f_s:.3g} ≥ the "
+        "required {f_s_min:.3g} (P_0 = F_r + 2M/d_p + 0.44·F_a)"
+    ),
+    "bearing_static_safety.fail": N_(
+        "static safety factor f_s = C_0/P_0 = {limit:.4g} N / {p_0_n:.4g} N = {f_s:.3g} below "
+        "the required {f_s_min:.3g} (P_0 = F_r + 2M/d_p + 0.44·F_a)"
+    ),
+    # bearing_life
+    "bearing_life.pass": N_(
+        "output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life_h:.4g} h at "
+        "n_av = {mean_speed_rpm:.4g} rpm ≥ the required {required_life_h:.4g} h (P_c = "
+        "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N)"
+    ),
+    "bearing_life.fail": N_(
+        "output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life_h:.4g} h at "
+        "n_av = {mean_speed_rpm:.4g} rpm below the required {required_life_h:.4g} h (P_c = "
+        "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N)"
+    ),
+}
+"""Code → English template of every check message (and of the clauses they hold)."""
+
+CHECK_WORDS: Final = (
+    N_("the allowable dynamic tilting moment M_dyn"),
+    N_("the allowable moment load"),
+    N_("allowable continuous torque"),
+    N_("continuous stall torque T_0"),
+    N_("allowable continuous speed"),
+    N_("rated speed"),
+)
+"""Words the check messages take as params (:class:`Text`); a requirement's ``what``
+(``core/checks.py``) is marked where it is written."""

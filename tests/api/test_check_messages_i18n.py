@@ -1,0 +1,308 @@
+"""The flowchart's check messages in the user's language: a stable code and params beside the
+text, German by Accept-Language with German numbers and min⁻¹, English unchanged."""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import math
+import string
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from babel.messages.pofile import read_po
+from fastapi.testclient import TestClient
+from tests import worked_example
+
+from actuator_selection.api.messages import catalog_path, check_templates, render_check
+from actuator_selection.core.check_messages import CHECK_MESSAGES, Phrase
+from actuator_selection.core.checks import (
+    BEARING_LIFE,
+    BEARING_RULES,
+    BRAKE_HOLDING,
+    DRIVE_RULES,
+    RULES,
+    Operands,
+    Rule,
+    Status,
+    _floor_message,
+)
+from actuator_selection.core.selection import evaluate, operands
+
+SELECTIONS = "/api/v1/selections"
+EXAMPLE_REQUEST: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+    "high_dynamics": True,
+    "models": ["FHA-25C-50-L"],
+}
+MODEL = "FHA-25C-50-L"
+
+ENGLISH_WORDS = (
+    " the ",
+    "rpm",
+    "load ",
+    "torque ",
+    "speed",
+    "exceeds",
+    "approximate",
+    "inside",
+    "above",
+    "within",
+    "outside",
+    "beyond",
+    "winding",
+    "catalogue",
+    "no data",
+    "for this actuator",
+    "at its least",
+    "governs",
+    "short against",
+    "braking",
+    "allowable",
+    "bearing",
+    "required",
+    "below",
+    "holding",
+    "current",
+    "moment of inertia",
+    "maximum",
+    "continuous",
+    "published",
+    "needs",
+)
+"""Words no German check message may contain."""
+
+
+def _german_catalog() -> dict[str, str]:
+    with catalog_path("de").open("rb") as file:
+        catalog = read_po(file, locale="de")
+    return {str(m.id): str(m.string) for m in catalog if m.id}
+
+
+def _fields(template: str) -> set[tuple[str, str]]:
+    return {(name, spec or "") for _, name, spec, _ in string.Formatter().parse(template) if name}
+
+
+def _assert_german(text: str) -> None:
+    for word in ENGLISH_WORDS:
+        assert word not in text, (word, text)
+
+
+# --- the API ---------------------------------------------------------------------------
+
+
+@pytest.fixture
+def selection_id(client: TestClient) -> str:
+    response = client.post(SELECTIONS, json=EXAMPLE_REQUEST)
+    assert response.status_code == 201, response.text
+    return str(response.json()["id"])
+
+
+def _detail(client: TestClient, selection_id: str, language: str | None) -> Any:
+    headers = {"Accept-Language": language} if language else {}
+    response = client.get(f"{SELECTIONS}/{selection_id}/candidates/{MODEL}", headers=headers)
+    assert response.status_code == 200, response.text
+    return response
+
+
+def test_the_worked_example_in_german_and_english(client: TestClient, selection_id: str) -> None:
+    english = _detail(client, selection_id, "en")
+    german = _detail(client, selection_id, "de-DE,de;q=0.9,en;q=0.5")
+    assert english.headers["content-language"] == "en"
+    assert german.headers["content-language"] == "de"
+    en_checks, de_checks = english.json()["checks"], german.json()["checks"]
+    assert [(c["name"], c["message_code"], c["message_params"]) for c in en_checks] == [
+        (c["name"], c["message_code"], c["message_params"]) for c in de_checks
+    ]
+    de = {c["name"]: c for c in de_checks}
+    assert de["peak_torque"]["message_code"] == "peak_torque.pass"
+    assert de["peak_torque"]["message_params"]["limit"] == 151
+    assert de["peak_torque"]["message_params"]["value"] == pytest.approx(95.48, abs=0.005)
+    assert de["peak_torque"]["message"] == "Beschleunigungsmoment T_1 = 95,48 Nm ≤ T_max = 151 Nm"
+    assert de["decel_torque"]["message"] == "Verzögerungsmoment |T_3| = 85,48 Nm ≤ T_max = 151 Nm"
+    assert de["max_speed"]["message"] == "Lastdrehzahl n_2 = 40 min⁻¹ ≤ n_max = 90 min⁻¹"
+    assert de["continuous_duty"]["message_code"] == "no_data"
+    assert de["continuous_duty"]["message_params"] == {
+        "what": "continuous-duty zone or continuous torque"  # params stay English
+    }
+    for check in de_checks:
+        _assert_german(check["message"])
+    reasons = german.json()["reasons"]
+    assert reasons == [de["continuous_duty"]["message"]]
+    assert "Dauerbetriebsbereich oder Dauerdrehmoment" in reasons[0]
+
+
+def test_the_english_answer_is_the_scalar_flowcharts_text(
+    client: TestClient, selection_id: str
+) -> None:
+    """Without Accept-Language and with English, the messages are the core's, unchanged."""
+    expected = evaluate(worked_example.FHA_25C_50_L, worked_example.APPLICATION)
+    for language in (None, "en", "fr"):
+        body = _detail(client, selection_id, language).json()
+        assert [c["message"] for c in body["checks"]] == [c.message for c in expected.checks]
+        assert body["reasons"] == list(expected.reasons)
+    assert expected.checks[2].message == "acceleration torque T_1 = 95.48 Nm ≤ T_max = 151 Nm"
+
+
+def test_the_batch_answers_reasons_and_checks_in_german(client: TestClient) -> None:
+    case = {k: v for k, v in EXAMPLE_REQUEST.items() if k != "models"} | {"models": [MODEL]}
+    body = {"cases": [case], "include_checks": True}
+    english = client.post(f"{SELECTIONS}/batch", json=body).json()
+    response = client.post(f"{SELECTIONS}/batch", json=body, headers={"Accept-Language": "de"})
+    assert response.status_code == 200, response.text
+    assert response.headers["content-language"] == "de"
+    (candidate,) = response.json()["results"][0]["candidates"]
+    (en_candidate,) = english["results"][0]["candidates"]
+    assert [c["message_code"] for c in candidate["checks"]] == [
+        c["message_code"] for c in en_candidate["checks"]
+    ]
+    for text in (*candidate["reasons"], *(c["message"] for c in candidate["checks"])):
+        _assert_german(text)
+    assert "95,48 Nm" in candidate["checks"][2]["message"]
+
+
+def test_the_limits_name_their_checks_in_german(client: TestClient) -> None:
+    response = client.post(
+        f"{SELECTIONS}/limits",
+        json=EXAMPLE_REQUEST | {"model": MODEL},
+        headers={"Accept-Language": "de"},
+    )
+    assert response.status_code == 200, response.text
+    assert response.headers["content-language"] == "de"
+    limiting = [c for limit in response.json()["limits"] for c in limit["limiting_checks"]]
+    assert limiting
+    for check in limiting:
+        assert check["message_code"]
+        _assert_german(check["message"])
+
+
+# --- every rule's messages -------------------------------------------------------------
+
+
+def _base_operands(**changes: Any) -> Operands:
+    """The worked example's operands with every optional datum published."""
+    actuator = dataclasses.replace(worked_example.FHA_25C_50_L, stall_torque_nm=36)
+    app = worked_example.APPLICATION
+    torques = evaluate(actuator, app).torques
+    q = operands(actuator, app, torques, app.profile)
+    return q._replace(
+        continuous_torque_nm=30.0,
+        continuous_speed_rpm=30.0,
+        rated_speed_rpm=30.0,
+        load_torque_nm=5.0,
+        brake_holding_torque_nm=20.0,
+        torque_constant_nm_per_a=10.0,
+        max_current_a=12.0,
+        no_load_starting_current_a=0.2,
+        no_load_current_constant_a_per_rpm=0.001,
+        motor_voltage_constant_v_per_krpm=30.0,
+        resistance_line_ohm=1.2,
+        inductance_line_h=0.004,
+        pole_pairs=5.0,
+        dc_bus_voltage_v=560.0,
+        radial_force_n=500.0,
+        axial_force_n=200.0,
+        radial_lever_m=0.05,
+        axial_lever_m=0.02,
+        load_factor=1.2,
+        static_safety_min=1.5,
+        required_life_h=20000.0,
+        bearing_pitch_diameter_m=0.1,
+        bearing_offset_m=0.02,
+        bearing_dynamic_load_rating_n=30000.0,
+        bearing_static_load_rating_n=40000.0,
+        bearing_moment_load_nm=400.0,
+        bearing_dynamic_tilting_moment_nm=300.0,
+        zone_max_speed_rpm=60.0,
+        zone_torque_nm=40.0,
+    )._replace(**changes)
+
+
+ALL_RULES: tuple[Rule, ...] = (
+    *RULES,
+    BRAKE_HOLDING,
+    *DRIVE_RULES,
+    *BEARING_RULES,
+    BEARING_LIFE,
+)
+
+VARIANTS: tuple[dict[str, Any], ...] = (
+    {},
+    {"has_zone": True},
+    {"has_zone": True, "zone_torque_nm": math.nan},
+    {"stall_torque_nm": math.nan, "continuous_speed_rpm": math.nan},
+    {"thermal_time_constant_assumed": True, "thermal_time_constant_s": 1.0},
+    {"no_load_starting_current_a": math.nan, "rms_torque_nm": math.nan},
+    {"decel_torque_nm": math.nan},
+    {"bearing_moment_load_nm": math.nan},
+    {"radial_force_n": 0.0, "axial_force_n": 0.0},
+)
+"""Operands that lead each rule to each of its messages."""
+
+
+def _messages() -> Iterator[str]:
+    """Every rule's message for pass, fail, warn, no data and a failure for any J_A."""
+    for rule, variant in itertools.product(ALL_RULES, VARIANTS):
+        q = _base_operands(**variant)
+        value, limit = rule.value(q, _ops()), rule.limit(q, _ops())
+        for status in (Status.PASS, Status.FAIL, Status.WARN):
+            if status is Status.WARN and rule.binding is None:
+                continue
+            message = rule.message(q, status, value, limit)
+            yield message
+            yield _floor_message(message)
+        yield rule.check(q).message
+        for need in rule.requires:
+            missing = rule.check(q._replace(**dict.fromkeys(need.any_of, math.nan), has_zone=False))
+            yield missing.message
+
+
+def _ops() -> Any:
+    from actuator_selection.core.checks import FLOAT_OPS
+
+    return FLOAT_OPS
+
+
+def _codes(message: Phrase) -> Iterator[str]:
+    yield message.code
+    for value in message.params.values():
+        if isinstance(value, Phrase):
+            yield from _codes(value)
+
+
+def test_every_rule_message_has_a_code_and_a_german_text() -> None:
+    german = _german_catalog()
+    seen: set[str] = set()
+    for message in _messages():
+        assert isinstance(message, Phrase), message
+        seen |= set(_codes(message))
+        text = render_check(message, "de")
+        assert text != message or not any(c.isalpha() for c in message), message
+        _assert_german(text)
+        assert render_check(message, "en") == message
+    assert seen == set(CHECK_MESSAGES), set(CHECK_MESSAGES) - seen
+    missing = {key: t for key, t in check_templates().items() if not german.get(t)}
+    assert not missing
+
+
+def test_the_german_templates_keep_the_fields_and_their_formats() -> None:
+    german = _german_catalog()
+    for template in CHECK_MESSAGES.values():
+        assert _fields(german[template]) == _fields(template), template
+        words = "".join(literal for literal, *_ in string.Formatter().parse(german[template]))
+        assert "rpm" not in words, template
+
+
+def test_german_numbers_use_a_decimal_comma_and_infinity_a_sign() -> None:
+    q = _base_operands(radial_force_n=0.0, axial_force_n=0.0)
+    static = BEARING_RULES[1].check(q).message
+    assert "inf" in static
+    assert "∞" in render_check(static, "de")
+    speed = RULES[0].message(q, Status.FAIL, 1234.5678, 90.5)
+    assert (
+        render_check(speed, "de")
+        == "Lastdrehzahl n_2 = 1235 min⁻¹ überschreitet n_max = 90,5 min⁻¹"
+    )
+    assert str(speed) == "load speed n_2 = 1235 rpm exceeds n_max = 90.5 rpm"
