@@ -72,9 +72,10 @@ lock: install
 ## The catalogs are read as .po at run time: nothing to compile.
 messages: install
 	$(BIN)/pybabel extract -F babel.cfg -k N_ --no-default-keywords --sort-output \
-		--no-location --project actuator-selection -o var/messages.pot backend
+		--no-location --width 100 --project actuator-selection -o var/messages.pot backend
+	@# The template has no locations (extract --no-location), so neither has the catalog.
 	$(BIN)/pybabel update -i var/messages.pot -d backend/actuator_selection/locale -D messages \
-		--no-location --ignore-obsolete
+		--ignore-obsolete --width 100
 
 clean:
 	rm -rf $(VENV) node_modules var .mypy_cache .ruff_cache .pytest_cache
