@@ -309,6 +309,8 @@ const TEXTS = {
     "segtable.duration": "Dauer",
     "segtable.jerk": "S-Anteil",
     "segtable.peak": "Spitze",
+    "summary.ranking_rule":
+      "geeignete zuerst, dann nicht bestätigte, dann ungeeignete; unter den ungeeigneten der knappste Fehlschlag zuerst (kleinste schlimmste Überlast, das größte Verhältnis Wert/Grenze der nicht bestandenen Prüfungen); dann der kleinste Antrieb zuerst (kleinstes T_max, dann kleinstes J_A, dann Typbezeichnung)",
     "limits.heading": "Grenzen dieses Lastfalls für diesen Antrieb",
     "limits.button": "Grenzen bestimmen",
     "limits.loading": "Grenzen werden bestimmt …",
@@ -749,6 +751,8 @@ const TEXTS = {
     "segtable.duration": "Duration",
     "segtable.jerk": "S share",
     "segtable.peak": "Peak",
+    "summary.ranking_rule":
+      "suitable first, then unconfirmed, then unsuitable; the unsuitable nearest miss first (smallest worst overload, the largest value/limit of its failed checks); then the smallest actuator first (lowest T_max, then lowest J_A, then model name)",
     "limits.heading": "Limits of this load case for this actuator",
     "limits.button": "Find the limits",
     "limits.loading": "Finding the limits …",

@@ -934,3 +934,20 @@ def test_the_servers_field_errors_come_in_the_pages_language(page: Page) -> None
         page.locator("#submit").click()
     expect(page.locator("#err-t1 .error-line")).to_contain_text("0.0001 s")
     expect(page.locator("#err-t1 .error-line")).to_have_attribute("lang", "en")
+
+
+def test_the_ranking_rule_in_the_pages_words(page: Page) -> None:
+    """The page words the answer's ranking rule itself: in English the same rule as the
+    API's `ranking` (so the two cannot drift apart), in German in German."""
+    page.goto("/")
+    fill_worked_example(page)
+    status, body = post_selection(page)
+    assert status == 201
+    rule = page.locator(".ranking-rule")
+    rule.locator("summary").click()
+    shown = " ".join(rule.locator("span").first.inner_text().split())
+    assert shown == body["ranking"].replace("T_max", "Tmax").replace("J_A", "JA")
+    page.get_by_role("button", name="Deutsch").click()
+    page.locator(".ranking-rule summary").click()
+    expect(page.locator(".ranking-rule")).to_contain_text("geeignete zuerst")
+    expect(page.locator(".ranking-rule")).not_to_contain_text("suitable first")

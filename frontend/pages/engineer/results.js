@@ -132,7 +132,8 @@ export function renderSummary(sel, lang) {
           "details",
           { class: "ranking-rule" },
           h("summary", {}, t("summary.ranking")),
-          sym(sel.ranking, { lang: "en" }),
+          // the page's own words for the rule the answer states (in English) in `ranking`
+          sym(t("summary.ranking_rule")),
         )
       : null,
   );
