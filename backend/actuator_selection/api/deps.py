@@ -79,6 +79,14 @@ def write_transaction(request: Request) -> Iterator[Session]:
         yield begin_write(session)
 
 
+@contextmanager
+def read_transaction(request: Request) -> Iterator[Session]:
+    """A short read transaction of its own, ended when the block ends."""
+    factory: sessionmaker[Session] = request.app.state.session_factory
+    with factory.begin() as session:
+        yield session
+
+
 def app_settings(request: Request) -> Settings:
     """The settings the app was built with (``create_app(settings)``)."""
     settings: Settings = request.app.state.settings

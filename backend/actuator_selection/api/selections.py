@@ -14,6 +14,7 @@ from fastapi import APIRouter, Path, Request, Response
 from actuator_selection.api.deps import (
     SessionDep,
     catalogue_snapshot,
+    read_transaction,
     reads_only,
     write_transaction,
 )
@@ -26,6 +27,7 @@ from actuator_selection.schemas.selections import (
     SelectionOut,
     SelectionRequest,
 )
+from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.reports import (
     CHECK_COLUMNS,
@@ -35,9 +37,10 @@ from actuator_selection.services.reports import (
 )
 from actuator_selection.services.selections import (
     candidate_detail,
-    size_selection,
-    store_selections,
     stored_answer,
+)
+from actuator_selection.services.selections import (
+    create_selection as store_new_selection,
 )
 
 router = APIRouter(tags=["selections"])
@@ -52,6 +55,20 @@ def _localize(request: Request, response: Response) -> Callable[[str], str]:
     return localizer(language)
 
 
+def refuse_unknown_models(models: list[str] | None, catalogue: CatalogueSnapshot) -> None:
+    """422 naming each of ``models`` that ``catalogue`` lacks."""
+    if models is None:
+        return
+    known = {a.model for a in catalogue.actuators_of(models)}
+    unknown = [
+        service_error(["body", "models", i], "unknown_model", "unknown_actuator", model=m)
+        for i, m in enumerate(models)
+        if m not in known
+    ]
+    if unknown:
+        raise RequestFieldError(unknown)
+
+
 @router.post(
     "/selections",
     status_code=201,
@@ -60,22 +77,18 @@ def _localize(request: Request, response: Response) -> Callable[[str], str]:
     description="Runs the flowchart for every catalogue actuator (or the `models` listed) and "
     f"stores the result. Ranking: {RANKING_RULE}.",
 )
-@reads_only
-def create_selection(body: SelectionRequest, request: Request, session: SessionDep) -> Response:
+@reads_only  # no request transaction: it writes in its own (services.selections)
+def create_selection(body: SelectionRequest, request: Request) -> Response:
     """Size the load case against the catalogue and store the selection."""
-    catalogue = catalogue_snapshot(request, session)
-    actuators = catalogue.actuators_of(body.models)
-    if body.models is not None:
-        known = {a.model for a in actuators}
-        unknown = [
-            service_error(["body", "models", i], "unknown_model", "unknown_actuator", model=m)
-            for i, m in enumerate(body.models)
-            if m not in known
-        ]
-        if unknown:
-            raise RequestFieldError(unknown)
-    sized = size_selection(body, body.to_core(), actuators, catalogue, datetime.now(UTC))
-    store_selections(partial(write_transaction, request), [sized])
+
+    sized = store_new_selection(
+        body,
+        catalogue=request.app.state.catalogue,
+        reader=partial(read_transaction, request),
+        writer=partial(write_transaction, request),
+        now=datetime.now(UTC),
+        check=partial(refuse_unknown_models, body.models),
+    )
     # The answer is JSON already (see services.selections); returning a model would
     # have FastAPI validate and encode it again.
     return _json(request, sized.answer, sized.answer_gzip, status_code=201)

@@ -9,9 +9,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from datetime import UTC, datetime
-from typing import Any
+from typing import Any, cast
 
-from sqlalchemy import select, update
+from sqlalchemy import Table, func, insert, literal, select, update
 from sqlalchemy.orm import Session, selectinload
 
 from actuator_selection.core.actuators import Actuator
@@ -223,6 +223,36 @@ class SelectionRepository:
             )
         )
         self._session.flush()
+
+    def add_at_version(
+        self,
+        *,
+        id: str,
+        created_at: datetime,
+        catalogue_version: int,
+        request: dict[str, Any],
+        answer_gzip: bytes,
+    ) -> bool:
+        """Store one selection if the catalogue is still at ``catalogue_version``; False
+        (nothing stored) when a change has raised the version since.
+
+        One statement, ``INSERT … SELECT … WHERE version = :v``: the version check and
+        the insert take a single round trip, so a selection sized against the in-memory
+        catalogue is stored only with the version it was sized against.
+        """
+        table = cast(Table, SelectionRow.__table__)
+        version = func.coalesce(select(CatalogueStateRow.version).scalar_subquery(), 0)
+        values = select(
+            literal(id, table.c.id.type),
+            literal(created_at, table.c.created_at.type),
+            literal(catalogue_version, table.c.catalogue_version.type),
+            literal(request, table.c.request.type),
+            literal(answer_gzip, table.c.answer_gzip.type),
+        ).where(version == catalogue_version)
+        columns = ["id", "created_at", "catalogue_version", "request", "answer_gzip"]
+        # RETURNING rather than rowcount, which psycopg leaves at -1 for INSERT … SELECT.
+        stored = insert(table).from_select(columns, values).returning(table.c.id)
+        return self._session.execute(stored).first() is not None
 
     def answer_gzip(self, id: str) -> bytes | None:
         """The stored answer of a selection (gzip-compressed JSON), or None."""

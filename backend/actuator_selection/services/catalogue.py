@@ -9,7 +9,8 @@ and catalogue version, and kept with the snapshot.
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
+from contextlib import AbstractContextManager
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 
@@ -186,6 +187,10 @@ class CatalogueCache:
     the version, so each process of a deployment sees a change at its next request,
     whichever process or replica made it.
 
+    A selection that is stored reads no version first: it is sized against the snapshot
+    held and stored by a statement that checks the version itself (:meth:`latest`,
+    :meth:`pinned`, ``services.selections.create_selection``).
+
     Only when the version differs is the catalogue read, after pinning the version
     (``CatalogueVersionRepository.pin``: on PostgreSQL a share lock, so that the rows
     read are the version's own). The pin is kept off the common path: a row lock
@@ -197,6 +202,34 @@ class CatalogueCache:
         self._lock = threading.Lock()
         self._held: CatalogueSnapshot | None = None
 
+    def latest(self, reader: Callable[[], AbstractContextManager[Session]]) -> CatalogueSnapshot:
+        """The snapshot held, without a query; read in a transaction of ``reader`` when
+        none is held yet. For writers that check the version where they store
+        (:func:`~actuator_selection.services.selections.create_selection`)."""
+        held = self._held
+        return held if held is not None else self.refresh(reader)
+
+    def refresh(self, reader: Callable[[], AbstractContextManager[Session]]) -> CatalogueSnapshot:
+        """:meth:`snapshot` in a transaction of its own (``reader``)."""
+        with reader() as session:
+            return self.snapshot(session)
+
+    def pinned(self, session: Session) -> CatalogueSnapshot:
+        """The catalogue at the version ``session``'s transaction pins: no change can
+        raise it before that transaction ends (``CatalogueVersionRepository.pin``; on
+        SQLite a writer's transaction excludes every other writer anyway)."""
+        version = CatalogueVersionRepository(session).pin()
+        held = self._held
+        if held is not None and held.version == version:
+            return held
+        return self._keep(CatalogueSnapshot.read(session, version))
+
+    def _keep(self, fresh: CatalogueSnapshot) -> CatalogueSnapshot:
+        with self._lock:
+            if self._held is None or self._held.version < fresh.version:
+                self._held = fresh
+        return fresh
+
     def snapshot(self, session: Session) -> CatalogueSnapshot:
         """The catalogue at the version ``session``'s transaction reads."""
         versions = CatalogueVersionRepository(session)
@@ -206,11 +239,7 @@ class CatalogueCache:
         version = versions.pin()
         if held is not None and held.version == version:
             return held
-        fresh = CatalogueSnapshot.read(session, version)
-        with self._lock:
-            if self._held is None or self._held.version < version:
-                self._held = fresh
-        return fresh
+        return self._keep(CatalogueSnapshot.read(session, version))
 
 
 class DriveContext:

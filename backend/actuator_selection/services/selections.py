@@ -53,7 +53,7 @@ from actuator_selection.schemas.selections import (
     resolved_load,
     segments_out,
 )
-from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
+from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot, DriveContext
 
 JSON = dict[str, Any]
 
@@ -316,6 +316,57 @@ def store_selections(writer: Writer, sized: Iterable[SizedSelection]) -> None:
                 request=s.request,
                 answer_gzip=s.answer_gzip,
             )
+
+
+def create_selection(
+    body: SelectionRequest,
+    *,
+    catalogue: CatalogueCache,
+    reader: Writer,
+    writer: Writer,
+    now: datetime,
+    check: Callable[[CatalogueSnapshot], None],
+) -> SizedSelection:
+    """Size ``body`` against the catalogue and store it; returns what was committed.
+
+    The catalogue is the one this process holds in memory: no read precedes the sizing.
+    Its version is checked where it matters, in the statement that stores the selection
+    (:meth:`~actuator_selection.db.repositories.SelectionRepository.add_at_version`), so
+    a request costs one short write transaction. When a catalogue change (from any
+    process) has raised the version meanwhile, nothing was stored: the selection is
+    sized again in that same transaction, against the catalogue at the version it pins,
+    which no change can raise before it commits. So every stored selection is its
+    catalogue version's answer, and a stream of catalogue changes cannot starve it.
+    ``check`` refuses a request the catalogue cannot answer (unknown models).
+    """
+    sized = _sized(body, catalogue.latest(reader), now, check)
+    with writer() as session:
+        repository = SelectionRepository(session)
+        if not repository.add_at_version(**_row(sized)):
+            sized = _sized(body, catalogue.pinned(session), now, check)
+            stored = repository.add_at_version(**_row(sized))
+            assert stored, "the version is pinned by this transaction"
+    return sized
+
+
+def _sized(
+    body: SelectionRequest,
+    catalogue: CatalogueSnapshot,
+    now: datetime,
+    check: Callable[[CatalogueSnapshot], None],
+) -> SizedSelection:
+    check(catalogue)
+    return size_selection(body, body.to_core(), catalogue.actuators_of(body.models), catalogue, now)
+
+
+def _row(sized: SizedSelection) -> dict[str, Any]:
+    return {
+        "id": sized.id,
+        "created_at": sized.created_at,
+        "catalogue_version": sized.catalogue_version,
+        "request": sized.request,
+        "answer_gzip": sized.answer_gzip,
+    }
 
 
 def stored_answer(session: Session, selection_id: str) -> bytes:
