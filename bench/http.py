@@ -216,6 +216,8 @@ def main() -> None:
             cases.append(("GET /selections/{id}, whole catalogue", "GET",
                           f"/api/v1/selections/{stored}", None))  # fmt: skip
             reference = None
+            for _, method, path, body in cases:  # warm up: routes built, caches filled
+                _load(base, method, path, body, clients=4, seconds=1.0)
             for name, method, path, body in cases:
                 cpu = _cpu_s(process.pid)
                 rate, failures, size = _load(

@@ -15,12 +15,13 @@ Mount ``dependencies=[Depends(require_reader)]`` on the open routers and use
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from typing import Annotated, Literal, cast
 
 from fastapi import APIRouter, Depends, Request
+from starlette.concurrency import run_in_threadpool
 
-from actuator_selection.api.deps import SessionDep
+from actuator_selection.api.deps import read_transaction
 from actuator_selection.api.errors import ForbiddenError, UnauthorizedError, service_error
 from actuator_selection.config import Settings, get_settings
 from actuator_selection.core.sales import ApiKeyRecord
@@ -45,24 +46,33 @@ def request_settings(request: Request) -> Settings:
     return settings if isinstance(settings, Settings) else get_settings()
 
 
-def get_principal(request: Request, session: SessionDep) -> ApiKeyRecord | None:
-    """The caller's API key; None without an Authorization header; 401 for a bad key."""
+async def get_principal(request: Request) -> ApiKeyRecord | None:
+    """The caller's API key; None without an Authorization header; 401 for a bad key.
+
+    Asynchronous, so that a request without a key costs no trip through the thread pool;
+    a key is looked up in a short read transaction of its own, in the pool.
+    """
     header = request.headers.get("authorization")
     if header is None:
         return None
     scheme, _, key = header.partition(" ")
     if scheme.lower() != "bearer" or not key.strip():
         raise _unauthorized()
-    principal = ApiKeyRepository(session).authenticate(key.strip())
+    principal = await run_in_threadpool(_authenticate, request, key.strip())
     if principal is None:
         raise _unauthorized()
     return principal
 
 
+def _authenticate(request: Request, key: str) -> ApiKeyRecord | None:
+    with read_transaction(request) as session:
+        return ApiKeyRepository(session).authenticate(key)
+
+
 PrincipalDep = Annotated[ApiKeyRecord | None, Depends(get_principal)]
 
 
-def require_reader(request: Request, principal: PrincipalDep) -> ApiKeyRecord | None:
+async def require_reader(request: Request, principal: PrincipalDep) -> ApiKeyRecord | None:
     """Catalogue reads and selections: anyone, unless the settings require a key."""
     if principal is None and request_settings(request).require_api_key:
         raise _unauthorized()
@@ -92,10 +102,10 @@ ROLES_ATTRIBUTE = "__api_key_roles__"
 """Set on each :func:`require_role` dependency: the roles it admits (read by ``api/openapi.py``)."""
 
 
-def require_role(*roles: str) -> Callable[..., ApiKeyRecord]:
+def require_role(*roles: str) -> Callable[..., Awaitable[ApiKeyRecord]]:
     """A dependency admitting only keys of one of ``roles`` (401 without a key, 403 otherwise)."""
 
-    def dependency(principal: PrincipalDep) -> ApiKeyRecord:
+    async def dependency(principal: PrincipalDep) -> ApiKeyRecord:
         return authorize(principal, *roles)
 
     dependency.__name__ = f"require_{'_or_'.join(roles)}"
