@@ -5,6 +5,7 @@ the chapter's trapezoid equal to its four segments."""
 from __future__ import annotations
 
 import math
+from dataclasses import fields
 
 import pytest
 from tests import worked_example
@@ -12,7 +13,15 @@ from tests import worked_example
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.cycle import cycle_torques, duty_cycle_percent, mean_speed_rpm
 from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.motion import Motion, Segment, profile_of, trapezoid
+from actuator_selection.core.motion import (
+    Motion,
+    Segment,
+    cycle_figures,
+    figures_of,
+    piece_arrays,
+    profile_of,
+    trapezoid,
+)
 from actuator_selection.core.selection import Application
 
 G = 9.81
@@ -255,3 +264,23 @@ def test_an_application_is_a_motion_or_the_shorthand_not_both() -> None:
             load=worked_example.LOAD,
             motion=worked_example.APPLICATION.cycle,
         )
+
+
+def test_figures_of_known_profiles_are_the_computed_figures_bit_for_bit() -> None:
+    """A single selection hands its profile's figures to the vectorised flowchart instead of
+    computing them again: they must be the very floats ``cycle_figures`` gives."""
+    motions = [
+        trapezoid(
+            speed_rpm=speed,
+            accel_s=0.1 * k,
+            constant_s=0.07 * k,
+            decel_s=0.13,
+            pause_s=0.9 / k,
+            load=AxisLoad(inertia_kgm2=1.3 / k, friction_torque_nm=5 * k, gravity_torque_nm=k),
+        )
+        for k, speed in enumerate((40.0, 17.3, 123.45, 3.0), start=1)
+    ]
+    computed = cycle_figures(piece_arrays(motions))
+    known = figures_of([profile_of(m) for m in motions])
+    for name in (f.name for f in fields(computed)):
+        assert getattr(known, name).tobytes() == getattr(computed, name).tobytes(), name

@@ -61,6 +61,7 @@ from actuator_selection.core.motion import (
     CycleFigures,
     PieceArrays,
     cycle_figures,
+    figures_of,
     heating_gain,
     piece_arrays,
     profile_from,
@@ -284,9 +285,12 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         motions = [a.cycle for a in apps]
         pieces = piece_arrays(motions)
         inertia = np.array([m.load.inertia_kgm2 for m in motions], dtype=np.float64)
+    # A profile already computed holds its cycle's figures (a single selection's).
+    profiles = [p for p in (a.known_profile for a in apps) if p is not None]
+    figures = figures_of(profiles) if len(profiles) == len(apps) else cycle_figures(pieces)
     return _Cases(
         pieces=pieces,
-        figures=cycle_figures(pieces),
+        figures=figures,
         load_inertia=inertia,
         high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
         output_load=_output_loads(apps),

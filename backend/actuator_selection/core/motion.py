@@ -624,6 +624,26 @@ def cycle_figures(p: PieceArrays) -> CycleFigures:
     )
 
 
+def figures_of(profiles: Sequence[Profile]) -> CycleFigures:
+    """The :class:`CycleFigures` of cycles whose profiles are known: the same numbers
+    :func:`cycle_figures` gives (a profile's figures are its row of them), not computed
+    again."""
+
+    def column(name: str) -> FloatArray:
+        return np.array([getattr(p, name) for p in profiles], dtype=np.float64)
+
+    return CycleFigures(
+        cycle_s=column("cycle_s"),
+        mean_speed_rpm=column("mean_speed_rpm"),
+        duty_cycle_percent=column("duty_cycle_percent"),
+        peak_speed_rpm=column("peak_speed_rpm"),
+        accel_floor_nm=column("accel_floor_nm"),
+        decel_floor_nm=column("decel_floor_nm"),
+        rms_floor_nm=column("rms_floor_nm"),
+        braking_s=column("braking_s"),
+    )
+
+
 def profile_of(motion: Motion) -> Profile:
     """The :class:`Profile` of one cycle (the figures as :func:`cycle_figures` gives them
     for many, so that a single selection and a batch agree bit for bit)."""

@@ -150,6 +150,11 @@ class Application:
             self._profile.append(profile_of(self.cycle))
         return self._profile[0]
 
+    @property
+    def known_profile(self) -> Profile | None:
+        """:attr:`profile` if it has been computed, else None (nothing is computed)."""
+        return self._profile[0] if self._profile else None
+
     drive: bool = False
     """Whether the drive is sized too: peak current and output voltage
     (:data:`~actuator_selection.core.checks.DRIVE_RULES`)."""

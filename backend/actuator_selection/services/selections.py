@@ -211,6 +211,7 @@ def _candidates(
     bit what the scalar one gives (tests/core/test_batch.py); the candidate's detail
     runs the scalar one, with the checks in words.
     """
+    speed = app.profile.peak_speed_rpm  # computed first: the batch takes its figures
     ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(tuple(actuators)))
     torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
     if any(np.isinf(t).any() for t in torques):
@@ -248,7 +249,6 @@ def _candidates(
         )
     ]
     # Drive options for the first candidates that are not unsuitable (DRIVE_OPTIONS_LISTED).
-    speed = app.profile.peak_speed_rpm
     unsuitable = VERDICT_BY_CODE.index(Verdict.UNSUITABLE)
     for place in np.nonzero(verdicts[:DRIVE_OPTIONS_LISTED] != unsuitable)[0].tolist():
         out[place]["drive_options"] = groups.groups(actuators[int(order[place])], speed)
