@@ -7,7 +7,7 @@ where its numbers came from.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from datetime import UTC, datetime
 from typing import Any, cast
 
@@ -197,44 +197,32 @@ class CatalogueVersionRepository:
         return updated
 
 
+@dataclass(frozen=True, slots=True, kw_only=True)
+class NewSelection:
+    """A selection to store: its request, the catalogue version it was sized against and
+    its answer as sent, gzip-compressed."""
+
+    id: str
+    created_at: datetime
+    catalogue_version: int
+    request: dict[str, Any]
+    answer_gzip: bytes
+
+
 class SelectionRepository:
     """Stored selections: written once, read back unchanged."""
 
     def __init__(self, session: Session) -> None:
         self._session = session
 
-    def add(
-        self,
-        *,
-        id: str,
-        created_at: datetime,
-        catalogue_version: int,
-        request: dict[str, Any],
-        answer_gzip: bytes,
-    ) -> None:
+    def add(self, selection: NewSelection) -> None:
         """Store one selection."""
-        self._session.add(
-            SelectionRow(
-                id=id,
-                created_at=created_at,
-                catalogue_version=catalogue_version,
-                request=request,
-                answer_gzip=answer_gzip,
-            )
-        )
+        self._session.add(SelectionRow(**asdict(selection)))
         self._session.flush()
 
-    def add_at_version(
-        self,
-        *,
-        id: str,
-        created_at: datetime,
-        catalogue_version: int,
-        request: dict[str, Any],
-        answer_gzip: bytes,
-    ) -> bool:
-        """Store one selection if the catalogue is still at ``catalogue_version``; False
-        (nothing stored) when a change has raised the version since.
+    def add_at_version(self, selection: NewSelection) -> bool:
+        """Store one selection if the catalogue is still at its ``catalogue_version``;
+        False (nothing stored) when a change has raised the version since.
 
         One statement, ``INSERT … SELECT … WHERE version = :v``: the version check and
         the insert take a single round trip, so a selection sized against the in-memory
@@ -242,16 +230,12 @@ class SelectionRepository:
         """
         table = cast(Table, SelectionRow.__table__)
         version = func.coalesce(select(CatalogueStateRow.version).scalar_subquery(), 0)
-        values = select(
-            literal(id, table.c.id.type),
-            literal(created_at, table.c.created_at.type),
-            literal(catalogue_version, table.c.catalogue_version.type),
-            literal(request, table.c.request.type),
-            literal(answer_gzip, table.c.answer_gzip.type),
-        ).where(version == catalogue_version)
-        columns = ["id", "created_at", "catalogue_version", "request", "answer_gzip"]
+        row = asdict(selection)
+        values = select(*(literal(v, table.c[k].type) for k, v in row.items())).where(
+            version == selection.catalogue_version
+        )
         # RETURNING rather than rowcount, which psycopg leaves at -1 for INSERT … SELECT.
-        stored = insert(table).from_select(columns, values).returning(table.c.id)
+        stored = insert(table).from_select(list(row), values).returning(table.c.id)
         return self._session.execute(stored).first() is not None
 
     def answer_gzip(self, id: str) -> bytes | None:

@@ -41,7 +41,11 @@ from actuator_selection.core.drive import shared_voltage_check
 from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.core.errors import ConflictError, NotFoundError
 from actuator_selection.core.selection import Application, Verdict, evaluate, select
-from actuator_selection.db.repositories import CatalogueRepository, SelectionRepository
+from actuator_selection.db.repositories import (
+    CatalogueRepository,
+    NewSelection,
+    SelectionRepository,
+)
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.output_load import output_bearing_note
@@ -84,6 +88,17 @@ class SizedSelection:
     """The answer's JSON."""
     answer_gzip: bytes
     """The same, gzip-compressed: stored, and sent to clients that accept gzip."""
+
+    @property
+    def row(self) -> NewSelection:
+        """What is stored of it."""
+        return NewSelection(
+            id=self.id,
+            created_at=self.created_at,
+            catalogue_version=self.catalogue_version,
+            request=self.request,
+            answer_gzip=self.answer_gzip,
+        )
 
 
 DRIVE_OPTIONS_LISTED = 100
@@ -309,13 +324,7 @@ def store_selections(writer: Writer, sized: Iterable[SizedSelection]) -> None:
     with writer() as session:
         repository = SelectionRepository(session)
         for s in sized:
-            repository.add(
-                id=s.id,
-                created_at=s.created_at,
-                catalogue_version=s.catalogue_version,
-                request=s.request,
-                answer_gzip=s.answer_gzip,
-            )
+            repository.add(s.row)
 
 
 def create_selection(
@@ -342,9 +351,9 @@ def create_selection(
     sized = _sized(body, catalogue.latest(reader), now, check)
     with writer() as session:
         repository = SelectionRepository(session)
-        if not repository.add_at_version(**_row(sized)):
+        if not repository.add_at_version(sized.row):
             sized = _sized(body, catalogue.pinned(session), now, check)
-            stored = repository.add_at_version(**_row(sized))
+            stored = repository.add_at_version(sized.row)
             assert stored, "the version is pinned by this transaction"
     return sized
 
@@ -357,16 +366,6 @@ def _sized(
 ) -> SizedSelection:
     check(catalogue)
     return size_selection(body, body.to_core(), catalogue.actuators_of(body.models), catalogue, now)
-
-
-def _row(sized: SizedSelection) -> dict[str, Any]:
-    return {
-        "id": sized.id,
-        "created_at": sized.created_at,
-        "catalogue_version": sized.catalogue_version,
-        "request": sized.request,
-        "answer_gzip": sized.answer_gzip,
-    }
 
 
 def stored_answer(session: Session, selection_id: str) -> bytes:
