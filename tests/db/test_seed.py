@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import csv
 import io
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from datetime import UTC, datetime
 from pathlib import Path
 
@@ -18,7 +18,6 @@ from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS, 
 from actuator_selection.core.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.engine import make_engine, make_session_factory
-from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,
@@ -31,16 +30,6 @@ from actuator_selection.db.models import (
 )
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.seed import apply_catalogue, load_seed, read_catalogue
-
-
-@pytest.fixture
-def empty_engine(backend: str, new_database: Callable[[str], str]) -> Iterator[Engine]:
-    url = new_database(backend)
-    upgrade(url=url)
-    engine = make_engine(url)
-    yield engine
-    engine.dispose()
-
 
 TABLES = {
     "families.csv": ActuatorFamilyRow,

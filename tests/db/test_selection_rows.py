@@ -2,14 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from datetime import UTC, datetime
 
-from sqlalchemy import func, select
+from sqlalchemy import Engine, func, select
 from sqlalchemy.orm import Session
 
-from actuator_selection.db.engine import make_engine
-from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import SelectionRow
 from actuator_selection.db.repositories import (
     CatalogueVersionRepository,
@@ -49,18 +46,10 @@ def test_a_selection_is_stored_at_the_current_version_only(session: Session) -> 
     assert repository.answer_gzip("fresh") == b"\x1f\x8b stored as sent"
 
 
-def test_a_catalogue_never_written_is_version_zero(
-    backend: str, new_database: Callable[[str], str]
-) -> None:
-    url = new_database(backend)
-    upgrade(url=url)
-    engine = make_engine(url)
-    try:
-        with Session(engine) as empty:
-            repository = SelectionRepository(empty)
-            assert CatalogueVersionRepository(empty).current() == 0
-            assert not repository.add_at_version(_row("ahead", 1))
-            assert repository.add_at_version(_row("zero", 0))
-            assert empty.scalar(select(func.count()).select_from(SelectionRow)) == 1
-    finally:
-        engine.dispose()
+def test_a_catalogue_never_written_is_version_zero(empty_engine: Engine) -> None:
+    with Session(empty_engine) as empty:
+        repository = SelectionRepository(empty)
+        assert CatalogueVersionRepository(empty).current() == 0
+        assert not repository.add_at_version(_row("ahead", 1))
+        assert repository.add_at_version(_row("zero", 0))
+        assert empty.scalar(select(func.count()).select_from(SelectionRow)) == 1
