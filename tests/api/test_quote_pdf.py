@@ -14,9 +14,13 @@ from babel.numbers import format_decimal
 from pypdf import PdfReader
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
+from actuator_selection.services.quote_pdf import unicode_font
+
 __all__ = ["api", "sales_api_with"]
 
 LOCALES = {"de": "de_DE", "en": "en_GB"}
+RPM_DE = "min⁻¹" if unicode_font() is not None else "1/min"
+"""The chapter's German speed unit; Helvetica's Latin-1 (no DejaVu Sans here) writes 1/min."""
 
 
 def _quote(api: SalesApi, **changes: Any) -> dict[str, Any]:
@@ -73,7 +77,7 @@ def test_the_pdf_is_the_document_in_the_asked_language(api: SalesApi, language: 
             "Lieferbedingungen",
             "Technische Begründung",
             f"Seite 1 von {pages}",
-            "min⁻¹",
+            RPM_DE,
             "Beschleunigungsmoment",
         ],
         "en": [
@@ -98,7 +102,7 @@ def test_the_pdf_is_the_document_in_the_asked_language(api: SalesApi, language: 
         for english in ("Payment terms", "Engineering justification", "Servo controller"):
             assert english not in text, english
         assert "Servoregler SINAMICS S120, 400 V" in text
-        assert "40,00 min⁻¹" in text  # the load speed n_2, with the chapter's German unit
+        assert f"40,00 {RPM_DE}" in text  # the load speed n_2, with the chapter's German unit
 
 
 def test_the_query_chooses_the_language_and_a_signed_link_downloads_it(api: SalesApi) -> None:

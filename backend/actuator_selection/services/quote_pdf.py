@@ -69,7 +69,9 @@ class _Pdf(FPDF):
     def words(self, value: object) -> str:
         """``value`` as the font can write it."""
         text = plain(value)
-        return text if self._unicode else pdf_text(text.replace("min⁻¹", "1/min"))
+        if self._unicode:
+            return text
+        return pdf_text(text.replace("min⁻¹", "1/min").replace("„", '"').replace("€", "EUR"))
 
     def font(self, size: float, *, bold: bool = False) -> None:
         self.set_font(self._family, style="B" if bold else "", size=size)
