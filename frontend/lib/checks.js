@@ -7,7 +7,7 @@
 
 import { h, sym } from "./dom.js";
 import { qty } from "./format.js";
-import { translate } from "./i18n.js";
+import { translate, translateWords } from "./i18n.js";
 
 /** The check's label in ``lang`` ("Acceleration torque T_1 ≤ T_max"); its name if unknown. */
 export function checkLabel(name, lang) {
@@ -38,13 +38,14 @@ export function marginPercent(check) {
 
 /**
  * What a check found, as nodes: for no_data the missing catalogue value (the API's
- * English words), else the value against the limit in the rule's ``unit``
+ * English words, in ``lang`` where the page has them: ``words.…`` of i18n.js), else the value against the limit in the rule's ``unit``
  * ("95.48 Nm, limit 151 Nm"; "≈" before an approximate limit); for a fail on a lower
  * bound (a fail with ``missing``) the least value over every value of what is missing.
  */
 export function checkFinding(check, unit, lang) {
   if (check.status === "no_data") {
-    const what = typeof check.missing === "string" && check.missing ? sym(check.missing, { lang: "en" }) : "–";
+    const words = typeof check.missing === "string" && check.missing ? translateWords(lang, check.missing) : null;
+    const what = words ? sym(words.text, { lang: words.lang }) : "–";
     const [before, after = ""] = translate(lang, "check.finding.missing").split("{what}");
     return h("span", { class: "finding" }, before, what, after);
   }
@@ -57,7 +58,7 @@ export function checkFinding(check, unit, lang) {
       translate(lang, "check.finding.floor", {
         value: qty(check.value, unit, lang),
         limit: `${approx}${qty(check.limit, unit, lang)}`,
-        what: check.missing,
+        what: translateWords(lang, check.missing).text,
       }),
     );
   }

@@ -144,6 +144,12 @@ const TEXTS = {
     "controller.excluded": "ausgeschlossen",
     "controller.no_data": "keine Daten",
     "controller.name": "Servoregler",
+    "controller.row": "Zeile {n}",
+    "sym.n_start": "n_Anfang",
+    "sym.n_end": "n_Ende",
+    "sym.T_process": "T_Prozess",
+    "sym.T_start": "T_Anfang",
+    "sym.T_end": "T_Ende",
     "controller.level": "Einstufung",
     "controller.criteria": "Kriterien (Tabelle 521.1)",
     "controller.voltage": "Reglerausgangsspannung U_OUT (Gl. 521.2), Wert / verfügbar",
@@ -169,7 +175,7 @@ const TEXTS = {
     "check.decel_torque": "Bremsmoment |T_3| ≤ T_max",
     "check.continuous_duty": "Dauerbetrieb (n_av, T_rms) im Dauerbetriebsbereich",
     "check.brake_holding": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
-    "check.thermal_peak": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze (Modell Fig. 520.1)",
+    "check.thermal_peak": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze (Modell Abb. 520.1)",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -303,6 +309,8 @@ const TEXTS = {
     "summary.efficiency": "Wirkungsgrad",
     "summary.drive": "Regler ausgelegt",
     "summary.output_bearing": "Abtriebslager",
+    "summary.output_bearing.no_life": "Kippmoment und statische Tragsicherheit geprüft; Lebensdauer nicht geprüft (keine geforderte Lebensdauer)",
+    "summary.output_bearing.checked": "Kippmoment, statische Tragsicherheit und Lebensdauer L_10 geprüft",
     "segtable.heading": "Zyklus je Segment am Abtrieb",
     "segtable.segment": "Segment",
     "segtable.start": "Beginn",
@@ -342,6 +350,7 @@ const TEXTS = {
     "ref.formula": "Formel",
     "ref.with ωL·I in quadrature": "mit ωL·I in Quadratur",
     "ref.catalogue brake data (holding torque)": "Katalogdaten der Bremse (Haltemoment)",
+    "ref.model": "Modell",
 
     "fig.torque_segments": "Drehmoment T(t) je Segment",
     "fig.torques_loading": "Drehmoment je Segment wird geladen …",
@@ -438,6 +447,8 @@ const TEXTS = {
     "sales.action.accepted": "Angenommen",
     "sales.action.rejected": "Abgelehnt",
     "sales.document.open": "Dokument öffnen",
+    "sales.document.pdf": "PDF",
+    "sales.document.pdf.label": "Angebot {number} als PDF herunterladen",
     "sales.document.title": "Angebot {number}",
     "sales.document.loading": "Angebot wird geladen …",
     "sales.document.failed": "Das Dokument konnte nicht geladen werden: ",
@@ -449,6 +460,36 @@ const TEXTS = {
     "quote.status.accepted": "angenommen",
     "quote.status.rejected": "abgelehnt",
     "quote.status.expired": "abgelaufen",
+
+    // Catalogue values a check lacks (the API's `missing`, English words): as the server's
+    // German catalog words them (tests/api/test_page_words.py keeps the two equal).
+    "words.DC bus class": "Zwischenkreisklasse",
+    "words.allowable continuous speed": "zulässige Dauerdrehzahl",
+    "words.allowable continuous torque": "zulässiges Dauerdrehmoment",
+    "words.allowable tilting moment of the output bearing": "zulässiges Kippmoment des Abtriebslagers",
+    "words.brake holding torque": "Haltemoment der Bremse",
+    "words.continuous stall torque T_0": "Dauerstillstandsmoment T_0",
+    "words.continuous-duty zone or allowable continuous or rated speed": "Dauerbetriebsbereich oder zulässige Dauer- bzw. Nenndrehzahl",
+    "words.continuous-duty zone or continuous torque": "Dauerbetriebsbereich oder Dauerdrehmoment",
+    "words.line-to-line inductance L": "Induktivität L zwischen zwei Anschlüssen",
+    "words.line-to-line resistance R": "Widerstand R zwischen zwei Anschlüssen",
+    "words.maximum current I_max": "Maximalstrom I_max",
+    "words.maximum output speed n_max": "maximale Abtriebsdrehzahl n_max",
+    "words.maximum torque T_max": "maximales Drehmoment T_max",
+    "words.moment of inertia J_A": "Trägheitsmoment J_A",
+    "words.moment of inertia J_A (T_1 and T_3 need it)": "Trägheitsmoment J_A (für T_1 und T_3 nötig)",
+    "words.moment of inertia J_A (T_rms needs it)": "Trägheitsmoment J_A (für T_rms nötig)",
+    "words.moment of inertia J_A (the cycle's torques need it)": "Trägheitsmoment J_A (für die Momente des Zyklus nötig)",
+    "words.motor voltage constant K_E (V_rms)": "Spannungskonstante K_E des Motors (V_rms)",
+    "words.number of pole pairs p": "Polpaarzahl p",
+    "words.output bearing dynamic load rating C": "dynamische Tragzahl C des Abtriebslagers",
+    "words.output bearing offset R": "Abstand R des Abtriebslagers",
+    "words.output bearing pitch circle diameter d_p": "Teilkreisdurchmesser d_p des Abtriebslagers",
+    "words.output bearing static load rating C_0": "statische Tragzahl C_0 des Abtriebslagers",
+    "words.rated speed": "Nenndrehzahl",
+    "words.the allowable dynamic tilting moment M_dyn": "das zulässige dynamische Kippmoment M_dyn",
+    "words.the allowable moment load": "die zulässige Momentenbelastung",
+    "words.torque constant k_T": "Drehmomentkonstante k_T",
   },
   en: {
     "app.title": "Actuator selection",
@@ -586,6 +627,12 @@ const TEXTS = {
     "controller.excluded": "excluded",
     "controller.no_data": "no data",
     "controller.name": "Servo controller",
+    "controller.row": "row {n}",
+    "sym.n_start": "n_start",
+    "sym.n_end": "n_end",
+    "sym.T_process": "T_process",
+    "sym.T_start": "T_start",
+    "sym.T_end": "T_end",
     "controller.level": "Rating",
     "controller.criteria": "Criteria (Table 521.1)",
     "controller.voltage": "Controller output voltage U_OUT (Eq. 521.2), value / available",
@@ -745,6 +792,8 @@ const TEXTS = {
     "summary.efficiency": "Efficiency",
     "summary.drive": "Drive sized",
     "summary.output_bearing": "Output bearing",
+    "summary.output_bearing.no_life": "tilting moment and static safety checked; life not checked: no required_life_h",
+    "summary.output_bearing.checked": "tilting moment, static safety and L_10 life checked",
     "segtable.heading": "Cycle per segment at the output",
     "segtable.segment": "Segment",
     "segtable.start": "Start",
@@ -874,6 +923,8 @@ const TEXTS = {
     "sales.action.accepted": "Accepted",
     "sales.action.rejected": "Rejected",
     "sales.document.open": "Open document",
+    "sales.document.pdf": "PDF",
+    "sales.document.pdf.label": "Download quote {number} as PDF",
     "sales.document.title": "Quote {number}",
     "sales.document.loading": "Loading the quote …",
     "sales.document.failed": "The document could not be loaded: ",
@@ -885,6 +936,30 @@ const TEXTS = {
     "quote.status.accepted": "accepted",
     "quote.status.rejected": "rejected",
     "quote.status.expired": "expired",
+  },
+};
+
+/** plotly.js's own words (its mode bar's tooltips) in German, for its ``locales`` config. */
+export const PLOTLY_LOCALES = {
+  de: {
+    dictionary: {
+      "Download plot as a PNG": "Diagramm als PNG herunterladen",
+      "Download plot": "Diagramm herunterladen",
+      "Zoom": "Zoomen",
+      "Pan": "Verschieben",
+      "Zoom in": "Vergrößern",
+      "Zoom out": "Verkleinern",
+      "Autoscale": "Automatisch skalieren",
+      "Reset axes": "Achsen zurücksetzen",
+      "Toggle Spike Lines": "Hilfslinien ein/aus",
+      "Show closest data on hover": "Nächste Daten beim Überfahren zeigen",
+      "Compare data on hover": "Daten beim Überfahren vergleichen",
+      "Double-click to zoom back out": "Doppelklick zum Herauszoomen",
+      "Double-click on legend to isolate one trace": "Doppelklick auf die Legende zeigt nur diese Kurve",
+      "Preparing image - this may take a few seconds": "Bild wird erstellt – das kann einige Sekunden dauern",
+      "Image download succeeded": "Bild heruntergeladen",
+      "Sorry, there was a problem downloading your image!": "Das Bild konnte nicht heruntergeladen werden.",
+    },
   },
 };
 
@@ -903,7 +978,18 @@ export function translateReference(lang, reference) {
   // every "Eq." of "Eq. 522.2, Eq. 522.3"; whole phrases first, then words
   return reference
     .replace(/with ωL·I in quadrature|catalogue brake data \(holding torque\)/g, (phrase) => refWord(lang, phrase))
-    .replace(/\b(Table|Eq\.|Fig\.|manual|ch\.|formulas|formula)(?=\s|$|,|;)/g, (word) => refWord(lang, word));
+    .replace(/\b(Table|Eq\.|Fig\.|manual|ch\.|formulas|formula)(?=\s|$|,|;)/g, (word) => refWord(lang, word))
+    .replace(/\((model)\)/g, (_, word) => `(${refWord(lang, word)})`);
+}
+
+/**
+ * Words the API sends as they are (English: a check's ``missing`` catalogue value) in
+ * ``lang``: ``{ text, lang }``, the words and the language they are in (English where the
+ * page has no translation).
+ */
+export function translateWords(lang, english) {
+  const text = TEXTS[lang]?.[`words.${english}`];
+  return typeof text === "string" ? { text, lang } : { text: english, lang: "en" };
 }
 
 /** A word of a reference in ``lang``; the word itself where the catalogue has none. */

@@ -101,8 +101,11 @@ def test_selection_candidates_carry_controllers_and_say_what_is_missing(
     }
     example = details["FHA-25C-50-L"]
     assert example["controllers"], "the PTC and the FHA-C column leave some controllers"
-    assert "bus_class" in example["controllers_note"]
-    assert "feedback_system" in example["controllers_note"]
+    # the criteria without data, in words (the code's params name them; `missing` below
+    # gives them by their identifiers)
+    assert example["controllers_note_code"] == "controllers_note.unconfirmed"
+    assert example["controllers_note_params"]["missing"] == ["DC bus voltage", "feedback system"]
+    assert "DC bus voltage, feedback system" in example["controllers_note"]
     for option in example["controllers"]:
         assert set(option["missing"]) == {"bus_class", "feedback_system"}
         assert option["voltage"]["status"] == "no_data"

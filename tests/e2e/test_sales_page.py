@@ -312,14 +312,15 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
     hint = page.locator("#hint-model")
     expect(hint).to_contain_text("Nicht bestätigt – das Angebot weist darauf hin: ")
     # the check that did not pass, from the selection's lean answer: its label and status
-    # in the page's language, the catalogue value it lacks in the API's (English) words
+    # in the page's language, the catalogue value it lacks (the API's English words) in the
+    # server catalog's German words, which the page holds
     expect(hint).to_contain_text(
         "Dauerbetrieb (nav, Trms) im Dauerbetriebsbereich (keine Daten) – nicht im Katalog: "
-        "continuous-duty zone or continuous torque"
+        "Dauerbetriebsbereich oder Dauerdrehmoment"
     )
     # both checks that need a continuous limit lack it: continuous_duty and thermal_peak
-    expect(hint.locator("span[lang=en]")).to_have_text(
-        ["continuous-duty zone or continuous torque"] * 2
+    expect(hint.locator("span[lang=de]")).to_have_text(
+        ["Dauerbetriebsbereich oder Dauerdrehmoment"] * 2
     )
     expect(page.locator("#quote-form legend")).to_have_text(
         ["Servoantrieb", "Servoregler (optional)", "Kunde", "Preise und Konditionen"]

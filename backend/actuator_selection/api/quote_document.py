@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 from markupsafe import Markup
 
+from actuator_selection.api.messages import render_check
 from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
 from actuator_selection.api.static import PLOTLY_URL
 from actuator_selection.core.quote_terms import SellerParty
@@ -120,12 +121,13 @@ def _cycle_label(t: DocumentText, key: str, label: str) -> str:
     return label[:1].upper() + label[1:]
 
 
-def _check_row(c: StoredCheck, t: DocumentText) -> dict[str, str | None]:
-    """One row of the checks table; the message only where the check did not pass."""
+def _check_row(c: StoredCheck, t: DocumentText, language: Language) -> dict[str, str | None]:
+    """One row of the checks table; the message (in ``language``) only where the check did
+    not pass."""
     return {
         "name": c.name,
         "label": _label(t, "check_" + c.name, c.name),
-        "message": c.summary if c.status != "pass" else None,
+        "message": render_check(c.phrase, language) if c.status != "pass" else None,
         "status": c.status,
         "status_label": _label(t, "result_" + c.status, c.status),
         "approximate": t("approximate") if c.approximate else "",
@@ -134,6 +136,36 @@ def _check_row(c: StoredCheck, t: DocumentText) -> dict[str, str | None]:
         "margin": num(c.margin_percent, "%", t),
         "reference": t.reference(c.reference),
     }
+
+
+_DATA_PARAMS = frozenset({"name", "source"})
+"""Parameters that are data as entered or catalogued (a price list's name, a catalogue
+source), marked ``translate="no"``: they stay as written in every language."""
+
+
+def _with_data(t: DocumentText, key: str, **params: str) -> Markup:
+    """The label ``key`` with ``params`` filled in, escaped; the data among them
+    (:data:`_DATA_PARAMS`) each in a ``<span translate="no">``."""
+    slots = {k: f"\x00{k}\x00" if k in _DATA_PARAMS else v for k, v in params.items()}
+    text = Markup.escape(t(key, **slots))
+    for k in _DATA_PARAMS & params.keys():
+        span = Markup('<span translate="no">{}</span>').format(params[k])
+        text = Markup(text.replace(f"\x00{k}\x00", span))
+    return text
+
+
+def _reasons(quote: QuoteOut, candidate: StoredCandidate | None, language: Language) -> list[str]:
+    """Why the quote is unconfirmed, in ``language``: the quoted candidate's checks that did
+    not pass, as the stored selection holds them (the quote's stored English reasons where
+    the selection is gone)."""
+    if candidate is None:
+        return list(quote.verdict_reasons)
+    t = DocumentText(language)
+    return [
+        f"{_label(t, 'check_' + c.name, c.name)}: {render_check(c.phrase, language)}"
+        for c in candidate.checks
+        if c.status != "pass"
+    ]
 
 
 def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
@@ -288,6 +320,61 @@ def render_quote_document(
     before quotes stored theirs. A seller named ``placeholder_seller_name`` (the
     settings' default) is flagged with a banner.
     """
+    context = quote_document_context(
+        quote,
+        selection=selection,
+        record=record,
+        language=language,
+        current_seller=current_seller,
+        placeholder_seller_name=placeholder_seller_name,
+    )
+    return _TEMPLATES.get_template("quote_document.html").render(**context)
+
+
+_ACTUATOR_ITEM = re.compile(
+    r"Servo actuator (?P<model>\S+) \((?P<family>.+), gear ratio (?P<ratio>\S+)\)"
+)
+_CONTROLLER_ITEM = re.compile(
+    r"Servo controller (?P<type_name>.+?)"
+    r"(?: \((?P<controller>.+), Table 521\.1 row (?P<row>\d+): "
+    r"(?P<level>tested|possible|unconfirmed)\))?"
+)
+
+
+def item_description(kind: str, description: str, t: DocumentText) -> tuple[str, bool]:
+    """An item's description in the document's language, and whether it is the service's
+    own words: the descriptions the service writes (``services/quotes.py``: "Servo actuator
+    … (…, gear ratio …)", "Servo controller …") are worded again; a price list's
+    description is the seller's data and stays as written.
+
+    >>> item_description("actuator", "Servo actuator CHA-25A-50 (CHA, gear ratio 50)",
+    ...     DocumentText("de"))
+    ('Servoantrieb CHA-25A-50 (CHA, Untersetzung 50)', True)
+    >>> item_description("actuator", "Servo actuator CHA-25A-50 (list price)", DocumentText("de"))
+    ('Servo actuator CHA-25A-50 (list price)', False)
+    """
+    if kind == "actuator" and (m := _ACTUATOR_ITEM.fullmatch(description)):
+        return t("item_actuator", **m.groupdict()), True
+    if kind == "controller" and (m := _CONTROLLER_ITEM.fullmatch(description)):
+        if m["row"] is None:
+            return t("item_controller", type_name=m["type_name"]), True
+        level = t("level_" + m["level"])
+        return t("item_controller_row", **{**m.groupdict(), "level": level}), True
+    return description, False
+
+
+def quote_document_context(
+    quote: QuoteOut,
+    *,
+    selection: StoredSelection | None,
+    record: QuoteRecord,
+    language: Language = "en",
+    current_seller: SellerParty,
+    placeholder_seller_name: str | None = None,
+) -> dict[str, Any]:
+    """Everything the quote document shows, worded and formatted in ``language``: the
+    template's variables, which the HTML (:func:`render_quote_document`) and the PDF
+    (``services/quote_pdf.py``) both lay out."""
     t = DocumentText(language)
     candidate = (
         next((c for c in selection.candidates if c.model == quote.actuator_model), None)
@@ -353,7 +440,7 @@ def render_quote_document(
             (t("decel_torque"), num(candidate.decel_torque_nm, "Nm", t)),
             (t("rms_torque"), num(candidate.rms_torque_nm, "Nm", t)),
         ]
-        checks = [_check_row(c, t) for c in candidate.checks]
+        checks = [_check_row(c, t, language) for c in candidate.checks]
         figure_json = script_safe_json(
             speed_torque_figure(candidate, selection, actuator, t).to_json()
         )
@@ -392,7 +479,7 @@ def render_quote_document(
     customer = quote.customer.name + (
         "\n" + quote.customer.address if quote.customer.address else ""
     )
-    return _TEMPLATES.get_template("quote_document.html").render(
+    return dict(
         **labels,
         **columns,
         lang=language,
@@ -413,7 +500,9 @@ def render_quote_document(
             [(t("your_reference"), quote.customer.reference)] if quote.customer.reference else []
         ),
         example_banner=(
-            t("example_banner", name=quote.price_list.name) if quote.price_list.is_example else ""
+            _with_data(t, "example_banner", name=quote.price_list.name)
+            if quote.price_list.is_example
+            else ""
         ),
         placeholder_banner=(
             t("placeholder_seller")
@@ -421,7 +510,7 @@ def render_quote_document(
             else ""
         ),
         unconfirmed=(
-            {"text": t("unconfirmed_banner"), "reasons": quote.verdict_reasons}
+            {"text": t("unconfirmed_banner"), "reasons": _reasons(quote, candidate, language)}
             if quote.unconfirmed
             else None
         ),
@@ -429,7 +518,9 @@ def render_quote_document(
             {
                 "position": item.position,
                 "code": item.item_code,
-                "description": item.description,
+                "description": item_description(item.kind, item.description, t)[0],
+                # a price list's words are the seller's data: not translated
+                "data": not item_description(item.kind, item.description, t)[1],
                 "quantity": t.number(item.quantity, "#,##0"),
                 "unit_price": money(item.unit_price, currency, t),
                 "total": money(item.line_total, currency, t),
@@ -440,8 +531,8 @@ def render_quote_document(
         discount_label=t("discount", percent=t.percent(quote.discount_percent)),
         discount_amount=money(quote.discount_amount, currency, t),
         totals=totals,
-        prices_from=t(
-            "prices_from", name=quote.price_list.name, date=t.date(quote.price_list.priced_on)
+        prices_from=_with_data(
+            t, "prices_from", name=quote.price_list.name, date=t.date(quote.price_list.priced_on)
         ),
         rounding=rounding,
         payment_terms=record.payment_terms or seller.standard_terms("payment", language),
@@ -466,7 +557,7 @@ def render_quote_document(
         catalogue_rows=catalogue_rows,
         checks=checks,
         figure=Markup(figure_json),  # script-safe JSON (no "<"), not HTML
-        catalogue_source=t("catalogue_source", source=actuator.get("source")),
+        catalogue_source=_with_data(t, "catalogue_source", source=str(actuator.get("source"))),
         selection_footer=t(
             "selection_footer",
             id=quote.selection_id,
@@ -476,6 +567,7 @@ def render_quote_document(
         ),
         version_note=version_note,
         figures_fixed=t("figures_fixed"),
+        diagram_note=t("pdf_diagram_note"),
         plotly_url=PLOTLY_URL,
         document_script="/api/v1" + DOCUMENT_SCRIPT_PATH,
     )

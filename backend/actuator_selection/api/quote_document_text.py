@@ -121,10 +121,11 @@ TEXT: dict[str, dict[str, str]] = {
     "notes": {"en": "Notes", "de": "Anmerkungen"},
     "justification": {"en": "Engineering justification", "de": "Technische Begründung"},
     "justification_intro": {
-        "en": "{model} for the load case below, by <em>Engineering Data for Harmonic Drive "
-        "Servo Actuators</em>. Verdict: <strong data-field='verdict'>{verdict}</strong>.",
-        "de": "{model} für den unten stehenden Lastfall, nach <em>Engineering Data for "
-        "Harmonic Drive Servo Actuators</em>. Ergebnis: "
+        "en": "{model} for the load case below, by <em translate='no'>Engineering Data for "
+        "Harmonic Drive Servo Actuators</em>. Verdict: "
+        "<strong data-field='verdict'>{verdict}</strong>.",
+        "de": "{model} für den unten stehenden Lastfall, nach <em lang='en' translate='no'>"
+        "Engineering Data for Harmonic Drive Servo Actuators</em>. Ergebnis: "
         "<strong data-field='verdict'>{verdict}</strong>.",
     },
     "verdict_suitable": {"en": "suitable", "de": "geeignet"},
@@ -242,6 +243,7 @@ TEXT: dict[str, dict[str, str]] = {
     "ref_Table": {"en": "Table", "de": "Tabelle"},
     "ref_Eq.": {"en": "Eq.", "de": "Gl."},
     "ref_Fig.": {"en": "Fig.", "de": "Abb."},
+    "ref_model": {"en": "model", "de": "Modell"},
     "catalogue_source": {"en": "Catalogue data: {source}.", "de": "Katalogdaten: {source}."},
     "selection_footer": {
         "en": "Selection {id} of {date}, made with catalogue version {version}; catalogue "
@@ -255,6 +257,24 @@ TEXT: dict[str, dict[str, str]] = {
         "de": " Der Katalog hat sich zwischen Auswahl und Angebot geändert (v{old} → v{new}); "
         "die Begründung zeigt die Zahlen der Auswahl.",
     },
+    # The service's own item descriptions (services/quotes.py), worded again for the reader
+    "item_actuator": {
+        "en": "Servo actuator {model} ({family}, gear ratio {ratio})",
+        "de": "Servoantrieb {model} ({family}, Untersetzung {ratio})",
+    },
+    "item_controller": {"en": "Servo controller {type_name}", "de": "Servoregler {type_name}"},
+    "item_controller_row": {
+        "en": "Servo controller {type_name} ({controller}, Table 521.1 row {row}: {level})",
+        "de": "Servoregler {type_name} ({controller}, Tabelle 521.1 Zeile {row}: {level})",
+    },
+    "level_tested": {"en": "tested", "de": "praktisch erprobt"},
+    "level_possible": {"en": "possible", "de": "theoretisch machbar"},
+    "level_unconfirmed": {"en": "unconfirmed", "de": "nicht bestätigt"},
+    # The PDF of the document (services/quote_pdf.py)
+    "pdf_diagram_note": {
+        "en": "The speed/torque diagram is in the HTML document.",
+        "de": "Das Drehzahl-Drehmoment-Diagramm enthält das HTML-Dokument.",
+    },
     "figures_fixed": {
         "en": "Figures are those computed by the service and stored with the selection; "
         "they do not change afterwards.",
@@ -264,7 +284,7 @@ TEXT: dict[str, dict[str, str]] = {
 }
 
 
-_REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.")
+_REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))")
 
 
 def negotiate_language(query: str | None, accept_language: str | None) -> Language:
@@ -342,6 +362,8 @@ class DocumentText:
 
         >>> DocumentText("de").reference("Table 515.1, Eq. 514.2 and Fig. 517.1")
         'Tabelle 515.1, Gl. 514.2 and Abb. 517.1'
+        >>> DocumentText("de").reference("Fig. 520.1 (model); Eq. 514.2")
+        'Abb. 520.1 (Modell); Gl. 514.2'
         """
         return _REFERENCE_WORD.sub(lambda m: self(f"ref_{m.group(0)}"), reference)
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 from datetime import UTC, date, datetime
 from typing import Annotated, Literal
+from urllib.parse import quote as quote_path
 
 from fastapi import APIRouter, Depends, Header, Query, Response
 from fastapi.responses import HTMLResponse
@@ -19,6 +20,7 @@ from actuator_selection.api.errors import RequestFieldError, UnauthorizedError, 
 from actuator_selection.api.quote_document import (
     DOCUMENT_SCRIPT,
     DOCUMENT_SCRIPT_PATH,
+    quote_document_context,
     render_quote_document,
 )
 from actuator_selection.api.quote_document_text import negotiate_language
@@ -248,6 +250,66 @@ def quote_document(
     return HTMLResponse(
         html,
         headers={**DOCUMENT_HEADERS, "Content-Language": language, "Vary": "Accept-Language"},
+    )
+
+
+@router.get(
+    "/quotes/{number}/document.pdf",
+    response_class=Response,
+    responses={
+        200: {
+            "content": {"application/pdf": {"schema": {"type": "string", "format": "binary"}}},
+            "description": "A4, the quote document's words and numbers in its language (seller "
+            "block, customer, items, net/VAT/gross, terms, engineering justification), with "
+            "page numbers; the speed/torque diagram is in the HTML document only",
+        },
+        404: {"description": "unknown quote"},
+    },
+)
+def quote_document_pdf(
+    number: str,
+    principal: PrincipalDep,
+    session: SessionDep,
+    clock: ClockDep,
+    settings: SettingsDep,
+    access: Annotated[
+        str | None,
+        Query(
+            max_length=100,
+            description="a token from POST /quotes/{number}/document-link, for a browser "
+            "that downloads the file without the API key",
+        ),
+    ] = None,
+    lang: Annotated[
+        Literal["de", "en"] | None,
+        Query(description="the document's language; left out: from Accept-Language, else en"),
+    ] = None,
+    accept_language: Annotated[str | None, Header(include_in_schema=False)] = None,
+) -> Response:
+    """The quote document as a PDF download (A4), in German or English."""
+    from actuator_selection.services.quote_pdf import render_quote_pdf  # fpdf2: on first use
+
+    _document_reader(principal, access, number=number, session=session, now=clock.now())
+    data = quotes.quote_document(session, number, today=clock.today())
+    language = negotiate_language(lang, accept_language)
+    context = quote_document_context(
+        data.quote,
+        selection=data.selection,
+        record=data.record,
+        language=language,
+        current_seller=settings.seller(),
+        placeholder_seller_name=PLACEHOLDER_SELLER_NAME,
+    )
+    name = quote_path(f"{data.quote.number}.pdf", safe="")
+    return Response(
+        render_quote_pdf(context),
+        media_type="application/pdf",
+        headers={
+            "Content-Disposition": f'attachment; filename="{name}"',
+            "Content-Language": language,
+            "Vary": "Accept-Language",
+            "Cache-Control": "no-store",
+        },
     )
 
 

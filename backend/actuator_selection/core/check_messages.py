@@ -11,7 +11,8 @@ number format and translations).
 
 A parameter is a number (in the unit its name or the check gives), a :class:`Text`
 (English words, translated where rendered), a nested :class:`Phrase` (a clause of its
-own code and params), or None (a clause left out: rendered as nothing).
+own code and params), a list of such (written joined by ", "; a tuple, alternatives,
+by " / "), or None (a clause left out: rendered as nothing).
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ class Phrase(str):
     def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:
         # str.format in C: a Phrase among the params formats as its English text; a clause
         # left out (None) as nothing.
-        fields = {k: "" if v is None else v for k, v in params.items()}
+        fields = {k: _english(v) for k, v in params.items()}
         text = str.__new__(cls, CHECK_MESSAGES[code].format_map(fields))
         text.code = code
         text.params = params
@@ -41,6 +42,21 @@ class Phrase(str):
 
     def __reduce__(self) -> tuple[Any, ...]:
         return (Phrase, (self.code, dict(self.params)))
+
+
+def _english(value: Any) -> Any:
+    """A parameter as the English text shows it: a list as its items joined by ", ", a
+    clause left out (None) as nothing."""
+    if value is None:
+        return ""
+    if isinstance(value, list | tuple):
+        return _separator(value).join(str(v) for v in value)
+    return value
+
+
+def _separator(items: list[Any] | tuple[Any, ...]) -> str:
+    """A list's items are joined by ", ", a tuple's (alternatives: "CHA / CHM") by " / "."""
+    return " / " if isinstance(items, tuple) else ", "
 
 
 def phrase(code: str, **params: Any) -> Phrase:
@@ -66,6 +82,10 @@ class _Renderer(Formatter):
             return self.render(value)
         if isinstance(value, Text):
             return self._translate(value)
+        if isinstance(value, list | tuple):
+            return _separator(value).join(self.format_field(v, "") for v in value)
+        if isinstance(value, int) and not isinstance(value, bool) and not format_spec:
+            return str(value)  # a count
         if (
             self._number is not None
             and isinstance(value, int | float)
@@ -98,6 +118,8 @@ def jsonable_params(message: str) -> dict[str, Any] | None:
     def one(value: Any) -> Any:
         if isinstance(value, Phrase):
             return {"code": value.code, "params": jsonable_params(value)}
+        if isinstance(value, list | tuple):
+            return [one(v) for v in value]
         if isinstance(value, str):
             return str(value)
         if isinstance(value, float) and not math.isfinite(value):
@@ -249,6 +271,55 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "n_av = {mean_speed_rpm:.4g} rpm below the required {required_life_h:.4g} h (P_c = "
         "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N)"
     ),
+    # Table 521.1: one criterion of one controller (core/compatibility.py)
+    "criterion.no_data": N_("no data: {criterion} unknown"),
+    "criterion.excluded": N_("{criterion} {options}: not supported (no mark in {reference})"),
+    "criterion.tested": N_("{criterion} {option}: practically tested (●)"),
+    "criterion.possible": N_("{criterion} {option}: theoretically possible (○)"),
+    # What a candidate's controller list rests on (schemas/controllers.py)
+    "controllers_note.none": N_("no controller of Table 521.1 supports this actuator"),
+    "controllers_note.supported": N_(
+        "{count} controllers support this actuator ({excluded} excluded)"
+    ),
+    "controllers_note.unconfirmed": N_(
+        "{count} controllers are not excluded ({excluded} are), but the catalogue has no "
+        "data for: {missing}; those criteria stay unconfirmed"
+    ),
+    # U_OUT of Eq. 521.2 against a DC bus class (core/electrical.py, core/drive.py)
+    "output_voltage.pass": N_(
+        "U_OUT = {required_voltage_v:.4g} V_rms ≤ {available_voltage_v:.4g} V_rms available "
+        "from a {dc_bus_voltage_v:g} V DC bus ({modulation} modulation)"
+    ),
+    "output_voltage.fail": N_(
+        "U_OUT = {required_voltage_v:.4g} V_rms exceeds {available_voltage_v:.4g} V_rms "
+        "available from a {dc_bus_voltage_v:g} V DC bus ({modulation} modulation)"
+    ),
+    "controller_voltage.at_speed": N_("{output} at n_2 = {speed_rpm:.4g} rpm{at_max_speed}"),
+    "controller_voltage.reaches": N_(
+        "; at n_max = {max_speed_rpm:.4g} rpm U_OUT = {max_speed_voltage_v:.4g} V_rms, so "
+        "this bus reaches n_max"
+    ),
+    "controller_voltage.does_not_reach": N_(
+        "; at n_max = {max_speed_rpm:.4g} rpm U_OUT = {max_speed_voltage_v:.4g} V_rms, so "
+        "this bus does not reach n_max"
+    ),
+    "controller_voltage.no_constants": N_(
+        "no data: the catalogue gives no motor K_E (V_rms per 1000 rpm), I_max and line-to-line R"
+    ),
+    "controller_voltage.no_bus_class": N_("no data: the actuator's DC bus class is not published"),
+    "controller_voltage.no_shared_bus": N_(
+        "no data: the controller and the actuator share no DC bus class"
+    ),
+    # The output bearing of a selection (schemas/output_load.py)
+    "output_bearing.not_checked": N_("not checked: no output_load given"),
+    "output_bearing.no_life": N_(
+        "tilting moment and static safety checked; life not checked: no required_life_h"
+    ),
+    "output_bearing.checked": N_("tilting moment, static safety and L_10 life checked"),
+    # A check of a stored lean answer, written from its numbers (schemas/quotes.py); the
+    # check's name stands beside it wherever it is shown
+    "stored.pass": N_("{value:.4g} {unit} ≤ {limit:.4g} {unit}"),
+    "stored.fail": N_("{value:.4g} {unit} exceeds {limit:.4g} {unit}"),
 }
 """Code → English template of every check message (and of the clauses they hold)."""
 

@@ -39,10 +39,12 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from types import MappingProxyType
 
+from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.errors import InvalidInputError, NotFoundError
+from actuator_selection.core.messages import N_
 from actuator_selection.core.thermal import TemperatureSensor
 
-REFERENCE = "Table 521.1"
+REFERENCE = N_("Table 521.1")
 
 
 class SupportLevel(StrEnum):
@@ -102,23 +104,24 @@ LABELS: Mapping[str, str] = MappingProxyType(
         ProductFamily.LYNXDRIVE: "LynxDrive",
         ProductFamily.TORKDRIVE: "TorkDrive",
         ProductFamily.FHA_MINI: "FHA-C mini",
-        BusClass.V24: "24 VDC bus",
-        BusClass.V320: "320 VDC bus",
-        BusClass.V560: "≥ 560 VDC bus",
+        BusClass.V24: N_("24 VDC bus"),
+        BusClass.V320: N_("320 VDC bus"),
+        BusClass.V560: N_("≥ 560 VDC bus"),
         TemperatureSensor.PTC: "PTC",
         TemperatureSensor.KTY84_130: "KTY 84-130",
-        FeedbackSystem.RESOLVER_2POLE: "2-pole resolver",
-        FeedbackSystem.SINCOS: "incremental sine/cosine encoder",
-        FeedbackSystem.HIPERFACE: "HIPERFACE encoder",
-        FeedbackSystem.ENDAT: "EnDat encoder",
-        FeedbackSystem.TTL: "incremental TTL encoder",
-        Criterion.FAMILY: "actuator family",
-        Criterion.BUS_CLASS: "DC bus voltage",
-        Criterion.TEMPERATURE_SENSOR: "temperature sensor",
-        Criterion.FEEDBACK_SYSTEM: "feedback system",
+        FeedbackSystem.RESOLVER_2POLE: N_("2-pole resolver"),
+        FeedbackSystem.SINCOS: N_("incremental sine/cosine encoder"),
+        FeedbackSystem.HIPERFACE: N_("HIPERFACE encoder"),
+        FeedbackSystem.ENDAT: N_("EnDat encoder"),
+        FeedbackSystem.TTL: N_("incremental TTL encoder"),
+        Criterion.FAMILY: N_("actuator family"),
+        Criterion.BUS_CLASS: N_("DC bus voltage"),
+        Criterion.TEMPERATURE_SENSOR: N_("temperature sensor"),
+        Criterion.FEEDBACK_SYSTEM: N_("feedback system"),
     }
 )
-"""Human-readable names of the columns and criteria (Table 521.1 headings)."""
+"""Human-readable names of the columns and criteria (Table 521.1 headings); those in
+words are marked for the catalogs (:func:`N_`), product names are the same in every language."""
 
 MARK_COLUMNS: tuple[tuple[Criterion, Option, str], ...] = (
     *((Criterion.FAMILY, f, f.value) for f in ProductFamily),
@@ -455,7 +458,7 @@ def evaluate_criterion(
             criterion=criterion,
             status=CriterionStatus.NO_DATA,
             option=None,
-            message=f"no data: {label} unknown",
+            message=phrase("criterion.no_data", criterion=label),
         )
     best: tuple[SupportLevel, Option] | None = None
     for option in options:
@@ -466,22 +469,23 @@ def evaluate_criterion(
         if level is SupportLevel.POSSIBLE and best is None:
             best = (level, option)
     if best is None:
-        names = " / ".join(LABELS[o] for o in options)
         return CriterionResult(
             criterion=criterion,
             status=CriterionStatus.EXCLUDED,
             option=options[0] if len(options) == 1 else None,
-            message=f"{label} {names}: not supported (no mark in {REFERENCE})",
+            message=phrase(
+                "criterion.excluded",
+                criterion=label,
+                options=tuple(LABELS[o] for o in options),
+                reference=REFERENCE,
+            ),
         )
     level, option = best
-    mark = (
-        "practically tested (●)" if level is SupportLevel.TESTED else "theoretically possible (○)"
-    )
     return CriterionResult(
         criterion=criterion,
         status=CriterionStatus(level.value),
         option=option,
-        message=f"{label} {LABELS[option]}: {mark}",
+        message=phrase(f"criterion.{level.value}", criterion=label, option=LABELS[option]),
     )
 
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.compatibility import (
     ActuatorInterface,
     CompatibilityResult,
@@ -53,7 +54,7 @@ class DriveOptions:
     excluded: int
 
 
-def _no_voltage_data(reason: str) -> Check:
+def _no_voltage_data(code: str) -> Check:
     return Check(
         name="controller_voltage",
         status=Status.NO_DATA,
@@ -61,7 +62,7 @@ def _no_voltage_data(reason: str) -> Check:
         limit=None,
         unit="V",
         reference=VOLTAGE_REFERENCE,
-        message=f"no data: {reason}",
+        message=phrase(f"controller_voltage.{code}"),
     )
 
 
@@ -119,13 +120,11 @@ def shared_voltage_check(
     k_e = actuator.motor_voltage_constant_v_per_krpm
     i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
     if k_e is None or i_max is None or r_line is None:
-        return _no_voltage_data(
-            "the catalogue gives no motor K_E (V_rms per 1000 rpm), I_max and line-to-line R"
-        )
+        return _no_voltage_data("no_constants")
     if interface.bus_classes is None:
-        return _no_voltage_data("the actuator's DC bus class is not published")
+        return _no_voltage_data("no_bus_class")
     if not shared:
-        return _no_voltage_data("the controller and the actuator share no DC bus class")
+        return _no_voltage_data("no_shared_bus")
 
     def required(speed: float) -> float:
         return controller_output_voltage(
@@ -142,14 +141,22 @@ def shared_voltage_check(
     message = ""
     if words:
         best: OutputVoltageCheck = check_output_voltage(required_voltage_v=u_load, bus=bus)
-        message = best.message + f" at n_2 = {speed_rpm:.4g} rpm"
+        at_max_speed = None
         if actuator.max_speed_rpm is not None:
             u_max = required(actuator.max_speed_rpm)
-            reach = "reaches" if u_max <= available else "does not reach"
-            message += (
-                f"; at n_max = {actuator.max_speed_rpm:.4g} rpm U_OUT = {u_max:.4g} V_rms, "
-                f"so this bus {reach} n_max"
+            at_max_speed = phrase(
+                "controller_voltage.reaches"
+                if u_max <= available
+                else "controller_voltage.does_not_reach",
+                max_speed_rpm=actuator.max_speed_rpm,
+                max_speed_voltage_v=u_max,
             )
+        message = phrase(
+            "controller_voltage.at_speed",
+            output=best.message,
+            speed_rpm=speed_rpm,
+            at_max_speed=at_max_speed,
+        )
     return Check(
         name="controller_voltage",
         status=Status.PASS if u_load <= available else Status.FAIL,

@@ -22,12 +22,15 @@ K_INL(30 °C) = 6·10⁻³ A/rpm):
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import StrEnum
+from typing import Final
 
+from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.compatibility import BusClass
 from actuator_selection.core.errors import InvalidInputError, MissingDataError, OutOfRangeError
+from actuator_selection.core.messages import N_, Text
 from actuator_selection.core.units import per_krpm_to_per_rpm
 
 
@@ -259,6 +262,13 @@ class Modulation(StrEnum):
     """Sine-triangle PWM without over-modulation: U_LL,rms ≤ √3·U_DC/(2√2) ≈ 0.612·U_DC."""
 
 
+MODULATION_WORDS: Final[Mapping[Modulation, Text]] = {
+    Modulation.SPACE_VECTOR: N_("space_vector"),
+    Modulation.SINE_TRIANGLE: N_("sine_triangle"),
+}
+"""A modulation as the voltage check names it (its value in English, words in German)."""
+
+
 def max_output_voltage_v(*, dc_bus_voltage_v: float, modulation: Modulation) -> float:
     """Largest sinusoidal line-to-line rms voltage [V_rms] a three-phase inverter delivers.
 
@@ -329,7 +339,6 @@ def check_output_voltage(
     available = max_output_voltage_v(dc_bus_voltage_v=bus.nominal_voltage_v, modulation=modulation)
     ok = required_voltage_v <= available
     margin = (available - required_voltage_v) / available * 100.0
-    relation = "≤" if ok else "exceeds"
     return OutputVoltageCheck(
         bus_class=bus.bus_class,
         dc_bus_voltage_v=bus.nominal_voltage_v,
@@ -339,8 +348,13 @@ def check_output_voltage(
         sufficient=ok,
         margin_percent=margin,
         reference="Eq. 521.2, Table 521.1",
-        message=f"U_OUT = {required_voltage_v:.4g} V_rms {relation} {available:.4g} V_rms "
-        f"available from a {bus.nominal_voltage_v:g} V DC bus ({modulation.value} modulation)",
+        message=phrase(
+            "output_voltage.pass" if ok else "output_voltage.fail",
+            required_voltage_v=required_voltage_v,
+            available_voltage_v=available,
+            dc_bus_voltage_v=bus.nominal_voltage_v,
+            modulation=MODULATION_WORDS[modulation],
+        ),
     )
 
 

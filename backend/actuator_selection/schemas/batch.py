@@ -133,6 +133,12 @@ class BatchCandidateOut(CandidateFigures):
     )
     controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
     controllers_note: str = Field(description="what the controller list rests on")
+    controllers_note_code: str | None = Field(
+        default=None, description="stable code of `controllers_note`, as in a candidate's detail"
+    )
+    controllers_note_params: dict[str, Any] | None = Field(
+        default=None, description="the values `controllers_note` names, as in the detail"
+    )
 
 
 class BatchResultOut(ResponseModel):
@@ -213,7 +219,9 @@ def candidate_body(
     if controllers is not None:
         body["controllers"] = controllers
     body["controllers_excluded"] = controllers_excluded
-    body["controllers_note"] = controllers_note
+    body["controllers_note"] = localize(controllers_note)
+    body["controllers_note_code"] = message_code(controllers_note)
+    body["controllers_note_params"] = jsonable_params(controllers_note)
     return body
 
 

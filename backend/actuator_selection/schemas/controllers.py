@@ -8,7 +8,9 @@ from typing import Any, Literal
 from pydantic import Field
 
 from actuator_selection.core.catalogue import ControllerRecord, InterfaceRecord
+from actuator_selection.core.check_messages import Phrase, jsonable_params, phrase
 from actuator_selection.core.compatibility import (
+    LABELS,
     MARK_COLUMNS,
     ActuatorInterface,
     Controller,
@@ -17,7 +19,7 @@ from actuator_selection.core.compatibility import (
 )
 from actuator_selection.core.drive import DriveOption, DriveOptions
 from actuator_selection.core.selection import Check
-from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
 from actuator_selection.schemas.common import ResponseModel
 
 Level = Literal["tested", "possible"]
@@ -60,17 +62,26 @@ class CriterionOut(ResponseModel):
     criterion: str
     status: Literal["tested", "possible", "excluded", "no_data"]
     option: str | None
-    message: str
+    message: str = Field(description="the criterion in words, in the answer's language")
+    message_code: str | None = Field(
+        default=None,
+        description="stable code of the message (`criterion.tested`, `criterion.no_data`, …)",
+    )
+    message_params: dict[str, Any] | None = Field(
+        default=None, description="the values the message names (words in English)"
+    )
     reference: str
 
     @classmethod
-    def from_core(cls, result: CriterionResult) -> CriterionOut:
-        """The response body of one criterion."""
+    def from_core(cls, result: CriterionResult, localize: Localize = english) -> CriterionOut:
+        """The response body of one criterion, its message in words by ``localize``."""
         return cls(
             criterion=result.criterion.value,
             status=result.status.value,
             option=None if result.option is None else str(result.option.value),
-            message=result.message,
+            message=localize(result.message),
+            message_code=message_code(result.message),
+            message_params=jsonable_params(result.message),
             reference=result.reference,
         )
 
@@ -92,8 +103,8 @@ class ControllerMatchOut(ResponseModel):
     criteria: list[CriterionOut]
 
     @classmethod
-    def from_core(cls, match: ControllerMatch) -> ControllerMatchOut:
-        """The response body of one match."""
+    def from_core(cls, match: ControllerMatch, localize: Localize = english) -> ControllerMatchOut:
+        """The response body of one match, its criteria in words by ``localize``."""
         c: Controller = match.controller
         return cls(
             manufacturer=c.manufacturer,
@@ -103,7 +114,7 @@ class ControllerMatchOut(ResponseModel):
             level=match.verdict.value,
             missing=[r.criterion.value for r in match.no_data],
             excluded_by=[r.criterion.value for r in match.excluded_by],
-            criteria=[CriterionOut.from_core(r) for r in match.criteria],
+            criteria=[CriterionOut.from_core(r, localize) for r in match.criteria],
         )
 
 
@@ -159,7 +170,8 @@ class DriveOptionBodies:
     so one instance of each part can stand in every list that holds it.
     """
 
-    def __init__(self) -> None:
+    def __init__(self, localize: Localize = english) -> None:
+        self._localize = localize
         self._matches: dict[ControllerMatch, dict[str, Any]] = {}
         self._checks: dict[Check, CheckOut] = {}
 
@@ -172,21 +184,30 @@ class DriveOptionBodies:
         if match is None:
             # DriveOptionOut is ControllerMatchOut plus ``voltage``: its fields, criteria
             # already CriterionOut instances, which validation then only checks by type.
-            match = self._matches[option.match] = dict(ControllerMatchOut.from_core(option.match))
+            match = self._matches[option.match] = dict(
+                ControllerMatchOut.from_core(option.match, self._localize)
+            )
         voltage = self._checks.get(option.voltage)
         if voltage is None:
-            voltage = self._checks[option.voltage] = CheckOut.from_core(option.voltage)
+            voltage = self._checks[option.voltage] = CheckOut.from_core(
+                option.voltage, self._localize
+            )
         return DriveOptionOut(**match, voltage=voltage)
 
 
-def controllers_note(drive: DriveOptions) -> str:
-    """One sentence on what the controller list rests on."""
+def controllers_note(drive: DriveOptions) -> Phrase:
+    """One sentence on what the controller list rests on (English text with its code and
+    params; the criteria it lacks data for named in words)."""
     if not drive.options:
-        return "no controller of Table 521.1 supports this actuator"
-    missing = sorted({r.criterion.value for o in drive.options for r in o.match.no_data})
+        return phrase("controllers_note.none")
+    missing = sorted({r.criterion for o in drive.options for r in o.match.no_data})
     if not missing:
-        return f"{len(drive.options)} controllers support this actuator ({drive.excluded} excluded)"
-    return (
-        f"{len(drive.options)} controllers are not excluded ({drive.excluded} are), but the "
-        f"catalogue has no data for: {', '.join(missing)}; those criteria stay unconfirmed"
+        return phrase(
+            "controllers_note.supported", count=len(drive.options), excluded=drive.excluded
+        )
+    return phrase(
+        "controllers_note.unconfirmed",
+        count=len(drive.options),
+        excluded=drive.excluded,
+        missing=[LABELS[c] for c in missing],
     )

@@ -12,6 +12,7 @@ from actuator_selection.core.bearing import (
     NORMAL_STATIC_SAFETY,
     OutputLoad,
 )
+from actuator_selection.core.check_messages import Phrase, phrase
 from actuator_selection.schemas.common import StrictModel
 
 MAX_FORCE_N = 1e7
@@ -87,10 +88,12 @@ def output_load_core(value: OutputLoadIn | None) -> OutputLoad | None:
     return None if value is None else value.to_core()
 
 
-def output_bearing_note(value: OutputLoadIn | None) -> str:
-    """What the answer says about the output bearing."""
+def output_bearing_note(value: OutputLoadIn | None) -> Phrase:
+    """What the answer says about the output bearing: English text with its code
+    (``output_bearing.not_checked``, ``.no_life``, ``.checked``), which a page words in
+    its own language."""
     if value is None:
-        return "not checked: no output_load given"
+        return phrase("output_bearing.not_checked")
     if value.required_life_h is None:
-        return "tilting moment and static safety checked; life not checked: no required_life_h"
-    return "tilting moment, static safety and L_10 life checked"
+        return phrase("output_bearing.no_life")
+    return phrase("output_bearing.checked")

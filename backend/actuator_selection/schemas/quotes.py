@@ -25,7 +25,10 @@ from pydantic import (
     model_validator,
 )
 
+from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.checks import margin_percent
+from actuator_selection.core.messages import N_
+from actuator_selection.core.messages import Text as Words
 from actuator_selection.core.money import MAX_QUANTITY, ROUNDING_RULE
 from actuator_selection.core.quote_status import (
     QuoteStatus,
@@ -373,6 +376,10 @@ class _Stored(BaseModel):
     model_config = ConfigDict(extra="ignore", frozen=True)
 
 
+_UNNAMED_NEED = N_("value this check needs")
+"""What a no-data check stored without ``missing`` lacks."""
+
+
 class StoredCheck(_Stored):
     """A flowchart check as stored with the selection.
 
@@ -398,14 +405,29 @@ class StoredCheck(_Stored):
 
     @property
     def summary(self) -> str:
-        """The check in words: the stored message, or one written from its numbers."""
+        """The check in words (English): the stored message, or one written from its numbers
+        after the check's name (``max_speed: 40 rpm ≤ 90 rpm``)."""
+        said = self.phrase
+        return said if self.message or self.status == "no_data" else f"{self.name}: {said}"
+
+    @property
+    def phrase(self) -> str:
+        """The check in words as a message with a code (``core/check_messages.py``), which
+        the API renders in a reader's language (the check's name, which :attr:`summary` puts
+        before the numbers, stands beside it where it is shown); a message stored as text by
+        an older answer stays that text."""
         if self.message:
             return self.message
         if self.status == "no_data":
-            what = self.missing or "value this check needs"
-            return f"no data: the catalogue gives no {what} for this actuator"
-        relation = "≤" if self.status == "pass" else "exceeds"
-        return f"{self.name}: {self.value:.4g} {self.unit} {relation} {self.limit:.4g} {self.unit}"
+            return phrase("no_data", what=Words(self.missing or _UNNAMED_NEED))
+        if self.value is None or self.limit is None:
+            return self.name
+        return phrase(
+            "stored.pass" if self.status == "pass" else "stored.fail",
+            value=self.value,
+            limit=self.limit,
+            unit=Words(self.unit),
+        )
 
 
 class StoredCandidate(_Stored):

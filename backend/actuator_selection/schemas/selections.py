@@ -11,6 +11,7 @@ from typing import Annotated, Any, Literal
 from pydantic import ConfigDict, Discriminator, Field, Tag
 
 from actuator_selection.core.axis import AxisLoad
+from actuator_selection.core.check_messages import jsonable_params
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.drive import DriveOptions
 from actuator_selection.core.errors import DomainError, InvalidInputError
@@ -18,7 +19,7 @@ from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_loa
 from actuator_selection.core.motion import MAX_SEGMENTS, Motion, Profile, Segment, trapezoid
 from actuator_selection.core.selection import Application, Candidate
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.checks import CheckOut, Localize, english
+from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
     MAX_INERTIA_KGM2,
@@ -586,7 +587,18 @@ class CandidateDetailOut(CandidateFigures):
         "each with its output-voltage check (Eq. 521.2) at n_2"
     )
     controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
-    controllers_note: str = Field(description="what the controller list rests on")
+    controllers_note: str = Field(
+        description="what the controller list rests on, in the answer's language"
+    )
+    controllers_note_code: str | None = Field(
+        default=None,
+        description="stable code of `controllers_note` (`controllers_note.unconfirmed`, …)",
+    )
+    controllers_note_params: dict[str, Any] | None = Field(
+        default=None,
+        description="the values `controllers_note` names: `count`, `excluded`, `missing` "
+        "(the criteria without data, in English words)",
+    )
     actuator: ActuatorOut = Field(description="the catalogue entry, as GET /actuators/{model}")
     segment_torques: list[SegmentTorqueOut] = Field(
         default_factory=list,
@@ -620,6 +632,7 @@ class CandidateDetailOut(CandidateFigures):
                 for st in profile.segment_torques(j_a)
             ]
         )
+        note = controllers_note(drive)
         return cls(
             selection_id=selection_id,
             catalogue_version=catalogue_version,
@@ -633,9 +646,11 @@ class CandidateDetailOut(CandidateFigures):
             rms_torque_nm=t.rms_torque_nm if t else None,
             reasons=[localize(r) for r in candidate.reasons],
             checks=[CheckOut.from_core(c, localize) for c in candidate.checks],
-            controllers=DriveOptionBodies().controllers(drive),
+            controllers=DriveOptionBodies(localize).controllers(drive),
             controllers_excluded=drive.excluded,
-            controllers_note=controllers_note(drive),
+            controllers_note=localize(note),
+            controllers_note_code=message_code(note),
+            controllers_note_params=jsonable_params(note),
             actuator=actuator,
             segment_torques=segment_torques,
         )

@@ -5,7 +5,7 @@
 import { ApiError, createClient, encodePath } from "../../lib/api.js";
 import { $, h, notice } from "../../lib/dom.js";
 import { appendSymbols, num, qty } from "../../lib/format.js";
-import { LANGS, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
+import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
@@ -758,7 +758,9 @@ let drawToken = 0;
 const PLOT_CONFIG = {
   responsive: true,
   displaylogo: false,
-  modeBarButtonsToRemove: ["select2d", "lasso2d", "autoScale2d"],
+  // "Share chart…" would send the data to a site outside the app
+  modeBarButtonsToRemove: ["select2d", "lasso2d", "autoScale2d", "sendChartToCloud"],
+  locales: PLOTLY_LOCALES,
 };
 
 function purgeCharts() {
@@ -794,7 +796,11 @@ async function drawCharts() {
     return;
   }
   if (token !== drawToken) return;
-  const config = (name) => ({ ...PLOT_CONFIG, toImageButtonOptions: { filename: `${candidate.model}-${name}` } });
+  const config = (name) => ({
+    ...PLOT_CONFIG,
+    locale: lang, // plotly's own tooltips (the mode bar) in the page's language
+    toImageButtonOptions: { filename: `${candidate.model}-${name}` },
+  });
 
   const cycle = cycleFigure(sel, candidate, lang);
   cycleDiv.replaceChildren();

@@ -108,8 +108,8 @@ export function renderSummary(sel, lang) {
         id: "sum-high-dynamics",
       }),
       definition(t("summary.drive"), t(sel.drive ? "summary.yes" : "summary.no"), { id: "sum-drive" }),
-      sel.output_load && typeof sel.output_bearing === "string"
-        ? definition(t("summary.output_bearing"), sym(sel.output_bearing, { lang: "en" }), { id: "sum-output-bearing" })
+      sel.output_load && typeof sel.output_load === "object"
+        ? definition(t("summary.output_bearing"), t(outputBearingKey(sel.output_load)), { id: "sum-output-bearing" })
         : null,
       mech
         ? definition(t("summary.mechanism"), t(`load.${mech}`), { id: "sum-mechanism" })
@@ -434,7 +434,22 @@ function criteriaCell(controller, lang) {
   );
 }
 
-function voltageCell(check, lang) {
+/**
+ * What the answer's ``output_bearing`` says (codes ``output_bearing.no_life`` and
+ * ``.checked``), in the page's words: from the output load as sent, which decides it.
+ */
+function outputBearingKey(outputLoad) {
+  return typeof outputLoad.required_life_h === "number" ? "summary.output_bearing.checked" : "summary.output_bearing.no_life";
+}
+
+/** A controller's name; the "row N" the catalogue gives a variant whose name the source lost, in ``lang``. */
+function controllerName(c, lang) {
+  const row = typeof c.variant === "string" ? /^row (\d+)$/.exec(c.variant) : null;
+  const variant = row ? translate(lang, "controller.row", { n: row[1] }) : c.variant;
+  return [c.manufacturer, c.type, variant].filter((x) => typeof x === "string" && x).join(" ");
+}
+
+function voltageCell(check, lang, said = "en") {
   if (!check || typeof check !== "object") return h("span", { class: "muted" }, "–");
   const unit = check.unit ?? "V";
   const against =
@@ -446,7 +461,7 @@ function voltageCell(check, lang) {
     against,
     check.status === "pass" || typeof check.message !== "string"
       ? null
-      : sym(check.message, { class: "api-message block", lang: "en" }),
+      : sym(check.message, { class: "api-message block", lang: said }),
   ];
 }
 
@@ -462,6 +477,7 @@ function controllerEntries(sel, candidate, detail) {
       controllers: detail.controllers.filter((c) => c && typeof c === "object"),
       excluded: detail.controllers_excluded,
       note: detail.controllers_note,
+      said: answerLanguage(detail),
     };
   }
   if (!Array.isArray(candidate.drive_options)) return null;
@@ -475,7 +491,7 @@ function controllerEntries(sel, candidate, detail) {
       controllers.push({ ...ref, level: group.level, missing: group.missing, voltage: group.voltage });
     }
   }
-  return { controllers, excluded: candidate.controllers_excluded, note: null };
+  return { controllers, excluded: candidate.controllers_excluded, note: null, said: "en" };
 }
 
 /** Controllers of Table 521.1 for the candidate, when the API lists them (else nothing). */
@@ -499,7 +515,7 @@ function controllerList(sel, candidate, detail, lang) {
       ". ",
       h("span", { class: "legend" }, `● ${t("controller.tested")} · ○ ${t("controller.possible")} · ? ${t("controller.no_data")}`),
     ),
-    typeof entries.note === "string" ? sym(entries.note, { class: "api-message block", lang: "en" }) : null,
+    typeof entries.note === "string" ? sym(entries.note, { class: "api-message block", lang: entries.said }) : null,
     controllers.length
       ? h(
           "div",
@@ -529,14 +545,14 @@ function controllerList(sel, candidate, detail, lang) {
                   h(
                     "th",
                     { scope: "row", role: "rowheader", class: "controller-name", "data-label": t("controller.name") },
-                    [c.manufacturer, c.type, c.variant].filter((x) => typeof x === "string" && x).join(" "),
+                    h("span", { translate: "no" }, controllerName(c, lang)),
                   ),
                   h("td", { role: "cell", "data-label": t("controller.level") }, levelBadge(c.level, lang)),
                   h("td", { role: "cell", "data-label": t("controller.criteria") }, criteriaCell(c, lang)),
                   h(
                     "td",
                     { role: "cell", class: "voltage", "data-label": plainSymbols(t("controller.voltage")) },
-                    voltageCell(c.voltage, lang),
+                    voltageCell(c.voltage, lang, entries.said),
                   ),
                 ),
               ),
@@ -751,12 +767,12 @@ function segmentTable(sel, detail, view, lang) {
             h("th", { scope: "col", role: "columnheader" }, t("segtable.segment")),
             col("segtable.start", null, "s"),
             col("segtable.duration", null, "s"),
-            col(null, "n_start", "rpm"),
-            col(null, "n_end", "rpm"),
+            col(null, t("sym.n_start"), "rpm"),
+            col(null, t("sym.n_end"), "rpm"),
             col("segtable.jerk", null, null),
-            col(null, "T_process", "Nm"),
-            col(null, "T_start", "Nm"),
-            col(null, "T_end", "Nm"),
+            col(null, t("sym.T_process"), "Nm"),
+            col(null, t("sym.T_start"), "Nm"),
+            col(null, t("sym.T_end"), "Nm"),
             col("segtable.peak", null, "Nm"),
           ),
         ),

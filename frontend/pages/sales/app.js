@@ -387,7 +387,7 @@ async function priceListChanged() {
     for (const price of detail.prices) {
       if (price.item_kind !== "controller" || seen.has(price.item_code)) continue;
       seen.add(price.item_code);
-      codes.append(h("option", { value: price.item_code }, price.description || price.item_code));
+      codes.append(h("option", { value: price.item_code, translate: "no" }, price.description || price.item_code));
     }
   } catch {
     // the datalist is a convenience; typing the code works without it
@@ -482,6 +482,8 @@ function showCreated(quote) {
         ". ",
       ),
       documentButton(quote.number),
+      " ",
+      pdfButton(quote.number),
     ];
   });
   box.hidden = false;
@@ -496,6 +498,36 @@ function documentButton(number) {
     { type: "button", class: "document-button", onclick: () => openDocument(number) },
     t("sales.document.open"),
   );
+}
+
+function pdfButton(number) {
+  return h(
+    "button",
+    {
+      type: "button",
+      class: "pdf-button",
+      onclick: () => downloadPdf(number),
+      "aria-label": t("sales.document.pdf.label", { number }),
+    },
+    t("sales.document.pdf"),
+  );
+}
+
+/**
+ * Download the quote document as PDF in the page's language: a signed, short-lived link
+ * (as for the HTML document; the PDF route takes the same token) that the browser
+ * fetches itself as a file (Content-Disposition: attachment).
+ */
+async function downloadPdf(number) {
+  try {
+    const link = await api.post(`${encodePath`/quotes/${number}/document-link`}?lang=${state.lang}`);
+    const anchor = h("a", { href: link.url.replace("/document?", "/document.pdf?"), download: `${number}.pdf`, hidden: true });
+    document.body.append(anchor);
+    anchor.click();
+    anchor.remove();
+  } catch (error) {
+    if (error.status !== 401) show(byId("list-status"), () => [`${number}: `, errorText(error)]);
+  }
 }
 
 async function openDocument(number) {
@@ -536,7 +568,7 @@ const ACTION_KEYS = {
 };
 
 function row(quote) {
-  const actions = h("div", { class: "actions-cell" }, documentButton(quote.number));
+  const actions = h("div", { class: "actions-cell" }, documentButton(quote.number), " ", pdfButton(quote.number));
   for (const status of quote.allowed_transitions) {
     actions.append(
       h(
