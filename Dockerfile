@@ -11,6 +11,11 @@ RUN npm ci --omit=dev --ignore-scripts --no-audit --no-fund
 
 FROM python:3.11-slim
 RUN useradd --create-home --uid 10001 --shell /usr/sbin/nologin app
+# DejaVu Sans for the PDFs (quote document, selection report): every character of the
+# chapter (min⁻¹, ≤, T₁) and €; without it they fall back to Latin-1 Helvetica.
+RUN apt-get update \
+ && apt-get install --yes --no-install-recommends fonts-dejavu-core \
+ && rm -rf /var/lib/apt/lists/*
 WORKDIR /app
 # requirements-runtime.lock: the hash-pinned runtime dependencies (no test tools).
 COPY requirements-runtime.lock ./

@@ -19,6 +19,8 @@ import pytest
 import yaml
 from tests.server.conftest import StartServer, free_port
 
+from actuator_selection.services.quote_pdf import UNICODE_FONTS
+
 ROOT = Path(__file__).resolve().parents[2]
 DOCKERFILE = (ROOT / "Dockerfile").read_text()
 
@@ -122,3 +124,10 @@ def test_the_healthcheck_passes_on_a_serving_app_and_fails_without_one(
         check=False,
     )
     assert down.returncode != 0
+
+
+def test_the_image_has_the_font_the_pdfs_look_for() -> None:
+    """The PDFs set their text in DejaVu Sans where it is installed (every character of the
+    chapter); the image installs Debian's package that puts it where they look."""
+    assert re.search(r"apt-get install .*fonts-dejavu-core", DOCKERFILE)
+    assert Path("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf") in UNICODE_FONTS
