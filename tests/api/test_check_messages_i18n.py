@@ -163,6 +163,33 @@ def test_the_batch_answers_reasons_and_checks_in_german(client: TestClient) -> N
     assert "95,48 Nm" in candidate["checks"][2]["message"]
 
 
+def test_the_batchs_controllers_are_the_details_in_german(
+    client: TestClient, selection_id: str
+) -> None:
+    """Table 521.1's criteria, the voltage checks (Eq. 521.2) and the controllers note of a
+    batch candidate with ``include_controllers``: the candidate detail's, in German too."""
+    case = {k: v for k, v in EXAMPLE_REQUEST.items() if k != "models"} | {"models": [MODEL]}
+    body = {"cases": [case], "include_controllers": True}
+    german = client.post(f"{SELECTIONS}/batch", json=body, headers={"Accept-Language": "de"})
+    assert german.status_code == 200, german.text
+    (candidate,) = german.json()["results"][0]["candidates"]
+    detail = _detail(client, selection_id, "de").json()
+    assert candidate["controllers"] == detail["controllers"]
+    assert candidate["controllers_note"] == detail["controllers_note"]
+    english = client.post(f"{SELECTIONS}/batch", json=body).json()
+    (en_candidate,) = english["results"][0]["candidates"]
+    assert candidate["controllers_note"] != en_candidate["controllers_note"]
+    _assert_german(candidate["controllers_note"])
+    texts = [
+        text
+        for option in candidate["controllers"]
+        for text in (option["voltage"]["message"], *(c["message"] for c in option["criteria"]))
+    ]
+    assert texts
+    for text in texts:
+        _assert_german(text)
+
+
 def test_the_limits_name_their_checks_in_german(client: TestClient) -> None:
     response = client.post(
         f"{SELECTIONS}/limits",

@@ -28,6 +28,7 @@ from actuator_selection.api.errors import (
 from actuator_selection.api.messages import localizer
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
+from actuator_selection.core.check_messages import Phrase
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.selection import Application, Selection
 from actuator_selection.schemas.batch import (
@@ -109,13 +110,13 @@ def _applications(
 class _Drives:
     """Drive options of the candidates answered, each computed once per request."""
 
-    def __init__(self, context: DriveContext) -> None:
+    def __init__(self, context: DriveContext, localize: Localize) -> None:
         self._context = context
-        self._summaries: dict[str, tuple[int, str]] = {}
+        self._summaries: dict[str, tuple[int, Phrase]] = {}
         self._lists: dict[tuple[str, float], list[dict[str, Any]]] = {}
-        self._bodies = DriveOptionBodies()
+        self._bodies = DriveOptionBodies(localize)  # criteria and voltage checks in words
 
-    def summary(self, actuator: Actuator, speed_rpm: float) -> tuple[int, str]:
+    def summary(self, actuator: Actuator, speed_rpm: float) -> tuple[int, Phrase]:
         """``controllers_excluded`` and ``controllers_note``.
 
         Both rest on the Table 521.1 matching alone, which depends on the actuator and
@@ -224,8 +225,9 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
     # go before the answer streams, which keeps the peak memory of a large batch down.
     body.cases.clear()
     language = language_of(request.scope)
+    localize = localizer(language)
     chunks = _result_chunks(
-        body, actuators, apps, models, ids, _Drives(context), localizer(language)
+        body, actuators, apps, models, ids, _Drives(context, localize), localize
     )
     head = (
         b'{"catalogue_version":'
