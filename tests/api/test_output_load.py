@@ -46,6 +46,7 @@ def test_output_load_omitted_means_no_bearing_check(client: TestClient) -> None:
     assert not names & DRIVE
     assert answer["output_load"] is None
     assert answer["output_bearing"] == "not checked: no output_load given"
+    assert answer["output_bearing_code"] == "output_bearing.not_checked"
     for candidate in answer["candidates"]:
         assert not {c["name"] for c in candidate["checks"]} & BEARING
 
@@ -63,6 +64,7 @@ def test_output_load_and_drive_add_their_checks(client: TestClient) -> None:
         "bearing_life",
     ]
     assert answer["output_bearing"] == "tilting moment, static safety and L_10 life checked"
+    assert answer["output_bearing_code"] == "output_bearing.checked"
     assert answer["output_load"]["radial_force_n"] == 1000
     mini = {c["name"]: c for c in detail(client, answer["id"], "FHA-14C-50")["checks"]}
     # FHA-14C: R = 14 mm (FHA-C mini manual Table 1), moment capacity 75 Nm.

@@ -951,3 +951,27 @@ def test_the_ranking_rule_in_the_pages_words(page: Page) -> None:
     page.locator(".ranking-rule summary").click()
     expect(page.locator(".ranking-rule")).to_contain_text("geeignete zuerst")
     expect(page.locator(".ranking-rule")).not_to_contain_text("suitable first")
+
+
+def test_the_output_bearing_line_follows_the_answers_code_in_german(page: Page) -> None:
+    """The answer says whether the output bearing was checked by a code beside its English
+    text (a stored answer is the same in every language); the page words the code."""
+    page.goto("/")
+    page.get_by_role("button", name="Deutsch").click()
+    fill_worked_example(page)
+    page.locator("#f-ol").check()
+    form = page.locator("#output-load")
+    for name, value in (
+        ("radial_force_n", "1000"),
+        ("axial_force_n", "500"),
+        ("radial_lever_m", "0.05"),
+        ("axial_lever_m", "0.02"),
+        ("required_life_h", "20000"),
+    ):
+        form.locator(f'[data-path="output_load.{name}"]').fill(value)
+    status, body = post_selection(page)
+    assert status == 201, body
+    assert body["output_bearing_code"] == "output_bearing.checked"
+    expect(page.locator("#sum-output-bearing")).to_contain_text(
+        "Kippmoment, statische Tragsicherheit und Lebensdauer L_10 geprüft"
+    )

@@ -676,7 +676,16 @@ class SelectionOut(ResponseModel):
     brake: bool = Field(default=False, description="whether a holding brake is fitted")
     drive: bool = Field(default=False, description="whether the drive was sized too")
     output_load: OutputLoadIn | None = Field(default=None, description="as sent, if any")
-    output_bearing: str = Field(default="", description="whether the output bearing was checked")
+    output_bearing: str = Field(
+        default="",
+        description="whether the output bearing was checked, in English (a stored answer is "
+        "the same in every language): word it by `output_bearing_code`",
+    )
+    output_bearing_code: str | None = Field(
+        default=None,
+        description="the code of `output_bearing`: output_bearing.not_checked, "
+        "output_bearing.no_life or output_bearing.checked",
+    )
     models: list[str] | None = Field(
         default=None, description="the catalogue restriction as sent; null = whole catalogue"
     )

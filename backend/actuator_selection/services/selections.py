@@ -282,6 +282,7 @@ def size_selection(
     candidates = _candidates(actuators, app, catalogue, groups)
     profile = app.profile
     request = body.model_dump(mode="json")
+    bearing = output_bearing_note(body.output_load)
     answer = {
         "id": str(uuid.uuid4()),
         "created_at": created_at,
@@ -294,7 +295,8 @@ def size_selection(
         "brake": body.brake,
         "drive": body.drive,
         "output_load": request.get("output_load"),
-        "output_bearing": output_bearing_note(body.output_load),
+        "output_bearing": bearing,
+        "output_bearing_code": bearing.code,
         "models": body.models,
         "cycle_time_s": profile.cycle_s,
         "mean_speed_rpm": profile.mean_speed_rpm,

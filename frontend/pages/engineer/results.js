@@ -109,7 +109,7 @@ export function renderSummary(sel, lang) {
       }),
       definition(t("summary.drive"), t(sel.drive ? "summary.yes" : "summary.no"), { id: "sum-drive" }),
       sel.output_load && typeof sel.output_load === "object"
-        ? definition(t("summary.output_bearing"), t(outputBearingKey(sel.output_load)), { id: "sum-output-bearing" })
+        ? definition(t("summary.output_bearing"), t(outputBearingKey(sel)), { id: "sum-output-bearing" })
         : null,
       mech
         ? definition(t("summary.mechanism"), t(`load.${mech}`), { id: "sum-mechanism" })
@@ -435,11 +435,12 @@ function criteriaCell(controller, lang) {
 }
 
 /**
- * What the answer's ``output_bearing`` says (codes ``output_bearing.no_life`` and
- * ``.checked``), in the page's words: from the output load as sent, which decides it.
+ * What the answer's ``output_bearing`` says, in the page's words: by its code
+ * (``output_bearing_code``; an answer stored before it had one: from the output load sent).
  */
-function outputBearingKey(outputLoad) {
-  return typeof outputLoad.required_life_h === "number" ? "summary.output_bearing.checked" : "summary.output_bearing.no_life";
+function outputBearingKey(sel) {
+  const sent = typeof sel.output_load.required_life_h === "number" ? "checked" : "no_life";
+  return `summary.${sel.output_bearing_code ?? `output_bearing.${sent}`}`;
 }
 
 /** A controller's name; the "row N" the catalogue gives a variant whose name the source lost, in ``lang``. */
