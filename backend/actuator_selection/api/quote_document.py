@@ -103,24 +103,6 @@ def _label(t: DocumentText, key: str, fallback: str) -> str:
     return t(key) if key in TEXT else fallback
 
 
-_SEGMENT_FACT = re.compile(r"segment_(\d+)_(duration_s|start_rpm|end_rpm)")
-_CYCLE_FACTS = {
-    "accel_s": "accel_time",
-    "constant_s": "constant_time",
-    "decel_s": "decel_time",
-    "pause_s": "pause_time",
-}
-
-
-def _cycle_label(t: DocumentText, key: str, label: str) -> str:
-    """The label of a cycle fact (``schemas.quotes.cycle_facts``) in the document's language."""
-    if key in _CYCLE_FACTS:
-        return t(_CYCLE_FACTS[key])
-    if (match := _SEGMENT_FACT.fullmatch(key)) is not None:
-        return t(f"segment_{match.group(2)}", k=match.group(1))
-    return label[:1].upper() + label[1:]
-
-
 def _check_row(c: StoredCheck, t: DocumentText, language: Language) -> dict[str, str | None]:
     """One row of the checks table; the message (in ``language``) only where the check did
     not pass."""
@@ -424,7 +406,7 @@ def quote_document_context(
             mechanism = ", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())
             load_rows.append((t("mechanism"), mechanism))
         cycle_rows = [
-            (_cycle_label(t, key, label), num(value, unit, t))
+            (t.cycle_label(key, label), num(value, unit, t))
             for key, label, value, unit in cycle_facts(selection.cycle, selection.segments)
         ] + [
             (t("cycle_time"), num(selection.cycle_time_s, "s", t)),

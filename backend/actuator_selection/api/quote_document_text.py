@@ -130,6 +130,22 @@ TEXT: dict[str, dict[str, str]] = {
     },
     "verdict_suitable": {"en": "suitable", "de": "geeignet"},
     "verdict_unconfirmed": {"en": "unconfirmed", "de": "nicht bestätigt"},
+    "verdict_unsuitable": {"en": "unsuitable", "de": "ungeeignet"},
+    # The engineering report of a selection (services/report_pdf.py)
+    "report_title": {"en": "Selection report", "de": "Auswahlbericht"},
+    "report_document_title": {"en": "Selection report {id}", "de": "Auswahlbericht {id}"},
+    "report_intro": {
+        "en": "Selection {id} of {date}, {time} UTC, catalogue version {version}. Sized by "
+        "Engineering Data for Harmonic Drive Servo Actuators (Eq. 514.1–522.3); every figure "
+        "is the one stored with the selection.",
+        "de": "Auswahl {id} vom {date}, {time} UTC, Katalogversion {version}. Ausgelegt nach "
+        "Engineering Data for Harmonic Drive Servo Actuators (Gl. 514.1–522.3); jede Zahl ist "
+        "die mit der Auswahl gespeicherte.",
+    },
+    "report_candidates": {
+        "en": "Candidates ({count}, ranked as answered)",
+        "de": "Kandidaten ({count}, in der Rangfolge der Antwort)",
+    },
     "load_heading": {"en": "Load (at the actuator output)", "de": "Last (am Abtrieb)"},
     "torques_heading": {"en": "Torques (Eq. 514.1, 514.2)", "de": "Drehmomente (Gl. 514.1, 514.2)"},
     "cycle_heading": {"en": "Cycle (Fig. 516.2)", "de": "Zyklus (Abb. 516.2)"},
@@ -284,6 +300,14 @@ TEXT: dict[str, dict[str, str]] = {
 }
 
 
+_SEGMENT_FACT = re.compile(r"segment_(\d+)_(duration_s|start_rpm|end_rpm)")
+_CYCLE_FACTS = {
+    "accel_s": "accel_time",
+    "constant_s": "constant_time",
+    "decel_s": "decel_time",
+    "pause_s": "pause_time",
+}
+
 _REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))")
 
 
@@ -366,6 +390,19 @@ class DocumentText:
         'Abb. 520.1 (Modell); Gl. 514.2'
         """
         return _REFERENCE_WORD.sub(lambda m: self(f"ref_{m.group(0)}"), reference)
+
+    def cycle_label(self, key: str, label: str) -> str:
+        """The label of a cycle fact (``schemas.quotes.cycle_facts``: its key and English
+        label) in this language.
+
+        >>> DocumentText("de").cycle_label("segment_2_end_rpm", "segment 2: end speed")
+        'Abschnitt 2: Enddrehzahl'
+        """
+        if key in _CYCLE_FACTS:
+            return self(_CYCLE_FACTS[key])
+        if (match := _SEGMENT_FACT.fullmatch(key)) is not None:
+            return self(f"segment_{match.group(2)}", k=match.group(1))
+        return label[:1].upper() + label[1:]
 
     def unit(self, unit: str) -> str:
         """A unit as the chapter prints it in this language (min⁻¹ for rpm in German)."""

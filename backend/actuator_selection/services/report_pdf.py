@@ -1,139 +1,106 @@
-"""The selection report as PDF (fpdf2, A4, built-in Helvetica, page numbers): the content
-of :mod:`actuator_selection.services.reports`, laid out for print. Imported only when a
-PDF is asked for (:func:`~actuator_selection.services.reports.report_pdf`)."""
+"""The selection report as PDF (A4, page numbers): the content of
+:mod:`actuator_selection.services.reports`, laid out for print by
+:class:`~actuator_selection.services.pdf.DocumentPdf`, in the language of its
+:class:`~actuator_selection.services.reports.ReportWords`. Imported only when a PDF is
+asked for (:func:`~actuator_selection.services.reports.report_pdf`)."""
 
 from __future__ import annotations
 
-from fpdf import FPDF
-from fpdf.enums import XPos, YPos
-
 from actuator_selection.core.checks import margin_percent
 from actuator_selection.schemas.quotes import StoredCandidate, StoredCheck, cycle_facts
-from actuator_selection.services.reports import (
-    STATUS_WORDS,
-    SelectionReport,
-    pdf_number,
-    pdf_text,
-)
+from actuator_selection.services.pdf import DocumentPdf
+from actuator_selection.services.reports import ReportWords, SelectionReport
+
+SIGNIFICANT = "@#####"
+"""Numbers to six significant digits (a CLDR pattern), in the language's format."""
 
 
-class _Pdf(FPDF):
-    def __init__(self, title: str) -> None:
-        super().__init__(orientation="portrait", unit="mm", format="A4")
-        self._title = title
-        self.set_auto_page_break(auto=True, margin=15)
-        self.set_margins(15, 15, 15)
-        self.set_title(title)
-        self.set_creator("actuator selection service")
-
-    def footer(self) -> None:
-        self.set_y(-12)
-        self.set_font("Helvetica", size=8)
-        self.cell(0, 5, pdf_text(self._title), align="L")
-        self.set_x(self.l_margin)
-        self.cell(0, 5, f"page {self.page_no()} of {{nb}}", align="R")
+def number(value: float | None, unit: str, t: ReportWords) -> str:
+    """A number to six significant digits with its unit; '–' when unknown."""
+    if value is None:
+        return "–"
+    return f"{t.number(value, SIGNIFICANT)} {t.unit(unit)}".strip()
 
 
-def _facts(pdf: FPDF, rows: list[tuple[str, str]]) -> None:
-    pdf.set_font("Helvetica", size=9)
-    with pdf.table(col_widths=(60, 60), width=120, align="LEFT", first_row_as_headings=False) as t:
-        for label, value in rows:
-            row = t.row()
-            row.cell(pdf_text(label))
-            row.cell(value)
-
-
-def _check_rows(checks: list[StoredCheck]) -> list[tuple[str, ...]]:
+def _check_rows(checks: list[StoredCheck], t: ReportWords) -> list[tuple[str, ...]]:
     return [
         (
-            pdf_text(c.name),
-            STATUS_WORDS.get(c.status, c.status) + (" (approx.)" if c.approximate else ""),
-            pdf_text(c.reference),
-            pdf_number(c.value, c.unit),
-            pdf_number(c.limit, c.unit),
-            pdf_number(margin_percent(c.value, c.limit), "%"),
+            t(f"check_{c.name}"),
+            t(f"result_{c.status}") + (t("approximate") if c.approximate else ""),
+            t.reference(c.reference),
+            number(c.value, c.unit, t),
+            number(c.limit, c.unit, t),
+            number(margin_percent(c.value, c.limit), "%", t),
         )
         for c in checks
     ]
 
 
-def _candidate(pdf: FPDF, rank: int, c: StoredCandidate) -> None:
-    pdf.set_font("Helvetica", style="B", size=10)
-    pdf.cell(
-        0,
-        6,
-        pdf_text(f"{rank}. {c.model} ({c.family}, i = {c.gear_ratio:g}): {c.verdict}"),
-        new_x=XPos.LMARGIN,
-        new_y=YPos.NEXT,
+def _candidate(pdf: DocumentPdf, rank: int, c: StoredCandidate, t: ReportWords) -> None:
+    ratio = t.number(c.gear_ratio, "#,##0.######")
+    pdf.heading(f"{rank}. {c.model} ({c.family}, i = {ratio}): {t(f'verdict_{c.verdict}')}", 10)
+    pdf.paragraph(
+        f"T₁ = {number(c.accel_torque_nm, 'Nm', t)}, T₂ = {number(c.constant_torque_nm, 'Nm', t)}"
+        f", T₃ = {number(c.decel_torque_nm, 'Nm', t)}, T_rms = {number(c.rms_torque_nm, 'Nm', t)}"
     )
-    pdf.set_font("Helvetica", size=8.5)
-    torques = (
-        f"T1 = {pdf_number(c.accel_torque_nm, 'Nm')}, T2 = {pdf_number(c.constant_torque_nm, 'Nm')}"
-        f", T3 = {pdf_number(c.decel_torque_nm, 'Nm')}, T_rms = {pdf_number(c.rms_torque_nm, 'Nm')}"
-    )
-    pdf.cell(0, 5, torques, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
-    with pdf.table(col_widths=(34, 22, 26, 30, 30, 24), line_height=4.6) as t:
-        t.row(("check", "status", "reference", "value", "limit", "margin"))
-        for cells in _check_rows(c.checks):
-            t.row(cells)
-    pdf.ln(3)
-
-
-def render_pdf(report: SelectionReport) -> bytes:
-    """The report as a PDF document (A4)."""
-    s = report.selection
-    pdf = _Pdf(f"Selection report {s.id}")
-    pdf.add_page()
-    pdf.set_font("Helvetica", style="B", size=16)
-    pdf.cell(0, 9, "Selection report", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
-    pdf.set_font("Helvetica", size=9)
-    pdf.multi_cell(
-        0,
-        4.5,
-        pdf_text(
-            f"Selection {s.id} of {s.created_at:%Y-%m-%d %H:%M} UTC, catalogue version "
-            f"{s.catalogue_version}. Sized by Engineering Data for Harmonic Drive Servo "
-            "Actuators (Eq. 514.1-522.3); every figure is the one stored with the selection."
+    pdf.grid(
+        (
+            t("col_check"),
+            t("col_result"),
+            t("col_reference"),
+            t("col_value"),
+            t("col_limit"),
+            t("col_margin"),
         ),
-        new_x=XPos.LMARGIN,
-        new_y=YPos.NEXT,
+        _check_rows(c.checks, t),
+        (50, 32, 30, 24, 24, 18),
+        right=(3, 4, 5),
     )
     pdf.ln(2)
-    for title, rows in (
-        (
-            "Load case (at the actuator output)",
-            [
-                ("load speed n2", pdf_number(s.load.speed_rpm, "rpm")),
-                ("load torque T_L", pdf_number(s.load.torque_nm, "Nm")),
-                ("load inertia J_L", pdf_number(s.load.inertia_kgm2, "kgm²")),
-                ("J_L <= 3 J_A binding", "yes" if s.high_dynamics else "no"),
-            ],
-        ),
-        (
-            "Cycle (Fig. 516.2, Eq. 514.3, 514.4)",
-            [
-                *(
-                    (label, pdf_number(value, unit))
-                    for _, label, value, unit in cycle_facts(s.cycle, s.segments)
-                ),
-                ("cycle time", pdf_number(s.cycle_time_s, "s")),
-                ("mean speed n_av", pdf_number(s.mean_speed_rpm, "rpm")),
-                ("duty cycle ED", pdf_number(s.duty_cycle_percent, "%")),
-            ],
-        ),
-    ):
-        pdf.set_font("Helvetica", style="B", size=11)
-        pdf.cell(0, 7, title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
-        _facts(pdf, rows)
-        pdf.ln(2)
-    pdf.set_font("Helvetica", style="B", size=11)
-    pdf.cell(
-        0,
-        7,
-        f"Candidates ({len(s.candidates)}, ranked as answered)",
-        new_x=XPos.LMARGIN,
-        new_y=YPos.NEXT,
+
+
+def render_pdf(report: SelectionReport, t: ReportWords) -> bytes:
+    """The report as a PDF document (A4) in the language of ``t``."""
+    s = report.selection
+    pdf = DocumentPdf(
+        title=t("report_document_title", id=s.id),
+        lang=t.language,
+        page_label=t("page"),
+        of_label=t("of"),
     )
+    pdf.add_page()
+    pdf.heading(t("report_title"), 16)
+    pdf.paragraph(
+        t(
+            "report_intro",
+            id=s.id,
+            date=t.date(s.created_at.date()),
+            time=f"{s.created_at:%H:%M}",
+            version=s.catalogue_version,
+        )
+    )
+    pdf.heading(t("load_heading"))
+    pdf.facts(
+        [
+            (t("load_speed"), number(s.load.speed_rpm, "rpm", t)),
+            (t("load_torque"), number(s.load.torque_nm, "Nm", t)),
+            (t("load_inertia"), number(s.load.inertia_kgm2, "kgm²", t)),
+            (t("high_dynamics"), t("yes" if s.high_dynamics else "no")),
+        ]
+    )
+    pdf.heading(t("cycle_heading"))
+    pdf.facts(
+        [
+            *(
+                (t.cycle_label(key, label), number(value, unit, t))
+                for key, label, value, unit in cycle_facts(s.cycle, s.segments)
+            ),
+            (t("cycle_time"), number(s.cycle_time_s, "s", t)),
+            (t("mean_speed"), number(s.mean_speed_rpm, "rpm", t)),
+            (t("duty_cycle"), number(s.duty_cycle_percent, "%", t)),
+        ]
+    )
+    pdf.heading(t("report_candidates", count=len(s.candidates)), 11)
     for rank, candidate in enumerate(s.candidates, start=1):
-        _candidate(pdf, rank, candidate)
+        _candidate(pdf, rank, candidate, t)
     return bytes(pdf.output())

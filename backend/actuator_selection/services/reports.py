@@ -16,10 +16,16 @@ an unknown value is an empty cell. Text cells that a spreadsheet would run as a
 formula get a leading single quote (``core.csvio.neutralised``, as the catalogue
 export does).
 
-**PDF** (A4, fpdf2's built-in Helvetica, page numbers in the footer): the same content
-for print, numbers to six significant digits. The built-in fonts hold Latin-1 only,
-so the chapter's symbols are written in ASCII there (``≤`` → ``<=``, ``T₁`` → ``T1``,
-``−`` → ``-``): no font file needs shipping.
+The CSV is data for programs and spreadsheets: its column names, check names, statuses
+and verdicts are the API's identifiers and its numbers are written with a decimal point,
+the same in every language.
+
+**PDF** (A4, page numbers in the footer, ``services/pdf.py``): the same content for
+print, in the request's language (labels, verdicts and statuses worded, references as
+the chapter's German edition writes them, numbers to six significant digits in the
+language's format, min⁻¹ in German), by the words of :class:`ReportWords`. Text is set
+in DejaVu Sans where the system has it; else in Latin-1 Helvetica, with the chapter's
+symbols written in ASCII (``≤`` → ``<=``, ``T₁`` → ``T1``, ``−`` → ``-``).
 """
 
 from __future__ import annotations
@@ -27,7 +33,8 @@ from __future__ import annotations
 import csv
 import io
 from dataclasses import dataclass
-from typing import Any
+from datetime import date
+from typing import Any, Protocol
 
 from sqlalchemy.orm import Session
 
@@ -178,20 +185,44 @@ def pdf_text(text: str) -> str:
     return text.translate(_ASCII).encode("latin-1", "replace").decode("latin-1")
 
 
-def pdf_number(value: float | None, unit: str = "") -> str:
-    """A number to six significant digits with its unit; '-' when unknown."""
-    if value is None:
-        return "-"
-    return pdf_text(f"{value:.6g} {unit}".strip())
+class ReportWords(Protocol):
+    """The words and number formats of one language, as the quote document has them
+    (``api.quote_document_text.DocumentText``)."""
+
+    @property
+    def language(self) -> str:
+        """``en`` or ``de``."""
+        ...
+
+    def __call__(self, key: str, **params: object) -> str:
+        """The label ``key`` with ``params`` filled in."""
+        ...
+
+    def number(self, value: float, pattern: str) -> str:
+        """``value`` by a CLDR number pattern."""
+        ...
+
+    def date(self, value: date) -> str:
+        """A date as the language writes it."""
+        ...
+
+    def unit(self, unit: str) -> str:
+        """A unit as the chapter prints it in the language."""
+        ...
+
+    def reference(self, reference: str) -> str:
+        """A reference to the chapter in the language's words."""
+        ...
+
+    def cycle_label(self, key: str, label: str) -> str:
+        """The label of a cycle fact (``schemas.quotes.cycle_facts``)."""
+        ...
 
 
-STATUS_WORDS = {"pass": "pass", "fail": "FAIL", "warn": "warning", "no_data": "no data"}
-
-
-def report_pdf(report: SelectionReport) -> bytes:
-    """The report as a PDF document (A4), by ``services/report_pdf.py``: fpdf2 and what it
-    pulls in (Pillow, fontTools; ~30 MB per process) load when the first PDF is asked for,
-    not in every worker at start."""
+def report_pdf(report: SelectionReport, words: ReportWords) -> bytes:
+    """The report as a PDF document (A4) in the language of ``words``, by
+    ``services/report_pdf.py``: fpdf2 and what it pulls in (Pillow, fontTools; ~30 MB per
+    process) load when the first PDF is asked for, not in every worker at start."""
     from actuator_selection.services.report_pdf import render_pdf
 
-    return render_pdf(report)
+    return render_pdf(report, words)
