@@ -13,7 +13,7 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 
-from actuator_selection.api.quote_document_text import DocumentText
+from actuator_selection.api.quote_document_text import DocumentText, Language
 from actuator_selection.services.pdf import DocumentPdf
 from actuator_selection.services.reports import CHECK_COLUMNS
 
@@ -126,7 +126,9 @@ def _read_number(text: str, language: str) -> float:
 
 
 @pytest.mark.parametrize("language", ["en", "de"])
-def test_pdf_shows_the_answer_in_the_requests_language(client: TestClient, language: str) -> None:
+def test_pdf_shows_the_answer_in_the_requests_language(
+    client: TestClient, language: Language
+) -> None:
     answer = _selection(client)
     response = client.get(
         f"/api/v1/selections/{answer['id']}/report.pdf", headers={"Accept-Language": language}
