@@ -4,11 +4,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Annotated, Any, TypeVar
+from typing import Annotated, Any, Literal, TypeVar
 
-from fastapi import Depends, Request
+from fastapi import Depends, Header, Query, Request
 from sqlalchemy.orm import Session, sessionmaker
 
+from actuator_selection.api.quote_document_text import Language, negotiate_language
 from actuator_selection.config import Settings
 from actuator_selection.db.engine import begin_write
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
@@ -85,6 +86,20 @@ def read_transaction(request: Request) -> Iterator[Session]:
     factory: sessionmaker[Session] = request.app.state.session_factory
     with factory.begin() as session:
         yield session
+
+
+async def document_language(
+    lang: Annotated[
+        Literal["de", "en"] | None,
+        Query(description="the document's language; left out: from Accept-Language, else en"),
+    ] = None,
+    accept_language: Annotated[str | None, Header(include_in_schema=False)] = None,
+) -> Language:
+    """The language of a document (quote, report): ``?lang=``, else ``Accept-Language``."""
+    return negotiate_language(lang, accept_language)
+
+
+DocumentLanguageDep = Annotated[Language, Depends(document_language)]
 
 
 def app_settings(request: Request) -> Settings:

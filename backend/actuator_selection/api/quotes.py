@@ -15,7 +15,12 @@ from fastapi import APIRouter, Depends, Header, Query, Response
 from fastapi.responses import HTMLResponse
 
 from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
-from actuator_selection.api.deps import SessionDep, SettingsDep, reads_only
+from actuator_selection.api.deps import (
+    DocumentLanguageDep,
+    SessionDep,
+    SettingsDep,
+    reads_only,
+)
 from actuator_selection.api.errors import RequestFieldError, UnauthorizedError, field_error
 from actuator_selection.api.quote_document import (
     DOCUMENT_SCRIPT,
@@ -23,7 +28,6 @@ from actuator_selection.api.quote_document import (
     quote_document_context,
     render_quote_document,
 )
-from actuator_selection.api.quote_document_text import negotiate_language
 from actuator_selection.config import PLACEHOLDER_SELLER_NAME
 from actuator_selection.core.quote_status import QuoteStatus
 from actuator_selection.core.sales import ApiKeyRecord
@@ -221,6 +225,7 @@ def quote_document(
     session: SessionDep,
     clock: ClockDep,
     settings: SettingsDep,
+    language: DocumentLanguageDep,
     access: Annotated[
         str | None,
         Query(
@@ -229,16 +234,10 @@ def quote_document(
             "window that cannot send the API key",
         ),
     ] = None,
-    lang: Annotated[
-        Literal["de", "en"] | None,
-        Query(description="the document's language; left out: from Accept-Language, else en"),
-    ] = None,
-    accept_language: Annotated[str | None, Header(include_in_schema=False)] = None,
 ) -> HTMLResponse:
     """The quote as an HTML page laid out for A4 print (print to PDF from the browser)."""
     _document_reader(principal, access, number=number, session=session, now=clock.now())
     data = quotes.quote_document(session, number, today=clock.today())
-    language = negotiate_language(lang, accept_language)
     html = render_quote_document(
         data.quote,
         selection=data.selection,
@@ -272,6 +271,7 @@ def quote_document_pdf(
     session: SessionDep,
     clock: ClockDep,
     settings: SettingsDep,
+    language: DocumentLanguageDep,
     access: Annotated[
         str | None,
         Query(
@@ -280,18 +280,12 @@ def quote_document_pdf(
             "that downloads the file without the API key",
         ),
     ] = None,
-    lang: Annotated[
-        Literal["de", "en"] | None,
-        Query(description="the document's language; left out: from Accept-Language, else en"),
-    ] = None,
-    accept_language: Annotated[str | None, Header(include_in_schema=False)] = None,
 ) -> Response:
     """The quote document as a PDF download (A4), in German or English."""
     from actuator_selection.services.quote_pdf import render_quote_pdf  # fpdf2: on first use
 
     _document_reader(principal, access, number=number, session=session, now=clock.now())
     data = quotes.quote_document(session, number, today=clock.today())
-    language = negotiate_language(lang, accept_language)
     context = quote_document_context(
         data.quote,
         selection=data.selection,

@@ -6,12 +6,13 @@ import gzip
 from collections.abc import Callable
 from datetime import UTC, datetime
 from functools import partial
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any
 from urllib.parse import quote
 
-from fastapi import APIRouter, Header, Path, Query, Request, Response
+from fastapi import APIRouter, Path, Request, Response
 
 from actuator_selection.api.deps import (
+    DocumentLanguageDep,
     SessionDep,
     catalogue_snapshot,
     read_transaction,
@@ -20,7 +21,7 @@ from actuator_selection.api.deps import (
 )
 from actuator_selection.api.errors import RequestFieldError, language_of, service_error
 from actuator_selection.api.messages import localizer
-from actuator_selection.api.quote_document_text import DocumentText, negotiate_language
+from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
@@ -230,14 +231,9 @@ def get_selection_report_csv(
 def get_selection_report_pdf(
     selection_id: Annotated[str, Path(max_length=36)],
     session: SessionDep,
-    lang: Annotated[
-        Literal["de", "en"] | None,
-        Query(description="the report's language; left out: from Accept-Language, else en"),
-    ] = None,
-    accept_language: Annotated[str | None, Header(include_in_schema=False)] = None,
+    language: DocumentLanguageDep,
 ) -> Response:
     """The selection's engineering report as PDF: load case, cycle, every candidate's checks."""
-    language = negotiate_language(lang, accept_language)
     body = report_pdf(selection_report(session, selection_id), DocumentText(language))
     headers = {**_attachment(selection_id, "pdf"), "Content-Language": language}
     return Response(body, media_type="application/pdf", headers=headers)
