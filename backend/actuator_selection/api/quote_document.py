@@ -287,29 +287,9 @@ _TEMPLATES = Environment(
 (the one translation that carries markup, and the figure's script-safe JSON)."""
 
 
-def render_quote_document(
-    quote: QuoteOut,
-    *,
-    selection: StoredSelection | None,
-    record: QuoteRecord,
-    language: Language = "en",
-    current_seller: SellerParty,
-    placeholder_seller_name: str | None = None,
-) -> str:
-    """The HTML document of ``quote`` in ``language``; every text from outside is escaped.
-
-    ``current_seller`` (the settings' seller) stands in for the seller of a quote made
-    before quotes stored theirs. A seller named ``placeholder_seller_name`` (the
-    settings' default) is flagged with a banner.
-    """
-    context = quote_document_context(
-        quote,
-        selection=selection,
-        record=record,
-        language=language,
-        current_seller=current_seller,
-        placeholder_seller_name=placeholder_seller_name,
-    )
+def render_quote_document(context: dict[str, Any]) -> str:
+    """The HTML document of a quote from its content (:func:`quote_document_context`);
+    every text from outside is escaped (Jinja2 autoescaping)."""
     return _TEMPLATES.get_template("quote_document.html").render(**context)
 
 

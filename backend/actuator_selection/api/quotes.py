@@ -8,11 +8,12 @@ from __future__ import annotations
 
 import re
 from datetime import UTC, date, datetime
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 from urllib.parse import quote as quote_path
 
 from fastapi import APIRouter, Depends, Header, Query, Response
 from fastapi.responses import HTMLResponse
+from sqlalchemy.orm import Session
 
 from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
 from actuator_selection.api.deps import (
@@ -28,7 +29,8 @@ from actuator_selection.api.quote_document import (
     quote_document_context,
     render_quote_document,
 )
-from actuator_selection.config import PLACEHOLDER_SELLER_NAME
+from actuator_selection.api.quote_document_text import Language
+from actuator_selection.config import PLACEHOLDER_SELLER_NAME, Settings
 from actuator_selection.core.quote_status import QuoteStatus
 from actuator_selection.core.sales import ApiKeyRecord
 from actuator_selection.db.sales import ApiKeyRepository, QuoteSearch
@@ -214,6 +216,21 @@ DOCUMENT_HEADERS = {
 }
 
 
+def _document_context(
+    session: Session, number: str, clock: Clock, settings: Settings, language: Language
+) -> dict[str, Any]:
+    """The quote document's content (:func:`quote_document_context`) in ``language``."""
+    data = quotes.quote_document(session, number, today=clock.today())
+    return quote_document_context(
+        data.quote,
+        selection=data.selection,
+        record=data.record,
+        language=language,
+        current_seller=settings.seller(),
+        placeholder_seller_name=PLACEHOLDER_SELLER_NAME,
+    )
+
+
 @router.get(
     "/quotes/{number}/document",
     response_class=HTMLResponse,
@@ -237,15 +254,7 @@ def quote_document(
 ) -> HTMLResponse:
     """The quote as an HTML page laid out for A4 print (print to PDF from the browser)."""
     _document_reader(principal, access, number=number, session=session, now=clock.now())
-    data = quotes.quote_document(session, number, today=clock.today())
-    html = render_quote_document(
-        data.quote,
-        selection=data.selection,
-        record=data.record,
-        language=language,
-        current_seller=settings.seller(),
-        placeholder_seller_name=PLACEHOLDER_SELLER_NAME,
-    )
+    html = render_quote_document(_document_context(session, number, clock, settings, language))
     return HTMLResponse(
         html,
         headers={**DOCUMENT_HEADERS, "Content-Language": language, "Vary": "Accept-Language"},
@@ -285,16 +294,8 @@ def quote_document_pdf(
     from actuator_selection.services.quote_pdf import render_quote_pdf  # fpdf2: on first use
 
     _document_reader(principal, access, number=number, session=session, now=clock.now())
-    data = quotes.quote_document(session, number, today=clock.today())
-    context = quote_document_context(
-        data.quote,
-        selection=data.selection,
-        record=data.record,
-        language=language,
-        current_seller=settings.seller(),
-        placeholder_seller_name=PLACEHOLDER_SELLER_NAME,
-    )
-    name = quote_path(f"{data.quote.number}.pdf", safe="")
+    context = _document_context(session, number, clock, settings, language)
+    name = quote_path(f"{context['number']}.pdf", safe="")
     return Response(
         render_quote_pdf(context),
         media_type="application/pdf",
