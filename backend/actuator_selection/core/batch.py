@@ -44,8 +44,9 @@ Worked example (Table 516.1 against the FHA-25C-50-L of Table 516.3), two cases:
 
 from __future__ import annotations
 
+import itertools
 import math
-from collections.abc import Collection, Sequence, Sized
+from collections.abc import Collection, Iterator, Sequence, Sized
 from dataclasses import dataclass, fields
 from dataclasses import field as dataclasses_field
 from itertools import repeat
@@ -59,7 +60,9 @@ from actuator_selection.core.checks import RULES, Operands, Ops, Rule, Status
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import (
     CycleFigures,
+    CycleTorques,
     PieceArrays,
+    Profile,
     cycle_figures,
     figures_of,
     heating_gain,
@@ -69,9 +72,9 @@ from actuator_selection.core.motion import (
 )
 from actuator_selection.core.selection import (
     Application,
+    Candidate,
     Selection,
     Verdict,
-    evaluate_each,
 )
 from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
@@ -365,6 +368,8 @@ class _Block:
     overload: FloatArray
     """The largest :func:`~actuator_selection.core.checks.overload` of the checks."""
     details: tuple[_RuleArrays, ...] | None = None
+    operands: Operands | None = None
+    """With ``detail``: what the rules computed from (for the words of their checks)."""
 
     def verdicts(self) -> CodeArray:
         worst = np.full(self.accel_torque.shape, _PASS)
@@ -655,6 +660,7 @@ def _evaluate_block(
         statuses=tuple(codes for codes, _, _ in results),
         overload=overload,
         details=tuple(details) if detail else None,
+        operands=q if detail else None,
     )
 
 
@@ -829,7 +835,7 @@ def _allowed_columns(
     return allowed
 
 
-def _rank(
+def _ranked_blocks(
     actuators: Sequence[Actuator],
     cat: CatalogueArrays,
     cases: _Cases,
@@ -837,14 +843,20 @@ def _rank(
     top: int,
     models: Sequence[Collection[str] | None] | None,
     rules: Sequence[Rule],
-) -> list[list[int]]:
+    *,
+    detail: bool,
+) -> Iterator[tuple[int, _Block, IndexArray, BoolArray]]:
+    """Per block of cases: its first row, the block, and each row's best ``top`` columns
+    (:func:`~actuator_selection.core.selection.ranking_key`) with where they are kept
+    (False past the actuators a case's ``models`` allows)."""
     n = len(actuators)
     allowed = _allowed_columns(actuators, models) if models is not None else None
     excluded = np.int8(len(VERDICT_BY_CODE))  # a verdict code beyond every verdict
     keep = min(top, n)
-    chosen: list[list[int]] = []
     for start, stop in _blocks(actuators, range(cases.size)):
-        block = _evaluate_block(cat, cases.rows(start, stop), zone_limits[start:stop], rules)
+        block = _evaluate_block(
+            cat, cases.rows(start, stop), zone_limits[start:stop], rules, detail=detail
+        )
         # ranking_key: verdict, the worst overload (0 unless unsuitable), then the
         # actuator's place in the static order (T_max, J_A, model).
         verdicts = block.verdicts()
@@ -854,11 +866,26 @@ def _rank(
                     verdicts[row, ~mask] = excluded
         position = np.broadcast_to(cat.rank_position, verdicts.shape)
         order = np.lexsort((position, block.overload, verdicts), axis=-1)[:, :keep]
-        best = order.tolist()
-        best_verdict = np.take_along_axis(verdicts, order, axis=1).tolist()
+        kept = np.take_along_axis(verdicts, order, axis=1) < excluded
+        yield start, block, order, kept
+
+
+def _rank(
+    actuators: Sequence[Actuator],
+    cat: CatalogueArrays,
+    cases: _Cases,
+    zone_limits: FloatArray,
+    top: int,
+    models: Sequence[Collection[str] | None] | None,
+    rules: Sequence[Rule],
+) -> list[list[int]]:
+    chosen: list[list[int]] = []
+    for _, _, order, kept in _ranked_blocks(
+        actuators, cat, cases, zone_limits, top, models, rules, detail=False
+    ):
         chosen.extend(
-            [j for j, v in zip(row, row_verdict, strict=True) if v < excluded]
-            for row, row_verdict in zip(best, best_verdict, strict=True)
+            [j for j, k in zip(row, row_kept, strict=True) if k]
+            for row, row_kept in zip(order.tolist(), kept.tolist(), strict=True)
         )
     return chosen
 
@@ -942,21 +969,126 @@ def select_batch(
     cat = catalogue_arrays(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
-    chosen = _rank(actuators, cat, cases, zone_limits, top, models, rules)
     selections = []
-    for i, (app, columns) in enumerate(zip(apps, chosen, strict=True)):
-        profile = profile_from(app.cycle, cases.figures, i, float(cases.pieces.holding[i]))
-        selections.append(
-            Selection(
-                mean_speed_rpm=profile.mean_speed_rpm,
-                duty_cycle_percent=profile.duty_cycle_percent,
-                cycle_time_s=profile.cycle_s,
-                candidates=tuple(
-                    evaluate_each(
-                        [actuators[j] for j in columns], app, rules=rules, profile=profile
-                    )
-                ),
-                profile=profile,
+    for start, block, order, kept in _ranked_blocks(
+        actuators, cat, cases, zone_limits, top, models, rules, detail=True
+    ):
+        rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
+        profiles = [
+            profile_from(apps[i].cycle, cases.figures, i, float(cases.pieces.holding[i]))
+            for i in range(start, start + order.shape[0])
+        ]
+        detailed = iter(_detail(actuators, rules, block, rows, order[kept], profiles))
+        for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):
+            selections.append(
+                Selection(
+                    mean_speed_rpm=profile.mean_speed_rpm,
+                    duty_cycle_percent=profile.duty_cycle_percent,
+                    cycle_time_s=profile.cycle_s,
+                    candidates=tuple(itertools.islice(detailed, count)),
+                    profile=profile,
+                )
+            )
+    return selections
+
+
+_VERDICT_OF_STATUS = (Verdict.SUITABLE, Verdict.SUITABLE, Verdict.UNCONFIRMED, Verdict.UNSUITABLE)
+"""The verdict of a candidate whose worst status code is the index (any fail: unsuitable,
+else any no data: unconfirmed)."""
+
+
+def _detail(
+    actuators: Sequence[Actuator],
+    rules: Sequence[Rule],
+    block: _Block,
+    rows: IndexArray,
+    columns: IndexArray,
+    profiles: Sequence[Profile],
+) -> list[Candidate]:
+    """The candidates of the cells (``rows``, ``columns``) of a block evaluated with
+    ``detail``: their torques, and each rule's check in words
+    (:meth:`~actuator_selection.core.checks.Rule.report`) from the decisions, values and
+    limits of the arrays and the operands of the cell, as floats. Equal to
+    :func:`~actuator_selection.core.selection.evaluate` of the cell (the tests compare
+    them with ``==``); the words are written when first read."""
+    assert block.details is not None
+    assert block.operands is not None
+    shape = block.accel_torque.shape
+
+    def cells(array: Any) -> list[Any]:
+        picked: list[Any] = np.broadcast_to(array, shape)[rows, columns].tolist()
+        return picked
+
+    operands = list(map(Operands._make, zip(*map(cells, block.operands), strict=True)))
+    per_rule = [
+        zip(
+            cells(codes),
+            cells(d.values),
+            cells(d.limits),
+            cells(d.approximate),
+            cells(d.first_missing),
+            strict=True,
+        )
+        for codes, d in zip(block.statuses, block.details, strict=True)
+    ]
+    torques = zip(
+        cells(block.accel_torque),
+        cells(block.constant_torque),
+        cells(block.decel_torque),
+        cells(block.rms_torque),
+        strict=True,
+    )
+    status_of = STATUS_BY_CODE
+    out = []
+    for row, column, q, cell_torques, cell_checks in zip(
+        rows.tolist(), columns.tolist(), operands, torques, zip(*per_rule, strict=True), strict=True
+    ):
+        actuator = actuators[column]
+        checks = tuple(
+            [
+                rule.report(
+                    q,
+                    status_of[code],
+                    value,
+                    limit,
+                    approximate,
+                    None if missing < 0 else missing,
+                    defer=True,
+                )
+                for rule, (code, value, limit, approximate, missing) in zip(
+                    rules, cell_checks, strict=True
+                )
+            ]
+        )
+        out.append(
+            Candidate(
+                actuator=actuator,
+                verdict=_VERDICT_OF_STATUS[max(c[0] for c in cell_checks)],
+                torques=_cycle_torques(actuator, profiles[row], *cell_torques),
+                checks=checks,
             )
         )
-    return selections
+    return out
+
+
+def _cycle_torques(
+    actuator: Actuator,
+    profile: Profile,
+    accel: float,
+    constant: float,
+    decel: float,
+    rms: float,
+) -> CycleTorques | None:
+    """:meth:`~actuator_selection.core.motion.Profile.torques` from the arrays' values:
+    None without J_A; where a finite input overflowed a torque, the profile's own
+    computation raises the error that names the input."""
+    if actuator.inertia_kgm2 is None:
+        return None
+    if not (math.isfinite(accel) and math.isfinite(decel) and math.isfinite(rms)):
+        return profile.torques(actuator.inertia_kgm2)
+    return CycleTorques(
+        accel_torque_nm=accel,
+        constant_torque_nm=None if constant != constant else constant,
+        decel_torque_nm=decel,
+        rms_torque_nm=rms,
+    )

@@ -116,6 +116,45 @@ class Check:
         return overload(self.status, self.value, self.limit)
 
 
+class _Words:
+    """A check's message not written yet: :meth:`Rule.report` with ``defer``.
+
+    The vectorised flowchart details thousands of candidates, and writing the words of
+    every check is most of that work; an answer without the checks shows only those
+    that do not pass (:attr:`~actuator_selection.core.selection.Candidate.reasons`).
+    """
+
+    __slots__ = ("_floor", "_limit", "_q", "_rule", "_status", "_value")
+
+    def __init__(
+        self, rule: Rule, q: Operands, status: Status, value: float, limit: float, floor: bool
+    ) -> None:
+        self._rule, self._q, self._status = rule, q, status
+        self._value, self._limit, self._floor = value, limit, floor
+
+    def write(self) -> str:
+        message = self._rule.message(self._q, self._status, self._value, self._limit)
+        return _floor_message(message) if self._floor else message
+
+
+_MESSAGE_SLOT: Any = vars(Check)["message"]
+"""The slot that holds :attr:`Check.message` (or its :class:`_Words`, until read)."""
+
+
+def _message(check: Check) -> str:
+    message = _MESSAGE_SLOT.__get__(check, Check)
+    if type(message) is _Words:  # written when first read, then kept
+        message = message.write()
+        _MESSAGE_SLOT.__set__(check, message)
+    return message  # type: ignore[no-any-return]
+
+
+# Check.message reads through _message: a check stays a frozen dataclass (fields, ==,
+# hash and repr read the written message), and one built with deferred words writes
+# them only when something reads them. (setattr: to mypy the field is a str.)
+setattr(Check, "message", property(_message, _MESSAGE_SLOT.__set__, doc="The check in words."))  # noqa: B010
+
+
 def margin_percent(value: float | None, limit: float | None) -> float | None:
     """Headroom (limit − value)/limit [%]; negative when the limit is exceeded; None
     without a value or a positive limit.
@@ -441,8 +480,7 @@ class Rule:
         """The check for one actuator and one load case (floats)."""
         xp = FLOAT_OPS
         value = self.value(q, xp)
-        known_value = value if value == value else None  # NaN: T_1, T_3, T_rms without J_A
-        for index, (unless, any_of, no_data, what) in enumerate(self._no_data):
+        for index, (unless, any_of, _, _) in enumerate(self._no_data):
             if unless is not None and getattr(q, unless):
                 continue
             for name in any_of:
@@ -451,20 +489,10 @@ class Rule:
                     break
             else:
                 if index == 0 and self.lower_bound is not None and self._others_met(q):
-                    floor = self._floor_failure(q, what)
+                    floor = self._floor_failure(q)
                     if floor is not None:
                         return floor
-                return _new_check(
-                    self.name,
-                    Status.NO_DATA,
-                    known_value,
-                    None,
-                    self.unit,
-                    self.reference,
-                    no_data,
-                    False,
-                    what,
-                )
+                return self.report(q, Status.NO_DATA, value, math.nan, False, index)
         limit = self.limit(q, xp)
         if value <= limit and (self.within is None or self.within(q, xp)):
             status = Status.PASS
@@ -472,24 +500,60 @@ class Rule:
             status = Status.FAIL
         else:
             status = Status.WARN
+        approximate = self.approximate is not None and self.approximate(q, xp)
+        return self.report(q, status, value, limit, approximate, None)
+
+    def report(
+        self,
+        q: Operands,
+        status: Status,
+        value: float,
+        limit: float,
+        approximate: bool,
+        missing: int | None,
+        *,
+        defer: bool = False,
+    ) -> Check:
+        """The check with its words, from a decision already taken: by :meth:`check`, or
+        by the vectorised flowchart for the candidates it details (with ``defer``: the
+        words written when first read).
+
+        ``value`` and ``limit`` as the rule computed them (NaN where unknown or beyond a
+        zone's last speed); ``missing``: the index into :attr:`requires` of the first
+        requirement not met, for ``no_data``, and for a ``fail`` on :attr:`lower_bound`
+        (then 0, J_A, and ``value`` is the least value); else None.
+        """
+        if status is Status.NO_DATA:
+            assert missing is not None
+            _, _, no_data, what = self._no_data[missing]
+            known = value if value == value else None  # NaN: T_1, T_3, T_rms without J_A
+            return _new_check(
+                self.name, status, known, None, self.unit, self.reference, no_data, False, what
+            )
+        floor = missing is not None  # failed for every J_A: at its least, without J_A
+        lacking = self._no_data[missing][3] if missing is not None else None
+        message: Any = _Words(self, q, status, value, limit, floor)
+        if not defer:
+            message = message.write()
         return _new_check(
             self.name,
             status,
-            known_value,
+            value if value == value else None,
             limit if limit == limit else None,  # NaN: beyond a zone's last speed
             self.unit,
             self.reference,
-            self.message(q, status, value, limit),
-            self.approximate is not None and self.approximate(q, xp),
+            message,
+            approximate,
+            lacking,
         )
 
     def _others_met(self, q: Operands) -> bool:
         """Whether every requirement but the first is met (floats)."""
         return not any(need.missing(q, FLOAT_OPS) for need in self.requires[1:])
 
-    def _floor_failure(self, q: Operands, what: str) -> Check | None:
+    def _floor_failure(self, q: Operands) -> Check | None:
         """The check failed on :attr:`lower_bound`, or None where the bound passes; its
-        ``missing`` names what the bound stands in for (``what``)."""
+        ``missing`` names what the bound stands in for (the first requirement)."""
         assert self.lower_bound is not None
         xp = FLOAT_OPS
         floor, limit = self.lower_bound(q, xp), self.limit(q, xp)
@@ -498,17 +562,8 @@ class Rule:
             self.binding is not None and not self.binding(q, xp)
         ):
             return None
-        return _new_check(
-            self.name,
-            Status.FAIL,
-            floor,
-            limit if limit == limit else None,
-            self.unit,
-            self.reference,
-            _floor_message(self.message(q, Status.FAIL, floor, limit)),
-            self.approximate is not None and self.approximate(q, xp),
-            what,
-        )
+        approximate = self.approximate is not None and self.approximate(q, xp)
+        return self.report(q, Status.FAIL, floor, limit, approximate, 0)
 
 
 def _floor_message(message: str) -> str:
@@ -695,13 +750,17 @@ peak speed (issue "The checks a sizing engineer signs", item 2).
 # --- 6. thermal_peak: the cycle's heating peak ≤ the continuous limit (Fig. 520.1 model) ------
 
 
+_ASSUMED = phrase("thermal_peak.assumed")
+"""The clause "assumed" of the thermal model (no params: one for every message)."""
+
+
 def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> str:
     tau, t_0 = q.thermal_time_constant_s, q.cycle_s
     ratio = t_0 / tau
     model = phrase(
         "thermal_peak.model",
         tau_s=tau,
-        assumed=phrase("thermal_peak.assumed") if q.thermal_time_constant_assumed else None,
+        assumed=_ASSUMED if q.thermal_time_constant_assumed else None,
         cycle_s=t_0,
         ratio=ratio,
         regime=phrase(
