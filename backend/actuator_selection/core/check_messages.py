@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from string import Formatter
 from typing import Any, Final
 
 from actuator_selection.core.messages import N_, Text
@@ -33,8 +32,12 @@ class Phrase(str):
 
     def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:
         # str.format in C: a Phrase among the params formats as its English text; a clause
-        # left out (None) as nothing.
-        fields = {k: _english(v) for k, v in params.items()}
+        # left out (None) and a list need writing out first (most params are numbers).
+        fields = params
+        for value in params.values():
+            if value is None or isinstance(value, _WRITTEN_OUT):
+                fields = {k: _english(v) for k, v in params.items()}
+                break
         text = str.__new__(cls, CHECK_MESSAGES[code].format_map(fields))
         text.code = code
         text.params = params
@@ -42,6 +45,11 @@ class Phrase(str):
 
     def __reduce__(self) -> tuple[Any, ...]:
         return (Phrase, (self.code, dict(self.params)))
+
+
+_WRITTEN_OUT = (list, tuple)
+"""Parameter types that :func:`_english` writes out (and None); any other value goes to
+``str.format`` as it is."""
 
 
 def _english(value: Any) -> Any:
@@ -68,7 +76,7 @@ NumberFormat = Callable[[float, str], str]
 """A number as a language writes it, from the value and its format spec."""
 
 
-class _Renderer(Formatter):
+class _Renderer:
     """``str.format`` whose fields are numbers, words and clauses in one language."""
 
     def __init__(self, translate: Callable[[str], str], number: NumberFormat | None) -> None:
@@ -95,7 +103,22 @@ class _Renderer(Formatter):
         return str(format(value, format_spec))
 
     def render(self, message: Phrase) -> str:
-        return self.vformat(self._translate(CHECK_MESSAGES[message.code]), (), message.params)
+        # str.format_map in C, each field written by format_field through _Field.__format__
+        # (string.Formatter would parse the template in Python on every call).
+        fields = {k: _Field(self, v) for k, v in message.params.items()}
+        return self._translate(CHECK_MESSAGES[message.code]).format_map(fields)
+
+
+class _Field:
+    """One parameter of a message, written by its renderer in the template's format spec."""
+
+    __slots__ = ("_renderer", "_value")
+
+    def __init__(self, renderer: _Renderer, value: Any) -> None:
+        self._renderer, self._value = renderer, value
+
+    def __format__(self, format_spec: str) -> str:
+        return self._renderer.format_field(self._value, format_spec)
 
 
 def render(
