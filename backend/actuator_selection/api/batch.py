@@ -28,7 +28,6 @@ from actuator_selection.api.errors import (
 from actuator_selection.api.messages import localizer
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
-from actuator_selection.core.check_messages import Phrase
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.selection import Application, Selection
 from actuator_selection.schemas.batch import (
@@ -38,6 +37,7 @@ from actuator_selection.schemas.batch import (
     BatchSelectionOut,
     BatchSelectionRequest,
     candidate_body,
+    controllers_summary,
     result_body,
 )
 from actuator_selection.schemas.checks import Localize
@@ -112,12 +112,13 @@ class _Drives:
 
     def __init__(self, context: DriveContext, localize: Localize) -> None:
         self._context = context
-        self._summaries: dict[str, tuple[int, Phrase]] = {}
+        self._summaries: dict[str, dict[str, Any]] = {}
+        self._localize = localize
         self._lists: dict[tuple[str, float], list[dict[str, Any]]] = {}
         self._bodies = DriveOptionBodies(localize)  # criteria and voltage checks in words
 
-    def summary(self, actuator: Actuator, speed_rpm: float) -> tuple[int, Phrase]:
-        """``controllers_excluded`` and ``controllers_note``.
+    def summary(self, actuator: Actuator, speed_rpm: float) -> dict[str, Any]:
+        """``controllers_excluded`` and ``controllers_note`` (:func:`controllers_summary`).
 
         Both rest on the Table 521.1 matching alone, which depends on the actuator and
         not on the load speed, so one computation per model serves every case.
@@ -125,7 +126,9 @@ class _Drives:
         found = self._summaries.get(actuator.model)
         if found is None:
             drive = self._context.options(actuator, speed_rpm=speed_rpm)
-            found = self._summaries[actuator.model] = (drive.excluded, controllers_note(drive))
+            found = self._summaries[actuator.model] = controllers_summary(
+                drive.excluded, controllers_note(drive), self._localize
+            )
         return found
 
     def controllers(self, actuator: Actuator, speed_rpm: float) -> list[dict[str, Any]]:
@@ -171,7 +174,6 @@ def _candidates(
 ) -> list[dict[str, Any]]:
     out = []
     for c in selection.candidates:
-        excluded, note = drives.summary(c.actuator, speed_rpm)
         out.append(
             candidate_body(
                 c,
@@ -179,8 +181,7 @@ def _candidates(
                 controllers=(
                     drives.controllers(c.actuator, speed_rpm) if body.include_controllers else None
                 ),
-                controllers_excluded=excluded,
-                controllers_note=note,
+                controllers_summary=drives.summary(c.actuator, speed_rpm),
                 localize=localize,
             )
         )

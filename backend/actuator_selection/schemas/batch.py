@@ -195,12 +195,11 @@ def candidate_body(
     *,
     include_checks: bool,
     controllers: list[dict[str, Any]] | None,
-    controllers_excluded: int,
-    controllers_note: str,
+    controllers_summary: dict[str, Any],
     localize: Localize = english,
 ) -> dict[str, Any]:
     """``CandidateOut.from_core(...)`` as a JSON-ready dict; ``checks`` and ``controllers``
-    only when given."""
+    only when given; ``controllers_summary`` from :func:`controllers_summary`."""
     t = candidate.torques
     a = candidate.actuator
     body: dict[str, Any] = {
@@ -218,11 +217,19 @@ def candidate_body(
         body["checks"] = [check_body(c, localize) for c in candidate.checks]
     if controllers is not None:
         body["controllers"] = controllers
-    body["controllers_excluded"] = controllers_excluded
-    body["controllers_note"] = localize(controllers_note)
-    body["controllers_note_code"] = message_code(controllers_note)
-    body["controllers_note_params"] = jsonable_params(controllers_note)
+    body.update(controllers_summary)
     return body
+
+
+def controllers_summary(excluded: int, note: str, localize: Localize = english) -> dict[str, Any]:
+    """A candidate's ``controllers_excluded`` and ``controllers_note`` (with its code and
+    params): the same for every case of a model (Table 521.1 matches actuators, not loads)."""
+    return {
+        "controllers_excluded": excluded,
+        "controllers_note": localize(note),
+        "controllers_note_code": message_code(note),
+        "controllers_note_params": jsonable_params(note),
+    }
 
 
 def result_body(
