@@ -137,6 +137,10 @@ def jsonable_params(message: str) -> dict[str, Any] | None:
     words as their English text, ±∞ and NaN as text; None for a message without a code."""
     if not isinstance(message, Phrase):
         return None
+    params = message.params
+    isfinite = math.isfinite
+    if all(type(v) is float and isfinite(v) for v in params.values()):
+        return dict(params)  # numbers only (most checks): as they are
 
     def one(value: Any) -> Any:
         if isinstance(value, Phrase):
@@ -149,7 +153,7 @@ def jsonable_params(message: str) -> dict[str, Any] | None:
             return repr(value)
         return value
 
-    return {k: one(v) for k, v in message.params.items()}
+    return {k: one(v) for k, v in params.items()}
 
 
 CHECK_MESSAGES: Final[Mapping[str, str]] = {
