@@ -835,28 +835,41 @@ def _allowed_columns(
     return allowed
 
 
+@dataclass(frozen=True, slots=True, eq=False)
+class _RankedBlock:
+    """A block of cases ranked: its cases (from row ``start``), the flowchart's arrays, and
+    each row's best ``top`` columns with where they are kept (False past the actuators a
+    case's ``models`` allows)."""
+
+    start: int
+    cases: _Cases
+    block: _Block
+    order: IndexArray
+    kept: BoolArray
+
+
 def _ranked_blocks(
     actuators: Sequence[Actuator],
-    cat: CatalogueArrays,
-    cases: _Cases,
-    zone_limits: FloatArray,
+    apps: Sequence[Application],
+    *,
     top: int,
     models: Sequence[Collection[str] | None] | None,
-    rules: Sequence[Rule],
-    *,
+    rules: Sequence[Rule] | None,
     detail: bool,
-) -> Iterator[tuple[int, _Block, IndexArray, BoolArray]]:
-    """Per block of cases: its first row, the block, and each row's best ``top`` columns
-    (:func:`~actuator_selection.core.selection.ranking_key`) with where they are kept
-    (False past the actuators a case's ``models`` allows)."""
-    n = len(actuators)
+) -> Iterator[_RankedBlock]:
+    """The cases ranked block by block (:func:`~actuator_selection.core.selection.
+    ranking_key`); ``detail``: with each check's values for the candidates' detail."""
+    _check_arguments(apps, top, models)
+    rules = _rules_of(apps, rules)
+    cat = catalogue_arrays(actuators)
+    cases = _cases(apps)
+    zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     allowed = _allowed_columns(actuators, models) if models is not None else None
     excluded = np.int8(len(VERDICT_BY_CODE))  # a verdict code beyond every verdict
-    keep = min(top, n)
-    for start, stop in _blocks(actuators, range(cases.size)):
-        block = _evaluate_block(
-            cat, cases.rows(start, stop), zone_limits[start:stop], rules, detail=detail
-        )
+    keep = min(top, len(actuators))
+    for start, stop in _blocks(actuators, apps):
+        rows = cases.rows(start, stop)
+        block = _evaluate_block(cat, rows, zone_limits[start:stop], rules, detail=detail)
         # ranking_key: verdict, the worst overload (0 unless unsuitable), then the
         # actuator's place in the static order (T_max, J_A, model).
         verdicts = block.verdicts()
@@ -867,27 +880,7 @@ def _ranked_blocks(
         position = np.broadcast_to(cat.rank_position, verdicts.shape)
         order = np.lexsort((position, block.overload, verdicts), axis=-1)[:, :keep]
         kept = np.take_along_axis(verdicts, order, axis=1) < excluded
-        yield start, block, order, kept
-
-
-def _rank(
-    actuators: Sequence[Actuator],
-    cat: CatalogueArrays,
-    cases: _Cases,
-    zone_limits: FloatArray,
-    top: int,
-    models: Sequence[Collection[str] | None] | None,
-    rules: Sequence[Rule],
-) -> list[list[int]]:
-    chosen: list[list[int]] = []
-    for _, _, order, kept in _ranked_blocks(
-        actuators, cat, cases, zone_limits, top, models, rules, detail=False
-    ):
-        chosen.extend(
-            [j for j, k in zip(row, row_kept, strict=True) if k]
-            for row, row_kept in zip(order.tolist(), kept.tolist(), strict=True)
-        )
-    return chosen
+        yield _RankedBlock(start=start, cases=rows, block=block, order=order, kept=kept)
 
 
 def _rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequence[Rule]:
@@ -926,12 +919,15 @@ def rank_batch(
     The ranking of :func:`select` (:func:`~actuator_selection.core.selection.ranking_key`)
     without building the candidates; arguments as for :func:`select_batch`.
     """
-    _check_arguments(apps, top, models)
-    rules = _rules_of(apps, rules)
-    cat = catalogue_arrays(actuators)
-    cases = _cases(apps)
-    zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
-    return _rank(actuators, cat, cases, zone_limits, top, models, rules)
+    chosen: list[list[int]] = []
+    for ranked in _ranked_blocks(
+        actuators, apps, top=top, models=models, rules=rules, detail=False
+    ):
+        chosen.extend(
+            [j for j, k in zip(row, row_kept, strict=True) if k]
+            for row, row_kept in zip(ranked.order.tolist(), ranked.kept.tolist(), strict=True)
+        )
+    return chosen
 
 
 def select_batch(
@@ -964,21 +960,21 @@ def select_batch(
         The checks (:data:`~actuator_selection.core.checks.RULES`: the chapter's), for the
         arrays and for the candidates alike.
     """
-    _check_arguments(apps, top, models)
     rules = _rules_of(apps, rules)
-    cat = catalogue_arrays(actuators)
-    cases = _cases(apps)
-    zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     selections = []
-    for start, block, order, kept in _ranked_blocks(
-        actuators, cat, cases, zone_limits, top, models, rules, detail=True
-    ):
+    for ranked in _ranked_blocks(actuators, apps, top=top, models=models, rules=rules, detail=True):
+        order, kept, figures, holding = (
+            ranked.order,
+            ranked.kept,
+            ranked.cases.figures,
+            ranked.cases.pieces.holding,
+        )
         rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
         profiles = [
-            profile_from(apps[i].cycle, cases.figures, i, float(cases.pieces.holding[i]))
-            for i in range(start, start + order.shape[0])
+            profile_from(apps[ranked.start + r].cycle, figures, r, float(holding[r]))
+            for r in range(order.shape[0])
         ]
-        detailed = iter(_detail(actuators, rules, block, rows, order[kept], profiles))
+        detailed = iter(_detail(actuators, rules, ranked.block, rows, order[kept], profiles))
         for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):
             selections.append(
                 Selection(
