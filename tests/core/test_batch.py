@@ -106,6 +106,8 @@ def assert_selects_like_scalar(
     for app, got, columns in zip(apps, batch, ranks, strict=True):
         expected = truncated(select(actuators, app, rules=rules), top)
         assert got == expected
+        # == holds for 1 and True: a flag must be a bool, or the JSON says 1
+        assert all(type(k.approximate) is bool for c in got.candidates for k in c.checks)
         assert [actuators[j] for j in columns] == [c.actuator for c in expected.candidates]
 
 

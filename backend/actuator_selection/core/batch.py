@@ -402,9 +402,10 @@ def _status_codes(
             if k:
                 others_missing = others_missing | lacking
         value, limit = rule.value(q, xp), rule.limit(q, xp)
-        within = True if rule.within is None else rule.within(q, xp)
+        # numpy's True, not Python's: ~True is −2, which would make the masks integers.
+        within = np.True_ if rule.within is None else rule.within(q, xp)
         ok = (value <= limit) & within
-        binding = True if rule.binding is None else rule.binding(q, xp)
+        binding = np.True_ if rule.binding is None else rule.binding(q, xp)
         value = np.broadcast_to(value, shape)
         if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
             floor = np.broadcast_to(rule.lower_bound(q, xp), shape)
