@@ -34,7 +34,6 @@ from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.reports import (
     CHECK_COLUMNS,
     report_csv,
-    report_pdf,
     selection_report,
 )
 from actuator_selection.services.selections import (
@@ -234,7 +233,9 @@ def get_selection_report_pdf(
     language: DocumentLanguageDep,
 ) -> Response:
     """The selection's engineering report as PDF: load case, cycle, every candidate's checks."""
-    body = report_pdf(selection_report(session, selection_id), DocumentText(language))
+    from actuator_selection.services.report_pdf import render_pdf  # fpdf2: on first use
+
+    body = render_pdf(selection_report(session, selection_id), DocumentText(language))
     headers = {**_attachment(selection_id, "pdf"), "Content-Language": language}
     return Response(body, media_type="application/pdf", headers=headers)
 

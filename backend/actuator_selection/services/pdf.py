@@ -1,8 +1,8 @@
 """A4 documents in fpdf2 for the quote document and the selection report: text in DejaVu
 Sans where the system has it (Debian's ``fonts-dejavu-core``: every character of the
 chapter, ``min⁻¹``, ``≤``, ``€``); without it in fpdf2's built-in Helvetica, whose Latin-1
-holds the German letters but not the chapter's symbols, which are then written as
-``services/reports.py`` writes them (``≤`` → ``<=``, ``min⁻¹`` → ``1/min``). Imported only
+holds the German letters but not the chapter's symbols, which are then written out by
+:func:`pdf_text` (``≤`` → ``<=``, ``min⁻¹`` → ``1/min``). Imported only
 when a PDF is asked for: fpdf2 and what it pulls in load on first use.
 """
 
@@ -16,7 +16,37 @@ from fpdf import FPDF
 from fpdf.enums import XPos, YPos
 from markupsafe import Markup
 
-from actuator_selection.services.reports import pdf_text
+_ASCII = str.maketrans(
+    {
+        "≤": "<=",
+        "≥": ">=",
+        "−": "-",
+        "–": "-",
+        "—": "-",
+        "₀": "0",
+        "₁": "1",
+        "₂": "2",
+        "₃": "3",
+        "⁻": "^-",
+        "…": "...",
+        "“": '"',
+        "”": '"',
+        "‘": "'",
+        "’": "'",
+        "√": "sqrt",
+        "Ω": "Ohm",
+    }
+)
+
+
+def pdf_text(text: str) -> str:
+    """``text`` in the built-in fonts' Latin-1; what has no Latin-1 form becomes '?'.
+
+    >>> pdf_text("T₁ ≤ T_max, −85.48 Nm, 2 kgm²")
+    'T1 <= T_max, -85.48 Nm, 2 kgm²'
+    """
+    return text.translate(_ASCII).encode("latin-1", "replace").decode("latin-1")
+
 
 UNICODE_FONTS: Final = (
     Path("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"),

@@ -2,7 +2,7 @@
 :mod:`actuator_selection.services.reports`, laid out for print by
 :class:`~actuator_selection.services.pdf.DocumentPdf`, in the language of its
 :class:`~actuator_selection.services.reports.ReportWords`. Imported only when a PDF is
-asked for (:func:`~actuator_selection.services.reports.report_pdf`)."""
+asked for (the report's route imports it then)."""
 
 from __future__ import annotations
 

@@ -153,38 +153,6 @@ def report_csv(report: SelectionReport) -> str:
     return buffer.getvalue()
 
 
-_ASCII = str.maketrans(
-    {
-        "≤": "<=",
-        "≥": ">=",
-        "−": "-",
-        "–": "-",
-        "—": "-",
-        "₀": "0",
-        "₁": "1",
-        "₂": "2",
-        "₃": "3",
-        "⁻": "^-",
-        "…": "...",
-        "“": '"',
-        "”": '"',
-        "‘": "'",
-        "’": "'",
-        "√": "sqrt",
-        "Ω": "Ohm",
-    }
-)
-
-
-def pdf_text(text: str) -> str:
-    """``text`` in the built-in fonts' Latin-1; what has no Latin-1 form becomes '?'.
-
-    >>> pdf_text("T₁ ≤ T_max, −85.48 Nm, 2 kgm²")
-    'T1 <= T_max, -85.48 Nm, 2 kgm²'
-    """
-    return text.translate(_ASCII).encode("latin-1", "replace").decode("latin-1")
-
-
 class ReportWords(Protocol):
     """The words and number formats of one language, as the quote document has them
     (``api.quote_document_text.DocumentText``)."""
@@ -217,12 +185,3 @@ class ReportWords(Protocol):
     def cycle_label(self, key: str, label: str) -> str:
         """The label of a cycle fact (``schemas.quotes.cycle_facts``)."""
         ...
-
-
-def report_pdf(report: SelectionReport, words: ReportWords) -> bytes:
-    """The report as a PDF document (A4) in the language of ``words``, by
-    ``services/report_pdf.py``: fpdf2 and what it pulls in (Pillow, fontTools; ~30 MB per
-    process) load when the first PDF is asked for, not in every worker at start."""
-    from actuator_selection.services.report_pdf import render_pdf
-
-    return render_pdf(report, words)
