@@ -8,7 +8,7 @@ from typing import Any
 
 from tests.server.conftest import StartServer
 
-from actuator_selection.api.batch import STREAM_CASES
+from actuator_selection.services.batch import STREAM_CASES
 
 
 def _cases(n: int) -> list[dict[str, Any]]:
