@@ -105,6 +105,8 @@ def assert_selects_like_scalar(
     assert len(batch) == len(ranks) == len(apps)
     for app, got, columns in zip(apps, batch, ranks, strict=True):
         expected = truncated(select(actuators, app, rules=rules), top)
+        # before ==, which builds every check: the reasons from the checks not passing alone
+        assert [c.reasons for c in got.candidates] == [c.reasons for c in expected.candidates]
         assert got == expected
         # == holds for 1 and True: a flag must be a bool, or the JSON says 1
         assert all(type(k.approximate) is bool for c in got.candidates for k in c.checks)

@@ -56,7 +56,15 @@ import numpy as np
 import numpy.typing as npt
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import RULES, Operands, Ops, Rule, Status
+from actuator_selection.core.checks import (
+    RULES,
+    Check,
+    DeferredChecks,
+    Operands,
+    Ops,
+    Rule,
+    Status,
+)
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import (
     CycleFigures,
@@ -1007,7 +1015,7 @@ def _detail(
     (:meth:`~actuator_selection.core.checks.Rule.report`) from the decisions, values and
     limits of the arrays and the operands of the cell, as floats. Equal to
     :func:`~actuator_selection.core.selection.evaluate` of the cell (the tests compare
-    them with ``==``); the words are written when first read."""
+    them with ``==``); the checks are built, and their words written, when first read."""
     assert block.details is not None
     assert block.operands is not None
     shape = block.accel_torque.shape
@@ -1035,37 +1043,58 @@ def _detail(
         cells(block.rms_torque),
         strict=True,
     )
-    status_of = STATUS_BY_CODE
     out = []
     for row, column, q, cell_torques, cell_checks in zip(
         rows.tolist(), columns.tolist(), operands, torques, zip(*per_rule, strict=True), strict=True
     ):
         actuator = actuators[column]
-        checks = tuple(
-            [
-                rule.report(
-                    q,
-                    status_of[code],
-                    value,
-                    limit,
-                    approximate,
-                    None if missing < 0 else missing,
-                    defer=True,
-                )
-                for rule, (code, value, limit, approximate, missing) in zip(
-                    rules, cell_checks, strict=True
-                )
-            ]
-        )
         out.append(
             Candidate(
                 actuator=actuator,
                 verdict=_VERDICT_OF_STATUS[max(c[0] for c in cell_checks)],
                 torques=_cycle_torques(actuator, profiles[row], *cell_torques),
-                checks=checks,
+                checks=_DecidedChecks(rules, q, cell_checks),  # type: ignore[arg-type]
             )
         )
     return out
+
+
+class _DecidedChecks(DeferredChecks):
+    """One candidate's checks as the arrays decided them: per rule its status code, value,
+    limit, approximation and first missing requirement (−1: none); each built by the
+    rule's :meth:`~actuator_selection.core.checks.Rule.report`, its words deferred."""
+
+    __slots__ = ("_cells", "_q", "_rules")
+
+    def __init__(
+        self,
+        rules: Sequence[Rule],
+        q: Operands,
+        cells: tuple[tuple[int, float, float, bool, int], ...],
+    ) -> None:
+        self._rules, self._q, self._cells = rules, q, cells
+
+    def resolve(self) -> tuple[Check, ...]:
+        return tuple([self._check(r, c) for r, c in zip(self._rules, self._cells, strict=True)])
+
+    def not_passing(self) -> list[Check]:
+        return [
+            self._check(r, c)
+            for r, c in zip(self._rules, self._cells, strict=True)
+            if STATUS_BY_CODE[c[0]] is not Status.PASS
+        ]
+
+    def _check(self, rule: Rule, cell: tuple[int, float, float, bool, int]) -> Check:
+        code, value, limit, approximate, missing = cell
+        return rule.report(
+            self._q,
+            STATUS_BY_CODE[code],
+            value,
+            limit,
+            approximate,
+            None if missing < 0 else missing,
+            defer=True,
+        )
 
 
 def _cycle_torques(

@@ -65,6 +65,7 @@ from typing import Any, NamedTuple
 
 from actuator_selection.core import bearing
 from actuator_selection.core.check_messages import Phrase, phrase
+from actuator_selection.core.deferred import Deferred, defer_field
 from actuator_selection.core.messages import N_
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
@@ -116,7 +117,7 @@ class Check:
         return overload(self.status, self.value, self.limit)
 
 
-class _Words:
+class _Words(Deferred):
     """A check's message not written yet: :meth:`Rule.report` with ``defer``.
 
     The vectorised flowchart details thousands of candidates, and writing the words of
@@ -132,27 +133,28 @@ class _Words:
         self._rule, self._q, self._status = rule, q, status
         self._value, self._limit, self._floor = value, limit, floor
 
-    def write(self) -> str:
+    def resolve(self) -> str:
         message = self._rule.message(self._q, self._status, self._value, self._limit)
         return _floor_message(message) if self._floor else message
 
 
-_MESSAGE_SLOT: Any = vars(Check)["message"]
-"""The slot that holds :attr:`Check.message` (or its :class:`_Words`, until read)."""
+defer_field(Check, "message")
 
 
-def _message(check: Check) -> str:
-    message = _MESSAGE_SLOT.__get__(check, Check)
-    if type(message) is _Words:  # written when first read, then kept
-        message = message.write()
-        _MESSAGE_SLOT.__set__(check, message)
-    return message  # type: ignore[no-any-return]
+class DeferredChecks(Deferred):
+    """A candidate's checks decided (by the vectorised flowchart) but not built yet:
+    :meth:`resolve` builds them all, :meth:`not_passing` only those that do not pass
+    (a candidate's ``reasons``)."""
 
+    __slots__ = ()
 
-# Check.message reads through _message: a check stays a frozen dataclass (fields, ==,
-# hash and repr read the written message), and one built with deferred words writes
-# them only when something reads them. (setattr: to mypy the field is a str.)
-setattr(Check, "message", property(_message, _MESSAGE_SLOT.__set__, doc="The check in words."))  # noqa: B010
+    def resolve(self) -> tuple[Check, ...]:
+        """Every check, in the rules' order."""
+        raise NotImplementedError
+
+    def not_passing(self) -> list[Check]:
+        """The checks that fail, warn or lack data, in the rules' order."""
+        raise NotImplementedError
 
 
 def margin_percent(value: float | None, limit: float | None) -> float | None:
@@ -534,7 +536,7 @@ class Rule:
         lacking = self._no_data[missing][3] if missing is not None else None
         message: Any = _Words(self, q, status, value, limit, floor)
         if not defer:
-            message = message.write()
+            message = message.resolve()
         return _new_check(
             self.name,
             status,

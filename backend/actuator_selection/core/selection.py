@@ -41,6 +41,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from functools import lru_cache
+from typing import Any
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
@@ -53,11 +54,13 @@ from actuator_selection.core.checks import (
     INERTIA_RATIO_LIMIT,
     RULES,
     Check,
+    DeferredChecks,
     Operands,
     Rule,
     Status,
 )
 from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.deferred import defer_field
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import CycleTorques, Motion, Profile, profile_of, trapezoid
 from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
@@ -206,6 +209,9 @@ class Candidate:
     def reasons(self) -> tuple[str, ...]:
         """Messages of the checks that fail, lack data or warn, in flowchart order, each
         once (``continuous_duty`` and ``thermal_peak`` lack the same catalogue value)."""
+        held = _CHECKS.__get__(self, Candidate)
+        if isinstance(held, DeferredChecks):  # a batch's candidate: build these alone
+            return tuple(dict.fromkeys(c.message for c in held.not_passing()))
         return tuple(dict.fromkeys(c.message for c in self.checks if c.status is not Status.PASS))
 
     @property
@@ -213,6 +219,11 @@ class Candidate:
         """The largest :attr:`~actuator_selection.core.checks.Check.overload` of its
         checks: 0 unless a check failed, else how far the worst one is over its limit."""
         return max((c.overload for c in self.checks), default=0.0)
+
+
+_CHECKS: Any = defer_field(Candidate, "checks")
+"""A candidate's checks may be :class:`~actuator_selection.core.checks.DeferredChecks`
+(the vectorised flowchart's), built when first read."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
