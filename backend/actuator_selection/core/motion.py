@@ -52,6 +52,7 @@ import numpy as np
 import numpy.typing as npt
 
 from actuator_selection.core.axis import AxisLoad
+from actuator_selection.core.deferred import Deferred, defer_field
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.messages import N_
 from actuator_selection.core.units import RAD_PER_S_PER_RPM, rpm_to_rad_per_s
@@ -420,6 +421,22 @@ class Profile:
         )
 
 
+class _PiecesOf(Deferred):
+    """:func:`pieces_of` a motion, when a profile's pieces are first read: a batch
+    answers thousands of cycles from their arrays and reads few pieces."""
+
+    __slots__ = ("_motion",)
+
+    def __init__(self, motion: Motion) -> None:
+        self._motion = motion
+
+    def resolve(self) -> tuple[Piece, ...]:
+        return pieces_of(self._motion)
+
+
+defer_field(Profile, "pieces")
+
+
 def heating_gain(duration_s: float, thermal_time_constant_s: float) -> float:
     """1 − e^(−t/τ_th), the share of the way to its steady state that a first-order
     system covers in t, by ``math.expm1`` (exact for short t, where 1 − exp(−t/τ) would
@@ -657,7 +674,7 @@ def profile_from(motion: Motion, figures: CycleFigures, row: int, holding: float
     arrays computed for many cycles at once."""
     profile = Profile(
         motion=motion,
-        pieces=pieces_of(motion),
+        pieces=_PiecesOf(motion),  # type: ignore[arg-type]  # a deferrable field
         cycle_s=float(figures.cycle_s[row]),
         mean_speed_rpm=float(figures.mean_speed_rpm[row]),
         duty_cycle_percent=float(figures.duty_cycle_percent[row]),
