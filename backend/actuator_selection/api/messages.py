@@ -400,8 +400,14 @@ def render_check(message: str, language: str) -> str:
     the language is English or the message has no code."""
     if language == DEFAULT_LANGUAGE:
         return message
-    return check_messages.render(
-        message, translate=lambda text: translate(text, language), number=_spec_number(language)
+    return _check_renderer(language)(message)
+
+
+@functools.cache
+def _check_renderer(language: str) -> Callable[[str], str]:
+    """The check messages' renderer of ``language``, made once."""
+    return check_messages.renderer(
+        translate=functools.partial(translate, language=language), number=_spec_number(language)
     )
 
 

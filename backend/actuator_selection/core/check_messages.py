@@ -84,6 +84,8 @@ class _Renderer:
         self._number = number
 
     def format_field(self, value: Any, format_spec: str) -> str:
+        if type(value) is float and self._number is not None:  # most fields: first
+            return self._number(value, format_spec)
         if value is None:
             return ""
         if isinstance(value, Phrase):
@@ -121,15 +123,18 @@ class _Field:
         return self._renderer.format_field(self._value, format_spec)
 
 
-def render(
-    message: str, *, translate: Callable[[str], str], number: NumberFormat | None = None
-) -> str:
-    """``message`` with its template and words passed through ``translate`` and its
+def renderer(
+    *, translate: Callable[[str], str], number: NumberFormat | None = None
+) -> Callable[[str], str]:
+    """A message with its template and words passed through ``translate`` and its
     numbers written by ``number`` (``format(value, spec)`` where None); a message that
     is no :class:`Phrase` (a rule written elsewhere) stays as it is."""
-    if not isinstance(message, Phrase):
-        return message
-    return _Renderer(translate, number).render(message)
+    phrases = _Renderer(translate, number)
+
+    def render(message: str) -> str:
+        return phrases.render(message) if isinstance(message, Phrase) else message
+
+    return render
 
 
 def jsonable_params(message: str) -> dict[str, Any] | None:
