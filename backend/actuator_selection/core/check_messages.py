@@ -142,23 +142,22 @@ def jsonable_params(message: str) -> dict[str, Any] | None:
     words as their English text, ±∞ and NaN as text; None for a message without a code."""
     if not isinstance(message, Phrase):
         return None
-    params = message.params
-    isfinite = math.isfinite
-    if all(type(v) is float and isfinite(v) for v in params.values()):
-        return dict(params)  # numbers only (most checks): as they are
+    return {k: _jsonable(v) for k, v in message.params.items()}
 
-    def one(value: Any) -> Any:
-        if isinstance(value, Phrase):
-            return {"code": value.code, "params": jsonable_params(value)}
-        if isinstance(value, list | tuple):
-            return [one(v) for v in value]
-        if isinstance(value, str):
-            return str(value)
-        if isinstance(value, float) and not math.isfinite(value):
-            return repr(value)
-        return value
 
-    return {k: one(v) for k, v in params.items()}
+def _jsonable(value: Any) -> Any:
+    kind = type(value)
+    if kind is float:  # most params: a finite number, as it is
+        return value if value - value == 0.0 else repr(value)  # inf − inf, NaN − NaN: NaN
+    if isinstance(value, Phrase):
+        return {"code": value.code, "params": jsonable_params(value)}
+    if isinstance(value, list | tuple):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, str):
+        return str(value)
+    if isinstance(value, float):
+        return value if math.isfinite(value) else repr(value)
+    return value
 
 
 CHECK_MESSAGES: Final[Mapping[str, str]] = {

@@ -1,0 +1,47 @@
+"""A check message's parameters as the API sends them (core/check_messages.py)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import orjson
+
+from actuator_selection.core.check_messages import Phrase, jsonable_params, phrase
+from actuator_selection.core.messages import Text
+
+
+def test_params_travel_as_json_with_clauses_words_and_non_finite_numbers_spelled_out() -> None:
+    clause = phrase("thermal_peak.short", rms_torque_nm=math.inf)
+    message = phrase(
+        "continuous_duty.approximate_pass",
+        value=17.25,
+        limit=float("nan"),
+        mean_speed_rpm=-math.inf,
+        what=Text("continuous stall torque T_0"),
+        speed_rpm=3,
+        speed_what=clause,
+    )
+    params = jsonable_params(message)
+    assert params == {
+        "value": 17.25,
+        "limit": "nan",
+        "mean_speed_rpm": "-inf",
+        "what": "continuous stall torque T_0",
+        "speed_rpm": 3,
+        "speed_what": {"code": "thermal_peak.short", "params": {"rms_torque_nm": "inf"}},
+    }
+    assert type(params["what"]) is str  # words as plain text, not the marker class
+    # the same document from both encoders: nothing left that only one of them can write
+    assert orjson.loads(orjson.dumps(params)) == json.loads(json.dumps(params, allow_nan=False))
+
+
+def test_lists_and_alternatives_keep_their_items_and_a_plain_string_has_no_params() -> None:
+    listed = Phrase("controllers_note.unconfirmed", {"count": 2, "excluded": 1, "missing": [
+        Text("feedback system"), Text("DC bus")]})  # fmt: skip
+    assert jsonable_params(listed) == {
+        "count": 2,
+        "excluded": 1,
+        "missing": ["feedback system", "DC bus"],
+    }
+    assert jsonable_params("a rule's own words") is None
