@@ -853,6 +853,9 @@ class _RankedBlock:
     start: int
     cases: _Cases
     block: _Block
+    verdicts: CodeArray
+    """The block's verdict codes (:data:`VERDICT_BY_CODE`), beyond them where a case's
+    ``models`` leave an actuator out."""
     order: IndexArray
     kept: BoolArray
 
@@ -889,7 +892,9 @@ def _ranked_blocks(
         position = np.broadcast_to(cat.rank_position, verdicts.shape)
         order = np.lexsort((position, block.overload, verdicts), axis=-1)[:, :keep]
         kept = np.take_along_axis(verdicts, order, axis=1) < excluded
-        yield _RankedBlock(start=start, cases=rows, block=block, order=order, kept=kept)
+        yield _RankedBlock(
+            start=start, cases=rows, block=block, verdicts=verdicts, order=order, kept=kept
+        )
 
 
 def _rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequence[Rule]:
@@ -983,7 +988,7 @@ def select_batch(
             profile_from(apps[ranked.start + r].cycle, figures, r, float(holding[r]))
             for r in range(order.shape[0])
         ]
-        detailed = iter(_detail(actuators, rules, ranked.block, rows, order[kept], profiles))
+        detailed = iter(_detail(actuators, rules, ranked, rows, order[kept], profiles))
         for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):
             selections.append(
                 Selection(
@@ -997,15 +1002,10 @@ def select_batch(
     return selections
 
 
-_VERDICT_OF_STATUS = (Verdict.SUITABLE, Verdict.SUITABLE, Verdict.UNCONFIRMED, Verdict.UNSUITABLE)
-"""The verdict of a candidate whose worst status code is the index (any fail: unsuitable,
-else any no data: unconfirmed)."""
-
-
 def _detail(
     actuators: Sequence[Actuator],
     rules: Sequence[Rule],
-    block: _Block,
+    ranked: _RankedBlock,
     rows: IndexArray,
     columns: IndexArray,
     profiles: Sequence[Profile],
@@ -1016,6 +1016,7 @@ def _detail(
     limits of the arrays and the operands of the cell, as floats. Equal to
     :func:`~actuator_selection.core.selection.evaluate` of the cell (the tests compare
     them with ``==``); the checks are built, and their words written, when first read."""
+    block = ranked.block
     assert block.details is not None
     assert block.operands is not None
     shape = block.accel_torque.shape
@@ -1025,17 +1026,19 @@ def _detail(
         return picked
 
     operands = list(map(Operands._make, zip(*map(cells, block.operands), strict=True)))
-    per_rule = [
-        zip(
-            cells(codes),
-            cells(d.values),
-            cells(d.limits),
-            cells(d.approximate),
-            cells(d.first_missing),
-            strict=True,
-        )
-        for codes, d in zip(block.statuses, block.details, strict=True)
-    ]
+    decided = _Decided(
+        rules,
+        [
+            (
+                cells(codes),
+                cells(d.values),
+                cells(d.limits),
+                cells(d.approximate),
+                cells(d.first_missing),
+            )
+            for codes, d in zip(block.statuses, block.details, strict=True)
+        ],
+    )
     torques = zip(
         cells(block.accel_torque),
         cells(block.constant_torque),
@@ -1043,58 +1046,70 @@ def _detail(
         cells(block.rms_torque),
         strict=True,
     )
+    verdicts = cells(ranked.verdicts)
     out = []
-    for row, column, q, cell_torques, cell_checks in zip(
-        rows.tolist(), columns.tolist(), operands, torques, zip(*per_rule, strict=True), strict=True
+    for cell, (row, column, q, verdict, cell_torques) in enumerate(
+        zip(rows.tolist(), columns.tolist(), operands, verdicts, torques, strict=True)
     ):
         actuator = actuators[column]
         out.append(
             Candidate(
                 actuator=actuator,
-                verdict=_VERDICT_OF_STATUS[max(c[0] for c in cell_checks)],
+                verdict=VERDICT_BY_CODE[verdict],
                 torques=_cycle_torques(actuator, profiles[row], *cell_torques),
-                checks=_DecidedChecks(rules, q, cell_checks),  # type: ignore[arg-type]
+                checks=_DecidedChecks(decided, q, cell),  # type: ignore[arg-type]
             )
         )
     return out
 
 
-class _DecidedChecks(DeferredChecks):
-    """One candidate's checks as the arrays decided them: per rule its status code, value,
-    limit, approximation and first missing requirement (−1: none); each built by the
-    rule's :meth:`~actuator_selection.core.checks.Rule.report`, its words deferred."""
+Column = tuple[list[int], list[float], list[float], list[bool], list[int]]
+"""One rule's decisions for the cells detailed: status codes, values, limits,
+approximations and first missing requirements (−1: none)."""
 
-    __slots__ = ("_cells", "_q", "_rules")
 
-    def __init__(
-        self,
-        rules: Sequence[Rule],
-        q: Operands,
-        cells: tuple[tuple[int, float, float, bool, int], ...],
-    ) -> None:
-        self._rules, self._q, self._cells = rules, q, cells
+@dataclass(frozen=True, slots=True, eq=False)
+class _Decided:
+    """The rules' decisions for the cells of a block that are detailed."""
 
-    def resolve(self) -> tuple[Check, ...]:
-        return tuple([self._check(r, c) for r, c in zip(self._rules, self._cells, strict=True)])
+    rules: Sequence[Rule]
+    columns: list[Column]
 
-    def not_passing(self) -> list[Check]:
-        return [
-            self._check(r, c)
-            for r, c in zip(self._rules, self._cells, strict=True)
-            if STATUS_BY_CODE[c[0]] is not Status.PASS
-        ]
-
-    def _check(self, rule: Rule, cell: tuple[int, float, float, bool, int]) -> Check:
-        code, value, limit, approximate, missing = cell
-        return rule.report(
-            self._q,
-            STATUS_BY_CODE[code],
-            value,
-            limit,
-            approximate,
-            None if missing < 0 else missing,
+    def check(self, k: int, q: Operands, cell: int) -> Check:
+        """Rule ``k``'s check of ``cell`` (its operands ``q``), its words deferred."""
+        codes, values, limits, approximate, missing = self.columns[k]
+        first = missing[cell]
+        return self.rules[k].report(
+            q,
+            STATUS_BY_CODE[codes[cell]],
+            values[cell],
+            limits[cell],
+            approximate[cell],
+            None if first < 0 else first,
             defer=True,
         )
+
+    def passes(self, k: int, cell: int) -> bool:
+        """Whether rule ``k`` passes for ``cell``."""
+        return STATUS_BY_CODE[self.columns[k][0][cell]] is Status.PASS
+
+
+class _DecidedChecks(DeferredChecks):
+    """One candidate's checks as the arrays decided them, each built by the rule's
+    :meth:`~actuator_selection.core.checks.Rule.report` when first read."""
+
+    __slots__ = ("_cell", "_decided", "_q")
+
+    def __init__(self, decided: _Decided, q: Operands, cell: int) -> None:
+        self._decided, self._q, self._cell = decided, q, cell
+
+    def resolve(self) -> tuple[Check, ...]:
+        d, q, cell = self._decided, self._q, self._cell
+        return tuple([d.check(k, q, cell) for k in range(len(d.rules))])
+
+    def not_passing(self) -> list[Check]:
+        d, q, cell = self._decided, self._q, self._cell
+        return [d.check(k, q, cell) for k in range(len(d.rules)) if not d.passes(k, cell)]
 
 
 def _cycle_torques(
