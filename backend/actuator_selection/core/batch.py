@@ -65,10 +65,12 @@ from actuator_selection.core.checks import (
     Rule,
     Status,
 )
+from actuator_selection.core.deferred import Deferred
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import (
     CycleFigures,
     CycleTorques,
+    Motion,
     PieceArrays,
     Profile,
     cycle_figures,
@@ -984,9 +986,10 @@ def select_batch(
             ranked.cases.pieces.holding,
         )
         rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
+        cases = apps[ranked.start : ranked.start + order.shape[0]]
         profiles = [
-            profile_from(apps[ranked.start + r].cycle, figures, r, float(holding[r]))
-            for r in range(order.shape[0])
+            profile_from(_CycleOf(app), app.axis_load, figures, r, float(holding[r]))
+            for r, app in enumerate(cases)
         ]
         detailed = iter(_detail(actuators, rules, ranked, rows, order[kept], profiles))
         for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):
@@ -1061,6 +1064,22 @@ def _detail(
             )
         )
     return out
+
+
+class _CycleOf(Deferred):
+    """A case's motion (:attr:`~actuator_selection.core.selection.Application.cycle`), built
+    when its profile's motion or pieces are first read, once for both."""
+
+    __slots__ = ("_app", "_motion")
+
+    def __init__(self, app: Application) -> None:
+        self._app = app
+        self._motion: Motion | None = None
+
+    def resolve(self) -> Motion:
+        if self._motion is None:
+            self._motion = self._app.cycle
+        return self._motion
 
 
 Column = tuple[list[int], list[float], list[float], list[bool], list[int]]

@@ -295,6 +295,8 @@ class Profile:
     on the actuator (arrays built by :func:`profile_arrays`, read back as floats)."""
 
     motion: Motion
+    load: AxisLoad
+    """The motion's axis load (``motion.load``), apart so that it is read without the motion."""
     pieces: tuple[Piece, ...]
     cycle_s: float
     mean_speed_rpm: float
@@ -422,19 +424,21 @@ class Profile:
 
 
 class _PiecesOf(Deferred):
-    """:func:`pieces_of` a motion, when a profile's pieces are first read: a batch
-    answers thousands of cycles from their arrays and reads few pieces."""
+    """:func:`pieces_of` a motion (or of what builds it), when a profile's pieces are
+    first read: a batch answers thousands of cycles from their arrays and reads few."""
 
     __slots__ = ("_motion",)
 
-    def __init__(self, motion: Motion) -> None:
+    def __init__(self, motion: Motion | Deferred) -> None:
         self._motion = motion
 
     def resolve(self) -> tuple[Piece, ...]:
-        return pieces_of(self._motion)
+        motion = self._motion
+        return pieces_of(motion.resolve() if isinstance(motion, Deferred) else motion)
 
 
 defer_field(Profile, "pieces")
+defer_field(Profile, "motion")
 
 
 def heating_gain(duration_s: float, thermal_time_constant_s: float) -> float:
@@ -666,14 +670,18 @@ def profile_of(motion: Motion) -> Profile:
     for many, so that a single selection and a batch agree bit for bit)."""
     arrays = piece_arrays((motion,))
     figures = cycle_figures(arrays)
-    return profile_from(motion, figures, 0, float(arrays.holding[0]))
+    return profile_from(motion, motion.load, figures, 0, float(arrays.holding[0]))
 
 
-def profile_from(motion: Motion, figures: CycleFigures, row: int, holding: float) -> Profile:
-    """The :class:`Profile` of ``motion`` with its figures taken from row ``row`` of
-    arrays computed for many cycles at once."""
+def profile_from(
+    motion: Motion | Deferred, load: AxisLoad, figures: CycleFigures, row: int, holding: float
+) -> Profile:
+    """The :class:`Profile` of ``motion`` (or of what builds it when it is first read) with
+    its axis load and its figures taken from row ``row`` of arrays computed for many
+    cycles at once."""
     profile = Profile(
-        motion=motion,
+        motion=motion,  # type: ignore[arg-type]  # a deferrable field
+        load=load,
         pieces=_PiecesOf(motion),  # type: ignore[arg-type]  # a deferrable field
         cycle_s=float(figures.cycle_s[row]),
         mean_speed_rpm=float(figures.mean_speed_rpm[row]),

@@ -133,7 +133,6 @@ class Application:
         if self.motion is not None:
             return self.motion
         assert self.pattern is not None
-        assert self.load is not None
         p = self.pattern
         return trapezoid(
             speed_rpm=p.speed_rpm,
@@ -141,10 +140,17 @@ class Application:
             constant_s=p.constant_s,
             decel_s=p.decel_s,
             pause_s=p.pause_s,
-            load=AxisLoad(
-                inertia_kgm2=self.load.inertia_kgm2, friction_torque_nm=self.load.torque_nm
-            ),
+            load=self.axis_load,
         )
+
+    @property
+    def axis_load(self) -> AxisLoad:
+        """The motion's axis load, without building the motion: for the shorthand, the
+        load's T_L as friction (acting against the motion) and its J_L."""
+        if self.motion is not None:
+            return self.motion.load
+        assert self.load is not None
+        return AxisLoad(inertia_kgm2=self.load.inertia_kgm2, friction_torque_nm=self.load.torque_nm)
 
     @property
     def profile(self) -> Profile:
@@ -275,7 +281,7 @@ def operands(
     # that keywords take, for every actuator of every case.
     return Operands(
         profile.peak_speed_rpm,
-        profile.motion.load.inertia_kgm2,
+        profile.load.inertia_kgm2,
         app.high_dynamics,
         n_av,
         nan if torques is None else torques.accel_torque_nm,

@@ -439,7 +439,7 @@ class ResolvedLoad(ResponseModel):
 
 def resolved_load(profile: Profile) -> dict[str, float]:
     """:class:`ResolvedLoad` of a cycle, as a JSON-ready dict."""
-    axis = profile.motion.load
+    axis = profile.load
     return {
         "speed_rpm": profile.peak_speed_rpm,
         "torque_nm": axis.friction_torque_nm,
