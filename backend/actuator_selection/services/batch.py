@@ -18,6 +18,7 @@ import pydantic_core
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import select_batch
+from actuator_selection.core.checks import Rule
 from actuator_selection.core.selection import Application, Selection
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
@@ -210,16 +211,17 @@ def _select(
 ) -> list[Selection]:
     """``select_batch`` for cases whose checks may differ (a brake adds one): each set of
     checks run on its own cases, the selections back in the order of the cases."""
-    groups: dict[object, list[int]] = {}
+    groups: dict[tuple[Rule, ...], list[int]] = {}
     for i, app in enumerate(apps):
         groups.setdefault(app.rules, []).append(i)
     out: list[Selection | None] = [None] * len(apps)
-    for indexes in groups.values():
+    for rules, indexes in groups.items():
         chosen = select_batch(
             actuators,
             [apps[i] for i in indexes],
             top=top,
             models=[models[i] for i in indexes],
+            rules=rules,
         )
         for i, selection in zip(indexes, chosen, strict=True):
             out[i] = selection
