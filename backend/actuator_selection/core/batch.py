@@ -4,10 +4,12 @@ An ERP sizes thousands of load cases against the same catalogue. This module run
 the flowchart of :mod:`actuator_selection.core.selection` for every case × actuator
 as arrays: the cycle figures (Eq. 514.1–514.4), the status of each check, the verdicts
 and the ranking (:func:`~actuator_selection.core.selection.ranking_key`), and then
-builds the detailed :class:`~actuator_selection.core.selection.Candidate` of
-only the best ``top`` actuators of each case with the scalar
-:func:`~actuator_selection.core.selection.evaluate`, so their numbers and messages are
-those of a single selection by construction.
+details the :class:`~actuator_selection.core.selection.Candidate` of only the best
+``top`` actuators of each case from the same arrays: each check is the rule's own
+:meth:`~actuator_selection.core.checks.Rule.report` of the arrays' decision, value and
+limit (the method the scalar flowchart's checks end in), built, with its words, when
+first read. So they are those of a single selection as long as the arrays are, bit for
+bit, which the tests check.
 
 The checks are not written here: the rules of :mod:`actuator_selection.core.checks`
 (the table the scalar flowchart runs) compute their values and limits on arrays of
@@ -868,13 +870,12 @@ def _ranked_blocks(
     *,
     top: int,
     models: Sequence[Collection[str] | None] | None,
-    rules: Sequence[Rule] | None,
+    rules: Sequence[Rule],
     detail: bool,
 ) -> Iterator[_RankedBlock]:
     """The cases ranked block by block (:func:`~actuator_selection.core.selection.
-    ranking_key`); ``detail``: with each check's values for the candidates' detail."""
-    _check_arguments(apps, top, models)
-    rules = _rules_of(apps, rules)
+    ranking_key`); ``detail``: with each check's values for the candidates' detail. The
+    arguments as :func:`select_batch` has checked them, ``rules`` resolved."""
     cat = catalogue_arrays(actuators)
     cases = _cases(apps)
     zone_limits = _zone_limits(actuators, cat.zone_columns, cases.mean_speed)
@@ -935,6 +936,8 @@ def rank_batch(
     The ranking of :func:`select` (:func:`~actuator_selection.core.selection.ranking_key`)
     without building the candidates; arguments as for :func:`select_batch`.
     """
+    _check_arguments(apps, top, models)
+    rules = _rules_of(apps, rules)
     chosen: list[list[int]] = []
     for ranked in _ranked_blocks(
         actuators, apps, top=top, models=models, rules=rules, detail=False
@@ -958,8 +961,7 @@ def select_batch(
 
     Equal to ``select(actuators, app)`` with its candidates cut to ``top``, case by case
     (and to ``select`` over the actuators named in ``models[i]``, where given): the
-    arrays rank, and :func:`~actuator_selection.core.selection.evaluate` details the
-    chosen few.
+    arrays rank and detail the chosen few (:func:`_detail`).
 
     Parameters
     ----------
@@ -976,6 +978,7 @@ def select_batch(
         The checks (:data:`~actuator_selection.core.checks.RULES`: the chapter's), for the
         arrays and for the candidates alike.
     """
+    _check_arguments(apps, top, models)
     rules = _rules_of(apps, rules)
     selections = []
     for ranked in _ranked_blocks(actuators, apps, top=top, models=models, rules=rules, detail=True):

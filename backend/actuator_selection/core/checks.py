@@ -134,8 +134,14 @@ class _Words(Deferred):
         self._value, self._limit, self._floor = value, limit, floor
 
     def resolve(self) -> str:
-        message = self._rule.message(self._q, self._status, self._value, self._limit)
-        return _floor_message(message) if self._floor else message
+        return _written(
+            self._rule.message(self._q, self._status, self._value, self._limit), self._floor
+        )
+
+
+def _written(message: str, floor: bool) -> str:
+    """A rule's message, as a failure for every J_A where ``floor``."""
+    return _floor_message(message) if floor else message
 
 
 defer_field(Check, "message")
@@ -381,7 +387,8 @@ Formula = Callable[[Operands, Ops], Any]
 """A rule's formula: a :data:`Real` or a :data:`Truth`, from the operands."""
 Message = Callable[[Operands, Status, Any, Any], str]
 """A rule's message from (operands, status, value, limit); floats, the limit NaN where
-there is none. Only the scalar flowchart writes messages."""
+there is none. Called on floats only: by :meth:`Rule.report`, for one actuator and one
+case (the vectorised flowchart's candidates are reported one by one)."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -534,9 +541,11 @@ class Rule:
             )
         floor = missing is not None  # failed for every J_A: at its least, without J_A
         lacking = self._no_data[missing][3] if missing is not None else None
-        message: Any = _Words(self, q, status, value, limit, floor)
-        if not defer:
-            message = message.resolve()
+        message: Any = (
+            _Words(self, q, status, value, limit, floor)
+            if defer
+            else _written(self.message(q, status, value, limit), floor)
+        )
         return _new_check(
             self.name,
             status,

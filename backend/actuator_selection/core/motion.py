@@ -296,7 +296,8 @@ class Profile:
 
     motion: Motion
     load: AxisLoad
-    """The motion's axis load (``motion.load``), apart so that it is read without the motion."""
+    """The motion's axis load (``motion.load``), apart so that it is read without building
+    the motion (a batch's profiles build it only when read). Replace both together."""
     pieces: tuple[Piece, ...]
     cycle_s: float
     mean_speed_rpm: float
@@ -676,9 +677,10 @@ def profile_of(motion: Motion) -> Profile:
 def profile_from(
     motion: Motion | Deferred, load: AxisLoad, figures: CycleFigures, row: int, holding: float
 ) -> Profile:
-    """The :class:`Profile` of ``motion`` (or of what builds it when it is first read) with
-    its axis load and its figures taken from row ``row`` of arrays computed for many
-    cycles at once."""
+    """The :class:`Profile` of ``motion`` (or of a :class:`Deferred` that builds it when it
+    is first read: the same object for the motion and the pieces, so it should keep what
+    it built) with its axis load and its figures taken from row ``row`` of arrays
+    computed for many cycles at once."""
     profile = Profile(
         motion=motion,  # type: ignore[arg-type]  # a deferrable field
         load=load,

@@ -216,7 +216,7 @@ class Candidate:
         """Messages of the checks that fail, lack data or warn, in flowchart order, each
         once (``continuous_duty`` and ``thermal_peak`` lack the same catalogue value)."""
         held = _CHECKS.__get__(self, Candidate)
-        if isinstance(held, DeferredChecks):  # a batch's candidate: build these alone
+        if isinstance(held, DeferredChecks):  # a batch's candidate, checks unread: these alone
             return tuple(dict.fromkeys(c.message for c in held.not_passing()))
         return tuple(dict.fromkeys(c.message for c in self.checks if c.status is not Status.PASS))
 
@@ -385,14 +385,11 @@ def evaluate_each(
     app: Application,
     *,
     rules: Sequence[Rule] | None = None,
-    profile: Profile | None = None,
 ) -> list[Candidate]:
-    """:func:`evaluate` for each of ``actuators`` in turn, the cycle prepared once
-    (``profile``: as the vectorised flowchart computed it, else :attr:`Application.profile`)."""
+    """:func:`evaluate` for each of ``actuators`` in turn, the cycle prepared once."""
     if rules is None:
         rules = app.rules
-    if profile is None:
-        profile = app.profile
+    profile = app.profile
     candidates = []
     for actuator in actuators:
         torques = (
