@@ -202,6 +202,8 @@ def candidate_body(
     only when given; ``controllers_summary`` from :func:`controllers_summary`."""
     t = candidate.torques
     a = candidate.actuator
+    # The checks first: a batch candidate's reasons then come from the checks built.
+    checks = [check_body(c, localize) for c in candidate.checks] if include_checks else None
     body: dict[str, Any] = {
         "model": a.model,
         "family": a.family,
@@ -213,8 +215,8 @@ def candidate_body(
         "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
         "reasons": [localize(r) for r in candidate.reasons],
     }
-    if include_checks:
-        body["checks"] = [check_body(c, localize) for c in candidate.checks]
+    if checks is not None:
+        body["checks"] = checks
     if controllers is not None:
         body["controllers"] = controllers
     body.update(controllers_summary)

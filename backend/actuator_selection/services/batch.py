@@ -86,8 +86,9 @@ def size_batch(
     writer: Writer,
     localize: Localize,
 ) -> Iterator[bytes]:
-    """The answer to ``body`` (within :func:`check_limits`; its cases as ``apps``) as
-    JSON, slice by slice.
+    """The answer to ``body`` (within :func:`check_limits`, which the caller checks
+    before it turns the cases into ``apps``) as JSON, slice by slice. It takes the cases
+    out of ``body`` (``body.cases`` is empty afterwards): only ``apps`` stay in memory.
 
     Cases to be stored are stored (in a write transaction of ``writer``) and the first
     slice is computed before this returns, so that a fault there is still an error
