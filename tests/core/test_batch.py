@@ -28,6 +28,7 @@ from actuator_selection.core.batch import (
     rank_batch,
     select_batch,
 )
+from actuator_selection.core.check_messages import jsonable_params, renderer
 from actuator_selection.core.checks import RULES, Requirement, Rule, published
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
@@ -110,7 +111,21 @@ def assert_selects_like_scalar(
         assert got == expected
         # == holds for 1 and True: a flag must be a bool, or the JSON says 1
         assert all(type(k.approximate) is bool for c in got.candidates for k in c.checks)
+        # == compares the English words, numbers rounded: every param to the last bit too
+        assert _in_full(got) == _in_full(expected)
         assert [actuators[j] for j in columns] == [c.actuator for c in expected.candidates]
+
+
+_FULL = renderer(translate=str, number=lambda value, spec: repr(value))
+"""A message with every number written in full (repr), as no language writes it."""
+
+
+def _in_full(selection: Selection) -> list[list[tuple[str, dict[str, object] | None]]]:
+    """Each check's message with its numbers in full, and its params as the API sends them."""
+    return [
+        [(_FULL(k.message), jsonable_params(k.message)) for k in c.checks]
+        for c in selection.candidates
+    ]
 
 
 # --- generators ---------------------------------------------------------------------------
