@@ -141,7 +141,9 @@ class Clicks:
 def test_a_german_session_from_the_form_to_the_pdf(german_page: Page, site: SalesSite) -> None:
     page = german_page
     page.goto("/")
-    expect(page.locator("html")).to_have_attribute("lang", "de")  # the browser's language
+    expect(page.locator("html")).to_have_attribute(
+        "lang", "de", timeout=SLOW_MS
+    )  # the browser's language
     assert_german(page, "empty form")
 
     # a field error, in German
@@ -151,7 +153,7 @@ def test_a_german_session_from_the_form_to_the_pdf(german_page: Page, site: Sale
         page.locator("#submit").click()
     assert refused.value.status == 422
     error = page.locator("#err-t1")
-    expect(error).to_contain_text("Eingabe muss größer")
+    expect(error).to_contain_text("Eingabe muss größer", timeout=SLOW_MS)
     assert_german(page, "form with a field error")
 
     # the results and the first candidate's detail
@@ -163,14 +165,14 @@ def test_a_german_session_from_the_form_to_the_pdf(german_page: Page, site: Sale
     chosen = str(created.value.json()["candidates"][0]["model"])
     page.wait_for_selector(f'#detail[data-model="{chosen}"][data-detail="ready"]')
     wait_for_charts(page, chosen)
-    expect(page.locator("#controllers-table")).to_be_visible()
+    expect(page.locator("#controllers-table")).to_be_visible(timeout=SLOW_MS)
     assert_german(page, f"results with {chosen}'s detail")
 
     # an unconfirmed candidate: its missing catalogue values and its controllers' notes
     unconfirmed = "FHA-25C-50-L"
     page.locator(f'#ranking-table tr[data-model="{unconfirmed}"] .model-button').click()
     page.wait_for_selector(f'#detail[data-model="{unconfirmed}"][data-detail="ready"]')
-    expect(page.locator("#detail .controllers")).to_contain_text("keine Daten zu")
+    expect(page.locator("#detail .controllers")).to_contain_text("keine Daten zu", timeout=SLOW_MS)
     assert_german(page, f"detail of {unconfirmed}")
     page.locator(f'#ranking-table tr[data-model="{chosen}"] .model-button').click()
     page.wait_for_selector(f'#detail[data-model="{chosen}"][data-detail="ready"]')
@@ -180,13 +182,13 @@ def test_a_german_session_from_the_form_to_the_pdf(german_page: Page, site: Sale
     clicks.click(page.locator(".sales-link"))  # 1: the quotes page on this selection and model
     page.fill("#api-key", site.sales_key)
     page.press("#api-key", "Enter")  # signing in: the key typed and sent with Enter
-    expect(page.locator("#quote-form")).to_be_visible()
-    expect(page.locator("#f-model")).to_have_value(chosen)
+    expect(page.locator("#quote-form")).to_be_visible(timeout=SLOW_MS)
+    expect(page.locator("#f-model")).to_have_value(chosen, timeout=SLOW_MS)
     assert_german(page, "sales page", data=(EXAMPLE_PRICE_LIST,))
     page.fill("#f-customer", "Beispiel Maschinenbau GmbH")
     clicks.click(page.get_by_role("button", name="Angebot erstellen"))  # 2
     created_box = page.locator("#created")
-    expect(created_box).to_contain_text("erstellt: Gesamtbetrag")
+    expect(created_box).to_contain_text("erstellt: Gesamtbetrag", timeout=SLOW_MS)
     number = created_box.locator(".quote-number").inner_text()
     assert_german(page, "sales page with the quote", data=(EXAMPLE_PRICE_LIST,))
     with page.expect_download() as download_info:
@@ -201,7 +203,7 @@ def test_a_german_session_from_the_form_to_the_pdf(german_page: Page, site: Sale
     with page.expect_popup() as popup:
         created_box.get_by_role("button", name="Dokument öffnen").click()
     document = popup.value
-    expect(document.locator("html")).to_have_attribute("lang", "de")
-    expect(document.locator("[data-field=total]")).to_contain_text(",")
+    expect(document.locator("html")).to_have_attribute("lang", "de", timeout=SLOW_MS)
+    expect(document.locator("[data-field=total]")).to_contain_text(",", timeout=SLOW_MS)
     document.wait_for_selector("html[data-figure=ready]")
     assert_german(document, "quote document", data=(EXAMPLE_PRICE_LIST,))
