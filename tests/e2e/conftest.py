@@ -31,6 +31,7 @@ from playwright.sync_api import (
     Playwright,
     Request,
     ViewportSize,
+    expect,
     sync_playwright,
 )
 from tests.api._sales_fixtures import load_example_prices
@@ -52,6 +53,11 @@ CHROMIUM_ARGS = [
     "--disable-quic",
 ]
 DESKTOP: ViewportSize = {"width": 1280, "height": 900}
+
+WAIT_MS = 15_000
+"""How long an action or an assertion waits: Playwright's assertions wait 5 s by
+default, which a loaded CI machine sometimes needs more than."""
+expect.set_options(timeout=WAIT_MS)
 PHONE: ViewportSize = {"width": 375, "height": 800}
 SERVER_START_TIMEOUT_S = 20.0
 
@@ -201,7 +207,7 @@ def traffic() -> Traffic:
 def page(browser: Browser, base_url: str, traffic: Traffic) -> Iterator[Page]:
     """A fresh context (empty localStorage, English browser) at desktop width."""
     context = browser.new_context(viewport=DESKTOP, locale="en-US", base_url=base_url)
-    context.set_default_timeout(15_000)
+    context.set_default_timeout(WAIT_MS)
     context.on("request", traffic.on_request)
     context.on("console", traffic.on_console)
     context.on("weberror", lambda web_error: traffic.on_page_error(web_error.error))
