@@ -15,7 +15,7 @@ from pathlib import Path
 
 import httpx
 import pytest
-from playwright.sync_api import Browser, Page, expect
+from playwright.sync_api import Browser, Page, Route, expect
 from tests.api._sales_fixtures import (
     EXAMPLE_PRICE_LIST,
     WORKED_EXAMPLE,
@@ -482,3 +482,28 @@ def test_a_link_from_the_selection_page_opens_its_actuator(
     expect(page.locator("#quote-form")).to_be_visible()
     expect(page.locator("#selection-id")).to_have_value(selection)
     expect(page.locator("#f-model")).to_have_value(chosen)
+
+
+def test_a_quote_is_asked_for_only_once_the_price_lists_are_in(
+    sales_page: Page, site: SalesSite
+) -> None:
+    """The form shows with the selection, but its price lists come in a request of their
+    own: until they are in, the form is busy and cannot be sent (a quote sent before
+    would be refused for an empty price list; a loaded machine once did that)."""
+    page = sales_page
+    held: list[Route] = []
+    page.route("**/api/v1/price-lists", lambda route: held.append(route))  # answered below
+    page.goto(f"/sales.html?selection={selection_id(site)}")
+    sign_in(page, site.sales_key)
+    expect(page.locator("#quote-form")).to_be_visible(timeout=SLOW_MS)
+    expect(page.locator("#quote-form")).to_have_attribute("aria-busy", "true")
+    expect(page.locator("#create-quote")).to_be_disabled()
+    assert held, "the page did not ask for the price lists"
+    page.fill("#f-customer", "Muster GmbH")
+    for route in held:
+        route.continue_()
+    expect(page.locator("#create-quote")).to_be_enabled(timeout=SLOW_MS)
+    expect(page.locator("#quote-form")).not_to_have_attribute("aria-busy", "true")
+    expect(page.locator("#f-price-list")).to_have_value(EXAMPLE_PRICE_LIST)
+    page.click("#create-quote")
+    expect(page.locator("#created")).to_contain_text("EUR", timeout=SLOW_MS)

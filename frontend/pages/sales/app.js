@@ -337,8 +337,19 @@ async function loadSelection(id, model = null) {
   ]);
   box.hidden = false;
   if (!canQuote) return;
-  byId("quote-form").hidden = false;
-  await loadPriceLists();
+  // The form shows at once, but takes a quote only once its price lists are in: a quote
+  // asked for before that would be refused for the empty list.
+  const form = byId("quote-form");
+  const create = byId("create-quote");
+  form.hidden = false;
+  form.setAttribute("aria-busy", "true");
+  create.disabled = true;
+  try {
+    await loadPriceLists();
+  } finally {
+    form.removeAttribute("aria-busy");
+    create.disabled = false;
+  }
 }
 
 /** The price lists as options, in the page's language; keeps the choice. */
