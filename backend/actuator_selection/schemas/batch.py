@@ -172,7 +172,7 @@ _TEXT: dict[Status | Verdict, str] = {e: e.value for e in (*Status, *Verdict)}
 def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
     """``CheckOut.from_core(check, localize).model_dump(mode="json")``, without building the
     model."""
-    value, limit = check.value, check.limit
+    value, limit, message = check.value, check.limit, check.message
     margin, utilisation = check.margin_percent, check.utilisation
     return {
         "name": check.name,
@@ -181,9 +181,9 @@ def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
         "limit": None if limit is None else float(limit),
         "unit": check.unit,
         "reference": check.reference,
-        "message": localize(check.message),
-        "message_code": message_code(check.message),
-        "message_params": jsonable_params(check.message),
+        "message": localize(message),
+        "message_code": message_code(message),
+        "message_params": jsonable_params(message),
         "approximate": check.approximate,
         "margin_percent": None if margin is None else float(margin),
         "utilisation": None if utilisation is None else float(utilisation),
