@@ -17,6 +17,7 @@ from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.main import GC_THRESHOLDS, tune_gc
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
+from actuator_selection.services.selections import SCALAR_UP_TO
 
 WORKED_EXAMPLE: dict[str, Any] = {
     **worked_example.request(),
@@ -413,6 +414,59 @@ def test_answer_equals_the_scalar_flowchart_check_by_check(
                 if c["status"] == "no_data":
                     expected = f"no data: the catalogue gives no {c['missing']} for this actuator"
                     assert d["message"] == expected
+
+
+def _resolved(answer: dict[str, Any]) -> dict[str, Any]:
+    """An answer's candidates by model, each drive option's controller numbers replaced by
+    the controllers they stand for (the numbering is the answer's own)."""
+    refs = answer["controllers"]
+    out = {}
+    for c in answer["candidates"]:
+        options = c["drive_options"]
+        if options is not None:
+            options = [{**g, "controllers": [refs[i] for i in g["controllers"]]} for g in options]
+        out[c["model"]] = {**c, "drive_options": options}
+    return out
+
+
+@pytest.mark.parametrize("size", [1, 2, SCALAR_UP_TO, SCALAR_UP_TO + 1])
+def test_a_few_models_are_answered_as_in_the_whole_catalogue(client: TestClient, size: int) -> None:
+    """A selection of a few models runs the scalar flowchart, of many the vectorised one
+    (``services.selections.SCALAR_UP_TO``): each candidate, in the same order, with the
+    same numbers, checks and drive options as in the whole catalogue's answer, with and
+    without the checks of a brake, the drive and the output bearing."""
+    rng = random.Random(size)
+    for _ in range(6):
+        body = {
+            "load": {
+                "speed_rpm": rng.uniform(5, 150),
+                "torque_nm": rng.uniform(0, 80),
+                "inertia_kgm2": rng.uniform(0, 3),
+            },
+            "cycle": {
+                "accel_s": rng.uniform(0.05, 0.5),
+                "constant_s": rng.uniform(0, 1),
+                "decel_s": rng.uniform(0.05, 0.5),
+                "pause_s": rng.uniform(0, 2),
+            },
+            "high_dynamics": rng.random() < 0.5,
+            "brake": rng.random() < 0.5,
+            "drive": rng.random() < 0.5,
+        }
+        if rng.random() < 0.5:  # the output bearing's checks
+            body["output_load"] = {
+                "radial_force_n": rng.uniform(0, 5000),
+                "axial_force_n": rng.uniform(0, 5000),
+                "radial_lever_m": rng.uniform(0, 0.2),
+                "axial_lever_m": rng.uniform(0, 0.1),
+                "required_life_h": rng.uniform(1000, 50_000),
+            }
+        whole = _resolved(post(client, body).json())
+        models = rng.sample(sorted(whole), size)
+        few = _resolved(post(client, {**body, "models": models}).json())
+        assert list(few) == [m for m in whole if m in models]
+        for model, candidate in few.items():
+            assert candidate == whole[model], model
 
 
 def _continuous(client: TestClient, model: str, speed_rpm: float, torque_nm: float) -> Any:

@@ -486,7 +486,9 @@ class Rule:
         object.__setattr__(self, "_no_data", no_data)
 
     def check(self, q: Operands) -> Check:
-        """The check for one actuator and one load case (floats)."""
+        """The check for one actuator and one load case (floats); its words are written
+        when its message is first read (an answer that lists checks as numbers never
+        reads them)."""
         xp = FLOAT_OPS
         value = self.value(q, xp)
         for index, (unless, any_of, _, _) in enumerate(self._no_data):
@@ -510,7 +512,7 @@ class Rule:
         else:
             status = Status.WARN
         approximate = self.approximate is not None and self.approximate(q, xp)
-        return self.report(q, status, value, limit, approximate, None)
+        return self.report(q, status, value, limit, approximate, None, defer=True)
 
     def report(
         self,
@@ -574,7 +576,7 @@ class Rule:
         ):
             return None
         approximate = self.approximate is not None and self.approximate(q, xp)
-        return self.report(q, Status.FAIL, floor, limit, approximate, 0)
+        return self.report(q, Status.FAIL, floor, limit, approximate, 0, defer=True)
 
 
 def _floor_message(message: str) -> str:
