@@ -5,10 +5,13 @@ the chapter's trapezoid equal to its four segments."""
 from __future__ import annotations
 
 import math
+import random
 from dataclasses import fields
 
+import numpy as np
 import pytest
 from tests import worked_example
+from tests.core.test_batch import random_motion_case
 
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.cycle import cycle_torques, duty_cycle_percent, mean_speed_rpm
@@ -284,3 +287,18 @@ def test_figures_of_known_profiles_are_the_computed_figures_bit_for_bit() -> Non
     known = figures_of([profile_of(m) for m in motions])
     for name in (f.name for f in fields(computed)):
         assert getattr(known, name).tobytes() == getattr(computed, name).tobytes(), name
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_one_profile_sums_on_floats_what_many_sum_on_arrays(seed: int) -> None:
+    """``profile_of`` sums one cycle's figures on Python floats, ``cycle_figures`` many
+    cycles' on numpy arrays (short cycles padded): the same floats, to the bit, for cycles
+    of segments with S-curves, reversals, weights, losses and process torques."""
+    rng = random.Random(700 + seed)
+    motions = [random_motion_case(rng).cycle for _ in range(30)]
+    arrays = cycle_figures(piece_arrays(motions))
+    for i, motion in enumerate(motions):
+        profile = profile_of(motion)
+        for name in (f.name for f in fields(arrays)):
+            expected = getattr(arrays, name)[i]
+            assert np.float64(getattr(profile, name)).tobytes() == expected.tobytes(), (i, name)
