@@ -409,7 +409,7 @@ def _status_codes(
         first_missing: CodeArray = np.full(shape, -1, dtype=np.int8)
         others_missing: BoolArray = np.zeros(shape, dtype=np.bool_)
         for k, need in enumerate(rule.requires):
-            lacking = np.broadcast_to(need.missing(q, xp), shape)
+            lacking = need.missing(q, xp)  # a row or a column: broadcast by the masks
             first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
             if k:
                 others_missing = others_missing | lacking
@@ -418,9 +418,8 @@ def _status_codes(
         within = np.True_ if rule.within is None else rule.within(q, xp)
         ok = (value <= limit) & within
         binding = np.True_ if rule.binding is None else rule.binding(q, xp)
-        value = np.broadcast_to(value, shape)
         if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
-            floor = np.broadcast_to(rule.lower_bound(q, xp), shape)
+            floor = rule.lower_bound(q, xp)
             floor_fails = (
                 (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
             )
@@ -429,7 +428,7 @@ def _status_codes(
         if rule.lower_bound is not None:
             missing = missing & ~floor_fails
     fail = np.where(binding, _FAIL, _WARN)
-    codes = np.broadcast_to(np.where(missing, _NO_DATA, np.where(ok, _PASS, fail)), shape)
+    codes = np.where(missing, _NO_DATA, np.where(ok, _PASS, fail))  # cases × actuators
     if rule.lower_bound is not None:
         codes = np.where(floor_fails, _FAIL, codes)
     with np.errstate(all="ignore"):
@@ -441,14 +440,14 @@ def _status_codes(
     approximate = (
         np.zeros(shape, dtype=np.bool_)
         if rule.approximate is None
-        else np.broadcast_to(rule.approximate(q, xp), shape) & ~missing
+        else rule.approximate(q, xp) & ~missing
     )
     return (
         codes,
         overload,
         _RuleArrays(
-            values=value,
-            limits=np.where(missing, math.nan, np.broadcast_to(limit, shape)),
+            values=np.broadcast_to(value, shape),
+            limits=np.where(missing, math.nan, limit),
             approximate=approximate,
             first_missing=first_missing,
         ),
@@ -499,9 +498,11 @@ class _HeatingGains:
         self._shape = shape
 
     def _pick(self, table: FloatArray) -> FloatArray:
-        """Cases × actuators from a (τ_th columns × cases) table."""
+        """Cases × actuators from a (τ_th columns × cases) table; where no actuator
+        publishes τ_th, cases × 1 (broadcast by the arithmetic that uses it)."""
         if not self._mixed:
-            return np.broadcast_to(table[0][:, np.newaxis], self._shape)
+            column: FloatArray = table[0][:, np.newaxis]
+            return column
         return table[self._index].T
 
     def piece(self, k: int) -> FloatArray:
