@@ -2,8 +2,9 @@
 
 Starts ``python -m actuator_selection serve`` (uvicorn) on a free loopback port on a
 fresh database seeded with the starter catalogue, runs ``--clients`` keep-alive
-clients for ``--seconds`` against each endpoint in turn, and prints requests per
-second, the ratio to ``GET /api/v1/health`` measured in the same run, the server
+clients for ``--seconds`` against each endpoint, in ``--rounds`` interleaved windows
+(each round every endpoint in turn), and prints the median requests per second, the
+median of the rounds' ratios to ``GET /api/v1/health`` and each round's, the server
 process's CPU time per request (with workers > 1: the master's only), and every
 answer that was not 2xx (there should be none).
 
@@ -16,6 +17,7 @@ from __future__ import annotations
 import argparse
 import os
 import socket
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -187,6 +189,7 @@ def main() -> None:
     parser.add_argument("--clients", type=int, default=32)
     parser.add_argument("--seconds", type=float, default=8.0)
     parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument("--rounds", type=int, default=3, help="windows per endpoint, interleaved")
     parser.add_argument("--batch-cases", type=int, default=20_000)
     args = parser.parse_args()
     drop: Callable[[], None] = lambda: None  # noqa: E731
@@ -203,7 +206,7 @@ def main() -> None:
         try:
             print(
                 f"{make_url(url).get_backend_name()}, {args.workers} worker(s), "
-                f"{args.clients} clients, {args.seconds:g} s each"
+                f"{args.clients} clients, {args.seconds:g} s each in {args.rounds} rounds"
             )
             cases = [
                 ("GET /health", "GET", "/api/v1/health", None),
@@ -215,20 +218,32 @@ def main() -> None:
             stored = httpx.post(f"{base}/api/v1/selections", json=WORKED_EXAMPLE).json()["id"]
             cases.append(("GET /selections/{id}, whole catalogue", "GET",
                           f"/api/v1/selections/{stored}", None))  # fmt: skip
-            reference = None
             for _, method, path, body in cases:  # warm up: routes built, caches filled
                 _load(base, method, path, body, clients=4, seconds=1.0)
-            for name, method, path, body in cases:
-                cpu = _cpu_s(process.pid)
-                rate, failures, size = _load(
-                    base, method, path, body, clients=args.clients, seconds=args.seconds
-                )
-                cpu_ms = (_cpu_s(process.pid) - cpu) / (rate * args.seconds) * 1e3
-                reference = reference or rate
+            # Rounds, each endpoint in turn within each: a change in the machine's load
+            # (it is shared) then shifts every endpoint of a round alike, and the median
+            # of the rounds' ratios is not carried by one slow window.
+            window = args.seconds / args.rounds
+            runs: dict[str, list[tuple[float, float, Counter[str], int]]] = {}
+            for _ in range(args.rounds):
+                for name, method, path, body in cases:
+                    cpu = _cpu_s(process.pid)
+                    rate, failures, size = _load(
+                        base, method, path, body, clients=args.clients, seconds=window
+                    )
+                    cpu_ms = (_cpu_s(process.pid) - cpu) / (rate * window) * 1e3
+                    runs.setdefault(name, []).append((rate, cpu_ms, failures, size))
+            health = [rate for rate, _, _, _ in runs[cases[0][0]]]
+            for name, measured in runs.items():
+                rates = [rate for rate, _, _, _ in measured]
+                ratios = [rate / h for rate, h in zip(rates, health, strict=True)]
+                failures = sum((f for _, _, f, _ in measured), Counter())
                 print(
-                    f"  {name:36s} {rate:8.1f} req/s  {rate / reference:5.2f}× /health  "
-                    f"server CPU {cpu_ms:5.2f} ms/req  answer {size / 1024:6.1f} KiB  "
-                    f"non-2xx {dict(failures) or 0}"
+                    f"  {name:36s} {statistics.median(rates):8.1f} req/s  "
+                    f"{statistics.median(ratios):5.2f}× /health (rounds "
+                    f"{' '.join(f'{r:.2f}' for r in ratios)})  server CPU "
+                    f"{statistics.median(c for _, c, _, _ in measured):5.2f} ms/req  answer "
+                    f"{measured[0][3] / 1024:6.1f} KiB  non-2xx {dict(failures) or 0}"
                 )
             print(f"  stored selection row (answer gzip + request): "
                   f"{_stored_row_bytes(url) / 1024:.1f} KiB on average")  # fmt: skip
