@@ -368,6 +368,24 @@ def test_a_served_process_collects_rarely_but_never_switches_the_collector_off()
         gc.set_threshold(*before)
 
 
+def random_case(rng: random.Random) -> dict[str, Any]:
+    """A load case of the chapter's cycle with every input drawn from a plausible range."""
+    return {
+        "load": {
+            "speed_rpm": rng.uniform(5, 150),
+            "torque_nm": rng.uniform(0, 80),
+            "inertia_kgm2": rng.uniform(0, 3),
+        },
+        "cycle": {
+            "accel_s": rng.uniform(0.05, 0.5),
+            "constant_s": rng.uniform(0, 1),
+            "decel_s": rng.uniform(0.05, 0.5),
+            "pause_s": rng.uniform(0, 2),
+        },
+        "high_dynamics": rng.random() < 0.5,
+    }
+
+
 def test_answer_equals_the_scalar_flowchart_check_by_check(
     client: TestClient, connection: Connection
 ) -> None:
@@ -376,20 +394,7 @@ def test_answer_equals_the_scalar_flowchart_check_by_check(
     actuators = [r.actuator for r in CatalogueRepository(Session(connection)).actuators()]
     rng = random.Random(3)
     for _ in range(4):
-        body = {
-            "load": {
-                "speed_rpm": rng.uniform(5, 150),
-                "torque_nm": rng.uniform(0, 80),
-                "inertia_kgm2": rng.uniform(0, 3),
-            },
-            "cycle": {
-                "accel_s": rng.uniform(0.05, 0.5),
-                "constant_s": rng.uniform(0, 1),
-                "decel_s": rng.uniform(0.05, 0.5),
-                "pause_s": rng.uniform(0, 2),
-            },
-            "high_dynamics": rng.random() < 0.5,
-        }
+        body = random_case(rng)
         selection = post(client, body).json()
         scalar = select(actuators, SelectionRequest.model_validate(body).to_core())
         assert [c["model"] for c in selection["candidates"]] == [
@@ -437,22 +442,7 @@ def test_a_few_models_are_answered_as_in_the_whole_catalogue(client: TestClient,
     without the checks of a brake, the drive and the output bearing."""
     rng = random.Random(size)
     for _ in range(6):
-        body = {
-            "load": {
-                "speed_rpm": rng.uniform(5, 150),
-                "torque_nm": rng.uniform(0, 80),
-                "inertia_kgm2": rng.uniform(0, 3),
-            },
-            "cycle": {
-                "accel_s": rng.uniform(0.05, 0.5),
-                "constant_s": rng.uniform(0, 1),
-                "decel_s": rng.uniform(0.05, 0.5),
-                "pause_s": rng.uniform(0, 2),
-            },
-            "high_dynamics": rng.random() < 0.5,
-            "brake": rng.random() < 0.5,
-            "drive": rng.random() < 0.5,
-        }
+        body = {**random_case(rng), "brake": rng.random() < 0.5, "drive": rng.random() < 0.5}
         if rng.random() < 0.5:  # the output bearing's checks
             body["output_load"] = {
                 "radial_force_n": rng.uniform(0, 5000),
