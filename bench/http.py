@@ -5,8 +5,8 @@ fresh database seeded with the starter catalogue, runs ``--clients`` keep-alive
 clients for ``--seconds`` against each endpoint, in ``--rounds`` interleaved windows
 (each round every endpoint in turn), and prints the median requests per second, the
 median of the rounds' ratios to ``GET /api/v1/health`` and each round's, the server
-process's CPU time per request (with workers > 1: the master's only), and every
-answer that was not 2xx (there should be none).
+process's CPU time per request and /health's divided by it (with workers > 1: the
+master's only), and every answer that was not 2xx (there should be none).
 
     python -m bench.http                       # PostgreSQL at $TEST_POSTGRES_URL if it answers
     python -m bench.http --database sqlite     # the embedded default
@@ -234,15 +234,19 @@ def main() -> None:
                     cpu_ms = (_cpu_s(process.pid) - cpu) / (rate * window) * 1e3
                     runs.setdefault(name, []).append((rate, cpu_ms, failures, size))
             health = [rate for rate, _, _, _ in runs[cases[0][0]]]
+            health_cpu = statistics.median(c for _, c, _, _ in runs[cases[0][0]])
             for name, measured in runs.items():
                 rates = [rate for rate, _, _, _ in measured]
                 ratios = [rate / h for rate, h in zip(rates, health, strict=True)]
+                cpu_ms = statistics.median(c for _, c, _, _ in measured)
                 failures = sum((f for _, _, f, _ in measured), Counter())
+                # The CPU ratio leaves out the clients, which share the machine and spend
+                # more on a larger answer (its gzip and JSON).
                 print(
                     f"  {name:36s} {statistics.median(rates):8.1f} req/s  "
                     f"{statistics.median(ratios):5.2f}× /health (rounds "
                     f"{' '.join(f'{r:.2f}' for r in ratios)})  server CPU "
-                    f"{statistics.median(c for _, c, _, _ in measured):5.2f} ms/req  answer "
+                    f"{cpu_ms:5.2f} ms/req ({health_cpu / cpu_ms:4.2f}× /health's)  answer "
                     f"{measured[0][3] / 1024:6.1f} KiB  non-2xx {dict(failures) or 0}"
                 )
             print(f"  stored selection row (answer gzip + request): "
