@@ -16,7 +16,7 @@ from typing import Any
 from pydantic import ConfigDict, Field, field_validator
 
 from actuator_selection.core.check_messages import jsonable_params
-from actuator_selection.core.selection import Candidate, Check, Selection, Status, Verdict
+from actuator_selection.core.selection import VALUE_OF, Candidate, Check, Selection
 from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.controllers import DriveOptionOut
@@ -165,10 +165,6 @@ def _number(x: float | None) -> float | None:
     return None if x is None else float(x)
 
 
-_TEXT: dict[Status | Verdict, str] = {e: e.value for e in (*Status, *Verdict)}
-"""Enum values by member: a dict lookup is several times cheaper than ``.value``."""
-
-
 def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
     """``CheckOut.from_core(check, localize).model_dump(mode="json")``, without building the
     model."""
@@ -176,7 +172,7 @@ def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
     margin, utilisation = check.margin_percent, check.utilisation
     return {
         "name": check.name,
-        "status": _TEXT[check.status],
+        "status": VALUE_OF[check.status],
         "value": None if value is None else float(value),
         "limit": None if limit is None else float(limit),
         "unit": check.unit,
@@ -208,7 +204,7 @@ def candidate_body(
         "model": a.model,
         "family": a.family,
         "gear_ratio": float(a.gear_ratio),
-        "verdict": _TEXT[candidate.verdict],
+        "verdict": VALUE_OF[candidate.verdict],
         "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
         "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
         "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
