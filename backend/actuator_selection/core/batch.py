@@ -154,6 +154,9 @@ class CatalogueArrays:
     zone_max_speed: FloatArray
     zone_columns: IndexArray
     rank_position: npt.NDArray[np.int32]
+    lacking: dict[Rule, tuple[CodeArray, BoolArray]] = dataclasses_field(default_factory=dict)
+    """Per rule, where the catalogue misses its requirements (:func:`_lacking`), filled
+    when the rule is first evaluated against these actuators."""
 
 
 def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
@@ -359,13 +362,14 @@ def _zone_limits(
 
 @dataclass(frozen=True, slots=True, eq=False)
 class _RuleArrays:
-    """What :meth:`~actuator_selection.core.checks.Rule.check` reports, for a block."""
+    """What :meth:`~actuator_selection.core.checks.Rule.check` reports, for a block: each
+    array broadcasts to the block's shape (cases × actuators)."""
 
     values: FloatArray
     """The value checked; NaN where unknown (the scalar reports None)."""
     limits: FloatArray
     """The limit; NaN where there is none (no data, or beyond a zone's last speed)."""
-    approximate: BoolArray
+    approximate: BoolArray | np.bool_
     first_missing: CodeArray
     """Index into the rule's requirements of the first one missing; −1 where none is."""
 
@@ -393,60 +397,79 @@ class _Block:
         return worst
 
 
+def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, BoolArray]:
+    """Per actuator, the index of the first of ``rule``'s requirements the catalogue does
+    not meet (−1: none), and whether any requirement after the first is unmet.
+
+    A requirement names catalogue values only (:class:`~actuator_selection.core.checks.
+    Requirement`), so this is a fact about the actuators, computed once per catalogue
+    and rule: six rules' requirements were a fifth of a whole-catalogue selection's
+    vectorised flowchart."""
+    found = cat.lacking.get(rule)
+    if found is not None:
+        return found
+    n = cat.inertia.shape
+    first_missing: CodeArray = np.full(n, -1, dtype=np.int8)
+    others_missing: BoolArray = np.zeros(n, dtype=np.bool_)
+    for k, need in enumerate(rule.requires):
+        lacking = need.missing(q, ARRAY_OPS)
+        assert np.shape(lacking) == n, f"{rule.name}: a requirement names a case's value"
+        first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
+        if k:
+            others_missing = others_missing | lacking
+    found = cat.lacking[rule] = (first_missing, others_missing)
+    return found
+
+
 def _status_codes(
     rule: Rule,
     q: Operands,
-    shape: tuple[int, int],
+    cat: CatalogueArrays,
     *,
     detail: bool = False,
 ) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """The codes of one rule for the block (:meth:`~actuator_selection.core.checks.Rule.check`
     on arrays): no data where a requirement is missing, else pass, fail or warn; the
     overload (:func:`~actuator_selection.core.checks.overload`); with ``detail``, also the
-    value, limit, approximation and missing requirement it reports."""
+    value, limit, approximation and missing requirement it reports. Each array is of the
+    block's shape or broadcasts to it (a column of cases, a row of actuators, a
+    scalar): its readers broadcast, and a whole-catalogue selection spared ~25
+    ``np.broadcast_to`` calls.
+
+    Called with numpy's floating-point errors ignored: NaN where data is missing is
+    masked here."""
     xp = ARRAY_OPS
-    with np.errstate(all="ignore"):  # NaN where data is missing: masked below
-        first_missing: CodeArray = np.full(shape, -1, dtype=np.int8)
-        others_missing: BoolArray = np.zeros(shape, dtype=np.bool_)
-        for k, need in enumerate(rule.requires):
-            lacking = need.missing(q, xp)  # a row or a column: broadcast by the masks
-            first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
-            if k:
-                others_missing = others_missing | lacking
-        value, limit = rule.value(q, xp), rule.limit(q, xp)
-        # numpy's True, not Python's: ~True is −2, which would make the masks integers.
-        within = np.True_ if rule.within is None else rule.within(q, xp)
-        ok = (value <= limit) & within
-        binding = np.True_ if rule.binding is None else rule.binding(q, xp)
-        if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
-            floor = rule.lower_bound(q, xp)
-            floor_fails = (
-                (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
-            )
-            value = np.where(floor_fails, floor, value)
-        missing = first_missing >= 0
-        if rule.lower_bound is not None:
-            missing = missing & ~floor_fails
+    first_missing, others_missing = _lacking(rule, q, cat)  # per actuator
+    value, limit = rule.value(q, xp), rule.limit(q, xp)
+    # numpy's True, not Python's: ~True is −2, which would make the masks integers.
+    within = np.True_ if rule.within is None else rule.within(q, xp)
+    ok = (value <= limit) & within
+    binding = np.True_ if rule.binding is None else rule.binding(q, xp)
+    missing = first_missing >= 0
+    if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
+        floor = rule.lower_bound(q, xp)
+        floor_fails = (
+            (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
+        )
+        value = np.where(floor_fails, floor, value)
+        missing = missing & ~floor_fails
     fail = np.where(binding, _FAIL, _WARN)
     codes = np.where(missing, _NO_DATA, np.where(ok, _PASS, fail))  # cases × actuators
     if rule.lower_bound is not None:
         codes = np.where(floor_fails, _FAIL, codes)
-    with np.errstate(all="ignore"):
-        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
-        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+    no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+    over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
     overload = np.where(codes == _FAIL, over, 0.0)
     if not detail:
         return codes, overload, None
     approximate = (
-        np.zeros(shape, dtype=np.bool_)
-        if rule.approximate is None
-        else rule.approximate(q, xp) & ~missing
+        np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing
     )
     return (
         codes,
         overload,
         _RuleArrays(
-            values=np.broadcast_to(value, shape),
+            values=value,
             limits=np.where(missing, math.nan, limit),
             approximate=approximate,
             first_missing=first_missing,
@@ -518,14 +541,26 @@ def _gains(durations: list[float], tau: float) -> list[float]:
     return [heating_gain(t, tau) for t in durations]
 
 
-def _mean_square(p: PieceArrays, k: int, t0: FloatArray, t1: FloatArray) -> FloatArray:
-    """The mean of T² over piece ``k`` (:meth:`~actuator_selection.core.motion.Profile.
-    thermal_torque_nm`): T_a² where the torque is constant, else (T_a² + T_a·T_b + T_b²)/3."""
-    return np.where(
-        (p.accel_start[:, k] == p.accel_end[:, k])[:, np.newaxis],
-        t0 * t0,
-        (t0 * t0 + t0 * t1 + t1 * t1) / 3.0,
-    )
+def _piece_torques(
+    cat: CatalogueArrays, p: PieceArrays, k: int
+) -> tuple[tuple[FloatArray, ...], FloatArray]:
+    """The torques at the ends of piece ``k``, T = c + (J_A + J)·α (one array where the
+    acceleration is constant along the piece in every case: a trapezoid's pieces), and
+    the mean of T² over the piece (:meth:`~actuator_selection.core.motion.Profile.
+    thermal_torque_nm`): T_a² where the torque is constant, else (T_a² + T_a·T_b + T_b²)/3.
+
+    Where α is constant the end torque equals the start torque (at most the sign of a
+    zero differs), so it is not computed: it could not be of larger magnitude."""
+    col = np.newaxis
+    inertia = cat.inertia + p.inertia[:, k, col]
+    static = p.static[:, k, col]
+    t0 = static + inertia * p.accel_start[:, k, col]
+    constant = p.accel_start[:, k] == p.accel_end[:, k]
+    if constant.all():
+        return (t0,), t0 * t0
+    t1 = static + inertia * p.accel_end[:, k, col]
+    square = np.where(constant[:, col], t0 * t0, (t0 * t0 + t0 * t1 + t1 * t1) / 3.0)
+    return (t0, t1), square
 
 
 def _thermal_torque(
@@ -548,14 +583,7 @@ def _thermal_torque(
     )
     peak = heat = start
     for k in range(p.duration.shape[1]):
-        if squares is None:
-            inertia = cat.inertia + p.inertia[:, k, col]
-            static = p.static[:, k, col]
-            t0 = static + inertia * p.accel_start[:, k, col]
-            t1 = static + inertia * p.accel_end[:, k, col]
-            square = _mean_square(p, k, t0, t1)
-        else:
-            square = squares[k]
+        square = _piece_torques(cat, p, k)[1] if squares is None else squares[k]
         heat = heat + (square - heat) * gains.piece(k)
         peak = np.where(heat > peak, heat, peak)
     return np.sqrt(peak)
@@ -590,33 +618,31 @@ def _evaluate_block(
     constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
         for k in range(p.duration.shape[1]):
-            inertia = cat.inertia + p.inertia[:, k, col]
-            static = p.static[:, k, col]
-            t0 = static + inertia * p.accel_start[:, k, col]
-            t1 = static + inertia * p.accel_end[:, k, col]
-            t = p.duration[:, k, col]
-            energy = energy + np.where(
-                (p.accel_start[:, k] == p.accel_end[:, k])[:, col],
-                t0 * t0 * t,
-                (t0 * t0 + t0 * t1 + t1 * t1) / 3.0 * t,
-            )
-            square = _mean_square(p, k, t0, t1)
+            torques, square = _piece_torques(cat, p, k)
+            # ∫T² dt of the piece: its mean T² times its duration, as the scalar sums it.
+            energy = energy + square * p.duration[:, k, col]
             heat = heat + (square - heat) * gains.piece(k)
             if squares is not None:
                 squares.append(square)
             braking = p.braking[:, k, col]
             steady = p.constant_speed[:, k, col]
-            for torque in (t0, t1):
+            # Which extremes the piece can change (a piece brakes, or not, in every case
+            # of a trapezoid): an update where no case takes part changes nothing.
+            brakes, drives, runs = braking.any(), not braking.all(), steady.any()
+            for torque in torques:
                 magnitude = np.abs(torque)
-                take = braking & (magnitude > decel_abs)
-                decel = np.where(take, torque, decel)
-                decel_abs = np.where(take, magnitude, decel_abs)
-                take = ~braking & (magnitude > accel_abs)
-                accel = np.where(take, torque, accel)
-                accel_abs = np.where(take, magnitude, accel_abs)
-                take = steady & (magnitude > constant_abs)
-                constant = np.where(take, torque, constant)
-                constant_abs = np.where(take, magnitude, constant_abs)
+                if brakes:
+                    take = braking & (magnitude > decel_abs)
+                    decel = np.where(take, torque, decel)
+                    decel_abs = np.where(take, magnitude, decel_abs)
+                if drives:
+                    take = ~braking & (magnitude > accel_abs)
+                    accel = np.where(take, torque, accel)
+                    accel_abs = np.where(take, magnitude, accel_abs)
+                if runs:
+                    take = steady & (magnitude > constant_abs)
+                    constant = np.where(take, torque, constant)
+                    constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
         thermal_torque = _thermal_torque(cat, cases, gains, heat, energy, squares)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
@@ -661,7 +687,8 @@ def _evaluate_block(
         thermal_time_constant_assumed=gains.assumed,
         thermal_torque_nm=thermal_torque,
     )
-    results = [_status_codes(r, q, shape, detail=detail) for r in rules]
+    with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes
+        results = [_status_codes(r, q, cat, detail=detail) for r in rules]
     details = [d for _, _, d in results if d is not None]
     overload = np.zeros(shape)
     for _, over, _ in results:
