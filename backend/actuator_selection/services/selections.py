@@ -115,39 +115,41 @@ def dump_json(data: Any) -> bytes:
     return orjson.dumps(data, option=orjson.OPT_UTC_Z | orjson.OPT_SERIALIZE_NUMPY)
 
 
-def _or_none(column: FloatArray) -> list[float | None]:
-    """The column's floats, None where NaN (unknown)."""
+def _or_none(column: FloatArray) -> Any:
+    """The array's floats as (nested) lists, None where NaN (unknown)."""
     out = column.astype(object)
     out[np.isnan(column)] = None
-    values: list[float | None] = out.tolist()
-    return values
+    return out.tolist()
 
 
 def _checks(ev: BatchEvaluation) -> list[list[JSON]]:
     """Each actuator's checks of the (single) case in ``ev``, as the answer lists them:
     what :meth:`~actuator_selection.core.checks.Rule.check` reports, less its words.
 
-    Built check by check from the arrays' columns (NaN → None in numpy), then turned
-    into one list per actuator: a whole catalogue of 6,400 actuators in a few ms.
+    Built from the case's actuator × check arrays turned into lists at once (NaN → None
+    in numpy): a whole catalogue of 6,400 actuators in a few ms.
     """
-    statuses = ev.statuses[0]
-    values, limits = ev.values[0], ev.limits[0]
-    status_names = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
-    columns = []
-    for k, name in enumerate(ev.check_names):
-        value, limit = _or_none(values[:, k]), _or_none(limits[:, k])
-        status = status_names[statuses[:, k]].tolist()
-        column: list[JSON] = [
+    names = ev.check_names
+    statuses = _STATUS_NAMES[ev.statuses[0]].tolist()
+    values, limits = _or_none(ev.values[0]), _or_none(ev.limits[0])
+    rows: list[list[JSON]] = [
+        [
             {"name": name, "status": st, "value": v, "limit": li}
-            for st, v, li in zip(status, value, limit, strict=True)
+            for name, st, v, li in zip(names, status, value, limit, strict=True)
         ]
-        for j in np.nonzero(ev.approximate[0, :, k])[0].tolist():
-            column[j]["approximate"] = True
-        missing = ev.first_missing[0, :, k]
-        for j in np.nonzero(missing >= 0)[0].tolist():
-            column[j]["missing"] = ev.missing_what[k][missing[j]]
-        columns.append(column)
-    return [list(row) for row in zip(*columns, strict=True)]
+        for status, value, limit in zip(statuses, values, limits, strict=True)
+    ]
+    for j, k in zip(*np.nonzero(ev.approximate[0]), strict=True):
+        rows[j][k]["approximate"] = True
+    missing = ev.first_missing[0]
+    for j, k in zip(*np.nonzero(missing >= 0), strict=True):
+        rows[j][k]["missing"] = ev.missing_what[k][missing[j, k]]
+    return rows
+
+
+_STATUS_NAMES = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
+"""The API's status names by status code (:data:`~actuator_selection.core.batch.
+STATUS_BY_CODE`)."""
 
 
 class _DriveOptionGroups:
@@ -162,13 +164,16 @@ class _DriveOptionGroups:
         self._catalogue = catalogue
         self._numbers: dict[int, int] = {}
         """Index into the snapshot's controllers → index into the answer's."""
+        self._lists: dict[tuple[tuple[int, int], ...], list[int]] = {}
+        """A group's controllers (:attr:`MatchGroup.controllers`) → their numbers: the
+        actuators of one interface share their groups."""
 
     def groups(self, actuator: Actuator, speed_rpm: float) -> list[JSON]:
         """``actuator``'s drive options at n_2 = ``speed_rpm``, best first."""
         interface = self._catalogue.interfaces[actuator.model]
         voltages: dict[tuple[DcBusClass, ...], JSON] = {}
         merged: dict[tuple[Any, ...], JSON] = {}
-        places: dict[tuple[Any, ...], list[tuple[int, int]]] = {}
+        places: dict[tuple[Any, ...], tuple[tuple[int, int], ...]] = {}
         for g in self._catalogue.match_groups(interface):
             voltage = voltages.get(g.shared)
             if voltage is None:
@@ -188,10 +193,11 @@ class _DriveOptionGroups:
             key = (g.level, g.missing, *voltage.values())
             if key not in merged:
                 merged[key] = {"level": g.level, "missing": list(g.missing), "voltage": voltage}
-                places[key] = []
-            places[key].extend(g.controllers)
-        for key, group in merged.items():  # merged groups: best first again
-            group["controllers"] = [self._number(i) for _, i in sorted(places[key])]
+                places[key] = g.controllers
+            else:  # merged groups: best first again
+                places[key] = tuple(sorted((*places[key], *g.controllers)))
+        for key, group in merged.items():
+            group["controllers"] = self._numbered(places[key])
         return list(merged.values())
 
     def refs(self) -> list[JSON]:
@@ -207,11 +213,16 @@ class _DriveOptionGroups:
             for c in (rows[i] for i in self._numbers)
         ]
 
-    def _number(self, index: int) -> int:
-        number = self._numbers.get(index)
-        if number is None:
-            number = self._numbers[index] = len(self._numbers)
-        return number
+    def _numbered(self, controllers: tuple[tuple[int, int], ...]) -> list[int]:
+        """The answer's numbers of ``controllers`` (place, index), numbering those not
+        numbered yet in the order they come."""
+        found = self._lists.get(controllers)
+        if found is None:
+            numbers = self._numbers
+            found = self._lists[controllers] = [
+                numbers.setdefault(i, len(numbers)) for _, i in controllers
+            ]
+        return found
 
 
 SCALAR_UP_TO = 24
