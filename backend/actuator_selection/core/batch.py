@@ -1060,18 +1060,24 @@ def _detail(
         return picked
 
     operands = list(map(Operands._make, zip(*map(cells, block.operands), strict=True)))
+    codes = [np.broadcast_to(c, shape)[rows, columns] for c in block.statuses]
+    not_passing: list[list[int]] = [[] for _ in range(rows.size)]
+    failing, cells_failing = np.nonzero(np.array(codes).reshape(len(codes), rows.size) != _PASS)
+    for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
+        not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
     decided = _Decided(
         rules,
         [
             (
-                cells(codes),
+                rule_codes.tolist(),
                 cells(d.values),
                 cells(d.limits),
                 cells(d.approximate),
                 cells(d.first_missing),
             )
-            for codes, d in zip(block.statuses, block.details, strict=True)
+            for rule_codes, d in zip(codes, block.details, strict=True)
         ],
+        not_passing,
     )
     torques = zip(
         cells(block.accel_torque),
@@ -1124,6 +1130,8 @@ class _Decided:
 
     rules: Sequence[Rule]
     columns: list[Column]
+    not_passing: list[list[int]]
+    """Per cell, the indexes of the rules that do not pass, in order."""
 
     def check(self, k: int, q: Operands, cell: int) -> Check:
         """Rule ``k``'s check of ``cell`` (its operands ``q``), its words deferred."""
@@ -1139,9 +1147,22 @@ class _Decided:
             defer=True,
         )
 
-    def passes(self, k: int, cell: int) -> bool:
-        """Whether rule ``k`` passes for ``cell``."""
-        return STATUS_BY_CODE[self.columns[k][0][cell]] is Status.PASS
+    def reasons(self, q: Operands, cell: int) -> list[str]:
+        """The words of the rules that do not pass for ``cell`` (its operands ``q``)."""
+        out = []
+        for k in self.not_passing[cell]:
+            codes, values, limits, _, missing = self.columns[k]
+            first = missing[cell]
+            out.append(
+                self.rules[k].words(
+                    q,
+                    STATUS_BY_CODE[codes[cell]],
+                    values[cell],
+                    limits[cell],
+                    None if first < 0 else first,
+                )
+            )
+        return out
 
 
 class _DecidedChecks(DeferredChecks):
@@ -1157,9 +1178,8 @@ class _DecidedChecks(DeferredChecks):
         d, q, cell = self._decided, self._q, self._cell
         return tuple([d.check(k, q, cell) for k in range(len(d.rules))])
 
-    def not_passing(self) -> list[Check]:
-        d, q, cell = self._decided, self._q, self._cell
-        return [d.check(k, q, cell) for k in range(len(d.rules)) if not d.passes(k, cell)]
+    def reasons(self) -> list[str]:
+        return self._decided.reasons(self._q, self._cell)
 
 
 def _cycle_torques(

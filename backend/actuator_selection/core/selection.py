@@ -223,7 +223,7 @@ class Candidate:
         once (``continuous_duty`` and ``thermal_peak`` lack the same catalogue value)."""
         held = _CHECKS.__get__(self, Candidate)
         if isinstance(held, DeferredChecks):  # a batch's candidate, checks unread: these alone
-            return tuple(dict.fromkeys(c.message for c in held.not_passing()))
+            return tuple(dict.fromkeys(held.reasons()))
         return tuple(dict.fromkeys(c.message for c in self.checks if c.status is not Status.PASS))
 
     @property
