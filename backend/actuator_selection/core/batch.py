@@ -448,9 +448,7 @@ def _status_codes(
     missing = first_missing >= 0
     if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
         floor = rule.lower_bound(q, xp)
-        floor_fails = (
-            (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
-        )
+        floor_fails = (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
         value = np.where(floor_fails, floor, value)
         missing = missing & ~floor_fails
     fail = np.where(binding, _FAIL, _WARN)
@@ -462,9 +460,7 @@ def _status_codes(
     overload = np.where(codes == _FAIL, over, 0.0)
     if not detail:
         return codes, overload, None
-    approximate = (
-        np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing
-    )
+    approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing
     return (
         codes,
         overload,
