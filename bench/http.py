@@ -15,6 +15,8 @@ master's only), and every answer that was not 2xx (there should be none).
 from __future__ import annotations
 
 import argparse
+import gzip
+import json
 import os
 import socket
 import statistics
@@ -31,12 +33,14 @@ from pathlib import Path
 from typing import Any
 
 import httpx
+import orjson
 from sqlalchemy import create_engine, text
 from sqlalchemy.engine import make_url
 
 from actuator_selection.config import REPO_ROOT
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.db.engine import normalise_url
+from actuator_selection.main import GZIP_LEVEL
 from bench.reference import agreement, numpy_reference
 from bench.selection import http_case, random_cases, starter_catalogue
 
@@ -139,26 +143,52 @@ def _batch(base: str, pid: int, n: int, actuators: list[Actuator], checks: bool)
     """One batch of ``n`` random cases (top 3): time, answer size, the server's peak RSS,
     and the time of the numpy reference for the same cases, measured right after."""
     apps = random_cases(n)
-    cases = [http_case(app) for app in apps]
+    body = {"cases": [http_case(app) for app in apps], "top": 3, "include_checks": checks}
     before = _peak_rss_mb(pid)
     started = time.monotonic()
-    response = httpx.post(
-        f"{base}/api/v1/selections/batch",
-        json={"cases": cases, "top": 3, "include_checks": checks},
-        timeout=600,
-    )
+    response = httpx.post(f"{base}/api/v1/selections/batch", json=body, timeout=600)
     elapsed = time.monotonic() - started
     reference_s = min(_timed(lambda: numpy_reference(actuators, apps, 3)) for _ in range(3))
-    service = [[c["model"] for c in r["candidates"]] for r in response.json()["results"]]
+    answer = response.json()
+    service = [[c["model"] for c in r["candidates"]] for r in answer["results"]]
     same = agreement(actuators, numpy_reference(actuators, apps, 3), service)
+    floor_s = _json_and_gzip_s(body, answer, gzipped=response.headers.get("content-encoding"))
     print(
         f"  POST /selections/batch, {n} cases, checks {'yes' if checks else 'no '}  "
         f"{elapsed:6.2f} s  HTTP {response.status_code}  answer "
         f"{len(response.content) / 1e6:5.1f} MB  server peak RSS {before:.0f} → "
         f"{_peak_rss_mb(pid):.0f} MB\n"
         f"    numpy reference {reference_s * 1e3:6.1f} ms (same top 3 in {same:.1%} of cases): "
-        f"the request takes {elapsed / reference_s:4.1f}× the reference"
+        f"the request takes {elapsed / reference_s:4.1f}× the reference\n"
+        f"    the request's and the answer's JSON and gzip alone {floor_s * 1e3:6.1f} ms: "
+        f"{floor_s / reference_s:4.1f}× the reference"
     )
+
+
+def _httpx_json(body: Any) -> bytes:
+    """The request's body as httpx writes ``json=`` (httpx._content.encode_json)."""
+    return json.dumps(body, ensure_ascii=False, separators=(",", ":"), allow_nan=False).encode()
+
+
+def _json_and_gzip_s(body: dict[str, Any], answer: Any, *, gzipped: str | None) -> float:
+    """What moving this request and answer costs before any engineering, best of 3 [s]:
+    the client writing the request (httpx's encoder), the framework parsing it (FastAPI
+    parses with the standard library), the answer written (orjson, as the service
+    writes it) and, where it came gzip-compressed, compressed at the service's level
+    and decompressed by the client. A floor for this contract over HTTP in Python."""
+    encoded = _httpx_json(body)
+    written = orjson.dumps(answer)
+    compressed = gzip.compress(written, GZIP_LEVEL) if gzipped == "gzip" else None
+
+    def moved() -> None:
+        _httpx_json(body)
+        json.loads(encoded)
+        orjson.dumps(answer)
+        if compressed is not None:
+            gzip.compress(written, GZIP_LEVEL)
+            gzip.decompress(compressed)
+
+    return min(_timed(moved) for _ in range(3))
 
 
 def _timed(run: Callable[[], object]) -> float:
