@@ -1055,7 +1055,6 @@ def _detail(
         picked: list[Any] = np.broadcast_to(array, shape)[rows, columns].tolist()
         return picked
 
-    operands = list(map(Operands._make, zip(*map(cells, block.operands), strict=True)))
     codes = [np.broadcast_to(c, shape)[rows, columns] for c in block.statuses]
     not_passing: list[list[int]] = [[] for _ in range(rows.size)]
     failing, cells_failing = np.nonzero(np.array(codes).reshape(len(codes), rows.size) != _PASS)
@@ -1074,6 +1073,7 @@ def _detail(
             for rule_codes, d in zip(codes, block.details, strict=True)
         ],
         not_passing,
+        [cells(operand) for operand in block.operands],
     )
     torques = zip(
         cells(block.accel_torque),
@@ -1084,8 +1084,8 @@ def _detail(
     )
     verdicts = cells(ranked.verdicts)
     out = []
-    for cell, (row, column, q, verdict, cell_torques) in enumerate(
-        zip(rows.tolist(), columns.tolist(), operands, verdicts, torques, strict=True)
+    for cell, (row, column, verdict, cell_torques) in enumerate(
+        zip(rows.tolist(), columns.tolist(), verdicts, torques, strict=True)
     ):
         actuator = actuators[column]
         out.append(
@@ -1093,7 +1093,7 @@ def _detail(
                 actuator=actuator,
                 verdict=VERDICT_BY_CODE[verdict],
                 torques=_cycle_torques(actuator, profiles[row], *cell_torques),
-                checks=_DecidedChecks(decided, q, cell),  # type: ignore[arg-type]
+                checks=_DecidedChecks(decided, cell),  # type: ignore[arg-type]
             )
         )
     return out
@@ -1128,6 +1128,13 @@ class _Decided:
     columns: list[Column]
     not_passing: list[list[int]]
     """Per cell, the indexes of the rules that do not pass, in order."""
+    operands: list[list[Any]]
+    """Each of :class:`Operands`' fields, cell by cell, as floats (or truths)."""
+
+    def operands_of(self, cell: int) -> Operands:
+        """What the rules computed from for ``cell``: needed only to word a check, so
+        built only for a candidate whose checks or reasons are read."""
+        return Operands._make([field[cell] for field in self.operands])
 
     def check(self, k: int, q: Operands, cell: int) -> Check:
         """Rule ``k``'s check of ``cell`` (its operands ``q``), its words deferred."""
@@ -1165,17 +1172,21 @@ class _DecidedChecks(DeferredChecks):
     """One candidate's checks as the arrays decided them, each built by the rule's
     :meth:`~actuator_selection.core.checks.Rule.report` when first read."""
 
-    __slots__ = ("_cell", "_decided", "_q")
+    __slots__ = ("_cell", "_decided")
 
-    def __init__(self, decided: _Decided, q: Operands, cell: int) -> None:
-        self._decided, self._q, self._cell = decided, q, cell
+    def __init__(self, decided: _Decided, cell: int) -> None:
+        self._decided, self._cell = decided, cell
 
     def resolve(self) -> tuple[Check, ...]:
-        d, q, cell = self._decided, self._q, self._cell
+        d, cell = self._decided, self._cell
+        q = d.operands_of(cell)
         return tuple([d.check(k, q, cell) for k in range(len(d.rules))])
 
     def reasons(self) -> list[str]:
-        return self._decided.reasons(self._q, self._cell)
+        d, cell = self._decided, self._cell
+        if not d.not_passing[cell]:
+            return []
+        return d.reasons(d.operands_of(cell), cell)
 
 
 def _cycle_torques(
