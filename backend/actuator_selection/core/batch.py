@@ -270,6 +270,8 @@ class _Cases:
 
     def rows(self, start: int, stop: int) -> _Cases:
         """The cases ``start:stop``."""
+        if start == 0 and stop >= self.size:
+            return self
         p, f = self.pieces, self.figures
         return _Cases(
             pieces=PieceArrays(**{x.name: getattr(p, x.name)[start:stop] for x in fields(p)}),
@@ -443,7 +445,7 @@ def _status_codes(
     value, limit = rule.value(q, xp), rule.limit(q, xp)
     # numpy's True, not Python's: ~True is −2, which would make the masks integers.
     within = np.True_ if rule.within is None else rule.within(q, xp)
-    ok = (value <= limit) & within
+    ok = value <= limit if rule.within is None else (value <= limit) & within
     binding = np.True_ if rule.binding is None else rule.binding(q, xp)
     missing = first_missing >= 0
     if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
@@ -451,7 +453,7 @@ def _status_codes(
         floor_fails = (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
         value = np.where(floor_fails, floor, value)
         missing = missing & ~floor_fails
-    fail = np.where(binding, _FAIL, _WARN)
+    fail = _FAIL if rule.binding is None else np.where(binding, _FAIL, _WARN)
     codes = np.where(missing, _NO_DATA, np.where(ok, _PASS, fail))  # cases × actuators
     if rule.lower_bound is not None:
         codes = np.where(floor_fails, _FAIL, codes)
