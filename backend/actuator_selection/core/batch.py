@@ -1139,7 +1139,8 @@ class _Decided:
         return Operands._make([field[cell] for field in self.operands])
 
     def check(self, k: int, q: Operands, cell: int) -> Check:
-        """Rule ``k``'s check of ``cell`` (its operands ``q``), its words deferred."""
+        """Rule ``k``'s check of ``cell`` (its operands ``q``), with its words: a batch
+        candidate's checks are built only to be listed in words (``include_checks``)."""
         codes, values, limits, approximate, missing = self.columns[k]
         first = missing[cell]
         return self.rules[k].report(
@@ -1149,7 +1150,6 @@ class _Decided:
             limits[cell],
             approximate[cell],
             None if first < 0 else first,
-            defer=True,
         )
 
     def reasons(self, q: Operands, cell: int) -> list[str]:
