@@ -118,30 +118,27 @@ class Check:
 
 
 class _Words(Deferred):
-    """A check's message not written yet: :meth:`Rule.report` with ``defer``.
-
-    The vectorised flowchart details thousands of candidates, and writing the words of
-    every check is most of that work; an answer without the checks shows only those
-    that do not pass (:attr:`~actuator_selection.core.selection.Candidate.reasons`).
+    """A check's message not written yet (:meth:`Rule.report` with ``defer``): the
+    scalar flowchart's checks (:meth:`Rule.check`) are listed as numbers by a
+    selection's answer, which never reads their words; a candidate's detail does.
     """
 
-    __slots__ = ("_floor", "_limit", "_q", "_rule", "_status", "_value")
+    __slots__ = ("_limit", "_missing", "_q", "_rule", "_status", "_value")
 
     def __init__(
-        self, rule: Rule, q: Operands, status: Status, value: float, limit: float, floor: bool
+        self,
+        rule: Rule,
+        q: Operands,
+        status: Status,
+        value: float,
+        limit: float,
+        missing: int | None,
     ) -> None:
         self._rule, self._q, self._status = rule, q, status
-        self._value, self._limit, self._floor = value, limit, floor
+        self._value, self._limit, self._missing = value, limit, missing
 
     def resolve(self) -> str:
-        return _written(
-            self._rule.message(self._q, self._status, self._value, self._limit), self._floor
-        )
-
-
-def _written(message: str, floor: bool) -> str:
-    """A rule's message, as a failure for every J_A where ``floor``."""
-    return _floor_message(message) if floor else message
+        return self._rule.words(self._q, self._status, self._value, self._limit, self._missing)
 
 
 defer_field(Check, "message")
@@ -531,7 +528,7 @@ class Rule:
     ) -> Check:
         """The check with its words, from a decision already taken: by :meth:`check`, or
         by the vectorised flowchart for the candidates it details (with ``defer``: the
-        words written when first read).
+        words, :meth:`words`, written when first read).
 
         ``value`` and ``limit`` as the rule computed them (NaN where unknown or beyond a
         zone's last speed); ``missing``: the index into :attr:`requires` of the first
@@ -545,10 +542,10 @@ class Rule:
             return _new_check(
                 self.name, status, known, None, self.unit, self.reference, no_data, False, what
             )
-        floor = missing is not None  # failed for every J_A: at its least, without J_A
+        # failed for every J_A: at its least, without J_A
         lacking = self._no_data[missing][3] if missing is not None else None
         message: Any = (
-            _Words(self, q, status, value, limit, floor)
+            _Words(self, q, status, value, limit, missing)
             if defer
             else self.words(q, status, value, limit, missing)
         )
@@ -573,7 +570,9 @@ class Rule:
         if status is Status.NO_DATA:
             assert missing is not None
             return self._no_data[missing][2]
-        return _written(self.message(q, status, value, limit), missing is not None)
+        message = self.message(q, status, value, limit)
+        # A failure at the least value for every J_A (lower_bound) names its missing J_A.
+        return message if missing is None else _floor_message(message)
 
     def _others_met(self, q: Operands) -> bool:
         """Whether every requirement but the first is met (floats)."""
