@@ -526,9 +526,9 @@ class Rule:
         *,
         defer: bool = False,
     ) -> Check:
-        """The check with its words, from a decision already taken: by :meth:`check`, or
-        by the vectorised flowchart for the candidates it details (with ``defer``: the
-        words, :meth:`words`, written when first read).
+        """The check with its words (:meth:`words`), from a decision already taken: by
+        :meth:`check` (with ``defer``: the words written when first read), or by the
+        vectorised flowchart for the candidates whose checks a batch lists.
 
         ``value`` and ``limit`` as the rule computed them (NaN where unknown or beyond a
         zone's last speed); ``missing``: the index into :attr:`requires` of the first
