@@ -76,6 +76,7 @@ from actuator_selection.core.motion import (
     PieceArrays,
     Profile,
     cycle_figures,
+    figure_rows,
     figures_of,
     heating_gain,
     piece_arrays,
@@ -1017,8 +1018,10 @@ def select_batch(
         rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
         cases = apps[ranked.start : ranked.start + order.shape[0]]
         profiles = [
-            profile_from(_CycleOf(app), app.axis_load, figures, r, float(holding[r]))
-            for r, app in enumerate(cases)
+            profile_from(_CycleOf(app), app.axis_load, row_figures, row_holding)
+            for app, row_figures, row_holding in zip(
+                cases, figure_rows(figures), holding.tolist(), strict=True
+            )
         ]
         detailed = iter(_detail(actuators, rules, ranked, rows, order[kept], profiles))
         for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):

@@ -721,14 +721,18 @@ def profile_of(motion: Motion) -> Profile:
 
 
 def profile_from(
-    motion: Motion | Deferred, load: AxisLoad, figures: CycleFigures, row: int, holding: float
+    motion: Motion | Deferred, load: AxisLoad, figures: tuple[float, ...], holding: float
 ) -> Profile:
     """The :class:`Profile` of ``motion`` (or of a :class:`Deferred` that builds it when it
     is first read: the same object for the motion and the pieces, so it should keep what
-    it built) with its axis load and its figures taken from row ``row`` of arrays
+    it built) with its axis load and its figures, a row of :func:`figure_rows` of arrays
     computed for many cycles at once."""
-    row_figures = tuple(float(getattr(figures, name)[row]) for name in _FIGURE_NAMES)
-    return _profile(motion, load, _PiecesOf(motion), row_figures, holding)
+    return _profile(motion, load, _PiecesOf(motion), figures, holding)
+
+
+def figure_rows(figures: CycleFigures) -> list[tuple[float, ...]]:
+    """Each cycle's figures of ``figures`` as floats, for :func:`profile_from`."""
+    return list(zip(*(getattr(figures, name).tolist() for name in _FIGURE_NAMES), strict=True))
 
 
 _FIGURE_NAMES = tuple(f.name for f in fields(CycleFigures))
