@@ -34,6 +34,12 @@ def test_nul_in_the_url(api: SalesApi, path: str, loc: list[str]) -> None:
     ("method", "path", "body", "loc"),
     [
         ("post", "/api/v1/selections", {**WORKED_EXAMPLE, "models": ["FHA\x00"]}, ["models"]),
+        (
+            "post",
+            "/api/v1/selections/batch",
+            {"cases": [WORKED_EXAMPLE, {**WORKED_EXAMPLE, "models": ["FHA\x00"]}]},
+            ["cases", 1, "models"],
+        ),
         ("post", "/api/v1/actuators", {**NEW, "notes": "a\x00b"}, ["notes"]),
         (
             "post",

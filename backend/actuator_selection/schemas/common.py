@@ -110,8 +110,9 @@ _NO_TEXT: frozenset[object] = frozenset({float, int, bool, type(None)})
 
 def _may_hold_text(annotation: object) -> bool:
     """False where every value of ``annotation`` is a number, a flag, None, a literal or
-    enumeration of ours, or a strict model (which runs the text rule on its own fields);
-    True for anything else (text, lists, mappings, any other type: checked)."""
+    enumeration of ours, a strict model (which runs the text rule on its own fields), or
+    a container of such only; True for anything else (text, containers that may hold
+    it, any other type: checked)."""
     if annotation in _NO_TEXT:
         return False
     if isinstance(annotation, type) and issubclass(annotation, StrictModel | Enum):
@@ -123,7 +124,14 @@ def _may_hold_text(annotation: object) -> bool:
         return _may_hold_text(get_args(annotation)[0])
     if origin is Union or origin is UnionType:
         return any(_may_hold_text(a) for a in get_args(annotation))
+    if origin in _CONTAINERS and get_args(annotation):
+        # a list of load cases holds no text of its own: each case checks its fields
+        return any(_may_hold_text(a) for a in get_args(annotation) if a is not Ellipsis)
     return True
+
+
+_CONTAINERS: frozenset[object] = frozenset({list, tuple, set, frozenset, dict})
+"""Containers whose items' types say whether they may hold text (a dict's keys too)."""
 
 
 class ResponseModel(BaseModel):
