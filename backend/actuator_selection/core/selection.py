@@ -97,6 +97,16 @@ VALUE_OF: dict[Status | Verdict, str] = {e: e.value for e in (*Status, *Verdict)
 is several times cheaper than an enum's ``.value``."""
 
 
+def require_time_constant(tau: float | None) -> None:
+    """Refuse a thermal time constant τ_th (:attr:`Application.thermal_time_constant_s`)
+    that is not a finite number > 0."""
+    if tau is not None and not (math.isfinite(tau) and tau > 0):
+        raise InvalidInputError(
+            "thermal_time_constant_s",
+            f"must be a finite number > 0: τ_th divides the time in the thermal model, got {tau!r}",
+        )
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Application:
     """The load case: the motion (a cycle of segments driving an axis load, or the
@@ -125,13 +135,7 @@ class Application:
             raise InvalidInputError(
                 "cycle", "give segments or the t_1…t_p pattern with its load, not both"
             )
-        tau = self.thermal_time_constant_s
-        if tau is not None and not (math.isfinite(tau) and tau > 0):
-            raise InvalidInputError(
-                "thermal_time_constant_s",
-                f"must be a finite number > 0: τ_th divides the time in the thermal model, "
-                f"got {tau!r}",
-            )
+        require_time_constant(self.thermal_time_constant_s)
 
     @property
     def cycle(self) -> Motion:
