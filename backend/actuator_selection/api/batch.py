@@ -25,11 +25,18 @@ from actuator_selection.api.errors import (
     service_error,
 )
 from actuator_selection.api.messages import localizer
+from actuator_selection.api.selections import refuse_unknown_models
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.selection import Application
 from actuator_selection.schemas.batch import BatchSelectionOut, BatchSelectionRequest
+from actuator_selection.schemas.batch_columns import BatchColumnsOut, BatchColumnsRequest
 from actuator_selection.schemas.selections import RANKING_RULE
-from actuator_selection.services.batch import check_limits, size_batch
+from actuator_selection.services.batch import (
+    check_columns,
+    check_limits,
+    size_batch,
+    size_columns,
+)
 
 router = APIRouter(tags=["selections"])
 
@@ -95,5 +102,38 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
         answer,
         media_type="application/json",
         status_code=201 if body.store else 200,
+        headers={"Content-Language": language, "Vary": "Accept-Language"},
+    )
+
+
+@router.post(
+    "/selections/batch/columns",
+    response_model=BatchColumnsOut,
+    responses={
+        422: {
+            "description": "a value outside its rule (`loc` names the column and the case's "
+            "index), columns of unequal lengths, or a limit exceeded"
+        }
+    },
+    description="The batch for a table of load cases in the chapter's shorthand: each "
+    "figure of Table 516.1 as a column (case i is the i-th value of every column), the "
+    "best `top` candidates of each case answered as a table (a row per candidate, "
+    "`candidates.case` naming its case) with each check as a column and each model's "
+    "controller summary once. The numbers are the per-case batch's, bit for bit. "
+    f"Ranking: {RANKING_RULE}. Nothing is stored.",
+)
+@reads_only
+def create_batch_columns(
+    body: BatchColumnsRequest, request: Request, session: SessionDep
+) -> Response:
+    """Size a table of load cases against the catalogue."""
+    check_columns(body)
+    catalogue = catalogue_snapshot(request, session)
+    refuse_unknown_models(body.models, catalogue)
+    language = language_of(request.scope)
+    answer = size_columns(body, catalogue=catalogue, localize=localizer(language))
+    return Response(
+        answer,
+        media_type="application/json",
         headers={"Content-Language": language, "Vary": "Accept-Language"},
     )

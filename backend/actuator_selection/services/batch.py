@@ -14,10 +14,19 @@ from collections.abc import Iterator, Sequence
 from datetime import UTC, datetime
 from typing import Any
 
+import numpy as np
 import pydantic_core
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import select_batch
+from actuator_selection.core.batch import (
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    CheckTable,
+    RankedTable,
+    TrapezoidColumns,
+    rank_columns,
+    select_batch,
+)
 from actuator_selection.core.checks import Rule
 from actuator_selection.core.selection import Application, Selection
 from actuator_selection.schemas.batch import (
@@ -29,6 +38,7 @@ from actuator_selection.schemas.batch import (
     controllers_summary,
     result_body,
 )
+from actuator_selection.schemas.batch_columns import BatchColumnsRequest
 from actuator_selection.schemas.checks import Localize
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
 from actuator_selection.schemas.selections import RANKING_RULE
@@ -259,3 +269,141 @@ def _result_chunks(
             for id_, selection in zip(ids[start:end], selections, strict=True)
         ]
         yield (b"," if start else b"") + b",".join(results)
+
+
+_COLUMNS = ("torque_nm", "inertia_kgm2", "accel_s", "constant_s", "decel_s", "pause_s")
+"""The columns that must be as long as ``speed_rpm``."""
+
+
+def check_columns(body: BatchColumnsRequest) -> None:
+    """Refuse columns of unequal lengths, or more candidates than a batch answers (422)."""
+    n = len(body.speed_rpm)
+    lengths = {name: len(getattr(body, name)) for name in _COLUMNS}
+    if isinstance(body.high_dynamics, list):
+        lengths["high_dynamics"] = len(body.high_dynamics)
+    errors = [
+        entry(
+            ["body", name],
+            f"needs one value per load case: {n}, as many as speed_rpm has, got {length}",
+            "length_mismatch",
+        )
+        for name, length in lengths.items()
+        if length != n
+    ]
+    if n * body.top > MAX_BATCH_CANDIDATES:
+        errors.append(
+            entry(
+                ["body", "top"],
+                f"cases × top must be ≤ {MAX_BATCH_CANDIDATES}, got {n} × {body.top}: "
+                "ask for fewer candidates or send fewer cases",
+                "too_many_candidates",
+            )
+        )
+    if errors:
+        raise UseCaseError(errors)
+
+
+def size_columns(
+    body: BatchColumnsRequest, *, catalogue: CatalogueSnapshot, localize: Localize
+) -> bytes:
+    """The answer to ``body`` (within :func:`check_columns`) as JSON: the vectorised
+    flowchart's table (``core.batch.rank_columns``) written as it is, arrays as JSON
+    arrays, with a word only in each model's controller note."""
+    n = len(body.speed_rpm)
+    columns = TrapezoidColumns(
+        **{
+            name: np.array(getattr(body, name), dtype=np.float64)
+            for name in ("speed_rpm", *_COLUMNS)
+        },
+        high_dynamics=np.broadcast_to(np.array(body.high_dynamics, dtype=np.bool_), (n,)),
+        thermal_time_constant_s=body.thermal_time_constant_s,
+    )
+    actuators = tuple(catalogue.actuators_of(body.models))
+    table = rank_columns(
+        actuators,
+        columns,
+        top=body.top,
+        checks=body.include_checks,
+        arrays=catalogue.arrays(actuators),
+    )
+    models = np.array([a.model for a in actuators], dtype=object)
+    return dump_json(
+        {
+            "catalogue_version": catalogue.version,
+            "ranking": RANKING_RULE,
+            "cases": {
+                "cycle_time_s": table.cycle_time_s,
+                "mean_speed_rpm": table.mean_speed_rpm,
+                "duty_cycle_percent": table.duty_cycle_percent,
+            },
+            "candidates": {
+                "case": table.case,
+                "model": models[table.actuator].tolist(),
+                "verdict": _VERDICT_NAMES[table.verdicts].tolist(),
+                "accel_torque_nm": table.accel_torque_nm,
+                "constant_torque_nm": table.constant_torque_nm,
+                "decel_torque_nm": table.decel_torque_nm,
+                "rms_torque_nm": table.rms_torque_nm,
+            },
+            "checks": None if table.checks is None else _check_columns(table.checks),
+            "models": _model_columns(
+                table, columns, actuators, _Drives(DriveContext(catalogue), localize)
+            ),
+        }
+    )
+
+
+_VERDICT_NAMES = np.array([v.value for v in VERDICT_BY_CODE], dtype=object)
+_STATUS_NAMES = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
+
+
+def _check_columns(table: CheckTable) -> list[dict[str, Any]]:
+    """``checks``: each rule's column of the table, as a single selection's check briefs
+    give them (NaN is null: no value, or no limit)."""
+    out = []
+    for k, rule in enumerate(table.rules):
+        # first_missing + 1 indexes (nothing, what the first requirement needs, …)
+        what = np.array([None, *(need.what for need in rule.requires)], dtype=object)
+        out.append(
+            {
+                "name": rule.name,
+                "reference": rule.reference,
+                "unit": rule.unit,
+                "status": _STATUS_NAMES[table.statuses[k]].tolist(),
+                "value": table.values[k],
+                "limit": table.limits[k],
+                "approximate": table.approximate[k],
+                "missing": what[table.first_missing[k] + 1].tolist(),
+            }
+        )
+    return out
+
+
+def _model_columns(
+    table: RankedTable,
+    columns: TrapezoidColumns,
+    actuators: Sequence[Actuator],
+    drives: _Drives,
+) -> dict[str, list[Any]]:
+    """``models``: each actuator the candidates name, in catalogue order, with what the
+    per-case batch repeats on every candidate of it."""
+    named, first = np.unique(table.actuator, return_index=True)
+    speeds = columns.speed_rpm[table.case[first]].tolist()
+    rows = [
+        (actuators[j], drives.summary(actuators[j], speed))
+        for j, speed in zip(named.tolist(), speeds, strict=True)
+    ]
+    return {
+        "model": [a.model for a, _ in rows],
+        "family": [a.family for a, _ in rows],
+        "gear_ratio": [float(a.gear_ratio) for a, _ in rows],
+        **{key: [summary[key] for _, summary in rows] for key in _SUMMARY_KEYS},
+    }
+
+
+_SUMMARY_KEYS = (
+    "controllers_excluded",
+    "controllers_note",
+    "controllers_note_code",
+    "controllers_note_params",
+)
