@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import random
 from typing import Any
 
@@ -217,6 +218,15 @@ def test_malformed_bodies_are_422(client: TestClient, raw: str) -> None:
     response = client.post(URL, content=raw, headers={"content-type": "application/json"})
     assert response.status_code == 422, response.text
     assert all({"loc", "msg", "type"} <= set(e) for e in response.json()["detail"])
+
+
+def test_nan_is_not_json(client: TestClient) -> None:
+    """The batch routes parse with orjson, which reads JSON only: NaN is a decode error
+    (the standard library would read it as a number for validation to refuse)."""
+    raw = json.dumps({**COLUMNS_EXAMPLE, "speed_rpm": [math.nan, 40]})
+    for url, body in ((URL, raw), (f"{API_PREFIX}/selections/batch", '{"cases": [NaN]}')):
+        response = client.post(url, content=body, headers={"content-type": "application/json"})
+        assert [e["type"] for e in response.json()["detail"]] == ["json_invalid"], url
 
 
 def test_openapi_documents_the_columns_contract(client: TestClient) -> None:
