@@ -6,7 +6,9 @@ clients for ``--seconds`` against each endpoint, in ``--rounds`` interleaved win
 (each round every endpoint in turn), and prints the median requests per second, the
 median of the rounds' ratios to ``GET /api/v1/health`` and each round's, the server
 process's CPU time per request and /health's divided by it (with workers > 1: the
-master's only), and every answer that was not 2xx (there should be none).
+master's only), and every answer that was not 2xx (there should be none). Then, with
+one worker, batches of random cases, per case and as columns, each against the numpy
+reference (``bench/reference.py``) timed right after it.
 
     python -m bench.http                       # PostgreSQL at $TEST_POSTGRES_URL if it answers
     python -m bench.http --database sqlite     # the embedded default
@@ -17,6 +19,7 @@ from __future__ import annotations
 import argparse
 import gzip
 import json
+import math
 import os
 import socket
 import statistics
@@ -42,7 +45,7 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.db.engine import normalise_url
 from actuator_selection.main import GZIP_LEVEL
 from bench.reference import agreement, numpy_reference
-from bench.selection import http_case, random_cases, starter_catalogue
+from bench.selection import http_case, http_columns, random_cases, starter_catalogue
 
 WORKED_EXAMPLE: dict[str, Any] = {
     "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
@@ -139,30 +142,51 @@ def _peak_rss_mb(pid: int) -> float:
     return float("nan")
 
 
-def _batch(base: str, pid: int, n: int, actuators: list[Actuator], checks: bool) -> None:
-    """One batch of ``n`` random cases (top 3): time, answer size, the server's peak RSS,
-    and the time of the numpy reference for the same cases, measured right after."""
+def _batch(
+    base: str, pid: int, n: int, actuators: list[Actuator], checks: bool, *, columns: bool
+) -> None:
+    """One batch of ``n`` random cases (top 3), as cases (POST /selections/batch) or as
+    columns (POST /selections/batch/columns, the best of three): time, answer size, the
+    server's peak RSS, and the time of the numpy reference for the same cases (the best
+    of three), measured right after."""
     apps = random_cases(n)
-    body = {"cases": [http_case(app) for app in apps], "top": 3, "include_checks": checks}
+    options = {"top": 3, "include_checks": checks}
+    if columns:
+        path, body = "/selections/batch/columns", {**http_columns(apps), **options}
+    else:
+        path, body = "/selections/batch", {"cases": [http_case(app) for app in apps], **options}
     before = _peak_rss_mb(pid)
-    started = time.monotonic()
-    response = httpx.post(f"{base}/api/v1/selections/batch", json=body, timeout=600)
-    elapsed = time.monotonic() - started
+    # A table takes a fraction of a second: the best of three, as the reference's.
+    elapsed = math.inf
+    for _ in range(3 if columns else 1):
+        started = time.monotonic()
+        response = httpx.post(f"{base}/api/v1{path}", json=body, timeout=600)
+        elapsed = min(elapsed, time.monotonic() - started)
     reference_s = min(_timed(lambda: numpy_reference(actuators, apps, 3)) for _ in range(3))
     answer = response.json()
-    service = [[c["model"] for c in r["candidates"]] for r in answer["results"]]
+    service: list[list[str]] = [[] for _ in apps]
+    if columns:
+        table = answer["candidates"]
+        for case, model in zip(table["case"], table["model"], strict=True):
+            service[case].append(model)
+    else:
+        service = [[c["model"] for c in r["candidates"]] for r in answer["results"]]
     same = agreement(actuators, numpy_reference(actuators, apps, 3), service)
-    floor_s = _json_and_gzip_s(body, answer, gzipped=response.headers.get("content-encoding"))
     print(
-        f"  POST /selections/batch, {n} cases, checks {'yes' if checks else 'no '}  "
+        f"  POST {path}, {n} cases, checks {'yes' if checks else 'no '}  "
         f"{elapsed:6.2f} s  HTTP {response.status_code}  answer "
         f"{len(response.content) / 1e6:5.1f} MB  server peak RSS {before:.0f} → "
         f"{_peak_rss_mb(pid):.0f} MB\n"
         f"    numpy reference {reference_s * 1e3:6.1f} ms (same top 3 in {same:.1%} of cases): "
-        f"the request takes {elapsed / reference_s:4.1f}× the reference\n"
-        f"    the request's and the answer's JSON and gzip alone {floor_s * 1e3:6.1f} ms: "
-        f"{floor_s / reference_s:4.1f}× the reference"
+        f"the request takes {elapsed / reference_s:4.1f}× the reference"
     )
+    if not columns:
+        gzipped = response.headers.get("content-encoding")
+        floor_s = _json_and_gzip_s(body, answer, gzipped=gzipped)
+        print(
+            f"    the request's and the answer's JSON and gzip alone {floor_s * 1e3:6.1f} ms: "
+            f"{floor_s / reference_s:4.1f}× the reference"
+        )
 
 
 def _httpx_json(body: Any) -> bytes:
@@ -283,7 +307,9 @@ def main() -> None:
                   f"{_stored_row_bytes(url) / 1024:.1f} KiB on average")  # fmt: skip
             if args.workers == 1:  # the peak RSS is the served process's own
                 for n, checks in ((10_000, False), (10_000, True), (args.batch_cases, True)):
-                    _batch(base, process.pid, n, actuators, checks)
+                    _batch(base, process.pid, n, actuators, checks, columns=False)
+                for checks in (False, True):
+                    _batch(base, process.pid, 10_000, actuators, checks, columns=True)
         finally:
             process.terminate()
             process.wait(10)

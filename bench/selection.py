@@ -10,7 +10,7 @@ from __future__ import annotations
 import random
 import tempfile
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 from datetime import UTC, datetime
 from pathlib import Path
@@ -49,6 +49,23 @@ def random_cases(n: int, seed: int = 7) -> list[Application]:
         )
         for _ in range(n)
     ]
+
+
+def http_columns(apps: Sequence[Application]) -> dict[str, Any]:
+    """The JSON body of POST /selections/batch/columns for ``apps`` (the chapter's cycle)."""
+    patterns = [a.pattern for a in apps if a.pattern is not None]
+    loads = [a.load for a in apps if a.load is not None]
+    assert len(patterns) == len(loads) == len(apps), "the bench sizes the chapter's cycle"
+    return {
+        "speed_rpm": [p.speed_rpm for p in patterns],
+        "torque_nm": [x.torque_nm for x in loads],
+        "inertia_kgm2": [x.inertia_kgm2 for x in loads],
+        "accel_s": [p.accel_s for p in patterns],
+        "constant_s": [p.constant_s for p in patterns],
+        "decel_s": [p.decel_s for p in patterns],
+        "pause_s": [p.pause_s for p in patterns],
+        "high_dynamics": [a.high_dynamics for a in apps],
+    }
 
 
 def http_case(app: Application) -> dict[str, Any]:
