@@ -7,6 +7,7 @@ import math
 import random
 from typing import Any
 
+import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
@@ -14,6 +15,8 @@ from tests import worked_example
 from actuator_selection.main import API_PREFIX
 from actuator_selection.schemas.batch import MAX_BATCH_CANDIDATES, MAX_BATCH_CASES
 from actuator_selection.schemas.batch_columns import COLUMNS_EXAMPLE, BatchColumnsOut
+from actuator_selection.services.batch import _coalesced, _json_pieces
+from actuator_selection.services.selections import dump_json
 
 URL = f"{API_PREFIX}/selections/batch/columns"
 COLUMNS = ("speed_rpm", "torque_nm", "inertia_kgm2", "accel_s", "constant_s", "decel_s", "pause_s")
@@ -221,12 +224,28 @@ def test_malformed_bodies_are_422(client: TestClient, raw: str) -> None:
 
 
 def test_nan_is_not_json(client: TestClient) -> None:
-    """The batch routes parse with orjson, which reads JSON only: NaN is a decode error
+    """The batch routes parse with jiter, which reads JSON only: NaN is a decode error
     (the standard library would read it as a number for validation to refuse)."""
     raw = json.dumps({**COLUMNS_EXAMPLE, "speed_rpm": [math.nan, 40]})
     for url, body in ((URL, raw), (f"{API_PREFIX}/selections/batch", '{"cases": [NaN]}')):
         response = client.post(url, content=body, headers={"content-type": "application/json"})
         assert [e["type"] for e in response.json()["detail"]] == ["json_invalid"], url
+
+
+@pytest.mark.parametrize(
+    "value",
+    [
+        {},
+        [],
+        {"a": [], "b": {}, "c": [{"x": np.arange(3.0)}, {"y": None}], "d": np.array([np.nan])},
+        [{"a": 1}, {"b": [1, 2]}],
+        [{"a": 1}, 2],
+    ],
+)
+def test_the_streamed_json_is_the_documents(value: Any) -> None:
+    """The pieces of a table's answer join to the one document orjson writes."""
+    assert b"".join(_json_pieces(value)) == dump_json(value)
+    assert b"".join(_coalesced(_json_pieces(value), 4)) == dump_json(value)
 
 
 def test_openapi_documents_the_columns_contract(client: TestClient) -> None:

@@ -52,3 +52,37 @@ def test_a_batch_of_several_slices_is_one_document_equal_to_its_parts(
     assert len(document["results"]) == len(cases)
     assert document["results"] == parts
     assert set(document) == {"catalogue_version", "ranking", "results"}
+
+
+def test_a_table_of_cases_is_streamed_and_equals_its_halves(start_server: StartServer) -> None:
+    """POST /selections/batch/columns: sent in pieces (chunked), one document whose
+    candidates are those of its cases sent in two halves."""
+    server, _ = start_server()
+    cases = _cases(600)
+    columns = {
+        name: [case[part][name] for case in cases]
+        for part, names in (("load", ("speed_rpm", "torque_nm", "inertia_kgm2")),
+                            ("cycle", ("accel_s", "constant_s", "decel_s", "pause_s")))
+        for name in names
+    }  # fmt: skip
+    url = "/api/v1/selections/batch/columns"
+    with server.client() as client:
+        whole = client.post(url, json={**columns, "top": 2})
+        assert whole.status_code == 200, whole.text[:300]
+        assert whole.headers.get("transfer-encoding") == "chunked"  # streamed, not buffered
+        halves = [
+            client.post(url, json={**{k: v[part] for k, v in columns.items()}, "top": 2}).json()
+            for part in (slice(0, 250), slice(250, None))
+        ]
+    document = json.loads(whole.content)
+    table = document["candidates"]
+    first, second = (half["candidates"] for half in halves)
+    assert table["case"] == first["case"] + [250 + i for i in second["case"]]
+    for key in table.keys() - {"case"}:
+        assert table[key] == first[key] + second[key], key
+    for column, a, b in zip(document["checks"], halves[0]["checks"], halves[1]["checks"],
+                            strict=True):  # fmt: skip
+        assert column["status"] == a["status"] + b["status"]
+        assert column["value"] == a["value"] + b["value"]
+    assert set(document) == {"catalogue_version", "ranking", "cases", "candidates", "checks",
+                             "models"}  # fmt: skip

@@ -6,11 +6,13 @@ cases, each error naming its case's index.
 
 from __future__ import annotations
 
+import json
+import re
 from collections.abc import Callable, Coroutine
 from functools import partial
 from typing import Any
 
-import orjson
+import pydantic_core
 from fastapi import APIRouter, Request, Response
 from fastapi.responses import StreamingResponse
 from fastapi.routing import APIRoute
@@ -42,29 +44,48 @@ from actuator_selection.services.batch import (
 )
 
 
-class _OrjsonRequest(Request):
-    """A request whose JSON body orjson parses: a batch's megabytes of numbers in a third
-    of the standard library's time (10,000 cases as columns: 1.5 MB in 2.6 ms, not 22).
-    Its decode errors are the standard library's ``JSONDecodeError``, which FastAPI
-    answers as ``json_invalid``; NaN and Infinity, which JSON does not have, are such
-    errors here rather than numbers that validation refuses."""
+class _BulkRequest(Request):
+    """A request whose JSON body pydantic's parser (jiter) reads: a batch's megabytes of
+    numbers in a fifth to a half of the standard library's time (20,000 cases as columns:
+    7 ms, not 46; as cases: 51 ms, not 90), into the same objects and with no more memory
+    than they take (orjson, as fast, peaked at 40 and 81 MB on the way). Its errors are
+    the standard library's ``JSONDecodeError`` at the same place, which FastAPI answers as
+    ``json_invalid``; NaN and Infinity, which JSON does not have, are such errors here
+    rather than numbers that validation refuses."""
 
     async def json(self) -> Any:
         if not hasattr(self, "_json"):
-            self._json = orjson.loads(await self.body())
+            body = await self.body()
+            try:
+                self._json = pydantic_core.from_json(body, allow_inf_nan=False)
+            except ValueError as exc:
+                raise _decode_error(str(exc), body) from None
         return self._json
 
 
+def _decode_error(message: str, body: bytes) -> json.JSONDecodeError:
+    """jiter's error ("… at line 3 column 4") as the standard library's, at its offset."""
+    found = re.search(r" at line (\d+) column (\d+)$", message)
+    if found is None:
+        return json.JSONDecodeError(message, body.decode(errors="replace"), 0)
+    line, column = int(found[1]), int(found[2])
+    text = body.decode(errors="replace")
+    start = 0
+    for _ in range(line - 1):
+        start = text.index("\n", start) + 1
+    return json.JSONDecodeError(message[: found.start()], text, start + column - 1)
+
+
 class _BulkRoute(APIRoute):
-    """A route whose request body is parsed by :class:`_OrjsonRequest`."""
+    """A route whose request body is parsed by :class:`_BulkRequest`."""
 
     def get_route_handler(self) -> Callable[[Request], Coroutine[Any, Any, Response]]:
         handler = super().get_route_handler()
 
-        async def parse_with_orjson(request: Request) -> Response:
-            return await handler(_OrjsonRequest(request.scope, request.receive))
+        async def parse_with_jiter(request: Request) -> Response:
+            return await handler(_BulkRequest(request.scope, request.receive))
 
-        return parse_with_orjson
+        return parse_with_jiter
 
 
 router = APIRouter(tags=["selections"], route_class=_BulkRoute)
@@ -161,7 +182,7 @@ def create_batch_columns(
     refuse_unknown_models(body.models, catalogue)
     language = language_of(request.scope)
     answer = size_columns(body, catalogue=catalogue, localize=localizer(language))
-    return Response(
+    return StreamingResponse(
         answer,
         media_type="application/json",
         headers={"Content-Language": language, "Vary": "Accept-Language"},

@@ -305,19 +305,25 @@ def check_columns(body: BatchColumnsRequest) -> None:
 
 def size_columns(
     body: BatchColumnsRequest, *, catalogue: CatalogueSnapshot, localize: Localize
-) -> bytes:
-    """The answer to ``body`` (within :func:`check_columns`) as JSON: the vectorised
-    flowchart's table (``core.batch.rank_columns``) written as it is, arrays as JSON
-    arrays, with a word only in each model's controller note."""
+) -> Iterator[bytes]:
+    """The answer to ``body`` (within :func:`check_columns`) as JSON, piece by piece: the
+    vectorised flowchart's table (``core.batch.rank_columns``) written as it is, each
+    array at once as a JSON array, with words only in each model's controller note.
+
+    The table is computed before this returns, so that an error in it is still an error
+    answer; its JSON is then written while it is sent (:func:`_json_pieces`), so the
+    document is never held whole (20,000 cases with checks: 23 MB). The request's
+    columns are let go once they are arrays (``body``'s lists are empty afterwards).
+    """
     n = len(body.speed_rpm)
+    names = ("speed_rpm", *_COLUMNS)
     columns = TrapezoidColumns(
-        **{
-            name: np.array(getattr(body, name), dtype=np.float64)
-            for name in ("speed_rpm", *_COLUMNS)
-        },
+        **{name: np.array(getattr(body, name), dtype=np.float64) for name in names},
         high_dynamics=np.broadcast_to(np.array(body.high_dynamics, dtype=np.bool_), (n,)),
         thermal_time_constant_s=body.thermal_time_constant_s,
     )
+    for name in names:
+        getattr(body, name).clear()
     actuators = tuple(catalogue.actuators_of(body.models))
     table = rank_columns(
         actuators,
@@ -327,30 +333,66 @@ def size_columns(
         arrays=catalogue.arrays(actuators),
     )
     models = np.array([a.model for a in actuators], dtype=object)
-    return dump_json(
-        {
-            "catalogue_version": catalogue.version,
-            "ranking": RANKING_RULE,
-            "cases": {
-                "cycle_time_s": table.cycle_time_s,
-                "mean_speed_rpm": table.mean_speed_rpm,
-                "duty_cycle_percent": table.duty_cycle_percent,
-            },
-            "candidates": {
-                "case": table.case,
-                "model": models[table.actuator].tolist(),
-                "verdict": _VERDICT_NAMES[table.verdicts].tolist(),
-                "accel_torque_nm": table.accel_torque_nm,
-                "constant_torque_nm": table.constant_torque_nm,
-                "decel_torque_nm": table.decel_torque_nm,
-                "rms_torque_nm": table.rms_torque_nm,
-            },
-            "checks": None if table.checks is None else _check_columns(table.checks),
-            "models": _model_columns(
-                table, columns, actuators, _Drives(DriveContext(catalogue), localize)
-            ),
-        }
-    )
+    answer = {
+        "catalogue_version": catalogue.version,
+        "ranking": RANKING_RULE,
+        "cases": {
+            "cycle_time_s": table.cycle_time_s,
+            "mean_speed_rpm": table.mean_speed_rpm,
+            "duty_cycle_percent": table.duty_cycle_percent,
+        },
+        "candidates": {
+            "case": table.case,
+            "model": models[table.actuator].tolist(),
+            "verdict": _VERDICT_NAMES[table.verdicts].tolist(),
+            "accel_torque_nm": table.accel_torque_nm,
+            "constant_torque_nm": table.constant_torque_nm,
+            "decel_torque_nm": table.decel_torque_nm,
+            "rms_torque_nm": table.rms_torque_nm,
+        },
+        "checks": None if table.checks is None else _check_columns(table.checks),
+        "models": _model_columns(
+            table, columns, actuators, _Drives(DriveContext(catalogue), localize)
+        ),
+    }
+    return _coalesced(_json_pieces(answer), STREAM_BYTES)
+
+
+STREAM_BYTES = 1 << 18
+"""Bytes of a table's JSON sent per piece (at least; an array is written whole)."""
+
+
+def _json_pieces(value: Any) -> Iterator[bytes]:
+    """``value`` as JSON (:func:`dump_json`'s), an object's members and a list of objects'
+    items one at a time, any other value whole: joined, the pieces are ``dump_json(value)``."""
+    if isinstance(value, dict) and value:
+        opening = b"{"
+        for key, member in value.items():
+            yield opening + dump_json(key) + b":"
+            yield from _json_pieces(member)
+            opening = b","
+        yield b"}"
+    elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+        opening = b"["
+        for item in value:
+            yield opening
+            yield from _json_pieces(item)
+            opening = b","
+        yield b"]"
+    else:
+        yield dump_json(value)
+
+
+def _coalesced(pieces: Iterator[bytes], size: int) -> Iterator[bytes]:
+    """``pieces`` joined into pieces of at least ``size`` bytes (the last one shorter)."""
+    buffer = bytearray()
+    for piece in pieces:
+        buffer += piece
+        if len(buffer) >= size:
+            yield bytes(buffer)
+            buffer.clear()
+    if buffer:
+        yield bytes(buffer)
 
 
 _VERDICT_NAMES = np.array([v.value for v in VERDICT_BY_CODE], dtype=object)
