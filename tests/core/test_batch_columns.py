@@ -143,6 +143,12 @@ def test_the_worked_example_and_the_brake_rules() -> None:
     assert_table_like_select_batch([fha], braked, top=1, rules=BRAKE_RULES)
 
 
+def test_an_empty_catalogue_gives_figures_and_no_candidates() -> None:
+    apps = [worked_example.APPLICATION] * 2
+    assert_table_like_select_batch([], apps, top=3)
+    assert rank_columns([], columns_of(apps), checks=True).case.size == 0
+
+
 def test_many_cases_span_several_blocks() -> None:
     rng = random.Random(11)
     actuators = [random_actuator(rng, k) for k in range(7)]
