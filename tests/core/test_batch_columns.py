@@ -225,13 +225,7 @@ def test_columns_of_other_lengths_and_bad_arguments_are_refused() -> None:
         rank_columns([worked_example.FHA_25C_50_L], _columns(), top=0)
 
 
-_COLUMN_NAMES = (
-    "speed_rpm",
-    "accel_s",
-    "constant_s",
-    "decel_s",
-    "pause_s",
-    "torque_nm",
-    "inertia_kgm2",
-    "high_dynamics",
-)
+_COLUMN_NAMES = [
+    f.name for f in dataclasses.fields(TrapezoidColumns) if f.name != "thermal_time_constant_s"
+]
+"""The columns: every field but the one τ_th."""

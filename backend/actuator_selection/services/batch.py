@@ -52,9 +52,23 @@ from actuator_selection.services.selections import (
 )
 
 
+def _too_many_candidates(cases: int, top: int) -> list[dict[str, Any]]:
+    """The error entry, if ``cases`` × ``top`` is beyond what one answer holds."""
+    if cases * top <= MAX_BATCH_CANDIDATES:
+        return []
+    return [
+        entry(
+            ["body", "top"],
+            f"cases × top must be ≤ {MAX_BATCH_CANDIDATES}, got {cases} × {top}: "
+            "ask for fewer candidates or send fewer cases",
+            "too_many_candidates",
+        )
+    ]
+
+
 def check_limits(body: BatchSelectionRequest) -> None:
     """Refuse a request beyond the limits that depend on more than one of its fields (422)."""
-    errors = []
+    errors: list[dict[str, Any]] = []
     n = len(body.cases)
     if body.store and n > MAX_STORED_CASES:
         errors.append(
@@ -65,15 +79,7 @@ def check_limits(body: BatchSelectionRequest) -> None:
                 "too_many_to_store",
             )
         )
-    if n * body.top > MAX_BATCH_CANDIDATES:
-        errors.append(
-            entry(
-                ["body", "top"],
-                f"cases × top must be ≤ {MAX_BATCH_CANDIDATES}, got {n} × {body.top}: "
-                "ask for fewer candidates or send fewer cases",
-                "too_many_candidates",
-            )
-        )
+    errors += _too_many_candidates(n, body.top)
     if body.include_controllers and n * body.top > MAX_CANDIDATES_WITH_CONTROLLERS:
         errors.append(
             entry(
@@ -290,15 +296,7 @@ def check_columns(body: BatchColumnsRequest) -> None:
         for name, length in lengths.items()
         if length != n
     ]
-    if n * body.top > MAX_BATCH_CANDIDATES:
-        errors.append(
-            entry(
-                ["body", "top"],
-                f"cases × top must be ≤ {MAX_BATCH_CANDIDATES}, got {n} × {body.top}: "
-                "ask for fewer candidates or send fewer cases",
-                "too_many_candidates",
-            )
-        )
+    errors += _too_many_candidates(n, body.top)
     if errors:
         raise UseCaseError(errors)
 
