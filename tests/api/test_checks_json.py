@@ -1,0 +1,63 @@
+"""A large selection writes its candidates' checks as JSON text, rule by rule; the text is
+the one orjson writes for the same checks as dicts, byte for byte."""
+
+from __future__ import annotations
+
+import dataclasses
+import random
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from tests.core.test_batch import (
+    applications,
+    boundary_actuators,
+    catalogues,
+    random_actuator,
+    random_case,
+)
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.batch import evaluate_batch
+from actuator_selection.core.selection import Application
+from actuator_selection.services.selections import (
+    CHECKS_AS_DICTS_UP_TO,
+    _checks,
+    _checks_as_dicts,
+    _checks_as_json,
+    dump_json,
+)
+
+
+def assert_same_text(actuators: list[Actuator], app: Application) -> None:
+    ev = evaluate_batch(actuators, [app], rules=app.rules)
+    as_dicts = dump_json(_checks_as_dicts(ev))
+    assert dump_json(_checks_as_json(ev)) == as_dicts
+    assert dump_json(_checks(ev)) == as_dicts
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_random_catalogues_write_the_same_text(seed: int) -> None:
+    """Missing data (null, no_data with `missing`), zones (`approximate`), fails on a
+    lower bound, limits met at equality; with and without a brake."""
+    rng = random.Random(seed)
+    actuators = [random_actuator(rng, k) for k in range(60)]
+    apps = [random_case(rng, actuators) for _ in range(6)]
+    actuators += boundary_actuators(apps)
+    for app in apps:
+        assert_same_text(actuators, app)
+        assert_same_text(actuators, dataclasses.replace(app, brake=True))
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(actuators=catalogues(), app=applications)
+def test_any_catalogue_writes_the_same_text(actuators: list[Actuator], app: Application) -> None:
+    assert_same_text(actuators, app)
+
+
+def test_a_large_catalogue_takes_the_json_writer() -> None:
+    rng = random.Random(5)
+    actuators = [random_actuator(rng, k) for k in range(CHECKS_AS_DICTS_UP_TO + 1)]
+    ev = evaluate_batch(actuators, [random_case(rng, actuators)])
+    checks = _checks(ev)
+    assert all(not isinstance(c, list) for c in checks)  # orjson.Fragment, not dicts
+    assert dump_json(checks) == dump_json(_checks_as_dicts(ev))
