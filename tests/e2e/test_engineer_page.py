@@ -757,6 +757,15 @@ def test_keyboard_and_screen_reader_affordances(page: Page) -> None:
     # rank, compare mark, model, verdict · checks, T_1, T_3, T_rms, reason
     expect(page.locator("#ranking-table thead th")).to_have_count(8)
     expect(page.locator("#checks-table thead th")).to_have_count(6)
+    # a row's check marks are one image to a screen reader, named by every check's finding
+    # in the order of the answer; each mark keeps its finding as a tooltip
+    marks = page.locator(f'#ranking-table tr[data-model="{FHA}"] .marks')
+    expect(marks).to_have_attribute("role", "img")
+    titles = marks.locator(".mark").evaluate_all("ms => ms.map(m => m.title)")
+    assert len(titles) == 6
+    assert marks.get_attribute("aria-label") == "; ".join(titles)
+    assert titles[2].startswith("T1 ≤ Tmax: pass (95.48\u202fNm / 151\u202fNm")
+    assert "no data" in titles[4]
     choose(page, FHA, by_keyboard=True)
     expect(page.locator(f'#ranking-table tr[data-model="{FHA}"] .model-button')).to_have_attribute(
         "aria-pressed", "true"
