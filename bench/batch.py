@@ -134,7 +134,7 @@ def http(url: str) -> None:
     """POST /selections/batch with 10,000 cases, end to end through the ASGI app."""
     print(
         f"HTTP POST {API_PREFIX}/selections/batch, {BATCH_CASES} cases, top {TOP} "
-        "(TestClient: JSON out and back in included; 'gzip' adds the app's GZipMiddleware)"
+        "(TestClient: JSON out and back in included; 'gzip' adds the app's compression, gzip)"
     )
     payload = [http_case(a) for a in random_cases(BATCH_CASES, seed=8)]
     with TestClient(create_app(Settings(database_url=url))) as client:

@@ -37,13 +37,14 @@ from typing import Any
 
 import httpx
 import orjson
+import zstandard
 from sqlalchemy import create_engine, text
 from sqlalchemy.engine import make_url
 
 from actuator_selection.config import REPO_ROOT
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.db.engine import normalise_url
-from actuator_selection.main import GZIP_LEVEL
+from actuator_selection.main import GZIP_LEVEL, ZSTD_LEVEL
 from bench.reference import agreement, numpy_reference
 from bench.selection import http_case, http_columns, random_cases, starter_catalogue
 
@@ -181,10 +182,11 @@ def _batch(
         f"the request takes {elapsed / reference_s:4.1f}× the reference"
     )
     if not columns:
-        gzipped = response.headers.get("content-encoding")
-        floor_s = _json_and_gzip_s(body, answer, gzipped=gzipped)
+        coding = response.headers.get("content-encoding")
+        floor_s = _json_and_coding_s(body, answer, coding=coding)
         print(
-            f"    the request's and the answer's JSON and gzip alone {floor_s * 1e3:6.1f} ms: "
+            f"    the request's and the answer's JSON and {coding or 'no'} coding alone "
+            f"{floor_s * 1e3:6.1f} ms: "
             f"{floor_s / reference_s:4.1f}× the reference"
         )
 
@@ -194,23 +196,32 @@ def _httpx_json(body: Any) -> bytes:
     return json.dumps(body, ensure_ascii=False, separators=(",", ":"), allow_nan=False).encode()
 
 
-def _json_and_gzip_s(body: dict[str, Any], answer: Any, *, gzipped: str | None) -> float:
+def _json_and_coding_s(body: dict[str, Any], answer: Any, *, coding: str | None) -> float:
     """What moving this request and answer costs before any engineering, best of 3 [s]:
     the client writing the request (httpx's encoder), the framework parsing it (FastAPI
     parses with the standard library), the answer written (orjson, as the service
-    writes it) and, where it came gzip-compressed, compressed at the service's level
-    and decompressed by the client. A floor for this contract over HTTP in Python."""
+    writes it) and, where it came compressed (``coding``: zstd or gzip), compressed at
+    the service's level and decompressed by the client. A floor for this contract over
+    HTTP in Python."""
     encoded = _httpx_json(body)
     written = orjson.dumps(answer)
-    compressed = gzip.compress(written, GZIP_LEVEL) if gzipped == "gzip" else None
+    codecs: dict[str, tuple[Callable[[bytes], bytes], Callable[[bytes], bytes]]] = {
+        "gzip": (lambda b: gzip.compress(b, GZIP_LEVEL), gzip.decompress),
+        "zstd": (
+            lambda b: zstandard.ZstdCompressor(level=ZSTD_LEVEL).compress(b),
+            lambda b: zstandard.ZstdDecompressor().decompressobj().decompress(b),
+        ),
+    }
+    codec = codecs.get(coding or "")
+    compressed = codec[0](written) if codec else b""
 
     def moved() -> None:
         _httpx_json(body)
         json.loads(encoded)
         orjson.dumps(answer)
-        if compressed is not None:
-            gzip.compress(written, GZIP_LEVEL)
-            gzip.decompress(compressed)
+        if codec is not None:
+            codec[0](written)
+            codec[1](compressed)
 
     return min(_timed(moved) for _ in range(3))
 

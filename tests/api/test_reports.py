@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import gzip
 import io
 import re
 from functools import cache
@@ -10,6 +11,7 @@ from typing import Any
 
 import pypdf
 import pytest
+import zstandard
 from fastapi.testclient import TestClient
 from tests import worked_example
 
@@ -87,6 +89,21 @@ def test_csv_holds_the_answer_numbers_exactly(client: TestClient) -> None:
             assert float(row["margin_percent"]) == pytest.approx((limit - value) / limit * 100)
         assert row["approximate"] == ("true" if check.get("approximate") else "false")
         assert row["missing"] == (check.get("missing") or "")
+
+
+def test_csv_is_compressed_in_the_encoding_the_client_accepts(client: TestClient) -> None:
+    """The report is text: zstd where accepted, else gzip, the same text either way."""
+    url = f"/api/v1/selections/{_selection(client)['id']}/report.csv"
+    plain = client.get(url, headers={"Accept-Encoding": "identity"})
+    assert "content-encoding" not in plain.headers
+    decoders = {"zstd": lambda b: zstandard.ZstdDecompressor().decompressobj().decompress(b),
+                "gzip": gzip.decompress}  # fmt: skip
+    for accepted, coding in (("gzip, zstd", "zstd"), ("gzip", "gzip")):
+        with client.stream("GET", url, headers={"Accept-Encoding": accepted}) as response:
+            assert response.headers["content-encoding"] == coding
+            assert response.headers["vary"] == "Accept-Encoding"
+            wire = b"".join(response.iter_raw())
+        assert decoders[coding](wire) == plain.content
 
 
 def test_csv_of_the_worked_example_actuator(client: TestClient) -> None:

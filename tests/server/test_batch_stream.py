@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import gzip
 import json
 import random
 from typing import Any
 
+import zstandard
 from tests.server.conftest import StartServer
 
 from actuator_selection.services.batch import STREAM_CASES
@@ -86,3 +88,44 @@ def test_a_table_of_cases_is_streamed_and_equals_its_halves(start_server: StartS
         assert column["value"] == a["value"] + b["value"]
     assert set(document) == {"catalogue_version", "ranking", "cases", "candidates", "checks",
                              "models"}  # fmt: skip
+
+
+def test_a_streamed_table_comes_in_the_encoding_the_client_accepts(
+    start_server: StartServer,
+) -> None:
+    """zstd where the client accepts it, else gzip, else none; each is the same
+    document as sent uncompressed, byte for byte."""
+    server, _ = start_server()
+    cases = _cases(400)
+    body = {
+        "speed_rpm": [c["load"]["speed_rpm"] for c in cases],
+        "torque_nm": [c["load"]["torque_nm"] for c in cases],
+        "inertia_kgm2": [c["load"]["inertia_kgm2"] for c in cases],
+        **{name: [c["cycle"][name] for c in cases] for name in cases[0]["cycle"]},
+        "top": 3,
+    }
+    url = "/api/v1/selections/batch/columns"
+    answers: dict[str, tuple[str | None, bytes]] = {}
+    with server.client() as client:
+        for accepted in ("identity", "gzip", "gzip, deflate, br, zstd", "zstd;q=0, gzip"):
+            with client.stream(
+                "POST", url, json=body, headers={"Accept-Encoding": accepted}
+            ) as response:
+                assert response.status_code == 200
+                assert response.headers.get("transfer-encoding") == "chunked"
+                wire = b"".join(response.iter_raw())
+                answers[accepted] = (response.headers.get("content-encoding"), wire)
+    plain_encoding, plain = answers["identity"]
+    assert plain_encoding is None
+    assert len(json.loads(plain)["cases"]["cycle_time_s"]) == len(cases)
+    assert answers["gzip"][0] == "gzip"
+    assert gzip.decompress(answers["gzip"][1]) == plain
+    assert answers["gzip, deflate, br, zstd"][0] == "zstd"
+    assert (
+        zstandard.ZstdDecompressor()
+        .decompressobj()
+        .decompress(answers["gzip, deflate, br, zstd"][1])
+        == plain
+    )
+    assert answers["zstd;q=0, gzip"][0] == "gzip"  # a refused coding is not used
+    assert len(answers["gzip, deflate, br, zstd"][1]) < len(plain) / 2
