@@ -312,6 +312,37 @@ def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> 
     )
 
 
+def test_plotly_is_warmed_up_out_of_sight_until_the_user_starts(page: Page) -> None:
+    """Left untouched after plotly.js has run, the page draws both charts once off screen
+    and throws them away; the user's own charts are drawn as ever. A user who has
+    already clicked is not held up by it: the warm-up is skipped."""
+    page.goto("/")
+    expect(page.locator("html")).to_have_attribute("data-charts-warm", "done")
+    expect(page.locator(".chart-warmup")).to_have_count(0)
+    expect(page.locator(".js-plotly-plot")).to_have_count(0)  # nothing drawn is left
+    fill_worked_example(page)
+    _, body = post_selection(page)
+    best = body["candidates"][0]
+    expect(page.locator("#chart-cycle")).to_have_attribute("data-model", best["model"])
+    assert max(traces(page, "chart-diagram")["peak-accel"]["y"]) == pytest.approx(
+        best["accel_torque_nm"]
+    )
+
+    # plotly.js held back until the user has clicked into the form: no warm-up
+    other = page.context.new_page()
+    held: list[Route] = []
+    other.route("**/vendor/plotly-basic-*.js", lambda route: held.append(route))
+    other.goto("/", wait_until="commit")
+    expect(other.locator("#results-body .notice")).to_be_attached()  # the page's script ran
+    other.locator("#f-speed").click()
+    assert len(held) == 1
+    held[0].continue_()
+    expect(other.locator("html")).to_have_attribute("data-charts-warm", "skipped")
+    fill_worked_example(other)
+    post_selection(other)
+    other.close()
+
+
 def test_rotary_table_shows_the_converted_load(page: Page) -> None:
     mass, diameter, mu, radius = 50.0, 0.4, 0.02, 0.15
     expected_inertia = mass / 8 * diameter**2  # Eq. 515.6 → 1.0 kgm²
