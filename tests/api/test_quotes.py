@@ -131,6 +131,37 @@ def test_bad_input_is_422_naming_the_field_and_writes_nothing(
     assert api.get("/api/v1/quotes").json()["total"] == before
 
 
+@pytest.mark.parametrize(
+    ("change", "code", "german"),
+    [
+        ({"selection_id": "no-such-selection"}, "unknown_selection",
+         "keine gespeicherte Auswahl 'no-such-selection'"),
+        ({"price_list": "No such list"}, "unknown_price_list", "keine Preisliste 'No such list'"),
+        ({"actuator": {"model": "CHA-25A-50"}}, "not_a_candidate",
+         "'CHA-25A-50' ist kein Kandidat der Auswahl "),
+        ({"currency": "USD"}, "currency_mismatch",
+         "FHA-25C-50-L hat Preise in 'EUR', nicht in USD"),
+    ],
+)  # fmt: skip
+def test_a_refused_quote_is_worded_in_the_requests_language(
+    api: SalesApi, selection_id: str, change: dict[str, Any], code: str, german: str
+) -> None:
+    """The use case's rule by code, with the same params in English and German; the
+    message in the language asked for."""
+    body = api.quote_body(selection_id, **change)
+    answers = {
+        language: api.post("/api/v1/quotes", json=body, extra={"Accept-Language": language})
+        for language in ("en", "de")
+    }
+    (english,), (in_german,) = (answers[x].json()["detail"] for x in ("en", "de"))
+    assert answers["de"].headers["content-language"] == "de"
+    assert (english["code"], in_german["code"]) == (code, code)
+    assert english["params"] == in_german["params"]
+    assert english["type"] == in_german["type"]
+    assert in_german["msg"].startswith(german), in_german["msg"]
+    assert english["msg"] != in_german["msg"]
+
+
 def test_unsuitable_actuator_is_refused_with_its_reasons(api: SalesApi, selection_id: str) -> None:
     body = api.quote_body(selection_id, actuator={"model": "FHA-8C-30", "quantity": 1})
     response = create(api, body)

@@ -219,13 +219,20 @@ def test_unknown_selection_is_404_in_the_error_shape(client: TestClient, suffix:
         "detail": [
             {
                 "loc": ["path", "selection_id"],
-                "msg": "no selection 'no-such-selection'",
+                "msg": "no stored selection 'no-such-selection'",
                 "type": "not_found",
-                "code": "not_found",
-                "params": {},
+                "code": "unknown_selection",
+                "params": {"selection_id": "no-such-selection"},
             }
         ]
     }
+    german = client.get(
+        f"/api/v1/selections/no-such-selection/report.{suffix}", headers={"Accept-Language": "de"}
+    )
+    assert german.headers["content-language"] == "de"
+    (entry,) = german.json()["detail"]
+    assert entry["msg"] == "keine gespeicherte Auswahl 'no-such-selection'"
+    assert entry["params"] == {"selection_id": "no-such-selection"}
 
 
 def test_reports_are_in_the_openapi_document(client: TestClient) -> None:

@@ -184,6 +184,16 @@ def test_columns_of_other_lengths_are_named(client: TestClient) -> None:
         (["body", "pause_s"], "length_mismatch"),
         (["body", "high_dynamics"], "length_mismatch"),
     ]
+    # in the request's language, the same code and params in both
+    english, german = (
+        client.post(URL, json=body, headers={"Accept-Language": lang}).json()["detail"][0]
+        for lang in ("en", "de")
+    )
+    assert english["params"] == german["params"] == {"cases": 2, "length": 1}
+    assert english["msg"] == ("needs one value per load case: 2, as many as speed_rpm has, got 1")
+    assert german["msg"] == (
+        "braucht einen Wert je Lastfall: 2, so viele wie speed_rpm hat, erhalten 1"
+    )
 
 
 def test_unknown_models_are_named(client: TestClient) -> None:

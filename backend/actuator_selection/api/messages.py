@@ -41,6 +41,8 @@ from actuator_selection.core.messages import N_, Text
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
 from actuator_selection.schemas.quantities import QUANTITY_MESSAGES
 from actuator_selection.schemas.selections import LOAD_TYPES
+from actuator_selection.services.errors import listed
+from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS, USE_CASE_MESSAGES
 
 LANGUAGES: Final = ("en", "de")
 """The languages of the messages; the first is the default."""
@@ -204,11 +206,10 @@ SERVICE_MESSAGES: Final[Mapping[str, str]] = {
     "internal_error": N_("internal error; it has been logged"),
     "unauthorized": N_("a valid API key is required: send Authorization: Bearer <key>"),
     "forbidden": N_("this API key has the role '{role}'; this needs {roles}"),
-    "unknown_actuator": N_("unknown actuator model '{model}'"),
-    "unknown_controller_row": N_("no controller in row {row}"),
-    "unknown_price_list": N_("no price list '{name}'"),
+    **USE_CASE_MESSAGES,
 }
-"""The service's own messages (``api/``, ``services/``), by code."""
+"""The service's own messages by code: the routers' (``api/``) and the use cases'
+(``services/messages.py``)."""
 
 REASONS: Final = (N_("the database is busy"), N_("the service is at capacity"))
 """The reasons of a 503 (``service_unavailable``)."""
@@ -225,6 +226,7 @@ def all_templates() -> dict[str, str]:
     templates["converted"] = CONVERTED_SUFFIX
     templates |= {f"unit:{u}": u for u in UNIT_LABELS}
     templates |= {f"reason:{r}": r for r in REASONS}
+    templates |= {f"word:{w}": w for w in (*PRICE_KINDS.values(), CONTROLLER_RULE)}
     return templates
 
 
@@ -248,7 +250,7 @@ def _shown(key: str, value: Any, language: str) -> str:
     if isinstance(value, int | float):
         return _number(value, language)
     if isinstance(value, list | tuple):
-        return ", ".join(f"'{v}'" for v in value)
+        return listed(value, lambda v: _shown(key, v, language))
     return str(value)
 
 

@@ -59,9 +59,11 @@ def _too_many_candidates(cases: int, top: int) -> list[dict[str, Any]]:
     return [
         entry(
             ["body", "top"],
-            f"cases × top must be ≤ {MAX_BATCH_CANDIDATES}, got {cases} × {top}: "
-            "ask for fewer candidates or send fewer cases",
             "too_many_candidates",
+            "too_many_candidates",
+            max=MAX_BATCH_CANDIDATES,
+            cases=cases,
+            top=top,
         )
     ]
 
@@ -74,9 +76,10 @@ def check_limits(body: BatchSelectionRequest) -> None:
         errors.append(
             entry(
                 ["body", "store"],
-                f"store: true takes at most {MAX_STORED_CASES} cases per request, got {n}: "
-                "send the rest in further requests",
                 "too_many_to_store",
+                "too_many_to_store",
+                max=MAX_STORED_CASES,
+                cases=n,
             )
         )
     errors += _too_many_candidates(n, body.top)
@@ -84,10 +87,11 @@ def check_limits(body: BatchSelectionRequest) -> None:
         errors.append(
             entry(
                 ["body", "include_controllers"],
-                f"with controllers, cases × top must be ≤ {MAX_CANDIDATES_WITH_CONTROLLERS}, "
-                f"got {n} × {body.top}: each candidate then lists every controller not "
-                "excluded; leave include_controllers false or send fewer cases",
                 "too_many_candidates",
+                "too_many_with_controllers",
+                max=MAX_CANDIDATES_WITH_CONTROLLERS,
+                cases=n,
+                top=body.top,
             )
         )
     if errors:
@@ -288,11 +292,7 @@ def check_columns(body: BatchColumnsRequest) -> None:
     if isinstance(body.high_dynamics, list):
         lengths["high_dynamics"] = len(body.high_dynamics)
     errors = [
-        entry(
-            ["body", name],
-            f"needs one value per load case: {n}, as many as speed_rpm has, got {length}",
-            "length_mismatch",
-        )
+        entry(["body", name], "length_mismatch", "length_mismatch", cases=n, length=length)
         for name, length in lengths.items()
         if length != n
     ]

@@ -37,10 +37,10 @@ from actuator_selection.services.errors import (
     Loc,
     UseCaseError,
     conflict,
-    entry,
     file_problems,
     invalid,
     not_found,
+    worded,
 )
 
 
@@ -53,7 +53,7 @@ def _field_errors(exc: CatalogueFileError, *prefix: str | int, rows: bool = Fals
             loc.append(p.line)
         if p.column:
             loc.append(p.column)
-        entries.append(entry(loc, f"{p.column or 'value'} {p.message}", "invalid_value"))
+        entries.append(worded(loc, f"{p.column or 'value'} {p.message}", "invalid_value"))
     return UseCaseError(entries)
 
 
@@ -71,12 +71,12 @@ def _keyed_by_path(body: Mapping[str, Any], column: str, value: str | int) -> di
     """``body`` with ``column`` set to the path's ``value``; a body that names another
     value is refused (null or absent: the path's)."""
     if body.get(column) not in (None, value, str(value)):
-        raise invalid(["body", column], f"must be {value!r}, as in the path", "mismatch")
+        raise invalid(["body", column], "path_mismatch", "mismatch", value=value)
     return {**body, column: value}
 
 
 def _unknown_model(model: str) -> UseCaseError:
-    return not_found(["path", "model"], f"unknown actuator model {model!r}")
+    return not_found(["path", "model"], "unknown_actuator", model=model)
 
 
 def _actuator_out(session: Session, model: str) -> ActuatorOut:
@@ -91,11 +91,7 @@ def _known(session: Session, model: str, *, active: bool = False) -> None:
     if state is None:
         raise _unknown_model(model)
     if active and state.retired_at is not None:
-        raise conflict(
-            ["path", "model"],
-            f"actuator {model!r} is retired; PUT /actuators/{model} brings it back first",
-            "retired",
-        )
+        raise conflict(["path", "model"], "actuator_retired", "retired", model=model)
 
 
 def create_actuator(session: Session, body: Mapping[str, Any]) -> ActuatorOut:
@@ -103,12 +99,7 @@ def create_actuator(session: Session, body: Mapping[str, Any]) -> ActuatorOut:
     repository = CatalogueAdminRepository(session)
     values = _validated(repository.validate_actuator, body)
     if repository.state(values["model"]) is not None:
-        raise conflict(
-            ["body", "model"],
-            f"actuator {values['model']!r} exists (retired ones too); "
-            "PUT /actuators/{model} replaces it",
-            "exists",
-        )
+        raise conflict(["body", "model"], "actuator_exists", "exists", model=values["model"])
     repository.save_actuator(values)
     return _actuator_out(session, values["model"])
 
@@ -183,7 +174,7 @@ def _controller_out(session: Session, row: int) -> ControllerOut:
 
 def _known_controller(session: Session, row: int) -> None:
     if CatalogueAdminRepository(session).controller_state(row) is None:
-        raise not_found(["path", "row"], f"no controller in row {row}")
+        raise not_found(["path", "row"], "unknown_controller_row", row=row)
 
 
 def create_controller(session: Session, body: Mapping[str, Any]) -> ControllerOut:
@@ -194,11 +185,7 @@ def create_controller(session: Session, body: Mapping[str, Any]) -> ControllerOu
     values = _validated(repository.validate_controller, body)
     row = values["source_row"]
     if repository.controller_state(row) is not None:
-        raise conflict(
-            ["body", "source_row"],
-            f"controller row {row} exists (retired ones too); PUT /controllers/{row} replaces it",
-            "exists",
-        )
+        raise conflict(["body", "source_row"], "controller_exists", "exists", row=row)
     repository.save_controller(values)
     return _controller_out(session, row)
 

@@ -60,12 +60,23 @@ from actuator_selection.schemas.quotes import (
     StoredCandidate,
     StoredSelection,
 )
-from actuator_selection.services.errors import UseCaseError, conflict, invalid, not_found
+from actuator_selection.services.errors import (
+    UseCaseError,
+    conflict_worded,
+    invalid,
+    invalid_worded,
+    not_found,
+)
+from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS
 from actuator_selection.services.selections import stored_answer_json
 
 API_PREFIX = "/api/v1"
 DOCUMENT_LINK_TTL_S = 300
 """How long a signed document link works [s]."""
+SHOWN_CANDIDATES = 10
+"""The usable candidates an answer names when the chosen actuator is not one."""
+SHOWN_ROWS = 12
+"""The Table 521.1 rows an answer names when the chosen controller is not one of them."""
 
 
 def _out(record: QuoteRecord, today: date) -> QuoteOut:
@@ -78,12 +89,7 @@ def _request_sha256(body: QuoteCreate) -> str:
 
 
 def _reused(number: str) -> UseCaseError:
-    return invalid(
-        ["header", "Idempotency-Key"],
-        f"this key was used for quote {number} with a different request body; "
-        "use a new key for a new quote",
-        "idempotency_key_reused",
-    )
+    return invalid(["header", "Idempotency-Key"], "idempotency_key_reused", number=number)
 
 
 def _candidate(body: QuoteCreate, selection: StoredSelection) -> StoredCandidate:
@@ -93,20 +99,23 @@ def _candidate(body: QuoteCreate, selection: StoredSelection) -> StoredCandidate
     loc: list[str | int] = ["body", "actuator", "model"]
     if candidate is None:
         listed = [c.model for c in selection.candidates if c.verdict != "unsuitable"]
-        shown = ", ".join(listed[:10]) + (" …" if len(listed) > 10 else "")
+        if not listed:
+            raise invalid(
+                loc,
+                "no_usable_candidate",
+                "not_a_candidate",
+                model=model,
+                selection_id=selection.id,
+            )
         raise invalid(
             loc,
-            f"{model!r} is not a candidate of selection {selection.id}"
-            + (f" (choose one of: {shown})" if listed else " (it has no usable candidate)"),
             "not_a_candidate",
+            model=model,
+            selection_id=selection.id,
+            models=listed[:SHOWN_CANDIDATES],
         )
     if candidate.verdict == "unsuitable":
-        raise invalid(
-            loc,
-            f"{model} is unsuitable for this load case and cannot be quoted: "
-            + "; ".join(candidate.reasons),
-            "unsuitable",
-        )
+        raise invalid(loc, "unsuitable", model=model, reasons="; ".join(candidate.reasons))
     return candidate
 
 
@@ -127,33 +136,31 @@ def _price(
     if not prices:
         raise invalid(
             loc,
-            f"the price list {body.price_list!r} has no {kind} price for {code!r} valid on "
-            f"{on.isoformat()}",
             "no_price",
+            price_list=body.price_list,
+            kind=PRICE_KINDS[kind],
+            item=code,
+            day=on.isoformat(),
         )
     if currency is not None:
         matching = [p for p in prices if p.currency == currency]
         if not matching:
             raise invalid(
                 loc,
-                f"{code} is priced in {', '.join(p.currency for p in prices)}, not in {currency}"
-                " (one currency per quote)",
                 "currency_mismatch",
+                item=code,
+                currencies=[p.currency for p in prices],
+                currency=currency,
             )
         return matching[0]
     if len(prices) > 1:
         raise invalid(
             ["body", "currency"],
-            f"{code} is priced in {', '.join(p.currency for p in prices)}: choose one",
             "currency_required",
+            item=code,
+            currencies=[p.currency for p in prices],
         )
     return prices[0]
-
-
-CONTROLLER_RULE = (
-    "Table 521.1: the controller must be one the selection lists for the actuator "
-    "(family, DC bus class, temperature sensor and feedback not excluded)"
-)
 
 
 def _compatible(stored: dict[str, Any], model: str) -> dict[int, str]:
@@ -185,11 +192,7 @@ def _controller_description(
     repository = ProtectionRepository(session)
     record = repository.controller(row)
     if record is None:
-        raise invalid(
-            loc,
-            f"Table 521.1 (and the catalogue) has no active controller in row {row}",
-            "unknown_controller",
-        )
+        raise invalid(loc, "unknown_controller", row=row)
     controller = record.controller
     compatible = _compatible(stored, model)
     level = compatible.get(row)
@@ -205,14 +208,17 @@ def _controller_description(
             if interface is not None
             else []
         )
-        listed = ", ".join(str(r) for r in sorted(compatible)[:12])
+        listed = sorted(compatible)[:SHOWN_ROWS]
         raise invalid(
             loc,
-            f"{controller.name} (row {row}) is not a controller Table 521.1 matches for "
-            f"{model}"
-            + (f": {'; '.join(reasons)}" if reasons else "")
-            + f". Rule: {CONTROLLER_RULE}; rows listed for {model}: {listed or 'none'}",
+            "controller_not_compatible" if reasons else "controller_not_listed",
             "controller_not_compatible",
+            controller=controller.name,
+            row=row,
+            model=model,
+            rule=CONTROLLER_RULE,
+            rows=listed,
+            **({"reasons": "; ".join(reasons)} if reasons else {}),
         )
     return f"Servo controller {item.type_name} ({controller.name}, Table 521.1 row {row}: {level})"
 
@@ -231,15 +237,11 @@ def _new_quote(
     # First, so that the actuator data and the version below come from one snapshot.
     catalogue_version = CatalogueVersionRepository(session).pin()
     if body.valid_until < today:
-        raise invalid(
-            ["body", "valid_until"],
-            f"must be today ({today.isoformat()}) or later",
-            "valid_until_past",
-        )
+        raise invalid(["body", "valid_until"], "valid_until_past", today=today.isoformat())
     stored = stored_answer_json(session, body.selection_id)
     if stored is None:
         raise invalid(
-            ["body", "selection_id"], f"no stored selection {body.selection_id!r}", "unknown"
+            ["body", "selection_id"], "unknown_selection", "unknown", selection_id=body.selection_id
         )
     selection = StoredSelection.model_validate(stored)
     candidate = _candidate(body, selection)
@@ -248,16 +250,12 @@ def _new_quote(
     state = CatalogueAdminRepository(session).state(candidate.model)
     record = CatalogueRepository(session).actuator(candidate.model)
     if state is None or state.retired_at is not None or record is None:
-        raise invalid(
-            model_loc,
-            f"{candidate.model} has been retired from the catalogue and can no longer be quoted",
-            "retired",
-        )
+        raise invalid(model_loc, "retired_not_quoted", "retired", model=candidate.model)
 
     prices = PriceRepository(session)
     is_example = prices.is_example(body.price_list)
     if is_example is None:
-        raise invalid(["body", "price_list"], f"no price list {body.price_list!r}", "unknown")
+        raise invalid(["body", "price_list"], "unknown_price_list", "unknown", name=body.price_list)
     actuator_price = _price(
         prices,
         body=body,
@@ -308,7 +306,8 @@ def _new_quote(
             vat_percent=defaults.vat_percent if body.vat_percent is None else body.vat_percent,
         )
     except InvalidInputError as exc:
-        raise invalid(["body", *exc.field.split(".")], exc.message, "invalid_amount") from None
+        loc: list[str | int] = ["body", *exc.field.split(".")]
+        raise invalid_worded(loc, exc.message, "invalid_amount") from None
     return NewQuote(
         created_at=now,
         valid_until=body.valid_until,
@@ -413,7 +412,7 @@ def search_quotes(session: Session, search: QuoteSearch) -> QuoteListOut:
 def _quote(session: Session, number: str, *, for_update: bool = False) -> QuoteRecord:
     record = QuoteRepository(session).by_number(number, for_update=for_update)
     if record is None:
-        raise not_found(["path", "number"], f"no quote {number!r}")
+        raise not_found(["path", "number"], "unknown_quote", number=number)
     return record
 
 
@@ -428,7 +427,7 @@ def change_status(session: Session, number: str, target: QuoteStatus, *, now: da
     try:
         transition(record.status, target, valid_until=record.valid_until, today=now.date())
     except IllegalTransitionError as exc:
-        raise conflict(["body", "status"], exc.message, "illegal_transition") from None
+        raise conflict_worded(["body", "status"], exc.message, "illegal_transition") from None
     QuoteRepository(session).set_status(number, target, now=now)
     return _out(_quote(session, number), now.date())
 

@@ -101,7 +101,7 @@ def selection_report(session: Session, selection_id: str) -> SelectionReport:
     """The report of a stored selection; 404 when there is none."""
     stored = stored_answer_json(session, selection_id)
     if stored is None:
-        raise not_found(["path", "selection_id"], f"no selection {selection_id!r}")
+        raise not_found(["path", "selection_id"], "unknown_selection", selection_id=selection_id)
     return SelectionReport(StoredSelection.model_validate(stored))
 
 

@@ -1,0 +1,100 @@
+"""The rules the use cases enforce: a stable code for each, and its English template.
+
+An error a use case raises (:mod:`services.errors`) names its rule by code and the values
+the rule's message names as params; the API renders the template in the request's
+language from the gettext catalogs under ``locale/`` (``api/messages.py``), where the
+templates are the msgids, and answers the code and params beside the text. Words among
+the params (the kind of price) are :class:`~actuator_selection.core.messages.Text`, so
+they are translated too. Codes are part of the API contract: add new ones, never rename
+or reuse one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Final
+
+from actuator_selection.core.messages import N_, Text
+
+USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
+    # Batches (services/batch.py)
+    "too_many_candidates": N_(
+        "cases × top must be ≤ {max}, got {cases} × {top}: ask for fewer candidates or send "
+        "fewer cases"
+    ),
+    "too_many_with_controllers": N_(
+        "with controllers, cases × top must be ≤ {max}, got {cases} × {top}: each candidate "
+        "then lists every controller not excluded; leave include_controllers false or send "
+        "fewer cases"
+    ),
+    "too_many_to_store": N_(
+        "store: true takes at most {max} cases per request, got {cases}: send the rest in "
+        "further requests"
+    ),
+    "length_mismatch": N_(
+        "needs one value per load case: {cases}, as many as speed_rpm has, got {length}"
+    ),
+    # The catalogue (services/catalogue_admin.py) and what names it
+    "unknown_actuator": N_("unknown actuator model '{model}'"),
+    "unknown_controller_row": N_("no controller in row {row}"),
+    "path_mismatch": N_("must be '{value}', as in the path"),
+    "actuator_retired": N_(
+        "actuator '{model}' is retired; PUT /actuators/{model} brings it back first"
+    ),
+    "actuator_exists": N_(
+        "actuator '{model}' exists (retired ones too); PUT /actuators/{model} replaces it"
+    ),
+    "controller_exists": N_(
+        "controller row {row} exists (retired ones too); PUT /controllers/{row} replaces it"
+    ),
+    # Stored selections (services/reports.py, services/quotes.py)
+    "unknown_selection": N_("no stored selection '{selection_id}'"),
+    # Quotes (services/quotes.py)
+    "unknown_price_list": N_("no price list '{name}'"),
+    "unknown_quote": N_("no quote '{number}'"),
+    "idempotency_key_reused": N_(
+        "this key was used for quote {number} with a different request body; use a new key "
+        "for a new quote"
+    ),
+    "valid_until_past": N_("must be today ({today}) or later"),
+    "not_a_candidate": N_(
+        "'{model}' is not a candidate of selection {selection_id}; its usable candidates "
+        "include {models}"
+    ),
+    "no_usable_candidate": N_(
+        "'{model}' is not a candidate of selection {selection_id}, which has no usable candidate"
+    ),
+    "unsuitable": N_("{model} is unsuitable for this load case and cannot be quoted: {reasons}"),
+    "retired_not_quoted": N_(
+        "{model} has been retired from the catalogue and can no longer be quoted"
+    ),
+    "no_price": N_("the price list '{price_list}' has no {kind} price for '{item}' valid on {day}"),
+    "currency_mismatch": N_(
+        "{item} is priced in {currencies}, not in {currency} (one currency per quote)"
+    ),
+    "currency_required": N_("{item} is priced in {currencies}: choose one"),
+    "unknown_controller": N_(
+        "Table 521.1 (and the catalogue) has no active controller in row {row}"
+    ),
+    "controller_not_compatible": N_(
+        "{controller} (row {row}) is not a controller Table 521.1 matches for {model}: "
+        "{reasons}. Rule: {rule}; rows listed for {model}: {rows}"
+    ),
+    "controller_not_listed": N_(
+        "{controller} (row {row}) is not a controller Table 521.1 matches for {model}. "
+        "Rule: {rule}; rows listed for {model}: {rows}"
+    ),
+}
+"""Code → English template of every rule a use case raises."""
+
+PRICE_KINDS: Final[Mapping[str, Text]] = {
+    "actuator": N_("actuator"),
+    "controller": N_("controller"),
+}
+"""The kinds of priced item, in words (the ``kind`` of ``no_price``)."""
+
+CONTROLLER_RULE: Final = N_(
+    "the controller must be one the selection lists for the actuator (family, DC bus "
+    "class, temperature sensor and feedback not excluded)"
+)
+"""The rule a quoted controller follows (Table 521.1), in words."""
