@@ -295,8 +295,22 @@ def test_status_flow(api: SalesApi, selection_id: str) -> None:
 
     refused = move("accepted")
     assert refused.status_code == 409
-    assert refused.json()["detail"][0]["loc"] == ["body", "status"]
-    assert "draft" in refused.json()["detail"][0]["msg"]
+    (entry,) = refused.json()["detail"]
+    assert (entry["loc"], entry["type"]) == (["body", "status"], "illegal_transition")
+    assert (entry["code"], entry["params"]) == (
+        "quote_transition",
+        {"status": "draft", "target": "accepted", "allowed": ["sent"]},
+    )
+    assert entry["msg"] == "a quote in status 'draft' cannot move to 'accepted'; allowed: 'sent'"
+    german = api.post(
+        f"/api/v1/quotes/{number}/status",
+        json={"status": "accepted"},
+        extra={"Accept-Language": "de"},
+    ).json()["detail"][0]
+    assert german["params"] == entry["params"]
+    assert german["msg"] == (
+        "ein Angebot im Status 'draft' kann nicht nach 'accepted' wechseln; erlaubt: 'sent'"
+    )
     assert move("rejected").status_code == 409
     sent = move("sent")
     assert sent.status_code == 200
@@ -310,6 +324,7 @@ def test_status_flow(api: SalesApi, selection_id: str) -> None:
     assert (accepted.json()["status"], accepted.json()["allowed_transitions"]) == ("accepted", [])
     for status in ("rejected", "sent", "accepted"):
         assert move(status).status_code == 409
+    assert move("sent").json()["detail"][0]["code"] == "quote_final"
     assert move("expired").status_code == 422
     assert move("draft").status_code == 422
     assert api.get(f"/api/v1/quotes/{number}").json()["status"] == "accepted"

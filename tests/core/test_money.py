@@ -77,22 +77,23 @@ def test_bad_discount_is_refused(percent: str) -> None:
 
 
 @pytest.mark.parametrize(
-    ("text", "rule"),
+    ("text", "rule", "code"),
     [
-        ("-1", "≥ 0"),
-        ("1.001", "2 decimal places"),
-        ("1e3", "such as 1234.50"),
-        ("NaN", "such as 1234.50"),
-        ("1,000.00", "such as 1234.50"),
-        ("", "such as 1234.50"),
-        (str(MAX_AMOUNT + 1), "≤"),
+        ("-1", "≥ 0", "amount_negative"),
+        ("1.001", "2 decimal places", "cents"),
+        ("1e3", "such as 1234.50", "decimal_format"),
+        ("NaN", "such as 1234.50", "decimal_format"),
+        ("1,000.00", "such as 1234.50", "decimal_format"),
+        ("", "such as 1234.50", "decimal_format"),
+        (str(MAX_AMOUNT + 1), "≤", "amount_max"),
     ],
 )
-def test_bad_amounts_are_refused(text: str, rule: str) -> None:
+def test_bad_amounts_are_refused(text: str, rule: str, code: str) -> None:
     with pytest.raises(InvalidInputError) as caught:
         parse_amount(text, field="unit_price")
     assert caught.value.field == "unit_price"
     assert rule in caught.value.message
+    assert caught.value.code == code  # the rule by name, for the API's words
 
 
 def test_amount_text_keeps_cents() -> None:

@@ -37,11 +37,10 @@ from actuator_selection.core import check_messages
 from actuator_selection.core.check_messages import CHECK_MESSAGES, CHECK_WORDS
 from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, BRAKE_RULES, DRIVE_RULES
 from actuator_selection.core.messages import MESSAGES as DOMAIN_MESSAGES
-from actuator_selection.core.messages import N_, Text
+from actuator_selection.core.messages import N_, Text, listed
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
 from actuator_selection.schemas.quantities import QUANTITY_MESSAGES
 from actuator_selection.schemas.selections import LOAD_TYPES
-from actuator_selection.services.errors import listed
 from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS, USE_CASE_MESSAGES
 
 LANGUAGES: Final = ("en", "de")
@@ -233,7 +232,7 @@ def all_templates() -> dict[str, str]:
 # --- rendering ------------------------------------------------------------------------
 
 
-def _number(value: float, language: str) -> str:
+def _number(value: float | Decimal, language: str) -> str:
     if not math.isfinite(value):
         return repr(value)
     return str(
@@ -247,7 +246,7 @@ def _shown(key: str, value: Any, language: str) -> str:
         return translate(value, language)
     if isinstance(value, bool):
         return "true" if value else "false"
-    if isinstance(value, int | float):
+    if isinstance(value, int | float | Decimal):
         return _number(value, language)
     if isinstance(value, list | tuple):
         return listed(value, lambda v: _shown(key, v, language))

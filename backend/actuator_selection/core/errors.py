@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, Self
 
-from actuator_selection.core.messages import MESSAGES
+from actuator_selection.core.messages import MESSAGES, english
 
 
 class DomainError(ValueError):
@@ -59,7 +59,7 @@ class DomainError(ValueError):
             if code is None:
                 raise TypeError("a DomainError needs a message or a code")
             self.template = MESSAGES[code]
-            message = self.template.format(**self.params)
+            message = english(self.template, self.params)
         super().__init__(f"{field}: {message}")
         self.field = field
         self.message = message

@@ -14,14 +14,24 @@ Codes are part of the API contract: add new ones, never rename or reuse one.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from typing import Final
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any, Final
 
 
 class Text(str):
     """A parameter in words (English), translated where the message is rendered."""
 
     __slots__ = ()
+
+
+def listed(values: Sequence[object], shown: Callable[[Any], str] = str) -> str:
+    """A list as a message shows it: words quoted, other values as ``shown`` writes them,
+    no value as a dash.
+
+    >>> listed(["EUR", "USD"]), listed([3, 7]), listed([])
+    ("'EUR', 'USD'", '3, 7', '–')
+    """
+    return ", ".join(f"'{v}'" if isinstance(v, str) else shown(v) for v in values) or "–"
 
 
 def N_(text: str) -> Text:  # noqa: N802 (gettext's name for "mark for translation")
@@ -72,5 +82,29 @@ MESSAGES: Final[Mapping[str, str]] = {
     ),
     "ratio_too_small": N_("is so small that J/i² has no value: no real gear"),
     "ratio_too_large": N_("is so large that the load vanishes behind it (underflow): no real gear"),
+    # Money and quotes (core/money.py, core/quote_status.py)
+    "decimal_format": N_("must be a decimal number such as 1234.50"),
+    "decimal_finite": N_("must be a finite decimal number"),
+    "amount_negative": N_("must be ≥ 0"),
+    "cents": N_("must have at most 2 decimal places"),
+    "amount_max": N_("must be ≤ {max}"),
+    "subtotal_max": N_("the subtotal must be ≤ {max}"),
+    "percent_range": N_("must be between 0 and 100"),
+    "currency_code": N_(
+        "must be an ISO 4217 code of three capital letters such as EUR, got '{value}'"
+    ),
+    "quantity_range": N_("must be a whole number from 1 to {max}"),
+    "quote_expired": N_("the quote expired after {valid_until} and cannot move to '{target}'"),
+    "quote_transition": N_(
+        "a quote in status '{status}' cannot move to '{target}'; allowed: {allowed}"
+    ),
+    "quote_final": N_("a quote in status '{status}' is final and cannot move to '{target}'"),
 }
 """Code → English template of every rule the core raises with a code."""
+
+
+def english(template: str, params: Mapping[str, Any]) -> str:
+    """``template`` filled with ``params`` in English, lists as :func:`listed` writes them."""
+    return template.format_map(
+        {k: listed(v) if isinstance(v, list | tuple) else v for k, v in params.items()}
+    )

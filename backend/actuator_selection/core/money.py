@@ -74,20 +74,20 @@ def parse_amount(text: str, *, field: str = "amount") -> Decimal:
     """
     text = text.strip()
     if not _DECIMAL.fullmatch(text):
-        raise InvalidInputError(field, "must be a decimal number such as 1234.50")
+        raise InvalidInputError(field, code="decimal_format")
     return check_amount(Decimal(text), field=field)
 
 
 def check_amount(value: Decimal, *, field: str = "amount") -> Decimal:
     """``value`` as a whole number of cents, or :class:`InvalidInputError` naming the rule."""
     if not value.is_finite():
-        raise InvalidInputError(field, "must be a finite decimal number")
+        raise InvalidInputError(field, code="decimal_finite")
     if value < 0:
-        raise InvalidInputError(field, "must be ≥ 0")
+        raise InvalidInputError(field, code="amount_negative")
     if value != value.quantize(CENT, rounding=ROUND_HALF_UP):
-        raise InvalidInputError(field, "must have at most 2 decimal places")
+        raise InvalidInputError(field, code="cents")
     if value > MAX_AMOUNT:
-        raise InvalidInputError(field, f"must be ≤ {MAX_AMOUNT}")
+        raise InvalidInputError(field, code="amount_max", params={"max": MAX_AMOUNT})
     return value.quantize(CENT)
 
 
@@ -102,9 +102,9 @@ def check_percent(value: Decimal, *, field: str = "discount_percent") -> Decimal
     actuator_selection.core.errors.InvalidInputError: discount_percent: must be between 0 and 100
     """
     if not value.is_finite() or value < 0 or value > HUNDRED:
-        raise InvalidInputError(field, "must be between 0 and 100")
+        raise InvalidInputError(field, code="percent_range")
     if value != value.quantize(CENT, rounding=ROUND_HALF_UP):
-        raise InvalidInputError(field, "must have at most 2 decimal places")
+        raise InvalidInputError(field, code="cents")
     return value.quantize(CENT)
 
 
@@ -119,9 +119,7 @@ def check_currency(code: str, *, field: str = "currency") -> str:
     actuator_selection.core.errors.InvalidInputError: currency: must be an ISO 4217 code of three capital letters such as EUR, got 'eur'
     """  # noqa: E501
     if not _CURRENCY.fullmatch(code):
-        raise InvalidInputError(
-            field, f"must be an ISO 4217 code of three capital letters such as EUR, got {code!r}"
-        )
+        raise InvalidInputError(field, code="currency_code", params={"value": code})
     return code
 
 
@@ -135,7 +133,7 @@ class QuoteLine:
     def __post_init__(self) -> None:
         check_amount(self.unit_price, field="unit_price")
         if isinstance(self.quantity, bool) or not 1 <= self.quantity <= MAX_QUANTITY:
-            raise InvalidInputError("quantity", f"must be a whole number from 1 to {MAX_QUANTITY}")
+            raise InvalidInputError("quantity", code="quantity_range", params={"max": MAX_QUANTITY})
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -174,7 +172,7 @@ def quote_totals(lines: Sequence[QuoteLine], *, discount_percent: Decimal) -> Qu
     totals = tuple(line_total(line) for line in lines)
     subtotal = sum(totals, Decimal("0.00"))
     if subtotal > MAX_AMOUNT:
-        raise InvalidInputError("items", f"the subtotal must be ≤ {MAX_AMOUNT}")
+        raise InvalidInputError("items", code="subtotal_max", params={"max": MAX_AMOUNT})
     discount = to_cents(subtotal * percent / HUNDRED)
     return QuoteTotals(
         line_totals=totals,

@@ -14,13 +14,15 @@ final. Every other move is illegal.
 ...            valid_until=date(2026, 12, 31), today=date(2026, 12, 1))
 Traceback (most recent call last):
 ...
-actuator_selection.core.quote_status.IllegalTransitionError: a draft quote cannot become accepted; allowed: sent
+actuator_selection.core.quote_status.IllegalTransitionError: status: a quote in status 'draft' cannot move to 'accepted'; allowed: 'sent'
 """  # noqa: E501
 
 from __future__ import annotations
 
 from datetime import date
 from enum import StrEnum
+
+from actuator_selection.core.errors import ConflictError
 
 
 class QuoteStatus(StrEnum):
@@ -53,14 +55,18 @@ TRANSITIONS: dict[QuoteStatus, frozenset[QuoteStatus]] = {
 _EXPIRING = frozenset({QuoteStatus.DRAFT, QuoteStatus.SENT})
 
 
-class IllegalTransitionError(ValueError):
-    """A status change the flow does not allow (the API answers 409 Conflict)."""
+class IllegalTransitionError(ConflictError):
+    """A status change the flow does not allow (the API answers 409 Conflict); its rule by
+    code (``quote_expired``, ``quote_transition``, ``quote_final``)."""
 
-    def __init__(self, current: QuoteStatus, target: QuoteStatus, message: str) -> None:
-        super().__init__(message)
+    def __init__(
+        self, current: QuoteStatus, target: QuoteStatus, code: str, **params: object
+    ) -> None:
+        super().__init__(
+            "status", code=code, params={"status": str(current), "target": str(target), **params}
+        )
         self.current = current
         self.target = target
-        self.message = message
 
 
 def effective_status(stored: QuoteStatus, *, valid_until: date, today: date) -> QuoteStatus:
@@ -94,15 +100,16 @@ def transition(
     ...            valid_until=date(2026, 12, 31), today=date(2027, 1, 1))
     Traceback (most recent call last):
     ...
-    actuator_selection.core.quote_status.IllegalTransitionError: the quote expired after 2026-12-31 and cannot become accepted
+    actuator_selection.core.quote_status.IllegalTransitionError: status: the quote expired after 2026-12-31 and cannot move to 'accepted'
     """  # noqa: E501
     now = effective_status(stored, valid_until=valid_until, today=today)
     if target in TRANSITIONS[now]:
         return target
     if now is QuoteStatus.EXPIRED:
-        message = f"the quote expired after {valid_until.isoformat()} and cannot become {target}"
-    else:
-        allowed = ", ".join(s for s in QuoteStatus if s in TRANSITIONS[now]) or "none (final)"
-        article = "an" if now[0] in "aeiou" else "a"
-        message = f"{article} {now} quote cannot become {target}; allowed: {allowed}"
-    raise IllegalTransitionError(now, target, message)
+        raise IllegalTransitionError(
+            now, target, "quote_expired", valid_until=valid_until.isoformat()
+        )
+    allowed = [str(s) for s in QuoteStatus if s in TRANSITIONS[now]]
+    if not allowed:
+        raise IllegalTransitionError(now, target, "quote_final")
+    raise IllegalTransitionError(now, target, "quote_transition", allowed=allowed)

@@ -12,11 +12,12 @@ rule, 404 for an unknown resource, 409 for a state that does not allow the reque
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 from actuator_selection.core.csvio import CatalogueFileError, Problem
 from actuator_selection.core.errors import DomainError
+from actuator_selection.core.messages import english
 from actuator_selection.services.messages import USE_CASE_MESSAGES
 
 Loc = list[str | int]
@@ -27,10 +28,9 @@ def entry(loc: Loc, type_: str, code: str, **params: Any) -> dict[str, Any]:
     over ``params``. ``msg`` is its English text; the API renders the template in the
     request's language (the private key ``_template``)."""
     template = USE_CASE_MESSAGES[code]
-    shown = {k: listed(v) if isinstance(v, list) else v for k, v in params.items()}
     return {
         "loc": loc,
-        "msg": template.format_map(shown),
+        "msg": english(template, params),
         "type": type_,
         "code": code,
         "params": params,
@@ -38,14 +38,19 @@ def entry(loc: Loc, type_: str, code: str, **params: Any) -> dict[str, Any]:
     }
 
 
-def listed(values: Sequence[object], shown: Callable[[Any], str] = str) -> str:
-    """A list as a message shows it: words quoted, other values as ``shown`` writes them,
-    no value as a dash.
-
-    >>> listed(["EUR", "USD"]), listed([3, 7]), listed([])
-    ("'EUR', 'USD'", '3, 7', '–')
-    """
-    return ", ".join(f"'{v}'" if isinstance(v, str) else shown(v) for v in values) or "–"
+def ruled(loc: Loc, exc: DomainError, type_: str) -> dict[str, Any]:
+    """The entry of a core rule broken at ``loc``: its code, params and template where the
+    core names the rule by code, else its text as it is (:func:`worded`)."""
+    if exc.template is None or exc.code is None:
+        return worded(loc, exc.message, type_)
+    return {
+        "loc": loc,
+        "msg": exc.message,
+        "type": type_,
+        "code": exc.code,
+        "params": exc.params,
+        "_template": exc.template,
+    }
 
 
 def worded(loc: Loc, msg: str, type_: str) -> dict[str, Any]:
@@ -82,14 +87,14 @@ def conflict(loc: Loc, code: str, type_: str, **params: Any) -> UseCaseError:
     return UseCaseError([entry(loc, type_, code, **params)], http_status=409)
 
 
-def invalid_worded(loc: Loc, msg: str, type_: str) -> UseCaseError:
-    """422 in words found elsewhere (:func:`worded`)."""
-    return UseCaseError([worded(loc, msg, type_)])
+def invalid_rule(loc: Loc, exc: DomainError, type_: str) -> UseCaseError:
+    """422: the request breaks the core's rule ``exc`` at ``loc`` (:func:`ruled`)."""
+    return UseCaseError([ruled(loc, exc, type_)])
 
 
-def conflict_worded(loc: Loc, msg: str, type_: str) -> UseCaseError:
-    """409 in words found elsewhere (:func:`worded`)."""
-    return UseCaseError([worded(loc, msg, type_)], http_status=409)
+def conflict_rule(loc: Loc, exc: DomainError, type_: str) -> UseCaseError:
+    """409: the stored state does not allow the request by the core's rule ``exc``."""
+    return UseCaseError([ruled(loc, exc, type_)], http_status=409)
 
 
 def problem_entry(problem: Problem) -> dict[str, Any]:

@@ -62,9 +62,9 @@ from actuator_selection.schemas.quotes import (
 )
 from actuator_selection.services.errors import (
     UseCaseError,
-    conflict_worded,
+    conflict_rule,
     invalid,
-    invalid_worded,
+    invalid_rule,
     not_found,
 )
 from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS
@@ -307,7 +307,7 @@ def _new_quote(
         )
     except InvalidInputError as exc:
         loc: list[str | int] = ["body", *exc.field.split(".")]
-        raise invalid_worded(loc, exc.message, "invalid_amount") from None
+        raise invalid_rule(loc, exc, "invalid_amount") from None
     return NewQuote(
         created_at=now,
         valid_until=body.valid_until,
@@ -427,7 +427,7 @@ def change_status(session: Session, number: str, target: QuoteStatus, *, now: da
     try:
         transition(record.status, target, valid_until=record.valid_until, today=now.date())
     except IllegalTransitionError as exc:
-        raise conflict_worded(["body", "status"], exc.message, "illegal_transition") from None
+        raise conflict_rule(["body", "status"], exc, "illegal_transition") from None
     QuoteRepository(session).set_status(number, target, now=now)
     return _out(_quote(session, number), now.date())
 
