@@ -10,7 +10,7 @@ export const API = "/api/v1";
 
 /** A failed request: HTTP status (0 when the server was not reached) and what it said. */
 export class ApiError extends Error {
-  constructor({ status, fieldErrors = [], detail = null, kind = "http" }) {
+  constructor({ status, fieldErrors = [], detail = null, kind = "http", lang = "en" }) {
     super(detail ?? (kind === "bad_response" ? `unexpected answer (HTTP ${status})` : `HTTP ${status}`));
     this.name = "ApiError";
     this.status = status;
@@ -20,6 +20,8 @@ export class ApiError extends Error {
     this.detail = detail;
     /** "http", "network" or "bad_response" */
     this.kind = kind;
+    /** the language the server wrote its words in (its Content-Language) */
+    this.lang = lang;
   }
 }
 
@@ -38,9 +40,9 @@ export function errorFromBody(status, data, lang = "en") {
         lang,
       }));
     const text = fieldErrors.map((e) => e.msg).filter(Boolean).join("; ");
-    return new ApiError({ status, fieldErrors, detail: text || null });
+    return new ApiError({ status, fieldErrors, detail: text || null, lang });
   }
-  if (typeof detail === "string") return new ApiError({ status, detail });
+  if (typeof detail === "string") return new ApiError({ status, detail, lang });
   return new ApiError({ status });
 }
 

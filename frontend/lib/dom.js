@@ -39,9 +39,9 @@ export function sym(text, props = {}) {
   return appendSymbols(h("span", props), text);
 }
 
-/** Text as the API wrote it: English whatever the page's language. */
-export function english(text) {
-  return h("span", { lang: "en" }, text);
+/** Text as the API wrote it, marked with the language it came in (its Content-Language). */
+export function said(text, lang = "en") {
+  return h("span", { lang }, text);
 }
 
 /** A notice box: ``kind`` is "info", "error" or "warn". */

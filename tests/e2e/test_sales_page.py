@@ -356,6 +356,13 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
 
     customer = "Beispiel Maschinenbau GmbH"
     page.fill("#f-customer", customer)
+    # the server's refusal in German, marked as German
+    page.fill("#f-ctrl-name", "Unbekannter Regler")
+    page.fill("#f-ctrl-code", "NO-SUCH-CODE")
+    page.click("#create-quote")
+    refusal = page.locator("#err-controller-item_code span[lang]")
+    expect(refusal).to_contain_text("hat für 'NO-SUCH-CODE' (Servoregler) keinen am")
+    expect(refusal).to_have_attribute("lang", "de")
     page.fill("#f-ctrl-name", "SINAMICS S120, 400 V")
     page.fill("#f-ctrl-code", "CTRL-SINAMICS-S120")
     page.fill("#f-qty", "2")

@@ -7,7 +7,7 @@
 
 import { createClient, encodePath } from "../../lib/api.js";
 import { openCheckLines } from "../../lib/checks.js";
-import { byId, english, h } from "../../lib/dom.js";
+import { byId, h, said } from "../../lib/dom.js";
 import { appendSymbols, dateTime, localeOf, qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
 
@@ -49,7 +49,7 @@ const api = createClient({
 
 /** What to show for a failed request: our words when the server was not reached, else its own. */
 function errorText(error) {
-  return error.status === 0 ? t("sales.network") : english(error.message);
+  return error.status === 0 ? t("sales.network") : said(error.message, error.lang);
 }
 
 // Every text the page writes is given as a function of the language, so that a
@@ -439,12 +439,12 @@ function showErrors(error) {
     const loc = e.loc || [];
     const id =
       loc[0] === "body" ? `err-${loc.slice(1).filter((p) => typeof p === "string").join("-")}` : "";
-    if (id && showFieldError(id, () => english(e.msg))) shown += 1;
+    if (id && showFieldError(id, () => said(e.msg, e.lang))) shown += 1;
     else other.push(e.msg);
   }
   formStatus(() => {
     if (!shown && !other.length) return errorText(error);
-    return [shown ? `${t("sales.form.correct")} ` : null, other.length ? english(other.join(" ")) : null];
+    return [shown ? `${t("sales.form.correct")} ` : null, other.length ? said(other.join(" "), error.lang) : null];
   });
 }
 
