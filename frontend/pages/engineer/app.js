@@ -857,7 +857,7 @@ const WARM_ACTUATOR = {
 /** The page waits this long, untouched, after plotly.js has run before warming it up. */
 const WARM_AFTER_MS = 400;
 
-/** Whether the user has pressed a key or a pointer on the page since it loaded. */
+/** Whether the user has pressed a key or a pointer, or put something in, since the page loaded. */
 let touched = false;
 
 /**
@@ -1050,7 +1050,7 @@ function init() {
   else {
     // the page's own <script> loads plotly.js (else it asks where it is); then, while
     // the user has not started, the charts are warmed up
-    for (const type of ["pointerdown", "keydown"]) {
+    for (const type of ["pointerdown", "keydown", "input"]) {
       document.addEventListener(type, () => (touched = true), { capture: true, once: true });
     }
     loadPlotly().then((Plotly) => window.setTimeout(() => warmCharts(Plotly), WARM_AFTER_MS), () => {});
