@@ -8,6 +8,7 @@ import random
 from typing import Any
 
 import pytest
+import zstandard
 from fastapi.testclient import TestClient
 from sqlalchemy import Connection
 from sqlalchemy.orm import Session
@@ -113,6 +114,14 @@ def test_stored_selection_is_sent_as_stored_compressed_or_not(client: TestClient
     compressed = client.get(url, headers={"Accept-Encoding": "gzip"})
     assert compressed.headers["content-encoding"] == "gzip"
     assert compressed.content == created.content  # httpx decodes it
+    # both accepted: the stored gzip as it is, not compressed again
+    both = client.get(url, headers={"Accept-Encoding": "zstd, gzip"})
+    assert both.headers["content-encoding"] == "gzip"
+    # zstd alone: the stored answer unpacked, and compressed on the way out
+    with client.stream("GET", url, headers={"Accept-Encoding": "zstd"}) as response:
+        assert response.headers["content-encoding"] == "zstd"
+        wire = b"".join(response.iter_raw())
+    assert zstandard.ZstdDecompressor().decompressobj().decompress(wire) == created.content
 
 
 def test_unknown_selection_is_404(client: TestClient) -> None:
