@@ -690,6 +690,69 @@ def test_the_panel_shows_the_lean_candidate_until_its_detail_arrives(page: Page)
     assert "zone-approx" in traces(page, "chart-diagram")  # the detail's catalogue data
 
 
+def test_the_ranking_draws_its_first_rows_and_the_rest_after_the_charts(page: Page) -> None:
+    """The whole catalogue's ranking comes with its first rows; the others follow once the
+    charts are drawn, or as soon as the user reaches for the ranking (its scroll box, its
+    filter), drawn as filtered then and in the answer's order."""
+    held: list[Route] = []
+    detail = re.compile(r"/api/v1/selections/[^/]+/candidates/[^/]+$")
+    page.route(detail, lambda route: held.append(route))  # the diagram waits for the detail
+    page.goto("/")
+    first = int(
+        page.evaluate("async () => (await import('/pages/engineer/results.js')).FIRST_ROWS")
+    )
+    page.locator("#example").click()
+    with page.expect_response(
+        lambda r: r.url.endswith("/api/v1/selections") and r.request.method == "POST"
+    ) as info:
+        page.locator("#submit").click()
+    body = cast(dict[str, Any], info.value.json())
+    models = [c["model"] for c in body["candidates"]]
+    assert len(models) > first
+    table = page.locator("#ranking-table")
+    rows = table.locator("tbody tr")
+    page.wait_for_selector('#chart-cycle[data-state="ready"]')
+    expect(table).to_have_attribute("data-rows", "partial")
+    expect(rows).to_have_count(first)
+    assert rows.evaluate_all("rs => rs.map(r => r.dataset.model)") == models[:first]
+
+    # the filter draws the rest, hidden as it says
+    page.locator('.filter-button[data-filter="unsuitable"]').click()
+    expect(table).to_have_attribute("data-rows", "complete")
+    assert rows.evaluate_all("rs => rs.map(r => r.dataset.model)") == models
+    unsuitable = [c["model"] for c in body["candidates"] if c["verdict"] == "unsuitable"]
+    shown = "rs => rs.filter(r => !r.hidden).map(r => r.dataset.model)"
+    assert rows.evaluate_all(shown) == unsuitable
+    assert rows.nth(len(models) - 1).locator(".rank").inner_text() == str(len(models))
+    for route in held:
+        route.continue_()
+    wait_for_charts(page, models[0])
+
+    # the pointer on the ranking's box draws the rest at once
+    page.unroute(detail)
+    held.clear()
+    page.route(detail, lambda route: held.append(route))
+    page.goto("/")
+    page.locator("#example").click()
+    page.locator("#submit").click()
+    page.wait_for_selector('#chart-cycle[data-state="ready"]')
+    expect(table).to_have_attribute("data-rows", "partial")
+    page.locator(".ranking-card .table-scroll").hover()
+    expect(table).to_have_attribute("data-rows", "complete")
+    expect(rows).to_have_count(len(models))
+    expect(page.locator("#chart-diagram")).to_have_attribute("data-state", "loading")
+    for route in held:
+        route.continue_()
+
+    # left alone, the rest follows the charts
+    page.unroute(detail)
+    page.goto("/")
+    fill_worked_example(page)
+    post_selection(page)
+    expect(table).to_have_attribute("data-rows", "complete")
+    assert rows.evaluate_all("rs => rs.map(r => r.dataset.model)") == models
+
+
 def test_a_detail_that_fails_leaves_the_lean_panel_and_says_so(
     page: Page, traffic: Traffic
 ) -> None:

@@ -18,6 +18,7 @@ import {
   setTransmission,
 } from "./mechanisms.js";
 import {
+  drawRemainingRows,
   fillDetail,
   renderDetail,
   renderLimits,
@@ -620,21 +621,40 @@ function renderResults() {
     return;
   }
   body.append(
-    renderRanking(sel, chosenCandidate().model, state.filter, state.lang, {
-      onChoose: choose,
-      onFilter: (f) => {
-        state.filter = f;
-        applyFilter();
-      },
-      compareCell: (model) => compareToggle(model, state.compare.includes(model), state.lang, toggleCompare),
-      compareStatus: compareStatusText(state.compare, state.lang, state.compareRefused),
-    }),
+    renderRanking(sel, chosenCandidate().model, state.filter, state.lang, rankingOptions(), { rows: "first" }),
     h("div", { id: "compare-slot" }),
     h("div", { id: "detail-slot" }),
   );
   renderComparison();
-  renderChosen();
+  const drawn = renderChosen();
   updateResolved();
+  // the ranking's other rows follow the charts, or come as soon as the user reaches for them
+  drawn.finally(completeRanking);
+  const box = $(".ranking-card .table-scroll");
+  for (const type of ["pointerenter", "focusin", "scroll"]) {
+    box?.addEventListener(type, completeRanking, { once: true, passive: true });
+  }
+}
+
+/** What the ranking's rows do: choose, filter, mark for comparison. */
+function rankingOptions() {
+  return {
+    onChoose: choose,
+    onFilter: (f) => {
+      state.filter = f;
+      applyFilter();
+    },
+    compareCell: (model) => compareToggle(model, state.compare.includes(model), state.lang, toggleCompare),
+    compareStatus: compareStatusText(state.compare, state.lang, state.compareRefused),
+  };
+}
+
+/** The rows a ranking drawn with its first rows still lacks, drawn as things stand now. */
+function completeRanking() {
+  const table = $("#ranking-table");
+  const candidate = chosenCandidate();
+  if (!table || !candidate) return;
+  drawRemainingRows(table, state.selection, candidate.model, state.filter, state.lang, rankingOptions());
 }
 
 // ---------------------------------------------------------------- comparison
@@ -696,6 +716,7 @@ function clearMarks() {
 }
 
 function applyFilter() {
+  completeRanking();
   for (const row of document.querySelectorAll("#ranking-table tbody tr[data-model]")) {
     row.hidden = state.filter !== "all" && row.dataset.verdict !== state.filter;
   }
@@ -718,7 +739,7 @@ function renderChosen() {
     else row.removeAttribute("aria-current");
     row.querySelector(".model-button")?.setAttribute("aria-pressed", String(chosen));
   }
-  drawCharts();
+  return drawCharts();
 }
 
 /** A detail has arrived (or failed): the panel shows it if its candidate is still the chosen one. */

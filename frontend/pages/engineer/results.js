@@ -240,12 +240,91 @@ function checkMarks(sel, candidate, lang) {
   );
 }
 
+/** Rows a ranking is drawn with at once: its box shows about six, the rest can follow. */
+export const FIRST_ROWS = 12;
+
+/** One candidate's row of the ranking, as chosen, filtered and marked now. */
+function rankingRow(sel, c, i, chosenModel, filter, lang, { onChoose, compareCell }) {
+  const t = (k, p) => translate(lang, k, p);
+  const chosen = c.model === chosenModel;
+  return h(
+    "tr",
+    {
+      role: "row",
+      class: `verdict-row verdict-${c.verdict}${chosen ? " chosen" : ""}`,
+      "data-model": c.model,
+      "data-verdict": c.verdict,
+      "aria-current": chosen ? "true" : null,
+      hidden: !shownBy(filter, c),
+    },
+    h("td", { role: "cell", class: "num rank", "data-label": t("table.rank") }, String(i + 1)),
+    compareCell
+      ? h("td", { role: "cell", class: "compare-cell", "data-label": t("compare.column") }, compareCell(c.model))
+      : null,
+    h(
+      "th",
+      { role: "rowheader", scope: "row", class: "model", "data-label": t("table.model") },
+      h(
+        "button",
+        {
+          type: "button",
+          class: "model-button",
+          "aria-pressed": String(chosen),
+          "aria-label": t("table.select", { model: c.model }),
+          onclick: () => onChoose(c.model),
+        },
+        c.model,
+      ),
+    ),
+    h(
+      "td",
+      { role: "cell", class: "verdict", "data-label": t("table.verdict") },
+      verdictBadge(c.verdict, lang),
+      checkMarks(sel, c, lang),
+    ),
+    h(
+      "td",
+      { role: "cell", class: "num", "data-label": plainSymbols("T_1 [Nm]"), "data-field": "accel" },
+      valueCell(c.accel_torque_nm, null, lang),
+    ),
+    h(
+      "td",
+      { role: "cell", class: "num", "data-label": plainSymbols("T_3 [Nm]"), "data-field": "decel" },
+      valueCell(c.decel_torque_nm, null, lang),
+    ),
+    h(
+      "td",
+      { role: "cell", class: "num", "data-label": plainSymbols("T_rms [Nm]"), "data-field": "rms" },
+      valueCell(c.rms_torque_nm, null, lang),
+    ),
+    h("td", { role: "cell", class: "reason", "data-label": t("table.reason") }, reasonList(sel, c, lang, { short: true })),
+  );
+}
+
+const shownBy = (filter, candidate) => filter === "all" || filter === candidate.verdict;
+
+/** How many of the first candidates to draw so that ``FIRST_ROWS`` of them show under ``filter``. */
+function firstRows(candidates, filter) {
+  let shown = 0;
+  for (const [i, c] of candidates.entries()) {
+    if (shownBy(filter, c)) shown += 1;
+    if (shown === FIRST_ROWS) return i + 1;
+  }
+  return candidates.length;
+}
+
 /**
  * The ranked candidates with a verdict filter; ``onChoose(model)`` when a row is picked.
  * ``compareCell(model)`` gives a row's mark for the comparison, ``compareStatus`` the
  * line that says how many are marked (or why a mark was refused).
+ *
+ * With ``{rows: "first"}`` only the first rows are drawn (``FIRST_ROWS`` shown under the
+ * filter), the table says ``data-rows="partial"`` and ``drawRemainingRows`` adds the rest:
+ * the whole catalogue's 64 rows were half the results' first layout, and all but a few
+ * are below the fold of their scroll box.
  */
-export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilter, compareCell, compareStatus }) {
+export function renderRanking(sel, chosenModel, filter, lang, options, { rows = "all" } = {}) {
+  const { onFilter, compareCell, compareStatus } = options;
   const t = (k, p) => translate(lang, k, p);
   const counts = countVerdicts(sel.candidates);
   const filters = h(
@@ -278,66 +357,16 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
       unit ? h("span", { class: "unit" }, ` [${unitText(lang, unit)}]`) : null,
     );
 
-  const rows = sel.candidates.map((c, i) => {
-    const chosen = c.model === chosenModel;
-    const labelled = (key, symbol) => plainSymbols(symbol ? `${symbol}` : t(key));
-    return h(
-      "tr",
-      {
-        role: "row",
-        class: `verdict-row verdict-${c.verdict}${chosen ? " chosen" : ""}`,
-        "data-model": c.model,
-        "data-verdict": c.verdict,
-        "aria-current": chosen ? "true" : null,
-        hidden: filter !== "all" && filter !== c.verdict,
-      },
-      h("td", { role: "cell", class: "num rank", "data-label": t("table.rank") }, String(i + 1)),
-      compareCell
-        ? h("td", { role: "cell", class: "compare-cell", "data-label": t("compare.column") }, compareCell(c.model))
-        : null,
-      h(
-        "th",
-        { role: "rowheader", scope: "row", class: "model", "data-label": t("table.model") },
-        h(
-          "button",
-          {
-            type: "button",
-            class: "model-button",
-            "aria-pressed": String(chosen),
-            "aria-label": t("table.select", { model: c.model }),
-            onclick: () => onChoose(c.model),
-          },
-          c.model,
-        ),
-      ),
-      h(
-        "td",
-        { role: "cell", class: "verdict", "data-label": t("table.verdict") },
-        verdictBadge(c.verdict, lang),
-        checkMarks(sel, c, lang),
-      ),
-      h(
-        "td",
-        { role: "cell", class: "num", "data-label": labelled(null, "T_1 [Nm]"), "data-field": "accel" },
-        valueCell(c.accel_torque_nm, null, lang),
-      ),
-      h(
-        "td",
-        { role: "cell", class: "num", "data-label": labelled(null, "T_3 [Nm]"), "data-field": "decel" },
-        valueCell(c.decel_torque_nm, null, lang),
-      ),
-      h(
-        "td",
-        { role: "cell", class: "num", "data-label": labelled(null, "T_rms [Nm]"), "data-field": "rms" },
-        valueCell(c.rms_torque_nm, null, lang),
-      ),
-      h("td", { role: "cell", class: "reason", "data-label": t("table.reason") }, reasonList(sel, c, lang, { short: true })),
-    );
-  });
-
+  const drawn = rows === "first" ? firstRows(sel.candidates, filter) : sel.candidates.length;
   const table = h(
     "table",
-    { class: "ranking", id: "ranking-table", role: "table" },
+    {
+      class: "ranking",
+      id: "ranking-table",
+      role: "table",
+      "data-selection": sel.id,
+      "data-rows": drawn < sel.candidates.length ? "partial" : "complete",
+    },
     h("caption", {}, t("table.caption")),
     h(
       "thead",
@@ -363,10 +392,10 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
         onclick: (event) => {
           if (event.target.closest("button, a, summary, input, label")) return;
           const row = event.target.closest("tr[data-model]");
-          if (row) onChoose(row.dataset.model);
+          if (row) options.onChoose(row.dataset.model);
         },
       },
-      rows,
+      sel.candidates.slice(0, drawn).map((c, i) => rankingRow(sel, c, i, chosenModel, filter, lang, options)),
     ),
   );
   return h(
@@ -383,6 +412,17 @@ export function renderRanking(sel, chosenModel, filter, lang, { onChoose, onFilt
       table,
     ),
   );
+}
+
+/** The rest of ``sel``'s ranking drawn with its first rows, as chosen, filtered and marked now. */
+export function drawRemainingRows(table, sel, chosenModel, filter, lang, options) {
+  if (table.dataset.rows !== "partial" || table.dataset.selection !== String(sel.id)) return;
+  const body = table.tBodies[0];
+  const start = body.rows.length;
+  body.append(
+    ...sel.candidates.slice(start).map((c, i) => rankingRow(sel, c, start + i, chosenModel, filter, lang, options)),
+  );
+  table.dataset.rows = "complete";
 }
 
 const LEVEL_MARK = { tested: "●", possible: "○", unconfirmed: "?", excluded: "✗", no_data: "?" };
