@@ -15,6 +15,15 @@ with the page and runs after the page's own module (``tests/api/test_static_file
 checks that the page and this module agree); ``/vendor/plotly.js`` says where it is
 for anything that must look it up. Without the installed bundle (or with another
 version than the lock's) its URL answers 503 naming the fix.
+
+The bundle is served behind one added line, V8's explicit compile hint
+``//# allFunctionsCalledOnLoad`` (Chrome and Edge 136+; other engines read a comment):
+the browser compiles all of plotly.js on a background thread while it streams the file,
+instead of compiling each function on the main thread the first time it runs. In a
+lab page (the bundle, then the page's two charts; Chromium's trace, four cold loads)
+lazy compiling (``V8.CompileCode``) was 245 ms of the main thread; with the hint it
+leaves the main thread, which is then free for the user's clicks. The bytes after that
+line are the package's file as installed.
 """
 
 from __future__ import annotations
@@ -37,6 +46,8 @@ PLOTLY_FILE = "plotly-basic.min.js"
 LOCKFILE = REPO_ROOT / "package-lock.json"
 PLOTLY_DIR = REPO_ROOT / "node_modules" / PLOTLY_PACKAGE
 ONE_YEAR_S = 365 * 24 * 3600
+COMPILE_HINT = b"//# allFunctionsCalledOnLoad\n"
+"""V8's magic comment, the first line of the served bundle (https://v8.dev/blog/explicit-compile-hints)."""
 
 
 def locked_version(lockfile: Path = LOCKFILE) -> str:
@@ -55,7 +66,8 @@ class PlotlyNotInstalledError(RuntimeError):
 
 @cache
 def _plotly() -> tuple[bytes, bytes, str]:
-    """The bundle as shipped, gzip-compressed, and its ETag; checked against the lock."""
+    """The bundle as served (the compile hint, then the package's file) raw and
+    gzip-compressed, and its ETag; checked against the lock."""
     try:
         installed = json.loads((PLOTLY_DIR / "package.json").read_text(encoding="utf-8"))
         raw = (PLOTLY_DIR / PLOTLY_FILE).read_bytes()
@@ -66,7 +78,9 @@ def _plotly() -> tuple[bytes, bytes, str]:
             f"{PLOTLY_PACKAGE} {installed.get('version')} is installed, "
             f"package-lock.json pins {PLOTLY_VERSION}"
         )
-    return raw, gzip.compress(raw, compresslevel=9, mtime=0), hashlib.sha256(raw).hexdigest()[:32]
+    served = COMPILE_HINT + raw
+    packed = gzip.compress(served, compresslevel=9, mtime=0)
+    return served, packed, hashlib.sha256(served).hexdigest()[:32]
 
 
 @router.get(PLOTLY_URL)
