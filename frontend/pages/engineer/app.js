@@ -4,7 +4,7 @@
 
 import { ApiError, createClient, encodePath } from "../../lib/api.js";
 import { $, h, notice } from "../../lib/dom.js";
-import { appendSymbols, num, qty } from "../../lib/format.js";
+import { appendSymbols, num, prepareNumbers, qty } from "../../lib/format.js";
 import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
@@ -1065,6 +1065,9 @@ function init() {
       applyLang(button.dataset.lang);
     });
   }
+  // the number format's set-up in the first idle moment, not at the first number typed
+  const idle = window.requestIdleCallback ?? ((run) => window.setTimeout(run, 0));
+  idle(() => prepareNumbers(state.lang));
   const params = new URLSearchParams(window.location.search);
   const id = params.get("selection");
   if (id) openPermalink(id, params.get("model"), (params.get("compare") ?? "").split(",").filter(Boolean));
