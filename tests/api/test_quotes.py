@@ -6,7 +6,7 @@ import json
 import re
 from datetime import UTC, datetime
 from decimal import Decimal
-from typing import Any
+from typing import Any, cast
 
 import pytest
 from sqlalchemy import Connection
@@ -447,6 +447,48 @@ def test_document_is_printable_escaped_and_self_contained(api: SalesApi, selecti
     script = api.client.get("/api/v1/quote-document.js")
     assert script.status_code == 200
     assert "Plotly.newPlot" in script.text
+
+
+def _document_figure(html: str) -> dict[str, Any]:
+    data = re.search(r'<script type="application/json" id="figure-data">(.*?)</script>', html, re.S)
+    assert data is not None
+    return cast(dict[str, Any], json.loads(data.group(1)))
+
+
+@pytest.mark.parametrize(
+    ("model", "edge_field"),
+    [
+        ("FHA-25C-50", "continuous_speed_rpm"),
+        ("CHA-32A-50", "rated_speed_rpm"),
+        ("FHA-8C-30", None),
+    ],
+)
+def test_document_draws_the_continuous_rectangle_the_check_compares_with(
+    api: SalesApi, model: str, edge_field: str | None
+) -> None:
+    """Without a published zone, the diagram's rectangle runs up to the speed the
+    continuous_duty check bounds it by (allowable continuous speed, else rated speed),
+    never to n_max; with neither published it is not drawn, as the check lacks data."""
+    # a load within every model's peaks, so that each can be quoted
+    light = {"speed_rpm": 20, "torque_nm": 0.1, "inertia_kgm2": 0.0005}
+    selection = api.selection(models=[model], load=light)
+    candidate = selection["candidates"][0]
+    duty = next(c for c in candidate["checks"] if c["name"] == "continuous_duty")
+    body = api.quote_body(str(selection["id"]), actuator={"model": model, "quantity": 1})
+    del body["controller"]
+    quote = create(api, body)
+    assert quote.status_code == 201, quote.text
+    html = api.get(f"/api/v1/quotes/{quote.json()['number']}/document").text
+    traces = {t["name"]: t for t in _document_figure(html)["data"]}
+    actuator = api.get(f"/api/v1/actuators/{model}", role=None).json()
+    if edge_field is None:
+        assert duty["status"] == "no_data"
+        assert "continuous limit (approximate)" not in traces
+        return
+    assert duty["approximate"] is True
+    rectangle = traces["continuous limit (approximate)"]
+    assert max(rectangle["x"]) == actuator[edge_field] < actuator["max_speed_rpm"]
+    assert max(rectangle["y"]) == duty["limit"]
 
 
 def test_document_keeps_the_catalogue_as_quoted(api: SalesApi, selection_id: str) -> None:

@@ -286,9 +286,13 @@ def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> 
     catalogue = page.request.get(f"/api/v1/actuators/{best['model']}").json()
     assert catalogue["continuous_duty_zone"] is None
     stall = catalogue["stall_torque_nm"] or catalogue["continuous_torque_nm"]
+    # the rectangle the continuous_duty check compares with: up to the allowable
+    # continuous speed, else the rated speed, never up to n_max (a peak speed)
+    edge = catalogue["continuous_speed_rpm"] or catalogue["rated_speed_rpm"]
+    assert edge < catalogue["max_speed_rpm"]
     zone = traces(page, "chart-diagram")["zone-approx"]
     assert max(zone["y"]) == pytest.approx(stall)
-    assert max(zone["x"]) == pytest.approx(catalogue["max_speed_rpm"])
+    assert max(zone["x"]) == pytest.approx(edge)
     assert any("approximate" in text for text in plot_annotations(page, "chart-diagram"))
     # the approximate check is shown as approximate, with ≈ before its limit
     duty = page.locator('#checks-table tr[data-check="continuous_duty"]')
@@ -912,13 +916,18 @@ def test_figures_module_draws_a_published_zone_and_says_no_data(page: Page) -> N
       const zone = f.diagramFigure(sel, cand, zoneAct, 'en');
       const unchanged = JSON.stringify([sel, cand, zoneAct]) === before;
       const contAct = {max_torque_nm: 8.3, max_speed_rpm: 116, stall_torque_nm: null,
-                       continuous_torque_nm: 2.9, continuous_duty_zone: null};
+                       continuous_torque_nm: 2.9, continuous_duty_zone: null,
+                       continuous_speed_rpm: null, rated_speed_rpm: 60};
       const approx = f.diagramFigure(sel, cand, contAct, 'de');
+      const approxCaption = f.diagramCaption(sel, cand, contAct, 'en');
+      const both = f.diagramFigure(sel, cand, {...contAct, stall_torque_nm: 3.1,
+                                               continuous_speed_rpm: 40}, 'en');
+      const noSpeed = f.diagramFigure(sel, cand, {...contAct, rated_speed_rpm: null}, 'en');
       const none = f.diagramFigure(sel, cand, {max_torque_nm: 151, max_speed_rpm: 90}, 'en');
       const noActuator = f.diagramFigure(sel, cand, null, 'en');
       const noTorques = f.cycleFigure(sel, {model: 'Y', accel_torque_nm: null,
         constant_torque_nm: null, decel_torque_nm: null, rms_torque_nm: null, checks: []}, 'de');
-      return {zone, approx, none, noActuator, noTorques, unchanged};
+      return {zone, approx, approxCaption, both, noSpeed, none, noActuator, noTorques, unchanged};
     }"""
         ),
     )
@@ -933,13 +942,21 @@ def test_figures_module_draws_a_published_zone_and_says_no_data(page: Page) -> N
     assert "zone-approx" not in zone
     assert zone["operating-point"]["x"] == [6.15]
 
+    # without a zone: the check's rectangle, up to the rated speed (not n_max = 116)
     approx = by_uid(result["approx"])
     assert approx["zone-approx"]["y"] == [0, 2.9, 2.9, 0, 0]
-    assert approx["zone-approx"]["x"] == [0, 0, 116, 116, 0]
+    assert approx["zone-approx"]["x"] == [0, 0, 60, 60, 0]
     assert "näherungsweise" in approx["zone-approx"]["name"]
+    assert "Nenndrehzahl" in approx["zone-approx"]["name"]
     assert result["approx"]["layout"]["separators"] == ",."
+    assert "rated speed = 60" in result["approxCaption"]
+    # T_0 before the allowable continuous torque, the continuous speed before the rated one
+    both = by_uid(result["both"])
+    assert both["zone-approx"]["y"] == [0, 3.1, 3.1, 0, 0]
+    assert both["zone-approx"]["x"] == [0, 0, 40, 40, 0]
+    assert "and allowable continuous speed" in both["zone-approx"]["name"]
 
-    for case in ("none", "noActuator"):
+    for case in ("noSpeed", "none", "noActuator"):
         fig = result[case]
         uids = {t["uid"] for t in fig["data"]}
         assert not uids & {"zone", "zone-approx"}, case

@@ -154,6 +154,26 @@ def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
     return next((c for c in checks if c.name == name), None)
 
 
+def continuous_speed_edge(actuator: Mapping[str, Any]) -> float | None:
+    """The speed up to which the approximate continuous-duty rectangle holds, as the
+    continuous_duty check bounds it (``core.checks._continuous_speed``): the allowable
+    continuous speed, else the rated speed; never n_max, a peak speed. None where the
+    quoted catalogue entry has neither (the check then lacks data).
+
+    >>> continuous_speed_edge({"continuous_speed_rpm": 40.0, "rated_speed_rpm": 60.0})
+    40.0
+    >>> continuous_speed_edge({"continuous_speed_rpm": None, "rated_speed_rpm": 60.0})
+    60.0
+    >>> continuous_speed_edge({"max_speed_rpm": 120.0}) is None
+    True
+    """
+    for key in ("continuous_speed_rpm", "rated_speed_rpm"):
+        value = actuator.get(key)
+        if value is not None:
+            return float(value)
+    return None
+
+
 def speed_torque_figure(
     candidate: StoredCandidate,
     selection: StoredSelection,
@@ -192,8 +212,12 @@ def speed_torque_figure(
                 fillcolor="rgba(46,139,87,0.22)",
             )
         )
-    elif continuous is not None and continuous.limit is not None and continuous.approximate:
-        edge_speed = n_max or n_av
+    elif (
+        continuous is not None
+        and continuous.limit is not None
+        and continuous.approximate
+        and (edge_speed := continuous_speed_edge(actuator)) is not None
+    ):
         fig.add_trace(
             go.Scatter(
                 x=[0, 0, edge_speed, edge_speed, 0],

@@ -273,12 +273,32 @@ function checkStatus(candidate, name) {
 }
 
 /**
+ * The rectangle that stands for the continuous-duty zone where the catalogue has none,
+ * as the continuous_duty check bounds it (core/checks.py ``_continuous_limit``,
+ * ``_continuous_speed``): T_0, else the allowable continuous torque; up to the allowable
+ * continuous speed, else the rated speed. A missing value is null.
+ */
+function approximateZone(actuator, t) {
+  const stall = actuator?.stall_torque_nm;
+  const continuousSpeed = actuator?.continuous_speed_rpm;
+  return {
+    torque: isNum(stall) ? stall : (actuator?.continuous_torque_nm ?? null),
+    what: isNum(stall) ? t("fig.stall") : t("fig.continuous"),
+    speed: isNum(continuousSpeed) ? continuousSpeed : (actuator?.rated_speed_rpm ?? null),
+    speedWhat: isNum(continuousSpeed) ? t("fig.continuous_speed") : t("fig.rated_speed"),
+  };
+}
+
+/**
  * Fig. 517.1: the speed/torque diagram of ``actuator`` with the candidate's points.
  *
  * The continuous-duty zone from ``actuator.continuous_duty_zone`` where the
  * catalogue has one; else the approximate rectangle up to T_0
- * (``stall_torque_nm``, else ``continuous_torque_nm``) and n_max, marked
- * approximate; else "no data". T_max and n_max as limit lines; the operating
+ * (``stall_torque_nm``, else ``continuous_torque_nm``) and the allowable continuous
+ * speed (``continuous_speed_rpm``, else ``rated_speed_rpm``), marked approximate: the
+ * rectangle the continuous_duty check compares with (core/checks.py
+ * ``_continuous_limit``, ``_continuous_speed``), never up to n_max, a peak speed;
+ * else "no data", as the check says. T_max and n_max as limit lines; the operating
  * point (n_av, T_rms) and the peaks (n_2, T_1), (n_2, |T_3|). ``actuator`` may be
  * null when the catalogue record could not be read.
  */
@@ -294,10 +314,7 @@ export function diagramFigure(selection, candidate, actuator, lang) {
   const zone = Array.isArray(actuator?.continuous_duty_zone)
     ? sortedZone(actuator.continuous_duty_zone)
     : [];
-  const stall = actuator?.stall_torque_nm;
-  const continuous = actuator?.continuous_torque_nm;
-  const approxTorque = isNum(stall) ? stall : continuous;
-  const approxWhat = isNum(stall) ? t("fig.stall") : t("fig.continuous");
+  const { torque: approxTorque, speed: approxSpeed, what: approxWhat, speedWhat } = approximateZone(actuator, t);
 
   const layout = baseLayout(lang);
   layout.xaxis = axis(t("fig.speed"));
@@ -322,22 +339,23 @@ export function diagramFigure(selection, candidate, actuator, lang) {
     });
     xs.push(last.speed_rpm);
     ys.push(...zone.map((p) => p.torque_nm));
-  } else if (isNum(approxTorque) && isNum(nMax)) {
+  } else if (isNum(approxTorque) && isNum(approxSpeed)) {
     data.push({
       uid: "zone-approx",
-      name: plotlySymbols(t("fig.zone_approx", { what: approxWhat })),
+      name: plotlySymbols(t("fig.zone_approx", { what: approxWhat, speed: speedWhat })),
       type: "scatter",
       mode: "lines",
-      x: [0, 0, nMax, nMax, 0],
+      x: [0, 0, approxSpeed, approxSpeed, 0],
       y: [0, approxTorque, approxTorque, 0, 0],
       fill: "toself",
       fillcolor: COLORS.zone,
       line: { color: COLORS.zoneLine, width: 2, dash: "dash" },
       hovertemplate: hover(lang, "rpm", "Nm"),
     });
+    xs.push(approxSpeed);
     ys.push(approxTorque);
     layout.annotations.push({
-      x: nMax / 2,
+      x: approxSpeed / 2,
       y: approxTorque,
       xref: "x",
       yref: "y",
@@ -482,14 +500,15 @@ export function cycleCaption(selection, candidate, lang) {
 export function diagramCaption(selection, candidate, actuator, lang) {
   const q = (v, u) => qty(v, u, lang);
   const hasZone = Array.isArray(actuator?.continuous_duty_zone) && actuator.continuous_duty_zone.length >= 2;
-  const stall = actuator?.stall_torque_nm;
-  const approx = isNum(stall) ? stall : actuator?.continuous_torque_nm;
+  const approx = approximateZone(actuator, (key, params) => translate(lang, key, params));
   let zone;
   if (hasZone) zone = translate(lang, "fig.caption.zone");
-  else if (isNum(approx) && isNum(actuator?.max_speed_rpm)) {
+  else if (isNum(approx.torque) && isNum(approx.speed)) {
     zone = translate(lang, "fig.caption.approx", {
-      what: isNum(stall) ? translate(lang, "fig.stall") : translate(lang, "fig.continuous"),
-      value: q(approx, "Nm"),
+      what: approx.what,
+      value: q(approx.torque, "Nm"),
+      speed: approx.speedWhat,
+      speedValue: q(approx.speed, "rpm"),
     });
   } else zone = translate(lang, "fig.caption.nodata");
   const t3 = candidate.decel_torque_nm;
