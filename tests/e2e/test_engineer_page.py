@@ -15,7 +15,7 @@ from typing import Any, cast
 from urllib.parse import quote
 
 import pytest
-from playwright.sync_api import Browser, Page, Route, ViewportSize, expect
+from playwright.sync_api import Browser, Page, Response, Route, ViewportSize, expect
 
 from .conftest import DESKTOP, PHONE, Traffic
 
@@ -79,13 +79,18 @@ def fill_cycle(page: Page, t1: str, t2: str, t3: str, tp: str) -> None:
         page.locator(field).fill(value)
 
 
-def post_selection(page: Page) -> tuple[int, dict[str, Any]]:
-    """Press the submit button; the API's status and body once the page shows them."""
+def submit(page: Page) -> Response:
+    """Press the submit button; the answer of ``POST /selections`` as soon as it is in."""
     with page.expect_response(
         lambda r: r.url.endswith("/api/v1/selections") and r.request.method == "POST"
     ) as info:
         page.locator("#submit").click()
-    response = info.value
+    return info.value
+
+
+def post_selection(page: Page) -> tuple[int, dict[str, Any]]:
+    """Press the submit button; the API's status and body once the page shows them."""
+    response = submit(page)
     body = cast(dict[str, Any], response.json())
     if response.status == 201:
         page.wait_for_function(
@@ -643,11 +648,7 @@ def test_the_panel_shows_the_lean_candidate_until_its_detail_arrives(page: Page)
     )
     page.goto("/")
     page.locator("#example").click()
-    with page.expect_response(
-        lambda r: r.url.endswith("/api/v1/selections") and r.request.method == "POST"
-    ) as info:
-        page.locator("#submit").click()
-    body = cast(dict[str, Any], info.value.json())
+    body = cast(dict[str, Any], submit(page).json())
     best = body["candidates"][0]
     expect(page.locator("#detail")).to_have_attribute("data-model", best["model"])
     expect(page.locator("#detail")).to_have_attribute("data-detail", "loading")
@@ -706,11 +707,7 @@ def test_the_ranking_draws_its_first_rows_and_the_rest_after_the_charts(page: Pa
         page.evaluate("async () => (await import('/pages/engineer/results.js')).FIRST_ROWS")
     )
     page.locator("#example").click()
-    with page.expect_response(
-        lambda r: r.url.endswith("/api/v1/selections") and r.request.method == "POST"
-    ) as info:
-        page.locator("#submit").click()
-    body = cast(dict[str, Any], info.value.json())
+    body = cast(dict[str, Any], submit(page).json())
     models = [c["model"] for c in body["candidates"]]
     assert len(models) > first
     table = page.locator("#ranking-table")
