@@ -1,6 +1,7 @@
 # Two commands on a fresh machine: `make run` serves the app, `make test` runs every check.
 # Each installs what it needs into .venv from the hash-pinned requirements.lock, and the
-# page's plotly.js bundle into node_modules/ from package-lock.json (npm, integrity-checked).
+# page's plotly.js bundle and the JavaScript tools (ESLint, TypeScript, axe-core) into
+# node_modules/ from package-lock.json (npm, integrity-checked). `make check` is the fast tier.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -8,7 +9,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
 NODE_STAMP := node_modules/.installed-$(shell cat package.json package-lock.json | cksum | cut -d' ' -f1)
 
-.PHONY: install run test lint typecheck pytest bench lock messages clean
+.PHONY: install run test check lint typecheck jslint pytest bench lock messages clean
 
 $(STAMP): requirements.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -36,8 +37,18 @@ run: install
 	$(BIN)/python -m actuator_selection seed --if-empty
 	$(BIN)/python -m actuator_selection serve
 
-## The whole suite: lint, format, strict types, unit/db/api/browser tests.
-test: install lint typecheck pytest
+## The whole suite: lint, format, strict types, the page's lint and types, and every test
+## (unit, doctests, database, API, real server, fuzz, browser; SQLite and PostgreSQL).
+test: install lint typecheck jslint pytest
+
+## The fast tier, for every change (under 3 minutes on 2 idle cores): the same lint, format
+## and type checks, and the tests that need neither a browser, a real server nor PostgreSQL
+## (the core's unit tests and doctests, the database and the API on SQLite).
+## `make test` stays the whole suite, and CI's.
+FAST_TESTS := tests/test_purity.py tests/core tests/db tests/api backend/actuator_selection/core
+
+check: install lint typecheck jslint
+	$(BIN)/python -m pytest -n auto -q -k "not postgresql" $(FAST_TESTS)
 
 lint: install
 	$(BIN)/ruff check .
@@ -45,6 +56,12 @@ lint: install
 
 typecheck: install
 	$(BIN)/mypy
+
+## The page's JavaScript: ESLint's recommended rules (eslint.config.mjs) and TypeScript's
+## checkJs over frontend/ (jsconfig.json), both from package-lock.json.
+jslint: install
+	node_modules/.bin/eslint .
+	node_modules/.bin/tsc -p jsconfig.json
 
 pytest: install
 	$(BIN)/python -m pytest -n auto

@@ -66,6 +66,11 @@ export function answerLanguage(data) {
  * back to its key prompt on a 401).
  */
 export function createClient({ base = API, headers = () => ({}), onError = null } = {}) {
+  /**
+   * @param {string} method
+   * @param {string} path
+   * @param {{body?: unknown, headers?: Record<string, string>}} [options]
+   */
   async function request(method, path, { body, headers: extra = {} } = {}) {
     const init = { method, headers: { Accept: "application/json", ...headers(), ...extra } };
     if (body !== undefined) {
@@ -82,7 +87,7 @@ export function createClient({ base = API, headers = () => ({}), onError = null 
     } catch {
       throw fail(new ApiError({ status: 0, kind: "network" }));
     }
-    let data = null;
+    let data;
     try {
       const text = await response.text();
       data = text ? JSON.parse(text) : null;

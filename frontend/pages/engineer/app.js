@@ -1,3 +1,4 @@
+// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // The engineer's page: reads the form, asks the API, shows what it answers.
 // No engineering is computed here; see figures.js for how answers become charts,
 // results.js for the result as DOM.
@@ -576,7 +577,7 @@ async function copyLink() {
   const input = $("#permalink");
   const status = $("#copy-status");
   if (!input) return;
-  let ok = false;
+  let ok;
   try {
     await navigator.clipboard.writeText(input.value);
     ok = true;

@@ -1,3 +1,4 @@
+// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // The segment editor: the cycle as the API's list of segments (schemas/selections.py,
 // SegmentsCycleIn) — end speed, duration or acceleration, S-curve share, process load —
 // one row per segment, added, removed and moved. Speeds and loads are in the chosen

@@ -1,3 +1,4 @@
+// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // The sales engineer's page: quotes from stored selections.
 // Every figure comes from the API (prices, totals, verdicts); money stays the
 // decimal text the API sends and is never turned into a float. Text from the
