@@ -56,6 +56,9 @@ const TEXTS = {
     "form.example": "Beispiel Tabelle 516.1 einsetzen",
     "form.errors": "Die Eingabe wurde abgelehnt. Bitte die markierten Felder prüfen.",
     "form.error.count": "{n} Eingabe(n) abgelehnt",
+    "number.read": "gelesen als {value}",
+    "number.ambiguous": "Nicht eindeutig: bitte nur ein Dezimalzeichen (Komma oder Punkt) und keine Tausendertrennzeichen, z. B. 1300,5.",
+    "number.invalid": "Keine Zahl: bitte eine Zahl eingeben, z. B. 1,3 oder 1.3.",
 
     "results.heading": "Ergebnis",
     "results.empty": "Noch keine Berechnung. Last und Zyklus eingeben und „Antriebe auswählen“ drücken – oder das Beispiel aus Tabelle 516.1 einsetzen.",
@@ -541,6 +544,9 @@ const TEXTS = {
     "form.example": "Use the example of Table 516.1",
     "form.errors": "The input was rejected. Please check the marked fields.",
     "form.error.count": "{n} input(s) rejected",
+    "number.read": "read as {value}",
+    "number.ambiguous": "Ambiguous: please use one decimal mark (a point or a comma) and no thousands separators, e.g. 1300.5.",
+    "number.invalid": "Not a number: please enter a number, e.g. 1.3 or 1,3.",
 
     "results.heading": "Result",
     "results.empty": "No calculation yet. Enter the load and the cycle and press “Select actuators” – or use the example of Table 516.1.",

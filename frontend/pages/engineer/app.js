@@ -7,6 +7,7 @@ import { ApiError, createClient, encodePath } from "../../lib/api.js";
 import { $, h, notice } from "../../lib/dom.js";
 import { appendSymbols, num, prepareNumbers, qty } from "../../lib/format.js";
 import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
+import { fieldRefusal, isNumberField, readField, showReading, showReadings } from "../../lib/numbers.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
@@ -244,24 +245,22 @@ function fieldFor(path, { any = false } = {}) {
   return null;
 }
 
+/** A number field's number ("1,3" and "1.3" alike, lib/numbers.js); null when blank or refused. */
 function readNumber(path, options) {
   const el = fieldFor(path, options);
-  if (!el || el.disabled || el.value.trim() === "") return null;
-  const value = Number(el.value);
-  return Number.isFinite(value) ? value : null;
+  return el && !el.disabled ? readField(el).value : null;
 }
 
 /**
- * A quantity as typed: a number ("0,5" read as 0.5), else the text itself for the API to
- * read with its unit ("0.5 in") or to refuse at the field; null when blank.
+ * A quantity as typed: a number ("0,5" read as 0.5), else the text for the API to read
+ * with its unit ("0,5 in" sent as "0.5 in") or to refuse at the field; null when blank.
  */
 function readQuantity(path) {
   const el = fieldFor(path);
-  const text = el?.value.trim() ?? "";
-  if (!text) return null;
-  const plain = /^[-+]?\d*,\d+$/.test(text) ? text.replace(",", ".") : text;
-  const value = Number(plain);
-  return plain !== "" && Number.isFinite(value) ? value : text;
+  if (!el) return null;
+  const reading = readField(el);
+  if (reading.state === "empty") return null;
+  return reading.state === "number" ? reading.value : reading.decimal;
 }
 
 /** The fields of ``specs`` under ``prefix``: required ones always (null when blank), others when given. */
@@ -389,6 +388,7 @@ function fillForm(sel) {
   setOutputLoad(Boolean(ol));
   if (ol) for (const field of OUTPUT_LOAD_FIELDS) setField(`output_load.${field.name}`, ol[field.name]);
   updateCycleSum();
+  showReadings(form(), state.lang);
 }
 
 function fillExample() {
@@ -400,6 +400,7 @@ function fillExample() {
   clearErrors();
   onFormEdited();
   updateCycleSum();
+  showReadings(form(), state.lang);
 }
 
 /** t_1 + t_2 + t_3 + t_p of the inputs as typed: an echo, not a result. */
@@ -494,22 +495,53 @@ function controlForLoc(loc) {
   return null;
 }
 
+/** Mark ``control`` refused with ``line`` (an error line) in its message element; false if it has none. */
+function placeError(control, line) {
+  const target = control && errorElementFor(control);
+  if (!target) return false;
+  target.append(line);
+  target.hidden = false;
+  if (!isGroup(control)) control.setAttribute("aria-invalid", "true");
+  control.closest(".field, .seg-field")?.classList.add("has-error");
+  return true;
+}
+
+/** The page's own refusal of a number field ("1.300,5"), in the page's language (and after a switch). */
+function numberError(control, key) {
+  const target = errorElementFor(control);
+  target?.replaceChildren();
+  return placeError(control, h("span", { class: "error-line", "data-i18n": key }, t(key)));
+}
+
+/** The active number fields whose text is refused (lib/numbers.js), each with its message's key. */
+function refusedNumbers() {
+  return [...form().querySelectorAll("input[data-number]")]
+    .filter((el) => !el.matches(":disabled"))
+    .map((control) => ({ control, key: fieldRefusal(control) }))
+    .filter((refusal) => refusal.key !== null);
+}
+
+/**
+ * The errors of an answer (``{loc, msg, lang}``) or of the page's own reading
+ * (``{control, key}``) at their fields; the form's status counts them.
+ */
 function showFieldErrors(errors) {
   const unplaced = [];
   let first = null;
   for (const error of errors) {
-    const control = controlForLoc(error.loc);
-    const target = control && errorElementFor(control);
-    if (!target) {
+    const control = error.control ?? controlForLoc(error.loc);
+    let placed;
+    if (error.key) placed = numberError(control, error.key);
+    else {
+      const index = error.loc.at(-1);
+      const prefix = typeof index === "number" && error.loc.includes("models") ? `#${index + 1}: ` : "";
+      const line = appendSymbols(h("span", { class: "error-line", lang: error.lang ?? "en" }), `${prefix}${error.msg}`);
+      placed = placeError(control, line);
+    }
+    if (!placed) {
       unplaced.push(error);
       continue;
     }
-    const index = error.loc.at(-1);
-    const prefix = typeof index === "number" && error.loc.includes("models") ? `#${index + 1}: ` : "";
-    target.append(appendSymbols(h("span", { class: "error-line", lang: error.lang ?? "en" }), `${prefix}${error.msg}`));
-    target.hidden = false;
-    if (!isGroup(control)) control.setAttribute("aria-invalid", "true");
-    control.closest(".field, .seg-field")?.classList.add("has-error");
     first ??= control;
   }
   const status = $("#form-status");
@@ -948,6 +980,12 @@ async function onSubmit(event) {
   if (state.busy) return;
   clearErrors();
   showAlert(null);
+  // text the page cannot read as one number ("1.300,5") is named at its field, and nothing is sent
+  const refused = refusedNumbers();
+  if (refused.length) {
+    showFieldErrors(refused);
+    return;
+  }
   const body = readForm();
   setBusy(true);
   if (!state.selection) renderResults();
@@ -1004,6 +1042,7 @@ function applyLang(lang) {
   document.title = `${t("app.title")} · Harmonic Drive`;
   $("#submit").textContent = t(state.busy ? "form.running" : "form.submit");
   updateCycleSum();
+  showReadings(form(), state.lang);
   renderResults();
   if (state.selection) {
     updateUrl();
@@ -1040,9 +1079,15 @@ function init() {
       if (err) err.hidden = true;
     }
     if (event.target.matches('[data-path^="cycle."]')) updateCycleSum();
+    showReading(event.target, state.lang);
     onFormEdited();
   });
   f.addEventListener("change", (event) => {
+    if (isNumberField(event.target)) {
+      // a number the page cannot read is named when the field is left, not only at submit
+      const key = fieldRefusal(event.target);
+      if (key) numberError(event.target, key);
+    }
     if (event.target.name === "load-kind") {
       setLoadKind(loadKind());
       onFormEdited();

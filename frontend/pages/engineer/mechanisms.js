@@ -2,7 +2,8 @@
 // their inputs with symbols and units, a small line sketch each, and an optional
 // transmission between the actuator output and the mechanism. Built once into the form;
 // texts carry data-i18n keys, so the language switch relabels them like the static page.
-// Nothing is converted here: numbers (or text with a unit, "0.5 in") go to the API as typed.
+// Nothing is converted here: numbers (or text with a unit, "0.5 in") go to the API as typed,
+// read by lib/numbers.js (a decimal comma as a point: "0,5 in" goes as "0.5 in").
 
 import { h } from "../../lib/dom.js";
 
@@ -248,6 +249,8 @@ export function quantityField({ id, path, symbol, unit, key, required, optional 
         id,
         "data-path": path,
         "data-quantity": "",
+        // a number, or text with a unit ("0.5 in"), read by lib/numbers.js
+        "data-number": "units",
         type: "text",
         inputmode: "decimal",
         spellcheck: "false",

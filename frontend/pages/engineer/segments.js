@@ -8,6 +8,7 @@
 
 import { h } from "../../lib/dom.js";
 import { translate, unitText } from "../../lib/i18n.js";
+import { readField, showReading } from "../../lib/numbers.js";
 
 const list = () => document.getElementById("segment-list");
 let units = { speed: "rpm", accel: "rpm/s", load: "Nm" };
@@ -16,9 +17,9 @@ let changed = () => {};
 
 function input(kind, extra = {}) {
   return h("input", {
-    type: "number",
-    step: "any",
+    type: "text",
     inputmode: "decimal",
+    "data-number": "",
     "data-seg": kind,
     ...extra,
   });
@@ -111,6 +112,7 @@ function relabel() {
       el.setAttribute("aria-describedby", `u-${id} err-${id}`);
       box.querySelector(`[data-seg-unit="${kind}"]`).id = `u-${id}`;
       box.querySelector(`[data-seg-label="${kind}"]`).setAttribute("for", id);
+      showReading(el, lang); // what a comma or point was read as, under the new id
     }
     mode.id = `seg-${k}-mode`;
     li.querySelector('[data-seg-label="mode"]').setAttribute("for", mode.id);
@@ -162,9 +164,7 @@ export function segmentCount() {
 }
 
 function numberOrNull(el) {
-  if (!el || el.value.trim() === "") return null;
-  const value = Number(el.value);
-  return Number.isFinite(value) ? value : null;
+  return el ? readField(el).value : null;
 }
 
 /** The request's cycle: ``{start_speed, segments}``; blank optional inputs are left out. */

@@ -11,6 +11,7 @@ import { openCheckLines } from "../../lib/checks.js";
 import { byId, h, said } from "../../lib/dom.js";
 import { appendSymbols, dateTime, localeOf, qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
+import { fieldRefusal, isNumberField, readField, showReading, showReadings } from "../../lib/numbers.js";
 
 const KEY_STORAGE = "actuatorSelection.salesApiKey";
 const PAGE_SIZE = 20;
@@ -114,9 +115,9 @@ function moment(iso) {
   return dateTime(iso, state.lang) ?? iso;
 }
 
-/** A decimal as typed: "7,5" (German) → "7.5", as the API reads decimals. */
-function decimalText(value) {
-  return /^\d+,\d+$/.test(value) ? value.replace(",", ".") : value;
+/** A number field's number ("1,3" and "1.3" alike, lib/numbers.js); null when blank. */
+function numberOf(id) {
+  return readField(byId(id)).value;
 }
 
 function isoDate(daysFromToday) {
@@ -414,9 +415,10 @@ function requestBody() {
   const body = {
     selection_id: state.selection.id,
     customer: { name: text("f-customer") },
-    actuator: { model: byId("f-model").value, quantity: Number(byId("f-qty").value) },
+    actuator: { model: byId("f-model").value, quantity: numberOf("f-qty") },
     price_list: byId("f-price-list").value,
-    discount_percent: decimalText(text("f-discount")) || "0",
+    // a decimal as the API reads it ("7,5" → "7.5"), kept as text: money is never a float
+    discount_percent: readField(byId("f-discount")).decimal || "0",
     valid_until: byId("f-valid").value,
   };
   if (text("f-address")) body.customer.address = byId("f-address").value;
@@ -425,7 +427,7 @@ function requestBody() {
     body.controller = {
       type_name: text("f-ctrl-name"),
       item_code: text("f-ctrl-code"),
-      quantity: Number(byId("f-ctrl-qty").value),
+      quantity: numberOf("f-ctrl-qty"),
     };
   }
   if (text("f-currency")) body.currency = text("f-currency").toUpperCase();
@@ -449,11 +451,26 @@ function showErrors(error) {
   });
 }
 
+/** Name at ``input`` the page's refusal of its text ("1.300,5"); whether there was one. */
+function refuseNumber(input) {
+  const key = fieldRefusal(input);
+  return Boolean(key && showFieldError(errorId(input), () => t(key)));
+}
+
+/** The id of ``input``'s message element (its aria-describedby's "err-…"). */
+function errorId(input) {
+  return (input.getAttribute("aria-describedby") ?? "").split(/\s+/).find((id) => id.startsWith("err-")) ?? "";
+}
+
 async function createQuote(event) {
   event.preventDefault();
   clearErrors();
-  if (!text("f-customer")) {
-    showFieldError("err-customer-name", () => t("sales.customer.name.required"));
+  const controller = Boolean(text("f-ctrl-name") || text("f-ctrl-code"));
+  const numbers = ["f-qty", "f-discount", ...(controller ? ["f-ctrl-qty"] : [])].map(byId);
+  // every refusal is named at once; nothing is sent while one stands
+  const refused = numbers.filter(refuseNumber).length > 0;
+  if (!text("f-customer") || refused) {
+    if (!text("f-customer")) showFieldError("err-customer-name", () => t("sales.customer.name.required"));
     formStatus(() => t("sales.form.correct"));
     return;
   }
@@ -658,6 +675,7 @@ function applyLang(lang) {
   }
   document.title = `${t("sales.title")} · ${t("app.title")}`;
   for (const [node, render] of localized) node.replaceChildren(...children(render));
+  showReadings(byId("quote-form"), state.lang);
   if (state.selection) renderCandidates();
   renderPriceLists();
 }
@@ -691,6 +709,18 @@ async function start() {
   byId("f-model").addEventListener("change", describeCandidate);
   byId("f-price-list").addEventListener("change", priceListChanged);
   byId("quote-form").addEventListener("submit", createQuote);
+  byId("quote-form").addEventListener("input", (event) => showReading(event.target, state.lang));
+  byId("quote-form").addEventListener("change", (event) => {
+    // a number the page cannot read is named when the field is left; a corrected one is not
+    if (!isNumberField(event.target)) return;
+    const error = byId(errorId(event.target));
+    if (error) {
+      error.hidden = true;
+      clear(error);
+    }
+    event.target.removeAttribute("aria-invalid");
+    refuseNumber(event.target);
+  });
   byId("search-form").addEventListener("submit", (event) => {
     event.preventDefault();
     search();
