@@ -100,6 +100,17 @@ def test_the_segment_editor_and_a_machine_axis(axe_page: Page) -> None:
     assert violations(page) == [], "segment editor with the belt axis"
 
 
+def test_number_fields_with_their_reading_and_a_refusal(axe_page: Page) -> None:
+    page = axe_page
+    page.goto("/")
+    page.locator("#f-t1").press_sequentially("0,15")  # "read as 0.15" beside it
+    page.locator("#f-inertia").press_sequentially("1.300,5")  # refused at the field
+    page.locator("#f-inertia").press("Tab")
+    page.wait_for_selector("#err-inertia:not([hidden])")
+    page.wait_for_selector("#read-f-t1:not([hidden])")
+    assert violations(page) == [], "a number's reading and a refused number"
+
+
 def test_the_sales_pages_key_prompt(axe_page: Page) -> None:
     page = axe_page
     page.goto("/sales.html")
