@@ -31,11 +31,12 @@ $(NODE_STAMP): package.json package-lock.json
 install: $(STAMP) $(NODE_STAMP)
 
 ## Serve on http://$HOST:$PORT (default 127.0.0.1:8000) with the embedded SQLite
-## database (or $DATABASE_URL), migrated and seeded with the starter catalogue.
+## database (or $DATABASE_URL), migrated and seeded with the starter catalogue; a database
+## without price lists gets the EXAMPLE one, and without SELLER_* quotes name an EXAMPLE seller.
 run: install
 	$(BIN)/python -m actuator_selection migrate
-	$(BIN)/python -m actuator_selection seed --if-empty
-	$(BIN)/python -m actuator_selection serve
+	$(BIN)/python -m actuator_selection seed --if-empty --examples
+	$(BIN)/python -m actuator_selection serve --examples
 
 ## The whole suite: lint, format, strict types, the page's lint and types, and every test
 ## (unit, doctests, database, API, real server, fuzz, browser; SQLite and PostgreSQL).

@@ -3,12 +3,31 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from actuator_selection.cli_keys import register as register_sales_commands
 from actuator_selection.config import SEED_DIR, get_settings
+
+if TYPE_CHECKING:
+    from sqlalchemy.orm import Session
+
+EXAMPLE_PRICES = SEED_DIR / "example_prices.csv"
+"""The example price list: invented prices, marked ``is_example`` (every quote made with
+it carries the document's "EXAMPLE PRICES" banner). ``seed --examples`` loads it into a
+database that has no price list yet."""
+
+EXAMPLE_SELLER = {
+    "SELLER_NAME": "Example Drives GmbH (EXAMPLE, not a real company)",
+    "SELLER_ADDRESS": "Example street 1\\n12345 Example town\\nGermany",
+    "SELLER_VAT_ID": "DE000000000",
+    "SELLER_EMAIL": "sales@example.com",
+}
+"""The seller block ``serve --examples`` uses when none of these settings is given: marked
+as an example in its name, which every quote document shows."""
 
 
 def _migrate(args: argparse.Namespace) -> int:
@@ -19,6 +38,20 @@ def _migrate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _example_prices(session: Session) -> dict[str, int]:
+    """Load the example price list when the database has no price list; {name: prices}."""
+    from datetime import UTC, datetime
+
+    from actuator_selection.db.sales import PriceRepository, parse_prices
+
+    prices = PriceRepository(session)
+    if prices.price_lists():
+        return {}
+    text = EXAMPLE_PRICES.read_bytes().decode("utf-8-sig")
+    report = prices.replace(parse_prices(text, file=EXAMPLE_PRICES.name), now=datetime.now(UTC))
+    return {name: changes.inserted for name, changes in report.items()}
+
+
 def _seed(args: argparse.Namespace) -> int:
     from actuator_selection.core.csvio import CatalogueFileError
     from actuator_selection.db.engine import begin_write, make_engine, make_session_factory
@@ -26,13 +59,15 @@ def _seed(args: argparse.Namespace) -> int:
     from actuator_selection.db.seed import load_seed
 
     engine = make_engine(args.database_url)
+    report = None
+    examples: dict[str, int] = {}
     try:
         with make_session_factory(engine).begin() as session:
             begin_write(session)
-            if args.if_empty and CatalogueVersionRepository(session).current() > 0:
-                print("seed: the catalogue has been written before; left as it is (--if-empty)")
-                return 0
-            report = load_seed(session, Path(args.directory))
+            if not (args.if_empty and CatalogueVersionRepository(session).current() > 0):
+                report = load_seed(session, Path(args.directory))
+            if args.examples:
+                examples = _example_prices(session)
     except CatalogueFileError as exc:
         print(f"seed: nothing loaded, {len(exc.problems)} problem(s):", file=sys.stderr)
         for problem in exc.problems:
@@ -40,18 +75,41 @@ def _seed(args: argparse.Namespace) -> int:
         return 1
     finally:
         engine.dispose()
-    print(f"seed: catalogue rows {report}")
+    if report is None:
+        print("seed: the catalogue has been written before; left as it is (--if-empty)")
+    else:
+        print(f"seed: catalogue rows {report}")
+    for name, count in examples.items():
+        print(
+            f"seed: no price list yet, so the EXAMPLE price list {name!r} was loaded "
+            f"({count} invented prices, for trying quotes out; every quote made with it is "
+            "marked as an example). Import real prices with "
+            "`python -m actuator_selection prices import FILE`."
+        )
     return 0
 
 
-def _serve(args: argparse.Namespace) -> int:
-    import os
+def _example_seller() -> bool:
+    """Put the example seller into the environment unless a seller setting is given."""
+    given = {name.upper() for name in os.environ}
+    if given & EXAMPLE_SELLER.keys():
+        return False
+    os.environ.update(EXAMPLE_SELLER)
+    return True
 
+
+def _serve(args: argparse.Namespace) -> int:
     import uvicorn
 
     # Each worker process builds its app from the environment, so the URL given here
     # travels there (``--database-url`` before the command, else $DATABASE_URL).
     os.environ["DATABASE_URL"] = args.database_url
+    if args.examples and _example_seller():
+        print(
+            f"serve: no seller settings, so quotes name the EXAMPLE seller "
+            f"{EXAMPLE_SELLER['SELLER_NAME']!r}; set {', '.join(EXAMPLE_SELLER)} for real quotes",
+            flush=True,
+        )
     get_settings.cache_clear()
     uvicorn.run(
         "actuator_selection.main:serve_app",
@@ -86,6 +144,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         help="seed only a catalogue never written before, so changes made through the "
         "admin API survive a restart",
     )
+    seed.add_argument(
+        "--examples",
+        action="store_true",
+        help="also load the EXAMPLE price list (invented prices, marked as such) when the "
+        "database has no price list yet",
+    )
     seed.set_defaults(run=_seed)
     serve = commands.add_parser("serve", help="serve the API and the web page")
     serve.add_argument("--host", default=settings.host)
@@ -96,6 +160,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         default=settings.workers,
         help="server processes (default: $WORKERS or 1); each admits MAX_CONCURRENT_REQUESTS "
         "requests and holds a database pool of its own",
+    )
+    serve.add_argument(
+        "--examples",
+        action="store_true",
+        help="without SELLER_* settings, quotes name an EXAMPLE seller (marked as such) "
+        "instead of the placeholder one",
     )
     serve.set_defaults(run=_serve)
     args = parser.parse_args(argv)
