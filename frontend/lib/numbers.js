@@ -71,6 +71,14 @@ export function readingText(reading, lang) {
   return `${number}${reading.rest}`;
 }
 
+/**
+ * A number the page writes into a field (the example, a stored selection), in ``lang``'s
+ * way ("1,3" in German): read back as the same number, with no reading to show.
+ */
+export function numberText(value, lang) {
+  return typeof value === "number" && Number.isFinite(value) ? String(value).replace(".", decimalMark(lang)) : "";
+}
+
 /** Whether ``el`` is one of the number fields (data-number; "units" when it takes a unit). */
 export const isNumberField = (el) => el instanceof HTMLInputElement && el.dataset.number !== undefined;
 

@@ -7,7 +7,7 @@ import { ApiError, createClient, encodePath } from "../../lib/api.js";
 import { $, h, notice } from "../../lib/dom.js";
 import { appendSymbols, num, prepareNumbers, qty } from "../../lib/format.js";
 import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
-import { fieldRefusal, isNumberField, readField, showReading, showReadings } from "../../lib/numbers.js";
+import { fieldRefusal, isNumberField, numberText, readField, showReading, showReadings } from "../../lib/numbers.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
@@ -334,10 +334,7 @@ function readForm() {
 function setField(path, value) {
   const el = fieldFor(path);
   if (el) {
-    el.value =
-      (typeof value === "number" && Number.isFinite(value)) || (typeof value === "string" && el.dataset.quantity !== undefined)
-        ? String(value)
-        : "";
+    el.value = typeof value === "string" && el.dataset.quantity !== undefined ? value : numberText(value, state.lang);
   }
 }
 

@@ -8,7 +8,7 @@
 
 import { h } from "../../lib/dom.js";
 import { translate, unitText } from "../../lib/i18n.js";
-import { readField, showReading } from "../../lib/numbers.js";
+import { numberText, readField, showReading } from "../../lib/numbers.js";
 
 const list = () => document.getElementById("segment-list");
 let units = { speed: "rpm", accel: "rpm/s", load: "Nm" };
@@ -75,7 +75,7 @@ function row(values = {}) {
   );
   const set = (kind, value) => {
     const el = li.querySelector(`[data-seg="${kind}"]`);
-    el.value = typeof value === "number" && Number.isFinite(value) ? String(value) : "";
+    el.value = numberText(value, lang);
   };
   set("speed", values.speed);
   const byAccel = typeof values.accel === "number";
@@ -155,7 +155,7 @@ export function fillSegments(segments, startSpeed = 0) {
   list().replaceChildren();
   for (const seg of segments) list().append(row(seg));
   const start = document.getElementById("f-seg-start");
-  if (start) start.value = typeof startSpeed === "number" && startSpeed !== 0 ? String(startSpeed) : "";
+  if (start) start.value = startSpeed !== 0 ? numberText(startSpeed, lang) : "";
   relabel();
 }
 
