@@ -37,6 +37,10 @@ class Settings(BaseSettings):
     require_api_key: bool = False
     """When true, every endpoint needs an API key; otherwise catalogue reads and
     selections are open and only admin and sales operations need one."""
+    cors_allow_origins: str = ""
+    """Origins whose pages may call the API from a browser (CORS), comma-separated
+    (``https://tools.example.com,https://erp.example.com``) or ``*``; empty: none, the
+    service's own pages need no CORS (``api/methods.py``)."""
 
     max_body_bytes: int = Field(default=1 << 20, ge=1024)
     """Largest request body [bytes] (413 above); 1 MiB holds any single request."""
@@ -86,6 +90,10 @@ class Settings(BaseSettings):
     )
     """The seller's standard terms in each language of the quote document: a quote whose
     request states no terms shows these, in the document's language."""
+
+    def cors_origins(self) -> list[str]:
+        """``cors_allow_origins`` as a list."""
+        return [o.strip() for o in self.cors_allow_origins.split(",") if o.strip()]
 
     def seller(self) -> SellerParty:
         """The seller block and standard terms that a new quote stores."""

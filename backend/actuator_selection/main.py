@@ -22,6 +22,7 @@ from actuator_selection.api import (
     controllers,
     errors,
     health,
+    methods,
     openapi,
     prices,
     quotes,
@@ -149,6 +150,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_queued=settings.max_queued_requests,
         timeout_s=settings.queue_timeout_s,
     )
+    # 405 and OPTIONS from the routes, not from the static mount; CORS where configured.
+    app.add_middleware(methods.AllowedMethods, router=app.router, api_prefix=API_PREFIX)
+    if settings.cors_origins():
+        app.add_middleware(methods.PreflightForListedOrigins, origins=settings.cors_origins())
     if FRONTEND_DIR.is_dir():
         app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
     security_headers.install(app, docs_paths=DOCS_PATHS)
