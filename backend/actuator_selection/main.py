@@ -22,6 +22,7 @@ from actuator_selection.api import (
     controllers,
     errors,
     health,
+    media_types,
     methods,
     openapi,
     prices,
@@ -100,6 +101,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         lifespan=lifespan,
         # operationIds are the endpoints' names (create_selection), for client generators.
         generate_unique_id_function=openapi.operation_id,
+        # 415 for a JSON body sent as another media type or in UTF-16/32 (api/media_types.py)
+        dependencies=[Depends(media_types.require_json_body)],
     )
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)

@@ -205,6 +205,9 @@ SERVICE_MESSAGES: Final[Mapping[str, str]] = {
     "internal_error": N_("internal error; it has been logged"),
     "unauthorized": N_("a valid API key is required: send Authorization: Bearer <key>"),
     "forbidden": N_("this API key has the role '{role}'; this needs {roles}"),
+    "unsupported_media_type": N_("Content-Type {given} is not accepted here; send {accepted}"),
+    "media_type_missing": N_("the body has no Content-Type; send {accepted}"),
+    "unsupported_charset": N_("the body is encoded as {charset}; send it as UTF-8"),
     **USE_CASE_MESSAGES,
 }
 """The service's own messages by code: the routers' (``api/``) and the use cases'

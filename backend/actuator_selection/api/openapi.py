@@ -7,7 +7,8 @@ FastAPI's document is post-processed once (:func:`install`):
   FastAPI's ``HTTPValidationError``: 422 and 503 everywhere (a ``%00`` in any query
   is a 422, overload a 503 with ``Retry-After``), 401 where an API key is read, 403
   where a role is needed, 404 where the path names a resource, 409 where a write can
-  conflict, 400 and 413 where a body is taken, 415 where the decorator says so;
+  conflict, 400 and 413 where a body is taken, 415 where a JSON body is taken (a body
+  in another media type or encoding, ``api/media_types.py``) or the decorator says so;
 - the ``HTTPBearer`` security scheme (``Authorization: Bearer <key>``, ``api/auth.py``):
   required on operations that need a role, optional (``[{}, {"HTTPBearer": []}]``)
   where anonymous callers are let in;
@@ -52,7 +53,7 @@ ERROR_DESCRIPTIONS: dict[int, str] = {
     409: "the request conflicts with the resource's state, or a concurrent change wrote "
     "the same record first (nothing was changed; send it again)",
     413: "the body is larger than the limit",
-    415: "a Content-Type that is not accepted here",
+    415: "a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8)",
     422: "a parameter or body value breaks a rule; `loc` names it",
     503: "overloaded or the database is busy; nothing was changed, retry after `Retry-After` s",
 }
@@ -226,7 +227,7 @@ def _statuses(path: str, op: dict[str, Any], info: _Operation) -> set[int]:
     if "requestBody" in op:
         statuses.add(413)
     if info.json_body:
-        statuses.add(400)
+        statuses |= {400, 415}
     return statuses
 
 

@@ -23,6 +23,7 @@ from actuator_selection.api.errors import (
     RequestFieldError,
     UnsupportedMediaTypeError,
 )
+from actuator_selection.api.media_types import unsupported_media_type
 from actuator_selection.core.csvio import CatalogueFileError, Problem
 from actuator_selection.services.errors import problem_entry
 
@@ -60,11 +61,7 @@ def _too_large(message: str) -> PayloadTooLargeError:
 
 def unsupported(media_type: str, accepted: tuple[str, ...]) -> UnsupportedMediaTypeError:
     """415 naming what is accepted."""
-    return UnsupportedMediaTypeError.at(
-        ["header", "Content-Type"],
-        f"Content-Type {media_type or '(none)'} is not accepted here; send {' or '.join(accepted)}",
-        "unsupported_media_type",
-    )
+    return unsupported_media_type(media_type, accepted)
 
 
 def file_errors(exc: CatalogueFileError) -> RequestFieldError:
