@@ -31,6 +31,9 @@ ENV PYTHONPATH=/app/backend \
     HOST=0.0.0.0 \
     PORT=8000 \
     WORKERS=2
+# DATA_DIR: the document links' signing secret, made at the first start
+# (docker-compose.yml shares it between the replicas as a volume).
+RUN mkdir -p /app/var && chown app:app /app/var
 USER app
 EXPOSE 8000
 HEALTHCHECK --interval=10s --timeout=3s --start-period=20s --retries=3 \

@@ -7,7 +7,7 @@ from decimal import Decimal
 from functools import lru_cache
 from pathlib import Path
 
-from pydantic import Field
+from pydantic import Field, SecretStr
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 from actuator_selection.core.quote_terms import QuoteDefaults, SellerParty
@@ -41,6 +41,14 @@ class Settings(BaseSettings):
     """Origins whose pages may call the API from a browser (CORS), comma-separated
     (``https://tools.example.com,https://erp.example.com``) or ``*``; empty: none, the
     service's own pages need no CORS (``api/methods.py``)."""
+
+    data_dir: Path = REPO_ROOT / "var"
+    """Files the service keeps beside the database: the document links' signing secret
+    (``services/link_secret.py``); shared by every worker and replica that should accept
+    each other's links."""
+    link_signing_secret: SecretStr | None = None
+    """The secret that signs document links (at least 32 characters); unset: one made
+    once in ``DATA_DIR``. Changing it invalidates every link."""
 
     max_body_bytes: int = Field(default=1 << 20, ge=1024)
     """Largest request body [bytes] (413 above); 1 MiB holds any single request."""

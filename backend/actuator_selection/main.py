@@ -36,6 +36,7 @@ from actuator_selection.api.auth import require_reader
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.services.catalogue import CatalogueCache
+from actuator_selection.services.link_secret import link_secret
 
 API_PREFIX = "/api/v1"
 DOCS_PATHS = ("/docs", "/redoc", "/docs/oauth2-redirect")
@@ -108,6 +109,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.session_factory = make_session_factory(engine)
     app.state.catalogue = CatalogueCache()  # selections read the catalogue from here
     app.state.settings = settings  # require_reader reads REQUIRE_API_KEY from here
+    app.state.link_secret = link_secret(settings)  # signs document links (api/quotes.py)
     errors.install(app)
     app.include_router(health.router, prefix=API_PREFIX)
     # Catalogue reads, selections and tools: open unless REQUIRE_API_KEY; batch before

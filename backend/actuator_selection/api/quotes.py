@@ -11,7 +11,7 @@ from datetime import UTC, date, datetime
 from typing import Annotated, Any, Literal
 from urllib.parse import quote as quote_path
 
-from fastapi import APIRouter, Depends, Header, Query, Response
+from fastapi import APIRouter, Depends, Header, Query, Request, Response
 from fastapi.responses import HTMLResponse
 from sqlalchemy.orm import Session
 
@@ -37,9 +37,20 @@ from actuator_selection.db.sales import ApiKeyRepository, QuoteSearch
 from actuator_selection.schemas.documents import DocumentLinkOut
 from actuator_selection.schemas.quotes import QuoteCreate, QuoteListOut, QuoteOut, QuoteStatusIn
 from actuator_selection.services import quotes
-from actuator_selection.services.quotes import API_PREFIX, DOCUMENT_LINK_TTL_S
+from actuator_selection.services.quotes import (
+    API_PREFIX,
+    DOCUMENT_LINK_MAX_TTL_S,
+    DOCUMENT_LINK_TTL_S,
+)
 
-__all__ = ["API_PREFIX", "DOCUMENT_LINK_TTL_S", "Clock", "get_clock", "router"]
+__all__ = [
+    "API_PREFIX",
+    "DOCUMENT_LINK_MAX_TTL_S",
+    "DOCUMENT_LINK_TTL_S",
+    "Clock",
+    "get_clock",
+    "router",
+]
 
 router = APIRouter(tags=["quotes"])
 
@@ -66,6 +77,16 @@ def get_clock() -> Clock:
 
 
 ClockDep = Annotated[Clock, Depends(get_clock)]
+
+
+def link_secret(request: Request) -> bytes:
+    """The secret that signs document links, read when the app was built
+    (``services/link_secret.py``)."""
+    secret: bytes = request.app.state.link_secret
+    return secret
+
+
+LinkSecretDep = Annotated[bytes, Depends(link_secret)]
 
 
 @router.post(
@@ -167,18 +188,36 @@ def quote_document_link(
     principal: SalesDep,
     session: SessionDep,
     clock: ClockDep,
+    secret: LinkSecretDep,
     lang: Annotated[
         Literal["de", "en"] | None,
         Query(description="the document's language, carried in the link (`&lang=`)"),
     ] = None,
+    lifetime_s: Annotated[
+        int,
+        Query(
+            ge=1,
+            le=DOCUMENT_LINK_MAX_TTL_S,
+            description=f"how long the link works [s]; at most {DOCUMENT_LINK_MAX_TTL_S} (30 days)",
+        ),
+    ] = DOCUMENT_LINK_TTL_S,
 ) -> DocumentLinkOut:
     """A link to the quote's document that a new browser window can open by itself.
 
     The window then loads the document from the server with the document's own
     headers (its Content-Security-Policy among them). The link works for
-    ``DOCUMENT_LINK_TTL_S`` seconds and no longer than the key that asked for it.
+    ``lifetime_s`` seconds (default 300, at most 30 days) and no longer than the key
+    that asked for it.
     """
-    return quotes.document_link(session, principal, number, now=clock.now(), language=lang)
+    return quotes.document_link(
+        session,
+        principal,
+        number,
+        now=clock.now(),
+        secret=secret,
+        lifetime_s=lifetime_s,
+        language=lang,
+    )
 
 
 def _document_reader(
@@ -188,12 +227,17 @@ def _document_reader(
     number: str,
     session: SessionDep,
     now: datetime,
+    secret: bytes,
 ) -> ApiKeyRecord:
     """The sales key that reads a document: the request's own, or the one that signed
     the ``access`` link (401 for an expired or bad link, 403 without the sales role)."""
     if principal is None and access is not None:
         principal = ApiKeyRepository(session).check_access(
-            access, quotes.document_resource(number), now=now
+            access,
+            quotes.document_resource(number),
+            now=now,
+            secret=secret,
+            max_lifetime_s=DOCUMENT_LINK_MAX_TTL_S,
         )
         if principal is None:
             raise UnauthorizedError.at(
@@ -243,6 +287,7 @@ def quote_document(
     clock: ClockDep,
     settings: SettingsDep,
     language: DocumentLanguageDep,
+    secret: LinkSecretDep,
     access: Annotated[
         str | None,
         Query(
@@ -253,7 +298,9 @@ def quote_document(
     ] = None,
 ) -> HTMLResponse:
     """The quote as an HTML page laid out for A4 print (print to PDF from the browser)."""
-    _document_reader(principal, access, number=number, session=session, now=clock.now())
+    _document_reader(
+        principal, access, number=number, session=session, now=clock.now(), secret=secret
+    )
     html = render_quote_document(_document_context(session, number, clock, settings, language))
     return HTMLResponse(
         html,
@@ -281,6 +328,7 @@ def quote_document_pdf(
     clock: ClockDep,
     settings: SettingsDep,
     language: DocumentLanguageDep,
+    secret: LinkSecretDep,
     access: Annotated[
         str | None,
         Query(
@@ -293,7 +341,9 @@ def quote_document_pdf(
     """The quote document as a PDF download (A4), in German or English."""
     from actuator_selection.services.quote_pdf import render_quote_pdf  # fpdf2: on first use
 
-    _document_reader(principal, access, number=number, session=session, now=clock.now())
+    _document_reader(
+        principal, access, number=number, session=session, now=clock.now(), secret=secret
+    )
     context = _document_context(session, number, clock, settings, language)
     name = quote_path(f"{context['number']}.pdf", safe="")
     return Response(

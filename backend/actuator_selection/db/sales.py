@@ -82,9 +82,9 @@ def _sha256(key: str) -> str:
 _ACCESS_TOKEN = re.compile(r"([0-9a-f]{12})\.([0-9]{1,12})\.([0-9a-f]{64})")
 
 
-def _access_mac(key_sha256: str, resource: str, expires_at: int) -> str:
-    message = f"{resource}|{expires_at}".encode()
-    return hmac.new(key_sha256.encode("ascii"), message, hashlib.sha256).hexdigest()
+def _access_mac(secret: bytes, prefix: str, resource: str, expires_at: int) -> str:
+    message = f"{prefix}|{resource}|{expires_at}".encode()
+    return hmac.new(secret, message, hashlib.sha256).hexdigest()
 
 
 def _key_record(row: ApiKeyRow) -> ApiKeyRecord:
@@ -146,28 +146,34 @@ class ApiKeyRepository:
         rows = self._session.scalars(select(ApiKeyRow).order_by(ApiKeyRow.id))
         return [_key_record(r) for r in rows]
 
-    def sign_access(self, key: ApiKeyRecord, resource: str, *, expires_at: int) -> str:
+    @staticmethod
+    def sign_access(key: ApiKeyRecord, resource: str, *, expires_at: int, secret: bytes) -> str:
         """A token that lends ``key``'s access to ``resource`` until ``expires_at`` [Unix s].
 
         For a link a browser opens without headers (the quote document in a new
         window). It reads ``<prefix>.<expires_at>.<HMAC-SHA256>``, keyed with the
-        key's stored hash, so any replica can check it, and revoking the key
-        revokes its tokens.
+        server's ``secret`` (``services/link_secret.py``), never with anything the
+        database holds, so reading the database does not let anyone mint a token;
+        revoking the key revokes its tokens.
         """
-        row = self._session.scalar(select(ApiKeyRow).where(ApiKeyRow.prefix == key.prefix))
-        assert row is not None, "signing for a key that authenticated this request"
-        return f"{key.prefix}.{expires_at}.{_access_mac(row.key_sha256, resource, expires_at)}"
+        return f"{key.prefix}.{expires_at}.{_access_mac(secret, key.prefix, resource, expires_at)}"
 
-    def check_access(self, token: str, resource: str, *, now: datetime) -> ApiKeyRecord | None:
-        """The active key that signed ``token`` for ``resource``, if it has not expired."""
+    def check_access(
+        self, token: str, resource: str, *, now: datetime, secret: bytes, max_lifetime_s: int
+    ) -> ApiKeyRecord | None:
+        """The active key that signed ``token`` for ``resource``, if it has not expired and
+        expires at most ``max_lifetime_s`` from ``now`` (a longer-lived token was not made
+        by this service)."""
         match = _ACCESS_TOKEN.fullmatch(token)
-        if match is None or int(match.group(2)) < now.timestamp():
+        if match is None:
             return None
         prefix, expires_at, mac = match.group(1), int(match.group(2)), match.group(3)
+        if not 0 <= expires_at - now.timestamp() <= max_lifetime_s:
+            return None
+        if not hmac.compare_digest(_access_mac(secret, prefix, resource, expires_at), mac):
+            return None
         row = self._session.scalar(select(ApiKeyRow).where(ApiKeyRow.prefix == prefix))
-        stored = row.key_sha256 if row is not None else _DUMMY_SHA256
-        expected = _access_mac(stored, resource, expires_at)
-        if not hmac.compare_digest(expected, mac) or row is None or row.revoked_at:
+        if row is None or row.revoked_at:
             return None
         return _key_record(row)
 

@@ -72,7 +72,11 @@ from actuator_selection.services.selections import stored_answer_json
 
 API_PREFIX = "/api/v1"
 DOCUMENT_LINK_TTL_S = 300
-"""How long a signed document link works [s]."""
+"""How long a signed document link works [s] unless its request asks for longer."""
+DOCUMENT_LINK_MAX_TTL_S = 30 * 24 * 3600
+"""The longest a signed document link may work [s]: 30 days (a link sent to a customer
+with the quote). Longer is refused when a link is asked for (422) and when one is
+presented, so that no link, however made, works for longer."""
 SHOWN_CANDIDATES = 10
 """The usable candidates an answer names when the chosen actuator is not one."""
 SHOWN_ROWS = 12
@@ -443,15 +447,20 @@ def document_link(
     number: str,
     *,
     now: datetime,
+    secret: bytes,
+    lifetime_s: int = DOCUMENT_LINK_TTL_S,
     language: str | None = None,
 ) -> DocumentLinkOut:
-    """A link to the quote's document, signed for ``principal``'s key for
-    ``DOCUMENT_LINK_TTL_S`` seconds (and no longer than the key lives); with
-    ``language``, the link asks for the document in it."""
+    """A link to the quote's document, signed with the server's ``secret`` for
+    ``principal``'s key for ``lifetime_s`` seconds (at most ``DOCUMENT_LINK_MAX_TTL_S``,
+    and no longer than the key lives); with ``language``, the link asks for the
+    document in it."""
+    if not 0 < lifetime_s <= DOCUMENT_LINK_MAX_TTL_S:
+        raise ValueError(f"lifetime_s must be 1 to {DOCUMENT_LINK_MAX_TTL_S}")
     _quote(session, number)
-    expires_at = int(now.timestamp()) + DOCUMENT_LINK_TTL_S
-    token = ApiKeyRepository(session).sign_access(
-        principal, document_resource(number), expires_at=expires_at
+    expires_at = int(now.timestamp()) + lifetime_s
+    token = ApiKeyRepository.sign_access(
+        principal, document_resource(number), expires_at=expires_at, secret=secret
     )
     return DocumentLinkOut(
         url=f"{API_PREFIX}/quotes/{quote_path(number, safe='')}/document?access={token}"
