@@ -37,6 +37,11 @@ class Settings(BaseSettings):
     require_api_key: bool = False
     """When true, every endpoint needs an API key; otherwise catalogue reads and
     selections are open and only admin and sales operations need one."""
+    max_key_failures: int = Field(default=10, ge=1)
+    """Wrong API keys a client address may send in a burst; then 429 with Retry-After
+    for any request with a key until the allowance refills (``api/throttle.py``)."""
+    key_failure_window_s: float = Field(default=60.0, gt=0)
+    """The time [s] in which the allowance of wrong keys refills completely."""
     cors_allow_origins: str = ""
     """Origins whose pages may call the API from a browser (CORS), comma-separated
     (``https://tools.example.com,https://erp.example.com``) or ``*``; empty: none, the

@@ -30,6 +30,7 @@ from actuator_selection.api import (
     security_headers,
     selections,
     static,
+    throttle,
     tools,
 )
 from actuator_selection.api.auth import require_reader
@@ -109,6 +110,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.session_factory = make_session_factory(engine)
     app.state.catalogue = CatalogueCache()  # selections read the catalogue from here
     app.state.settings = settings  # require_reader reads REQUIRE_API_KEY from here
+    app.state.key_failures = throttle.KeyFailureThrottle(  # wrong keys per address: 429
+        settings.max_key_failures, settings.key_failure_window_s
+    )
     app.state.link_secret = link_secret(settings)  # signs document links (api/quotes.py)
     errors.install(app)
     app.include_router(health.router, prefix=API_PREFIX)

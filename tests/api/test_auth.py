@@ -63,8 +63,10 @@ def test_require_api_key_closes_reads_and_selections(
     )
 
 
-def test_every_bad_key_gets_the_same_401(api: SalesApi) -> None:
-    """Unknown, revoked, malformed: one body, one challenge, even on open endpoints."""
+def test_every_bad_key_gets_the_same_401(sales_api_with: Callable[..., SalesApi]) -> None:
+    """Unknown, revoked, malformed: one body, one challenge, even on open endpoints
+    (with an allowance of wrong keys that the 24 requests stay within)."""
+    api = sales_api_with(max_key_failures=100)
     answers = []
     candidates: dict[str, str | bytes] = {
         **{name: f"Bearer {key}" for name, key in BAD_KEYS.items()},
@@ -191,3 +193,24 @@ def test_openapi_documents_the_sales_endpoints(api: SalesApi) -> None:
         assert path in paths, path
     create = paths["/api/v1/actuators"]["post"]["requestBody"]["content"]["application/json"]
     assert "max_torque_nm" in create["schema"]["properties"]
+
+
+def test_wrong_keys_are_throttled_per_address(sales_api_with: Callable[..., SalesApi]) -> None:
+    """After ``max_key_failures`` wrong keys, any request with a key from that address is
+    429 with Retry-After (a right key too, so that guessing learns nothing); requests
+    without a key are served as before."""
+    api = sales_api_with(max_key_failures=3, key_failure_window_s=600)
+    wrong = {"Authorization": f"Bearer {BAD_KEYS['unknown but well-formed']}"}
+    for _ in range(3):
+        assert api.client.get("/api/v1/auth/me", headers=wrong).status_code == 401
+    for headers in (wrong, api.headers("sales"), {"Authorization": "Basic x"}):
+        response = api.client.get("/api/v1/auth/me", headers={**headers, "Accept-Language": "de"})
+        assert response.status_code == 429
+        assert response.headers["Retry-After"] == "200"  # 600 s / 3: one wrong key back
+        (entry,) = response.json()["detail"]
+        assert entry["loc"] == ["header", "Authorization"]
+        assert (entry["code"], entry["params"]) == ("too_many_failed_keys", {"retry_after_s": 200})
+        assert entry["msg"] == (
+            "zu viele falsche API-Schlüssel von dieser Adresse; nach 200 s erneut versuchen"
+        )
+    assert api.client.get("/api/v1/actuators").status_code == 200  # no key: not throttled

@@ -23,6 +23,7 @@ from starlette.concurrency import run_in_threadpool
 
 from actuator_selection.api.deps import read_transaction
 from actuator_selection.api.errors import ForbiddenError, UnauthorizedError, service_error
+from actuator_selection.api.throttle import KeyFailureThrottle
 from actuator_selection.config import Settings, get_settings
 from actuator_selection.core.sales import ApiKeyRecord
 from actuator_selection.db.sales import ApiKeyRepository
@@ -47,7 +48,8 @@ def request_settings(request: Request) -> Settings:
 
 
 async def get_principal(request: Request) -> ApiKeyRecord | None:
-    """The caller's API key; None without an Authorization header; 401 for a bad key.
+    """The caller's API key; None without an Authorization header; 401 for a bad key,
+    429 after too many from the client's address (``api/throttle.py``).
 
     Asynchronous, so that a request without a key costs no trip through the thread pool;
     a key is looked up in a short read transaction of its own, in the pool.
@@ -55,11 +57,15 @@ async def get_principal(request: Request) -> ApiKeyRecord | None:
     header = request.headers.get("authorization")
     if header is None:
         return None
+    throttle: KeyFailureThrottle = request.app.state.key_failures
+    address = request.client.host if request.client is not None else ""
+    throttle.check(address)  # 429 while this address has sent too many wrong keys
     scheme, _, key = header.partition(" ")
-    if scheme.lower() != "bearer" or not key.strip():
-        raise _unauthorized()
-    principal = await run_in_threadpool(_authenticate, request, key.strip())
+    principal = None
+    if scheme.lower() == "bearer" and key.strip():
+        principal = await run_in_threadpool(_authenticate, request, key.strip())
     if principal is None:
+        throttle.failed(address)
         raise _unauthorized()
     return principal
 

@@ -208,6 +208,9 @@ SERVICE_MESSAGES: Final[Mapping[str, str]] = {
     "unsupported_media_type": N_("Content-Type {given} is not accepted here; send {accepted}"),
     "media_type_missing": N_("the body has no Content-Type; send {accepted}"),
     "unsupported_charset": N_("the body is encoded as {charset}; send it as UTF-8"),
+    "too_many_failed_keys": N_(
+        "too many wrong API keys from this address; retry after {retry_after_s} s"
+    ),
     **USE_CASE_MESSAGES,
 }
 """The service's own messages by code: the routers' (``api/``) and the use cases'

@@ -5,7 +5,8 @@ FastAPI's document is post-processed once (:func:`install`):
 - every operation documents its error answers with the one error schema
   (``schemas.errors.ErrorOut``, the shape ``api/errors.py`` writes) in place of
   FastAPI's ``HTTPValidationError``: 422 and 503 everywhere (a ``%00`` in any query
-  is a 422, overload a 503 with ``Retry-After``), 401 where an API key is read, 403
+  is a 422, overload a 503 with ``Retry-After``), 401 where an API key is read (and
+  429 with ``Retry-After`` after too many wrong keys, ``api/throttle.py``), 403
   where a role is needed, 404 where the path names a resource, 409 where a write can
   conflict, 400 and 413 where a body is taken, 415 where a JSON body is taken (a body
   in another media type or encoding, ``api/media_types.py``) or the decorator says so;
@@ -55,6 +56,7 @@ ERROR_DESCRIPTIONS: dict[int, str] = {
     413: "the body is larger than the limit",
     415: "a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8)",
     422: "a parameter or body value breaks a rule; `loc` names it",
+    429: "too many wrong API keys from this address; retry after `Retry-After` s",
     503: "overloaded or the database is busy; nothing was changed, retry after `Retry-After` s",
 }
 _HEADERS: dict[int, dict[str, Any]] = {
@@ -62,6 +64,12 @@ _HEADERS: dict[int, dict[str, Any]] = {
         "WWW-Authenticate": {
             "description": 'the challenge: Bearer realm="actuator-selection"',
             "schema": {"type": "string"},
+        }
+    },
+    429: {
+        "Retry-After": {
+            "description": "seconds until a key is looked up again for this address",
+            "schema": {"type": "integer", "minimum": 1},
         }
     },
     503: {
@@ -217,7 +225,7 @@ def _statuses(path: str, op: dict[str, Any], info: _Operation) -> set[int]:
     statuses = {422, 503}
     statuses |= {int(s) for s in op.get("responses", {}) if s.isdigit() and int(s) >= 400}
     if info.reads_key:
-        statuses.add(401)
+        statuses |= {401, 429}
     if info.roles is not None or info.authorizes_itself:
         statuses.add(403)
     if "{" in path:
