@@ -38,6 +38,7 @@ from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.link_secret import link_secret
+from actuator_selection.supervision import exit_with_supervisor
 
 API_PREFIX = "/api/v1"
 DOCS_PATHS = ("/docs", "/redoc", "/docs/oauth2-redirect")
@@ -78,8 +79,10 @@ def tune_gc() -> None:
 
 def serve_app() -> FastAPI:
     """The app as ``serve`` runs it, in each worker process: the collector tuned once
-    for the process (:func:`tune_gc`), then :func:`create_app`."""
+    for the process (:func:`tune_gc`), the worker bound to its supervisor's life
+    (:func:`~actuator_selection.supervision.exit_with_supervisor`), then :func:`create_app`."""
     tune_gc()
+    exit_with_supervisor()
     return create_app()
 
 
