@@ -28,11 +28,11 @@ def _entry(response: Any) -> dict[str, Any]:
 @pytest.mark.parametrize(
     ("method", "path", "allowed"),
     [
-        ("DELETE", "/api/v1/health", "GET, OPTIONS"),
+        ("DELETE", "/api/v1/health", "GET, HEAD, OPTIONS"),
         ("DELETE", "/api/v1/selections", "OPTIONS, POST"),
         ("PUT", TOOL, "OPTIONS, POST"),
-        ("PATCH", "/api/v1/actuators", "GET, OPTIONS, POST"),
-        ("POST", "/api/v1/actuators/FHA-25C-50-L", "DELETE, GET, OPTIONS, PUT"),
+        ("PATCH", "/api/v1/actuators", "GET, HEAD, OPTIONS, POST"),
+        ("POST", "/api/v1/actuators/FHA-25C-50-L", "DELETE, GET, HEAD, OPTIONS, PUT"),
     ],
 )
 def test_a_405_names_the_methods_the_path_allows(
@@ -54,6 +54,17 @@ def test_every_method_the_allow_header_names_is_served(client: TestClient) -> No
     for method in allowed:
         response = client.request(method, "/api/v1/actuators/FHA-25C-50-L")
         assert response.status_code != 405, method
+
+
+def test_head_answers_as_get_without_the_body(client: TestClient) -> None:
+    got = client.get("/api/v1/actuators/FHA-25C-50-L")
+    head = client.head("/api/v1/actuators/FHA-25C-50-L")
+    assert (head.status_code, got.status_code) == (200, 200)
+    assert head.content == b""
+    assert head.headers["content-type"] == got.headers["content-type"]
+    assert head.headers["content-length"] == got.headers["content-length"]
+    missing = client.head("/api/v1/actuators/NOPE")
+    assert (missing.status_code, missing.content) == (404, b"")
 
 
 def test_options_answers_the_allowed_methods(client: TestClient) -> None:
@@ -124,5 +135,5 @@ def test_the_405_message_in_german(client: TestClient) -> None:
     response = client.delete("/api/v1/health", headers={"Accept-Language": "de"})
     assert response.status_code == 405
     assert _entry(response)["msg"] == (
-        "Methode DELETE ist hier nicht zulässig; zulässig: GET, OPTIONS"
+        "Methode DELETE ist hier nicht zulässig; zulässig: GET, HEAD, OPTIONS"
     )

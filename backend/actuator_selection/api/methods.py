@@ -10,6 +10,8 @@ matches (a path may be served by several routes, one per method):
 - a method none of them takes: 405 in the error shape, ``Allow`` listing the methods
   they take and ``OPTIONS``;
 - ``OPTIONS``: 204 with that ``Allow`` (RFC 9110 §9.3.7);
+- ``HEAD`` where ``GET`` is served: the ``GET`` answer's status and headers without its
+  body (RFC 9110 §9.3.2; FastAPI's routes take ``GET`` alone);
 - a path below the API's prefix that no route serves: 404 in the error shape, whatever
   the method (the static mount answered a POST there with 405).
 
@@ -31,7 +33,7 @@ from fastapi.routing import RouteContext, iter_route_contexts
 from starlette.middleware.cors import CORSMiddleware
 from starlette.responses import Response
 from starlette.routing import Match, Mount, Router
-from starlette.types import ASGIApp, Receive, Scope, Send
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from actuator_selection.api.errors import error_response, language_of, service_error
 
@@ -70,6 +72,19 @@ def method_routes(router: Router) -> list[RouteContext]:
     ]
 
 
+def _without_body(send: Send) -> Send:
+    """``send`` passing on the answer's status and headers but not its body (HEAD)."""
+
+    async def head(message: Message) -> None:
+        if message["type"] == "http.response.body":
+            if message.get("more_body", False):
+                return
+            message = {"type": "http.response.body", "body": b"", "more_body": False}
+        await send(message)
+
+    return head
+
+
 class AllowedMethods:
     """405 and ``OPTIONS`` for the paths the routes serve (see the module docstring)."""
 
@@ -83,8 +98,12 @@ class AllowedMethods:
         if scope["type"] == "http":
             if self.routes is None:
                 self.routes = method_routes(self.router)
-            methods = allowed_methods(self.routes, scope)
+            own = allowed_methods(self.routes, scope)
+            methods = own | {"HEAD"} if "GET" in own else own
             method = scope["method"]
+            if method == "HEAD" and "HEAD" not in own and "GET" in own:
+                await self.app({**scope, "method": "GET"}, receive, _without_body(send))
+                return
             if not methods and scope["path"].startswith(self.api_prefix):
                 entry = service_error(["path"], "not_found", "route_not_found", path=scope["path"])
                 await error_response(404, [entry], language=language_of(scope))(
