@@ -214,3 +214,5 @@ def test_wrong_keys_are_throttled_per_address(sales_api_with: Callable[..., Sale
             "zu viele falsche API-Schlüssel von dieser Adresse; nach 200 s erneut versuchen"
         )
     assert api.client.get("/api/v1/actuators").status_code == 200  # no key: not throttled
+    documented = api.client.get("/openapi.json").json()["paths"]["/api/v1/auth/me"]["get"]
+    assert "Retry-After" in documented["responses"]["429"]["headers"]
