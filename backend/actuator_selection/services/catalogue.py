@@ -157,6 +157,14 @@ class CatalogueSnapshot:
             interfaces=MappingProxyType(interfaces),
         )
 
+    def has_all(self, models: Iterable[str] | None) -> bool:
+        """True when every one of ``models`` is an active actuator here (None: the
+        whole catalogue, always true)."""
+        if models is None:
+            return True
+        held = {a.model for a in self.actuators}
+        return all(m in held for m in models)
+
     def actuators_of(self, models: Iterable[str] | None) -> list[Actuator]:
         """The active actuators, or those of ``models`` that exist, ordered by model."""
         if models is None:

@@ -472,9 +472,16 @@ def create_selection(
     sized again in that same transaction, against the catalogue at the version it pins,
     which no change can raise before it commits. So every stored selection is its
     catalogue version's answer, and a stream of catalogue changes cannot starve it.
-    ``check`` refuses a request the catalogue cannot answer (unknown models).
+    ``check`` refuses a request the catalogue cannot answer (unknown models), but never
+    on the strength of the snapshot held alone: a model it lacks may have been created
+    since (by any process), so the version is read first, and the catalogue with it
+    when it has changed (:meth:`~CatalogueCache.refresh`). Only models the current
+    catalogue lacks are refused.
     """
-    sized = _sized(body, catalogue.latest(reader), now, check)
+    held = catalogue.latest(reader)
+    if not held.has_all(body.models):
+        held = catalogue.refresh(reader)
+    sized = _sized(body, held, now, check)
     with writer() as session:
         repository = SelectionRepository(session)
         if not repository.add_at_version(sized.row):
