@@ -60,6 +60,10 @@ class Settings(BaseSettings):
     max_bulk_body_bytes: int = Field(default=32 << 20, ge=1024)
     """Largest body [bytes] of the bulk endpoints: batch selection, catalogue and price
     imports (20,000 batch cases are about 5 MB of JSON)."""
+    body_timeout_s: float = Field(default=10.0, gt=0)
+    """Longest time to receive a request's whole body [s], then 408; a request is admitted
+    (``MAX_CONCURRENT_REQUESTS``) only once its body is in, so a slow client holds no place.
+    10 s carries 1 MiB at 1 Mbit/s; raise it for bulk uploads over slow links."""
     max_concurrent_requests: int = Field(default=8, ge=1, le=64)
     """API requests worked on at once per process; the database pool holds as many
     connections again as spare, so none waits for a connection."""

@@ -161,6 +161,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_concurrent=settings.max_concurrent_requests,
         max_queued=settings.max_queued_requests,
         timeout_s=settings.queue_timeout_s,
+        body_timeout_s=settings.body_timeout_s,
+        max_body_bytes=max(settings.max_body_bytes, settings.max_bulk_body_bytes),
     )
     # 405 and OPTIONS from the routes, not from the static mount; CORS where configured.
     app.add_middleware(methods.AllowedMethods, router=app.router, api_prefix=API_PREFIX)

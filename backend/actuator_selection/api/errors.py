@@ -322,6 +322,13 @@ def body_too_large(limit: int | None, *, language: str = DEFAULT_LANGUAGE) -> JS
     return error_response(413, [entry], language=language)
 
 
+def body_timeout(timeout_s: float, *, language: str = DEFAULT_LANGUAGE) -> JSONResponse:
+    """408 in the error shape: the body did not arrive within ``timeout_s`` (``BODY_TIMEOUT_S``).
+    The connection is closed after it (the rest of the body is never read)."""
+    entry = service_error(["body"], "request_timeout", "request_timeout", timeout_s=timeout_s)
+    return error_response(408, [entry], {"Connection": "close"}, language=language)
+
+
 _FASTAPI_BODY_ERROR = "There was an error parsing the body"
 """FastAPI's 400 for a body its JSON parser gave up on (e.g. nested past its depth)."""
 

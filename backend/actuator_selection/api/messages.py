@@ -197,6 +197,9 @@ SERVICE_MESSAGES: Final[Mapping[str, str]] = {
     "body_too_large_no_limit": N_(
         "the request body is larger than the limit; send less per request"
     ),
+    "request_timeout": N_(
+        "the request body did not arrive within {timeout_s} s; send it in one go"
+    ),
     "service_unavailable": N_("{reason}; nothing was changed, retry after {retry_after_s} s"),
     "write_conflict": N_(
         "a concurrent change wrote the same record first; nothing was changed by this "
