@@ -75,6 +75,9 @@ class Settings(BaseSettings):
     """Longest wait for a database lock [s] (SQLite busy timeout, PostgreSQL lock_timeout)."""
     db_statement_timeout_s: float = Field(default=60.0, gt=0)
     """Longest database statement [s] (PostgreSQL statement_timeout)."""
+    db_connect_timeout_s: int = Field(default=5, ge=2)
+    """Longest wait for a new PostgreSQL connection [s] (libpq connect_timeout), then 503:
+    a database host that does not answer cannot make requests hang."""
 
     # The seller block of quote documents. The defaults are placeholders that read as
     # such: set them for the company that sends the quotes.
@@ -138,6 +141,7 @@ class Settings(BaseSettings):
             statement_timeout_s=self.db_statement_timeout_s,
             pool_size=self.max_concurrent_requests,
             pool_timeout_s=self.db_lock_timeout_s,
+            connect_timeout_s=self.db_connect_timeout_s,
         )
 
 

@@ -35,6 +35,7 @@ from actuator_selection.api import (
 )
 from actuator_selection.api.auth import require_reader
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
+from actuator_selection.db.availability import Availability
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.link_secret import link_secret
@@ -90,6 +91,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     """Build the application for ``settings`` (default: from the environment)."""
     settings = settings or get_settings()
     engine = make_engine(settings.database_url, settings.engine_limits())
+    Availability().watch(engine)  # one log line per outage and per recovery
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:

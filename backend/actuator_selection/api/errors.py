@@ -17,7 +17,9 @@ Endpoints raise :class:`ApiError` (or a subclass naming its status); core raises
 
 A database that is busy past its limits (a lock or statement timeout, no free
 connection, a serialisation conflict) is an overload, not a fault: 503 with
-``Retry-After``, and the transaction has been rolled back. Any other unexpected
+``Retry-After``, and the transaction has been rolled back. So is a database that
+cannot be reached (``db.availability``): 503 naming the dependency, without a
+traceback, on every request until it answers again. Any other unexpected
 error is a logged 500 that leaves the connection usable: Starlette's own handler
 for ``Exception`` re-raises after answering, and the server then resets the
 keep-alive connection, failing the client's next request too.
@@ -36,7 +38,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from pydantic import BaseModel, Discriminator, Tag
 from pydantic.fields import FieldInfo
-from sqlalchemy.exc import IntegrityError, OperationalError
+from sqlalchemy.exc import DBAPIError, IntegrityError, OperationalError
 from sqlalchemy.exc import TimeoutError as PoolTimeoutError
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.middleware.body_limit import MAX_BODY_SIZE_SCOPE_KEY
@@ -52,6 +54,7 @@ from actuator_selection.api.messages import (
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.messages import Text
 from actuator_selection.core.text import NUL_RULE
+from actuator_selection.db.availability import unreachable
 
 log = logging.getLogger(__name__)
 
@@ -422,6 +425,24 @@ def service_unavailable(
     return error_response(503, [entry], {"Retry-After": str(retry_after_s)}, language=language)
 
 
+DATABASE_RETRY_AFTER_S = 5
+"""``Retry-After`` [s] of a 503 while the database cannot be reached."""
+
+
+def database_unavailable(*, language: str = DEFAULT_LANGUAGE) -> JSONResponse:
+    """503 with ``Retry-After`` while the database cannot be reached; the entry names the
+    dependency that is down (``params.dependency``)."""
+    entry = service_error(
+        ["request"],
+        "service_unavailable",
+        "database_unreachable",
+        dependency="database",
+        retry_after_s=DATABASE_RETRY_AFTER_S,
+    )
+    headers = {"Retry-After": str(DATABASE_RETRY_AFTER_S)}
+    return error_response(503, [entry], headers, language=language)
+
+
 def database_busy(exc: BaseException) -> bool:
     """True when ``exc`` says the database was too busy, not that the request was wrong."""
     if isinstance(exc, PoolTimeoutError):
@@ -435,12 +456,19 @@ def database_busy(exc: BaseException) -> bool:
     return "database is locked" in message or "database is busy" in message
 
 
-def _operational(request: Request, exc: Exception) -> JSONResponse:
-    language = language_of(request.scope)
+def _database_error(exc: BaseException, language: str) -> JSONResponse:
+    """503 for a database that cannot be reached (logged once per outage by
+    ``db.availability``) or is busy; 500 for any other error."""
+    if unreachable(exc):
+        return database_unavailable(language=language)
     if database_busy(exc):
         log.warning("database busy: %s", exc)
         return service_unavailable("the database is busy", language=language)
     return _internal_error(exc, language)
+
+
+def _operational(request: Request, exc: Exception) -> JSONResponse:
+    return _database_error(exc, language_of(request.scope))
 
 
 def _internal_error(exc: BaseException, language: str = DEFAULT_LANGUAGE) -> JSONResponse:
@@ -475,12 +503,7 @@ class AnswerUnexpectedErrors:
         except Exception as exc:
             if started:
                 raise
-            language = language_of(scope)
-            response = (
-                service_unavailable("the database is busy", language=language)
-                if database_busy(exc)
-                else _internal_error(exc, language)
-            )
+            response = _database_error(exc, language_of(scope))
             await response(scope, receive, send)
 
 
@@ -527,4 +550,5 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(ApiError, _api_error)
     app.add_exception_handler(IntegrityError, _conflict)
     app.add_exception_handler(OperationalError, _operational)
+    app.add_exception_handler(DBAPIError, _operational)  # e.g. InterfaceError: connection lost
     app.add_exception_handler(PoolTimeoutError, _operational)

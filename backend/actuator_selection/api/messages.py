@@ -200,6 +200,9 @@ SERVICE_MESSAGES: Final[Mapping[str, str]] = {
     "request_timeout": N_(
         "the request body did not arrive within {timeout_s} s; send it in one go"
     ),
+    "database_unreachable": N_(
+        "the database is unreachable; nothing was changed, retry after {retry_after_s} s"
+    ),
     "service_unavailable": N_("{reason}; nothing was changed, retry after {retry_after_s} s"),
     "write_conflict": N_(
         "a concurrent change wrote the same record first; nothing was changed by this "

@@ -16,6 +16,7 @@ Both are set up for concurrent clients (the README's "Durability and concurrency
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -23,6 +24,7 @@ from typing import Any
 import pydantic_core
 from sqlalchemy import Engine, create_engine, event
 from sqlalchemy.engine import make_url
+from sqlalchemy.exc import DisconnectionError
 from sqlalchemy.orm import Session, sessionmaker
 
 WRITE_INTENT = "actuator_selection_writes"
@@ -43,12 +45,16 @@ class EngineLimits:
         Connections kept open; as many again may be opened under load.
     pool_timeout_s
         Longest wait for a free connection [s], then ``sqlalchemy.exc.TimeoutError`` (503).
+    connect_timeout_s
+        Longest wait for a new PostgreSQL connection [s] (libpq ``connect_timeout``;
+        whole seconds, at least 2), then the database counts as unreachable (503).
     """
 
     lock_timeout_s: float = 5.0
     statement_timeout_s: float = 60.0
     pool_size: int = 8
     pool_timeout_s: float = 10.0
+    connect_timeout_s: int = 5
 
 
 def normalise_url(url: str) -> str:
@@ -63,6 +69,39 @@ def normalise_url(url: str) -> str:
         if url.startswith(prefix):
             return "postgresql+psycopg://" + url[len(prefix) :]
     return url
+
+
+def _sqlite_file_guard(engine: Engine, path: Path) -> None:
+    """Hand out a pooled connection only while its file is still the one at ``path``.
+
+    An open SQLite connection keeps reading and writing its file after the file (or its
+    folder) has been moved, deleted or replaced: the service would go on with a database
+    that is no longer the one configured. The file's identity is taken when the
+    connection is made and compared on every checkout (one ``stat``); when it differs,
+    the connection is replaced, and opening the path again says whether the database
+    can be reached (``db.availability``). This is SQLite's counterpart of PostgreSQL's
+    pre-ping.
+    """
+
+    def identity() -> tuple[int, int] | None:
+        try:
+            found = os.stat(path)
+        except OSError:
+            return None
+        return found.st_dev, found.st_ino
+
+    @event.listens_for(engine, "connect")
+    def _remember(_dbapi_connection: Any, record: Any) -> None:
+        record.info[_SQLITE_FILE] = identity()
+
+    @event.listens_for(engine, "checkout")
+    def _check(_dbapi_connection: Any, record: Any, _proxy: Any) -> None:
+        if record.info.get(_SQLITE_FILE) != identity():
+            raise DisconnectionError(f"the database file {path} has moved or gone")
+
+
+_SQLITE_FILE = "actuator_selection_sqlite_file"
+"""Key of a pooled SQLite connection's file identity in its record's ``info``."""
 
 
 def _sqlite_setup(engine: Engine) -> None:
@@ -126,6 +165,8 @@ def make_engine(url: str, limits: EngineLimits | None = None) -> Engine:
             **pool,
         )
         _sqlite_setup(engine)
+        if not in_memory:
+            _sqlite_file_guard(engine, Path(str(parsed.database)))
         return engine
     options = " ".join(
         f"-c {name}={_milliseconds(value)}"
@@ -137,7 +178,7 @@ def make_engine(url: str, limits: EngineLimits | None = None) -> Engine:
     )
     return create_engine(
         url,
-        connect_args={"options": options},
+        connect_args={"options": options, "connect_timeout": limits.connect_timeout_s},
         json_serializer=_to_json,
         pool_pre_ping=True,
         pool_size=limits.pool_size,
