@@ -150,3 +150,33 @@ def test_a_database_outage_is_answered_503_at_once_and_ends_without_a_restart(
     assert "Traceback" not in server.log_path.read_text()
     assert _lines(server, "database unreachable") == 1, server.log()
     assert _lines(server, "database reachable again") == 1, server.log()
+
+
+def test_a_sqlite_file_moved_away_is_unreachable_and_not_made_again_empty(
+    new_database: Callable[[str], str], tmp_path: Path
+) -> None:
+    """Without the folder gone, opening the path would create a new, empty database."""
+    url = new_database("sqlite")
+    keys, engine = seeded_database(url)
+    engine.dispose()
+    path = Path(str(make_url(url).database))
+    away = path.with_name(f"{path.name}-away")
+    server = LiveServer(database_url=url, log_path=tmp_path / "server.log", keys=keys)
+    server.start()
+    try:
+        with server.client() as client:
+            assert client.post("/api/v1/selections", json=WORKED_EXAMPLE).status_code == 201
+            path.rename(away)
+            for route in ("/api/v1/health", "/api/v1/actuators"):
+                response = client.get(route)
+                assert response.status_code == 503, response.text
+                assert response.json()["detail"][0]["code"] == "database_unreachable"
+            assert not path.exists()
+            away.rename(path)
+            assert client.get("/api/v1/health").status_code == 200
+            assert client.post("/api/v1/selections", json=WORKED_EXAMPLE).status_code == 201
+    finally:
+        server.stop()
+        if away.exists():
+            away.rename(path)
+    assert "Traceback" not in server.log_path.read_text()

@@ -81,6 +81,9 @@ def _sqlite_file_guard(engine: Engine, path: Path) -> None:
     the connection is replaced, and opening the path again says whether the database
     can be reached (``db.availability``). This is SQLite's counterpart of PostgreSQL's
     pre-ping.
+
+    Once the file exists, connections open it without creating it (``mode=rw``): a
+    database deleted under the service is unreachable, not silently a new empty one.
     """
 
     def identity() -> tuple[int, int] | None:
@@ -90,9 +93,19 @@ def _sqlite_file_guard(engine: Engine, path: Path) -> None:
             return None
         return found.st_dev, found.st_ino
 
+    existing_only = f"{path.absolute().as_uri()}?mode=rw"
+    created = [path.exists()]  # once true, stays true
+
+    @event.listens_for(engine, "do_connect")
+    def _open(_dialect: Any, _record: Any, cargs: list[Any], cparams: dict[str, Any]) -> None:
+        if created[0] and not cparams.get("uri") and cargs == [str(path)]:
+            cargs[0] = existing_only
+            cparams["uri"] = True
+
     @event.listens_for(engine, "connect")
     def _remember(_dbapi_connection: Any, record: Any) -> None:
         record.info[_SQLITE_FILE] = identity()
+        created[0] = True
 
     @event.listens_for(engine, "checkout")
     def _check(_dbapi_connection: Any, record: Any, _proxy: Any) -> None:
