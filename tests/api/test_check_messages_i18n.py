@@ -130,8 +130,9 @@ def test_the_worked_example_in_german_and_english(client: TestClient, selection_
     for check in de_checks:
         _assert_german(check["message"])
     reasons = german.json()["reasons"]
-    assert reasons == [de["continuous_duty"]["message"]]
+    assert reasons == [de["continuous_duty"]["message"], de["continuous_speed"]["message"]]
     assert "Dauerbetriebsbereich oder Dauerdrehmoment" in reasons[0]
+    assert "Dauerbetriebsbereich oder zulässige Dauer- bzw. Nenndrehzahl" in reasons[1]
 
 
 def test_the_english_answer_is_the_scalar_flowcharts_text(
@@ -265,6 +266,7 @@ VARIANTS: tuple[dict[str, Any], ...] = (
     {"decel_torque_nm": math.nan},
     {"bearing_moment_load_nm": math.nan},
     {"radial_force_n": 0.0, "axial_force_n": 0.0},
+    {"no_load_torque_slope_nm_per_rpm": 0.05},
 )
 """Operands that lead each rule to each of its messages."""
 
@@ -397,7 +399,15 @@ def test_every_rule_message_has_a_code_and_a_german_text() -> None:
         _assert_german(text)
         assert render_check(message, "en") == message
     rules = {c for c in CHECK_MESSAGES if c.split(".")[0] not in DRIVE_MESSAGE_GROUPS}
-    assert seen == rules - {"output_voltage.pass", "output_voltage.fail"}, rules - seen
+    retired = {
+        "output_voltage.pass",
+        "output_voltage.fail",
+        # continuous_duty's words before its speed moved to continuous_speed: kept for the
+        # answers stored with them (codes are never reused)
+        "continuous_duty.approximate_pass",
+        "continuous_duty.approximate_fail",
+    }
+    assert seen == rules - retired, rules - seen
     missing = {key: t for key, t in check_templates().items() if not german.get(t)}
     assert not missing
 

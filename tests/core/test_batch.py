@@ -423,7 +423,9 @@ def test_edge_cases_named_in_the_issue() -> None:
     assert ev.status(4, 0, "inertia_ratio") is Status.WARN
     assert ev.status(0, 1, "peak_torque") is Status.NO_DATA
     assert ev.verdict(0, 3) is Verdict.SUITABLE
-    assert ev.status(0, 8, "continuous_duty") is Status.NO_DATA  # T_0 without a speed
+    # T_0 without a speed: the torque is checked, the speed lacks data
+    assert ev.status(0, 8, "continuous_duty") is Status.PASS
+    assert ev.status(0, 8, "continuous_speed") is Status.NO_DATA
     ranked = [c.actuator.model for c in select_batch(actuators, [EXAMPLE], top=9)[0].candidates]
     assert ranked[:3] == ["T0", "TC", "TIE-A"]  # equal T_max and J_A: the name decides
 

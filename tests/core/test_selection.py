@@ -38,6 +38,7 @@ def test_worked_example_passes_every_check_with_data() -> None:
         "decel_torque",
         "continuous_duty",
         "thermal_peak",
+        "continuous_speed",
     ]
     assert by_name["max_speed"].value == 40
     assert by_name["max_speed"].limit == 90
@@ -46,6 +47,7 @@ def test_worked_example_passes_every_check_with_data() -> None:
     assert by_name["decel_torque"].value == pytest.approx(85.478, abs=1e-3)
     assert by_name["continuous_duty"].status is Status.NO_DATA
     assert by_name["thermal_peak"].status is Status.NO_DATA
+    assert by_name["continuous_speed"].status is Status.NO_DATA
     assert c.verdict is Verdict.UNCONFIRMED
     assert by_name["peak_torque"].reference == "Eq. 514.1"
     assert by_name["max_speed"].reference == "Table 515.1"
@@ -262,6 +264,6 @@ def test_brake_holds_the_load_torque_at_standstill() -> None:
     failed = evaluate(braked, heavy).checks[-1]
     assert (failed.status, failed.value) == (Status.FAIL, 95.0)
     assert "exceeds the brake's holding torque = 90 Nm" in failed.message
-    assert [c.name for c in evaluate(braked, EXAMPLE).checks][-1] == "thermal_peak"
+    assert [c.name for c in evaluate(braked, EXAMPLE).checks][-1] == "continuous_speed"
     unpublished = evaluate(FHA, with_brake).checks[-1]
     assert (unpublished.status, unpublished.missing) == (Status.NO_DATA, "brake holding torque")

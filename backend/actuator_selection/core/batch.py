@@ -69,6 +69,7 @@ from actuator_selection.core.checks import (
 )
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.deferred import Deferred
+from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import (
     CycleFigures,
@@ -80,6 +81,7 @@ from actuator_selection.core.motion import (
     figure_rows,
     figures_of,
     heating_gain,
+    mean_abs_speed_rpm,
     piece_arrays,
     profile_from,
     trapezoid_piece_arrays,
@@ -151,6 +153,9 @@ class CatalogueArrays:
     rated_speed: FloatArray
     brake_holding: FloatArray
     thermal_time_constant: FloatArray
+    no_load_torque_slope: FloatArray
+    """k_T·K_INL per actuator (:attr:`~actuator_selection.core.checks.Operands.
+    no_load_torque_slope_nm_per_rpm`); NaN where not published."""
     has_zone: BoolArray
     drive: dict[str, FloatArray]
     """The drive's and the output bearing's values, by their :class:`Operands` name."""
@@ -190,6 +195,16 @@ def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
         rated_speed=_optional([a.rated_speed_rpm for a in actuators]),
         brake_holding=_optional([a.brake_holding_torque_nm for a in actuators]),
         thermal_time_constant=_optional([a.thermal_time_constant_s for a in actuators]),
+        no_load_torque_slope=_optional(
+            [
+                no_load_torque_slope_nm_per_rpm(
+                    torque_constant_nm_per_a=a.torque_constant_nm_per_a,
+                    constant_30c_a_per_rpm=a.no_load_current_constant_30c_a_per_rpm,
+                    constant_80c_a_per_rpm=a.no_load_current_constant_80c_a_per_rpm,
+                )
+                for a in actuators
+            ]
+        ),
         has_zone=has_zone,
         drive=_drive_columns(actuators),
         zone_max_speed=_optional([a.zone.max_speed_rpm if a.zone else None for a in actuators]),
@@ -590,6 +605,36 @@ def _thermal_torque(
     return np.sqrt(peak)
 
 
+def _thermal_speed(cases: _Cases, gains: _HeatingGains) -> FloatArray:
+    """:meth:`~actuator_selection.core.motion.Profile.thermal_speed_rpm` on arrays: each
+    piece's mean |n| (a column of cases), the periodic start y_0 = B/(1 − A), the peak of
+    y over the pieces' ends, never below n_av; cases × actuators (or cases × 1 where no
+    actuator publishes τ_th)."""
+    col = np.newaxis
+    p = cases.pieces
+    mean = cases.figures.mean_speed_rpm[:, col]
+    speeds = [
+        mean_abs_speed_rpm(
+            p.duration[:, k, col],
+            p.start_rpm[:, k, col],
+            p.end_rpm[:, k, col],
+            p.accel_start[:, k, col],
+            p.accel_end[:, k, col],
+        )
+        for k in range(p.duration.shape[1])
+    ]
+    heat: FloatArray = np.zeros_like(mean)
+    for k, speed in enumerate(speeds):
+        heat = heat + (speed - heat) * gains.piece(k)
+    cycle_gain = gains.cycle()
+    start = np.where(cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), mean)
+    peak = heat = start
+    for k, speed in enumerate(speeds):
+        heat = heat + (speed - heat) * gains.piece(k)
+        peak = np.where(heat > peak, heat, peak)
+    return np.where(peak > mean, peak, mean)
+
+
 def _evaluate_block(
     cat: CatalogueArrays,
     cases: _Cases,
@@ -646,6 +691,7 @@ def _evaluate_block(
                     constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
         thermal_torque = _thermal_torque(cat, cases, gains, heat, energy, squares)
+        thermal_speed = _thermal_speed(cases, gains)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
     accel_torque = np.where(unknown, math.nan, accel)
     decel_torque = np.where(unknown, math.nan, decel)
@@ -687,6 +733,8 @@ def _evaluate_block(
         thermal_time_constant_s=gains.time_constant,
         thermal_time_constant_assumed=gains.assumed,
         thermal_torque_nm=thermal_torque,
+        thermal_speed_rpm=thermal_speed,
+        no_load_torque_slope_nm_per_rpm=cat.no_load_torque_slope,
     )
     with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes
         results = [_status_codes(r, q, cat, detail=detail) for r in rules]

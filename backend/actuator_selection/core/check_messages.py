@@ -201,6 +201,8 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) lies "
         "above the continuous-duty zone (limit {limit:.4g} Nm at n_av)"
     ),
+    # Retired (continuous_duty's words while it also bounded the speed): kept so that the
+    # answers stored with them still render; continuous_speed checks the speed now.
     "continuous_duty.approximate_pass": N_(
         "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} "
         "Nm) within {what} = {limit:.4g} Nm up to the {speed_what} {speed_rpm:.4g} rpm (no "
@@ -212,6 +214,30 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "Nm) outside {what} = {limit:.4g} Nm up to the {speed_what} {speed_rpm:.4g} rpm (no "
         "continuous-duty zone published; continuous operation above that speed is not "
         "allowed)"
+    ),
+    "continuous_duty.current_pass": N_(
+        "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) "
+        "within the continuous torque at n_av, T_0 − k_T·K_INL·n_av = {stall_torque_nm:.4g} Nm − "
+        "{slope_nm_per_rpm:.4g} Nm/rpm · {mean_speed_rpm:.4g} rpm = {limit:.4g} Nm (the no-load "
+        "current of Eq. 522.2 takes its share of the continuous stall current, Eq. 522.3; no "
+        "continuous-duty zone published)"
+    ),
+    "continuous_duty.current_fail": N_(
+        "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) "
+        "exceeds the continuous torque at n_av, T_0 − k_T·K_INL·n_av = {stall_torque_nm:.4g} Nm "
+        "− {slope_nm_per_rpm:.4g} Nm/rpm · {mean_speed_rpm:.4g} rpm = {limit:.4g} Nm (the "
+        "no-load current of Eq. 522.2 takes its share of the continuous stall current, "
+        "Eq. 522.3; no continuous-duty zone published)"
+    ),
+    "continuous_duty.rectangle_pass": N_(
+        "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) "
+        "within {what} = {limit:.4g} Nm (no continuous-duty zone published: the limit is taken "
+        "as constant with speed; the speed is checked on its own)"
+    ),
+    "continuous_duty.rectangle_fail": N_(
+        "approximate: operating point (n_av = {mean_speed_rpm:.4g} rpm, T_rms = {value:.4g} Nm) "
+        "exceeds {what} = {limit:.4g} Nm (no continuous-duty zone published: the limit is "
+        "taken as constant with speed; the speed is checked on its own)"
     ),
     # 6. thermal_peak
     "thermal_peak.beyond_zone": N_(
@@ -235,6 +261,20 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
     "thermal_peak.short": N_("short against τ_th: T_rms = {rms_torque_nm:.4g} Nm governs"),
     "thermal_peak.long": N_(
         "not short against τ_th: its long segments govern, not T_rms = {rms_torque_nm:.4g} Nm"
+    ),
+    # 7. continuous_speed
+    "continuous_speed.pass": N_(
+        "speed the winding's heating follows n_th = {value:.4g} rpm (cycle mean n_av = "
+        "{mean_speed_rpm:.4g} rpm; {model}) ≤ the {speed_what} {limit:.4g} rpm"
+    ),
+    "continuous_speed.fail": N_(
+        "speed the winding's heating follows n_th = {value:.4g} rpm (cycle mean n_av = "
+        "{mean_speed_rpm:.4g} rpm; {model}) exceeds the {speed_what} {limit:.4g} rpm: "
+        "continuous operation above it is not allowed"
+    ),
+    "continuous_speed.model": N_(
+        "first-order thermal model, τ_th = {tau_s:.4g} s{assumed}; a segment long against "
+        "τ_th counts with its own speed, whatever n_av"
     ),
     # brake_holding
     "brake_holding.pass": N_(

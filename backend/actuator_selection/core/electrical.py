@@ -420,6 +420,31 @@ def no_load_current_constant_a_per_rpm(
     return max(value, 0.0)
 
 
+def no_load_torque_slope_nm_per_rpm(
+    *,
+    torque_constant_nm_per_a: float | None,
+    constant_30c_a_per_rpm: float | None,
+    constant_80c_a_per_rpm: float | None,
+) -> float | None:
+    """k_T·K_INL [Nm/rpm]: the output torque that the speed-dependent part of the no-load
+    current, K_INL·n (Eq. 522.2), takes from a given winding current at each rpm (Eq. 522.3,
+    T_out = k_T·(I − I_NLS − K_INL·n)); None where k_T or K_INL is not published.
+
+    For the continuous-duty edge at speed (``core/checks.py``, ``_continuous_limit``):
+    continuous duty is the warm steady state, so K_INL at 80 °C where published (the
+    actuator at operating temperature; the 30 °C value is the cold start's), else at 30 °C,
+    the larger, on the safe side. CHA-25A-50 (k_T = 26 Nm/A, K_INL(80 °C) = 2·10⁻³ A/rpm):
+
+    >>> no_load_torque_slope_nm_per_rpm(torque_constant_nm_per_a=26.0,
+    ...     constant_30c_a_per_rpm=6e-3, constant_80c_a_per_rpm=2e-3)
+    0.052
+    """
+    k_inl = constant_80c_a_per_rpm if constant_80c_a_per_rpm is not None else constant_30c_a_per_rpm
+    if torque_constant_nm_per_a is None or k_inl is None:
+        return None
+    return torque_constant_nm_per_a * k_inl
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class OutputTorque:
     """The terms of Eq. 522.2 and 522.3.

@@ -407,6 +407,46 @@ class Profile:
                 peak = heat
         return math.sqrt(peak)
 
+    def thermal_speed_rpm(self, gains: Sequence[float], cycle_gain: float) -> float:
+        """The speed the winding's speed-dependent heating follows, at its peak over the
+        repeating cycle [rpm]; never below n_av.
+
+        The chapter judges speed by the cycle's mean n_av (Eq. 514.3), a linear average of
+        |n|: it stands for a cycle short against the winding's thermal time constant, as
+        T_rms does for torque. A segment long against τ_th heats the winding with its own
+        speed (iron losses and the no-load current I_NLR = I_NLS + K_INL·n of Eq. 522.2
+        grow with speed), whatever the mean. The same first-order model as
+        :meth:`thermal_torque_nm`, on the quantity the chapter averages: y → |n| with
+        dy/dt = (|n| − y)/τ_th, each piece's |n| taken as its mean
+        (:func:`mean_abs_speed_rpm`), the periodic steady state y_0 = B/(1 − A), the peak
+        at a piece's end. A cycle short against τ_th gives n_av back; a run at k times a
+        speed limit n_c from standstill crosses n_c after τ_th·ln(k/(k − 1)) (the linear
+        counterpart of Fig. 520.1's model): 1.1·τ_th at k = 1.5. Written operation for
+        operation like the vectorised flowchart (``core/batch.py``).
+
+        Parameters
+        ----------
+        gains, cycle_gain
+            :meth:`heating_gains` for τ_th.
+        """
+        heat = 0.0
+        speeds = []
+        for p, gain in zip(self.pieces, gains, strict=True):
+            speed = mean_abs_speed_rpm(
+                p.duration_s, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end
+            )
+            speeds.append(speed)
+            heat = heat + (speed - heat) * gain
+        # cycle_gain is 0 only where t_0/τ_th underflows: then y stays at the mean, n_av.
+        start = heat / cycle_gain if cycle_gain > 0 else self.mean_speed_rpm
+        peak = heat = start
+        for speed, gain in zip(speeds, gains, strict=True):
+            heat = heat + (speed - heat) * gain
+            if heat > peak:
+                peak = heat
+        mean = self.mean_speed_rpm
+        return peak if peak > mean else mean
+
     def segment_torques(self, actuator_inertia_kgm2: float) -> tuple[SegmentTorque, ...]:
         """Per segment, the torque at the ends of its pieces along the cycle's time."""
         out: dict[int, tuple[list[float], list[float]]] = {}
@@ -452,6 +492,17 @@ def heating_gain(duration_s: float, thermal_time_constant_s: float) -> float:
     0.632121
     """
     return -math.expm1(-duration_s / thermal_time_constant_s)
+
+
+def mean_abs_speed_rpm(
+    duration_s: Any, start_rpm: Any, end_rpm: Any, accel_start: Any, accel_end: Any
+) -> Any:
+    """A piece's mean |n| [rpm]: (n_a + n_b)/2, plus (α_a − α_b)·t/12 (in rpm) where the
+    acceleration ramps (a jerk ramp's speed is quadratic in time), as :func:`_summed`
+    sums the travel; a piece never passes through standstill (:class:`Segment`). Floats
+    or arrays, the same IEEE operations on both."""
+    ramp = (accel_start - accel_end) * duration_s / 12.0 / RAD_PER_S_PER_RPM
+    return abs((start_rpm + end_rpm) / 2 + ramp)
 
 
 def pieces_of(motion: Motion) -> tuple[Piece, ...]:

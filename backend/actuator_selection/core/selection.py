@@ -61,6 +61,7 @@ from actuator_selection.core.checks import (
 )
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.deferred import defer_field
+from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import CycleTorques, Motion, Profile, profile_of, trapezoid
 from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
@@ -321,19 +322,32 @@ def _thermal(
     actuator: Actuator, app: Application, torques: CycleTorques | None, profile: Profile
 ) -> tuple[float, ...]:
     """The operands after the output bearing's: t_0, τ_th (the catalogue's, else the
-    application's, else the assumed default), whether τ_th is that assumption, and the
-    peak of the cycle's heating as a torque (NaN without J_A)."""
+    application's, else the assumed default), whether τ_th is that assumption, the peak
+    of the cycle's heating as a torque (NaN without J_A) and as a speed, and k_T·K_INL."""
     tau = actuator.thermal_time_constant_s
     assumed = False
     if tau is None:
         tau = app.thermal_time_constant_s
         if tau is None:
             tau, assumed = DEFAULT_THERMAL_TIME_CONSTANT_S, True
+    gains = profile.heating_gains(tau)
     if torques is None or actuator.inertia_kgm2 is None:
         peak = math.nan
     else:
-        peak = profile.thermal_torque_nm(actuator.inertia_kgm2, *profile.heating_gains(tau))
-    return profile.cycle_s, tau, assumed, peak
+        peak = profile.thermal_torque_nm(actuator.inertia_kgm2, *gains)
+    slope = no_load_torque_slope_nm_per_rpm(
+        torque_constant_nm_per_a=actuator.torque_constant_nm_per_a,
+        constant_30c_a_per_rpm=actuator.no_load_current_constant_30c_a_per_rpm,
+        constant_80c_a_per_rpm=actuator.no_load_current_constant_80c_a_per_rpm,
+    )
+    return (
+        profile.cycle_s,
+        tau,
+        assumed,
+        peak,
+        profile.thermal_speed_rpm(*gains),
+        _value(slope),
+    )
 
 
 def _value(value: float | None) -> float:
