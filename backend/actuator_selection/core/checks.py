@@ -19,12 +19,17 @@ The rules, in the manufacturer's order (value ≤ limit passes):
    dynamic applications, so a failure there and a warning otherwise);
 3. ``peak_torque``: T_1 ≤ T_max (Eq. 514.1);
 4. ``decel_torque``: |T_3| ≤ T_max (Eq. 514.1);
-5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1;
-   Eq. 514.2, 514.3), approximately T_rms ≤ T_0 and n_av ≤ n_max where no zone is
-   published;
+5. ``continuous_duty``: T_rms ≤ the continuous torque at n_av: the zone's edge (Fig. 517.1;
+   Eq. 514.2, 514.3); where no zone is published, approximately T_0 − k_T·K_INL·n_av
+   (Eq. 522.2, 522.3), else T_0;
 6. ``thermal_peak``: T_rms stands only for a cycle short against the winding's thermal
    time constant: the peak of the winding's heating over the repeating cycle (the
-   first-order model of Fig. 520.1), as a torque, against the same limit.
+   first-order model of Fig. 520.1), as a torque, against the same limit;
+7. ``continuous_speed``: the speed side of the operating point: n_th, the speed the
+   winding's heating follows by the same model (n_av for a short cycle), ≤ the zone's
+   last, the allowable continuous or the rated speed.
+
+Each check compares one quantity, and reports it with its own value, limit and unit.
 
 **Adding a check is adding one rule** (its formulas and its message) to
 :data:`RULES`; the scalar and the vectorised flowchart, the verdicts and the ranking

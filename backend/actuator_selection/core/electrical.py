@@ -435,8 +435,8 @@ def no_load_torque_slope_nm_per_rpm(
     actuator at operating temperature; the 30 °C value is the cold start's), else at 30 °C,
     the larger, on the safe side. CHA-25A-50 (k_T = 26 Nm/A, K_INL(80 °C) = 2·10⁻³ A/rpm):
 
-    >>> no_load_torque_slope_nm_per_rpm(torque_constant_nm_per_a=26.0,
-    ...     constant_30c_a_per_rpm=6e-3, constant_80c_a_per_rpm=2e-3)
+    >>> round(no_load_torque_slope_nm_per_rpm(torque_constant_nm_per_a=26.0,
+    ...     constant_30c_a_per_rpm=6e-3, constant_80c_a_per_rpm=2e-3), 6)
     0.052
     """
     k_inl = constant_80c_a_per_rpm if constant_80c_a_per_rpm is not None else constant_30c_a_per_rpm

@@ -8,10 +8,13 @@ in the manufacturer's order:
    dynamic applications, so a failure there and a warning otherwise);
 3. ``peak_torque``: T_1 ≤ T_max (Eq. 514.1);
 4. ``decel_torque``: |T_3| ≤ T_max (Eq. 514.1);
-5. ``continuous_duty``: (n_av, T_rms) inside the continuous-duty zone (Fig. 517.1);
+5. ``continuous_duty``: T_rms against the continuous torque at n_av: the zone's edge
+   (Fig. 517.1), else the current-based edge (Eq. 522.2, 522.3) or T_0;
 6. ``thermal_peak``: whether T_rms stands for the cycle's length: the peak of the
    winding's heating over the repeating cycle against the same limit (the first-order
-   thermal model of Fig. 520.1).
+   thermal model of Fig. 520.1);
+7. ``continuous_speed``: the speed the winding's heating follows (n_av for a short
+   cycle, a long segment's own speed) against the continuous or rated speed.
 
 A check never passes without data: a missing catalogue value gives ``no_data``. The
 rules live in :mod:`actuator_selection.core.checks`, one table that the vectorised
@@ -27,7 +30,8 @@ Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here
 >>> c = evaluate(fha, app)
 >>> [(k.name, k.status.value) for k in c.checks]  # doctest: +NORMALIZE_WHITESPACE
 [('max_speed', 'pass'), ('inertia_ratio', 'pass'), ('peak_torque', 'pass'),
- ('decel_torque', 'pass'), ('continuous_duty', 'no_data'), ('thermal_peak', 'no_data')]
+ ('decel_torque', 'pass'), ('continuous_duty', 'no_data'), ('thermal_peak', 'no_data'),
+ ('continuous_speed', 'no_data')]
 >>> c.verdict.value
 'unconfirmed'
 >>> c.checks[2].message
