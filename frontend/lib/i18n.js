@@ -179,6 +179,7 @@ const TEXTS = {
     "check.continuous_duty": "Dauerbetrieb (n_av, T_rms) im Dauerbetriebsbereich",
     "check.brake_holding": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
     "check.thermal_peak": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze (Modell Abb. 520.1)",
+    "check.continuous_speed": "Dauerdrehzahl n_th (Erwärmung) ≤ Dauer- bzw. Nenndrehzahl",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -187,6 +188,7 @@ const TEXTS = {
     "check.short.continuous_duty": "Dauerbetrieb",
     "check.short.brake_holding": "Haltebremse",
     "check.short.thermal_peak": "Erwärmung",
+    "check.short.continuous_speed": "Dauerdrehzahl",
 
     "check.finding.against": "{value}, Grenze {limit}",
     "check.finding.missing": "nicht im Katalog: {what}",
@@ -667,6 +669,7 @@ const TEXTS = {
     "check.continuous_duty": "Continuous duty (n_av, T_rms) in the continuous-duty zone",
     "check.brake_holding": "Holding brake: T_L at standstill ≤ holding torque",
     "check.thermal_peak": "Winding heating over the cycle ≤ continuous limit (Fig. 520.1 model)",
+    "check.continuous_speed": "Continuous speed n_th (heating) ≤ continuous or rated speed",
 
     "check.short.max_speed": "n_2 ≤ n_max",
     "check.short.inertia_ratio": "J_L ≤ 3·J_A",
@@ -675,6 +678,7 @@ const TEXTS = {
     "check.short.continuous_duty": "continuous duty",
     "check.short.brake_holding": "holding brake",
     "check.short.thermal_peak": "heating",
+    "check.short.continuous_speed": "continuous speed",
 
     "check.finding.against": "{value}, limit {limit}",
     "check.finding.missing": "not in the catalogue: {what}",

@@ -93,8 +93,12 @@ def test_worked_example_over_http(client: TestClient) -> None:
         "margin_percent": pytest.approx((90 - 40) / 90 * 100),
         "utilisation": 40 / 90,
     }
-    assert detail["reasons"] == [full["continuous_duty"]["message"]]
+    assert detail["reasons"] == [
+        full["continuous_duty"]["message"],
+        full["continuous_speed"]["message"],
+    ]
     assert "continuous-duty zone or continuous torque" in full["continuous_duty"]["message"]
+    assert "allowable continuous or rated speed" in full["continuous_speed"]["message"]
     assert detail["actuator"] == client.get("/api/v1/actuators/FHA-25C-50-L").json()
 
 
@@ -205,14 +209,16 @@ def test_cha_25a_50_against_worked_example_and_gentler_cycle(client: TestClient)
 
     gentle = with_changes("models", ["CHA-25A-50"])
     gentle["cycle"] = {"accel_s": 0.2, "constant_s": 0.1, "decel_s": 0.2, "pause_s": 1.0}
-    (c,) = post(client, gentle).json()["candidates"]
+    answer = post(client, gentle).json()
+    (c,) = answer["candidates"]
     t1, t3 = 5 + inertia_torque / 2, 5 - inertia_torque / 2
     t_rms = math.sqrt((t1**2 * 0.2 + 5**2 * 0.1 + t3**2 * 0.2) / 1.5)
     assert c["rms_torque_nm"] == pytest.approx(t_rms)
     assert c["verdict"] == "suitable"
     duty = next(k for k in c["checks"] if k["name"] == "continuous_duty")
     assert duty["approximate"] is True
-    assert duty["limit"] == 55
+    # T_0 less what the no-load current takes at n_av: k_T·K_INL(80 °C) = 26 · 0.002 Nm/rpm
+    assert duty["limit"] == pytest.approx(55 - 26 * 0.002 * answer["mean_speed_rpm"])
 
 
 def test_low_dynamics_turns_inertia_failure_into_warning(client: TestClient) -> None:
@@ -479,16 +485,20 @@ def _continuous(client: TestClient, model: str, speed_rpm: float, torque_nm: flo
     assert response.status_code == 201, response.text
     (candidate,) = response.json()["candidates"]
     checks = {c["name"]: c for c in candidate["checks"]}
-    return candidate, checks["continuous_duty"]
+    return candidate, checks["continuous_speed"]
 
 
 def test_continuous_operation_is_bounded_by_the_rated_speed_not_n_max(client: TestClient) -> None:
     """CHA-25A-50 (n_max 112 rpm; rated motor speed 3500 rpm / 50 = 70 rpm at the output):
-    continuous at 100 rpm fails, at 60 rpm it passes, with the same light torque."""
+    continuous at 100 rpm fails, at 60 rpm it passes, with the same light torque. The
+    speed check fails on the speed; the torque check, fine, passes."""
     fast, check = _continuous(client, "CHA-25A-50", 100, 5)
     assert fast["verdict"] == "unsuitable"
     assert check["status"] == "fail"
-    assert check["value"] < check["limit"]  # the torque is fine: the speed is not
+    assert check["limit"] == 70
+    assert check["value"] > check["limit"]
+    torque = next(c for c in fast["checks"] if c["name"] == "continuous_duty")
+    assert torque["status"] == "pass"
     slow, check = _continuous(client, "CHA-25A-50", 60, 5)
     assert check["status"] == "pass"
     assert slow["verdict"] == "suitable"
@@ -568,7 +578,8 @@ def test_an_hour_at_1_45_t0_then_ten_hours_pause_fails_on_the_winding_heating(
     )
     heating = checks["thermal_peak"]
     assert heating["status"] == "fail"
-    assert heating["limit"] == 55
+    # T_0 less what the no-load current takes at n_av: k_T·K_INL(80 °C) = 26 · 0.002 Nm/rpm
+    assert heating["limit"] == pytest.approx(55 - 26 * 0.002 * selection["mean_speed_rpm"])
     assert heating["value"] == pytest.approx(80 * math.sqrt(1 - math.exp(-6)), rel=1e-3)
     assert candidate["verdict"] == "unsuitable"
     detail = client.get(f"/api/v1/selections/{selection['id']}/candidates/CHA-25A-50").json()

@@ -215,6 +215,10 @@ TEXT: dict[str, dict[str, str]] = {
         "en": "Winding heating over the cycle ≤ continuous limit",
         "de": "Wicklungserwärmung über den Zyklus ≤ Dauergrenze",
     },
+    "check_continuous_speed": {
+        "en": "Continuous speed n_th (heating) ≤ continuous or rated speed",
+        "de": "Dauerdrehzahl n_th (Erwärmung) ≤ Dauer- bzw. Nenndrehzahl",
+    },
     "check_brake_holding": {
         "en": "Holding brake: T_L at standstill ≤ holding torque",
         "de": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
