@@ -213,7 +213,10 @@ def test_worked_example_gives_the_chapters_numbers(page: Page, traffic: Traffic)
 
     # every check with value, limit, status and the chapter's reference
     checks = page.locator("#checks-table tbody tr")
-    expect(checks).to_have_count(6)  # the chapter's five and the winding's thermal_peak
+    # the chapter's five, the winding's thermal_peak and the continuous speed
+    expect(checks).to_have_count(7)
+    continuous_speed = page.locator('#checks-table tr[data-check="continuous_speed"]')
+    expect(continuous_speed).to_have_attribute("data-status", "no_data")
     thermal = page.locator('#checks-table tr[data-check="thermal_peak"]')
     expect(thermal).to_have_attribute("data-status", "no_data")
     expect(thermal).to_contain_text("520.1")
@@ -298,6 +301,12 @@ def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> 
     zone = traces(page, "chart-diagram")["zone-approx"]
     assert max(zone["y"]) == pytest.approx(stall)
     assert max(zone["x"]) == pytest.approx(edge)
+    # where k_T and K_INL are published, the edge falls with speed as the winding current
+    # does: T_0 − k_T·K_INL(80 °C)·n at the speed limit (core/checks.py _continuous_limit)
+    k_t = catalogue["torque_constant_nm_per_a"]
+    k_inl = catalogue["no_load_current_constant_80c_a_per_rpm"]
+    falls = catalogue["stall_torque_nm"] and k_t and k_inl
+    assert zone["y"][2] == pytest.approx(stall - k_t * k_inl * edge if falls else stall)
     assert any("approximate" in text for text in plot_annotations(page, "chart-diagram"))
     # the approximate check is shown as approximate, with ≈ before its limit
     duty = page.locator('#checks-table tr[data-check="continuous_duty"]')

@@ -318,9 +318,14 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
         "Dauerbetrieb (nav, Trms) im Dauerbetriebsbereich (keine Daten) – nicht im Katalog: "
         "Dauerbetriebsbereich oder Dauerdrehmoment"
     )
-    # both checks that need a continuous limit lack it: continuous_duty and thermal_peak
+    # both checks that need a continuous limit lack it (continuous_duty and thermal_peak),
+    # and continuous_speed its speed
     expect(hint.locator("span[lang=de]")).to_have_text(
-        ["Dauerbetriebsbereich oder Dauerdrehmoment"] * 2
+        [
+            "Dauerbetriebsbereich oder Dauerdrehmoment",
+            "Dauerbetriebsbereich oder Dauerdrehmoment",
+            "Dauerbetriebsbereich oder zulässige Dauer- bzw. Nenndrehzahl",
+        ]
     )
     expect(page.locator("#quote-form legend")).to_have_text(
         ["Servoantrieb", "Servoregler (optional)", "Kunde", "Preise und Konditionen"]

@@ -273,19 +273,27 @@ function checkStatus(candidate, name) {
 }
 
 /**
- * The rectangle that stands for the continuous-duty zone where the catalogue has none,
- * as the continuous_duty check bounds it (core/checks.py ``_continuous_limit``,
- * ``_continuous_speed``): T_0, else the allowable continuous torque; up to the allowable
- * continuous speed, else the rated speed. A missing value is null.
+ * The zone that stands for the continuous-duty zone where the catalogue has none, as the
+ * continuous_duty and continuous_speed checks bound it (core/checks.py
+ * ``_continuous_limit``, ``_speed_limit``): T_0, else the allowable continuous torque; up
+ * to the allowable continuous speed, else the rated speed. Where k_T and K_INL are
+ * published with T_0, the edge falls with speed as the winding current does, T_0 −
+ * k_T·K_INL·n (K_INL at 80 °C, else at 30 °C; core/electrical.py
+ * ``no_load_torque_slope_nm_per_rpm``): ``slope`` is k_T·K_INL, else 0. A missing value
+ * is null.
  */
 function approximateZone(actuator, t) {
   const stall = actuator?.stall_torque_nm;
   const continuousSpeed = actuator?.continuous_speed_rpm;
+  const kT = actuator?.torque_constant_nm_per_a;
+  const hot = actuator?.no_load_current_constant_80c_a_per_rpm;
+  const kInl = isNum(hot) ? hot : actuator?.no_load_current_constant_30c_a_per_rpm;
   return {
     torque: isNum(stall) ? stall : (actuator?.continuous_torque_nm ?? null),
     what: isNum(stall) ? t("fig.stall") : t("fig.continuous"),
     speed: isNum(continuousSpeed) ? continuousSpeed : (actuator?.rated_speed_rpm ?? null),
     speedWhat: isNum(continuousSpeed) ? t("fig.continuous_speed") : t("fig.rated_speed"),
+    slope: isNum(stall) && isNum(kT) && isNum(kInl) ? kT * kInl : 0,
   };
 }
 
@@ -314,7 +322,13 @@ export function diagramFigure(selection, candidate, actuator, lang) {
   const zone = Array.isArray(actuator?.continuous_duty_zone)
     ? sortedZone(actuator.continuous_duty_zone)
     : [];
-  const { torque: approxTorque, speed: approxSpeed, what: approxWhat, speedWhat } = approximateZone(actuator, t);
+  const {
+    torque: approxTorque,
+    speed: approxSpeed,
+    what: approxWhat,
+    speedWhat,
+    slope: approxSlope,
+  } = approximateZone(actuator, t);
 
   const layout = baseLayout(lang);
   layout.xaxis = axis(t("fig.speed"));
@@ -346,7 +360,7 @@ export function diagramFigure(selection, candidate, actuator, lang) {
       type: "scatter",
       mode: "lines",
       x: [0, 0, approxSpeed, approxSpeed, 0],
-      y: [0, approxTorque, approxTorque, 0, 0],
+      y: [0, approxTorque, Math.max(approxTorque - approxSlope * approxSpeed, 0), 0, 0],
       fill: "toself",
       fillcolor: COLORS.zone,
       line: { color: COLORS.zoneLine, width: 2, dash: "dash" },
