@@ -467,13 +467,14 @@ def test_document_draws_the_continuous_rectangle_the_check_compares_with(
     api: SalesApi, model: str, edge_field: str | None
 ) -> None:
     """Without a published zone, the diagram's rectangle runs up to the speed the
-    continuous_duty check bounds it by (allowable continuous speed, else rated speed),
-    never to n_max; with neither published it is not drawn, as the check lacks data."""
+    continuous_speed check bounds it by (allowable continuous speed, else rated speed),
+    never to n_max; with neither published it is not drawn, as that check lacks data."""
     # a load within every model's peaks, so that each can be quoted
     light = {"speed_rpm": 20, "torque_nm": 0.1, "inertia_kgm2": 0.0005}
     selection = api.selection(models=[model], load=light)
     candidate = selection["candidates"][0]
     duty = next(c for c in candidate["checks"] if c["name"] == "continuous_duty")
+    speed = next(c for c in candidate["checks"] if c["name"] == "continuous_speed")
     body = api.quote_body(str(selection["id"]), actuator={"model": model, "quantity": 1})
     del body["controller"]
     quote = create(api, body)
@@ -482,12 +483,13 @@ def test_document_draws_the_continuous_rectangle_the_check_compares_with(
     traces = {t["name"]: t for t in _document_figure(html)["data"]}
     actuator = api.get(f"/api/v1/actuators/{model}", role=None).json()
     if edge_field is None:
-        assert duty["status"] == "no_data"
+        assert speed["status"] == "no_data"
         assert "continuous limit (approximate)" not in traces
         return
     assert duty["approximate"] is True
     rectangle = traces["continuous limit (approximate)"]
     assert max(rectangle["x"]) == actuator[edge_field] < actuator["max_speed_rpm"]
+    assert speed["limit"] == actuator[edge_field]
     assert max(rectangle["y"]) == duty["limit"]
 
 

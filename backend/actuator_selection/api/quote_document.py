@@ -156,7 +156,7 @@ def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
 
 def continuous_speed_edge(actuator: Mapping[str, Any]) -> float | None:
     """The speed up to which the approximate continuous-duty rectangle holds, as the
-    continuous_duty check bounds it (``core.checks._continuous_speed``): the allowable
+    continuous_speed check bounds it (``core.checks._speed_limit``): the allowable
     continuous speed, else the rated speed; never n_max, a peak speed. None where the
     quoted catalogue entry has neither (the check then lacks data).
 

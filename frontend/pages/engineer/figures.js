@@ -305,7 +305,7 @@ function approximateZone(actuator, t) {
  * (``stall_torque_nm``, else ``continuous_torque_nm``) and the allowable continuous
  * speed (``continuous_speed_rpm``, else ``rated_speed_rpm``), marked approximate: the
  * rectangle the continuous_duty check compares with (core/checks.py
- * ``_continuous_limit``, ``_continuous_speed``), never up to n_max, a peak speed;
+ * ``_continuous_limit``, ``_speed_limit``), never up to n_max, a peak speed;
  * else "no data", as the check says. T_max and n_max as limit lines; the operating
  * point (n_av, T_rms) and the peaks (n_2, T_1), (n_2, |T_3|). ``actuator`` may be
  * null when the catalogue record could not be read.
