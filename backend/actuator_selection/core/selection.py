@@ -273,6 +273,7 @@ def operands(
     app: Application,
     torques: CycleTorques | None,
     profile: Profile,
+    heating: dict[float, Heating] | None = None,
 ) -> Operands:
     """The floats the rules compute from, NaN for what the catalogue does not publish.
 
@@ -287,6 +288,9 @@ def operands(
     profile
         The cycle's figures: n_av (Eq. 514.3), peak speed, the least T_1, |T_3|, T_rms
         over every J_A ≥ 0, the torque held at standstill.
+    heating
+        The cycle's heating per τ_th (:data:`Heating`), filled as computed: pass the same
+        dict for every actuator of one case.
     """
     nan = math.nan
     zone = actuator.zone
@@ -318,12 +322,22 @@ def operands(
         profile.holding_torque_nm,
         nan if actuator.brake_holding_torque_nm is None else actuator.brake_holding_torque_nm,
         *_drive_and_bearing(actuator, app, profile),
-        *_thermal(actuator, app, torques, profile),
+        *_thermal(actuator, app, torques, profile, {} if heating is None else heating),
     )
 
 
+Heating = tuple[tuple[tuple[float, ...], float], float]
+"""A cycle's heating gains (:meth:`~actuator_selection.core.motion.Profile.heating_gains`)
+and its n_th (:meth:`~actuator_selection.core.motion.Profile.thermal_speed_rpm`) for one
+τ_th: the same for every actuator without a published τ_th, so computed once per τ_th."""
+
+
 def _thermal(
-    actuator: Actuator, app: Application, torques: CycleTorques | None, profile: Profile
+    actuator: Actuator,
+    app: Application,
+    torques: CycleTorques | None,
+    profile: Profile,
+    heating: dict[float, Heating],
 ) -> tuple[float, ...]:
     """The operands after the output bearing's: t_0, τ_th (the catalogue's, else the
     application's, else the assumed default), whether τ_th is that assumption, the peak
@@ -334,7 +348,11 @@ def _thermal(
         tau = app.thermal_time_constant_s
         if tau is None:
             tau, assumed = DEFAULT_THERMAL_TIME_CONSTANT_S, True
-    gains = profile.heating_gains(tau)
+    known = heating.get(tau)
+    if known is None:
+        gains = profile.heating_gains(tau)
+        known = heating[tau] = (gains, profile.thermal_speed_rpm(*gains))
+    gains, speed = known
     if torques is None or actuator.inertia_kgm2 is None:
         peak = math.nan
     else:
@@ -349,7 +367,7 @@ def _thermal(
         tau,
         assumed,
         peak,
-        profile.thermal_speed_rpm(*gains),
+        speed,
         _value(slope),
     )
 
@@ -418,12 +436,13 @@ def evaluate_each(
     if rules is None:
         rules = app.rules
     profile = app.profile
+    heating: dict[float, Heating] = {}  # per τ_th, for every actuator
     candidates = []
     for actuator in actuators:
         torques = (
             profile.torques(actuator.inertia_kgm2) if actuator.inertia_kgm2 is not None else None
         )
-        q = operands(actuator, app, torques, profile)
+        q = operands(actuator, app, torques, profile, heating)
         checks = tuple([rule.check(q) for rule in rules])
         candidates.append(
             Candidate(actuator=actuator, verdict=_verdict(checks), torques=torques, checks=checks)
