@@ -46,7 +46,9 @@ def test_half_an_hour_at_105_rpm_is_unsuitable_on_the_speed(client: TestClient) 
     assert {"name": "continuous_speed", "reference": "Eq. 514.3; Fig. 520.1 (model)",
             "unit": "rpm"} in answer["check_rules"]  # fmt: skip
     checks = {c["name"]: c for c in candidate["checks"]}
-    assert [n for n, c in checks.items() if c["status"] == "fail"] == ["continuous_speed"]
+    # the speed, and the winding current: 52/26 + 0.19 + 0.002·105 = 2.40 A > I_0 = 2.3 A
+    failed = [n for n, c in checks.items() if c["status"] == "fail"]
+    assert failed == ["thermal_peak", "continuous_speed"]
     speed = checks["continuous_speed"]
     assert speed["limit"] == 70
     assert speed["value"] == pytest.approx(105 * (1 - math.exp(-3)), abs=0.3)
@@ -62,7 +64,9 @@ def test_half_an_hour_at_105_rpm_is_unsuitable_on_the_speed(client: TestClient) 
     ).json()
     de = next(c for c in german["checks"] if c["name"] == "continuous_speed")
     assert "überschreitet Nenndrehzahl 70 min⁻¹" in de["message"]
-    assert detail["reasons"] == [full["message"]]
+    heating = next(c for c in detail["checks"] if c["name"] == "thermal_peak")
+    assert heating["message_code"] == "thermal_peak.current_fail"
+    assert detail["reasons"] == [heating["message"], full["message"]]
 
 
 def test_a_minute_at_105_rpm_is_suitable(client: TestClient) -> None:

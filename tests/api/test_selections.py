@@ -578,9 +578,11 @@ def test_an_hour_at_1_45_t0_then_ten_hours_pause_fails_on_the_winding_heating(
     )
     heating = checks["thermal_peak"]
     assert heating["status"] == "fail"
-    # T_0 less what the no-load current takes at n_av: k_T·K_INL(80 °C) = 26 · 0.002 Nm/rpm
-    assert heating["limit"] == pytest.approx(55 - 26 * 0.002 * selection["mean_speed_rpm"])
-    assert heating["value"] == pytest.approx(80 * math.sqrt(1 - math.exp(-6)), rel=1e-3)
+    # On the winding current (Eq. 522.2, 522.3): 80 Nm at 10 rpm heats as 80 Nm plus the
+    # torque its no-load current takes, k_T·K_INL(80 °C)·n = 26 · 0.002 · 10 Nm, against T_0.
+    running = 80 + 26 * 0.002 * 10
+    assert heating["limit"] == 55
+    assert heating["value"] == pytest.approx(running * math.sqrt(1 - math.exp(-6)), rel=1e-3)
     assert candidate["verdict"] == "unsuitable"
     detail = client.get(f"/api/v1/selections/{selection['id']}/candidates/CHA-25A-50").json()
     full = next(c for c in detail["checks"] if c["name"] == "thermal_peak")
@@ -592,7 +594,7 @@ def test_an_hour_at_1_45_t0_then_ten_hours_pause_fails_on_the_winding_heating(
     heating = next(c for c in candidate["checks"] if c["name"] == "thermal_peak")
     a, c = 3602 / 86_400, 39602 / 86_400  # the hour's share of τ_th, and the cycle's
     assert heating["value"] == pytest.approx(
-        80 * math.sqrt((1 - math.exp(-a)) / (1 - math.exp(-c))), rel=2e-3
+        running * math.sqrt((1 - math.exp(-a)) / (1 - math.exp(-c))), rel=2e-3
     )
     assert heating["status"] == "pass"
     assert candidate["verdict"] == "suitable"

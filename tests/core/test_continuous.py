@@ -114,9 +114,47 @@ def test_a_half_hour_above_the_rated_speed_fails_whatever_the_mean() -> None:
     assert speed.approximate  # τ_th is not published: the assumed 600 s
     assert "τ_th = 600 s assumed" in speed.message
     assert candidate.verdict is Verdict.UNSUITABLE
-    # Only the speed binds: the torque checks pass.
+    # The speed binds, and the winding current: 52/26 + 0.19 + 0.002·105 = 2.40 A > 2.3 A
+    # for five time constants. The mean torque passes.
     failed = [c.name for c in candidate.checks if c.status is Status.FAIL]
-    assert failed == ["continuous_speed"]
+    assert failed == ["thermal_peak", "continuous_speed"]
+
+
+def test_the_heating_follows_the_winding_current() -> None:
+    """thermal_peak on the winding current (Eq. 522.2, 522.3): each step's current I =
+    T/k_T + I_NLS + K_INL·|n| (no no-load current at standstill), as the torque it stands
+    for, k_T·(I − I_NLS), through the first-order model; against T_0, which that torque
+    reaches at standstill with I = I_0. The issue's run: 84.3 Nm while accelerating
+    (52 Nm + (0.97 + 0.5) kgm² · 22.0 rad/s²), 52 Nm running, 19.7 Nm braking."""
+    cha = row("CHA-25A-50")
+    assert cha.inertia_kgm2 is not None
+    assert cha.torque_constant_nm_per_a is not None
+    assert cha.no_load_starting_current_a is not None
+    alpha = 105 * 2 * math.pi / 60 / 0.5
+    inertia_torque = (cha.inertia_kgm2 + 0.5) * alpha
+
+    def equivalent(torque: float, speed: float) -> float:
+        current = winding_current_a(cha, torque, speed)
+        assert cha.torque_constant_nm_per_a is not None
+        assert cha.no_load_starting_current_a is not None
+        return cha.torque_constant_nm_per_a * (current - cha.no_load_starting_current_a)
+
+    steps = [
+        (equivalent(52 + inertia_torque, 52.5) ** 2, 0.5),
+        (equivalent(52, 105) ** 2, 1800.0),
+        (equivalent(52 - inertia_torque, 52.5) ** 2, 0.5),
+        (0.0, 3600.0),
+    ]
+    heating = check(cha, ISSUE_RUN, "thermal_peak")
+    assert heating.value == pytest.approx(math.sqrt(simulated_peak(steps, TAU)), rel=1e-9)
+    assert (heating.status, heating.limit) == (Status.FAIL, 55.0)
+    assert "k_T·K_INL·|n| = 0.052 Nm/rpm" in heating.message
+    # Without k_T·K_INL (FHA-C) the torque alone heats, against T_0 or the continuous torque.
+    fha = row("FHA-17C-50")
+    app = run(60, 3600, 0, 14, inertia_kgm2=0.05)
+    plain = check(fha, app, "thermal_peak")
+    assert plain.limit == 15.0
+    assert plain.value == pytest.approx(check(fha, app, "continuous_duty").value, rel=1e-3)
 
 
 def test_a_short_burst_above_the_rated_speed_passes() -> None:
@@ -159,7 +197,17 @@ def test_the_speed_limit_is_crossed_after_tau_ln_k_over_k_minus_1(
 
 
 def test_the_issue_run_is_equal_in_the_batch() -> None:
-    apps = [ISSUE_RUN, run(105, 60, 3600, 52), run(60, 3600, 0, 53, tau=1200.0), EXAMPLE_APP]
+    many = Motion(  # 40 pieces: the batch recomputes them in its second pass
+        segments=ISSUE_RUN.cycle.segments * 10,
+        load=AxisLoad(inertia_kgm2=0.2, friction_torque_nm=30),
+    )
+    apps = [
+        ISSUE_RUN,
+        run(105, 60, 3600, 52),
+        run(60, 3600, 0, 53, tau=1200.0),
+        EXAMPLE_APP,
+        Application(motion=many),
+    ]
     actuators = list(catalogue())
     assert_matches_scalar(actuators, apps)
     for top in (1, 5):
@@ -279,6 +327,10 @@ def test_53_nm_at_68_rpm_draws_more_than_the_stall_current_and_fails() -> None:
     )
     assert duty.limit < duty.value < 55.0
     assert "T_0 − k_T·K_INL·n_av" in duty.message
+    # the heating on the winding current: k_T·(I − I_NLS) = 53 + 0.052·68 = 56.5 Nm > T_0
+    heating = check(cha, app, "thermal_peak")
+    assert heating.value == pytest.approx(53 + 26 * 0.002 * 68, abs=0.1)
+    assert (heating.status, heating.limit) == (Status.FAIL, 55.0)
     assert evaluate(cha, app).verdict is Verdict.UNSUITABLE
 
 

@@ -156,6 +156,9 @@ class CatalogueArrays:
     no_load_torque_slope: FloatArray
     """k_T·K_INL per actuator (:attr:`~actuator_selection.core.checks.Operands.
     no_load_torque_slope_nm_per_rpm`); NaN where not published."""
+    heating_slope: FloatArray
+    """k_T·K_INL where the heating follows the winding current (no zone, T_0 published:
+    :meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm`), else NaN."""
     has_zone: BoolArray
     drive: dict[str, FloatArray]
     """The drive's and the output bearing's values, by their :class:`Operands` name."""
@@ -185,6 +188,14 @@ def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
     )
     rank_position = np.empty(len(actuators), dtype=np.int32)
     rank_position[order] = np.arange(len(actuators), dtype=np.int32)
+    slopes = [
+        no_load_torque_slope_nm_per_rpm(
+            torque_constant_nm_per_a=a.torque_constant_nm_per_a,
+            constant_30c_a_per_rpm=a.no_load_current_constant_30c_a_per_rpm,
+            constant_80c_a_per_rpm=a.no_load_current_constant_80c_a_per_rpm,
+        )
+        for a in actuators
+    ]
     return CatalogueArrays(
         max_torque=_optional([a.max_torque_nm for a in actuators]),
         max_speed=_optional([a.max_speed_rpm for a in actuators]),
@@ -195,14 +206,11 @@ def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
         rated_speed=_optional([a.rated_speed_rpm for a in actuators]),
         brake_holding=_optional([a.brake_holding_torque_nm for a in actuators]),
         thermal_time_constant=_optional([a.thermal_time_constant_s for a in actuators]),
-        no_load_torque_slope=_optional(
+        no_load_torque_slope=_optional(slopes),
+        heating_slope=_optional(
             [
-                no_load_torque_slope_nm_per_rpm(
-                    torque_constant_nm_per_a=a.torque_constant_nm_per_a,
-                    constant_30c_a_per_rpm=a.no_load_current_constant_30c_a_per_rpm,
-                    constant_80c_a_per_rpm=a.no_load_current_constant_80c_a_per_rpm,
-                )
-                for a in actuators
+                s if a.zone is None and a.stall_torque_nm is not None else None
+                for s, a in zip(slopes, actuators, strict=True)
             ]
         ),
         has_zone=has_zone,
@@ -579,6 +587,23 @@ def _piece_torques(
     return (t0, t1), square
 
 
+def _heating_square(cat: CatalogueArrays, p: PieceArrays, k: int, square: FloatArray) -> FloatArray:
+    """The mean T² of piece ``k`` as the winding's heating counts it
+    (:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm` with its
+    ``no_load_slope``): (√m + k_T·K_INL·|n̄|)² where :attr:`CatalogueArrays.heating_slope`
+    is published, else m."""
+    col = np.newaxis
+    speed = mean_abs_speed_rpm(
+        p.duration[:, k, col],
+        p.start_rpm[:, k, col],
+        p.end_rpm[:, k, col],
+        p.accel_start[:, k, col],
+        p.accel_end[:, k, col],
+    )
+    torque = np.sqrt(square) + cat.heating_slope * speed
+    return np.where(np.isnan(cat.heating_slope), square, torque * torque)
+
+
 def _thermal_torque(
     cat: CatalogueArrays,
     cases: _Cases,
@@ -598,8 +623,14 @@ def _thermal_torque(
         cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), energy / cycle_s
     )
     peak = heat = start
+    on_current = bool(np.any(~np.isnan(cat.heating_slope)))
     for k in range(p.duration.shape[1]):
-        square = _piece_torques(cat, p, k)[1] if squares is None else squares[k]
+        if squares is None:
+            square = _piece_torques(cat, p, k)[1]
+            if on_current:
+                square = _heating_square(cat, p, k, square)
+        else:
+            square = squares[k]
         heat = heat + (square - heat) * gains.piece(k)
         peak = np.where(heat > peak, heat, peak)
     return np.sqrt(peak)
@@ -656,6 +687,9 @@ def _evaluate_block(
     gains = _HeatingGains(cat, cases)
     energy = np.zeros(shape)
     heat = np.zeros(shape)
+    # The heating counts the winding current where the catalogue allows (_heating_square).
+    on_current = bool(np.any(~np.isnan(cat.heating_slope)))
+    heat_energy = np.zeros(shape) if on_current else energy
     # Each piece's mean T², kept for the second pass where the cycle has few pieces (else
     # recomputed there, so that memory stays bounded).
     squares: list[FloatArray] | None = [] if p.duration.shape[1] <= _KEPT_PIECES else None
@@ -667,6 +701,11 @@ def _evaluate_block(
             torques, square = _piece_torques(cat, p, k)
             # ∫T² dt of the piece: its mean T² times its duration, as the scalar sums it.
             energy = energy + square * p.duration[:, k, col]
+            if on_current:
+                square = _heating_square(cat, p, k, square)
+                heat_energy = heat_energy + square * p.duration[:, k, col]
+            else:
+                heat_energy = energy
             heat = heat + (square - heat) * gains.piece(k)
             if squares is not None:
                 squares.append(square)
@@ -690,7 +729,7 @@ def _evaluate_block(
                     constant = np.where(take, torque, constant)
                     constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
-        thermal_torque = _thermal_torque(cat, cases, gains, heat, energy, squares)
+        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares)
         thermal_speed = _thermal_speed(cases, gains)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
     accel_torque = np.where(unknown, math.nan, accel)

@@ -253,6 +253,18 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "winding heating over the repeating cycle peaks at {value:.4g} Nm as a torque exceeds "
         "the continuous limit {limit:.4g} Nm ({model})"
     ),
+    "thermal_peak.current_pass": N_(
+        "winding current over the repeating cycle peaks at {value:.4g} Nm as a torque, the "
+        "no-load current of Eq. 522.2 counted as the torque k_T·K_INL·|n| = "
+        "{slope_nm_per_rpm:.4g} Nm/rpm · |n| it takes (Eq. 522.3), ≤ T_0 = {limit:.4g} Nm "
+        "({model})"
+    ),
+    "thermal_peak.current_fail": N_(
+        "winding current over the repeating cycle peaks at {value:.4g} Nm as a torque, the "
+        "no-load current of Eq. 522.2 counted as the torque k_T·K_INL·|n| = "
+        "{slope_nm_per_rpm:.4g} Nm/rpm · |n| it takes (Eq. 522.3), exceeds T_0 = "
+        "{limit:.4g} Nm ({model})"
+    ),
     "thermal_peak.model": N_(
         "first-order thermal model, τ_th = {tau_s:.4g} s{assumed}; cycle t_0 = {cycle_s:.4g} s "
         "= {ratio:.3g}·τ_th, {regime}"

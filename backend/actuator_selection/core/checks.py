@@ -870,6 +870,22 @@ DEFAULT_THERMAL_TIME_CONSTANT_S`), and then the check is approximate.
 # --- 6. thermal_peak: the cycle's heating peak ≤ the continuous limit (Fig. 520.1 model) ------
 
 
+def _on_current(q: Operands, xp: Ops) -> Truth:
+    """Where the heating follows the winding current (no zone; T_0, k_T and K_INL
+    published): the thermal value counts k_T·K_INL·|n| beside the torque
+    (:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm`)."""
+    return xp.not_(
+        q.has_zone | xp.isnan(q.no_load_torque_slope_nm_per_rpm) | xp.isnan(q.stall_torque_nm)
+    )
+
+
+def _heating_limit(q: Operands, xp: Ops) -> Real:
+    """T_0 where the heating follows the winding current (its value carries the no-load
+    current's share, so the edge at standstill bounds it), else the continuous limit at
+    n_av (``_continuous_limit``)."""
+    return xp.where(_on_current(q, xp), q.stall_torque_nm, _continuous_limit(q, xp))
+
+
 def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> str:
     tau, t_0 = q.thermal_time_constant_s, q.cycle_s
     ratio = t_0 / tau
@@ -892,6 +908,14 @@ def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> 
             zone_max_speed_rpm=q.zone_max_speed_rpm,
             model=model,
         )
+    if _on_current(q, FLOAT_OPS):
+        return phrase(
+            f"thermal_peak.current_{_outcome(status)}",
+            value=peak,
+            limit=limit,
+            slope_nm_per_rpm=q.no_load_torque_slope_nm_per_rpm,
+            model=model,
+        )
     return phrase(f"thermal_peak.{_outcome(status)}", value=peak, limit=limit, model=model)
 
 
@@ -900,7 +924,7 @@ THERMAL_PEAK = Rule(
     reference="Fig. 520.1 (model); Eq. 514.2",
     unit="Nm",
     value=lambda q, xp: q.thermal_torque_nm,
-    limit=_continuous_limit,
+    limit=_heating_limit,
     requires=(
         published("inertia_kgm2", N_("moment of inertia J_A (the cycle's torques need it)")),
         _CONTINUOUS_LIMIT_DATA,
@@ -927,8 +951,18 @@ allowable continuous torque). For a cycle short against τ_th the peak tends to 
 (the chapter's check, Eq. 514.2); a segment long against τ_th counts with its own
 torque, and a step from cold to k·T_c crosses the limit after τ_th·ln(k²/(k² − 1)),
 the overload duration of Fig. 520.1's model (:func:`~actuator_selection.core.thermal.
-overload_duration_s`). Torque stands for current (T = k_T·I; the no-load current and the
-speed-dependent iron losses are left out, as T_rms leaves them out). τ_th is the
+overload_duration_s`).
+
+Where k_T and K_INL are published and no zone is (the CHA), the heating follows the
+winding current, not the torque alone (issue "A verdict an application engineer signs",
+item 6): I = T/k_T + I_NLS + K_INL·|n| (Eq. 522.2, 522.3) counts, as the torque it stands
+for, k_T·(I − I_NLS) = T + k_T·K_INL·|n| while moving and T at standstill, against T_0,
+which that torque reaches at standstill with I = I_0 (``_heating_limit``): at constant T
+and n the current-based edge T ≤ T_0 − k_T·K_INL·n of ``continuous_duty``. The losses are
+taken ∝ (I − I_NLS)², not I²: the same limit in steady state, a stand-in for a cycle
+(approximate, as without a zone). Elsewhere torque stands for current (T = k_T·I; the
+no-load current and the speed-dependent iron losses left out, as T_rms leaves them
+out). τ_th is the
 catalogue's where published, else the application's, else an assumed default
 (:data:`~actuator_selection.core.thermal.DEFAULT_THERMAL_TIME_CONSTANT_S`, reported as
 approximate); the limit is approximate without a zone, as in ``continuous_duty``.

@@ -355,7 +355,11 @@ class Profile:
         )
 
     def thermal_torque_nm(
-        self, actuator_inertia_kgm2: float, gains: Sequence[float], cycle_gain: float
+        self,
+        actuator_inertia_kgm2: float,
+        gains: Sequence[float],
+        cycle_gain: float,
+        no_load_slope: float | None = None,
     ) -> float:
         """The peak of the winding's heating over the repeating cycle, as a torque [Nm].
 
@@ -377,12 +381,23 @@ class Profile:
         √x → T_rms (Eq. 514.2); a segment long against it gives its own torque.
         Written operation for operation like the vectorised flowchart (``core/batch.py``).
 
+        With ``no_load_slope`` k_T·K_INL, the heating follows the winding current rather
+        than the torque alone (Eq. 522.2, 522.3): a piece counts as its rms torque plus
+        the torque k_T·K_INL·|n| that its speed-dependent no-load current takes from the
+        continuous stall current, (√m_k + k_T·K_INL·|n̄_k|)², |n̄_k| its mean |n|
+        (:func:`mean_abs_speed_rpm`); at constant torque T and speed n that is T +
+        k_T·K_INL·n against T_0, the current-based edge T ≤ T_0 − k_T·K_INL·n of the
+        continuous check, and at standstill the torque alone.
+
         Parameters
         ----------
         actuator_inertia_kgm2
             J_A [kgm²].
         gains, cycle_gain
             :meth:`heating_gains` for τ_th.
+        no_load_slope
+            k_T·K_INL [Nm/rpm] (:func:`~actuator_selection.core.electrical.
+            no_load_torque_slope_nm_per_rpm`), or None: the torque alone.
         """
         j_a = actuator_inertia_kgm2
         energy, heat = 0.0, 0.0
@@ -395,6 +410,12 @@ class Profile:
                 square = t0 * t0
             else:
                 square = (t0 * t0 + t0 * t1 + t1 * t1) / 3.0
+            if no_load_slope is not None:
+                speed = mean_abs_speed_rpm(
+                    p.duration_s, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end
+                )
+                torque = math.sqrt(square) + no_load_slope * speed
+                square = torque * torque
             squares.append(square)
             energy += square * p.duration_s
             heat = heat + (square - heat) * gain

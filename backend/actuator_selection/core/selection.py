@@ -353,15 +353,19 @@ def _thermal(
         gains = profile.heating_gains(tau)
         known = heating[tau] = (gains, profile.thermal_speed_rpm(*gains))
     gains, speed = known
-    if torques is None or actuator.inertia_kgm2 is None:
-        peak = math.nan
-    else:
-        peak = profile.thermal_torque_nm(actuator.inertia_kgm2, *gains)
     slope = no_load_torque_slope_nm_per_rpm(
         torque_constant_nm_per_a=actuator.torque_constant_nm_per_a,
         constant_30c_a_per_rpm=actuator.no_load_current_constant_30c_a_per_rpm,
         constant_80c_a_per_rpm=actuator.no_load_current_constant_80c_a_per_rpm,
     )
+    if torques is None or actuator.inertia_kgm2 is None:
+        peak = math.nan
+    else:
+        # On the winding current where the current-based edge stands (no zone, T_0).
+        on_current = actuator.zone is None and actuator.stall_torque_nm is not None
+        peak = profile.thermal_torque_nm(
+            actuator.inertia_kgm2, *gains, slope if on_current else None
+        )
     return (
         profile.cycle_s,
         tau,
