@@ -411,7 +411,7 @@ def test_a_cycle_of_segments_is_listed_in_either_language(seller_api: SalesApi) 
     english = _text(document(seller_api, number, lang="en").text)
     german = _text(document(seller_api, number, lang="de").text)
     assert "Segment 8: duration 0.5 s" in english
-    assert "Segment 5: end speed -40.00 rpm" in english
+    assert "Segment 5: end speed −40.00 rpm" in english
     assert "Abschnitt 8: Dauer 0,5 s" in german
-    assert "Abschnitt 5: Enddrehzahl -40,00 min⁻¹" in german
+    assert "Abschnitt 5: Enddrehzahl −40,00 min⁻¹" in german
     assert "Segment" not in german

@@ -439,9 +439,9 @@ def test_document_is_printable_escaped_and_self_contained(api: SalesApi, selecti
     assert data is not None
     figure = json.loads(data.group(1))
     names = [trace["name"] for trace in figure["data"]]
-    assert "T_rms at n_av" in names
-    assert any(n.startswith("T_max = 151") for n in names)
-    rms = next(t for t in figure["data"] if t["name"] == "T_rms at n_av")
+    assert "T<sub>rms</sub> at n<sub>av</sub>" in names
+    assert any(n.startswith("T<sub>max</sub> = 151") for n in names)
+    rms = next(t for t in figure["data"] if t["name"] == "T<sub>rms</sub> at n<sub>av</sub>")
     assert rms["x"][0] == pytest.approx(6.15, abs=0.01)
     assert rms["y"][0] == pytest.approx(35.57, abs=0.01)
     script = api.client.get("/api/v1/quote-document.js")
@@ -533,5 +533,5 @@ def test_document_lists_the_brake_check_of_a_braked_selection(api: SalesApi) -> 
     braked = str(api.selection(models=["FHA-25C-50-L"], brake=True)["id"])
     quote = create(api, api.quote_body(braked)).json()
     html = api.get(f"/api/v1/quotes/{quote['number']}/document").text
-    assert '<tr data-check="brake_holding"><td>Holding brake: T_L at standstill' in html
+    assert '<tr data-check="brake_holding"><td>Holding brake: T<sub>L</sub> at standstill' in html
     assert "the catalogue gives no brake holding torque for this actuator" in html

@@ -26,10 +26,11 @@ from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescap
 from markupsafe import Markup
 
 from actuator_selection.api.messages import render_check
-from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
+from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language, load_rows
 from actuator_selection.api.static import PLOTLY_URL
 from actuator_selection.core.quote_terms import SellerParty
 from actuator_selection.core.sales import QuoteRecord
+from actuator_selection.core.symbols import symbols
 from actuator_selection.schemas.quotes import (
     QuoteOut,
     StoredCandidate,
@@ -98,9 +99,26 @@ def script_safe_json(text: str) -> str:
     return text.replace("<", "\\u003c")
 
 
-def _label(t: DocumentText, key: str, fallback: str) -> str:
-    """The label ``key`` if the table has it, else ``fallback`` (a name added later)."""
-    return t(key) if key in TEXT else fallback
+def _label(t: DocumentText, key: str, fallback: str) -> Markup:
+    """The label ``key`` if the table has it, else ``fallback`` (a name added later, its
+    underscores as spaces), symbols subscripted."""
+    return t.words(key) if key in TEXT else symbols(fallback.replace("_", " "))
+
+
+def margin_text(value: float | None, limit: float | None, t: DocumentText) -> str:
+    """A check's margin (limit − value)/limit for print, to 3 significant digits; where the
+    value is more than twice its limit, how many times the limit it is (``× 33.3``) instead
+    of a margin beyond −100 %.
+
+    >>> margin_text(4.0, 4.2, ENGLISH), margin_text(100.0, 3.0, ENGLISH)
+    ('4.76 %', '33.3 × limit')
+    """
+    if value is None or limit is None or limit <= 0:
+        return "—"
+    margin = (limit - value) / limit * 100.0
+    if margin < -100.0:
+        return t("times_limit", factor=t.number(value / limit, "@##"))
+    return f"{t.number(margin, '@##')} %"
 
 
 def _check_row(c: StoredCheck, t: DocumentText, language: Language) -> dict[str, str | None]:
@@ -109,13 +127,13 @@ def _check_row(c: StoredCheck, t: DocumentText, language: Language) -> dict[str,
     return {
         "name": c.name,
         "label": _label(t, "check_" + c.name, c.name),
-        "message": render_check(c.phrase, language) if c.status != "pass" else None,
+        "message": t.message(render_check(c.phrase, language)) if c.status != "pass" else None,
         "status": c.status,
         "status_label": _label(t, "result_" + c.status, c.status),
         "approximate": t("approximate") if c.approximate else "",
         "value": num(c.value, c.unit, t),
         "limit": num(c.limit, c.unit, t),
-        "margin": num(c.margin_percent, "%", t),
+        "margin": margin_text(c.value, c.limit, t),
         "reference": t.reference(c.reference),
     }
 
@@ -136,15 +154,17 @@ def _with_data(t: DocumentText, key: str, **params: str) -> Markup:
     return text
 
 
-def _reasons(quote: QuoteOut, candidate: StoredCandidate | None, language: Language) -> list[str]:
+def _reasons(
+    quote: QuoteOut, candidate: StoredCandidate | None, language: Language
+) -> list[Markup]:
     """Why the quote is unconfirmed, in ``language``: the quoted candidate's checks that did
     not pass, as the stored selection holds them (the quote's stored English reasons where
     the selection is gone)."""
-    if candidate is None:
-        return list(quote.verdict_reasons)
     t = DocumentText(language)
+    if candidate is None:
+        return [t.message(reason) for reason in quote.verdict_reasons]
     return [
-        f"{_label(t, 'check_' + c.name, c.name)}: {render_check(c.phrase, language)}"
+        _label(t, "check_" + c.name, c.name) + ": " + t.message(render_check(c.phrase, language))
         for c in candidate.checks
         if c.status != "pass"
     ]
@@ -235,7 +255,7 @@ def speed_torque_figure(
                 x=[0, n_max or n2],
                 y=[t_max, t_max],
                 mode="lines",
-                name=f"T_max = {t.number(t_max, '#,##0.###')} Nm",
+                name=str(symbols(f"T_max = {t.number(t_max, '#,##0.###')} Nm")),
                 line={"color": "#444", "width": 2},
             )
         )
@@ -245,7 +265,7 @@ def speed_torque_figure(
                 x=[n_max, n_max],
                 y=[0, t_max or 0],
                 mode="lines",
-                name=f"n_max = {t.number(n_max, '#,##0.###')} {t.unit('rpm')}",
+                name=str(symbols(f"n_max = {t.number(n_max, '#,##0.###')} {t.unit('rpm')}")),
                 line={"color": "#444", "width": 2, "dash": "dot"},
             )
         )
@@ -271,7 +291,7 @@ def speed_torque_figure(
                 x=[x],
                 y=[y],
                 mode="markers+text",
-                name=label,
+                name=str(symbols(label)),
                 text=[f"{t.number(y, '#,##0.0')} Nm"],
                 textposition=position,
                 marker={"color": color, "size": 11, "symbol": symbol},
@@ -297,6 +317,47 @@ def speed_torque_figure(
         showlegend=True,
         # Plotly's own number formatting (axis ticks) in the document's locale.
         separators=t.number(1000.5, "#,##0.0")[-2] + t.number(1000.5, "#,##0.0")[1],
+    )
+    return fig
+
+
+def cycle_figure(selection: StoredSelection, t: DocumentText = ENGLISH) -> go.Figure:
+    """The cycle's speed over time at the output (Fig. 516.2): the chapter's trapezoid
+    t₁, t₂, t₃, t_p at n₂, or the segments as stored."""
+    import plotly.graph_objects as go  # ~15 MB: loaded with the first document
+
+    cycle = selection.cycle
+    n2 = selection.load.speed_rpm
+    if cycle.is_trapezoid:
+        t1, t2, t3 = cycle.accel_s or 0.0, cycle.constant_s or 0.0, cycle.decel_s or 0.0
+        xs = [0.0, t1, t1 + t2, t1 + t2 + t3, selection.cycle_time_s]
+        ys = [0.0, n2, n2, 0.0, 0.0]
+    else:
+        xs, ys = [], []
+        for seg in selection.segments:
+            xs += [seg.start_s, seg.start_s + seg.duration_s]
+            ys += [seg.start_rpm, seg.end_rpm]
+    fig = go.Figure(
+        go.Scatter(
+            x=xs, y=ys, mode="lines", name=t("cycle_speed"), line={"color": "#1f5fa8", "width": 2}
+        )
+    )
+    top = max([abs(y) for y in ys] or [1.0])
+    fig.update_layout(
+        template="none",
+        width=360,
+        height=280,
+        showlegend=False,
+        xaxis={
+            "title": {"text": t("axis_time")},
+            "range": [0, max(xs or [1.0])],
+            "gridcolor": GRID,
+        },
+        yaxis={
+            "title": {"text": t("axis_speed", rpm=t.unit("rpm"))},
+            "range": [min([0.0, *ys]) * 1.15, 1.15 * top],
+            "gridcolor": GRID,
+        },
     )
     return fig
 
@@ -392,39 +453,38 @@ def quote_document_context(
     seller_rows.append({"label": t("email"), "value": seller.email, "field": ""})
     if seller.phone:
         seller_rows.append({"label": t("phone"), "value": seller.phone, "field": ""})
-    load_rows: list[tuple[str, str]] = []
-    cycle_rows: list[tuple[str, str]] = []
-    torque_rows: list[tuple[str, str]] = []
+    load_facts: list[tuple[Markup, str]] = []
+    cycle_rows: list[tuple[Markup, str]] = []
+    torque_rows: list[tuple[Markup, str]] = []
     checks: list[dict[str, str | None]] = []
     figure_json = "null"
     selection_date = "—"
     if selection is not None:
         load = selection.load
-        load_rows = [
-            (t("load_speed"), num(load.speed_rpm, "rpm", t)),
-            (t("load_torque"), num(load.torque_nm, "Nm", t)),
-            (t("load_inertia"), num(load.inertia_kgm2, "kgm²", t)),
-            (t("high_dynamics"), t("yes" if selection.high_dynamics else "no")),
+        load_facts = [
+            (t.words("load_speed"), num(load.speed_rpm, "rpm", t)),
+            (t.words("load_torque"), num(load.torque_nm, "Nm", t)),
+            (t.words("load_inertia"), num(load.inertia_kgm2, "kgm²", t)),
+            (t.words("high_dynamics"), t("yes" if selection.high_dynamics else "no")),
         ]
         if selection.mechanism:
-            mechanism = ", ".join(f"{k} = {v}" for k, v in selection.mechanism.items())
-            load_rows.append((t("mechanism"), mechanism))
+            load_facts += load_rows(t, selection.mechanism)
         cycle_rows = [
-            (t.cycle_label(key, label), num(value, unit, t))
+            (symbols(t.cycle_label(key, label)), num(value, unit, t))
             for key, label, value, unit in cycle_facts(selection.cycle, selection.segments)
         ] + [
-            (t("cycle_time"), num(selection.cycle_time_s, "s", t)),
-            (t("mean_speed"), num(selection.mean_speed_rpm, "rpm", t)),
-            (t("duty_cycle"), num(selection.duty_cycle_percent, "%", t)),
+            (t.words("cycle_time"), num(selection.cycle_time_s, "s", t)),
+            (t.words("mean_speed"), num(selection.mean_speed_rpm, "rpm", t)),
+            (t.words("duty_cycle"), num(selection.duty_cycle_percent, "%", t)),
         ]
         created = selection.created_at
         selection_date = f"{t.date(created.date())} {created.strftime('%H:%M')} UTC"
     if candidate is not None and selection is not None:
         torque_rows = [
-            (t("accel_torque"), num(candidate.accel_torque_nm, "Nm", t)),
-            (t("constant_torque"), num(candidate.constant_torque_nm, "Nm", t)),
-            (t("decel_torque"), num(candidate.decel_torque_nm, "Nm", t)),
-            (t("rms_torque"), num(candidate.rms_torque_nm, "Nm", t)),
+            (t.words("accel_torque"), num(candidate.accel_torque_nm, "Nm", t)),
+            (t.words("constant_torque"), num(candidate.constant_torque_nm, "Nm", t)),
+            (t.words("decel_torque"), num(candidate.decel_torque_nm, "Nm", t)),
+            (t.words("rms_torque"), num(candidate.rms_torque_nm, "Nm", t)),
         ]
         checks = [_check_row(c, t, language) for c in candidate.checks]
         figure_json = script_safe_json(
@@ -434,11 +494,11 @@ def quote_document_context(
         f"{num_plain(actuator.get('family'), t)}, i = {num_plain(actuator.get('gear_ratio'), t)}"
     )
     catalogue_rows = [
-        (t("family_ratio"), family_ratio),
-        (t("max_torque"), num(actuator.get("max_torque_nm"), "Nm", t)),
-        (t("max_speed"), num(actuator.get("max_speed_rpm"), "rpm", t)),
-        (t("inertia"), num(actuator.get("inertia_kgm2"), "kgm²", t)),
-        (t("stall_torque"), num(actuator.get("stall_torque_nm"), "Nm", t)),
+        (t.words("family_ratio"), family_ratio),
+        (t.words("max_torque"), num(actuator.get("max_torque_nm"), "Nm", t)),
+        (t.words("max_speed"), num(actuator.get("max_speed_rpm"), "rpm", t)),
+        (t.words("inertia"), num(actuator.get("inertia_kgm2"), "kgm²", t)),
+        (t.words("stall_torque"), num(actuator.get("stall_torque_nm"), "Nm", t)),
     ]
     version_note = (
         t("version_note", old=quote.selection_catalogue_version, new=quote.catalogue_version)
@@ -537,13 +597,16 @@ def quote_document_context(
         l_checks=t("checks_heading"),
         l_diagram=t("diagram_heading"),
         diagram_label=t("diagram_label", model=quote.actuator_model),
-        load_rows=load_rows,
+        load_rows=load_facts,
         cycle_rows=cycle_rows,
         torque_rows=torque_rows,
         catalogue_rows=catalogue_rows,
         checks=checks,
         figure=Markup(figure_json),  # script-safe JSON (no "<"), not HTML
-        catalogue_source=_with_data(t, "catalogue_source", source=str(actuator.get("source"))),
+        # a citation as written, the chapter's words ("Table") in the document's language
+        catalogue_source=_with_data(
+            t, "catalogue_source", source=t.reference(str(actuator.get("source")))
+        ),
         selection_footer=t(
             "selection_footer",
             id=quote.selection_id,
@@ -553,7 +616,7 @@ def quote_document_context(
         ),
         version_note=version_note,
         figures_fixed=t("figures_fixed"),
-        diagram_note=t("pdf_diagram_note"),
+        tick_number=lambda value: t.number(value, "#,##0.###"),  # the PDF's diagram axes
         plotly_url=PLOTLY_URL,
         document_script="/api/v1" + DOCUMENT_SCRIPT_PATH,
     )

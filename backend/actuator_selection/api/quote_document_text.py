@@ -14,16 +14,19 @@ stored selection's check messages) is shown as it was written.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from datetime import date
 from decimal import Decimal
-from typing import Literal
+from typing import Any, Literal
 
 from babel.dates import format_date
 from babel.numbers import format_currency, format_decimal
+from markupsafe import Markup
 
 from actuator_selection.core.money import ROUNDING_RULE
 from actuator_selection.core.quote_terms import LANGUAGES, VAT_ROUNDING_RULE
+from actuator_selection.core.symbols import MINUS, symbols
 
 Language = Literal["en", "de"]
 
@@ -142,10 +145,31 @@ TEXT: dict[str, dict[str, str]] = {
         "Engineering Data for Harmonic Drive Servo Actuators (Gl. 514.1–522.3); jede Zahl ist "
         "die mit der Auswahl gespeicherte.",
     },
-    "report_candidates": {
-        "en": "Candidates ({count}, ranked as answered)",
-        "de": "Kandidaten ({count}, in der Rangfolge der Antwort)",
+    "inputs_heading": {"en": "Inputs", "de": "Eingaben"},
+    "diagrams_heading": {
+        "en": "Cycle and speed/torque diagram of the first-ranked candidate",
+        "de": "Zyklus und Drehzahl-Drehmoment-Diagramm des erstplatzierten Kandidaten",
     },
+    "report_chosen": {"en": "First-ranked candidate", "de": "Erstplatzierter Kandidat"},
+    "report_top": {
+        "en": "The first {top} of {count} candidates, ranked as answered",
+        "de": "Die ersten {top} von {count} Kandidaten, in der Rangfolge der Antwort",
+    },
+    "report_details_hint": {
+        "en": "Utilisation = value/limit. The checks of further candidates are listed when "
+        "the report is asked for with ?candidates=MODEL; every candidate's checks are in "
+        "the CSV.",
+        "de": "Auslastung = Wert/Grenzwert. Die Prüfungen weiterer Kandidaten enthält der "
+        "Bericht mit ?candidates=MODELL; die Prüfungen aller Kandidaten enthält die CSV-Datei.",
+    },
+    "col_model": {"en": "Model", "de": "Modell"},
+    "col_verdict": {"en": "Verdict", "de": "Ergebnis"},
+    "col_utilisation": {"en": "Utilisation", "de": "Auslastung"},
+    "utilisation_peak_torque": {"en": "T_1/T_max", "de": "T_1/T_max"},
+    "utilisation_continuous_duty": {"en": "T_rms/continuous", "de": "T_rms/Dauergrenze"},
+    "utilisation_max_speed": {"en": "n_2/n_max", "de": "n_2/n_max"},
+    "cycle_speed": {"en": "output speed n", "de": "Abtriebsdrehzahl n"},
+    "axis_time": {"en": "time t [s]", "de": "Zeit t [s]"},
     "load_heading": {"en": "Load (at the actuator output)", "de": "Last (am Abtrieb)"},
     "torques_heading": {"en": "Torques (Eq. 514.1, 514.2)", "de": "Drehmomente (Gl. 514.1, 514.2)"},
     "cycle_heading": {"en": "Cycle (Fig. 516.2)", "de": "Zyklus (Abb. 516.2)"},
@@ -175,6 +199,85 @@ TEXT: dict[str, dict[str, str]] = {
     "yes": {"en": "yes", "de": "ja"},
     "no": {"en": "no", "de": "nein"},
     "mechanism": {"en": "Mechanism (as entered)", "de": "Mechanik (wie eingegeben)"},
+    # The load as entered (the stored request's ``load``), field by field
+    "load_ball_screw": {"en": "ball screw", "de": "Kugelgewindetrieb"},
+    "load_rotary_table": {"en": "rotary table", "de": "Drehtisch"},
+    "load_ball_screw_incline": {
+        "en": "ball screw, inclined or vertical",
+        "de": "Kugelgewindetrieb, geneigt oder senkrecht",
+    },
+    "load_belt": {"en": "toothed belt", "de": "Zahnriemen"},
+    "load_rack_pinion": {"en": "rack and pinion", "de": "Zahnstange und Ritzel"},
+    "load_conveyor": {"en": "conveyor", "de": "Förderband"},
+    "load_lift": {"en": "lift (rope drum)", "de": "Hubwerk (Seiltrommel)"},
+    "load_rotary": {"en": "rotary load", "de": "Drehbewegung"},
+    "field_speed_rpm": {"en": "Load speed n_2", "de": "Lastdrehzahl n_2"},
+    "field_speed": {"en": "Load speed v", "de": "Lastgeschwindigkeit v"},
+    "field_torque_nm": {"en": "Load torque T_L", "de": "Lastmoment T_L"},
+    "field_inertia_kgm2": {"en": "Load inertia J_L", "de": "Lastträgheitsmoment J_L"},
+    "field_gravity_torque_nm": {"en": "Gravity torque T_g", "de": "Gewichtsmoment T_g"},
+    "field_efficiency": {"en": "Efficiency η", "de": "Wirkungsgrad η"},
+    "field_mass_kg": {"en": "Moved mass m", "de": "Bewegte Masse m"},
+    "field_load_mass_kg": {"en": "Load mass m_L", "de": "Lastmasse m_L"},
+    "field_lead_m": {"en": "Screw lead P", "de": "Spindelsteigung P"},
+    "field_lead_mm": {"en": "Screw lead P", "de": "Spindelsteigung P"},
+    "field_friction_coefficient": {
+        "en": "Coefficient of friction μ",
+        "de": "Reibungskoeffizient μ",
+    },
+    "field_screw_inertia_kgm2": {
+        "en": "Screw inertia J_S",
+        "de": "Trägheitsmoment der Spindel J_S",
+    },
+    "field_diameter_m": {"en": "Table diameter D", "de": "Durchmesser des Tisches D"},
+    "field_friction_radius_m": {"en": "Friction radius r_f", "de": "Radius der Reibung r_f"},
+    "field_incline_deg": {"en": "Incline α", "de": "Neigung α"},
+    "field_counterweight_kg": {"en": "Counterweight m_c", "de": "Gegengewicht m_c"},
+    "field_friction_force_n": {"en": "Friction force F_f", "de": "Reibkraft F_f"},
+    "field_friction_torque_nm": {"en": "Friction torque T_f", "de": "Reibmoment T_f"},
+    "field_pulley_diameter_mm": {
+        "en": "Drive pulley pitch diameter D",
+        "de": "Wirkdurchmesser der Antriebsscheibe D",
+    },
+    "field_belt_mass_kg": {"en": "Belt mass m_B", "de": "Masse des Riemens m_B"},
+    "field_pulley_inertia_kgm2": {
+        "en": "Drive pulley inertia",
+        "de": "Trägheitsmoment der Antriebsscheibe",
+    },
+    "field_idler_inertia_kgm2": {"en": "Idler inertia", "de": "Trägheitsmoment der Umlenkscheibe"},
+    "field_idler_diameter_mm": {"en": "Idler diameter", "de": "Durchmesser der Umlenkscheibe"},
+    "field_pinion_diameter_mm": {
+        "en": "Pinion pitch diameter d",
+        "de": "Teilkreisdurchmesser des Ritzels d",
+    },
+    "field_pinion_inertia_kgm2": {"en": "Pinion inertia", "de": "Trägheitsmoment des Ritzels"},
+    "field_roller_diameter_mm": {
+        "en": "Drive roller diameter D",
+        "de": "Durchmesser der Antriebsrolle D",
+    },
+    "field_drive_roller_inertia_kgm2": {
+        "en": "Drive roller inertia",
+        "de": "Trägheitsmoment der Antriebsrolle",
+    },
+    "field_tail_roller_inertia_kgm2": {
+        "en": "Tail roller inertia",
+        "de": "Trägheitsmoment der Umlenkrolle",
+    },
+    "field_tail_roller_diameter_mm": {
+        "en": "Tail roller diameter",
+        "de": "Durchmesser der Umlenkrolle",
+    },
+    "field_drum_diameter_mm": {"en": "Drum diameter D", "de": "Trommeldurchmesser D"},
+    "field_drum_inertia_kgm2": {"en": "Drum inertia", "de": "Trägheitsmoment der Trommel"},
+    "field_transmission_ratio": {"en": "Transmission ratio i", "de": "Übersetzung i"},
+    "field_transmission_inertia_kgm2": {
+        "en": "Transmission inertia J_tr",
+        "de": "Trägheitsmoment der Übersetzung J_tr",
+    },
+    "field_transmission_efficiency": {
+        "en": "Transmission efficiency η_tr",
+        "de": "Wirkungsgrad der Übersetzung η_tr",
+    },
     "accel_time": {"en": "Acceleration t₁", "de": "Beschleunigung t₁"},
     "constant_time": {"en": "Constant speed t₂", "de": "Konstantfahrt t₂"},
     "decel_time": {"en": "Deceleration t₃", "de": "Verzögerung t₃"},
@@ -248,6 +351,7 @@ TEXT: dict[str, dict[str, str]] = {
     "result_warn": {"en": "warning", "de": "Warnung"},
     "result_no_data": {"en": "no data", "de": "keine Daten"},
     "approximate": {"en": " (approx.)", "de": " (näherungsweise)"},
+    "times_limit": {"en": "{factor} × limit", "de": "{factor} × Grenzwert"},
     "zone": {"en": "continuous-duty zone", "de": "Dauerbetriebsbereich"},
     "zone_approximate": {
         "en": "continuous limit (approximate)",
@@ -290,11 +394,6 @@ TEXT: dict[str, dict[str, str]] = {
     "level_tested": {"en": "tested", "de": "praktisch erprobt"},
     "level_possible": {"en": "possible", "de": "theoretisch machbar"},
     "level_unconfirmed": {"en": "unconfirmed", "de": "nicht bestätigt"},
-    # The PDF of the document (services/quote_pdf.py)
-    "pdf_diagram_note": {
-        "en": "The speed/torque diagram is in the HTML document.",
-        "de": "Das Drehzahl-Drehmoment-Diagramm enthält das HTML-Dokument.",
-    },
     "figures_fixed": {
         "en": "Figures are those computed by the service and stored with the selection; "
         "they do not change afterwards.",
@@ -367,14 +466,26 @@ class DocumentText:
 
     def number(self, value: float, pattern: str) -> str:
         """``value`` by a CLDR number ``pattern`` (``#,##0.00``) with this locale's symbols."""
-        return format_decimal(value, format=pattern, locale=self.locale)
+        return format_decimal(value, format=pattern, locale=self.locale).replace("-", MINUS)
+
+    def words(self, key: str, **params: object) -> Markup:
+        """The label ``key`` as a document shows it: symbols subscripted (:func:`symbols`)."""
+        return symbols(self(key, **params))
+
+    def message(self, text: str) -> Markup:
+        """A check's message (already in this language) as a document shows it."""
+        return symbols(text)
+
+    def load_rows(self, load: Mapping[str, Any]) -> list[tuple[Markup, str]]:
+        """The load as entered, in this language (:func:`load_rows`)."""
+        return load_rows(self, load)
 
     def money(self, amount: Decimal, currency: str) -> str:
         """``8,861.50 EUR`` / ``8.861,50 EUR``: always two decimals (whole cents), the ISO
         code after the amount."""
         return format_currency(
             amount, currency, format="#,##0.00 ¤¤", locale=self.locale, currency_digits=False
-        )
+        ).replace("-", MINUS)
 
     def percent(self, value: Decimal) -> str:
         """A rate as written on the document: ``7.5`` / ``7,5``, ``19``."""
@@ -411,3 +522,79 @@ class DocumentText:
     def unit(self, unit: str) -> str:
         """A unit as the chapter prints it in this language (min⁻¹ for rpm in German)."""
         return self("rpm") if unit == "rpm" else unit
+
+
+_FIELD_UNITS = (
+    ("_kgm2", "kgm²"),
+    ("_kg", "kg"),
+    ("_mm", "mm"),
+    ("_m", "m"),
+    ("_nm", "Nm"),
+    ("_n", "N"),
+    ("_deg", "°"),
+    ("_rpm", "rpm"),
+)
+"""A load field's unit by the suffix of its name (``schemas/selections.py``,
+``schemas/mechanisms.py``: SI or mm, as the request sends them)."""
+
+
+def field_unit(name: str, load_type: str | None) -> str:
+    """The unit of the load field ``name`` (``speed`` is mm/s on a linear axis, rpm on a
+    rotary load).
+
+    >>> field_unit("pulley_diameter_mm", "belt"), field_unit("speed", "belt")
+    ('mm', 'mm/s')
+    """
+    if name == "speed":
+        return "rpm" if load_type == "rotary" else "mm/s"
+    return next((unit for suffix, unit in _FIELD_UNITS if name.endswith(suffix)), "")
+
+
+def load_rows(t: DocumentText, load: Mapping[str, Any]) -> list[tuple[Markup, str]]:
+    """The load as it was entered (a stored request's ``load``), one (label, value) row a
+    field, in ``t``'s words: the load type named, each field by its name and symbol, each
+    number with its unit as the chapter prints it; a value sent as text with its own unit
+    (``"0.5 in"``) as it was sent.
+
+    >>> rows = load_rows(DocumentText("de"), {"type": "rotary_table", "speed_rpm": 45.0,
+    ...     "mass_kg": 30.0, "friction_coefficient": -0.5})
+    >>> for label, value in rows:
+    ...     print(f"{label}: {value}")
+    Mechanik (wie eingegeben): Drehtisch
+    Lastdrehzahl n<sub>2</sub>: 45 min⁻¹
+    Bewegte Masse m: 30 kg
+    Reibungskoeffizient μ: −0,5
+    """
+    kind = load.get("type")
+    rows: list[tuple[Markup, str]] = []
+    if isinstance(kind, str):
+        rows.append((t.words("mechanism"), _label_or(t, f"load_{kind}", kind)))
+    for name, value in load.items():
+        if name == "type" or value is None:
+            continue
+        if isinstance(value, dict):
+            rows += [
+                (t.words(f"field_{name}_{sub}") if f"field_{name}_{sub}" in TEXT
+                 else symbols(f"{name} {sub}".replace("_", " ")),
+                 _field_value(t, v, field_unit(sub, kind)))
+                for sub, v in value.items()
+                if v is not None
+            ]  # fmt: skip
+            continue
+        label = (
+            t.words(f"field_{name}") if f"field_{name}" in TEXT else symbols(name.replace("_", " "))
+        )
+        rows.append((label, _field_value(t, value, field_unit(name, kind))))
+    return rows
+
+
+def _label_or(t: DocumentText, key: str, fallback: str) -> str:
+    return t(key) if key in TEXT else fallback.replace("_", " ")
+
+
+def _field_value(t: DocumentText, value: object, unit: str) -> str:
+    if isinstance(value, bool):
+        return t("yes" if value else "no")
+    if isinstance(value, int | float):
+        return f"{t.number(value, '#,##0.######')} {t.unit(unit)}".strip()
+    return str(value)

@@ -9,7 +9,7 @@ from functools import partial
 from typing import Annotated, Any
 from urllib.parse import quote
 
-from fastapi import APIRouter, Path, Request, Response
+from fastapi import APIRouter, Path, Query, Request, Response
 
 from actuator_selection.api.deps import (
     DocumentLanguageDep,
@@ -21,6 +21,7 @@ from actuator_selection.api.deps import (
 )
 from actuator_selection.api.errors import RequestFieldError, language_of, service_error
 from actuator_selection.api.messages import localizer
+from actuator_selection.api.quote_document import cycle_figure, speed_torque_figure
 from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
@@ -32,7 +33,7 @@ from actuator_selection.schemas.selections import (
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.reports import (
-    CHECK_COLUMNS,
+    COLUMNS,
     report_csv,
     selection_report,
 )
@@ -197,10 +198,9 @@ _REPORT_ERRORS: dict[int | str, dict[str, Any]] = {404: {"description": "unknown
     responses={
         200: {
             "content": {"text/csv": {"schema": {"type": "string"}}},
-            "description": "two tables, separated by an empty line: `quantity,value,unit` "
-            "(load case and cycle figures), then one row per check of each candidate: "
-            + ",".join(CHECK_COLUMNS)
-            + ". Numbers are the stored answer's exactly; unknown values are empty cells.",
+            "description": "one table, one header row, one row per check of each "
+            "candidate: " + ",".join(COLUMNS) + ". Numbers are the stored answer's exactly; "
+            "unknown values are empty cells.",
         },
         **_REPORT_ERRORS,
     },
@@ -208,7 +208,8 @@ _REPORT_ERRORS: dict[int | str, dict[str, Any]] = {404: {"description": "unknown
 def get_selection_report_csv(
     selection_id: Annotated[str, Path(max_length=36)], session: SessionDep
 ) -> Response:
-    """The selection's engineering report as CSV: load case, cycle, every candidate's checks."""
+    """The selection's engineering report as CSV: one row per check of each candidate, with
+    the load case, the cycle and the candidate's figures on every row."""
     text = report_csv(selection_report(session, selection_id))
     return Response(
         text, media_type="text/csv; charset=utf-8", headers=_attachment(selection_id, "csv")
@@ -231,11 +232,27 @@ def get_selection_report_pdf(
     selection_id: Annotated[str, Path(max_length=36)],
     session: SessionDep,
     language: DocumentLanguageDep,
+    candidates: Annotated[
+        list[str],
+        Query(
+            max_length=100,
+            description="models whose checks the report lists after its first page",
+        ),
+    ] = [],  # noqa: B006 - FastAPI copies a query default
 ) -> Response:
-    """The selection's engineering report as PDF: load case, cycle, every candidate's checks."""
+    """The selection's engineering report as PDF: a first page with the inputs, the cycle and
+    speed/torque diagrams, the first-ranked candidate's checks and the top five; then the
+    checks of the ``candidates`` asked for."""
     from actuator_selection.services.report_pdf import render_pdf  # fpdf2: on first use
 
-    body = render_pdf(selection_report(session, selection_id), DocumentText(language))
+    report = selection_report(session, selection_id, candidates)
+    t = DocumentText(language)
+    figures = [cycle_figure(report.selection, t).to_plotly_json()]
+    if report.selection.candidates:
+        first = report.selection.candidates[0]
+        figure = speed_torque_figure(first, report.selection, report.actuator or {}, t)
+        figures.append(figure.to_plotly_json())
+    body = render_pdf(report, t, figures)
     headers = {**_attachment(selection_id, "pdf"), "Content-Language": language}
     return Response(body, media_type="application/pdf", headers=headers)
 

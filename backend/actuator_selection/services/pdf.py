@@ -8,13 +8,17 @@ when a PDF is asked for: fpdf2 and what it pulls in load on first use.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import math
+import re
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from typing import Final
+from typing import Any, Final
 
 from fpdf import FPDF
 from fpdf.enums import XPos, YPos
 from markupsafe import Markup
+
+from actuator_selection.core.symbols import subscript
 
 _ASCII = str.maketrans(
     {
@@ -35,6 +39,7 @@ _ASCII = str.maketrans(
         "’": "'",
         "√": "sqrt",
         "Ω": "Ohm",
+        **dict(zip("ₐₑₕᵢₖₗₘₙₒₚᵣₛₜᵤᵥₓ", "aehiklmnoprstuvx", strict=True)),
     }
 )
 
@@ -65,10 +70,19 @@ def unicode_font() -> Path | None:
     return None
 
 
+_SUB = re.compile(r"<sub>(.*?)</sub>")
+
+
 def plain(value: object) -> str:
-    """A context value as text: markup (the intro's emphasis, data spans) without its tags."""
+    """A context value as text: markup (the intro's emphasis, data spans) without its tags,
+    a subscript (``<sub>av</sub>``, ``api.quote_document_text.symbols``) in Unicode's
+    subscript letters where it has them (``subscript``).
+
+    >>> plain(Markup("n<sub>av</sub> &amp; T<sub>L</sub>"))
+    'nₐᵥ & TL'
+    """
     if isinstance(value, Markup):
-        return value.striptags()
+        return Markup(_SUB.sub(lambda m: subscript(m.group(1)), str(value))).striptags()
     return str(value)
 
 
@@ -156,3 +170,196 @@ class DocumentPdf(FPDF):
             table.row(tuple(self.words(h) for h in head))
             for row in rows:
                 table.row(tuple(self.words(v) for v in row))
+
+
+NumberText = Callable[[float], str]
+"""How a figure's tick labels write a number (the document's language)."""
+
+
+def _color(text: str | None, default: tuple[int, ...] = (68, 68, 68)) -> tuple[int, ...]:
+    """A plotly colour (``#rrggbb`` or ``rgba(r,g,b,a)``) as RGB, a transparent one blended
+    onto white paper.
+
+    >>> _color("#2e8b57"), _color("rgba(46,139,87,0.5)")
+    ((46, 139, 87), (150, 197, 171))
+    """
+    if not text:
+        return default
+    if text.startswith("#") and len(text) == 7:
+        return tuple(int(text[i : i + 2], 16) for i in (1, 3, 5))
+    if (match := re.fullmatch(r"rgba?\(([^)]*)\)", text.replace(" ", ""))) is not None:
+        parts = [float(p) for p in match.group(1).split(",")]
+        alpha = parts[3] if len(parts) > 3 else 1.0
+        return tuple(round(255 - alpha * (255 - c)) for c in parts[:3])
+    return default
+
+
+def nice_ticks(top: float, count: int = 5) -> list[float]:
+    """Ticks 0, step, 2·step … up to ``top``, the step 1, 2 or 5 × 10ⁿ.
+
+    >>> nice_ticks(165.0)
+    [0.0, 50.0, 100.0, 150.0]
+    """
+    if top <= 0:
+        return [0.0]
+    raw = top / count
+    power = 10.0 ** math.floor(math.log10(raw))
+    step = next(m * power for m in (1, 2, 5, 10) if m * power >= raw)
+    return [k * step for k in range(int(top / step + 1e-9) + 1)]
+
+
+def _axis(
+    layout: Mapping[str, Any], name: str, data: Sequence[Mapping[str, Any]]
+) -> tuple[float, float, str]:
+    axis = layout.get(name, {})
+    title = axis.get("title", {})
+    text = title.get("text", "") if isinstance(title, Mapping) else str(title or "")
+    if "range" in axis:
+        low, high = axis["range"]
+        return float(low), float(high), text
+    key = name[0]
+    values = [float(v) for trace in data for v in trace.get(key, []) if v is not None]
+    high = max(values or [1.0])
+    low = min([0.0, *values])
+    return low, high * 1.1 if high > 0 else 1.0, text
+
+
+class FigurePdf(DocumentPdf):
+    """A :class:`DocumentPdf` that draws a plotly figure (its JSON: the same definition an
+    HTML document hands to plotly.js) with the PDF's own lines, areas and text: filled
+    ``toself`` areas, lines (solid, dash, dot), markers (circle, triangles) with their text,
+    axes with ticks and titles, and a legend of the traces' names."""
+
+    def figure(
+        self,
+        figure: Mapping[str, Any],
+        *,
+        width: float,
+        height: float,
+        number: NumberText,
+        legend: float = 48.0,
+    ) -> None:
+        """Draw ``figure`` in a box of ``width`` × ``height`` mm at the current position
+        (a new page first where it would not fit); the position moves below it."""
+        if self.will_page_break(height):
+            self.add_page()
+        data: Sequence[Mapping[str, Any]] = figure.get("data", [])
+        layout: Mapping[str, Any] = figure.get("layout", {})
+        x_low, x_high, x_title = _axis(layout, "xaxis", data)
+        y_low, y_high, y_title = _axis(layout, "yaxis", data)
+        left, top = self.l_margin + 13.0, self.get_y() + 2.0
+        plot_w = width - 13.0 - (legend if legend else 0.0)
+        plot_h = height - 12.0
+
+        def px(x: float) -> float:
+            return left + (x - x_low) / (x_high - x_low) * plot_w
+
+        def py(y: float) -> float:
+            return top + plot_h - (y - y_low) / (y_high - y_low) * plot_h
+
+        self.set_line_width(0.1)
+        self.set_draw_color(228, 230, 234)
+        self.font(6.5)
+        for tick in nice_ticks(x_high):
+            if tick < x_low:
+                continue
+            self.line(px(tick), top, px(tick), top + plot_h)
+            label = number(tick)
+            self.text(px(tick) - self.get_string_width(label) / 2, top + plot_h + 3.2, label)
+        for tick in nice_ticks(y_high):
+            if tick < y_low:
+                continue
+            self.line(left, py(tick), left + plot_w, py(tick))
+            label = number(tick)
+            self.text(left - 1.2 - self.get_string_width(label), py(tick) + 1.0, label)
+        self.set_draw_color(68, 68, 68)
+        self.set_line_width(0.25)
+        self.line(left, top + plot_h, left + plot_w, top + plot_h)
+        self.line(left, top, left, top + plot_h)
+        x_label = self.words(plain(Markup(x_title)) if "<" in x_title else x_title)
+        self.text(left + (plot_w - self.get_string_width(x_label)) / 2, top + plot_h + 7.5, x_label)
+        y_label = self.words(y_title)
+        with self.rotation(
+            90, self.l_margin + 2.5, top + (plot_h + self.get_string_width(y_label)) / 2
+        ):
+            self.text(
+                self.l_margin + 2.5, top + (plot_h + self.get_string_width(y_label)) / 2, y_label
+            )
+        entries: list[tuple[str, tuple[int, ...], str]] = []
+        with self.rect_clip(left, top - 1, plot_w + 1, plot_h + 1):
+            for trace in data:
+                entries.append(self._trace(trace, px, py))
+        if legend:
+            self._legend(entries, left + plot_w + 3.0, top)
+        self.set_draw_color(0, 0, 0)
+        self.set_fill_color(255, 255, 255)
+        self.set_text_color(0, 0, 0)
+        self.set_dash_pattern()
+        self.set_line_width(0.2)
+        self.set_xy(self.l_margin, top + height)
+
+    def _trace(
+        self, trace: Mapping[str, Any], px: Callable[[float], float], py: Callable[[float], float]
+    ) -> tuple[str, tuple[int, ...], str]:
+        xs, ys = trace.get("x", []), trace.get("y", [])
+        points = [
+            (px(x), py(y)) for x, y in zip(xs, ys, strict=False) if x is not None and y is not None
+        ]
+        mode = str(trace.get("mode", "lines"))
+        line = trace.get("line", {})
+        marker = trace.get("marker", {})
+        color = _color(line.get("color") or marker.get("color"))
+        if trace.get("fill") == "toself" and len(points) > 2:
+            self.set_fill_color(*_color(trace.get("fillcolor"), (220, 235, 225)))
+            self.polygon(points, style="F")
+        if "lines" in mode and len(points) > 1:
+            self.set_draw_color(*color)
+            self.set_line_width(0.12 * float(line.get("width", 2)))
+            dash = line.get("dash")
+            self.set_dash_pattern(dash=1.2 if dash == "dash" else 0.4, gap=0.8) if dash else (
+                self.set_dash_pattern()
+            )
+            self.polyline(points)
+            self.set_dash_pattern()
+        if "markers" in mode:
+            self.set_fill_color(*color)
+            texts = trace.get("text", [])
+            for k, (x, y) in enumerate(points):
+                self._marker(str(marker.get("symbol", "circle")), x, y)
+                if "text" in mode and k < len(texts):
+                    self.font(6.5)
+                    self.set_text_color(*color)
+                    above = "top" in str(trace.get("textposition", "top"))
+                    self.text(x + 1.6, y - 1.4 if above else y + 3.2, self.words(texts[k]))
+                    self.set_text_color(0, 0, 0)
+        kind = "marker" if "markers" in mode else "area" if trace.get("fill") else "line"
+        return plain(Markup(str(trace.get("name", "")))), color, kind
+
+    def _marker(self, symbol: str, x: float, y: float, r: float = 1.1) -> None:
+        if symbol == "triangle-up":
+            self.polygon([(x - r, y + r), (x + r, y + r), (x, y - r)], style="F")
+        elif symbol == "triangle-down":
+            self.polygon([(x - r, y - r), (x + r, y - r), (x, y + r)], style="F")
+        else:
+            self.circle(x, y, r, style="F")
+
+    def _legend(
+        self, entries: Sequence[tuple[str, tuple[int, ...], str]], x: float, y: float
+    ) -> None:
+        self.font(6.5)
+        for name, color, kind in entries:
+            if not name:
+                continue
+            if kind == "marker":
+                self.set_fill_color(*color)
+                self._marker("circle", x + 2.0, y + 1.2, 0.9)
+            elif kind == "area":
+                self.set_fill_color(*_color(None, color))
+                self.rect(x, y, 4.0, 2.4, style="F")
+            else:
+                self.set_draw_color(*color)
+                self.set_line_width(0.4)
+                self.line(x, y + 1.2, x + 4.0, y + 1.2)
+            self.set_xy(x + 5.0, y - 0.6)
+            self.multi_cell(self.epw - (x - self.l_margin) - 5.0, 3.0, self.words(name))
+            y = self.get_y() + 0.6

@@ -1,25 +1,37 @@
 """The quote document as PDF (fpdf2, A4, page numbers): the same words, numbers and order as
 the HTML document, from the same context (``api/quote_document.py``,
 :func:`~actuator_selection.api.quote_document.quote_document_context`), so a German PDF
-says what the German HTML says. The speed/torque diagram, drawn by plotly.js in the HTML,
-is left out here with a sentence saying so.
+says what the German HTML says. The speed/torque diagram is the HTML's figure definition
+(the plotly JSON that plotly.js draws there) drawn with the PDF's own lines
+(:meth:`~actuator_selection.services.pdf.FigurePdf.figure`). Tables are kept on one page
+where they fit, and an item code is never broken inside.
 
 Laid out by :class:`~actuator_selection.services.pdf.DocumentPdf` (fonts, footer, tables).
 """
 
 from __future__ import annotations
 
+import json
 from typing import Any
 
 from fpdf.enums import XPos, YPos
 
-from actuator_selection.services.pdf import DocumentPdf
+from actuator_selection.services.pdf import FigurePdf
+
+
+def _item_widths(pdf: FigurePdf, codes: list[str]) -> tuple[float, ...]:
+    """The items table's column widths: the item code's column as wide as the longest code
+    (an item code is never broken), taken from the description's."""
+    pdf.font(8)
+    code = max([32.0, *(pdf.get_string_width(pdf.words(c)) + 4.0 for c in codes)])
+    code = min(code, 70.0)
+    return (10, code, 94 - code, 16, 29, 29)
 
 
 def render_quote_pdf(context: dict[str, Any]) -> bytes:
     """The quote document of ``context`` (``quote_document_context``) as a PDF (A4)."""
     c = context
-    pdf = DocumentPdf(
+    pdf = FigurePdf(
         title=c["title"], lang=c["lang"], page_label=c["page_label"], of_label=c["of_label"]
     )
     pdf.add_page()
@@ -70,7 +82,7 @@ def render_quote_pdf(context: dict[str, Any]) -> bytes:
             c["col_amount"],
         ),
         money_rows,
-        (10, 32, 62, 16, 29, 29),
+        _item_widths(pdf, [str(i["code"]) for i in c["items"]]),
         right=(3, 4, 5),
     )
     pdf.ln(1)
@@ -124,8 +136,11 @@ def render_quote_pdf(context: dict[str, Any]) -> bytes:
             (62, 24, 22, 22, 18, 30),
             right=(2, 3, 4),
         )
+    figure = json.loads(str(c["figure"]))
+    if figure:
+        pdf.heading(c["l_diagram"], 10)
+        pdf.figure(figure, width=pdf.epw, height=62, number=c["tick_number"])
     pdf.ln(1)
-    pdf.paragraph(c["diagram_note"], size=7.5)
     pdf.paragraph(c["catalogue_source"], size=7.5)
     pdf.paragraph(f"{c['selection_footer']}{c['version_note']}", size=7.5)
     pdf.paragraph(c["figures_fixed"], size=7.5)

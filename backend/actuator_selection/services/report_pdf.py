@@ -1,48 +1,68 @@
 """The selection report as PDF (A4, page numbers): the content of
 :mod:`actuator_selection.services.reports`, laid out for print by
-:class:`~actuator_selection.services.pdf.DocumentPdf`, in the language of its
+:class:`~actuator_selection.services.pdf.FigurePdf`, in the language of its
 :class:`~actuator_selection.services.reports.ReportWords`. Imported only when a PDF is
-asked for (the report's route imports it then)."""
+asked for (the report's route imports it then).
+
+The first page is one a reader can sign: the inputs in words (the load at the output, the
+mechanism as entered, the cycle), the cycle and speed/torque diagrams (the figure
+definitions of ``api/quote_document.py``, drawn by the PDF's own lines), the first-ranked
+candidate's checks and the top five with their utilisation. The checks of other
+candidates follow only for the models asked for (``?candidates=``). Numbers to four
+significant digits (the page's rule, ``frontend/lib/format.js``), percentages to three.
+"""
 
 from __future__ import annotations
 
-from actuator_selection.core.checks import margin_percent
-from actuator_selection.schemas.quotes import StoredCandidate, StoredCheck, cycle_facts
-from actuator_selection.services.pdf import DocumentPdf
-from actuator_selection.services.reports import ReportWords, SelectionReport
+from collections.abc import Mapping, Sequence
+from typing import Any
 
-SIGNIFICANT = "@#####"
-"""Numbers to six significant digits (a CLDR pattern), in the language's format."""
+from markupsafe import Markup
+
+from actuator_selection.core.symbols import symbols
+from actuator_selection.schemas.quotes import StoredCandidate, StoredCheck, cycle_facts
+from actuator_selection.services.pdf import FigurePdf
+from actuator_selection.services.reports import (
+    TOP,
+    UTILISATION_CHECKS,
+    ReportWords,
+    SelectionReport,
+    utilisation_percent,
+)
+
+SIGNIFICANT = "@###"
+"""Numbers to four significant digits (a CLDR pattern), as the page shows them."""
+PERCENT = "@##"
+"""Percentages to three significant digits."""
 
 
 def number(value: float | None, unit: str, t: ReportWords) -> str:
-    """A number to six significant digits with its unit; '–' when unknown."""
+    """A number to four significant digits with its unit; '–' when unknown."""
     if value is None:
         return "–"
     return f"{t.number(value, SIGNIFICANT)} {t.unit(unit)}".strip()
 
 
-def _check_rows(checks: list[StoredCheck], t: ReportWords) -> list[tuple[str, ...]]:
+def percent(value: float | None, t: ReportWords) -> str:
+    """A percentage to three significant digits; '–' when unknown."""
+    return "–" if value is None else f"{t.number(value, PERCENT)} %"
+
+
+def _check_rows(checks: list[StoredCheck], t: ReportWords) -> list[tuple[object, ...]]:
     return [
         (
-            t(f"check_{c.name}"),
+            t.words(f"check_{c.name}"),
             t(f"result_{c.status}") + (t("approximate") if c.approximate else ""),
             t.reference(c.reference),
             number(c.value, c.unit, t),
             number(c.limit, c.unit, t),
-            number(margin_percent(c.value, c.limit), "%", t),
+            percent(utilisation_percent(c.value, c.limit), t),
         )
         for c in checks
     ]
 
 
-def _candidate(pdf: DocumentPdf, rank: int, c: StoredCandidate, t: ReportWords) -> None:
-    ratio = t.number(c.gear_ratio, "#,##0.######")
-    pdf.heading(f"{rank}. {c.model} ({c.family}, i = {ratio}): {t(f'verdict_{c.verdict}')}", 10)
-    pdf.paragraph(
-        f"T₁ = {number(c.accel_torque_nm, 'Nm', t)}, T₂ = {number(c.constant_torque_nm, 'Nm', t)}"
-        f", T₃ = {number(c.decel_torque_nm, 'Nm', t)}, T_rms = {number(c.rms_torque_nm, 'Nm', t)}"
-    )
+def _checks(pdf: FigurePdf, c: StoredCandidate, t: ReportWords) -> None:
     pdf.grid(
         (
             t("col_check"),
@@ -50,26 +70,84 @@ def _candidate(pdf: DocumentPdf, rank: int, c: StoredCandidate, t: ReportWords) 
             t("col_reference"),
             t("col_value"),
             t("col_limit"),
-            t("col_margin"),
+            t("col_utilisation"),
         ),
         _check_rows(c.checks, t),
-        (50, 32, 30, 24, 24, 18),
+        (56, 31, 28, 20, 20, 23),
         right=(3, 4, 5),
     )
-    pdf.ln(2)
 
 
-def render_pdf(report: SelectionReport, t: ReportWords) -> bytes:
-    """The report as a PDF document (A4) in the language of ``t``."""
+def _candidate_heading(pdf: FigurePdf, rank: int, c: StoredCandidate, t: ReportWords) -> None:
+    ratio = t.number(c.gear_ratio, "#,##0.######")
+    pdf.heading(f"{rank}. {c.model} ({c.family}, i = {ratio}): {t(f'verdict_{c.verdict}')}", 10)
+    torques = (
+        ("T_1", c.accel_torque_nm),
+        ("T_2", c.constant_torque_nm),
+        ("T_3", c.decel_torque_nm),
+        ("T_rms", c.rms_torque_nm),
+    )
+    pdf.paragraph(Markup(", ").join(symbols(f"{s} = {number(v, 'Nm', t)}") for s, v in torques))
+
+
+def _top(pdf: FigurePdf, report: SelectionReport, t: ReportWords) -> None:
+    rows: list[Sequence[object]] = []
+    for rank, c in enumerate(report.top, start=1):
+        used = [report.utilisation(c, name) for name in UTILISATION_CHECKS]
+        rows.append(
+            (
+                str(rank),
+                c.model,
+                t(f"verdict_{c.verdict}"),
+                *(percent(u, t) for u in used),
+            )
+        )
+    pdf.grid(
+        (
+            "#",
+            t("col_model"),
+            t("col_verdict"),
+            *(t.words(f"utilisation_{name}") for name in UTILISATION_CHECKS),
+        ),
+        rows,
+        (8, 44, 34, 32, 32, 28),
+        right=(3, 4, 5),
+    )
+
+
+def _columns(
+    pdf: FigurePdf, left: list[tuple[object, object]], right: list[tuple[object, object]]
+) -> None:
+    """Two fact tables side by side; the position moves below the taller."""
+    top = pdf.get_y()
+    half = pdf.epw / 2 - 2
+    pdf.facts(left, width=half)
+    bottom = pdf.get_y()
+    margin = pdf.l_margin
+    pdf.set_left_margin(margin + half + 4)
+    pdf.set_xy(margin + half + 4, top)
+    pdf.facts(right, width=half)
+    bottom = max(bottom, pdf.get_y())
+    pdf.set_left_margin(margin)
+    pdf.set_xy(margin, bottom)
+
+
+def render_pdf(
+    report: SelectionReport,
+    t: ReportWords,
+    figures: Sequence[Mapping[str, Any]] = (),
+) -> bytes:
+    """The report as a PDF document (A4) in the language of ``t``; ``figures`` are the
+    cycle and the speed/torque diagram (plotly figure definitions), drawn side by side."""
     s = report.selection
-    pdf = DocumentPdf(
+    pdf = FigurePdf(
         title=t("report_document_title", id=s.id),
         lang=t.language,
         page_label=t("page"),
         of_label=t("of"),
     )
     pdf.add_page()
-    pdf.heading(t("report_title"), 16)
+    pdf.heading(t("report_title"), 15)
     pdf.paragraph(
         t(
             "report_intro",
@@ -77,30 +155,58 @@ def render_pdf(report: SelectionReport, t: ReportWords) -> bytes:
             date=t.date(s.created_at.date()),
             time=f"{s.created_at:%H:%M}",
             version=s.catalogue_version,
-        )
+            count=len(s.candidates),
+        ),
+        size=8,
     )
-    pdf.heading(t("load_heading"))
-    pdf.facts(
-        [
-            (t("load_speed"), number(s.load.speed_rpm, "rpm", t)),
-            (t("load_torque"), number(s.load.torque_nm, "Nm", t)),
-            (t("load_inertia"), number(s.load.inertia_kgm2, "kgm²", t)),
-            (t("high_dynamics"), t("yes" if s.high_dynamics else "no")),
-        ]
-    )
-    pdf.heading(t("cycle_heading"))
-    pdf.facts(
-        [
-            *(
-                (t.cycle_label(key, label), number(value, unit, t))
-                for key, label, value, unit in cycle_facts(s.cycle, s.segments)
-            ),
-            (t("cycle_time"), number(s.cycle_time_s, "s", t)),
-            (t("mean_speed"), number(s.mean_speed_rpm, "rpm", t)),
-            (t("duty_cycle"), number(s.duty_cycle_percent, "%", t)),
-        ]
-    )
-    pdf.heading(t("report_candidates", count=len(s.candidates)), 11)
-    for rank, candidate in enumerate(s.candidates, start=1):
-        _candidate(pdf, rank, candidate, t)
+    load: list[tuple[object, object]] = [
+        (t.words("load_speed"), number(s.load.speed_rpm, "rpm", t)),
+        (t.words("load_torque"), number(s.load.torque_nm, "Nm", t)),
+        (t.words("load_inertia"), number(s.load.inertia_kgm2, "kgm²", t)),
+        (t.words("high_dynamics"), t("yes" if s.high_dynamics else "no")),
+        *(t.load_rows(s.mechanism) if s.mechanism else []),
+    ]
+    cycle: list[tuple[object, object]] = [
+        *(
+            (symbols(t.cycle_label(key, label)), number(value, unit, t))
+            for key, label, value, unit in cycle_facts(s.cycle, s.segments)
+        ),
+        (t.words("cycle_time"), number(s.cycle_time_s, "s", t)),
+        (t.words("mean_speed"), number(s.mean_speed_rpm, "rpm", t)),
+        (t.words("duty_cycle"), percent(s.duty_cycle_percent, t)),
+    ]
+    pdf.heading(t("inputs_heading"), 10)
+    _columns(pdf, load, cycle)
+    if figures:
+        pdf.heading(t("diagrams_heading"), 10)
+        top = pdf.get_y()
+        widths = (pdf.epw * 0.42, pdf.epw * 0.58) if len(figures) == 2 else (pdf.epw,)
+        margin = pdf.l_margin
+        x = margin
+        for figure, width in zip(figures, widths, strict=False):
+            pdf.set_left_margin(x)
+            pdf.set_xy(x, top)
+            pdf.figure(
+                figure,
+                width=width - 2,
+                height=52,
+                number=lambda v: t.number(v, "#,##0.###"),
+                legend=0 if width < pdf.epw * 0.5 else 38,
+            )
+            x += width
+        pdf.set_left_margin(margin)
+        pdf.set_xy(margin, top + 54)
+    if s.candidates:
+        pdf.heading(t("report_chosen"), 11)
+        _candidate_heading(pdf, 1, s.candidates[0], t)
+        _checks(pdf, s.candidates[0], t)
+        pdf.heading(t("report_top", top=min(TOP, len(s.candidates)), count=len(s.candidates)), 10)
+        _top(pdf, report, t)
+        pdf.paragraph(t("report_details_hint"), size=7)
+    for rank, candidate in report.detailed_candidates():
+        if rank == 1:
+            continue
+        _candidate_heading(pdf, rank, candidate, t)
+        _checks(pdf, candidate, t)
+        pdf.ln(1)
     return bytes(pdf.output())

@@ -1,53 +1,63 @@
 """The engineering report of a stored selection, as CSV and as PDF.
 
-Both list the load case, the cycle figures and every candidate in the answer's order
-with its verdict, torques and checks (reference, value, limit, margin). Every number
-is the stored answer's (``GET /selections/{id}``), read through
+Every number is the stored answer's (``GET /selections/{id}``), read through
 ``services.selections.stored_answer_json``; the margin is the core's
-``(limit − value)/limit`` (``core.checks.margin_percent``).
+``(limit − value)/limit`` (``core.checks.margin_percent``), the utilisation value/limit.
 
-**CSV** (UTF-8, RFC 4180 quoting, CRLF line ends, written by the stdlib ``csv``
-module): two tables separated by one empty line. The first has the columns
-``quantity,value,unit`` and one row per figure of the selection (load, cycle, n_av,
-ED, …); the second has one row per check of each candidate, the candidate's columns
-repeated on each of its rows (``CHECK_COLUMNS``). Numbers are written as Python's
-shortest repr of the stored double, so they read back as exactly the answer's value;
-an unknown value is an empty cell. Text cells that a spreadsheet would run as a
-formula get a leading single quote (``core.csvio.neutralised``, as the catalogue
-export does).
+**CSV** (UTF-8 with a byte order mark so that a spreadsheet reads ``kgm²`` right, RFC 4180
+quoting, CRLF line ends, written by the stdlib ``csv`` module): one tidy table with one
+header row (``COLUMNS``), one row per check of each candidate in the answer's order; the
+selection's figures (load, cycle, n_av, ED) and the candidate's are repeated on each row,
+so that every row stands alone in a filter or a pivot table. Numbers are written as
+Python's shortest repr of the stored double, so they read back as exactly the answer's
+value; an unknown value (and a cycle time of a segment cycle) is an empty cell. Text
+cells that a spreadsheet would run as a formula get a leading single quote
+(``core.csvio.neutralised``, as the catalogue export does). Column names, check names,
+statuses and verdicts are the API's identifiers, numbers have a decimal point, the same
+in every language: the CSV is data for programs and spreadsheets.
 
-The CSV is data for programs and spreadsheets: its column names, check names, statuses
-and verdicts are the API's identifiers and its numbers are written with a decimal point,
-the same in every language.
-
-**PDF** (A4, page numbers in the footer, ``services/pdf.py``): the same content for
-print, in the request's language (labels, verdicts and statuses worded, references as
-the chapter's German edition writes them, numbers to six significant digits in the
-language's format, min⁻¹ in German), by the words of :class:`ReportWords`. Text is set
-in DejaVu Sans where the system has it; else in Latin-1 Helvetica, with the chapter's
-symbols written in ASCII (``≤`` → ``<=``, ``T₁`` → ``T1``, ``−`` → ``-``).
+**PDF** (A4, page numbers, ``services/report_pdf.py``): a first page a reader can sign
+(the inputs in words, the cycle and speed/torque diagrams, the first-ranked candidate's
+checks, the top five with their utilisation), then the checks of the candidates asked
+for (``?candidates=``), in the request's language.
 """
 
 from __future__ import annotations
 
 import csv
 import io
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from datetime import date
 from typing import Any, Protocol
 
+from markupsafe import Markup
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.checks import margin_percent
 from actuator_selection.core.csvio import neutralised
-from actuator_selection.schemas.quotes import (
-    StoredSelection,
-    cycle_facts,
-)
-from actuator_selection.services.errors import not_found
+from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.schemas.actuators import ActuatorOut
+from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection
+from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.selections import stored_answer_json
 
-SUMMARY_COLUMNS = ("quantity", "value", "unit")
+SELECTION_COLUMNS = (
+    "selection_id",
+    "catalogue_version",
+    "load_speed_rpm",
+    "load_torque_nm",
+    "load_inertia_kgm2",
+    "high_dynamics",
+    "accel_s",
+    "constant_s",
+    "decel_s",
+    "pause_s",
+    "cycle_time_s",
+    "mean_speed_rpm",
+    "duty_cycle_percent",
+)
+"""The selection's figures, the same on every row."""
 CHECK_COLUMNS = (
     "rank",
     "model",
@@ -65,10 +75,32 @@ CHECK_COLUMNS = (
     "value",
     "limit",
     "margin_percent",
+    "utilisation_percent",
     "approximate",
     "missing",
 )
-"""The columns of the CSV's second table, one row per check of each candidate."""
+"""A candidate's and one of its checks' columns."""
+COLUMNS = SELECTION_COLUMNS + CHECK_COLUMNS
+"""The CSV's one header row."""
+
+TOP = 5
+"""How many candidates the report's first page ranks."""
+
+UTILISATION_CHECKS = ("peak_torque", "continuous_duty", "max_speed")
+"""The checks whose utilisation the first page's ranking shows: T₁/T_max (Eq. 514.1),
+(n_av, T_rms) against the continuous limit (Fig. 517.1), n₂/n_max."""
+
+
+def utilisation_percent(value: float | None, limit: float | None) -> float | None:
+    """value/limit [%]: how much of its limit a check uses; None without a value or a
+    positive limit.
+
+    >>> round(utilisation_percent(95.48, 151.0), 2)
+    63.23
+    """
+    if value is None or limit is None or limit <= 0:
+        return None
+    return value / limit * 100.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,33 +108,51 @@ class SelectionReport:
     """A stored selection as the report shows it."""
 
     selection: StoredSelection
+    actuator: dict[str, Any] | None = None
+    """The first-ranked candidate's catalogue entry (its continuous-duty zone for the
+    diagram), None where the catalogue no longer has it."""
+    detailed: tuple[str, ...] = ()
+    """The models whose checks the PDF details after its first page."""
 
     @property
-    def summary(self) -> list[tuple[str, float | int | str | None, str]]:
-        """(quantity, value, unit) of the load case and the cycle figures."""
-        s = self.selection
+    def top(self) -> list[StoredCandidate]:
+        """The first :data:`TOP` candidates in the answer's order."""
+        return self.selection.candidates[:TOP]
+
+    def detailed_candidates(self) -> list[tuple[int, StoredCandidate]]:
+        """(rank, candidate) of each model asked for, in the answer's order."""
         return [
-            ("selection_id", s.id, ""),
-            ("created_at", s.created_at.isoformat(), "UTC"),
-            ("catalogue_version", s.catalogue_version, ""),
-            ("speed_rpm", s.load.speed_rpm, "rpm"),
-            ("torque_nm", s.load.torque_nm, "Nm"),
-            ("inertia_kgm2", s.load.inertia_kgm2, "kgm²"),
-            ("high_dynamics", "true" if s.high_dynamics else "false", ""),
-            *((key, value, unit) for key, _, value, unit in cycle_facts(s.cycle, s.segments)),
-            ("cycle_time_s", s.cycle_time_s, "s"),
-            ("mean_speed_rpm", s.mean_speed_rpm, "rpm"),
-            ("duty_cycle_percent", s.duty_cycle_percent, "%"),
-            ("candidates", len(s.candidates), ""),
+            (rank, c)
+            for rank, c in enumerate(self.selection.candidates, start=1)
+            if c.model in self.detailed
         ]
 
+    @staticmethod
+    def utilisation(candidate: StoredCandidate, check: str) -> float | None:
+        """The utilisation [%] of ``candidate``'s check ``check`` (value/limit)."""
+        found = next((c for c in candidate.checks if c.name == check), None)
+        return None if found is None else utilisation_percent(found.value, found.limit)
 
-def selection_report(session: Session, selection_id: str) -> SelectionReport:
-    """The report of a stored selection; 404 when there is none."""
+
+def selection_report(
+    session: Session, selection_id: str, candidates: Sequence[str] = ()
+) -> SelectionReport:
+    """The report of a stored selection, detailing ``candidates``; 404 when there is no
+    such selection, 422 naming a model that is not among its candidates."""
     stored = stored_answer_json(session, selection_id)
     if stored is None:
         raise not_found(["path", "selection_id"], "unknown_selection", selection_id=selection_id)
-    return SelectionReport(StoredSelection.model_validate(stored))
+    selection = StoredSelection.model_validate(stored)
+    models = {c.model for c in selection.candidates}
+    for k, model in enumerate(candidates):
+        if model not in models:
+            raise invalid(["query", "candidates", k], "unknown_actuator", "unknown", model=model)
+    actuator = None
+    if selection.candidates:
+        record = CatalogueRepository(session).actuator(selection.candidates[0].model)
+        if record is not None:
+            actuator = ActuatorOut.from_record(record).model_dump(mode="json")
+    return SelectionReport(selection, actuator, tuple(dict.fromkeys(candidates)))
 
 
 def _cell(value: Any) -> str:
@@ -118,14 +168,30 @@ def _cell(value: Any) -> str:
 
 def report_csv(report: SelectionReport) -> str:
     """The report as CSV (see the module's docstring for the layout)."""
+    s = report.selection
+    cycle = s.cycle
+    selection = [
+        s.id,
+        s.catalogue_version,
+        s.load.speed_rpm,
+        s.load.torque_nm,
+        s.load.inertia_kgm2,
+        s.high_dynamics,
+        cycle.accel_s,
+        cycle.constant_s,
+        cycle.decel_s,
+        cycle.pause_s,
+        s.cycle_time_s,
+        s.mean_speed_rpm,
+        s.duty_cycle_percent,
+    ]
     buffer = io.StringIO()
+    buffer.write("\ufeff")
     writer = csv.writer(buffer, lineterminator="\r\n")
-    writer.writerow(SUMMARY_COLUMNS)
-    writer.writerows([_cell(q), _cell(v), _cell(u)] for q, v, u in report.summary)
-    writer.writerow([])
-    writer.writerow(CHECK_COLUMNS)
-    for rank, c in enumerate(report.selection.candidates, start=1):
+    writer.writerow(COLUMNS)
+    for rank, c in enumerate(s.candidates, start=1):
         head = [
+            *selection,
             rank,
             c.model,
             c.family,
@@ -146,6 +212,7 @@ def report_csv(report: SelectionReport) -> str:
                 check.value,
                 check.limit,
                 margin_percent(check.value, check.limit),
+                utilisation_percent(check.value, check.limit),
                 check.approximate,
                 check.missing,
             ]
@@ -167,7 +234,15 @@ class ReportWords(Protocol):
         ...
 
     def number(self, value: float, pattern: str) -> str:
-        """``value`` by a CLDR number pattern."""
+        """``value`` by a CLDR number pattern, the minus sign before a negative one."""
+        ...
+
+    def load_rows(self, load: Mapping[str, Any]) -> list[tuple[Markup, str]]:
+        """The load as entered (a stored request's ``load``), field by field, worded."""
+        ...
+
+    def words(self, key: str, **params: object) -> Markup:
+        """The label ``key`` with its symbols subscripted (``core.symbols``)."""
         ...
 
     def date(self, value: date) -> str:

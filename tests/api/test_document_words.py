@@ -1,0 +1,192 @@
+"""Documents worth sending (issue 29 items 2–4): the German quote and report name every
+input in words, write symbols with subscripts and negative numbers with the minus sign,
+hold no English line; the report's first page can be signed (inputs, both diagrams, the
+first candidate's checks, the top five) and the whole-catalogue report is at most three
+pages; the CSV is one tidy table. PDFs are read back with pypdf, independent of fpdf2."""
+
+from __future__ import annotations
+
+import csv
+import io
+import os
+import re
+from pathlib import Path
+from typing import Any
+
+import pypdf
+import pytest
+from fastapi.testclient import TestClient
+from tests import worked_example
+from tests.api._sales_fixtures import SalesApi, api, sales_api_with
+
+from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
+from actuator_selection.services.pdf import unicode_font
+
+__all__ = ["api", "sales_api_with"]
+
+ROTARY_TABLE = {
+    "type": "rotary_table",
+    "speed_rpm": 45.0,
+    "mass_kg": 30.0,
+    "diameter_m": 0.4,
+    "friction_coefficient": 0.02,
+    "friction_radius_m": 0.15,
+}
+IDENTIFIER = re.compile(r"(?<![A-Z])[A-Za-z]_[A-Za-z0-9]|speed_rpm|mass_kg|rotary_table")
+HYPHEN_NUMBER = re.compile(r"(?<![\w.,])-\d")
+WORD = re.compile(r"[A-Za-zÄÖÜäöüß]{3,}")
+CHAPTER = "Engineering Data for Harmonic Drive Servo Actuators"
+"""The chapter's title, cited as it is in both languages."""
+
+
+def _dump(name: str, body: bytes) -> None:
+    """Keep a PDF for a look (``DOCUMENT_DUMP=/some/dir``)."""
+    if where := os.environ.get("DOCUMENT_DUMP"):
+        Path(where, name).write_bytes(body)
+
+
+def _pdf(body: bytes) -> tuple[str, int]:
+    reader = pypdf.PdfReader(io.BytesIO(body))
+    text = "\n".join(page.extract_text() or "" for page in reader.pages)
+    return text, len(reader.pages)
+
+
+def _english_only() -> set[str]:
+    """Words only the documents' English texts use."""
+    english = {w.lower() for text in TEXT.values() for w in WORD.findall(text["en"])}
+    german = {w.lower() for text in TEXT.values() for w in WORD.findall(text["de"])}
+    return english - german
+
+
+def _english_lines(text: str, *, data: tuple[str, ...] = ()) -> list[str]:
+    """The lines of ``text`` with an English-only word (``data``: cited or entered text)."""
+    words = _english_only()
+    for value in (CHAPTER, *data):
+        text = text.replace(value, " ")
+    return [
+        line for line in text.splitlines() if any(w.lower() in words for w in WORD.findall(line))
+    ]
+
+
+def _selection(client: TestClient, **changes: Any) -> dict[str, Any]:
+    body = {**worked_example.request(), "high_dynamics": True, **changes}
+    response = client.post("/api/v1/selections", json=body)
+    assert response.status_code == 201, response.text
+    answer: dict[str, Any] = response.json()
+    return answer
+
+
+def test_the_whole_catalogue_report_is_three_pages_with_both_diagrams(
+    client: TestClient,
+) -> None:
+    answer = _selection(client)
+    assert len(answer["candidates"]) > 20  # the whole catalogue
+    response = client.get(f"/api/v1/selections/{answer['id']}/report.pdf?lang=de")
+    assert response.status_code == 200, response.text
+    _dump("report-de.pdf", response.content)
+    text, pages = _pdf(response.content)
+    t = DocumentText("de")
+    assert pages <= 3
+    # both diagrams: their axes, the cycle's time and the speed/torque diagram's torque
+    assert t("axis_time") in text
+    assert t("axis_torque") in text
+    # the inputs in words, the first-ranked candidate's checks, the top five
+    first = answer["candidates"][0]
+    assert t("load_inertia").split(" J_")[0] in text
+    assert f"1. {first['model']}" in text
+    for model in (c["model"] for c in answer["candidates"][:5]):
+        assert model in text
+    assert answer["candidates"][6]["model"] not in text  # no details unless asked for
+    assert not IDENTIFIER.findall(text), IDENTIFIER.findall(text)
+    assert not HYPHEN_NUMBER.findall(text), HYPHEN_NUMBER.findall(text)
+    assert "−" in text  # T₃ of the first candidate is negative
+    assert not _english_lines(text), _english_lines(text)
+    if unicode_font() is not None:
+        assert "nₐᵥ" in text
+        assert "Tᵣₘₛ" in text
+
+
+def test_the_report_details_the_candidates_asked_for(client: TestClient) -> None:
+    answer = _selection(client)
+    far = answer["candidates"][-1]
+    url = f"/api/v1/selections/{answer['id']}/report.pdf"
+    text, _ = _pdf(client.get(url, params={"candidates": far["model"], "lang": "en"}).content)
+    rank = len(answer["candidates"])
+    assert f"{rank}. {far['model']} (" in text
+    missing = client.get(url, params={"candidates": "NO-SUCH-MODEL"})
+    assert missing.status_code == 422
+    error = missing.json()
+    assert error["detail"][0]["loc"] == ["query", "candidates", 0]
+    assert error["detail"][0]["code"] == "unknown_actuator"
+
+
+def test_the_csv_is_one_tidy_table(client: TestClient) -> None:
+    from actuator_selection.services.reports import COLUMNS
+
+    answer = _selection(client)
+    response = client.get(f"/api/v1/selections/{answer['id']}/report.csv")
+    assert response.status_code == 200
+    rows = list(csv.reader(io.StringIO(response.content.decode("utf-8-sig"), newline="")))
+    assert rows[0] == list(COLUMNS)
+    assert [] not in rows
+    assert all(len(row) == len(COLUMNS) for row in rows)
+    records = [dict(zip(rows[0], row, strict=True)) for row in rows[1:]]
+    assert len(records) == sum(len(c["checks"]) for c in answer["candidates"])
+    by_model = {c["model"]: c for c in answer["candidates"]}
+    for record in records:
+        assert record["selection_id"] == answer["id"]
+        assert float(record["mean_speed_rpm"]) == answer["mean_speed_rpm"]
+        assert float(record["load_inertia_kgm2"]) == answer["load"]["inertia_kgm2"]
+        candidate = by_model[record["model"]]
+        assert int(record["rank"]) == answer["candidates"].index(candidate) + 1
+        check = next(c for c in candidate["checks"] if c["name"] == record["check"])
+        if check["value"] is not None and check["limit"]:
+            assert float(record["utilisation_percent"]) == pytest.approx(
+                check["value"] / check["limit"] * 100
+            )
+
+
+@pytest.mark.parametrize("language", ["de", "en"])
+def test_quote_documents_name_the_mechanism_in_words(api: SalesApi, language: Language) -> None:
+    selection = api.selection(models=["FHA-25C-50-L"], load=ROTARY_TABLE)
+    created = api.post("/api/v1/quotes", json=api.quote_body(selection["id"], vat_percent="19"))
+    assert created.status_code == 201, created.text
+    number = created.json()["number"]
+    headers = api.headers("sales", **{"Accept-Language": language})
+    pdf = api.client.get(f"/api/v1/quotes/{number}/document.pdf", headers=headers)
+    assert pdf.status_code == 200
+    _dump(f"quote-{language}.pdf", pdf.content)
+    html = api.client.get(f"/api/v1/quotes/{number}/document", headers=headers)
+    assert html.status_code == 200
+    t = DocumentText(language)
+    text, _ = _pdf(pdf.content)
+    assert not IDENTIFIER.findall(text), IDENTIFIER.findall(text)
+    assert not HYPHEN_NUMBER.findall(text), HYPHEN_NUMBER.findall(text)
+    assert "−" in text  # T₃ < 0
+    for shown in (text, re.sub(r"<[^>]+>", "", html.text)):
+        assert t("load_rotary_table") in shown
+        assert t("field_mass_kg") in shown
+        assert t("field_diameter_m") in shown
+        assert t.unit("rpm") in shown
+    # the diagram is in the PDF too: its axes' titles
+    assert t("axis_torque") in text
+    assert t("axis_speed", rpm=t.unit("rpm")) in text
+    # the HTML writes the symbols with <sub>, never X_sub
+    assert "n<sub>2</sub>" in html.text
+    assert "T<sub>L</sub>" in html.text
+    assert not re.search(r">[^<]*\b[A-Za-z]_[A-Za-z0-9][^<]*<", html.text.split("<body")[1])
+    if language == "de":
+        data = (
+            "Muster GmbH",
+            "Hauptstr.",
+            "Musterstadt",
+            "EXAMPLE — not real prices",
+            "Your company",
+            "Your street 1",
+            "Your town",
+            "Your country",
+            "sales@example.com",
+            "Servo actuator FHA-25C-50-L (example price)",
+            "CTRL-SINAMICS-S120",
+        )  # data: as entered
+        assert not _english_lines(text, data=data), _english_lines(text, data=data)
