@@ -20,7 +20,7 @@ from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
 from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
-from actuator_selection.services.pdf import unicode_font
+from actuator_selection.services.pdf import DocumentPdf, unicode_font
 
 __all__ = ["api", "sales_api_with"]
 
@@ -168,6 +168,7 @@ def test_quote_documents_name_the_mechanism_in_words(api: SalesApi, language: La
         assert t("field_mass_kg") in shown
         assert t("field_diameter_m") in shown
         assert t.unit("rpm") in shown
+    assert "CTRL-SINAMICS-S120" in text  # an item code is never broken
     # the diagram is in the PDF too: its axes' titles
     assert t("axis_torque") in text
     assert t("axis_speed", rpm=t.unit("rpm")) in text
@@ -190,3 +191,36 @@ def test_quote_documents_name_the_mechanism_in_words(api: SalesApi, language: La
             "CTRL-SINAMICS-S120",
         )  # data: as entered
         assert not _english_lines(text, data=data), _english_lines(text, data=data)
+
+
+def _blank_pdf() -> DocumentPdf:
+    pdf = DocumentPdf(title="Test", lang="en", page_label="Page", of_label="of")
+    pdf.add_page()
+    return pdf
+
+
+def test_document_tables_are_not_justified() -> None:
+    """A wrapped cell is left-aligned: no word spacing stretched over the line (the TJ
+    operator with which fpdf2 justifies)."""
+    pdf = _blank_pdf()
+    label = "Output voltage with ωL·I over a label long enough to wrap in its cell " * 2
+    pdf.facts([(label, "1 V")])
+    pdf.paragraph(label * 3)
+    reader = pypdf.PdfReader(io.BytesIO(bytes(pdf.output())))
+    stream = reader.pages[0].get_contents()
+    assert stream is not None
+    assert b" TJ" not in stream.get_data()
+
+
+def test_a_table_that_would_break_moves_to_the_next_page_whole() -> None:
+    pdf = _blank_pdf()
+    pdf.paragraph("before")
+    pdf.set_y(pdf.h - 45)
+    rows = [(f"row {k}", f"{k} Nm") for k in range(12)]
+    pdf.grid(("check", "value"), rows, (60, 30), right=(1,))
+    reader = pypdf.PdfReader(io.BytesIO(bytes(pdf.output())))
+    first, second = (page.extract_text() for page in reader.pages)
+    assert "before" in first
+    assert "row 0" not in first
+    for k in range(12):
+        assert f"row {k} " in second.replace("\n", " ")

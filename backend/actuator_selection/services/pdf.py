@@ -138,16 +138,29 @@ class DocumentPdf(FPDF):
         if not plain(text).strip():
             return
         self.font(size)
-        self.multi_cell(0, 4.2, self.words(text), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.multi_cell(0, 4.2, self.words(text), align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+
+    def whole(self, draw: Callable[[Any], None]) -> None:
+        """``draw`` (a table) on one page: first on a copy, and where that breaks the page,
+        on the next page; a table longer than a page breaks where it must."""
+        with self.offset_rendering() as dummy:
+            draw(dummy)
+        if dummy.page_break_triggered and self.get_y() > self.t_margin + 10:
+            self.add_page()
+        draw(self)
 
     def facts(self, rows: Sequence[tuple[object, object]], width: float = 120) -> None:
-        if not rows:
-            return
+        """Label and value rows, left-aligned (never justified), kept on one page."""
+        if rows:
+            self.whole(lambda pdf: pdf._facts(rows, width))
+
+    def _facts(self, rows: Sequence[tuple[object, object]], width: float) -> None:
         self.font(8.5)
         with self.table(
             col_widths=(width * 0.55, width * 0.45),
             width=width,
             align="LEFT",
+            text_align="LEFT",
             first_row_as_headings=False,
             line_height=4.4,
         ) as table:
@@ -161,6 +174,17 @@ class DocumentPdf(FPDF):
         widths: Sequence[float],
         *,
         right: Sequence[int] = (),
+    ) -> None:
+        """A table with a heading row; numbers (columns ``right``) right-aligned, the rest
+        left-aligned; kept on one page."""
+        self.whole(lambda pdf: pdf._grid(head, rows, widths, right))
+
+    def _grid(
+        self,
+        head: Sequence[object],
+        rows: Sequence[Sequence[object]],
+        widths: Sequence[float],
+        right: Sequence[int],
     ) -> None:
         self.font(8)
         align = tuple("RIGHT" if i in right else "LEFT" for i in range(len(widths)))

@@ -138,6 +138,8 @@ def render_quote_pdf(context: dict[str, Any]) -> bytes:
         )
     figure = json.loads(str(c["figure"]))
     if figure:
+        if pdf.will_page_break(72):  # the heading stays with its diagram
+            pdf.add_page()
         pdf.heading(c["l_diagram"], 10)
         pdf.figure(figure, width=pdf.epw, height=62, number=c["tick_number"])
     pdf.ln(1)

@@ -178,6 +178,8 @@ def render_pdf(
     pdf.heading(t("inputs_heading"), 10)
     _columns(pdf, load, cycle)
     if figures:
+        if pdf.will_page_break(64):  # the heading stays with its diagrams
+            pdf.add_page()
         pdf.heading(t("diagrams_heading"), 10)
         top = pdf.get_y()
         widths = (pdf.epw * 0.42, pdf.epw * 0.58) if len(figures) == 2 else (pdf.epw,)
