@@ -32,7 +32,7 @@ ROTARY_TABLE = {
     "friction_coefficient": 0.02,
     "friction_radius_m": 0.15,
 }
-IDENTIFIER = re.compile(r"(?<![A-Z])[A-Za-z]_[A-Za-z0-9]|speed_rpm|mass_kg|rotary_table")
+IDENTIFIER = re.compile(r"[A-Za-z]_[A-Za-z0-9]|speed_rpm|mass_kg|rotary_table")
 HYPHEN_NUMBER = re.compile(r"(?<![\w.,])-\d")
 WORD = re.compile(r"[A-Za-zÄÖÜäöüß]{3,}")
 CHAPTER = "Engineering Data for Harmonic Drive Servo Actuators"

@@ -49,10 +49,11 @@ TEXT: dict[str, dict[str, str]] = {
         "erfundene Zahlen zum Ausprobieren; dieses Dokument nicht an Kunden senden.",
     },
     "placeholder_seller": {
-        "en": "The seller block holds placeholder values: set SELLER_NAME, SELLER_ADDRESS, "
-        "SELLER_VAT_ID and SELLER_EMAIL in the server's settings before sending quotes.",
-        "de": "Der Anbieterblock enthält Platzhalter: vor dem Versand SELLER_NAME, "
-        "SELLER_ADDRESS, SELLER_VAT_ID und SELLER_EMAIL in den Servereinstellungen setzen.",
+        "en": "The seller block holds placeholder values: set the seller's name, address, "
+        "VAT ID and email in the server's settings (docs/deployment.md) before sending quotes.",
+        "de": "Der Anbieterblock enthält Platzhalter: vor dem Versand Name, Anschrift, "
+        "USt-IdNr. und E-Mail des Anbieters in den Servereinstellungen setzen "
+        "(docs/deployment.md).",
     },
     "heading": {"en": "Quotation", "de": "Angebot"},
     "subtitle": {
