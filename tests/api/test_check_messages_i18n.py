@@ -398,7 +398,7 @@ def test_every_rule_message_has_a_code_and_a_german_text() -> None:
         assert text != message or not any(c.isalpha() for c in message), message
         _assert_german(text)
         assert render_check(message, "en") == message
-    rules = {c for c in CHECK_MESSAGES if c.split(".")[0] not in DRIVE_MESSAGE_GROUPS}
+    rules = {c for c in CHECK_MESSAGES if c.split(".")[0] not in (*DRIVE_MESSAGE_GROUPS, "limit")}
     retired = {
         "output_voltage.pass",
         "output_voltage.fail",
@@ -431,3 +431,45 @@ def test_german_numbers_use_a_decimal_comma_and_infinity_a_sign() -> None:
         == "Lastdrehzahl n_2 = 1235 min⁻¹ überschreitet n_max = 90,5 min⁻¹"
     )
     assert str(speed) == "load speed n_2 = 1235 rpm exceeds n_max = 90.5 rpm"
+
+
+def test_every_reason_a_limit_has_no_value_has_a_german_text() -> None:
+    """The inverse solve's reasons (core/inverse.py), each from a real solve: a speed above
+    n_max at any pause or t_1, an inertia ratio failed already at J_L = 0 with J_A's 3×
+    beyond reach, and a cycle that does not start with a ramp."""
+    from actuator_selection.core.cycle import Load
+    from actuator_selection.core.inverse import largest_load_inertia, shortest_accel
+    from actuator_selection.core.motion import Motion, Segment
+    from actuator_selection.core.selection import Application
+
+    fha = worked_example.FHA_25C_50_L
+    app = worked_example.APPLICATION
+    too_fast = dataclasses.replace(
+        app, pattern=dataclasses.replace(worked_example.PATTERN, speed_rpm=500)
+    )
+    too_heavy = dataclasses.replace(app, load=Load(torque_nm=1000, inertia_kgm2=0))
+    dwell_first = Application(
+        motion=Motion(
+            segments=(
+                Segment(duration_s=0.1, start_rpm=0, end_rpm=0),
+                Segment(duration_s=0.1, start_rpm=0, end_rpm=40),
+                Segment(duration_s=0.1, start_rpm=40, end_rpm=0),
+            ),
+            load=worked_example.APPLICATION.cycle.load,
+        )
+    )
+    reasons = [
+        shortest_accel(fha, too_fast).reason,
+        largest_load_inertia(fha, too_heavy).reason,
+        shortest_accel(fha, dwell_first).reason,
+    ]
+    seen: set[str] = set()
+    for reason in reasons:
+        assert isinstance(reason, Phrase), reason
+        seen |= set(_codes(reason))
+        text = render_check(reason, "de")
+        assert text != reason
+        _assert_german(text)
+    assert {c for c in seen if c.startswith("limit.")} == {
+        c for c in CHECK_MESSAGES if c.startswith("limit.")
+    }

@@ -91,8 +91,9 @@ def test_limits_of_a_cycle_of_segments_vary_its_last_dwell(client: TestClient) -
         "model": "FHA-25C-50",
     }
     found = limits(client, body)
-    assert "accel_s" not in found  # t_1 is solved for the chapter's cycle
     shorthand = limits(client, worked_example.request() | {"model": "FHA-25C-50"})
+    # t_1 is the first segment's duration, a ramp from standstill as in the chapter's cycle
+    assert found["accel_s"]["value"] == pytest.approx(shorthand["accel_s"]["value"], rel=1e-8)
     assert found["pause_s"] == shorthand["pause_s"]
     assert found["load_inertia_kgm2"] == shorthand["load_inertia_kgm2"]
 
@@ -136,3 +137,74 @@ def test_a_stored_candidates_limits_equal_the_posted_ones(client: TestClient) ->
     assert missing.json()["detail"][0]["loc"] == ["path", "model"]
     unknown = client.get(f"{API}/00000000-0000-0000-0000-000000000000/candidates/FHA-25C-50/limits")
     assert unknown.status_code == 404
+
+
+# Issue 29 item 6: a belt axis (a mechanism with the t_1…t_p cycle, which the core sizes as a
+# cycle of segments) lost its shortest-t_1 row without a word.
+BELT_AXIS: dict[str, Any] = {
+    "load": {
+        "type": "belt",
+        "mass_kg": 15.0,
+        "pulley_diameter_mm": 60,
+        "friction_coefficient": 0.1,
+        "efficiency": 0.9,
+        "speed": 500,
+    },
+    "cycle": {"accel_s": 0.2, "constant_s": 0.5, "decel_s": 0.2, "pause_s": 0.5},
+}
+
+
+def test_a_belt_axis_has_its_shortest_t1_from_the_flowchart(client: TestClient) -> None:
+    """The row is there, and the flowchart agrees: just above it no check fails, just below
+    it the limiting check does."""
+    selection = client.post(API, json=BELT_AXIS)
+    assert selection.status_code == 201, selection.text
+    model = next(c["model"] for c in selection.json()["candidates"] if c["verdict"] != "unsuitable")
+    found = limits(client, BELT_AXIS | {"model": model})
+    assert set(found) == {"pause_s", "accel_s", "load_inertia_kgm2"}
+    accel = found["accel_s"]
+    assert accel["value"] is not None
+    assert accel["reason"] is None
+    limiting = [c["name"] for c in accel["limiting_checks"]]
+    assert limiting
+    at = BELT_AXIS["cycle"]
+    inside = BELT_AXIS | {"cycle": at | {"accel_s": accel["value"] * (1 + 1e-6)}}
+    beyond = BELT_AXIS | {"cycle": at | {"accel_s": accel["value"] * (1 - 1e-6)}}
+    assert "fail" not in checks_at(client, inside, model).values()
+    assert checks_at(client, beyond, model)[limiting[0]] == "fail"
+
+
+def test_a_limit_that_cannot_be_solved_says_why_in_both_languages(client: TestClient) -> None:
+    """No value, and the reason as a code, its params and words: a cycle that does not
+    start with a ramp from standstill has no t_1; a speed above n_max fails at any t_1."""
+    body = {
+        "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
+        "cycle": {
+            "segments": [
+                {"duration_s": 0.2},
+                {"speed": 40, "duration_s": 0.1},
+                {"speed": 0, "duration_s": 0.1},
+                {"duration_s": 1.0},
+            ]
+        },
+        "model": "FHA-25C-50",
+    }
+    accel = limits(client, body)["accel_s"]
+    assert accel["value"] is None
+    assert accel["reason_code"] == "limit.accel_no_ramp"
+    assert "standstill" in accel["reason"]
+    german = client.post(f"{API}/limits", json=body, headers={"Accept-Language": "de"})
+    reason_de = {x["quantity"]: x for x in german.json()["limits"]}["accel_s"]["reason"]
+    assert reason_de
+    assert "Stillstand" in reason_de
+    too_fast = worked_example.request() | {"model": "FHA-25C-50"}
+    too_fast["load"] = too_fast["load"] | {"speed_rpm": 1000}
+    found = limits(client, too_fast)
+    for quantity in ("accel_s", "pause_s"):
+        row = found[quantity]
+        assert row["value"] is None
+        assert row["reason_code"] == "limit.none.min"
+        assert row["reason_params"]["value"] == 86_400
+        assert row["reason_params"]["check"]["code"] == "max_speed.fail"
+        assert "max_speed" in [c["name"] for c in row["limiting_checks"]]
+        assert "86400" in row["reason"].replace(" ", "").replace("\u202f", "")

@@ -399,6 +399,20 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "tilting moment and static safety checked; life not checked: no required_life_h"
     ),
     "output_bearing.checked": N_("tilting moment, static safety and L_10 life checked"),
+    # Why a limit of the inverse solve has no value (core/inverse.py); {check}: the
+    # message of a check that fails there
+    "limit.none.min": N_(
+        "none in the range searched: even at {value:.6g} {unit}, the longest searched, a "
+        "check still fails: {check}"
+    ),
+    "limit.none.max": N_(
+        "none in the range searched: already at {value:.6g} {unit}, the smallest, a check "
+        "fails: {check}"
+    ),
+    "limit.accel_no_ramp": N_(
+        "t_1 is solved for a cycle that starts with an acceleration from standstill; this "
+        "cycle's first segment is none"
+    ),
     # A check of a stored lean answer, written from its numbers (schemas/quotes.py); the
     # check's name stands beside it wherever it is shown
     "stored.pass": N_("{value:.4g} {unit} ≤ {limit:.4g} {unit}"),

@@ -40,6 +40,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.checks import Check, Rule, Status
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.selection import Application, Candidate, Verdict, evaluate
@@ -74,6 +75,10 @@ class Limit:
     verdict: Verdict | None
     """The flowchart's verdict at the bound (``unconfirmed``: a check lacks data)."""
     note: str
+    reason: str | None = None
+    """Why ``value`` is None, in words with a code (a check message's
+    :class:`~actuator_selection.core.check_messages.Phrase`): ``limit.none.min``,
+    ``limit.none.max`` or ``limit.accel_no_ramp``."""
 
 
 Vary = Callable[[Application, float], Application]
@@ -190,6 +195,12 @@ def _none_in_range(
         messages=tuple(c.message for c in failing),
         verdict=candidate.verdict,
         note=f"a check fails at every value searched (still at {where:g} {unit})",
+        reason=phrase(
+            f"limit.none.{bound}",
+            value=float(where),
+            unit=unit,
+            check=failing[0].message if failing else "",
+        ),
     )
 
 
@@ -234,16 +245,35 @@ def shortest_pause(
 def shortest_accel(
     actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
 ) -> Limit:
-    """The shortest acceleration time t_1 (t_3 as given) with which no check fails, for the
-    chapter's cycle."""
-    if app.pattern is None:
-        raise InvalidInputError(
-            "cycle", "the shortest acceleration time is solved for the t_1…t_p cycle"
-        )
-    pattern = app.pattern
+    """The shortest acceleration time t_1 (t_3 as given) with which no check fails: t_1 of
+    the chapter's cycle, or the first segment of a cycle of segments where that is an
+    acceleration from standstill (a mechanism's trapezoid); else no value, and why."""
+    if app.pattern is not None:
+        pattern = app.pattern
 
-    def vary(t: float) -> Application:
-        return dataclasses.replace(app, pattern=dataclasses.replace(pattern, accel_s=t))
+        def vary(t: float) -> Application:
+            return dataclasses.replace(app, pattern=dataclasses.replace(pattern, accel_s=t))
+
+    else:
+        motion = app.cycle
+        first = motion.segments[0]
+        if first.start_rpm != 0 or first.end_rpm == 0:
+            return Limit(
+                quantity="accel_s",
+                bound="min",
+                value=None,
+                unit="s",
+                limiting_checks=(),
+                messages=(),
+                verdict=None,
+                note="the cycle does not start with an acceleration from standstill",
+                reason=phrase("limit.accel_no_ramp"),
+            )
+
+        def vary(t: float) -> Application:
+            ramp = dataclasses.replace(first, duration_s=t)
+            segments = (ramp, *motion.segments[1:])
+            return dataclasses.replace(app, motion=dataclasses.replace(motion, segments=segments))
 
     return _search(
         actuator,
@@ -289,10 +319,10 @@ def largest_load_inertia(
 def limits(
     actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
 ) -> tuple[Limit, ...]:
-    """Every limit that applies to the load case's form (t_1 for the chapter's cycle only)."""
+    """The shortest pause, the shortest t_1 (without a value, and why, where the cycle has
+    none) and the largest J_L."""
     found = [shortest_pause(actuator, app, rules=rules)]
-    if app.pattern is not None:
-        found.append(shortest_accel(actuator, app, rules=rules))
+    found.append(shortest_accel(actuator, app, rules=rules))
     found.append(largest_load_inertia(actuator, app, rules=rules))
     if any(math.isnan(x.value) for x in found if x.value is not None):
         raise InvalidInputError("load", "gives no finite limit")  # pragma: no cover

@@ -61,6 +61,20 @@ class LimitOut(ResponseModel):
         description="the checks that fail just beyond the limit"
     )
     note: str
+    reason: str | None = Field(
+        default=None,
+        description="why `value` is null, in the answer's language (null where it is not)",
+    )
+    reason_code: str | None = Field(
+        default=None,
+        description="stable code of `reason`: limit.none.min (a check still fails at the "
+        "range's far end), limit.none.max (a check fails already at its start) or "
+        "limit.accel_no_ramp (the cycle has no t_1: it does not start with an acceleration "
+        "from standstill)",
+    )
+    reason_params: dict[str, Any] | None = Field(
+        default=None, description="the values `reason` names, as a check's `message_params`"
+    )
 
 
 class LimitsOut(ResponseModel):
@@ -101,6 +115,9 @@ class LimitsOut(ResponseModel):
                     for name, message in zip(limit.limiting_checks, limit.messages, strict=True)
                 ],
                 "note": limit.note,
+                "reason": None if limit.reason is None else localize(limit.reason),
+                "reason_code": None if limit.reason is None else message_code(limit.reason),
+                "reason_params": None if limit.reason is None else jsonable_params(limit.reason),
             }
             for limit in found
         ]
