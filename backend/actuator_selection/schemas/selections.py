@@ -663,6 +663,48 @@ RANKING_RULE = (
 )
 
 
+class BindingCheckOut(ResponseModel):
+    """One check that fails for some candidates when none is suitable, and its nearest miss."""
+
+    name: str = Field(description="the check, as a candidate's `checks` name it")
+    failing: int = Field(description="how many candidates fail it")
+    value: float | None = Field(description="the nearest miss's value (unit: `check_rules`)")
+    limit: float | None = Field(
+        description="the nearest miss's limit: of the failing candidates, the one with the "
+        "smallest value/limit (for max_speed: the largest n_max)"
+    )
+    model: str = Field(description="the candidate with the nearest miss")
+
+
+class BindingChangeOut(ResponseModel):
+    """What the inverse solve says of a longer t_1 or pause for the nearest miss."""
+
+    quantity: Literal["accel_s", "pause_s"]
+    model: str = Field(description="the nearest miss: the first candidate")
+    value: float | None = Field(
+        description="the shortest t_1 or pause with which no check of `model` fails; null "
+        "where none does (see `reason_code`, as POST /selections/limits words it)"
+    )
+    unit: str
+    limiting_checks: list[str] = Field(
+        description="the checks that fail just short of `value`, or at every value"
+    )
+    reason_code: str | None = Field(description="why `value` is null: a limit's reason_code")
+
+
+class BindingOut(ResponseModel):
+    """What binds across the catalogue when no candidate is suitable or unconfirmed."""
+
+    candidates: int = Field(description="how many candidates were sized")
+    checks: list[BindingCheckOut] = Field(
+        description="each check that fails for some candidate, the most failed first"
+    )
+    changes: list[BindingChangeOut] = Field(
+        description="a longer t_1 and a longer pause for the nearest miss (no pause where the "
+        "cycle does not end at standstill); a range of ratios or leads is not searched yet"
+    )
+
+
 class SelectionOut(ResponseModel):
     """A stored selection: the load case, cycle figures and the ranked candidates."""
 
@@ -707,3 +749,8 @@ class SelectionOut(ResponseModel):
         description="the rows of Table 521.1 that the candidates' drive options refer to"
     )
     candidates: list[CandidateOut]
+    binding: BindingOut | None = Field(
+        default=None,
+        description="what binds across the catalogue when every candidate is unsuitable; "
+        "null otherwise (and in answers stored before it existed)",
+    )

@@ -40,7 +40,8 @@ from actuator_selection.core.batch import (
 from actuator_selection.core.checks import Check, Rule
 from actuator_selection.core.drive import shared_voltage_check
 from actuator_selection.core.electrical import DcBusClass
-from actuator_selection.core.errors import ConflictError, NotFoundError
+from actuator_selection.core.errors import ConflictError, InvalidInputError, NotFoundError
+from actuator_selection.core.inverse import shortest_accel, shortest_pause
 from actuator_selection.core.selection import VALUE_OF, Application, Verdict, evaluate, select
 from actuator_selection.db.repositories import (
     CatalogueRepository,
@@ -48,7 +49,7 @@ from actuator_selection.db.repositories import (
     SelectionRepository,
 )
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.checks import Localize, english
+from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.schemas.output_load import output_bearing_note
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
@@ -294,6 +295,8 @@ class _Ranked:
     steadily)."""
     checks: list[Any]
     """Per candidate, its checks: a list of dicts, or their JSON (``orjson.Fragment``)."""
+    check_dicts: Callable[[], list[list[JSON]]]
+    """Per candidate, its checks as dicts (made when asked: :func:`_binding`)."""
 
 
 def _ranked_vector(
@@ -307,6 +310,11 @@ def _ranked_vector(
     order = np.array(ev.ranking(0), dtype=np.intp)
     checks = _checks(ev)
     places = order.tolist()
+
+    def check_dicts() -> list[list[JSON]]:
+        rows = checks if len(checks) <= CHECKS_AS_DICTS_UP_TO else _checks_as_dicts(ev)
+        return [rows[j] for j in places]
+
     return _Ranked(
         actuators=[actuators[j] for j in places],
         verdicts=[VERDICT_BY_CODE[v] for v in ev.verdicts[0][order].tolist()],
@@ -320,6 +328,7 @@ def _ranked_vector(
             )
         ),
         checks=[checks[j] for j in places],
+        check_dicts=check_dicts,
     )
 
 
@@ -334,7 +343,8 @@ def _ranked_scalar(actuators: Sequence[Actuator], app: Application) -> _Ranked:
             else (t.accel_torque_nm, t.constant_torque_nm, t.decel_torque_nm, t.rms_torque_nm)
             for c in candidates
         ],
-        checks=[[_check(k) for k in c.checks] for c in candidates],
+        checks=(checks := [[_check(k) for k in c.checks] for c in candidates]),
+        check_dicts=lambda: checks,
     )
 
 
@@ -353,12 +363,64 @@ def _check(check: Check) -> JSON:
     return out
 
 
+def _binding(ranked: _Ranked, app: Application) -> JSON | None:
+    """What binds across the catalogue when every candidate is unsuitable (else None).
+
+    Per check that fails anywhere: how many candidates fail it, and its nearest miss, the
+    failing candidate with the smallest value/limit (for the speed: n_2 against the
+    largest n_max), from the candidates' own checks. Then what the inverse solve
+    (``core/inverse.py``) says of a longer pause and a longer t_1 for the nearest miss of
+    all, the first candidate: the shortest value with which no check fails, or none (and
+    the checks that fail at every value). A range of ratios or leads is not searched."""
+    if not ranked.verdicts or any(v is not Verdict.UNSUITABLE for v in ranked.verdicts):
+        return None
+    failing: dict[str, list[tuple[float, JSON, str]]] = {}
+    for actuator, checks in zip(ranked.actuators, ranked.check_dicts(), strict=True):
+        for check in checks:
+            if check["status"] != "fail":
+                continue
+            value, limit = check["value"], check["limit"]
+            ratio = value / limit if value is not None and limit else float("inf")
+            failing.setdefault(check["name"], []).append((ratio, check, actuator.model))
+    kinds = []
+    for name, misses in failing.items():
+        ratio, nearest, model = min(misses, key=lambda miss: miss[0])
+        kinds.append(
+            {
+                "name": name,
+                "failing": len(misses),
+                "value": nearest["value"],
+                "limit": nearest["limit"],
+                "model": model,
+            }
+        )
+    kinds.sort(key=lambda kind: -kind["failing"])
+    first = ranked.actuators[0]
+    changes = []
+    for solve in (shortest_accel, shortest_pause):
+        try:
+            limit = solve(first, app)
+        except InvalidInputError:  # a pause where the cycle does not end at standstill
+            continue
+        changes.append(
+            {
+                "quantity": limit.quantity,
+                "model": first.model,
+                "value": limit.value,
+                "unit": limit.unit,
+                "limiting_checks": list(limit.limiting_checks),
+                "reason_code": None if limit.reason is None else message_code(limit.reason),
+            }
+        )
+    return {"candidates": len(ranked.actuators), "checks": kinds, "changes": changes}
+
+
 def _candidates(
     actuators: Sequence[Actuator],
     app: Application,
     catalogue: CatalogueSnapshot,
     groups: _DriveOptionGroups,
-) -> list[JSON]:
+) -> tuple[list[JSON], JSON | None]:
     """Every actuator's candidate for ``app``, ranked (``core.selection.ranking_key``),
     by the flowchart that is the cheaper for their number (:data:`SCALAR_UP_TO`); the
     candidate's detail runs the scalar one, with the checks in words."""
@@ -391,7 +453,7 @@ def _candidates(
     for place, verdict in enumerate(ranked.verdicts[:DRIVE_OPTIONS_LISTED]):
         if verdict is not Verdict.UNSUITABLE:
             out[place]["drive_options"] = groups.groups(ranked.actuators[place], speed)
-    return out
+    return out, _binding(ranked, app)
 
 
 def size_selection(
@@ -403,7 +465,7 @@ def size_selection(
 ) -> SizedSelection:
     """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
     groups = _DriveOptionGroups(catalogue)
-    candidates = _candidates(actuators, app, catalogue, groups)
+    candidates, binding = _candidates(actuators, app, catalogue, groups)
     profile = app.profile
     request = body.model_dump(mode="json")
     bearing = output_bearing_note(body.output_load)
@@ -429,6 +491,7 @@ def size_selection(
         "check_rules": _check_rules(app.rules),
         "controllers": groups.refs(),
         "candidates": candidates,
+        "binding": binding,
     }
     encoded = dump_json(answer)
     return SizedSelection(
