@@ -10,7 +10,7 @@ import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, tra
 import { fieldRefusal, isNumberField, numberText, readField, showReading, showReadings } from "../../lib/numbers.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
-import { cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
+import { NARROW_CHART_PX, cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
 import {
   MECHANISMS,
   MECHANISM_KINDS,
@@ -21,6 +21,7 @@ import {
 } from "./mechanisms.js";
 import {
   drawRemainingRows,
+  renderBinding,
   fillDetail,
   renderDetail,
   renderLimits,
@@ -651,6 +652,7 @@ function renderResults() {
     return;
   }
   body.append(
+    renderBinding(sel, state.lang) ?? "",
     renderRanking(sel, chosenCandidate().model, state.filter, state.lang, rankingOptions(), { rows: "first" }),
     h("div", { id: "compare-slot" }),
     h("div", { id: "detail-slot" }),
@@ -853,7 +855,9 @@ async function drawCharts() {
     toImageButtonOptions: { filename: `${candidate.model}-${name}` },
   });
 
-  const cycle = cycleFigure(sel, candidate, lang);
+  // a phone's chart lists its legend one entry a line (figures.js)
+  const narrow = { narrow: diagramDiv.clientWidth > 0 && diagramDiv.clientWidth < NARROW_CHART_PX };
+  const cycle = cycleFigure(sel, candidate, lang, undefined, narrow);
   cycleDiv.replaceChildren();
   await Plotly.react(cycleDiv, cycle.data, cycle.layout, config("cycle"));
   cycleDiv.dataset.model = candidate.model;
@@ -866,7 +870,7 @@ async function drawCharts() {
   $("#diagram-caption").replaceChildren(
     appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),
   );
-  const diagram = diagramFigure(sel, candidate, actuator, lang);
+  const diagram = diagramFigure(sel, candidate, actuator, lang, narrow);
   diagramDiv.replaceChildren();
   await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
   diagramDiv.dataset.model = candidate.model;
@@ -874,7 +878,7 @@ async function drawCharts() {
   if (token !== drawToken) return;
   // the torque along each segment comes with the detail: the cycle is drawn again with it
   // (after the diagram, which the detail's catalogue data completes)
-  const withTorques = cycleFigure(sel, candidate, lang, detail);
+  const withTorques = cycleFigure(sel, candidate, lang, detail, narrow);
   await Plotly.react(cycleDiv, withTorques.data, withTorques.layout, config("cycle"));
   if (token !== drawToken) return;
   cycleDiv.dataset.torques = detail ? "detail" : "lean";
@@ -972,6 +976,19 @@ function acceptSelection(sel, preferredModel, marks = []) {
   announce(resultSentence(sel, state.chosen, state.lang));
 }
 
+/**
+ * After a submit, the results where the eye and the screen reader are: focus on their
+ * heading, scrolled to the top of the viewport (smoothly, unless reduced motion is asked for).
+ */
+function bringResultsIntoView() {
+  const heading = $("#results-heading");
+  if (!heading) return;
+  heading.setAttribute("tabindex", "-1");
+  heading.focus({ preventScroll: true });
+  const reduced = window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+  heading.scrollIntoView({ behavior: reduced ? "auto" : "smooth", block: "start" });
+}
+
 async function onSubmit(event) {
   event.preventDefault();
   if (state.busy) return;
@@ -990,6 +1007,7 @@ async function onSubmit(event) {
     const sel = await createSelection(body);
     setBusy(false);
     acceptSelection(sel);
+    bringResultsIntoView();
   } catch (error) {
     setBusy(false);
     if (error instanceof ApiError && error.fieldErrors.length && error.status === 422) {

@@ -31,7 +31,48 @@ function isNum(x) {
   return typeof x === "number" && Number.isFinite(x);
 }
 
-function baseLayout(lang) {
+/** A chart narrower than this (a phone) lists its legend one entry a line below the plot. */
+export const NARROW_CHART_PX = 560;
+
+/**
+ * The legend below the plot: side by side where there is room, else one entry a line, so
+ * that no entry is cut at a phone's width (issue 29 item 5).
+ */
+function legendBelow(narrow, y) {
+  return narrow
+    ? { orientation: "v", x: 0, xanchor: "left", y, yanchor: "top" }
+    : { orientation: "h", x: 0, xanchor: "left", y, yanchor: "top" };
+}
+
+/** Longest legend line (visible characters) on a narrow chart. */
+const NARROW_LEGEND_CHARS = 30;
+
+/**
+ * ``data`` with each trace's legend name broken into lines at spaces where the chart is
+ * narrow (plotly.js does not wrap a legend entry: a long one is cut at a phone's width).
+ */
+function legendNames(data, narrow) {
+  if (!narrow) return data;
+  return data.map((trace) => (typeof trace.name === "string" ? { ...trace, name: wrapName(trace.name) } : trace));
+}
+
+function wrapName(name) {
+  const visible = (text) => text.replace(/<[^>]*>/g, "").length;
+  const lines = [];
+  let line = "";
+  for (const word of name.split(" ")) {
+    if (line && visible(`${line} ${word}`) > NARROW_LEGEND_CHARS) {
+      lines.push(line);
+      line = word;
+    } else {
+      line = line ? `${line} ${word}` : word;
+    }
+  }
+  lines.push(line);
+  return lines.join("<br>");
+}
+
+function baseLayout(lang, narrow = false) {
   return {
     separators: plotlySeparators(lang),
     font: FONT,
@@ -39,7 +80,7 @@ function baseLayout(lang) {
     paper_bgcolor: "#fff",
     plot_bgcolor: "#fff",
     showlegend: true,
-    legend: { orientation: "h", x: 0, xanchor: "left", y: -0.2, yanchor: "top" },
+    legend: legendBelow(narrow, -0.2),
     hovermode: "closest",
     annotations: [],
     shapes: [],
@@ -108,7 +149,7 @@ function segmentTorqueLine(detail) {
  * T_3 of ``candidate`` for the t_1…t_p form, and for segments a note. ``detail`` null: it
  * failed.
  */
-export function cycleFigure(selection, candidate, lang, detail = undefined) {
+export function cycleFigure(selection, candidate, lang, detail = undefined, { narrow = false } = {}) {
   const t = (key) => translate(lang, key);
   const segments = answerSegments(selection);
   const trapezoid = isTrapezoid(selection);
@@ -139,7 +180,7 @@ export function cycleFigure(selection, candidate, lang, detail = undefined) {
     ];
   }
 
-  const layout = baseLayout(lang);
+  const layout = baseLayout(lang, narrow);
   layout.margin = { l: 64, r: 16, t: 24, b: 48 };
   layout.xaxis = axis(t("fig.time"), { anchor: "y2", range: [0, end], rangemode: "normal" });
   layout.yaxis = axis(t("fig.speed"), { domain: [0.58, 1], anchor: "x" });
@@ -259,7 +300,7 @@ export function cycleFigure(selection, candidate, lang, detail = undefined) {
       line: { color: "#bbb", width: 1, dash: "dot" },
     });
   }
-  return { data, layout };
+  return { data: legendNames(data, narrow), layout };
 }
 
 function sortedZone(points) {
@@ -310,7 +351,7 @@ function approximateZone(actuator, t) {
  * point (n_av, T_rms) and the peaks (n_2, T_1), (n_2, |T_3|). ``actuator`` may be
  * null when the catalogue record could not be read.
  */
-export function diagramFigure(selection, candidate, actuator, lang) {
+export function diagramFigure(selection, candidate, actuator, lang, { narrow = false } = {}) {
   const t = (key, params) => translate(lang, key, params);
   const nMax = actuator?.max_speed_rpm;
   const tMax = actuator?.max_torque_nm;
@@ -330,7 +371,7 @@ export function diagramFigure(selection, candidate, actuator, lang) {
     slope: approxSlope,
   } = approximateZone(actuator, t);
 
-  const layout = baseLayout(lang);
+  const layout = baseLayout(lang, narrow);
   layout.xaxis = axis(t("fig.speed"));
   layout.yaxis = axis(t("fig.torque"));
   const data = [];
@@ -480,7 +521,7 @@ export function diagramFigure(selection, candidate, actuator, lang) {
       ),
     );
   }
-  return { data, layout };
+  return { data: legendNames(data, narrow), layout };
 }
 
 /** A text alternative of the cycle chart, for the figure's caption. */

@@ -20,6 +20,7 @@ import { answerLanguage } from "../../lib/api.js";
 import { h, notice, sym } from "../../lib/dom.js";
 import { dateTime, num, plainSymbols, qty } from "../../lib/format.js";
 import { translate, translateReference, unitText } from "../../lib/i18n.js";
+import { appendSymbols } from "../../lib/symbols.js";
 
 export const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
 const STATUS_MARK = { pass: "✓", fail: "✗", warn: "!", no_data: "?" };
@@ -411,6 +412,52 @@ export function renderRanking(sel, chosenModel, filter, lang, options, { rows = 
       { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("table.caption") },
       table,
     ),
+  );
+}
+
+/**
+ * When nothing fits: what binds across the catalogue and what would change it, in words,
+ * from the answer's ``binding`` (counted and solved by the server; null when something
+ * fits, absent from answers stored before it existed). Null when there is nothing to say.
+ */
+export function renderBinding(sel, lang) {
+  const binding = sel.binding;
+  if (!binding || typeof binding !== "object" || !Array.isArray(binding.checks)) return null;
+  const t = (k, p) => translate(lang, k, p);
+  const units = Object.fromEntries((sel.check_rules ?? []).map((r) => [r.name, r.unit]));
+  const said = (text) => appendSymbols(h("li"), text);
+  const checks = binding.checks.map((k) => {
+    const unit = units[k.name] ?? "";
+    const params = {
+      check: checkLabel(k.name, lang),
+      failing: k.failing,
+      candidates: binding.candidates,
+      value: qty(k.value, unit, lang),
+      limit: qty(k.limit, unit, lang),
+      model: k.model,
+    };
+    const every = k.failing === binding.candidates;
+    if (typeof k.value !== "number" || typeof k.limit !== "number") return said(t("binding.no_value", params));
+    if (every && k.name === "max_speed") return said(t("binding.speed_every", params));
+    return said(t(every ? "binding.every" : "binding.some", params));
+  });
+  const changes = (Array.isArray(binding.changes) ? binding.changes : []).map((c) => {
+    if (typeof c.value === "number") {
+      return said(t(`binding.change.${c.quantity}`, { value: qty(c.value, c.unit, lang), model: c.model }));
+    }
+    if (c.reason_code === "limit.accel_no_ramp") return said(t("binding.nochange.accel_no_ramp"));
+    const names = (c.limiting_checks ?? []).map((name) => checkLabel(name, lang)).join("; ");
+    return said(t(`binding.nochange.${c.quantity}`, { checks: names }));
+  });
+  const model = binding.changes?.[0]?.model ?? sel.candidates?.[0]?.model ?? "–";
+  return h(
+    "section",
+    { class: "card binding", id: "binding", "aria-labelledby": "binding-heading" },
+    h("h3", { id: "binding-heading" }, t("binding.heading")),
+    h("p", {}, t("binding.intro", { candidates: binding.candidates })),
+    h("ul", { class: "binding-checks" }, ...checks),
+    h("p", {}, t("binding.changes", { model })),
+    h("ul", { class: "binding-changes" }, ...changes, said(t("binding.ratio"))),
   );
 }
 
@@ -887,10 +934,17 @@ export function renderLimits(view, lang) {
     const value =
       typeof limit.value === "number"
         ? valueCell(limit.value, limit.unit === "kgm²" ? "kgm²" : limit.unit, lang)
-        : t("limits.none");
-    const reason = by.length
+        : limit.reason_code === "limit.accel_no_ramp"
+          ? "–"
+          : t("limits.none");
+    const checks = by.length
       ? by.map((c) => `${checkLabel(c.name, lang)} (${translateReference(lang, c.reference)})`).join("; ")
       : t("limits.free");
+    // why there is no value, in the server's words (in the page's language)
+    const reason =
+      typeof limit.value !== "number" && typeof limit.reason === "string" && limit.reason
+        ? [by.length ? [checks, h("br")] : null, h("span", { class: "limit-reason" }, t("limits.reason", { reason: limit.reason }))]
+        : checks;
     return h(
       "tr",
       { "data-quantity": limit.quantity },
