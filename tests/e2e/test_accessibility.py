@@ -92,6 +92,22 @@ def test_the_engineers_page_in_every_state(axe_page: Page) -> None:
     assert violations(page) == [], "German"
 
 
+def test_nothing_fits_and_a_limit_without_a_value(axe_page: Page) -> None:
+    """The "why nothing fits" panel (issue 29 item 7) and a limits row with its reason."""
+    page = axe_page
+    page.goto("/")
+    fill_worked_example(page)
+    page.locator("#f-speed").fill("1000")  # above every n_max of the catalogue
+    status, body = post_selection(page)
+    assert status == 201
+    assert body["binding"] is not None
+    page.wait_for_selector("#binding")
+    page.wait_for_selector('#detail[data-detail="ready"]')
+    page.locator("#limits-button").click()
+    page.wait_for_selector("#limits-table .limit-reason")
+    assert violations(page) == [], "nothing fits, with the limits"
+
+
 def test_the_segment_editor_and_a_machine_axis(axe_page: Page) -> None:
     page = axe_page
     page.goto("/")

@@ -132,7 +132,7 @@ def limits_rows(page: Page) -> dict[str, Any]:
     page.wait_for_selector("#limits-table")
     rows = page.locator("#limits-table tbody tr")
     return {
-        rows.nth(i).get_attribute("data-quantity"): rows.nth(i).inner_text()
+        str(rows.nth(i).get_attribute("data-quantity")): rows.nth(i).inner_text()
         for i in range(rows.count())
     }
 
