@@ -78,17 +78,23 @@ def _error(type_: str, rule: str, kind: QuantityKind, **ctx: Any) -> PydanticCus
 MAX_QUANTITY_TEXT = 64
 """Longest text of a quantity [characters]: ``"1234.5678 kg*m^2"`` needs 16."""
 
-_NAME = r"(?:[^\W\d\u00b2\u00b3\u00b9\u2070-\u207f]|°)+"
-"""A unit name: letters (µ included) or °; no digits, no superscripts (pint reads those as
-exponents)."""
+_NAME_CHAR = r"(?:[^\W\d\u00b2\u00b3\u00b9\u2070-\u207f]|°)"
+"""One character of a unit name: a letter (µ included) or °; no digits, no superscripts
+(pint reads those as exponents)."""
 _EXPONENT = r"(?:(?:\^|\*\*)-?[0-9]|[²³])"
 """One exponent of one digit, ``^2``, ``**-1`` or ``²``, allowed right after a name only:
 ``m^9^9^9`` or ``(m^9)^9`` would make pint raise integers to powers without end."""
 _TEXT = re.compile(
     r"\s*(?P<number>[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)"
-    rf"\s*(?P<unit>(?:{_NAME}{_EXPONENT}?|[·/*() ])+?)\s*"
+    rf"\s*(?P<unit>(?:{_NAME_CHAR}{_EXPONENT}?|[·/*() ])+?)\s*"
 )
-"""A decimal number, then a unit expression of names, exponents and ``* · / ( )``."""
+"""A decimal number, then a unit expression of names, exponents and ``* · / ( )``.
+
+Each repetition takes one name character (perhaps with its exponent) or one separator:
+no quantifier nests in another, so a failed match backtracks over at most the ways to
+split the spaces, quadratic in the (64-character) text. A name as a repeated group of
+characters, ``(?:[a-z]+)+``, matched the same texts but tried every split of a run of
+letters: ``"1 aaaaaaaaaaaaaaaaaaaaaa!"`` took seconds, one letter more twice as long."""
 
 _ALIASES = ("@alias revolution = rev", "@alias pound = lbm")
 """Spellings engineers use that pint's default registry lacks (``rev/min``, ``lbm``)."""
