@@ -29,7 +29,7 @@ from typing import Any, Final
 
 from babel import Locale
 from babel.messages.pofile import read_po
-from babel.numbers import format_decimal
+from babel.numbers import format_decimal, format_scientific
 from werkzeug.datastructures import LanguageAccept
 from werkzeug.http import parse_accept_header
 
@@ -244,9 +244,22 @@ def all_templates() -> dict[str, str]:
 # --- rendering ------------------------------------------------------------------------
 
 
+LARGEST_PLAIN_NUMBER: Final = 1e15
+"""Numbers of this size and beyond are shown in scientific notation (``1E30``): written
+out, 1e30 is 31 digits, and Babel cannot write a number of more digits than the decimal
+context's 28 (it raised, and a message about a value of 1e30 kg became a 500)."""
+
+
 def _number(value: float | Decimal, language: str) -> str:
+    """``value`` as ``language`` writes it: ``0,0001`` in German, ``1.5E26`` when large.
+
+    >>> _number(0.0001, "de"), _number(1e30, "en"), _number(1.5e26, "de")
+    ('0,0001', '1E30', '1,5E26')
+    """
     if not math.isfinite(value):
         return repr(value)
+    if abs(value) >= LARGEST_PLAIN_NUMBER:
+        return str(format_scientific(value, locale=language, decimal_quantization=False))
     return str(
         format_decimal(value, locale=language, decimal_quantization=False, group_separator=False)
     )
