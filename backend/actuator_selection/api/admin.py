@@ -240,8 +240,14 @@ def catalogue_upload(upload: Annotated[Upload, Depends(raw_upload)]) -> Catalogu
         if upload.media_type == "application/json":
             try:
                 document = json.loads(text_of(upload.body, file="(body)"))
-            except ValueError:
-                document = None
+            # RecursionError: arrays or objects nested thousands deep (the catalogue's
+            # own depth is three); ValueError: not JSON, or an integer of over 4300 digits.
+            except (ValueError, RecursionError) as exc:
+                reason = "nested too deeply" if isinstance(exc, RecursionError) else str(exc)
+                problem = Problem(
+                    file="(body)", line=0, column=None, message=f"is not valid JSON ({reason})"
+                )
+                raise CatalogueFileError([problem]) from None
             if not isinstance(document, dict):
                 problem = Problem(
                     file="(body)", line=0, column=None, message="must be a JSON object"
