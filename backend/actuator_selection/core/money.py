@@ -71,6 +71,10 @@ def parse_amount(text: str, *, field: str = "amount") -> Decimal:
     Traceback (most recent call last):
     ...
     actuator_selection.core.errors.InvalidInputError: amount: must have at most 2 decimal places
+    >>> parse_amount("9" * 5000)
+    Traceback (most recent call last):
+    ...
+    actuator_selection.core.errors.InvalidInputError: amount: must be ≤ 999999999999.99
     """
     text = text.strip()
     if not _DECIMAL.fullmatch(text):
@@ -84,10 +88,12 @@ def check_amount(value: Decimal, *, field: str = "amount") -> Decimal:
         raise InvalidInputError(field, code="decimal_finite")
     if value < 0:
         raise InvalidInputError(field, code="amount_negative")
-    if value != value.quantize(CENT, rounding=ROUND_HALF_UP):
-        raise InvalidInputError(field, code="cents")
+    # The size first: quantizing a number of more than 28 digits ("9" × 5000 in a price
+    # file) raises decimal.InvalidOperation instead of answering.
     if value > MAX_AMOUNT:
         raise InvalidInputError(field, code="amount_max", params={"max": MAX_AMOUNT})
+    if value != value.quantize(CENT, rounding=ROUND_HALF_UP):
+        raise InvalidInputError(field, code="cents")
     return value.quantize(CENT)
 
 
