@@ -21,7 +21,10 @@ The CSV dialect, read and written:
   back exactly the stored text. Numeric columns are numbers, not text: ``-40``
   stays ``-40``. The JSON form carries text as it is.
 - **Size.** A cell longer than the ``csv`` module's limit (131,072 characters, far
-  beyond any column) is a problem naming file and line, not a crash.
+  beyond any column) is a problem naming file and line, not a crash. A row given as a
+  JSON object (the JSON import, the admin API's writes) obeys the same limit, counting
+  the quote mark its export will put before a formula start, so that whatever is
+  stored exports to files that import again.
 """
 
 from __future__ import annotations
@@ -133,6 +136,12 @@ class Record:
     values: dict[str, Any]
 
 
+MAX_CELL_CHARS = csv.field_size_limit()
+"""The most characters a cell may hold: the ``csv`` module's limit (131,072), which
+reading a file enforces."""
+CELL_TOO_LONG = f"has a cell longer than {MAX_CELL_CHARS} characters, the most a CSV cell may hold"
+
+
 def iso_date(text: str) -> date:
     """A calendar date written YYYY-MM-DD."""
     try:
@@ -196,6 +205,10 @@ def one_of(*choices: str) -> Callable[[str], str]:
 
 def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Problem | None]:
     text = raw.strip()
+    if len(neutralised(text) if column.text else text) > MAX_CELL_CHARS:
+        # A file's reader stops at the limit; a cell from JSON, or one that its export
+        # would lengthen by the quote mark, stops here.
+        return None, Problem(file=spec.file, line=line, column=column.name, message=CELL_TOO_LONG)
     if (rule := text_problem(text, line_breaks=column.free_text)) is not None:
         return None, Problem(file=spec.file, line=line, column=column.name, message=rule)
     if not text.isascii():
@@ -490,9 +503,8 @@ def _records(spec: CsvSpec, text: str, problems: list[Problem]) -> Iterator[tupl
         except StopIteration:
             return
         except csv.Error as exc:
-            limit = csv.field_size_limit()
             message = (
-                f"has a cell longer than {limit} characters, the most a CSV cell may hold"
+                CELL_TOO_LONG
                 if "field larger than field limit" in str(exc)
                 else f"is not valid CSV ({exc})"
             )
