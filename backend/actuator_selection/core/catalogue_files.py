@@ -14,6 +14,7 @@ further numbers, and ``source`` says where each row comes from.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from enum import StrEnum
 
@@ -23,11 +24,36 @@ from actuator_selection.core.compatibility import (
     FeedbackSystem,
     parse_support_level,
 )
-from actuator_selection.core.csvio import Column, CsvSpec, Rule, one_of, whole_number
+from actuator_selection.core.csvio import (
+    Column,
+    CsvSpec,
+    NamePattern,
+    Rule,
+    one_of,
+    whole_number,
+)
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.thermal import TemperatureSensor
 
 _P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
+
+MODEL_NAME = NamePattern(
+    re.compile(r"[A-Za-z0-9]+(?:[-._+][A-Za-z0-9]+)*"),
+    "must be a model name of ASCII letters and digits in groups joined by one of - . _ + "
+    "(e.g. FHA-25C-50-L)",
+)
+"""An actuator's model: it is the key of its row and a segment of its URL
+(``/actuators/{model}``). ASCII letters and digits only, so that no model has a twin that
+looks the same (a Cyrillic С or a zero-width joiner beside a Latin C) and none needs
+escaping or is lost in a URL (``/``, ``?``, ``#``, ``%``, ``..``); every seed model fits."""
+FAMILY_NAME = NamePattern(
+    re.compile(r"[A-Za-z0-9]+(?:[-._+/ ][A-Za-z0-9]+)*"),
+    "must be a family name of ASCII letters and digits in groups joined by one of - . _ + / "
+    "or a space (e.g. FHA-C mini, FFA/FPA)",
+)
+"""An actuator family's name, a key its actuators and Table 521.1's columns refer to: the
+rule of :data:`MODEL_NAME` with ``/`` and single spaces, as the seed's families have
+them (``FHA-C mini``, ``FFA/FPA``); a family is never a URL segment."""
 MILLI = 1e-3
 KILO = 1e3
 
@@ -35,7 +61,7 @@ FAMILIES = CsvSpec(
     file="families.csv",
     key=("name",),
     columns=(
-        Column(name="name", required=True, max_length=40),
+        Column(name="name", required=True, max_length=40, pattern=FAMILY_NAME),
         Column(name="description"),
         Column(name="temperature_sensors"),
         Column(name="warning_temperature_c", numeric=True),
@@ -52,8 +78,8 @@ ACTUATORS = CsvSpec(
     file="actuators.csv",
     key=("model",),
     columns=(
-        Column(name="model", required=True, max_length=60),
-        Column(name="family", required=True, max_length=40),
+        Column(name="model", required=True, max_length=60, pattern=MODEL_NAME),
+        Column(name="family", required=True, max_length=40, pattern=FAMILY_NAME),
         Column(name="gear_ratio", numeric=True, required=True, rule=_P),
         Column(name="max_torque_nm", numeric=True, rule=_P),
         Column(name="max_speed_rpm", numeric=True, rule=_P),
@@ -137,7 +163,7 @@ ZONE_POINTS = CsvSpec(
     file="zone_points.csv",
     key=("actuator_model", "speed_rpm"),
     columns=(
-        Column(name="actuator_model", required=True, max_length=60),
+        Column(name="actuator_model", required=True, max_length=60, pattern=MODEL_NAME),
         Column(name="speed_rpm", numeric=True, required=True, rule=_N),
         Column(name="torque_nm", numeric=True, required=True, rule=_N),
         Column(name="source", required=True),
@@ -192,7 +218,7 @@ SENSOR_FITTINGS = CsvSpec(
     file="temperature_sensors.csv",
     key=("family", "variant", "sensor"),
     columns=(
-        Column(name="family", required=True, max_length=40),
+        Column(name="family", required=True, max_length=40, pattern=FAMILY_NAME),
         Column(name="variant", max_length=40),
         Column(name="sensor", required=True, convert=one_of(*TemperatureSensor)),
         Column(name="designation", max_length=60),
@@ -229,7 +255,7 @@ INTERFACES = CsvSpec(
     file="actuator_interfaces.csv",
     key=("actuator_model",),
     columns=(
-        Column(name="actuator_model", required=True, max_length=60),
+        Column(name="actuator_model", required=True, max_length=60, pattern=MODEL_NAME),
         Column(name="dc_bus_classes", convert=options(BusClass)),
         Column(name="temperature_sensors", convert=options(TemperatureSensor)),
         Column(name="feedback_systems", convert=options(FeedbackSystem)),

@@ -32,6 +32,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from datetime import date
@@ -53,6 +54,14 @@ class Rule(Enum):
     NON_NEGATIVE = "a finite number ≥ 0"
 
 
+@dataclass(frozen=True, slots=True)
+class NamePattern:
+    """The characters a name cell may hold (a regular expression) and the rule in words."""
+
+    regex: re.Pattern[str]
+    rule: str
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Column:
     """One CSV column: its name (with unit), kind and rule, and where the value goes.
@@ -62,7 +71,8 @@ class Column:
     differs from the column name. ``magnitude`` bounds a number's size in the
     published unit: no catalogue value comes near 10⁶ (torques, speeds, voltages,
     ohms, seconds), so a larger one is a typo or garbage, not a part.
-    ``max_length`` bounds a text cell (the column's width in the database).
+    ``max_length`` bounds a text cell (the column's width in the database); ``pattern``
+    restricts the characters of a name that identifies a row (a model, a family).
     ``convert`` turns a non-empty text cell into its value (a date, a decimal
     amount, a choice, ...) and raises ``ValueError("must be ...")`` naming the
     rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`.
@@ -76,6 +86,7 @@ class Column:
     scale: float = 1.0
     target: str | None = None
     max_length: int | None = None
+    pattern: NamePattern | None = None
     convert: Callable[[str], Any] | None = None
 
     @property
@@ -238,6 +249,13 @@ def _cell(spec: CsvSpec, column: Column, raw: str, line: int) -> tuple[Any, Prob
                 line=line,
                 column=column.name,
                 message=f"must be at most {column.max_length} characters, got {len(text)}",
+            )
+        if column.pattern is not None and not column.pattern.regex.fullmatch(text):
+            return None, Problem(
+                file=spec.file,
+                line=line,
+                column=column.name,
+                message=f"{column.pattern.rule}, got {text!r}",
             )
         return text, None
     try:

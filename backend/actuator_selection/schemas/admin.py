@@ -46,6 +46,8 @@ def write_json_schema(
             kind = {"type": "string"}
             if column.max_length is not None:
                 kind["maxLength"] = column.max_length
+            if column.pattern is not None:
+                kind["pattern"] = f"^{column.pattern.regex.pattern}$"
         nullable = not column.required or column.name in optional
         properties[column.name] = (
             {"anyOf": [kind, {"type": "null"}], "description": described}
