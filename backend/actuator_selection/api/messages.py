@@ -40,6 +40,7 @@ from actuator_selection.core.messages import MESSAGES as DOMAIN_MESSAGES
 from actuator_selection.core.messages import N_, Text, listed
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
 from actuator_selection.schemas.quantities import QUANTITY_MESSAGES
+from actuator_selection.schemas.quotes import DECIMAL_TEXT_RULE
 from actuator_selection.schemas.selections import LOAD_TYPES
 from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS, USE_CASE_MESSAGES
 
@@ -180,6 +181,7 @@ PYDANTIC_MESSAGES: Final[Mapping[str, str]] = {
     "load_type": N_("type must be one of {expected}"),
     "mechanism_type": N_("type must be one of {expected}"),
     "cycle_form": N_("cycle must be the t_1…t_p pattern or a list of segments"),
+    "decimal_text": DECIMAL_TEXT_RULE,
 }
 """pydantic's error types (and the schemas' own) → template over their ``ctx``."""
 
@@ -258,7 +260,7 @@ def _number(value: float | Decimal, language: str) -> str:
     """
     if not math.isfinite(value):
         return repr(value)
-    if abs(value) >= LARGEST_PLAIN_NUMBER:
+    if abs(float(value)) >= LARGEST_PLAIN_NUMBER:
         return str(format_scientific(value, locale=language, decimal_quantization=False))
     return str(
         format_decimal(value, locale=language, decimal_quantization=False, group_separator=False)

@@ -45,8 +45,10 @@ ROUNDING_RULE = (
 )
 
 _CURRENCY = re.compile(r"[A-Z]{3}")
-_DECIMAL = re.compile(r"-?[0-9]+(\.[0-9]+)?")
-"""Plain decimal notation: no exponent, no NaN or infinity, no thousands separators."""
+PLAIN_DECIMAL = re.compile(r"-?[0-9]+(\.[0-9]+)?")
+"""Plain decimal notation of money and percentages: the ASCII digits 0–9 (``Decimal``
+itself reads any script's digits, "١٢" as 12), no exponent, no NaN or infinity, no
+thousands separators."""
 
 
 def to_cents(amount: Decimal) -> Decimal:
@@ -77,7 +79,7 @@ def parse_amount(text: str, *, field: str = "amount") -> Decimal:
     actuator_selection.core.errors.InvalidInputError: amount: must be ≤ 999999999999.99
     """
     text = text.strip()
-    if not _DECIMAL.fullmatch(text):
+    if not PLAIN_DECIMAL.fullmatch(text):
         raise InvalidInputError(field, code="decimal_format")
     return check_amount(Decimal(text), field=field)
 

@@ -24,12 +24,13 @@ from pydantic import (
     StringConstraints,
     model_validator,
 )
+from pydantic_core import PydanticCustomError
 
 from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.checks import margin_percent
 from actuator_selection.core.messages import N_
 from actuator_selection.core.messages import Text as Words
-from actuator_selection.core.money import MAX_QUANTITY, ROUNDING_RULE
+from actuator_selection.core.money import MAX_QUANTITY, PLAIN_DECIMAL, ROUNDING_RULE
 from actuator_selection.core.quote_status import (
     QuoteStatus,
     allowed_transitions,
@@ -39,17 +40,26 @@ from actuator_selection.core.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, Se
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 
+DECIMAL_TEXT_RULE = N_(
+    'must be a decimal number written with the digits 0–9 and perhaps a point, e.g. "7.5"'
+)
+"""The rule of a decimal given as text (:data:`~actuator_selection.core.money.PLAIN_DECIMAL`,
+error type ``decimal_text``)."""
+
 
 def _no_float(value: Any) -> Any:
     if isinstance(value, float):
         raise ValueError('give decimals as a string such as "7.5", not as a JSON number')
     if isinstance(value, bool):
         raise ValueError("must be a decimal number")
+    if isinstance(value, str) and not PLAIN_DECIMAL.fullmatch(value.strip()):
+        # Decimal() would read "١٢" (Arabic-Indic digits) or "１２" as 12, and "1e1" or "1_0"
+        raise PydanticCustomError("decimal_text", DECIMAL_TEXT_RULE)
     return value
 
 
 # Not strict (StrictModel): a decimal comes as a JSON string or integer; _no_float refuses
-# floats and booleans before the lax conversion.
+# floats, booleans and text other than plain decimals before the lax conversion.
 DecimalIn = Annotated[Decimal, Field(strict=False), BeforeValidator(_no_float)]
 
 MAX_VALIDITY_DAYS = 731
