@@ -75,6 +75,13 @@ bench: install
 	$(BIN)/python -m bench.page
 	$(BIN)/python -m bench.http
 
+## A longer fuzz run than the suite's (not part of `make test`): schemathesis gives every
+## operation FUZZ_MAX_EXAMPLES requests and walks the OpenAPI links in stateful chains of
+## FUZZ_MAX_STEPS calls (tests/fuzz), on SQLite and PostgreSQL; FUZZ_RANDOM=1 draws anew.
+.PHONY: fuzz
+fuzz: install
+	FUZZ_STATEFUL=1 FUZZ_MAX_EXAMPLES=$${FUZZ_MAX_EXAMPLES:-100} $(BIN)/python -m pytest -n auto tests/fuzz
+
 ## Re-resolve requirements.lock from pyproject.toml (needs the registry).
 lock: install
 	$(BIN)/python -m pip install --quiet uv
