@@ -244,9 +244,8 @@ def catalogue_upload(upload: Annotated[Upload, Depends(raw_upload)]) -> Catalogu
             # own depth is three); ValueError: not JSON, or an integer of over 4300 digits.
             except (ValueError, RecursionError) as exc:
                 reason = "nested too deeply" if isinstance(exc, RecursionError) else str(exc)
-                problem = Problem(
-                    file="(body)", line=0, column=None, message=f"is not valid JSON ({reason})"
-                )
+                message = f"must be a JSON object, and is not valid JSON ({reason})"
+                problem = Problem(file="(body)", line=0, column=None, message=message)
                 raise CatalogueFileError([problem]) from None
             if not isinstance(document, dict):
                 problem = Problem(
