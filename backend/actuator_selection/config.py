@@ -34,6 +34,10 @@ class Settings(BaseSettings):
     port: int = 8000
     workers: int = Field(default=1, ge=1, le=64)
     """Server processes of ``serve``; several share the load of one host's cores."""
+    public_base_url: str | None = Field(default=None, pattern=r"^https?://[^\s?#]+$")
+    """The service's address as its clients reach it (``https://actuators.example.com``,
+    behind a proxy perhaps with a path), given as the OpenAPI document's ``servers``;
+    unset: ``/``, the host the document was read from."""
     require_api_key: bool = False
     """When true, every endpoint needs an API key; otherwise catalogue reads and
     selections are open and only admin and sales operations need one."""

@@ -110,6 +110,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         generate_unique_id_function=openapi.operation_id,
         # 415 for a JSON body sent as another media type or in UTF-16/32 (api/media_types.py)
         dependencies=[Depends(media_types.require_json_body)],
+        servers=openapi.servers(settings.public_base_url),
     )
     app.state.engine = engine
     app.state.session_factory = make_session_factory(engine)

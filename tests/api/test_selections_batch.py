@@ -183,7 +183,9 @@ def test_openapi_documents_the_batch_contract(batch_client: TestClient) -> None:
     assert "201" in operation["responses"]
     request = spec["components"]["schemas"]["BatchSelectionRequest"]
     assert request["properties"]["cases"]["maxItems"] == MAX_BATCH_CASES
-    assert request["properties"]["top"]["default"] == 3
+    # optional, its default in words (a `default` would read as "always sent", api/openapi.py)
+    assert "top" not in request["required"]
+    assert request["properties"]["top"]["description"].endswith("omitted: 3")
 
 
 def test_worked_example_in_a_batch(batch_client: TestClient) -> None:
@@ -304,6 +306,8 @@ def test_unknown_models_are_named_by_case_and_position(batch_client: TestClient)
     response = post(batch_client, cases)
     assert locs(response) == [["body", "cases", 1, "models", 1], ["body", "cases", 2, "models", 0]]
     assert "NOPE-9" in response.json()["detail"][0]["msg"]
+    rules = {(e["type"], e["code"]) for e in response.json()["detail"]}
+    assert rules == {("unknown_actuator", "unknown_actuator")}
 
 
 @pytest.mark.parametrize(

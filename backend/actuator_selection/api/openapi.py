@@ -10,11 +10,18 @@ FastAPI's document is post-processed once (:func:`install`):
   where a role is needed, 404 where the path names a resource, 409 where a write can
   conflict, 400 and 413 where a body is taken, 415 where a JSON body is taken (a body
   in another media type or encoding, ``api/media_types.py``) or the decorator says so;
+- a ``201 Created`` documents its ``Location`` header (each endpoint sets it);
 - the ``HTTPBearer`` security scheme (``Authorization: Bearer <key>``, ``api/auth.py``):
   required on operations that need a role, optional (``[{}, {"HTTPBearer": []}]``)
   where anonymous callers are let in;
 - request bodies carry an example: the first of their model's ``examples``, or
-  :data:`BODY_EXAMPLES` for the bodies the routers describe by hand.
+  :data:`BODY_EXAMPLES` for the bodies the routers describe by hand;
+- the schemas a request body uses say what may be left out by ``required`` alone
+  (:func:`_defaults_in_words`): a field's ``default`` moves into its description,
+  because generators read a ``default`` as "always present" (openapi-typescript's
+  default ``defaultNonNullable`` types such a field as required, and a client could
+  not send the README's example without ``high_dynamics``);
+- ``servers``: the API's base URL (:func:`servers`: ``/`` unless ``PUBLIC_BASE_URL`` names one).
 
 Which operation reads a key or needs a role is read from its dependencies
 (:func:`~actuator_selection.api.auth.get_principal`, the ``require_role`` marker),
@@ -25,6 +32,7 @@ from __future__ import annotations
 
 import copy
 import json
+import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
@@ -45,6 +53,7 @@ ERROR_SCHEMA = ErrorOut.__name__
 SECURITY_SCHEME = "HTTPBearer"
 _ERROR_REF = {"$ref": f"#/components/schemas/{ERROR_SCHEMA}"}
 _FASTAPI_ERROR_SCHEMAS = ("HTTPValidationError", "ValidationError")
+_REF = re.compile(r'"#/components/schemas/([^"]+)"')
 
 ERROR_DESCRIPTIONS: dict[int, str] = {
     400: "the body could not be parsed as JSON (malformed, or nested too deeply)",
@@ -165,6 +174,14 @@ def catalogue_example() -> dict[str, list[dict[str, Any]]]:
     }
 
 
+def servers(public_base_url: str | None) -> list[dict[str, str]]:
+    """The document's ``servers``: the configured base URL, else ``/`` (relative: the host
+    the document was read from). Paths start with ``/api/v1`` below it."""
+    if public_base_url:
+        return [{"url": public_base_url.rstrip("/"), "description": "PUBLIC_BASE_URL"}]
+    return [{"url": "/", "description": "the host this document was read from"}]
+
+
 def operation_id(route: APIRoute) -> str:
     """The operationId of ``route``: its endpoint's name (``create_selection``).
 
@@ -256,6 +273,15 @@ def _document_errors(path: str, op: dict[str, Any], info: _Operation) -> None:
     op["responses"] = dict(sorted(responses.items()))
 
 
+def _document_created(op: dict[str, Any]) -> None:
+    created = op.get("responses", {}).get("201")
+    if created is not None:
+        created.setdefault("headers", {})["Location"] = {
+            "description": "the path of the resource created (of a batch: its first case's)",
+            "schema": {"type": "string"},
+        }
+
+
 def _document_security(op: dict[str, Any], info: _Operation) -> None:
     if not info.reads_key:
         return
@@ -289,6 +315,43 @@ def _document_examples(op: dict[str, Any], components: dict[str, Any]) -> None:
             body["example"] = copy.deepcopy(example)
 
 
+def _refs(node: Any) -> set[str]:
+    return set(_REF.findall(json.dumps(node)))
+
+
+def _reachable(names: set[str], schemas: dict[str, Any]) -> set[str]:
+    seen: set[str] = set()
+    todo = list(names)
+    while todo:
+        name = todo.pop()
+        if name not in seen and name in schemas:
+            seen.add(name)
+            todo.extend(_refs(schemas[name]))
+    return seen
+
+
+def _defaults_in_words(document: dict[str, Any], schemas: dict[str, Any]) -> None:
+    """Every schema a request body reaches keeps its fields' defaults in words only.
+
+    pydantic's validation-mode schema is right (a defaulted field is not ``required``),
+    but a ``default`` beside it is read by generators as a value the answer always
+    carries. Schemas also echoed in answers (a cycle's segments) lose it too: their
+    fields are then typed optional, which is true of the request and safe for the answer.
+    """
+    bodies = [
+        op.get("requestBody", {})
+        for item in document.get("paths", {}).values()
+        for op in item.values()
+        if isinstance(op, dict)
+    ]
+    for name in sorted(_reachable(_refs(bodies), schemas)):
+        for field in schemas[name].get("properties", {}).values():
+            if isinstance(field, dict) and "default" in field:
+                omitted = json.dumps(field.pop("default"), ensure_ascii=False)
+                said = field.get("description", "").rstrip(". ")
+                field["description"] = f"{said}; omitted: {omitted}".lstrip("; ")
+
+
 def _unused(document: dict[str, Any], name: str) -> bool:
     return f'"#/components/schemas/{name}"' not in json.dumps(document)
 
@@ -317,11 +380,13 @@ def complete(document: dict[str, Any], app: FastAPI) -> dict[str, Any]:
                 raise RuntimeError(f"operationId {name!r} of {method} {path} is {seen[name]}'s too")
             seen[name] = f"{method} {path}"
             _document_errors(path, op, info)
+            _document_created(op)
             _document_security(op, info)
             _document_examples(op, schemas)
     for name in _FASTAPI_ERROR_SCHEMAS:
         if name in schemas and _unused(document, name):
             del schemas[name]
+    _defaults_in_words(document, schemas)
     return document
 
 

@@ -1,0 +1,87 @@
+"""TypeScript types generated from the OpenAPI document (openapi-typescript with its
+default settings, pinned in package.json) take the documentation's request examples as
+they are: the README's worked example and docs/api.md's, read from their code blocks and
+typed as the generated request body of the operation they are sent to, compiled with
+``tsc --strict``. ``tests/api/test_generated_client.py`` does the same for Python.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from actuator_selection.config import REPO_ROOT, Settings
+from actuator_selection.main import create_app
+
+pytestmark = pytest.mark.node
+
+BIN = REPO_ROOT / "node_modules" / ".bin"
+DOCUMENTS = (REPO_ROOT / "README.md", REPO_ROOT / "docs" / "api.md")
+_BLOCK = re.compile(r"^```sh\n(.*?)^```", re.DOTALL | re.MULTILINE)
+_POST = re.compile(r"curl\b.*?-X POST https?://[^/\s]+(/\S+?)['\s\\]")
+_BODY = re.compile(r"-d '(.*?)'", re.DOTALL)
+
+
+def request_examples(path: Path) -> list[tuple[str, Any]]:
+    """(API path, JSON body) of every ``curl -X POST … -d '…'`` in ``path``'s sh blocks."""
+    found: list[tuple[str, Any]] = []
+    for block in _BLOCK.findall(path.read_text(encoding="utf-8")):
+        target, body = _POST.search(block), _BODY.search(block)
+        if target and body:
+            found.append((target.group(1), json.loads(body.group(1))))
+    return found
+
+
+def test_the_readme_has_its_worked_example() -> None:
+    examples = request_examples(REPO_ROOT / "README.md")
+    assert [path for path, _ in examples][:1] == ["/api/v1/selections"]
+    assert examples[0][1]["models"] == ["FHA-25C-50-L"]
+
+
+def _compile(directory: Path) -> subprocess.CompletedProcess[str]:
+    command = [str(BIN / "tsc"), "--strict", "--noEmit", "--target", "es2022"]
+    command += ["--module", "esnext", "--moduleResolution", "bundler", "examples.ts"]
+    return subprocess.run(
+        command, cwd=directory, capture_output=True, text=True, check=False, timeout=300
+    )
+
+
+def test_generated_types_take_the_documented_requests(tmp_path: Path) -> None:
+    app = create_app(Settings(database_url="sqlite://"))
+    try:
+        (tmp_path / "openapi.json").write_text(json.dumps(app.openapi()), encoding="utf-8")
+    finally:
+        app.state.engine.dispose()
+    command = [str(BIN / "openapi-typescript"), "openapi.json", "--output", "api.ts"]
+    generated = subprocess.run(
+        command, cwd=tmp_path, capture_output=True, text=True, check=False, timeout=300
+    )
+    assert generated.returncode == 0, generated.stdout + generated.stderr
+
+    examples = [e for document in DOCUMENTS for e in request_examples(document)]
+    assert len(examples) >= 2
+    lines = [
+        'import type { paths } from "./api";',
+        "type Body<P extends keyof paths> = paths[P] extends {",
+        '  post: { requestBody: { content: { "application/json": infer B } } };',
+        "}",
+        "  ? B",
+        "  : never;",
+    ]
+    for i, (path, body) in enumerate(examples):
+        lines.append(f"export const example{i}: Body<{json.dumps(path)}> = {json.dumps(body)};")
+    (tmp_path / "examples.ts").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    compiled = _compile(tmp_path)
+    assert compiled.returncode == 0, compiled.stdout + compiled.stderr
+
+    # The check has teeth: a field the schema lacks is refused.
+    lines.append('export const wrong: Body<"/api/v1/selections"> = { load: 1, cycle: 2 };')
+    (tmp_path / "examples.ts").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    refused = _compile(tmp_path)
+    assert refused.returncode != 0
+    assert "examples.ts" in refused.stdout
