@@ -262,3 +262,62 @@ def test_document_is_built_once_and_completed_once() -> None:
         assert op["security"] == OPTIONAL
     finally:
         app.state.engine.dispose()
+
+
+def test_the_document_names_its_server() -> None:
+    # Relative by default: a generated client calls the host it read the document from.
+    assert [s["url"] for s in DOCUMENT["servers"]] == ["/"]
+    app = create_app(
+        Settings(database_url="sqlite://", public_base_url="https://actuators.example.com/x/")
+    )
+    try:
+        assert [s["url"] for s in app.openapi()["servers"]] == ["https://actuators.example.com/x"]
+    finally:
+        app.state.engine.dispose()
+
+
+def test_request_schemas_leave_out_only_what_the_server_requires() -> None:
+    selection = DOCUMENT["components"]["schemas"]["SelectionRequest"]
+    assert selection["required"] == ["load", "cycle"]
+    high_dynamics = selection["properties"]["high_dynamics"]
+    assert "default" not in high_dynamics
+    assert high_dynamics["description"].endswith("omitted: true")
+
+
+CREATED = sorted(op["operationId"] for _, _, op in OPERATIONS if "201" in op["responses"])
+
+
+def test_the_created_answers_are_known() -> None:
+    assert CREATED == [
+        "create_actuator",
+        "create_batch",
+        "create_controller",
+        "create_quote",
+        "create_selection",
+    ]
+
+
+@pytest.mark.parametrize("operation_id", CREATED)
+def test_every_201_names_what_it_created(api: SalesApi, operation_id: str) -> None:
+    """Each 201's ``Location`` is documented, and a GET of it answers what was created."""
+    path, method, op = by_id(operation_id)
+    assert "Location" in op["responses"]["201"]["headers"]
+    body = example(operation_id)
+    role = {"create_actuator": "admin", "create_controller": "admin"}.get(operation_id)
+    if operation_id == "create_batch":
+        body = {**body, "store": True}
+    if operation_id == "create_quote":
+        role = "sales"
+        api.clock.current = datetime.fromisoformat(body["valid_until"]).replace(tzinfo=UTC)
+        body = {**body, "selection_id": api.selection()["id"]}
+    created = api.client.request(method, _path(path), json=body, headers=api.headers(role))
+    assert created.status_code == 201, created.text[:1000]
+    location = created.headers["Location"]
+    assert location.startswith("/api/v1/")
+    found = api.client.get(location, headers=api.headers(role))
+    assert found.status_code == 200, found.text[:1000]
+    answer = created.json()
+    if operation_id == "create_batch":
+        assert location == f"/api/v1/selections/{answer['results'][0]['id']}"
+    else:
+        assert found.json() == answer

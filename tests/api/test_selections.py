@@ -336,6 +336,8 @@ def test_unknown_models_are_named(client: TestClient) -> None:
     detail = response.json()["detail"]
     assert [e["loc"] for e in detail] == [["body", "models", 1], ["body", "models", 2]]
     assert "NOPE-9" in detail[0]["msg"]
+    # the rule's name for programs is one: type and code agree, as for 404 /actuators/{model}
+    assert {(e["type"], e["code"]) for e in detail} == {("unknown_actuator", "unknown_actuator")}
 
 
 @pytest.mark.parametrize(

@@ -198,7 +198,9 @@ def test_columns_of_other_lengths_are_named(client: TestClient) -> None:
 
 def test_unknown_models_are_named(client: TestClient) -> None:
     body = {**COLUMNS_EXAMPLE, "models": ["FHA-25C-50-L", "NOPE-1"]}
-    assert _errors(client.post(URL, json=body)) == [(["body", "models", 1], "unknown_model")]
+    response = client.post(URL, json=body)
+    assert _errors(response) == [(["body", "models", 1], "unknown_actuator")]
+    assert response.json()["detail"][0]["code"] == "unknown_actuator"
 
 
 def test_limits(client: TestClient) -> None:

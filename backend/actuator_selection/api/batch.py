@@ -27,10 +27,13 @@ from actuator_selection.api.errors import (
     RequestFieldError,
     domain_entry,
     language_of,
-    service_error,
 )
 from actuator_selection.api.messages import localizer
-from actuator_selection.api.selections import refuse_unknown_models
+from actuator_selection.api.selections import (
+    refuse_unknown_models,
+    selection_location,
+    unknown_models,
+)
 from actuator_selection.core.errors import DomainError
 from actuator_selection.core.selection import Application
 from actuator_selection.schemas.batch import BatchSelectionOut, BatchSelectionRequest
@@ -99,13 +102,7 @@ def _applications(
     errors: list[dict[str, Any]] = []
     for i, case in enumerate(body.cases):
         if case.models is not None:
-            errors += [
-                service_error(
-                    ["body", "cases", i, "models", j], "unknown_model", "unknown_actuator", model=m
-                )
-                for j, m in enumerate(case.models)
-                if m not in known
-            ]
+            errors += unknown_models(["body", "cases", i, "models"], case.models, known)
         try:
             apps.append(case.to_core())
         except DomainError as exc:
@@ -119,7 +116,8 @@ def _applications(
     response_model=BatchSelectionOut,
     responses={
         201: {
-            "description": "with `store: true`: the cases were stored",
+            "description": "with `store: true`: the cases were stored; `Location` names the "
+            "first case's selection, each result's `id` its own",
             "model": BatchSelectionOut,
         },
         422: {
@@ -148,11 +146,14 @@ def create_batch(body: BatchSelectionRequest, request: Request, session: Session
         writer=partial(write_transaction, request),
         localize=localizer(language),
     )
+    headers = {"Content-Language": language, "Vary": "Accept-Language"}
+    if answer.stored:  # the first stored case's selection; each result names its own `id`
+        headers["Location"] = selection_location(request, answer.stored[0])
     return StreamingResponse(
-        answer,
+        answer.chunks,
         media_type="application/json",
         status_code=201 if body.store else 200,
-        headers={"Content-Language": language, "Vary": "Accept-Language"},
+        headers=headers,
     )
 
 

@@ -57,16 +57,27 @@ def _localize(request: Request, response: Response) -> Callable[[str], str]:
     return localizer(language)
 
 
+UNKNOWN_ACTUATOR = "unknown_actuator"
+"""The rule a requested model breaks that the catalogue lacks: its ``type`` and ``code``."""
+
+
+def unknown_models(
+    loc: list[str | int], models: list[str], known: set[str]
+) -> list[dict[str, Any]]:
+    """An error entry for each of ``models`` not ``known``, at ``[*loc, index]``."""
+    return [
+        service_error([*loc, i], UNKNOWN_ACTUATOR, UNKNOWN_ACTUATOR, model=m)
+        for i, m in enumerate(models)
+        if m not in known
+    ]
+
+
 def refuse_unknown_models(models: list[str] | None, catalogue: CatalogueSnapshot) -> None:
     """422 naming each of ``models`` that ``catalogue`` lacks."""
     if models is None:
         return
     known = {a.model for a in catalogue.actuators_of(models)}
-    unknown = [
-        service_error(["body", "models", i], "unknown_model", "unknown_actuator", model=m)
-        for i, m in enumerate(models)
-        if m not in known
-    ]
+    unknown = unknown_models(["body", "models"], models, known)
     if unknown:
         raise RequestFieldError(unknown)
 
@@ -93,19 +104,33 @@ def create_selection(body: SelectionRequest, request: Request) -> Response:
     )
     # The answer is JSON already (see services.selections); returning a model would
     # have FastAPI validate and encode it again.
-    return _json(request, sized.answer, sized.answer_gzip, status_code=201)
+    location = selection_location(request, sized.id)
+    return _json(request, sized.answer, sized.answer_gzip, status_code=201, location=location)
+
+
+def selection_location(request: Request, selection_id: str) -> str:
+    """The path of a stored selection (``GET /selections/{id}``): a 201's ``Location``."""
+    return str(request.app.url_path_for("get_selection", selection_id=selection_id))
 
 
 def _accepts_gzip(request: Request) -> bool:
     return "gzip" in request.headers.get("accept-encoding", "")
 
 
-def _json(request: Request, plain: bytes, compressed: bytes, *, status_code: int = 200) -> Response:
+def _json(
+    request: Request,
+    plain: bytes,
+    compressed: bytes,
+    *,
+    status_code: int = 200,
+    location: str | None = None,
+) -> Response:
     """The answer as the client takes it: the stored gzip bytes, or the JSON."""
+    headers = {"Location": location} if location is not None else {}
     if _accepts_gzip(request):
-        headers = {"Content-Encoding": "gzip", "Vary": "Accept-Encoding"}
+        headers |= {"Content-Encoding": "gzip", "Vary": "Accept-Encoding"}
         return Response(compressed, status_code, headers, media_type="application/json")
-    return Response(plain, status_code, media_type="application/json")
+    return Response(plain, status_code, headers, media_type="application/json")
 
 
 @router.post(

@@ -291,7 +291,11 @@ class QuoteOut(ResponseModel):
     subtotal: Decimal
     discount_percent: Decimal
     discount_amount: Decimal
-    total: Decimal = Field(description="the net total: subtotal − discount (= net_total)")
+    total: Decimal = Field(
+        description="deprecated, read `net_total` (the same value) or `gross_total`: the net "
+        "total, subtotal − discount; left out of the answer in the next API version",
+        json_schema_extra={"deprecated": True},
+    )
     net_total: Decimal = Field(description="subtotal − discount, before VAT")
     vat_percent: Decimal | None = Field(
         description="VAT rate [%]; null on quotes made before VAT was stated"

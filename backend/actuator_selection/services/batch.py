@@ -12,7 +12,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator, Sequence
 from datetime import UTC, datetime
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 import pydantic_core
@@ -98,6 +98,13 @@ def check_limits(body: BatchSelectionRequest) -> None:
         raise UseCaseError(errors)
 
 
+class BatchAnswer(NamedTuple):
+    """A batch's answer: its JSON, slice by slice, and the ids of the cases it stored."""
+
+    chunks: Iterator[bytes]
+    stored: list[str]
+
+
 def size_batch(
     body: BatchSelectionRequest,
     apps: list[Application],
@@ -105,7 +112,7 @@ def size_batch(
     catalogue: CatalogueSnapshot,
     writer: Writer,
     localize: Localize,
-) -> Iterator[bytes]:
+) -> BatchAnswer:
     """The answer to ``body`` (within :func:`check_limits`, which the caller checks
     before it turns the cases into ``apps``) as JSON, slice by slice. It takes the cases
     out of ``body`` (``body.cases`` is empty afterwards): only ``apps`` stay in memory.
@@ -135,7 +142,8 @@ def size_batch(
         + b',"results":['
     )
     first = next(chunks, b"")
-    return itertools.chain((head + first,), chunks, (b"]}",))
+    body_chunks = itertools.chain((head + first,), chunks, (b"]}",))
+    return BatchAnswer(body_chunks, [i for i in ids if i is not None])
 
 
 class _Drives:

@@ -506,7 +506,7 @@ function showCreated(quote) {
       h(
         "p",
         {},
-        ...withNodes("sales.created", { number }, { total: money(quote.total, quote.currency) }),
+        ...withNodes("sales.created", { number }, { total: money(quote.net_total, quote.currency) }),
         flags.length ? ` (${flags.join("; ")})` : "",
         ". ",
       ),
@@ -619,7 +619,7 @@ function row(quote) {
     h("td", { class: "mono" }, quote.number),
     h("td", {}, quote.customer.name, reference ? h("div", { class: "hint" }, reference) : null),
     h("td", {}, quote.actuator_model, " ", ...flags),
-    h("td", { class: "num" }, money(quote.total, quote.currency)),
+    h("td", { class: "num" }, money(quote.net_total, quote.currency)),
     h(
       "td",
       {},
