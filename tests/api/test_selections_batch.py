@@ -17,6 +17,7 @@ from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_BATCH_CASES,
     MAX_CANDIDATES_WITH_CONTROLLERS,
+    MAX_CASE_ID_LENGTH,
     MAX_STORED_CASES,
     BatchCandidateOut,
     BatchSelectionOut,
@@ -372,3 +373,52 @@ def test_extreme_but_allowed_values_stay_finite(batch_client: TestClient) -> Non
     assert response.status_code == 200, response.text
     (first, _) = response.json()["results"]
     assert all(c["verdict"] == "unsuitable" for c in first["candidates"])
+
+
+# --- the client's own case ids ---------------------------------------------------------------
+
+
+def test_each_result_echoes_its_case_id(batch_client: TestClient) -> None:
+    cases = [
+        {**WORKED_EXAMPLE, "case_id": "order 4711/10"},
+        WORKED_EXAMPLE,
+        {**WORKED_EXAMPLE, "case_id": "order 4711/10"},  # the client's ids, not checked unique
+        {**WORKED_EXAMPLE, "case_id": "ä" * MAX_CASE_ID_LENGTH},
+    ]
+    response = post(batch_client, cases, top=1)
+    assert response.status_code == 200, response.text
+    results = response.json()["results"]
+    assert [r["case_id"] for r in results] == [c.get("case_id") for c in cases]
+    assert len({json.dumps(r["candidates"]) for r in results}) == 1  # the id changes nothing
+
+
+def test_a_stored_case_keeps_its_selection_request_alone(
+    batch_client: TestClient, connection: Connection
+) -> None:
+    response = post(batch_client, [{**WORKED_EXAMPLE, "case_id": "A-1"}], store=True, top=1)
+    assert response.status_code == 201, response.text
+    (result,) = response.json()["results"]
+    assert result["case_id"] == "A-1"
+    model = result["candidates"][0]["model"]
+    # The detail is computed again from the stored request, which a selection must accept.
+    detail = batch_client.get(f"{API_PREFIX}/selections/{result['id']}/candidates/{model}")
+    assert detail.status_code == 200, detail.text
+    where = SelectionRow.id == result["id"]
+    stored = connection.execute(select(SelectionRow.request).where(where)).scalar_one()
+    assert stored["cycle"] == WORKED_EXAMPLE["cycle"]
+    assert "case_id" not in stored
+
+
+@pytest.mark.parametrize(
+    ("case_id", "code"),
+    [
+        ("", "string_too_short"),
+        ("x" * (MAX_CASE_ID_LENGTH + 1), "string_too_long"),
+        (17, "string_type"),
+        ("line\nbreak", "value_error"),
+    ],
+)
+def test_a_bad_case_id_is_named(batch_client: TestClient, case_id: Any, code: str) -> None:
+    response = post(batch_client, [WORKED_EXAMPLE, {**WORKED_EXAMPLE, "case_id": case_id}])
+    assert locs(response) == [["body", "cases", 1, "case_id"]]
+    assert response.json()["detail"][0]["code"] == code

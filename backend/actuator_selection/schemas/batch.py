@@ -45,6 +45,22 @@ the drive options of every actuator, as POST /selections stores it (measured ~1.
 JSON and ~0.14 s a case on the starter catalogue), all written in one transaction."""
 
 
+MAX_CASE_ID_LENGTH = 100
+"""Characters of a case's ``case_id``: room for an ERP's order and position numbers."""
+
+
+class BatchCaseIn(SelectionRequest):
+    """A load case of a batch: a selection request, and the client's own name for it."""
+
+    case_id: str | None = Field(
+        default=None,
+        min_length=1,
+        max_length=MAX_CASE_ID_LENGTH,
+        description="the client's own id of the case (an order position, say), echoed as "
+        "its result's `case_id`; not stored with a selection",
+    )
+
+
 class BatchSelectionRequest(StrictModel):
     """Many load cases sized against the catalogue in one request."""
 
@@ -78,7 +94,7 @@ class BatchSelectionRequest(StrictModel):
         }
     )
 
-    cases: list[SelectionRequest] = Field(
+    cases: list[BatchCaseIn] = Field(
         min_length=1,
         max_length=MAX_BATCH_CASES,
         description=f"load cases, each exactly as for POST /selections; at most {MAX_BATCH_CASES}",
@@ -145,6 +161,7 @@ class BatchResultOut(ResponseModel):
     """One load case: its cycle figures and its best candidates, ranked."""
 
     id: str | None = Field(description="the stored selection (store: true), else null")
+    case_id: str | None = Field(description="the case's `case_id` as sent, else null")
     load: ResolvedLoad
     cycle_time_s: float = Field(description="t_0 = t_1 + t_2 + t_3 + t_p [s]")
     mean_speed_rpm: float = Field(description="n_av (Eq. 514.3) [rpm]")
@@ -233,12 +250,14 @@ def controllers_summary(excluded: int, note: str, localize: Localize = english) 
 def result_body(
     *,
     id: str | None,
+    case_id: str | None,
     selection: Selection,
     candidates: list[dict[str, Any]],
 ) -> dict[str, Any]:
     """One entry of ``results`` (:class:`BatchResultOut`) as a JSON-ready dict."""
     return {
         "id": id,
+        "case_id": case_id,
         "load": resolved_load(selection.profile),
         "cycle_time_s": selection.cycle_time_s,
         "mean_speed_rpm": selection.mean_speed_rpm,

@@ -128,11 +128,18 @@ def size_batch(
     if body.store:
         ids = _store(body, apps, catalogue, writer)
     models = [case.models for case in body.cases]
+    case_ids = [case.case_id for case in body.cases]
     # The cases are in ``apps`` now; their request models (36 MB for 20,000 cases) are let
     # go before the answer streams, which keeps the peak memory of a large batch down.
     body.cases.clear()
     chunks = _result_chunks(
-        body, actuators, apps, models, ids, _Drives(context, localize), localize
+        body,
+        actuators,
+        apps,
+        models,
+        list(zip(ids, case_ids, strict=True)),
+        _Drives(context, localize),
+        localize,
     )
     head = (
         b'{"catalogue_version":'
@@ -262,7 +269,7 @@ def _result_chunks(
     actuators: list[Actuator],
     apps: list[Application],
     models: list[list[str] | None],
-    ids: list[str | None],
+    ids: list[tuple[str | None, str | None]],
     drives: _Drives,
     localize: Localize,
 ) -> Iterator[bytes]:
@@ -278,13 +285,14 @@ def _result_chunks(
             dump_json(
                 result_body(
                     id=id_,
+                    case_id=case_id,
                     selection=selection,
                     candidates=_candidates(
                         selection, selection.profile.peak_speed_rpm, body, drives, localize
                     ),
                 )
             )
-            for id_, selection in zip(ids[start:end], selections, strict=True)
+            for (id_, case_id), selection in zip(ids[start:end], selections, strict=True)
         ]
         yield (b"," if start else b"") + b",".join(results)
 

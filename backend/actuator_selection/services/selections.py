@@ -467,7 +467,8 @@ def size_selection(
     groups = _DriveOptionGroups(catalogue)
     candidates, binding = _candidates(actuators, app, catalogue, groups)
     profile = app.profile
-    request = body.model_dump(mode="json")
+    # The selection request's fields alone (a batch case's ``case_id`` is the batch's).
+    request = body.model_dump(mode="json", include=set(SelectionRequest.model_fields))
     bearing = output_bearing_note(body.output_load)
     answer = {
         "id": str(uuid.uuid4()),
