@@ -321,3 +321,16 @@ def test_every_201_names_what_it_created(api: SalesApi, operation_id: str) -> No
         assert location == f"/api/v1/selections/{answer['results'][0]['id']}"
     else:
         assert found.json() == answer
+
+
+def test_a_quotes_total_is_named_net_and_the_old_name_deprecated(api: SalesApi) -> None:
+    fields = DOCUMENT["components"]["schemas"]["QuoteOut"]["properties"]
+    assert fields["total"]["deprecated"] is True
+    assert "net_total" in fields["total"]["description"]
+    assert not any(f.get("deprecated") for name, f in fields.items() if name != "total")
+    selection = api.selection()
+    body = {**example("create_quote"), "selection_id": selection["id"]}
+    api.clock.current = datetime.fromisoformat(body["valid_until"]).replace(tzinfo=UTC)
+    quote = api.post("/api/v1/quotes", json=body).json()
+    assert quote["total"] == quote["net_total"]
+    assert quote["gross_total"] is not None
