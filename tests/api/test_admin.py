@@ -159,7 +159,7 @@ def test_retire_keeps_the_row_and_bring_back(api: SalesApi) -> None:
 
 def test_retired_actuators_leave_listings_and_selections(api: SalesApi) -> None:
     assert admin(api, "delete", "/api/v1/actuators/CHA-25A-50").status_code == 204
-    listed = {a["model"] for a in api.get("/api/v1/actuators", role=None).json()}
+    listed = {a["model"] for a in api.get("/api/v1/actuators", role=None).json()["actuators"]}
     assert "CHA-25A-50" not in listed
     assert api.get("/api/v1/actuators/CHA-25A-50", role=None).status_code == 404
     whole = api.selection()
@@ -286,7 +286,7 @@ def test_export_is_the_seed_format_and_imports_unchanged(api: SalesApi) -> None:
         assert text.splitlines()[0] == seed.splitlines()[0]
         assert _rows(text) == _rows(seed), name
     seed_rows = sum(1 for _ in csv.DictReader(io.StringIO(files["actuators.csv"])))
-    assert seed_rows == len(api.get("/api/v1/actuators", role=None).json())
+    assert seed_rows == len(api.get("/api/v1/actuators", role=None).json()["actuators"])
     before = version(api)
     response = import_(api, zipped(files), "application/zip")
     assert response.status_code == 200, response.text

@@ -137,7 +137,7 @@ def test_every_new_value_names_its_document(client: TestClient) -> None:
         "FHA-C": ("Harmonic Drive LLC, FHA-C series manual", "§1-4-2"),
         "FHA-C mini": ("Harmonic Drive LLC, FHA-C mini series manual", "p. 13"),
     }
-    rows = client.get("/api/v1/actuators").json()
+    rows = client.get("/api/v1/actuators").json()["actuators"]
     loaded = [r for r in rows if any(r[f] is not None for f in NEW_VALUES)]
     assert {r["family"] for r in loaded} == set(documents)
     for row in loaded:
@@ -154,7 +154,7 @@ def test_every_new_value_names_its_document(client: TestClient) -> None:
 
 def test_cha_rated_output_speed_is_marked_derived(client: TestClient) -> None:
     """Rated output speed = rated motor speed n_N / i, and the row says so."""
-    cha = client.get("/api/v1/actuators", params={"family": "CHA"}).json()
+    cha = client.get("/api/v1/actuators", params={"family": "CHA"}).json()["actuators"]
     assert cha
     for row in cha:
         assert row["rated_speed_rpm"] is not None, row["model"]

@@ -179,7 +179,7 @@ def test_candidate_detail_404s(client: TestClient) -> None:
 def test_whole_catalogue_ranked(client: TestClient) -> None:
     body = post(client, with_changes("models", None)).json()
     candidates = body["candidates"]
-    assert len(candidates) == len(client.get("/api/v1/actuators").json())
+    assert len(candidates) == len(client.get("/api/v1/actuators").json()["actuators"])
     order = {"suitable": 0, "unconfirmed": 1, "unsuitable": 2}
     ranks = [order[c["verdict"]] for c in candidates]
     assert ranks == sorted(ranks)

@@ -37,7 +37,7 @@ def batch_client(client: TestClient) -> TestClient:
 
 
 def catalogue_models(client: TestClient) -> list[str]:
-    return [a["model"] for a in client.get(f"{API_PREFIX}/actuators").json()]
+    return [a["model"] for a in client.get(f"{API_PREFIX}/actuators").json()["actuators"]]
 
 
 def random_cases(n: int, models: list[str], seed: int) -> list[dict[str, Any]]:

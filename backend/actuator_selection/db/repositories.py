@@ -35,6 +35,13 @@ class ActuatorFilter:
     max_inertia_kgm2: float | None = None
     min_max_speed_rpm: float | None = None
     models: Sequence[str] | None = None
+    max_max_torque_nm: float | None = None
+    min_continuous_torque_nm: float | None = None
+    gear_ratio: float | None = None
+    after_model: str | None = None
+    """Only models after this one (by name): the next page of a list."""
+    limit: int | None = None
+    """At most this many (the first by model name)."""
 
 
 def _to_record(row: ActuatorRow) -> ActuatorRecord:
@@ -127,6 +134,16 @@ class CatalogueRepository:
             stmt = stmt.where(ActuatorRow.max_speed_rpm >= query.min_max_speed_rpm)
         if query.models is not None:
             stmt = stmt.where(ActuatorRow.model.in_(list(query.models)))
+        if query.max_max_torque_nm is not None:
+            stmt = stmt.where(ActuatorRow.max_torque_nm <= query.max_max_torque_nm)
+        if query.min_continuous_torque_nm is not None:
+            stmt = stmt.where(ActuatorRow.continuous_torque_nm >= query.min_continuous_torque_nm)
+        if query.gear_ratio is not None:
+            stmt = stmt.where(ActuatorRow.gear_ratio == query.gear_ratio)
+        if query.after_model is not None:
+            stmt = stmt.where(ActuatorRow.model > query.after_model)
+        if query.limit is not None:
+            stmt = stmt.limit(query.limit)
         return [_to_record(row) for row in self._session.scalars(stmt)]
 
     def actuator(self, model: str) -> ActuatorRecord | None:

@@ -164,6 +164,15 @@ class ActuatorOut(ResponseModel):
         )
 
 
+class ActuatorPageOut(ResponseModel):
+    """A page of catalogue actuators, ordered by model."""
+
+    actuators: list[ActuatorOut]
+    next_cursor: str | None = Field(
+        description="give as `cursor` for the next page; null: this is the last page"
+    )
+
+
 class FamilyOut(ResponseModel):
     """A product family with its temperature sensor (Table 518.1) and limits (Table 519.2)."""
 

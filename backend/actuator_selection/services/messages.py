@@ -47,6 +47,10 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     "controller_exists": N_(
         "controller row {row} exists (retired ones too); PUT /controllers/{row} replaces it"
     ),
+    # Paged lists (api/actuators.py)
+    "invalid_cursor": N_(
+        "not a cursor this list answered (next_cursor): ask for the first page without one"
+    ),
     # Stored selections (services/reports.py, services/quotes.py)
     "unknown_selection": N_("no stored selection '{selection_id}'"),
     # Quotes (services/quotes.py)
