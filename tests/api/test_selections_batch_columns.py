@@ -268,3 +268,31 @@ def test_openapi_documents_the_columns_contract(client: TestClient) -> None:
     answer = operation["responses"]["200"]["content"]["application/json"]["schema"]["$ref"]
     assert answer.endswith("/BatchColumnsOut")
     assert "422" in operation["responses"]
+
+
+def test_case_ids_come_back_as_a_column(client: TestClient) -> None:
+    ids = ["order 4711/10", "order 4711/20"]
+    response = client.post(URL, json={**COLUMNS_EXAMPLE, "case_id": ids})
+    assert response.status_code == 200, response.text
+    cases = response.json()["cases"]
+    assert cases["case_id"] == ids
+    without = client.post(URL, json=COLUMNS_EXAMPLE).json()["cases"]
+    assert without["case_id"] is None
+    assert {k: v for k, v in cases.items() if k != "case_id"} == {
+        k: v for k, v in without.items() if k != "case_id"
+    }
+
+
+@pytest.mark.parametrize(
+    ("case_id", "loc", "type_"),
+    [
+        (["one"], ["body", "case_id"], "length_mismatch"),
+        (["one", ""], ["body", "case_id", 1], "string_too_short"),
+        (["one", "x" * 101], ["body", "case_id", 1], "string_too_long"),
+    ],
+)
+def test_a_bad_case_id_column_is_named(
+    client: TestClient, case_id: list[str], loc: list[Any], type_: str
+) -> None:
+    response = client.post(URL, json={**COLUMNS_EXAMPLE, "case_id": case_id})
+    assert _errors(response) == [(loc, type_)]

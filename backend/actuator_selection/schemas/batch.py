@@ -11,7 +11,7 @@ candidate and check would cost more than the engineering of the whole batch.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any
 
 from pydantic import ConfigDict, Field, field_validator
 
@@ -49,13 +49,15 @@ MAX_CASE_ID_LENGTH = 100
 """Characters of a case's ``case_id``: room for an ERP's order and position numbers."""
 
 
+CaseId = Annotated[str, Field(min_length=1, max_length=MAX_CASE_ID_LENGTH)]
+"""The client's own id of a load case (one line of text)."""
+
+
 class BatchCaseIn(SelectionRequest):
     """A load case of a batch: a selection request, and the client's own name for it."""
 
-    case_id: str | None = Field(
+    case_id: CaseId | None = Field(
         default=None,
-        min_length=1,
-        max_length=MAX_CASE_ID_LENGTH,
         description="the client's own id of the case (an order position, say), echoed as "
         "its result's `case_id`; not stored with a selection",
     )

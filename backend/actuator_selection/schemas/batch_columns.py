@@ -17,7 +17,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import ConfigDict, Field
 
-from actuator_selection.schemas.batch import MAX_BATCH_CASES, MAX_TOP
+from actuator_selection.schemas.batch import MAX_BATCH_CASES, MAX_TOP, CaseId
 from actuator_selection.schemas.common import (
     MAX_INERTIA_KGM2,
     MAX_SPEED_RPM,
@@ -99,11 +99,18 @@ class BatchColumnsRequest(StrictModel):
     include_checks: bool = Field(
         default=True, description="false leaves `checks` out (null): verdicts and torques only"
     )
+    case_id: list[CaseId] | None = Field(
+        default=None,
+        max_length=MAX_BATCH_CASES,
+        description="the client's own id of each case (an order position, say), as long as "
+        "`speed_rpm`; answered as `cases.case_id`",
+    )
 
 
 class CaseColumns(ResponseModel):
     """Each case's cycle figures, in the order of the cases sent."""
 
+    case_id: list[str] | None = Field(description="the `case_id` column as sent, else null")
     cycle_time_s: list[float] = Field(description="t_0 = t_1 + t_2 + t_3 + t_p [s]")
     mean_speed_rpm: list[float] = Field(description="n_av (Eq. 514.3) [rpm]")
     duty_cycle_percent: list[float] = Field(description="ED (Eq. 514.4) [%]")

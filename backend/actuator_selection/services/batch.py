@@ -307,6 +307,8 @@ def check_columns(body: BatchColumnsRequest) -> None:
     lengths = {name: len(getattr(body, name)) for name in _COLUMNS}
     if isinstance(body.high_dynamics, list):
         lengths["high_dynamics"] = len(body.high_dynamics)
+    if body.case_id is not None:
+        lengths["case_id"] = len(body.case_id)
     errors = [
         entry(["body", name], "length_mismatch", "length_mismatch", cases=n, length=length)
         for name, length in lengths.items()
@@ -351,6 +353,7 @@ def size_columns(
         "catalogue_version": catalogue.version,
         "ranking": RANKING_RULE,
         "cases": {
+            "case_id": body.case_id,
             "cycle_time_s": table.cycle_time_s,
             "mean_speed_rpm": table.mean_speed_rpm,
             "duty_cycle_percent": table.duty_cycle_percent,
