@@ -38,9 +38,9 @@ def request_examples(path: Path) -> list[tuple[str, Any]]:
 
 
 def test_the_readme_has_its_worked_example() -> None:
+    """The examples are found: the README's worked example is a selection request."""
     examples = request_examples(REPO_ROOT / "README.md")
-    assert [path for path, _ in examples][:1] == ["/api/v1/selections"]
-    assert examples[0][1]["models"] == ["FHA-25C-50-L"]
+    assert any(path == "/api/v1/selections" and "load" in body for path, body in examples)
 
 
 def _compile(directory: Path) -> subprocess.CompletedProcess[str]:
