@@ -43,7 +43,9 @@ def test_nothing_fits_says_the_speed_binds_against_the_largest_n_max(
     assert binding["candidates"] == len(candidates)
     speed = next(k for k in binding["checks"] if k["name"] == "max_speed")
     # every candidate fails the speed: n_2 against the largest n_max of the catalogue
-    n_max = {a["model"]: a["max_speed_rpm"] for a in client.get("/api/v1/actuators").json()}
+    n_max = {
+        a["model"]: a["max_speed_rpm"] for a in client.get("/api/v1/actuators").json()["actuators"]
+    }
     assert speed["failing"] == len(candidates)
     assert speed["value"] == answer["load"]["speed_rpm"] == 1800
     assert speed["limit"] == max(n_max[c["model"]] for c in candidates)
