@@ -198,7 +198,9 @@ def test_zone_is_set_used_and_removed(api: SalesApi) -> None:
     candidate = api.selection(models=["FHA-25C-50-L"])["candidates"][0]
     checks = {c["name"]: c for c in candidate["checks"]}
     assert checks["continuous_duty"]["status"] == "pass"
-    assert candidate["verdict"] == "suitable"
+    # still unconfirmed: the chapter gives no winding constants for the drive's voltage
+    assert checks["drive_voltage"]["status"] == "no_data"
+    assert candidate["verdict"] == "unconfirmed"
     assert admin(api, "delete", "/api/v1/actuators/FHA-25C-50-L/zone").status_code == 204
     assert api.get("/api/v1/actuators/FHA-25C-50-L", role=None).json()[
         "continuous_duty_zone"

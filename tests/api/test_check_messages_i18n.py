@@ -130,7 +130,11 @@ def test_the_worked_example_in_german_and_english(client: TestClient, selection_
     for check in de_checks:
         _assert_german(check["message"])
     reasons = german.json()["reasons"]
-    assert reasons == [de["continuous_duty"]["message"], de["continuous_speed"]["message"]]
+    assert reasons == [
+        de["continuous_duty"]["message"],
+        de["continuous_speed"]["message"],
+        de["drive_voltage"]["message"],
+    ]
     assert "Dauerbetriebsbereich oder Dauerdrehmoment" in reasons[0]
     assert "Dauerbetriebsbereich oder zulässige Dauer- bzw. Nenndrehzahl" in reasons[1]
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import pytest
@@ -115,8 +116,10 @@ def test_selection_candidates_carry_controllers_and_say_what_is_missing(
         assert group["voltage"]["status"] == "no_data"
     cha = details["CHA-25A-50"]
     first = cha["controllers"][0]
-    # Eq. 521.2 at n_2 = 40 rpm: 2000 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 88.8 V.
-    assert first["voltage"]["value"] == pytest.approx(88.8)
+    # Eq. 521.2 at n_2 = 40 rpm: 2000 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 88.8 V, with
+    # ω·L·I = 2π·6·2000/60 s⁻¹ × 6.0 mH × 4.0 A in quadrature.
+    inductive = 2 * math.pi * 6 * 2000 / 60 * 6.0e-3 * 4.0
+    assert first["voltage"]["value"] == pytest.approx(math.hypot(88.8, inductive))
     assert first["voltage"]["status"] == "pass"
     assert cha["controllers_excluded"] + len(cha["controllers"]) == 28
 

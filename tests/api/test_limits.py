@@ -47,11 +47,14 @@ def test_the_shortest_pause_of_the_worked_example_on_fha_25c_50(client: TestClie
     assert by_rms < pause["value"] < by_rms * 1.005
     assert [c["name"] for c in pause["limiting_checks"]] == ["thermal_peak"]
     assert pause["limiting_checks"][0]["reference"]
-    assert pause["verdict"] == "suitable"
+    # the FHA-C catalogue gives no winding constants for the drive's voltage (K_E in V_rms)
+    assert pause["verdict"] == "unconfirmed"
     # the flowchart itself: just inside every check passes, just beyond the limiting one fails
     inside = body | {"cycle": body["cycle"] | {"pause_s": pause["value"] * (1 + 1e-6)}}
     beyond = body | {"cycle": body["cycle"] | {"pause_s": pause["value"] * (1 - 1e-6)}}
-    assert set(checks_at(client, inside, "FHA-25C-50").values()) == {"pass"}
+    inside_checks = checks_at(client, inside, "FHA-25C-50")
+    assert inside_checks.pop("drive_voltage") == "no_data"
+    assert set(inside_checks.values()) == {"pass"}
     assert checks_at(client, beyond, "FHA-25C-50")["thermal_peak"] == "fail"
     # a winding slow against the cycle (τ_th = 1 day): T_rms decides, to first principles
     slow = limits(client, body | {"model": "FHA-25C-50", "thermal_time_constant_s": 86_400})[

@@ -18,6 +18,7 @@ from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.main import GC_THRESHOLDS, tune_gc
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
+from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.selections import SCALAR_UP_TO
 
 WORKED_EXAMPLE: dict[str, Any] = {
@@ -93,12 +94,15 @@ def test_worked_example_over_http(client: TestClient) -> None:
         "margin_percent": pytest.approx((90 - 40) / 90 * 100),
         "utilisation": 40 / 90,
     }
+    # No continuous data, and no winding constants for the drive's voltage (K_E in V_rms).
     assert detail["reasons"] == [
         full["continuous_duty"]["message"],
         full["continuous_speed"]["message"],
+        full["drive_voltage"]["message"],
     ]
     assert "continuous-duty zone or continuous torque" in full["continuous_duty"]["message"]
     assert "allowable continuous or rated speed" in full["continuous_speed"]["message"]
+    assert full["drive_voltage"]["status"] == "no_data"
     assert detail["actuator"] == client.get("/api/v1/actuators/FHA-25C-50-L").json()
 
 
@@ -408,7 +412,10 @@ def test_answer_equals_the_scalar_flowchart_check_by_check(
 ) -> None:
     """The answer is computed by the vectorised flowchart, each candidate's detail by the
     scalar one: the same order, verdicts, torques and checks, compared with ==."""
-    actuators = [r.actuator for r in CatalogueRepository(Session(connection)).actuators()]
+    # The catalogue as a selection reads it: each actuator with its listed controllers'
+    # best DC bus (the drive_voltage check's limit).
+    actuators = list(CatalogueSnapshot.read(Session(connection), 0).actuators)
+    assert len(actuators) == len(CatalogueRepository(Session(connection)).actuators())
     rng = random.Random(3)
     for _ in range(4):
         body = random_case(rng)

@@ -17,18 +17,23 @@ def tool(client: TestClient, name: str, body: dict[str, Any]) -> Any:
 
 
 def test_controller_voltage_cha_25a_50_from_catalogue(client: TestClient) -> None:
-    """5600 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 207.2 V + 14.8 V = 222.0 V."""
+    """5600 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 207.2 V + 14.8 V = 222.0 V as printed;
+    ω·L·I = 2π·6·5600/60 s⁻¹ × 6.0 mH × 4.0 A = 84.4 V in quadrature: 237.5 V."""
     body = tool(client, "controller-voltage", {"model": "CHA-25A-50", "output_speed_rpm": 112})
     assert body.status_code == 200
     out = body.json()
-    assert out["voltage_v"] == pytest.approx(222.0)
+    inductive = 2 * math.pi * 6 * 5600 / 60 * 6.0e-3 * 4.0
+    assert out["voltage_v"] == pytest.approx(math.hypot(222.0, inductive))
+    assert out["printed_v"] == pytest.approx(222.0)
+    assert out["inductive_v"] == pytest.approx(inductive)
     assert out["back_emf_v"] == pytest.approx(207.2)
     assert out["resistive_v"] == pytest.approx(14.8)
     assert out["motor_speed_rpm"] == pytest.approx(-5600)  # the output turns the other way
     buses = {b["bus_class"]: b for b in out["bus_classes"]}
     # Space-vector modulation: U_LL,rms = U_DC / √2.
     assert buses["320vdc"]["available_voltage_v"] == pytest.approx(320 / math.sqrt(2))
-    assert buses["320vdc"]["sufficient"] is True  # 226.3 V ≥ 222.0 V
+    assert buses["320vdc"]["sufficient"] is False  # 226.3 V < 237.5 V (as printed: 222.0 V)
+    assert buses["560vdc"]["sufficient"] is True
     assert buses["24vdc"]["sufficient"] is False
 
 
@@ -39,11 +44,16 @@ def test_controller_voltage_explicit_constants(client: TestClient) -> None:
         "voltage_constant_v_per_krpm": 50,
         "max_current_a": 2,
         "resistance_ohm": 10,
+        "inductance_mh": 5,
+        "pole_pairs": 4,
     }
     out = tool(client, "controller-voltage", body).json()
-    assert out["voltage_v"] == pytest.approx(6000 * 50 / 1000 + 2 * 10)
+    inductive = 2 * math.pi * 4 * 6000 / 60 * 5e-3 * 2
+    assert out["voltage_v"] == pytest.approx(math.hypot(6000 * 50 / 1000 + 2 * 10, inductive))
     body["output_speed_rpm"] = 0  # standstill: only the resistive drop
     assert tool(client, "controller-voltage", body).json()["voltage_v"] == pytest.approx(20)
+    body |= {"output_speed_rpm": 60, "inductance_mh": 0}  # L = 0: Eq. 521.2 as printed
+    assert tool(client, "controller-voltage", body).json()["voltage_v"] == pytest.approx(320)
 
 
 def test_controller_voltage_says_no_data_instead_of_guessing(client: TestClient) -> None:

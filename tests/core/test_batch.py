@@ -162,6 +162,13 @@ def random_actuator(rng: random.Random, k: int) -> Actuator:
         zone=random_zone(rng) if continuous_kind == "zone" else None,
         continuous_speed_rpm=maybe(rng.uniform(5, 300), missing=0.4),
         rated_speed_rpm=maybe(rng.uniform(5, 300), missing=0.4),
+        # The winding's constants and the best listed controller's bus (drive_voltage).
+        motor_voltage_constant_v_per_krpm=maybe(rng.uniform(1, 25), missing=0.05),
+        max_current_a=maybe(rng.uniform(1, 20), missing=0.05),
+        resistance_line_ohm=maybe(rng.uniform(0.3, 6), missing=0.05),
+        inductance_line_mh=maybe(rng.uniform(0.3, 12), missing=0.05),
+        pole_pairs=maybe(rng.choice([5.0, 6.0]), missing=0.05),
+        dc_bus_voltage_v=maybe(rng.choice([24.0, 320.0, 560.0, 560.0]), missing=0.05),
     )
 
 
@@ -384,8 +391,16 @@ def test_edge_cases_named_in_the_issue() -> None:
         FHA,
         dataclasses.replace(FHA, model="NO-JA", inertia_kgm2=None),
         dataclasses.replace(FHA, model="ZONE", zone=zone),
-        dataclasses.replace(FHA, model="T0", stall_torque_nm=36, rated_speed_rpm=70),
-        dataclasses.replace(FHA, model="TC", continuous_torque_nm=40, continuous_speed_rpm=35),
+        dataclasses.replace(
+            FHA, model="T0", stall_torque_nm=36, rated_speed_rpm=70, **worked_example.DRIVEN
+        ),
+        dataclasses.replace(
+            FHA,
+            model="TC",
+            continuous_torque_nm=40,
+            continuous_speed_rpm=35,
+            **worked_example.DRIVEN,
+        ),
         dataclasses.replace(
             FHA,
             model="TC-NO-NMAX",
@@ -397,7 +412,9 @@ def test_edge_cases_named_in_the_issue() -> None:
             FHA, model="NO-TMAX", max_torque_nm=None, stall_torque_nm=36, rated_speed_rpm=70
         ),
         # ties T0 on T_max and J_A
-        dataclasses.replace(FHA, model="TIE-A", stall_torque_nm=36, rated_speed_rpm=70),
+        dataclasses.replace(
+            FHA, model="TIE-A", stall_torque_nm=36, rated_speed_rpm=70, **worked_example.DRIVEN
+        ),
         dataclasses.replace(FHA, model="T0-NO-SPEED", stall_torque_nm=36),
         Actuator(model="BARE", family="F", gear_ratio=50),
     ]
@@ -533,7 +550,12 @@ def test_equal_keys_keep_catalogue_order_like_a_stable_sort() -> None:
     """Two entries of one model (equal ranking keys): select() keeps their input order."""
     twins = [
         dataclasses.replace(
-            FHA, model="TWIN", gear_ratio=ratio, stall_torque_nm=36, rated_speed_rpm=70
+            FHA,
+            model="TWIN",
+            gear_ratio=ratio,
+            stall_torque_nm=36,
+            rated_speed_rpm=70,
+            **worked_example.DRIVEN,
         )
         for ratio in (50.0, 100.0, 30.0)
     ]

@@ -36,7 +36,8 @@ def zone(*points: tuple[float, float]) -> ContinuousDutyZone:
 
 
 def test_the_table_holds_the_chapters_five_checks_in_flowchart_order() -> None:
-    """The chapter's five, then whether T_rms stands for the cycle's length."""
+    """The chapter's five, then whether T_rms stands for the cycle's length, then whether
+    a listed controller delivers the voltage (issue 28, item 1)."""
     assert [(r.name, r.reference, r.unit) for r in RULES] == [
         ("max_speed", "Table 515.1", "rpm"),
         ("inertia_ratio", "Table 515.1", "kgm²"),
@@ -45,6 +46,7 @@ def test_the_table_holds_the_chapters_five_checks_in_flowchart_order() -> None:
         ("continuous_duty", "Fig. 517.1; Eq. 522.2, 522.3", "Nm"),
         ("thermal_peak", "Fig. 520.1 (model); Eq. 514.2", "Nm"),
         ("continuous_speed", "Eq. 514.3; Fig. 520.1 (model)", "rpm"),
+        ("drive_voltage", "Eq. 521.2 with ωL·I in quadrature", "V"),
     ]
     assert tuple(r.name for r in RULES) == CHECK_NAMES
 
@@ -564,5 +566,8 @@ def test_every_branch_writes_the_same_message(scenario: str) -> None:
             EXAMPLE,
         ),
     }[scenario]
-    got = tuple((k.status.value, k.message, k.approximate) for k in evaluate(actuator, app).checks)
+    *flowchart, drive = evaluate(actuator, app).checks
+    got = tuple((k.status.value, k.message, k.approximate) for k in flowchart)
     assert got == (*MESSAGES[scenario], HEATING[scenario], SPEED[scenario])
+    # None of these gives the winding's constants: the drive's voltage is not confirmed.
+    assert (drive.name, drive.status.value) == ("drive_voltage", "no_data")

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from actuator_selection.core.actuators import Actuator
@@ -26,7 +28,7 @@ BUSES = (
     DcBusClass(bus_class=BusClass.V320, nominal_voltage_v=320),
     DcBusClass(bus_class=BusClass.V560, nominal_voltage_v=560),
 )
-# CHA-25A-50 as in the starter catalogue (n_max, K_E, I_max, R line-to-line).
+# CHA-25A-50 as in the starter catalogue (n_max, K_E, I_max, R and L line-to-line, p).
 CHA = Actuator(
     model="CHA-25A-50",
     family="CHA",
@@ -35,6 +37,8 @@ CHA = Actuator(
     motor_voltage_constant_v_per_krpm=37,
     max_current_a=4.0,
     resistance_line_ohm=3.7,
+    inductance_line_mh=6.0,
+    pole_pairs=6,
 )
 CHA_INTERFACE = ActuatorInterface(
     family=ProductFamily.CHA_CHM,
@@ -103,12 +107,14 @@ def test_controllers_sharing_the_same_bus_classes_share_one_check() -> None:
     assert by_row[2] is by_row[6]  # 320 V
     assert by_row[3] is by_row[5]  # both: the 560 V bus is the better one
     assert by_row[1] == by_row[3]
-    # Eq. 521.2 at n_2 = 40 rpm: 2000 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 88.8 V, against
+    # Eq. 521.2 at n_2 = 40 rpm: 2000 rpm × 37 V/1000 rpm + 4.0 A × 3.7 Ω = 88.8 V, with
+    # ω·L·I = 2π·6·2000/60 s⁻¹ × 6.0 mH × 4.0 A = 30.16 V in quadrature, against
     # 560/√2 = 396.0 V and 320/√2 = 226.3 V (space vector modulation).
-    assert by_row[1].value == by_row[2].value == pytest.approx(88.8)
+    inductive = 2 * math.pi * 6 * 2000 / 60 * 6.0e-3 * 4.0
+    assert by_row[1].value == by_row[2].value == pytest.approx(math.hypot(88.8, inductive))
     assert by_row[1].limit == pytest.approx(395.98, abs=0.01)
     assert by_row[2].limit == pytest.approx(226.27, abs=0.01)
-    assert by_row[1].reference == "Eq. 521.2 (560vdc bus)"
+    assert by_row[1].reference == "Eq. 521.2 with ωL·I in quadrature (560vdc bus)"
     assert by_row[2].status is Status.PASS
 
 

@@ -32,12 +32,15 @@ from actuator_selection.core.errors import InvalidInputError, MissingDataError, 
 SEED = Path(__file__).parents[2] / "seed_data"
 
 # CHA-25A-50 (CHA catalogue): n_max 112 rpm, i 50, k_EM 37 V/1000 rpm, I_max 4.0 A,
-# R 3.7 Ω line-to-line; k_Tout 26.0 Nm/A, I_NLS 0.19 A, K_INL 6 and 2 ·10⁻³ A/rpm at 30/80 °C.
+# R 3.7 Ω, L 6.0 mH line-to-line, p = 6; k_Tout 26.0 Nm/A, I_NLS 0.19 A, K_INL 6 and
+# 2 ·10⁻³ A/rpm at 30/80 °C.
 CHA_25A_50 = {
     "gear_ratio": 50.0,
     "motor_voltage_constant_v_per_krpm": 37.0,
     "max_current_a": 4.0,
     "resistance_line_ohm": 3.7,
+    "inductance_line_h": 6.0e-3,
+    "pole_pairs": 6.0,
 }
 
 
@@ -103,24 +106,58 @@ def test_gear_ratio_must_be_positive() -> None:
 # --------------------------------------------------------------------------- Eq. 521.2
 
 
-def test_cha_25a_50_output_voltage_is_222_v() -> None:
+def test_cha_25a_50_output_voltage_is_222_v_as_printed_237_5_v_with_the_inductive_drop() -> None:
     u = controller_output_voltage(output_speed_rpm=112, **CHA_25A_50)
     # 112 rpm · 50 = 5600 rpm; 5600 · 37/1000 = 207.2 V; 4.0 A · 3.7 Ω = 14.8 V
     assert u.motor_speed_rpm == -5600
     assert u.back_emf_v == pytest.approx(207.2, abs=1e-9)
     assert u.resistive_v == pytest.approx(14.8, abs=1e-9)
-    assert u.total_v == pytest.approx(222.0, abs=1e-9)
-    assert u.reference == "Eq. 521.2"
+    assert u.printed_v == pytest.approx(222.0, abs=1e-9)
+    # ω = 2π·6·5600/60 rad/s; ω·L·I = 3518.6 · 6.0 mH · 4.0 A = 84.45 V, in quadrature
+    inductive = 2 * math.pi * 6 * 5600 / 60 * 6.0e-3 * 4.0
+    assert u.inductive_v == pytest.approx(inductive, rel=1e-12)
+    assert u.total_v == pytest.approx(math.hypot(222.0, inductive), rel=1e-12)
+    assert u.total_v == pytest.approx(237.52, abs=5e-3)
+    assert u.reference == "Eq. 521.2 with ωL·I in quadrature"
 
 
-def test_output_voltage_is_linear_in_speed_and_independent_of_direction() -> None:
+def test_cha_58a_50_at_60_rpm_needs_426_5_v() -> None:
+    """Issue 28 item 2: CHA-58A-50 (K_E 105 V/krpm, I_max 14.4 A, R 2.4 Ω, L 9 mH, p = 6)
+    at 60 rpm: 315 V + 34.56 V in phase, ω·L·I = 244.3 V in quadrature, 426.5 V, more
+    than the 396.0 V a 560 V bus delivers; Eq. 521.2 as printed said 349.6 V, enough."""
+    u = controller_output_voltage(
+        output_speed_rpm=60,
+        gear_ratio=50,
+        motor_voltage_constant_v_per_krpm=105,
+        max_current_a=14.4,
+        resistance_line_ohm=2.4,
+        inductance_line_h=9e-3,
+        pole_pairs=6,
+    )
+    omega_el = 2 * math.pi * 3000 / 60 * 6
+    assert u.printed_v == pytest.approx(3000 * 0.105 + 14.4 * 2.4, rel=1e-12)
+    assert u.inductive_v == pytest.approx(omega_el * 9e-3 * 14.4, rel=1e-12)
+    assert u.total_v == pytest.approx(426.5, abs=0.05)
+    bus = DcBusClass(bus_class=BusClass.V560, nominal_voltage_v=560)
+    assert not check_output_voltage(required_voltage_v=u.total_v, bus=bus).sufficient
+    assert check_output_voltage(required_voltage_v=u.printed_v, bus=bus).sufficient
+
+
+def test_output_voltage_terms_are_linear_in_speed_and_independent_of_direction() -> None:
     at_rest = controller_output_voltage(output_speed_rpm=0, **CHA_25A_50)
     assert at_rest.total_v == pytest.approx(14.8)  # I_MAX·R only
+    assert at_rest.inductive_v == 0.0
     half = controller_output_voltage(output_speed_rpm=56, **CHA_25A_50)
     assert half.back_emf_v == pytest.approx(207.2 / 2)
+    full = controller_output_voltage(output_speed_rpm=112, **CHA_25A_50)
+    assert half.inductive_v == pytest.approx(full.inductive_v / 2)
     reverse = controller_output_voltage(output_speed_rpm=-112, **CHA_25A_50)
-    assert reverse.total_v == pytest.approx(222.0)
+    assert reverse.total_v == full.total_v
     assert reverse.motor_speed_rpm == 5600
+    printed = controller_output_voltage(
+        output_speed_rpm=112, **{**CHA_25A_50, "inductance_line_h": 0}
+    )
+    assert printed.total_v == pytest.approx(222.0)  # L = 0: Eq. 521.2 as printed
 
 
 def test_output_side_constant_is_i_times_k_e_per_1000() -> None:
@@ -133,8 +170,12 @@ def test_output_side_constant_is_i_times_k_e_per_1000() -> None:
         output_voltage_constant_v_per_rpm=k_out,
         max_current_a=4.0,
         resistance_line_ohm=3.7,
+        inductance_line_h=6.0e-3,
+        pole_pairs=6,
     )
-    assert u.total_v == pytest.approx(222.0, abs=1e-9)
+    assert u.total_v == pytest.approx(
+        controller_output_voltage(output_speed_rpm=112, **CHA_25A_50).total_v, rel=1e-12
+    )
     assert u.motor_speed_rpm == -5600
 
 
@@ -148,6 +189,8 @@ def test_fha_25c_50_with_phase_resistance() -> None:
         output_voltage_constant_v_per_rpm=2.5,
         max_current_a=7.3,
         resistance_line_ohm=r_ll,
+        inductance_line_h=0.0,  # the FHA-C catalogue gives no pole pairs: as printed
+        pole_pairs=1,
     )
     # 90 · 2.5 = 225 V; 7.3 · 5.2 = 37.96 V
     assert u.back_emf_v == pytest.approx(225.0)
@@ -162,6 +205,8 @@ def test_fha_25c_50_with_phase_resistance() -> None:
         ("motor_voltage_constant_v_per_krpm", -1.0),
         ("max_current_a", -0.1),
         ("resistance_line_ohm", 0.0),
+        ("inductance_line_h", -1e-3),
+        ("pole_pairs", 0.0),
         ("output_speed_rpm", math.inf),
     ],
 )

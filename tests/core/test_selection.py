@@ -39,6 +39,7 @@ def test_worked_example_passes_every_check_with_data() -> None:
         "continuous_duty",
         "thermal_peak",
         "continuous_speed",
+        "drive_voltage",
     ]
     assert by_name["max_speed"].value == 40
     assert by_name["max_speed"].limit == 90
@@ -111,7 +112,9 @@ def test_continuous_duty_with_zone_pass_and_fail() -> None:
 
 
 def test_continuous_duty_approximate_with_stall_torque() -> None:
-    cha_like = dataclasses.replace(FHA, stall_torque_nm=36, rated_speed_rpm=70)
+    cha_like = dataclasses.replace(
+        FHA, stall_torque_nm=36, rated_speed_rpm=70, **worked_example.DRIVEN
+    )
     ok = evaluate(cha_like, EXAMPLE)
     check = next(c for c in ok.checks if c.name == "continuous_duty")
     assert check.status is Status.PASS
@@ -140,7 +143,7 @@ def test_margin_percent() -> None:
 
 
 def test_ranking_suitable_smallest_first() -> None:
-    rated = dataclasses.replace(FHA, rated_speed_rpm=70)
+    rated = dataclasses.replace(FHA, rated_speed_rpm=70, **worked_example.DRIVEN)
     big = dataclasses.replace(rated, model="BIG", max_torque_nm=300, stall_torque_nm=100)
     small = dataclasses.replace(rated, model="SMALL", max_torque_nm=151, stall_torque_nm=40)
     unknown = dataclasses.replace(FHA, model="UNKNOWN")  # no continuous data
@@ -264,6 +267,6 @@ def test_brake_holds_the_load_torque_at_standstill() -> None:
     failed = evaluate(braked, heavy).checks[-1]
     assert (failed.status, failed.value) == (Status.FAIL, 95.0)
     assert "exceeds the brake's holding torque = 90 Nm" in failed.message
-    assert [c.name for c in evaluate(braked, EXAMPLE).checks][-1] == "continuous_speed"
+    assert [c.name for c in evaluate(braked, EXAMPLE).checks][-1] == "drive_voltage"
     unpublished = evaluate(FHA, with_brake).checks[-1]
     assert (unpublished.status, unpublished.missing) == (Status.NO_DATA, "brake holding torque")

@@ -213,8 +213,8 @@ def test_worked_example_gives_the_chapters_numbers(page: Page, traffic: Traffic)
 
     # every check with value, limit, status and the chapter's reference
     checks = page.locator("#checks-table tbody tr")
-    # the chapter's five, the winding's thermal_peak and the continuous speed
-    expect(checks).to_have_count(7)
+    # the chapter's five, the winding's thermal_peak, the continuous speed and drive_voltage
+    expect(checks).to_have_count(8)
     continuous_speed = page.locator('#checks-table tr[data-check="continuous_speed"]')
     expect(continuous_speed).to_have_attribute("data-status", "no_data")
     thermal = page.locator('#checks-table tr[data-check="thermal_peak"]')

@@ -387,7 +387,8 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "this bus does not reach n_max"
     ),
     "controller_voltage.no_constants": N_(
-        "no data: the catalogue gives no motor K_E (V_rms per 1000 rpm), I_max and line-to-line R"
+        "no data: the catalogue gives no motor K_E (V_rms per 1000 rpm), I_max, line-to-line "
+        "R and L, and pole pairs p"
     ),
     "controller_voltage.no_bus_class": N_("no data: the actuator's DC bus class is not published"),
     "controller_voltage.no_shared_bus": N_(

@@ -68,7 +68,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any, NamedTuple
 
-from actuator_selection.core import bearing
+from actuator_selection.core import bearing, electrical
 from actuator_selection.core.check_messages import Phrase, phrase
 from actuator_selection.core.deferred import Deferred, defer_field
 from actuator_selection.core.messages import N_
@@ -1102,22 +1102,30 @@ modulation (:func:`~actuator_selection.core.electrical.max_output_voltage_v`).""
 
 def _resistive_sum(q: Operands) -> Real:
     """Eq. 521.2 as printed: U_OUT = n·i·K_E + I_MAX·R (line-to-line rms)."""
-    motor_rpm = q.speed_rpm * q.gear_ratio
-    return motor_rpm * (q.motor_voltage_constant_v_per_krpm / 1000.0) + (
-        q.max_current_a * q.resistance_line_ohm
+    return electrical.in_phase_voltage_v(
+        output_speed_rpm=q.speed_rpm,
+        gear_ratio=q.gear_ratio,
+        motor_voltage_constant_v_per_krpm=q.motor_voltage_constant_v_per_krpm,
+        max_current_a=q.max_current_a,
+        resistance_line_ohm=q.resistance_line_ohm,
     )
 
 
 def _inductive_drop(q: Operands) -> Real:
     """ω·L·I_MAX with ω = 2π·p·n·i/60, the electrical angular frequency [V]."""
-    omega = q.speed_rpm * q.gear_ratio * RAD_PER_S_PER_RPM * q.pole_pairs
-    return omega * q.inductance_line_h * q.max_current_a
+    return electrical.inductive_voltage_v(
+        output_speed_rpm=q.speed_rpm,
+        gear_ratio=q.gear_ratio,
+        pole_pairs=q.pole_pairs,
+        inductance_line_h=q.inductance_line_h,
+        max_current_a=q.max_current_a,
+    )
 
 
 def _drive_voltage(q: Operands, xp: Ops) -> Real:
-    """U = √((n·i·K_E + I·R)² + (ω·L·I)²): Eq. 521.2 with the inductive drop in quadrature."""
-    resistive, inductive = _resistive_sum(q), _inductive_drop(q)
-    return xp.sqrt(resistive * resistive + inductive * inductive)
+    """U = √((n·i·K_E + I·R)² + (ω·L·I)²): Eq. 521.2 with the inductive drop in quadrature
+    (:func:`~actuator_selection.core.electrical.needed_voltage_v`, the one formula)."""
+    return electrical.needed_voltage_v(_resistive_sum(q), _inductive_drop(q), xp.sqrt)
 
 
 def _voltage_message(q: Operands, status: Status, volts: float, available: float) -> str:
@@ -1143,16 +1151,23 @@ DRIVE_VOLTAGE = Rule(
         published("resistance_line_ohm", N_("line-to-line resistance R")),
         published("inductance_line_h", N_("line-to-line inductance L")),
         published("pole_pairs", N_("number of pole pairs p")),
-        published("dc_bus_voltage_v", N_("DC bus class")),
+        published(
+            "dc_bus_voltage_v",
+            N_("controller listed for the actuator (Table 521.1) on a DC bus class it runs on"),
+        ),
     ),
     message=_voltage_message,
 )
 """The controller's output voltage at the load speed n_2 and I_max: Eq. 521.2 with the
 inductive drop ω·L·I in quadrature, U = √((n·i·K_E + I·R)² + (ω·L·I)²), all line-to-line
 rms, ω = 2π·p·n·i/60 the electrical angular frequency, against U_DC/√2 of the highest
-DC bus class the actuator runs on. The resistive drop stays in phase with the back-EMF
-and uses R and L line-to-line, as the chapter does: on the safe side (between two
-terminals of a star winding the drops are 2/√3 of their line-to-line share). Eq. 521.2
+DC bus class the actuator shares with a controller Table 521.1 lists for it (the
+catalogue snapshot derives ``dc_bus_voltage_v`` so): it fails exactly when every listed
+controller's own voltage check fails (:mod:`actuator_selection.core.drive`, the same
+formula, :func:`~actuator_selection.core.electrical.needed_voltage_v`). The resistive
+drop stays in phase with the back-EMF and uses R and L line-to-line, as the chapter
+does: on the safe side (between two terminals of a star winding the drops are 2/√3 of
+their line-to-line share). Eq. 521.2
 as printed is reported beside it. Only the CHA-style constants (motor K_E in V_rms
 line-to-line, R and L line-to-line, pole pairs) are published; elsewhere no data."""
 
@@ -1320,17 +1335,21 @@ RULES: tuple[Rule, ...] = (
     CONTINUOUS_DUTY,
     THERMAL_PEAK,
     CONTINUOUS_SPEED,
+    DRIVE_VOLTAGE,
 )
 """The flowchart's checks in the manufacturer's order (chapter p. 514–517), then whether
 T_rms stands for the cycle's length (:data:`THERMAL_PEAK`, Fig. 520.1's model), then the
-continuous speed by the same model (:data:`CONTINUOUS_SPEED`)."""
+continuous speed by the same model (:data:`CONTINUOUS_SPEED`), then whether a controller
+listed for the actuator (Table 521.1) delivers the voltage the axis needs
+(:data:`DRIVE_VOLTAGE`): an actuator that no listed controller can drive at n_2 is not
+suitable, whether or not the drive is sized (issue 28, item 1). Where the catalogue lacks
+the winding's constants (K_E in V_rms, L, p) or lists no controller on a bus class the
+actuator runs on, that check lacks data and the verdict is unconfirmed."""
 
-DRIVE_RULES: tuple[Rule, ...] = (DRIVE_CURRENT, DRIVE_VOLTAGE)
-"""The drive's checks, where asked for (``Application.drive``): peak current (Eq. 522.2,
-522.3) and output voltage (Eq. 521.2 with the inductive drop). Not in :data:`RULES`:
-the chapter's flowchart ends at the continuous-duty zone, and the drive's data (pole
-pairs, a K_E in V_rms) is published for the CHA only, so in the default set every other
-actuator would lose its verdict to "no data"."""
+DRIVE_RULES: tuple[Rule, ...] = (DRIVE_CURRENT,)
+"""The drive's further check, where asked for (``Application.drive``): peak current
+(Eq. 522.2, 522.3), with the energy braking returns. The output voltage
+(:data:`DRIVE_VOLTAGE`) is in :data:`RULES`, checked for every selection."""
 
 BRAKE_RULES: tuple[Rule, ...] = (*RULES, BRAKE_HOLDING)
 """The checks of an actuator fitted with its holding brake: the flowchart's, then the

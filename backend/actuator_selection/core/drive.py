@@ -1,8 +1,10 @@
 """From a chosen actuator to a working drive: compatible controllers and their voltage.
 
 Joins the matching of Table 521.1 with the controller output voltage of
-Eq. 521.2. The voltage is checked for each actuator–controller pair that has the
-data: the controller's bus classes that the actuator also runs on, the largest
+Eq. 521.2 with the inductive drop in quadrature (the one formula,
+:func:`~actuator_selection.core.electrical.needed_voltage_v`, that the selection's
+``drive_voltage`` check uses too). The voltage is checked for each actuator–controller
+pair that has the data: the controller's bus classes that the actuator also runs on, the largest
 output voltage among them, against U_OUT at the load speed n_2; U_OUT at n_max
 is reported beside it, since a drive that cannot reach n_max still serves a
 slower load.
@@ -33,7 +35,7 @@ from actuator_selection.core.electrical import (
 )
 from actuator_selection.core.selection import Check, Status
 
-VOLTAGE_REFERENCE = "Eq. 521.2"
+VOLTAGE_REFERENCE = "Eq. 521.2 with ωL·I in quadrature"
 MODULATION = Modulation.SPACE_VECTOR
 """The modulation :func:`check_output_voltage` assumes by default."""
 
@@ -88,11 +90,11 @@ def voltage_check(
     buses: Sequence[DcBusClass],
     speed_rpm: float,
 ) -> Check:
-    """U_OUT (Eq. 521.2) at ``speed_rpm`` against the best bus class the pair shares.
+    """U_OUT (Eq. 521.2 with ωL·I) at ``speed_rpm`` against the best bus class the pair shares.
 
     Only the CHA-style constants (motor K_E in V_rms line-to-line per 1000 rpm,
-    R line-to-line) are used: for catalogues that give k_E per output rpm without
-    saying whether it is rms or peak, comparing with an rms bus voltage would be
+    R and L line-to-line, pole pairs p) are used: for catalogues that give k_E per output
+    rpm without saying whether it is rms or peak, comparing with an rms bus voltage would be
     a guess, so those pairs say "no data".
     """
     return shared_voltage_check(
@@ -119,7 +121,8 @@ def shared_voltage_check(
     """
     k_e = actuator.motor_voltage_constant_v_per_krpm
     i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
-    if k_e is None or i_max is None or r_line is None:
+    l_line, poles = actuator.inductance_line_mh, actuator.pole_pairs
+    if k_e is None or i_max is None or r_line is None or l_line is None or poles is None:
         return _no_voltage_data("no_constants")
     if interface.bus_classes is None:
         return _no_voltage_data("no_bus_class")
@@ -133,6 +136,8 @@ def shared_voltage_check(
             motor_voltage_constant_v_per_krpm=k_e,
             max_current_a=i_max,
             resistance_line_ohm=r_line,
+            inductance_line_h=l_line / 1000.0,
+            pole_pairs=poles,
         ).total_v
 
     u_load = required(speed_rpm)

@@ -1,13 +1,18 @@
-"""Controller output voltage (Eq. 521.2), output torque from current (Eq. 522.2, 522.3)
-and the direction of rotation (chapter, "Direction of Rotation").
+"""Controller output voltage (Eq. 521.2 with the inductive drop), output torque from
+current (Eq. 522.2, 522.3) and the direction of rotation (chapter, "Direction of Rotation").
 
 Worked example, CHA-25A-50 at its maximum output speed of 112 rpm (CHA catalogue:
-K_E = 37 V/1000 rpm motor-side, I_max = 4.0 A, R = 3.7 Ω line-to-line):
+K_E = 37 V/1000 rpm motor-side, I_max = 4.0 A, R = 3.7 Ω, L = 6.0 mH line-to-line, p = 6):
+Eq. 521.2 as printed gives 207.2 V + 14.8 V = 222.0 V; the inductive drop ω·L·I_max =
+2π·6·5600/60 rad/s · 6.0 mH · 4.0 A = 84.4 V in quadrature raises it to 237.5 V.
 
 >>> u = controller_output_voltage(output_speed_rpm=112, gear_ratio=50,
-...     motor_voltage_constant_v_per_krpm=37, max_current_a=4.0, resistance_line_ohm=3.7)
->>> u.motor_speed_rpm, round(u.back_emf_v, 1), round(u.resistive_v, 1), round(u.total_v, 1)
+...     motor_voltage_constant_v_per_krpm=37, max_current_a=4.0, resistance_line_ohm=3.7,
+...     inductance_line_h=6.0e-3, pole_pairs=6)
+>>> u.motor_speed_rpm, round(u.back_emf_v, 1), round(u.resistive_v, 1), round(u.printed_v, 1)
 (-5600.0, 207.2, 14.8, 222.0)
+>>> round(u.inductive_v, 1), round(u.total_v, 1)
+(84.4, 237.5)
 
 and its output torque at 2.0 A, 50 rpm, 30 °C (k_Tout = 26.0 Nm/A, I_NLS = 0.19 A,
 K_INL(30 °C) = 6·10⁻³ A/rpm):
@@ -25,13 +30,13 @@ import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import StrEnum
-from typing import Final
+from typing import Any, Final
 
 from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.compatibility import BusClass
 from actuator_selection.core.errors import InvalidInputError, MissingDataError, OutOfRangeError
 from actuator_selection.core.messages import N_, Text
-from actuator_selection.core.units import per_krpm_to_per_rpm
+from actuator_selection.core.units import RAD_PER_S_PER_RPM, per_krpm_to_per_rpm
 
 
 def _finite(field: str, value: float) -> None:
@@ -119,43 +124,95 @@ def output_voltage_constant_v_per_rpm(
     return gear_ratio * per_krpm_to_per_rpm(motor_voltage_constant_v_per_krpm)
 
 
+def in_phase_voltage_v(
+    *,
+    output_speed_rpm: Any,
+    gear_ratio: Any,
+    motor_voltage_constant_v_per_krpm: Any,
+    max_current_a: Any,
+    resistance_line_ohm: Any,
+) -> Any:
+    """Eq. 521.2 as printed, U = |n_OUT|·i·K_E/1000 + I_MAX·R [V_rms line-to-line].
+
+    Written once for floats and for numpy arrays (the flowchart's rule
+    :data:`~actuator_selection.core.checks.DRIVE_VOLTAGE` runs it on both); no input
+    checks here, the callers validate. The back-EMF and the resistive drop are added in
+    phase, the chapter's conservative sum.
+
+    >>> in_phase_voltage_v(output_speed_rpm=-112, gear_ratio=50,
+    ...     motor_voltage_constant_v_per_krpm=37, max_current_a=4.0, resistance_line_ohm=3.7)
+    222.0
+    """
+    motor_rpm = abs(output_speed_rpm) * gear_ratio
+    return motor_rpm * (motor_voltage_constant_v_per_krpm / 1000.0) + (
+        max_current_a * resistance_line_ohm
+    )
+
+
+def inductive_voltage_v(
+    *,
+    output_speed_rpm: Any,
+    gear_ratio: Any,
+    pole_pairs: Any,
+    inductance_line_h: Any,
+    max_current_a: Any,
+) -> Any:
+    """The inductive drop ω·L·I_MAX [V], ω = 2π·p·|n_OUT|·i/60 the electrical angular
+    frequency of the motor (p pole pairs, L line-to-line). Floats or arrays.
+
+    >>> round(inductive_voltage_v(output_speed_rpm=60, gear_ratio=50, pole_pairs=6,
+    ...     inductance_line_h=9e-3, max_current_a=14.4), 2)
+    244.29
+    """
+    omega = abs(output_speed_rpm) * gear_ratio * RAD_PER_S_PER_RPM * pole_pairs
+    return omega * inductance_line_h * max_current_a
+
+
+def needed_voltage_v(in_phase_v: Any, inductive_v: Any, sqrt: Any = math.sqrt) -> Any:
+    """U = √(U_in-phase² + (ω·L·I)²): Eq. 521.2 extended by the inductive drop, which
+    leads the current by 90° and so adds in quadrature to the in-phase terms (the
+    phasor diagram of a PM synchronous motor driven with the current in phase with the
+    back-EMF, i_d = 0). The one formula for the voltage a controller must deliver: the
+    selection's ``drive_voltage`` check, each controller's voltage check
+    (:mod:`actuator_selection.core.drive`) and the controller-voltage tool use it.
+    ``sqrt`` is ``math.sqrt`` for floats, ``numpy.sqrt`` for arrays (both correctly
+    rounded, so equal bit for bit).
+
+    CHA-58A-50 at 60 rpm (349.56 V in phase, 244.29 V inductive):
+
+    >>> round(needed_voltage_v(349.56, 244.2948, math.sqrt), 1)
+    426.5
+    """
+    return sqrt(in_phase_v * in_phase_v + inductive_v * inductive_v)
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class OutputVoltage:
-    """The terms of Eq. 521.2 [V, rpm].
+    """The terms of Eq. 521.2 with the inductive drop [V, rpm].
 
     ``motor_speed_rpm`` is signed (negative: the motor turns opposite to the
     output, :func:`motor_speed_rpm`); the voltages use its magnitude n_OUT·i.
+    ``printed_v`` is Eq. 521.2 as printed (back-EMF + resistive drop), ``total_v``
+    the voltage needed with the inductive drop in quadrature (:func:`needed_voltage_v`).
     """
 
     output_speed_rpm: float
     motor_speed_rpm: float
     back_emf_v: float
     resistive_v: float
+    inductive_v: float
+    printed_v: float
     total_v: float
-    reference: str = "Eq. 521.2"
+    reference: str = "Eq. 521.2 with ωL·I in quadrature"
 
 
-def _output_voltage(
-    *,
-    output_speed_rpm: float,
-    gear_ratio: float,
-    back_emf_v: float,
-    max_current_a: float,
-    resistance_line_ohm: float,
-) -> OutputVoltage:
-    resistive = max_current_a * resistance_line_ohm
-    return OutputVoltage(
-        output_speed_rpm=output_speed_rpm,
-        motor_speed_rpm=motor_speed_rpm(output_speed_rpm=output_speed_rpm, gear_ratio=gear_ratio),
-        back_emf_v=back_emf_v,
-        resistive_v=resistive,
-        total_v=back_emf_v + resistive,
-    )
-
-
-def _check_current_and_resistance(max_current_a: float, resistance_line_ohm: float) -> None:
+def _check_winding(
+    max_current_a: float, resistance_line_ohm: float, inductance_line_h: float, pole_pairs: float
+) -> None:
     _non_negative("max_current_a", max_current_a, "I_MAX is a current magnitude (A rms)")
     _positive("resistance_line_ohm", resistance_line_ohm, "the armature resistance R")
+    _non_negative("inductance_line_h", inductance_line_h, "the winding inductance L")
+    _positive("pole_pairs", pole_pairs, "the motor's pole pairs p set the electrical frequency")
 
 
 def controller_output_voltage(
@@ -165,17 +222,22 @@ def controller_output_voltage(
     motor_voltage_constant_v_per_krpm: float,
     max_current_a: float,
     resistance_line_ohm: float,
+    inductance_line_h: float,
+    pole_pairs: float,
 ) -> OutputVoltage:
-    """Minimum controller output voltage U_OUT (Eq. 521.2), motor-side K_E.
+    """The controller output voltage a motor needs at n_OUT and I_MAX (Eq. 521.2 with
+    the inductive drop), motor-side K_E.
 
-    U_OUT = n_OUT·i·K_E + I_MAX·R, K_E per 1000 rpm of motor speed, converted
-    per rpm with :func:`~actuator_selection.core.units.per_krpm_to_per_rpm`.
+    U = √((n_OUT·i·K_E + I_MAX·R)² + (ω·L·I_MAX)²), ω = 2π·p·n_OUT·i/60, K_E per 1000 rpm
+    of motor speed (:func:`in_phase_voltage_v`, :func:`inductive_voltage_v`,
+    :func:`needed_voltage_v`).
 
     The chapter labels U_OUT [V_DC], but the CHA's K_E is V_rms line-to-line
     per 1000 rpm and I_MAX is A_rms, so U_OUT is an rms line-to-line voltage;
     compare it with what a bus delivers through :func:`check_output_voltage`.
-    The equation adds the resistive drop arithmetically (no phase angle, no
-    inductive drop); with R line-to-line it is the chapter's conservative sum.
+    Eq. 521.2 as printed adds the resistive drop arithmetically and leaves out the
+    inductive drop, which at the CHA's speeds is of the order of the back-EMF
+    (CHA-58A-50 at 60 rpm: 244 V against 315 V); it is reported as ``printed_v``.
 
     Parameters
     ----------
@@ -190,11 +252,15 @@ def controller_output_voltage(
     resistance_line_ohm
         R [Ω] line-to-line, > 0 (a phase value converts with
         :func:`line_resistance_from_phase_ohm`).
+    inductance_line_h
+        L [H] line-to-line, ≥ 0 (0 gives Eq. 521.2 as printed).
+    pole_pairs
+        p [-], > 0.
 
-    >>> round(controller_output_voltage(output_speed_rpm=112, gear_ratio=50,
-    ...     motor_voltage_constant_v_per_krpm=37, max_current_a=4.0,
-    ...     resistance_line_ohm=3.7).total_v, 1)
-    222.0
+    >>> round(controller_output_voltage(output_speed_rpm=60, gear_ratio=50,
+    ...     motor_voltage_constant_v_per_krpm=105, max_current_a=14.4,
+    ...     resistance_line_ohm=2.4, inductance_line_h=9e-3, pole_pairs=6).total_v, 1)
+    426.5
     """
     _finite("output_speed_rpm", output_speed_rpm)
     _positive("gear_ratio", gear_ratio, "the gear ratio i multiplies the output speed")
@@ -203,14 +269,30 @@ def controller_output_voltage(
         motor_voltage_constant_v_per_krpm,
         "K_E is the back-EMF per 1000 rpm of motor speed",
     )
-    _check_current_and_resistance(max_current_a, resistance_line_ohm)
-    motor_rpm = abs(output_speed_rpm) * gear_ratio
-    return _output_voltage(
+    _check_winding(max_current_a, resistance_line_ohm, inductance_line_h, pole_pairs)
+    printed = in_phase_voltage_v(
         output_speed_rpm=output_speed_rpm,
         gear_ratio=gear_ratio,
-        back_emf_v=motor_rpm * per_krpm_to_per_rpm(motor_voltage_constant_v_per_krpm),
+        motor_voltage_constant_v_per_krpm=motor_voltage_constant_v_per_krpm,
         max_current_a=max_current_a,
         resistance_line_ohm=resistance_line_ohm,
+    )
+    inductive = inductive_voltage_v(
+        output_speed_rpm=output_speed_rpm,
+        gear_ratio=gear_ratio,
+        pole_pairs=pole_pairs,
+        inductance_line_h=inductance_line_h,
+        max_current_a=max_current_a,
+    )
+    motor_rpm = abs(output_speed_rpm) * gear_ratio
+    return OutputVoltage(
+        output_speed_rpm=output_speed_rpm,
+        motor_speed_rpm=motor_speed_rpm(output_speed_rpm=output_speed_rpm, gear_ratio=gear_ratio),
+        back_emf_v=motor_rpm * per_krpm_to_per_rpm(motor_voltage_constant_v_per_krpm),
+        resistive_v=max_current_a * resistance_line_ohm,
+        inductive_v=float(inductive),
+        printed_v=float(printed),
+        total_v=float(needed_voltage_v(printed, inductive)),
     )
 
 
@@ -221,35 +303,38 @@ def controller_output_voltage_from_output_constant(
     output_voltage_constant_v_per_rpm: float,
     max_current_a: float,
     resistance_line_ohm: float,
+    inductance_line_h: float,
+    pole_pairs: float,
 ) -> OutputVoltage:
-    """Eq. 521.2 with a voltage constant per output rpm (FHA-C catalogue form).
+    """:func:`controller_output_voltage` with a voltage constant per output rpm (FHA-C
+    catalogue form), k_E,out = i·K_E/1000 [V/rpm].
 
-    U_OUT = |n_OUT|·k_E,out + I_MAX·R, with k_E,out = i·K_E/1000 [V/rpm]. The
-    FHA-C catalogue gives R per phase: pass
+    The FHA-C catalogue gives R per phase: pass
     ``line_resistance_from_phase_ohm(R_phase)`` so that phase and line values
     are never mixed silently. The constant must be in the same convention as
     the bus comparison (rms line-to-line); check the catalogue before use.
 
     >>> u = controller_output_voltage_from_output_constant(output_speed_rpm=90, gear_ratio=50,
     ...     output_voltage_constant_v_per_rpm=2.5, max_current_a=7.3,
-    ...     resistance_line_ohm=line_resistance_from_phase_ohm(2.6))
+    ...     resistance_line_ohm=line_resistance_from_phase_ohm(2.6), inductance_line_h=0.0,
+    ...     pole_pairs=6)
     >>> round(u.back_emf_v, 1), round(u.resistive_v, 2), round(u.total_v, 2)
     (225.0, 37.96, 262.96)
     """
-    _finite("output_speed_rpm", output_speed_rpm)
     _positive("gear_ratio", gear_ratio, "the gear ratio i")
     _positive(
         "output_voltage_constant_v_per_rpm",
         output_voltage_constant_v_per_rpm,
         "k_E,out is the back-EMF per output rpm",
     )
-    _check_current_and_resistance(max_current_a, resistance_line_ohm)
-    return _output_voltage(
+    return controller_output_voltage(
         output_speed_rpm=output_speed_rpm,
         gear_ratio=gear_ratio,
-        back_emf_v=abs(output_speed_rpm) * output_voltage_constant_v_per_rpm,
+        motor_voltage_constant_v_per_krpm=output_voltage_constant_v_per_rpm / gear_ratio * 1000.0,
         max_current_a=max_current_a,
         resistance_line_ohm=resistance_line_ohm,
+        inductance_line_h=inductance_line_h,
+        pole_pairs=pole_pairs,
     )
 
 

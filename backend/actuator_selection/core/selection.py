@@ -14,7 +14,9 @@ in the manufacturer's order:
    winding's heating over the repeating cycle against the same limit (the first-order
    thermal model of Fig. 520.1);
 7. ``continuous_speed``: the speed the winding's heating follows (n_av for a short
-   cycle, a long segment's own speed) against the continuous or rated speed.
+   cycle, a long segment's own speed) against the continuous or rated speed;
+8. ``drive_voltage``: whether a controller listed for the actuator (Table 521.1)
+   delivers the voltage the axis needs at n_2 (Eq. 521.2 with the inductive drop).
 
 A check never passes without data: a missing catalogue value gives ``no_data``. The
 rules live in :mod:`actuator_selection.core.checks`, one table that the vectorised
@@ -31,7 +33,7 @@ Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here
 >>> [(k.name, k.status.value) for k in c.checks]  # doctest: +NORMALIZE_WHITESPACE
 [('max_speed', 'pass'), ('inertia_ratio', 'pass'), ('peak_torque', 'pass'),
  ('decel_torque', 'pass'), ('continuous_duty', 'no_data'), ('thermal_peak', 'no_data'),
- ('continuous_speed', 'no_data')]
+ ('continuous_speed', 'no_data'), ('drive_voltage', 'no_data')]
 >>> c.verdict.value
 'unconfirmed'
 >>> c.checks[2].message
@@ -180,8 +182,9 @@ class Application:
         return self._profile[0] if self._profile else None
 
     drive: bool = False
-    """Whether the drive is sized too: peak current and output voltage
-    (:data:`~actuator_selection.core.checks.DRIVE_RULES`)."""
+    """Whether the drive's current is sized too
+    (:data:`~actuator_selection.core.checks.DRIVE_RULES`); the output voltage is checked
+    either way (:data:`~actuator_selection.core.checks.DRIVE_VOLTAGE`)."""
     output_load: OutputLoad | None = None
     """An external load on the output flange, or None: the output bearing is not checked
     (:data:`~actuator_selection.core.checks.BEARING_RULES`)."""

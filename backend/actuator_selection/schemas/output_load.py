@@ -78,8 +78,10 @@ OUTPUT_LOAD_FIELD: Any = Field(
 )
 DRIVE_FIELD: Any = Field(
     default=False,
-    description="size the drive too: peak motor current against I_max (Eq. 522.2, 522.3) "
-    "and the output voltage with the inductive drop against the DC bus (Eq. 521.2)",
+    description="size the drive's current too: peak motor current against I_max (Eq. 522.2, "
+    "522.3) with the energy braking returns; the output voltage with the inductive drop "
+    "against the best controller listed for the actuator (Eq. 521.2, Table 521.1) is "
+    "checked with or without it",
 )
 
 

@@ -13,6 +13,8 @@ MAX_VOLTAGE_CONSTANT = 10_000.0
 """K_E bound [V per 1000 rpm]: a hundred times the largest catalogue value."""
 MAX_CURRENT_A = 10_000.0
 MAX_RESISTANCE_OHM = 100_000.0
+MAX_INDUCTANCE_MH = 100_000.0
+MAX_POLE_PAIRS = 1_000.0
 MAX_GEAR_RATIO = 10_000.0
 MAX_TIME_CONSTANT_S = 1e6
 MAX_OVERLOAD_FACTOR = 100.0
@@ -30,7 +32,8 @@ _SENSOR_NAMES = {
 
 
 class ControllerVoltageRequest(StrictModel):
-    """Eq. 521.2 for a catalogue ``model`` or for explicit constants (these override)."""
+    """Eq. 521.2 with the inductive drop for a catalogue ``model`` or for explicit
+    constants (these override)."""
 
     model_config = ConfigDict(
         json_schema_extra={
@@ -41,6 +44,8 @@ class ControllerVoltageRequest(StrictModel):
                     "voltage_constant_v_per_krpm": 25,
                     "max_current_a": 8.3,
                     "resistance_ohm": 1.2,
+                    "inductance_mh": 3.0,
+                    "pole_pairs": 6,
                 }
             ]
         }
@@ -59,6 +64,15 @@ class ControllerVoltageRequest(StrictModel):
     resistance_ohm: float | None = Field(
         default=None, gt=0, le=MAX_RESISTANCE_OHM, description="R, line-to-line [Ω]"
     )
+    inductance_mh: float | None = Field(
+        default=None,
+        ge=0,
+        le=MAX_INDUCTANCE_MH,
+        description="L, line-to-line [mH]; 0 gives Eq. 521.2 as printed",
+    )
+    pole_pairs: float | None = Field(
+        default=None, gt=0, le=MAX_POLE_PAIRS, description="p, the motor's pole pairs"
+    )
 
 
 class BusVoltageOut(ResponseModel):
@@ -73,11 +87,14 @@ class BusVoltageOut(ResponseModel):
 
 
 class ControllerVoltageOut(ResponseModel):
-    """U_OUT = n_OUT·i·K_E + I_MAX·R (Eq. 521.2) and its terms."""
+    """U_OUT = √((n_OUT·i·K_E + I_MAX·R)² + (ω·L·I_MAX)²) (Eq. 521.2 with the inductive
+    drop in quadrature, as the selection's drive_voltage check) and its terms."""
 
-    voltage_v: float = Field(description="U_OUT, V_rms line-to-line")
+    voltage_v: float = Field(description="U_OUT, V_rms line-to-line, with ω·L·I_MAX")
     back_emf_v: float = Field(description="n_OUT·i·K_E")
     resistive_v: float = Field(description="I_MAX·R")
+    inductive_v: float = Field(description="ω·L·I_MAX, ω = 2π·p·n_OUT·i/60")
+    printed_v: float = Field(description="Eq. 521.2 as printed: n_OUT·i·K_E + I_MAX·R")
     output_speed_rpm: float
     motor_speed_rpm: float = Field(description="signed: negative = opposite to the output")
     direction: str = OUTPUT_DIRECTION
@@ -85,10 +102,12 @@ class ControllerVoltageOut(ResponseModel):
     voltage_constant_v_per_krpm: float
     max_current_a: float
     resistance_ohm: float
+    inductance_mh: float
+    pole_pairs: float
     bus_classes: list[BusVoltageOut] = Field(
         description="each DC bus class of Table 521.1, space-vector modulation: U_LL,rms = U_DC/√2"
     )
-    reference: str = "Eq. 521.2"
+    reference: str = "Eq. 521.2 with ωL·I in quadrature"
 
 
 class SensorTemperatureRequest(StrictModel):

@@ -9,7 +9,7 @@ and catalogue version, and kept with the snapshot.
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from contextlib import AbstractContextManager
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
@@ -146,15 +146,23 @@ class CatalogueSnapshot:
         repo = ProtectionRepository(session)
         buses = tuple(repo.bus_classes())
         interfaces = {model: r.interface for model, r in repo.interfaces(None).items()}
+        controllers = tuple(r.controller for r in repo.controllers())
+        matching: dict[ActuatorInterface, CompatibilityResult] = {}
+        for interface in interfaces.values():
+            if interface not in matching:
+                matching[interface] = match_controllers(actuator=interface, controllers=controllers)
+
+        def with_bus(actuator: Actuator) -> Actuator:
+            its = interfaces.get(actuator.model)
+            return with_bus_voltage(actuator, its, buses, None if its is None else matching[its])
+
         return cls(
             version=version,
-            actuators=tuple(
-                with_bus_voltage(r.actuator, interfaces.get(r.actuator.model), buses)
-                for r in CatalogueRepository(session).actuators()
-            ),
-            controllers=tuple(r.controller for r in repo.controllers()),
+            actuators=tuple(with_bus(r.actuator) for r in CatalogueRepository(session).actuators()),
+            controllers=controllers,
             buses=buses,
             interfaces=MappingProxyType(interfaces),
+            _matching=matching,
         )
 
     def has_all(self, models: Iterable[str] | None) -> bool:
@@ -174,13 +182,29 @@ class CatalogueSnapshot:
 
 
 def with_bus_voltage(
-    actuator: Actuator, interface: ActuatorInterface | None, buses: Iterable[DcBusClass]
+    actuator: Actuator,
+    interface: ActuatorInterface | None,
+    buses: Sequence[DcBusClass],
+    matching: CompatibilityResult | None,
 ) -> Actuator:
     """``actuator`` with :attr:`~Actuator.dc_bus_voltage_v`: the highest nominal voltage of
-    the DC bus classes (Table 521.1) its interface runs on; None where none is published."""
-    if interface is None or interface.bus_classes is None:
+    the DC bus classes (Table 521.1) that it shares with a controller listed for it, one
+    ``matching`` does not exclude; None where there is none.
+
+    So the selection's ``drive_voltage`` check compares the voltage the axis needs with
+    the best output voltage any listed controller delivers: it fails exactly when every
+    listed controller's own voltage check (:mod:`actuator_selection.core.drive`, the same
+    formula, the best bus each shares) fails, and lacks data where no controller is
+    listed on a bus class the actuator runs on.
+    """
+    if interface is None or interface.bus_classes is None or matching is None:
         return actuator
-    voltages = [b.nominal_voltage_v for b in buses if b.bus_class in interface.bus_classes]
+    voltages = [
+        b.nominal_voltage_v
+        for m in matching.matches
+        if m.verdict is not MatchVerdict.EXCLUDED
+        for b in shared_bus_classes(interface=interface, controller=m.controller, buses=buses)
+    ]
     if not voltages:
         return actuator
     return replace(actuator, dc_bus_voltage_v=max(voltages))

@@ -64,7 +64,8 @@ def _need(
 
 
 def controller_voltage(body: ControllerVoltageRequest, session: Session) -> ControllerVoltageOut:
-    """Minimum controller output voltage U_OUT (Eq. 521.2) and what each bus class delivers."""
+    """Minimum controller output voltage U_OUT (Eq. 521.2 with ωL·I in quadrature, the
+    formula of the selection's ``drive_voltage`` check) and what each bus class delivers."""
     a = _actuator(session, body.model)
     ratio = _need(body.gear_ratio, a, "gear_ratio", "gear_ratio", "gear ratio")
     k_e = _need(
@@ -82,12 +83,22 @@ def controller_voltage(body: ControllerVoltageRequest, session: Session) -> Cont
         "resistance_ohm",
         "line-to-line winding resistance R",
     )
+    l_mh = _need(
+        body.inductance_mh,
+        a,
+        "inductance_line_mh",
+        "inductance_mh",
+        "line-to-line winding inductance L",
+    )
+    poles = _need(body.pole_pairs, a, "pole_pairs", "pole_pairs", "number of pole pairs p")
     u = controller_output_voltage(
         output_speed_rpm=body.output_speed_rpm,
         gear_ratio=ratio,
         motor_voltage_constant_v_per_krpm=k_e,
         max_current_a=i_max,
         resistance_line_ohm=r,
+        inductance_line_h=l_mh / 1000.0,
+        pole_pairs=poles,
     )
     buses = [
         check_output_voltage(required_voltage_v=u.total_v, bus=b)
@@ -97,12 +108,16 @@ def controller_voltage(body: ControllerVoltageRequest, session: Session) -> Cont
         voltage_v=u.total_v,
         back_emf_v=u.back_emf_v,
         resistive_v=u.resistive_v,
+        inductive_v=u.inductive_v,
+        printed_v=u.printed_v,
         output_speed_rpm=body.output_speed_rpm,
         motor_speed_rpm=u.motor_speed_rpm,
         gear_ratio=ratio,
         voltage_constant_v_per_krpm=k_e,
         max_current_a=i_max,
         resistance_ohm=r,
+        inductance_mh=l_mh,
+        pole_pairs=poles,
         bus_classes=[
             BusVoltageOut(
                 bus_class=c.bus_class.value,

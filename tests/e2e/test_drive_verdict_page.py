@@ -1,0 +1,67 @@
+"""Issue 28, item 1 on the page: the 15 kg belt axis (pulley 60 mm, 0.5 m/s) is not
+"suitable" on CHA-14A-E-30, whose listed controllers all run on the 24 V bus: its row
+says why, the drive's voltage against the controller's, with the numbers of the API."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import pytest
+from playwright.sync_api import Page, expect
+
+from .test_engineer_page import four_digits, post_selection
+from .test_engineer_segments import fill_segments
+
+pytestmark = pytest.mark.browser
+
+MOVES: list[dict[str, Any]] = [  # out and back at 0.5 m/s, in mm/s
+    {"speed": 500, "duration_s": 0.2},
+    {"duration_s": 0.4},
+    {"speed": 0, "duration_s": 0.2},
+    {"duration_s": 0.5},
+    {"speed": -500, "duration_s": 0.2},
+    {"duration_s": 0.4},
+    {"speed": 0, "duration_s": 0.2},
+    {"duration_s": 0.5},
+]
+N_2 = 0.5 / 0.030 * 60 / (2 * math.pi)  # v/r [rpm]
+
+
+def test_the_belt_axis_on_a_24_v_actuator_is_unsuitable_and_the_row_names_the_voltage(
+    page: Page,
+) -> None:
+    page.goto("/")
+    page.get_by_label("Belt axis").check()
+    for name, value in (
+        ("mass_kg", "15"),
+        ("pulley_diameter_mm", "60"),
+        ("friction_coefficient", "0.05"),
+        ("efficiency", "0.9"),
+        ("incline_deg", "0"),
+    ):
+        page.locator(f"#f-belt-{name}").fill(value)
+    page.get_by_label("Segments (several moves").check()
+    fill_segments(page, MOVES)
+    status, body = post_selection(page)
+    assert status == 201, body
+    assert body["load"]["speed_rpm"] == pytest.approx(N_2)
+    small = next(c for c in body["candidates"] if c["model"] == "CHA-14A-E-30")
+    assert small["verdict"] == "unsuitable"
+    voltage = next(c for c in small["checks"] if c["name"] == "drive_voltage")
+    # √((n·i·K_E + I·R)² + (ω·L·I)²) with the CHA-14A-E-30's constants, against 24 V/√2
+    motor = N_2 * 30
+    needed = math.hypot(motor * 3 / 1000 + 7.4 * 0.42, 2 * math.pi * 5 * motor / 60 * 0.35e-3 * 7.4)
+    assert voltage["value"] == pytest.approx(needed, rel=1e-12)
+    assert voltage["limit"] == pytest.approx(24 / math.sqrt(2), rel=1e-12)
+    assert body["candidates"][0]["model"] != "CHA-14A-E-30"
+    assert body["candidates"][0]["verdict"] == "suitable"
+
+    row = page.locator('#ranking-table tr[data-model="CHA-14A-E-30"]')
+    expect(row).to_contain_text("unsuitable")
+    reason = row.locator('.reasons li[data-check="drive_voltage"]')
+    expect(reason).to_contain_text("fail")
+    expect(reason).to_contain_text(
+        f"{four_digits(voltage['value'])}\u202fV, limit {four_digits(voltage['limit'])}\u202fV"
+    )
+    expect(row.locator(".reasons li")).to_have_count(1)  # the one quantity that binds
