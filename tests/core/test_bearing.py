@@ -9,6 +9,7 @@ the bearing check was found in the public copies searched, so none is reproduced
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
@@ -34,6 +35,7 @@ FHA_14C_50 = Actuator(
     output_bearing_dynamic_load_rating_n=7400,
     output_bearing_static_load_rating_n=12800,
     output_bearing_moment_load_nm=75,
+    output_bearing_type="cross_roller",  # as formula (7) of the FHA-C manual takes it
 )
 CHA_25A_50 = Actuator(
     model="CHA-25A-50",
@@ -48,6 +50,24 @@ CHA_25A_50 = Actuator(
     output_bearing_static_load_rating_n=45000,
     output_bearing_dynamic_tilting_moment_nm=254,
     output_bearing_static_tilting_moment_nm=1050,
+    output_bearing_type="cross_roller",
+)
+# CHA-20A-50 (CHA manual 1018854 8/2018 V03, Table 55.1): d_p 70 mm, R 16 mm, C 24200 N,
+# C_0 31000 N, M_dyn 172 Nm; a four-point contact ball bearing (type "F").
+CHA_20A_50 = Actuator(
+    model="CHA-20A-50",
+    family="CHA",
+    gear_ratio=50,
+    max_torque_nm=56,
+    max_speed_rpm=120,
+    inertia_kgm2=0.58,
+    output_bearing_pitch_diameter_m=0.070,
+    output_bearing_offset_m=0.016,
+    output_bearing_dynamic_load_rating_n=24200,
+    output_bearing_static_load_rating_n=31000,
+    output_bearing_dynamic_tilting_moment_nm=172,
+    output_bearing_static_tilting_moment_nm=603,
+    output_bearing_type="four_point_contact_ball",
 )
 FHA_25C_50 = Actuator(  # FHA-C manual §1-4-2 gives no R, d_p, C, C_0
     model="FHA-25C-50",
@@ -152,7 +172,8 @@ def test_life_by_hand_and_against_the_required_life() -> None:
         ),
         rel=1e-12,
     )
-    assert f"L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life:.4g} h" in c.message
+    assert f"L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^B = {life:.4g} h" in c.message
+    assert "cross roller bearing: B = 10/3" in c.message
     # The check passes exactly when L_10 ≥ the required life.
     heavy = check(FHA_14C_50, HEAVY, "bearing_life")
     m = 74.0
@@ -182,7 +203,10 @@ def test_fha_c_without_r_or_c_says_no_data() -> None:
 
 
 def test_batch_equals_single_for_the_bearing_checks() -> None:
-    actuators = [FHA_14C_50, CHA_25A_50, FHA_25C_50]
+    # a cross roller, a ball (CHA-20A) and an unpublished bearing type
+    ball = dataclasses.replace(CHA_20A_50, output_bearing_type="four_point_contact_ball")
+    untyped = dataclasses.replace(FHA_14C_50, model="UNTYPED", output_bearing_type=None)
+    actuators = [FHA_14C_50, CHA_25A_50, FHA_25C_50, ball, untyped]
     loads = [
         OutputLoad(
             radial_force_n=fr,
@@ -244,3 +268,62 @@ def test_a_to_and_fro_cycle_is_checked_as_formula_8_reads_it() -> None:
     assert f"= {formula_8:.4g} h" in c.message
     assert LIGHT.required_life_h is not None
     assert (formula_8 >= LIGHT.required_life_h) is (c.status is Status.PASS)
+
+
+# --- issue 28, item 4: the life exponent by bearing type --------------------------------------
+
+BALL_CASE = OutputLoad(
+    radial_force_n=2000,
+    axial_force_n=0,
+    radial_lever_m=0.02,
+    axial_lever_m=0,
+    required_life_h=90000,
+)
+"""2 kN at 20 mm on the CHA-20A: M = 2000·(0.020 + 0.016) = 72 Nm, P_c = 2000 + 2·72/0.070
+= 4057 N, C/(f_w·P_c) = 24200/(1.5·4057) = 3.98; at n_av = 15 rpm L_10 = 69,800 h with
+B = 3 (ball) against 110,700 h with B = 10/3, 1.58 times as long; 90,000 h required."""
+
+
+def test_a_ball_bearing_takes_exponent_3_and_fails_where_10_3_would_pass() -> None:
+    n_av = mean_speed_rpm(PATTERN)
+    assert n_av == pytest.approx(15.0)
+    p_c = 2000 + 2 * 2000 * (0.020 + 0.016) / 0.070
+    ratio = 24200 / (1.5 * p_c)
+    life_ball = 1e6 / (60 * n_av) * ratio**3
+    life_roller = 1e6 / (60 * n_av) * ratio ** (10 / 3)
+    assert life_ball < 90000 < life_roller
+    assert life_roller / life_ball == pytest.approx(ratio ** (1 / 3))
+    c = check(CHA_20A_50, BALL_CASE, "bearing_life")
+    # C needed for 90,000 h: f_w·P_c·(L_h·60·n_av/10⁶)^(1/3)
+    assert c.value == pytest.approx(1.5 * p_c * (90000 * 60 * n_av / 1e6) ** (1 / 3), rel=1e-12)
+    assert (c.status, c.limit, c.approximate) == (Status.FAIL, 24200, False)
+    assert f"^B = {life_ball:.4g} h" in c.message
+    assert "four-point contact ball bearing: B = 3" in c.message
+    # the same bearing taken as a roller bearing (the old exponent) passes: the 1.58x
+    roller = dataclasses.replace(CHA_20A_50, output_bearing_type="cross_roller")
+    passed = check(roller, BALL_CASE, "bearing_life")
+    assert passed.status is Status.PASS
+    assert f"^B = {life_roller:.4g} h" in passed.message
+    # the pass side with B = 3: a lighter load
+    light = dataclasses.replace(BALL_CASE, radial_force_n=1500)
+    assert check(CHA_20A_50, light, "bearing_life").status is Status.PASS
+
+
+def test_an_unpublished_bearing_type_takes_the_stricter_exponent_as_approximate() -> None:
+    untyped = dataclasses.replace(CHA_20A_50, output_bearing_type=None)
+    c = check(untyped, BALL_CASE, "bearing_life")
+    ball = check(CHA_20A_50, BALL_CASE, "bearing_life")
+    assert (c.value, c.status, c.approximate) == (ball.value, Status.FAIL, True)
+    assert "the bearing's type is not published" in c.message
+    # a short life (below 10⁶ revolutions) where 10/3 is the stricter exponent
+    short = dataclasses.replace(BALL_CASE, required_life_h=100)
+    revolutions = 100 * 60 * 15 / 1e6
+    assert revolutions < 1
+    needed = check(untyped, short, "bearing_life").value
+    assert needed == pytest.approx(
+        check(
+            dataclasses.replace(CHA_20A_50, output_bearing_type="cross_roller"),
+            short,
+            "bearing_life",
+        ).value
+    )

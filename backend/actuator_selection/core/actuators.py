@@ -54,6 +54,10 @@ class Actuator:
         Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini).
     output_bearing_moment_stiffness_nm_per_rad
         Moment stiffness of the output bearing [Nm/rad] (FHA-C, FHA-C mini).
+    output_bearing_type
+        The output bearing's type (:class:`~actuator_selection.core.bearing.BearingType`
+        value: ``cross_roller`` or ``four_point_contact_ball``), which sets the life
+        exponent; None where not published.
     inductance_line_mh
         Winding inductance line-to-line L [mH] (CHA).
     pole_pairs
@@ -97,6 +101,7 @@ class Actuator:
     output_bearing_axial_load_n: float | None = None
     output_bearing_moment_load_nm: float | None = None
     output_bearing_moment_stiffness_nm_per_rad: float | None = None
+    output_bearing_type: str | None = None
     inductance_line_mh: float | None = None
     pole_pairs: float | None = None
     dc_bus_voltage_v: float | None = None

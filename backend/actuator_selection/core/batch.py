@@ -58,6 +58,7 @@ import numpy as np
 import numpy.typing as npt
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.bearing import life_exponent
 from actuator_selection.core.checks import (
     RULES,
     Check,
@@ -252,6 +253,7 @@ def _drive_columns(actuators: Sequence[Actuator]) -> dict[str, FloatArray]:
             [x.output_bearing_dynamic_load_rating_n for x in a]
         ),
         "bearing_static_load_rating_n": column([x.output_bearing_static_load_rating_n for x in a]),
+        "bearing_life_exponent": column([life_exponent(x.output_bearing_type) for x in a]),
         "bearing_moment_load_nm": column([x.output_bearing_moment_load_nm for x in a]),
         "bearing_dynamic_tilting_moment_nm": column(
             [x.output_bearing_dynamic_tilting_moment_nm for x in a]

@@ -13,9 +13,12 @@ easymanua.ls/harmonic-drive/fha-series/manual?p=25 and p=26):
 2. static safety factor f_s = C_0/P_0 with P_0 = X_0·(F_r + 2M/d_p) + Y_0·F_a,
    X_0 = 1, Y_0 = 0.44 (formula (9)), at least 1.5 in normal operation, 2 with shock
    or vibration, 3 for precise positioning (formula (10));
-3. life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) [h] for a cross roller bearing
-   (formula (7)), P_c = X·(F_r + 2M/d_p) + Y·F_a with X, Y = 1, 0.45 where
-   F_a/(F_r + 2M/d_p) ≤ 1.5, else 0.67, 0.67 (formula (5), CHA Table 70.4).
+3. life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^B [h] (formula (7)), P_c = X·(F_r + 2M/d_p) +
+   Y·F_a with X, Y = 1, 0.45 where F_a/(F_r + 2M/d_p) ≤ 1.5, else 0.67, 0.67 (formula (5),
+   CHA Table 70.4). The life exponent B is the bearing type's (:class:`BearingType`,
+   ISO 281 and the CHA manual 1018854 12/2015, p. 69, Table 69.3): 10/3 for a cross
+   roller bearing, 3 for the four-point contact ball bearing of the CHA-14A, -17A and
+   -20A (CHA manual 1018854 8/2018 V03, output bearing Table 55.1, type column "F").
 
 **Oscillating motion** (FHA-C formula (8), CSF manual §2-7 "life under oscillating
 movement"): L_oc = 10⁶/(60·n_1)·(90/θ)·(C/(f_w·P_c))^(10/3) with n_1 reciprocating
@@ -52,6 +55,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import Any
 
 STATIC_RADIAL_FACTOR = 1.0
@@ -65,9 +69,41 @@ RADIAL_FACTOR_LOW_AXIAL, AXIAL_FACTOR_LOW_AXIAL = 1.0, 0.45
 RADIAL_FACTOR_HIGH_AXIAL, AXIAL_FACTOR_HIGH_AXIAL = 0.67, 0.67
 """X, Y where the axial share exceeds :data:`AXIAL_RATIO_LIMIT`."""
 LIFE_EXPONENT = 10.0 / 3.0
-"""Life exponent B of a cross roller bearing (FHA-C formula (7); CHA: B = 10/3)."""
+"""Life exponent B of a cross roller bearing, a roller bearing (ISO 281: p = 10/3 for
+roller bearings; FHA-C formula (7); CHA manual 1018854 12/2015, Table 69.3: B = 10/3)."""
 LIFE_EXPONENT_INVERSE = 0.3
 """1/B, for the dynamic load rating a required life needs (3/10 exactly as a float)."""
+BALL_LIFE_EXPONENT = 3.0
+"""Life exponent B of a ball bearing, the CHA's four-point contact bearing (ISO 281: p = 3
+for ball bearings; CHA manual 1018854 12/2015, Table 69.3: B = 3)."""
+BALL_LIFE_EXPONENT_INVERSE = 1.0 / 3.0
+"""1/B of a ball bearing."""
+
+
+class BearingType(StrEnum):
+    """The type of an actuator's output bearing, as its catalogue names it: it sets the life
+    exponent B (:func:`life_exponent`)."""
+
+    CROSS_ROLLER = "cross_roller"
+    """A cross roller bearing (CHA-25A and larger; FHA-C): B = 10/3."""
+    FOUR_POINT_CONTACT_BALL = "four_point_contact_ball"
+    """A four-point contact ball bearing (CHA-14A, -17A, -20A; type "F" in the CHA output
+    bearing table): B = 3."""
+
+
+def life_exponent(bearing_type: str | None) -> float:
+    """B of the life formula for ``bearing_type``; NaN where the type is not published.
+
+    >>> life_exponent("four_point_contact_ball"), round(life_exponent("cross_roller"), 4)
+    (3.0, 3.3333)
+    """
+    if bearing_type == BearingType.FOUR_POINT_CONTACT_BALL:
+        return BALL_LIFE_EXPONENT
+    if bearing_type == BearingType.CROSS_ROLLER:
+        return LIFE_EXPONENT
+    return math.nan
+
+
 REVOLUTIONS_PER_RATING = 1e6
 """The basic dynamic load rating C is for 10⁶ revolutions (L_10)."""
 NORMAL_LOAD_FACTOR = 1.5
@@ -156,11 +192,14 @@ def dynamic_equivalent_load_n(
     return x * radial + y * axial_force_n
 
 
-def life_revolutions_factor(*, required_life_h: Any, mean_speed_rpm: Any, xp: Any) -> Any:
-    """(L_h·60·n_av/10⁶)^(3/10): the dynamic load rating a required life L_h needs, per
-    newton of f_w·P_c (FHA-C formula (7) solved for C). Depends on the case alone."""
+def life_revolutions_factor(
+    *, required_life_h: Any, mean_speed_rpm: Any, xp: Any, exponent_inverse: float = 0.3
+) -> Any:
+    """(L_h·60·n_av/10⁶)^(1/B): the dynamic load rating a required life L_h needs, per
+    newton of f_w·P_c (FHA-C formula (7) solved for C), 1/B = ``exponent_inverse``
+    (3/10 for a roller bearing, 1/3 for a ball bearing). Depends on the case alone."""
     revolutions = required_life_h * 60.0 * mean_speed_rpm / REVOLUTIONS_PER_RATING
-    return xp.pow(revolutions, LIFE_EXPONENT_INVERSE)
+    return xp.pow(revolutions, exponent_inverse)
 
 
 def oscillating_life_h(
@@ -199,15 +238,19 @@ def l10_life_h(
     load_factor: float,
     equivalent_load_n: float,
     mean_speed_rpm: float,
+    exponent: float = LIFE_EXPONENT,
 ) -> float:
-    """L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) [h] (FHA-C formula (7)); infinite without
-    load or without motion.
+    """L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^B [h] (FHA-C formula (7)), B = ``exponent`` (10/3
+    for a roller bearing, 3 for a ball bearing); infinite without load or without motion.
 
     >>> round(l10_life_h(dynamic_load_rating_n=7400, load_factor=1.5,
     ...                  equivalent_load_n=1000, mean_speed_rpm=10), 0)
     340657.0
+    >>> round(l10_life_h(dynamic_load_rating_n=7400, load_factor=1.5,
+    ...                  equivalent_load_n=1000, mean_speed_rpm=10, exponent=3.0), 0)
+    200111.0
     """
     if equivalent_load_n <= 0 or mean_speed_rpm <= 0:
         return float("inf")
     ratio = dynamic_load_rating_n / (load_factor * equivalent_load_n)
-    return REVOLUTIONS_PER_RATING / (60.0 * mean_speed_rpm) * math.pow(ratio, LIFE_EXPONENT)
+    return REVOLUTIONS_PER_RATING / (60.0 * mean_speed_rpm) * math.pow(ratio, exponent)

@@ -18,6 +18,7 @@ import re
 from collections.abc import Callable
 from enum import StrEnum
 
+from actuator_selection.core.bearing import BearingType
 from actuator_selection.core.compatibility import (
     MARK_COLUMNS,
     BusClass,
@@ -149,6 +150,7 @@ ACTUATORS = CsvSpec(
             target="output_bearing_moment_stiffness_nm_per_rad",
         ),
         Column(name="pole_pairs", numeric=True, rule=_P),
+        Column(name="output_bearing_type", max_length=40, convert=one_of(*BearingType)),
         Column(name="notes"),
         Column(name="derivation"),
         Column(name="source", required=True),
@@ -156,7 +158,8 @@ ACTUATORS = CsvSpec(
 )
 """Columns after ``feedback`` came with the second audit of public copies (revision 0006):
 allowable continuous and rated output speed, brake holding torque and the output
-bearing's data. Each is empty where no public source gives it; ``derivation`` says how a
+bearing's data; ``output_bearing_type`` (revision 0009) the bearing's type, which sets
+its life exponent. Each is empty where no public source gives it; ``derivation`` says how a
 derived value (e.g. rated output speed = rated motor speed / i) was obtained."""
 
 ZONE_POINTS = CsvSpec(

@@ -345,14 +345,22 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
     ),
     # bearing_life
     "bearing_life.pass": N_(
-        "output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life_h:.4g} h at "
+        "output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^B = {life_h:.4g} h at "
         "n_av = {mean_speed_rpm:.4g} rpm ≥ the required {required_life_h:.4g} h (P_c = "
-        "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N)"
+        "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N; "
+        "{bearing})"
     ),
     "bearing_life.fail": N_(
-        "output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^(10/3) = {life_h:.4g} h at "
+        "output bearing life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^B = {life_h:.4g} h at "
         "n_av = {mean_speed_rpm:.4g} rpm below the required {required_life_h:.4g} h (P_c = "
-        "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N)"
+        "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N; "
+        "{bearing})"
+    ),
+    "bearing_life.ball": N_("four-point contact ball bearing: B = 3"),
+    "bearing_life.roller": N_("cross roller bearing: B = 10/3"),
+    "bearing_life.unknown": N_(
+        "approximate: the bearing's type is not published, so the stricter of B = 3 (ball) "
+        "and B = 10/3 (roller)"
     ),
     # Table 521.1: one criterion of one controller (core/compatibility.py)
     "criterion.no_data": N_("no data: {criterion} unknown"),

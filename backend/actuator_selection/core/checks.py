@@ -344,6 +344,10 @@ class Operands(NamedTuple):
     """Output bearing basic dynamic load rating C [N]; NaN where not published."""
     bearing_static_load_rating_n: Real
     """Output bearing basic static load rating C_0 [N]; NaN where not published."""
+    bearing_life_exponent: Real
+    """Life exponent B of the output bearing's type: 3 for a ball, 10/3 for a roller
+    bearing (:func:`~actuator_selection.core.bearing.life_exponent`); NaN where the type is
+    not published."""
     bearing_moment_load_nm: Real
     """Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini)."""
     bearing_dynamic_tilting_moment_nm: Real
@@ -1278,37 +1282,68 @@ def _dynamic_load(q: Operands, xp: Ops) -> Real:
     )
 
 
-def _required_rating(q: Operands, xp: Ops) -> Real:
-    """C_req = f_w·P_c·(L_h·60·n_av/10⁶)^(3/10): formula (7) solved for C."""
-    factor = bearing.life_revolutions_factor(
-        required_life_h=q.required_life_h, mean_speed_rpm=q.mean_speed_rpm, xp=xp
+def _life_factor(q: Operands, xp: Ops) -> Real:
+    """(L_h·60·n_av/10⁶)^(1/B) with B of the bearing's type (3 ball, 10/3 roller); where
+    the type is not published, the larger of the two, the safe side. Both powers depend
+    on the case alone (``xp.pow`` runs on case columns); the type picks one per actuator."""
+    life, speed = q.required_life_h, q.mean_speed_rpm
+    roller = bearing.life_revolutions_factor(
+        required_life_h=life,
+        mean_speed_rpm=speed,
+        xp=xp,
+        exponent_inverse=bearing.LIFE_EXPONENT_INVERSE,
     )
-    return q.load_factor * _dynamic_load(q, xp) * factor
+    ball = bearing.life_revolutions_factor(
+        required_life_h=life,
+        mean_speed_rpm=speed,
+        xp=xp,
+        exponent_inverse=bearing.BALL_LIFE_EXPONENT_INVERSE,
+    )
+    exponent = q.bearing_life_exponent
+    by_type = xp.where(exponent == bearing.BALL_LIFE_EXPONENT, ball, roller)
+    return xp.where(xp.isnan(exponent), _larger(ball, roller, xp), by_type)
+
+
+def _required_rating(q: Operands, xp: Ops) -> Real:
+    """C_req = f_w·P_c·(L_h·60·n_av/10⁶)^(1/B): formula (7) solved for C."""
+    return q.load_factor * _dynamic_load(q, xp) * _life_factor(q, xp)
 
 
 def _life_message(q: Operands, status: Status, needed: float, c: float) -> str:
     p_c = _dynamic_load(q, FLOAT_OPS)
-    life = bearing.l10_life_h(
-        dynamic_load_rating_n=c,
-        load_factor=q.load_factor,
-        equivalent_load_n=p_c,
-        mean_speed_rpm=q.mean_speed_rpm,
-    )
+    exponent = q.bearing_life_exponent
+
+    def life(b: float) -> float:
+        return bearing.l10_life_h(
+            dynamic_load_rating_n=c,
+            load_factor=q.load_factor,
+            equivalent_load_n=p_c,
+            mean_speed_rpm=q.mean_speed_rpm,
+            exponent=b,
+        )
+
+    if math.isnan(exponent):
+        life_h = min(life(bearing.BALL_LIFE_EXPONENT), life(bearing.LIFE_EXPONENT))
+        kind = "unknown"
+    else:
+        life_h = life(exponent)
+        kind = "ball" if exponent == bearing.BALL_LIFE_EXPONENT else "roller"
     return phrase(
         f"bearing_life.{_outcome(status)}",
         value=needed,
         limit=c,
-        life_h=float(life),
+        life_h=float(life_h),
         mean_speed_rpm=q.mean_speed_rpm,
         required_life_h=q.required_life_h,
         p_c_n=float(p_c),
         load_factor=q.load_factor,
+        bearing=phrase(f"bearing_life.{kind}"),
     )
 
 
 BEARING_LIFE = Rule(
     name="bearing_life",
-    reference="CHA §4.3, Table 70.4; FHA-C manual ch. 2, formulas (5)–(7)",
+    reference="CHA §4.3, Tables 69.3, 70.4; FHA-C manual ch. 2, formulas (5)–(7); ISO 281",
     unit="N",
     value=_required_rating,
     limit=lambda q, xp: q.bearing_dynamic_load_rating_n,
@@ -1317,11 +1352,16 @@ BEARING_LIFE = Rule(
         published("bearing_offset_m", N_("output bearing offset R")),
         published("bearing_dynamic_load_rating_n", N_("output bearing dynamic load rating C")),
     ),
+    approximate=lambda q, xp: xp.isnan(q.bearing_life_exponent),
     message=_life_message,
 )
 """L_10 at the cycle's mean speed n_av ≥ the required life, checked as the dynamic load
-rating that life needs, f_w·P_c·(L_h·60·n_av/10⁶)^(3/10), against C [N]; the message
-gives L_10 in hours."""
+rating that life needs, f_w·P_c·(L_h·60·n_av/10⁶)^(1/B), against C [N]; the message
+gives L_10 in hours. B is the bearing type's life exponent (ISO 281: 3 for ball, 10/3 for
+roller bearings; CHA manual 1018854 12/2015, p. 69, Table 69.3): 3 for the four-point
+contact ball bearings of the CHA-14A, -17A and -20A, 10/3 for the cross roller bearings.
+Where the catalogue gives no type, the stricter of the two (the larger C needed), and
+the check is approximate (issue 28, item 4)."""
 
 BEARING_RULES: tuple[Rule, ...] = (BEARING_MOMENT, BEARING_STATIC)
 """The output bearing's checks where an output load is given (``Application.output_load``);

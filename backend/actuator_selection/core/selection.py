@@ -51,7 +51,7 @@ from typing import Any
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.bearing import OutputLoad
+from actuator_selection.core.bearing import OutputLoad, life_exponent
 from actuator_selection.core.checks import (
     BEARING_LIFE,
     BEARING_RULES,
@@ -419,6 +419,7 @@ def _drive_and_bearing(actuator: Actuator, app: Application, profile: Profile) -
         _value(a.output_bearing_offset_m),
         _value(a.output_bearing_dynamic_load_rating_n),
         _value(a.output_bearing_static_load_rating_n),
+        life_exponent(a.output_bearing_type),
         _value(a.output_bearing_moment_load_nm),
         _value(a.output_bearing_dynamic_tilting_moment_nm),
     )

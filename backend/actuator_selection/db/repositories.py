@@ -90,6 +90,7 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
         output_bearing_moment_stiffness_nm_per_rad=row.output_bearing_moment_stiffness_nm_per_rad,
         inductance_line_mh=row.inductance_line_mh,
         pole_pairs=row.pole_pairs,
+        output_bearing_type=row.output_bearing_type,
     )
     return ActuatorRecord(
         actuator=actuator,

@@ -102,6 +102,10 @@ class ActuatorOut(ResponseModel):
         description="moment stiffness of the output bearing [Nm/rad]"
     )
     pole_pairs: float | None = Field(description="the motor's number of pole pairs p")
+    output_bearing_type: str | None = Field(
+        description="the output bearing's type, `cross_roller` or `four_point_contact_ball`: "
+        "it sets the life exponent (10/3 or 3)"
+    )
     notes: str | None
     derivation: str | None = Field(description="how the row's derived values were obtained")
     source: str
@@ -158,6 +162,7 @@ class ActuatorOut(ResponseModel):
             output_bearing_moment_load_nm=a.output_bearing_moment_load_nm,
             output_bearing_moment_stiffness_nm_per_rad=a.output_bearing_moment_stiffness_nm_per_rad,
             pole_pairs=a.pole_pairs,
+            output_bearing_type=a.output_bearing_type,
             notes=record.notes,
             derivation=record.derivation,
             source=record.source,

@@ -81,6 +81,7 @@ class ActuatorRow(Base):
     output_bearing_moment_load_nm: Mapped[float | None] = mapped_column(Float)
     output_bearing_moment_stiffness_nm_per_rad: Mapped[float | None] = mapped_column(Float)
     pole_pairs: Mapped[float | None] = mapped_column(Float)
+    output_bearing_type: Mapped[str | None] = mapped_column(String(40))
     notes: Mapped[str | None] = mapped_column(Text)
     derivation: Mapped[str | None] = mapped_column(Text)
     source: Mapped[str] = mapped_column(Text)
