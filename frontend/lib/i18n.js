@@ -315,7 +315,7 @@ const TEXTS = {
     "seg.down": "Segment {n} nach unten",
     "seg.remove": "Segment {n} entfernen",
 
-    "options.drive": "Regler auslegen: Spitzenstrom ≤ I_max und Ausgangsspannung (Gl. 522.2/522.3, 521.2)",
+    "options.drive": "Regler auslegen: Spitzenstrom ≤ I_max (Gl. 522.2/522.3); die Ausgangsspannung (Gl. 521.2) wird immer geprüft",
     "options.output_load": "Last am Abtriebsflansch: Abtriebslager prüfen",
     "ol.legend": "Äußere Last am Abtriebsflansch",
     "ol.radial_force": "Radialkraft",
@@ -484,7 +484,6 @@ const TEXTS = {
 
     // Catalogue values a check lacks (the API's `missing`, English words): as the server's
     // German catalog words them (tests/api/test_page_words.py keeps the two equal).
-    "words.DC bus class": "Zwischenkreisklasse",
     "words.allowable continuous speed": "zulässige Dauerdrehzahl",
     "words.allowable continuous torque": "zulässiges Dauerdrehmoment",
     "words.allowable tilting moment of the output bearing": "zulässiges Kippmoment des Abtriebslagers",
@@ -492,6 +491,7 @@ const TEXTS = {
     "words.continuous stall torque T_0": "Dauerstillstandsmoment T_0",
     "words.continuous-duty zone or allowable continuous or rated speed": "Dauerbetriebsbereich oder zulässige Dauer- bzw. Nenndrehzahl",
     "words.continuous-duty zone or continuous torque": "Dauerbetriebsbereich oder Dauerdrehmoment",
+    "words.controller listed for the actuator (Table 521.1) on a DC bus class it runs on": "Servoregler, den Tabelle 521.1 für den Antrieb auf einer seiner Zwischenkreisklassen listet",
     "words.line-to-line inductance L": "Induktivität L zwischen zwei Anschlüssen",
     "words.line-to-line resistance R": "Widerstand R zwischen zwei Anschlüssen",
     "words.maximum current I_max": "Maximalstrom I_max",
@@ -819,7 +819,7 @@ const TEXTS = {
     "seg.down": "Move segment {n} down",
     "seg.remove": "Remove segment {n}",
 
-    "options.drive": "Size the drive: peak current ≤ I_max and output voltage (Eq. 522.2/522.3, 521.2)",
+    "options.drive": "Size the drive: peak current ≤ I_max (Eq. 522.2/522.3); the output voltage (Eq. 521.2) is checked always",
     "options.output_load": "Load on the output flange: check the output bearing",
     "ol.legend": "External load on the output flange",
     "ol.radial_force": "Radial force",

@@ -1343,7 +1343,7 @@ def _life_message(q: Operands, status: Status, needed: float, c: float) -> str:
 
 BEARING_LIFE = Rule(
     name="bearing_life",
-    reference="CHA §4.3, Tables 69.3, 70.4; FHA-C manual ch. 2, formulas (5)–(7); ISO 281",
+    reference="CHA §4.3, Table 69.3, Table 70.4; FHA-C manual ch. 2, formulas (5)–(7); ISO 281",
     unit="N",
     value=_required_rating,
     limit=lambda q, xp: q.bearing_dynamic_load_rating_n,
