@@ -69,3 +69,58 @@ def test_the_cha_20a_life_fails_with_exponent_3_and_the_batch_agrees(client: Tes
     lean_life = {c["name"]: c for c in lean["checks"]}["bearing_life"]
     assert (lean_life["value"], lean_life["status"]) == (life["value"], "fail")
     assert math.isfinite(lean_life["value"])
+
+
+def swinging(stroke_deg: float) -> dict[str, Any]:
+    """To and fro through ``stroke_deg``: 0.5 s ramps and 1 s at speed each way, so the
+    stroke is n·1.5 s·6 °/(rpm·s); on the CHA-20A with a light output load."""
+    speed = stroke_deg / 1.5 / 6
+    return {
+        "load": {"torque_nm": 1, "inertia_kgm2": 0.01},
+        "cycle": {
+            "segments": [
+                {"speed": speed, "duration_s": 0.5},
+                {"duration_s": 1.0},
+                {"speed": 0, "duration_s": 0.5},
+                {"duration_s": 1.0},
+                {"speed": -speed, "duration_s": 0.5},
+                {"duration_s": 1.0},
+                {"speed": 0, "duration_s": 0.5},
+                {"duration_s": 1.0},
+            ]
+        },
+        "output_load": {
+            "radial_force_n": 300,
+            "axial_force_n": 0,
+            "radial_lever_m": 0.02,
+            "axial_lever_m": 0,
+        },
+        "models": ["CHA-20A-50"],
+    }
+
+
+@pytest.mark.parametrize(("stroke", "status"), [(3.0, "warn"), (8.0, "pass")])
+def test_a_swing_below_5_degrees_warns_of_fretting_over_http(
+    client: TestClient, stroke: float, status: str
+) -> None:
+    response = client.post(API, json=swinging(stroke))
+    assert response.status_code == 201, response.text
+    (candidate,) = response.json()["candidates"]
+    checks = {c["name"]: c for c in candidate["checks"]}
+    fretting = checks["bearing_fretting"]
+    assert fretting["limit"] == pytest.approx(stroke, rel=1e-12)
+    assert (fretting["value"], fretting["status"]) == (5, status)
+    assert candidate["verdict"] == "suitable"  # a warning: the verdict stands
+    detail = client.get(f"{API}/{response.json()['id']}/candidates/CHA-20A-50").json()
+    words = {c["name"]: c for c in detail["checks"]}["bearing_fretting"]["message"]
+    if status == "warn":
+        assert words in detail["reasons"]
+        assert "fretting" in words
+    german = client.get(
+        f"{API}/{response.json()['id']}/candidates/CHA-20A-50",
+        headers={"Accept-Language": "de"},
+    ).json()
+    assert (
+        "Abtrieb schwenkt"
+        in {c["name"]: c for c in german["checks"]}["bearing_fretting"]["message"]
+    )

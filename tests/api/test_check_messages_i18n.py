@@ -274,6 +274,8 @@ VARIANTS: tuple[dict[str, Any], ...] = (
 
     {"bearing_life_exponent": 3.0},
     {"bearing_life_exponent": 10.0 / 3.0},
+    {"swing_deg": 0.0},
+    {"swing_deg": 2.0},
 )
 """Operands that lead each rule to each of its messages."""
 

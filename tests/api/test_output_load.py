@@ -57,11 +57,12 @@ def test_output_load_and_drive_add_their_checks(client: TestClient) -> None:
     assert response.status_code == 201
     answer = response.json()
     names = [r["name"] for r in answer["check_rules"]]
-    assert names[-5:] == [
+    assert names[-6:] == [
         "drive_voltage",
         "drive_current",
         "bearing_moment",
         "bearing_static_safety",
+        "bearing_fretting",
         "bearing_life",
     ]
     assert answer["output_bearing"] == "tilting moment, static safety and L_10 life checked"

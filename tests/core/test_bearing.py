@@ -327,3 +327,69 @@ def test_an_unpublished_bearing_type_takes_the_stricter_exponent_as_approximate(
             "bearing_life",
         ).value
     )
+
+
+def reciprocating(stroke_deg: float, jerk_share: float = 0.0) -> Application:
+    """To and fro through ``stroke_deg``: a trapezoidal move of 0.5 s ramps and 1 s at
+    speed each way, 1 s dwells (travel = n·1.5 s/60 rev), on the CHA-20A's output load."""
+    speed = stroke_deg / 360 / (1.5 / 60)
+    go = [
+        Segment(duration_s=0.5, start_rpm=0, end_rpm=speed, jerk_share=jerk_share),
+        Segment(duration_s=1.0, start_rpm=speed, end_rpm=speed),
+        Segment(duration_s=0.5, start_rpm=speed, end_rpm=0, jerk_share=jerk_share),
+        Segment(duration_s=1.0, start_rpm=0, end_rpm=0),
+    ]
+    back = [
+        Segment(
+            duration_s=s.duration_s,
+            start_rpm=-s.start_rpm,
+            end_rpm=-s.end_rpm,
+            jerk_share=s.jerk_share,
+        )
+        for s in go
+    ]
+    motion = Motion(segments=(*go, *back), load=AxisLoad(inertia_kgm2=0.01, friction_torque_nm=1))
+    return Application(motion=motion, output_load=LIGHT)
+
+
+@pytest.mark.parametrize(("stroke", "status"), [(4.0, Status.WARN), (6.0, Status.PASS)])
+def test_a_swing_below_5_degrees_warns_of_fretting(stroke: float, status: Status) -> None:
+    """The CHA manual warns of fretting for oscillating motion below 5°: a ±2° swing warns,
+    a ±3° one does not; the warning leaves the verdict as the other checks make it."""
+    case = reciprocating(stroke)
+    c = evaluate(CHA_20A_50, case)
+    fretting = next(k for k in c.checks if k.name == "bearing_fretting")
+    assert fretting.limit == pytest.approx(stroke, rel=1e-12)  # the stroke, first principles
+    assert (fretting.value, fretting.status) == (5.0, status)
+    without = tuple(r for r in case.rules if r.name != "bearing_fretting")
+    assert c.verdict is evaluate(CHA_20A_50, case, rules=without).verdict
+    if status is Status.WARN:
+        assert f"swings only {stroke:.3g}° per cycle, below 5°" in fretting.message
+        assert fretting.message in c.reasons
+
+
+def test_the_swing_counts_a_jerk_limited_move_and_one_way_moves() -> None:
+    # S-curve ramps: the same stroke (the ramp's term integrates to the same angle)
+    smooth = evaluate(CHA_20A_50, reciprocating(4.0, jerk_share=1.0))
+    fretting = next(k for k in smooth.checks if k.name == "bearing_fretting")
+    assert fretting.limit == pytest.approx(4.0, rel=1e-9)
+    # the chapter's trapezoid: one move of n·(t_1/2 + t_2 + t_3/2) = 30 rpm·1.2 s = 216°
+    one_way = check(CHA_20A_50, LIGHT, "bearing_fretting")
+    assert one_way.limit == pytest.approx(30 * 1.2 * 6)
+    assert one_way.status is Status.PASS
+
+
+def test_batch_equals_single_for_the_fretting_check() -> None:
+    apps = [reciprocating(s, j) for s in (1.0, 4.0, 5.0, 30.0) for j in (0.0, 0.5)]
+    apps.append(app(LIGHT))
+    actuators = [CHA_20A_50, FHA_14C_50]
+    for application in apps:
+        ev = evaluate_batch(actuators, [application], rules=application.rules)
+        for j, actuator in enumerate(actuators):
+            c = evaluate(actuator, application)
+            k = [x.name for x in c.checks].index("bearing_fretting")
+            one = c.checks[k]
+            assert ev.status(0, j, "bearing_fretting") is one.status
+            assert ev.limits[0, j, k] == one.limit
+            assert ev.values[0, j, k] == one.value
+            assert ev.verdict(0, j) is c.verdict

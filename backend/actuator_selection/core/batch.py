@@ -58,7 +58,7 @@ import numpy as np
 import numpy.typing as npt
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.bearing import life_exponent
+from actuator_selection.core.bearing import life_exponent, swing_deg
 from actuator_selection.core.checks import (
     RULES,
     Check,
@@ -351,6 +351,21 @@ def _cases(apps: Sequence[Application]) -> _Cases:
         ),
         thermal_assumed=np.array([a.thermal_time_constant_s is None for a in apps], dtype=np.bool_),
     )
+
+
+def _swing(cases: _Cases) -> FloatArray:
+    """Each case's swing (:func:`~actuator_selection.core.bearing.swing_deg`) where it has
+    an output load, NaN elsewhere, as the scalar flowchart's operands give it."""
+    loaded = ~np.isnan(cases.output_load[:, 0])
+    if not loaded.any():
+        return np.full(cases.size, math.nan)
+    p = cases.pieces
+    columns = zip(
+        p.duration.T, p.start_rpm.T, p.end_rpm.T, p.accel_start.T, p.accel_end.T, strict=True
+    )
+    with np.errstate(all="ignore"):
+        swing = swing_deg(columns, np.where)
+    return np.asarray(np.where(loaded, swing, math.nan), dtype=np.float64)
 
 
 def _output_loads(apps: Sequence[Application]) -> FloatArray:
@@ -770,6 +785,7 @@ def _evaluate_block(
         decel_s=f.braking_s[:, col],
         **cat.drive,
         **{name: cases.output_load[:, k, col] for k, name in enumerate(_OUTPUT_LOAD_FIELDS)},
+        swing_deg=_swing(cases)[:, col],
         cycle_s=f.cycle_s[:, col],
         thermal_time_constant_s=gains.time_constant,
         thermal_time_constant_assumed=gains.assumed,

@@ -58,6 +58,8 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any
 
+from actuator_selection.core.units import RAD_PER_S_PER_RPM
+
 STATIC_RADIAL_FACTOR = 1.0
 """X_0 of the static equivalent load (FHA-C manual formula (9); HD AG: x_0 = 1)."""
 STATIC_AXIAL_FACTOR = 0.44
@@ -102,6 +104,41 @@ def life_exponent(bearing_type: str | None) -> float:
     if bearing_type == BearingType.CROSS_ROLLER:
         return LIFE_EXPONENT
     return math.nan
+
+
+FRETTING_SWING_DEG = 5.0
+"""The swing below which the CHA manual warns of fretting of the output bearing under
+oscillating motion (Harmonic Drive AG, Engineering Data AC Servo Actuators CHA, 1018854
+12/2015, p. 69, note on oscillating motion): the rolling elements then move back and forth
+over the same short track, the lubricant is not renewed and the races wear (fretting
+corrosion, false brinelling)."""
+DEG_PER_RPM_S = 6.0
+"""One rpm for one second turns 360°/60 = 6°."""
+
+
+def swing_deg(pieces: Any, where: Any) -> Any:
+    """The cycle's swing [°]: the range of the output's angle over one cycle (its largest
+    less its least, from the start of the cycle), from its pieces' (duration, start speed,
+    end speed, start and end acceleration) in order, as floats of one cycle or arrays of
+    many; ``where`` is ``numpy.where`` for arrays. For a cycle that moves to and fro it is
+    the stroke, for one that moves on in one direction the move; either way below
+    :data:`FRETTING_SWING_DEG` the bearing's rolling elements only rock on a short track.
+    A piece's angle is its ∫n dt as Eq. 514.3 sums it (with the jerk ramp's term); the
+    extremes are taken at the pieces' ends, where a move reverses or stops.
+
+    >>> swing_deg([(0.1, 0.0, 10.0, 1.0, 1.0), (0.1, 10.0, 0.0, -1.0, -1.0),
+    ...            (0.1, 0.0, -10.0, -1.0, -1.0), (0.1, -10.0, 0.0, 1.0, 1.0)],
+    ...           lambda c, a, b: a if c else b)
+    6.0
+    """
+    angle = low = high = 0.0
+    for t, n0, n1, a0, a1 in pieces:
+        ramp = (a0 - a1) * (t * t) / 12.0 / RAD_PER_S_PER_RPM
+        distance = where(a0 == a1, (n0 + n1) / 2 * t, (n0 + n1) / 2 * t + ramp)
+        angle = angle + distance * DEG_PER_RPM_S
+        low = where(angle < low, angle, low)
+        high = where(angle > high, angle, high)
+    return high - low
 
 
 REVOLUTIONS_PER_RATING = 1e6

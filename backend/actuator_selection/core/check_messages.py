@@ -356,6 +356,17 @@ CHECK_MESSAGES: Final[Mapping[str, str]] = {
         "{p_c_n:.4g} N, f_w = {load_factor:.3g}; C needed {value:.4g} N, C = {limit:.4g} N; "
         "{bearing})"
     ),
+    "bearing_fretting.pass": N_(
+        "the output swings {limit:.3g}° per cycle, at least {value:.3g}°: no fretting of the "
+        "output bearing to fear from oscillating motion"
+    ),
+    "bearing_fretting.still": N_("the output does not move: no oscillating motion"),
+    "bearing_fretting.warn": N_(
+        "the output swings only {limit:.3g}° per cycle, below {value:.3g}°: the manufacturer "
+        "warns of fretting of the output bearing under such oscillating motion (the rolling "
+        "elements rock on a short track and the lubricant is not renewed); move it through a "
+        "larger angle now and then, or ask the manufacturer"
+    ),
     "bearing_life.ball": N_("four-point contact ball bearing: B = 3"),
     "bearing_life.roller": N_("cross roller bearing: B = 10/3"),
     "bearing_life.unknown": N_(

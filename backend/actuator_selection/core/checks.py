@@ -336,6 +336,9 @@ class Operands(NamedTuple):
     """The least static safety factor f_s the application needs [-]."""
     required_life_h: Real
     """The bearing life L_10 the application needs [h]; NaN where not asked."""
+    swing_deg: Real
+    """The cycle's swing [°] (:func:`~actuator_selection.core.bearing.swing_deg`); NaN
+    without an output load (the output bearing is not checked)."""
     bearing_pitch_diameter_m: Real
     """Output bearing pitch circle diameter d_p [m]; NaN where not published."""
     bearing_offset_m: Real
@@ -1363,7 +1366,35 @@ contact ball bearings of the CHA-14A, -17A and -20A, 10/3 for the cross roller b
 Where the catalogue gives no type, the stricter of the two (the larger C needed), and
 the check is approximate (issue 28, item 4)."""
 
-BEARING_RULES: tuple[Rule, ...] = (BEARING_MOMENT, BEARING_STATIC)
+# --- output bearing: fretting under oscillating motion (CHA manual, p. 69) ------------------
+
+
+def _fretting_message(q: Operands, status: Status, needed: float, swing: float) -> str:
+    if not swing > 0.0:
+        return phrase("bearing_fretting.still")
+    kind = "pass" if status is Status.PASS else "warn"  # it never fails (never binding)
+    return phrase(f"bearing_fretting.{kind}", value=needed, limit=swing)
+
+
+BEARING_FRETTING = Rule(
+    name="bearing_fretting",
+    reference="CHA manual 1018854 12/2015, p. 69",
+    unit="°",
+    value=lambda q, xp: xp.where(q.swing_deg > 0.0, bearing.FRETTING_SWING_DEG, 0.0),
+    limit=lambda q, xp: q.swing_deg,
+    requires=(),
+    binding=lambda q, xp: q.swing_deg < 0.0,  # never: a warning, the verdict stands
+    message=_fretting_message,
+)
+"""The cycle's swing (:func:`~actuator_selection.core.bearing.swing_deg`) of at least
+:data:`~actuator_selection.core.bearing.FRETTING_SWING_DEG` = 5°, checked as 5° ≤ the
+swing; a smaller swing warns (the CHA manual warns of fretting under oscillating motion
+below 5°, issue 28 item 4) and never fails: the manual gives no life for it. A cycle that
+does not move passes (value 0). The swing is the range of the output's angle over the
+cycle, so one small move repeated in one direction warns as well: on the safe side, as
+the chapter's cycle does not say whether it returns."""
+
+BEARING_RULES: tuple[Rule, ...] = (BEARING_MOMENT, BEARING_STATIC, BEARING_FRETTING)
 """The output bearing's checks where an output load is given (``Application.output_load``);
 :data:`BEARING_LIFE` joins them where a required life is given."""
 

@@ -51,7 +51,7 @@ from typing import Any
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.bearing import OutputLoad, life_exponent
+from actuator_selection.core.bearing import OutputLoad, life_exponent, swing_deg
 from actuator_selection.core.checks import (
     BEARING_LIFE,
     BEARING_RULES,
@@ -379,6 +379,10 @@ def _thermal(
     )
 
 
+def _where(condition: bool, if_true: float, if_false: float) -> float:
+    return if_true if condition else if_false
+
+
 def _value(value: float | None) -> float:
     return math.nan if value is None else value
 
@@ -391,7 +395,7 @@ def _drive_and_bearing(actuator: Actuator, app: Application, profile: Profile) -
     inductance = a.inductance_line_mh
     load = app.output_load
     if load is None:
-        forces: tuple[float, ...] = (nan,) * 7
+        forces: tuple[float, ...] = (nan,) * 8
     else:
         forces = (
             load.radial_force_n,
@@ -401,6 +405,13 @@ def _drive_and_bearing(actuator: Actuator, app: Application, profile: Profile) -
             load.load_factor,
             load.static_safety_min,
             _value(load.required_life_h),
+            swing_deg(
+                (
+                    (p.duration_s, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end)
+                    for p in profile.pieces
+                ),
+                _where,
+            ),
         )
     return (
         profile.braking_s,
