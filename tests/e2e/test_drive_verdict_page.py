@@ -10,7 +10,7 @@ from typing import Any
 import pytest
 from playwright.sync_api import Page, expect
 
-from .test_engineer_page import four_digits, post_selection
+from .test_engineer_page import fill_worked_example, four_digits, post_selection
 from .test_engineer_segments import fill_segments
 
 pytestmark = pytest.mark.browser
@@ -65,3 +65,34 @@ def test_the_belt_axis_on_a_24_v_actuator_is_unsuitable_and_the_row_names_the_vo
         f"{four_digits(voltage['value'])}\u202fV, limit {four_digits(voltage['limit'])}\u202fV"
     )
     expect(row.locator(".reasons li")).to_have_count(1)  # the one quantity that binds
+
+
+def test_the_cha_20a_bearing_life_takes_exponent_3_on_the_page(page: Page) -> None:
+    """Issue 28, item 4 on the page: the CHA-20A's four-point contact ball bearing, 2 kN at
+    20 mm, the worked example's cycle (n_av = 6.154 rpm), 200,000 h required: L_10 =
+    170,300 h with B = 3 would be 269,800 h with the 10/3 of a roller bearing; C needed
+    f_w·P_c·(L_h·60·n_av/10⁶)^(1/3) = 25,540 N > C = 24,200 N."""
+    page.goto("/")
+    fill_worked_example(page)
+    page.locator("#f-models").fill("CHA-20A-50")
+    page.locator("#f-ol").check()
+    for name, value in (
+        ("radial_force_n", "2000"),
+        ("axial_force_n", "0"),
+        ("radial_lever_m", "0.02"),
+        ("axial_lever_m", "0"),
+        ("required_life_h", "200000"),
+    ):
+        page.locator(f"#f-ol-{name}").fill(value)
+    status, body = post_selection(page)
+    assert status == 201, body
+    (candidate,) = body["candidates"]
+    life = next(c for c in candidate["checks"] if c["name"] == "bearing_life")
+    n_av = 8 / 1.3  # Eq. 514.3 for the worked example's trapezoid
+    p_c = 2000 + 2 * 2000 * (0.020 + 0.016) / 0.070
+    assert life["value"] == pytest.approx(1.5 * p_c * (200000 * 60 * n_av / 1e6) ** (1 / 3))
+    assert (life["status"], life["limit"]) == ("fail", 24200)
+    page.wait_for_selector('#detail[data-detail="ready"]')
+    row = page.locator('#checks-table tr[data-check="bearing_life"]')
+    expect(row).to_have_attribute("data-status", "fail")
+    expect(row).to_contain_text("four-point contact ball bearing: B = 3")
