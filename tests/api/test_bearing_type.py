@@ -124,3 +124,15 @@ def test_a_swing_below_5_degrees_warns_of_fretting_over_http(
         "Abtrieb schwenkt"
         in {c["name"]: c for c in german["checks"]}["bearing_fretting"]["message"]
     )
+
+
+def test_the_technical_report_lists_the_fretting_check(client: TestClient) -> None:
+    """The report PDF names every check of the answer, the new one too, in both languages."""
+    created = client.post(API, json=swinging(3.0))
+    assert created.status_code == 201, created.text
+    for language in ("en", "de"):
+        pdf = client.get(
+            f"{API}/{created.json()['id']}/report.pdf", headers={"Accept-Language": language}
+        )
+        assert pdf.status_code == 200, pdf.text
+        assert pdf.content.startswith(b"%PDF")

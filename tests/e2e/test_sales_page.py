@@ -319,12 +319,13 @@ def test_a_quote_end_to_end_in_german(sales_page: Page, site: SalesSite) -> None
         "Dauerbetriebsbereich oder Dauerdrehmoment"
     )
     # both checks that need a continuous limit lack it (continuous_duty and thermal_peak),
-    # and continuous_speed its speed
+    # continuous_speed its speed, and drive_voltage the winding's constants (no K_E in
+    # V_rms for the FHA-C)
     expect(hint.locator("span[lang=de]")).to_have_text(
         [
-            "Dauerbetriebsbereich oder Dauerdrehmoment",
-            "Dauerbetriebsbereich oder Dauerdrehmoment",
+            *["Dauerbetriebsbereich oder Dauerdrehmoment"] * 2,
             "Dauerbetriebsbereich oder zulässige Dauer- bzw. Nenndrehzahl",
+            "Spannungskonstante KE des Motors (Vrms)",
         ]
     )
     expect(page.locator("#quote-form legend")).to_have_text(

@@ -347,6 +347,10 @@ TEXT: dict[str, dict[str, str]] = {
         "en": "Output bearing: L₁₀ life ≥ required",
         "de": "Abtriebslager: Lebensdauer L₁₀ ≥ gefordert",
     },
+    "check_bearing_fretting": {
+        "en": "Output bearing: swing ≥ 5° (fretting)",
+        "de": "Abtriebslager: Schwenkwinkel ≥ 5° (Passungsrost)",
+    },
     "result_pass": {"en": "pass", "de": "bestanden"},
     "result_fail": {"en": "FAIL", "de": "NICHT BESTANDEN"},
     "result_warn": {"en": "warning", "de": "Warnung"},
