@@ -373,6 +373,10 @@ TEXT: dict[str, dict[str, str]] = {
     "ref_Eq.": {"en": "Eq.", "de": "Gl."},
     "ref_Fig.": {"en": "Fig.", "de": "Abb."},
     "ref_model": {"en": "model", "de": "Modell"},
+    "ref_with ωL·I in quadrature": {
+        "en": "with ωL·I in quadrature",
+        "de": "mit ωL·I in Quadratur",
+    },
     "catalogue_source": {"en": "Catalogue data: {source}.", "de": "Katalogdaten: {source}."},
     "selection_footer": {
         "en": "Selection {id} of {date}, made with catalogue version {version}; catalogue "
@@ -416,7 +420,9 @@ _CYCLE_FACTS = {
     "pause_s": "pause_time",
 }
 
-_REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))")
+_REFERENCE_WORD = re.compile(
+    r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))|with ωL·I in quadrature"
+)
 
 
 def negotiate_language(query: str | None, accept_language: str | None) -> Language:
@@ -508,6 +514,8 @@ class DocumentText:
         'Tabelle 515.1, Gl. 514.2 and Abb. 517.1'
         >>> DocumentText("de").reference("Fig. 520.1 (model); Eq. 514.2")
         'Abb. 520.1 (Modell); Gl. 514.2'
+        >>> DocumentText("de").reference("Eq. 521.2 with ωL·I in quadrature (560vdc bus)")
+        'Gl. 521.2 mit ωL·I in Quadratur (560vdc bus)'
         """
         return _REFERENCE_WORD.sub(lambda m: self(f"ref_{m.group(0)}"), reference)
 
