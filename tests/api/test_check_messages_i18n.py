@@ -271,7 +271,6 @@ VARIANTS: tuple[dict[str, Any], ...] = (
     {"bearing_moment_load_nm": math.nan},
     {"radial_force_n": 0.0, "axial_force_n": 0.0},
     {"no_load_torque_slope_nm_per_rpm": 0.05},
-
     {"bearing_life_exponent": 3.0},
     {"bearing_life_exponent": 10.0 / 3.0},
     {"swing_deg": 0.0},

@@ -420,9 +420,7 @@ _CYCLE_FACTS = {
     "pause_s": "pause_time",
 }
 
-_REFERENCE_WORD = re.compile(
-    r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))|with ωL·I in quadrature"
-)
+_REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))|with ωL·I in quadrature")
 
 
 def negotiate_language(query: str | None, accept_language: str | None) -> Language:
