@@ -165,7 +165,11 @@ def test_a_short_burst_above_the_rated_speed_passes() -> None:
     steps = [(52.5, 0.5), (105.0, 60.0), (52.5, 0.5), (0.0, 3600.0)]
     assert speed.value == pytest.approx(simulated_peak(steps, TAU), rel=1e-9)
     assert speed.status is Status.PASS
-    assert evaluate(cha, burst).verdict is Verdict.SUITABLE
+    # Every check passes but the drive's voltage, which needs the controllers of Table
+    # 521.1 that a bare catalogue row does not carry (the selection service adds them).
+    checks = {k.name: k.status for k in evaluate(cha, burst).checks}
+    assert checks.pop("drive_voltage") is Status.NO_DATA
+    assert set(checks.values()) == {Status.PASS}
 
 
 def test_a_short_cycle_is_judged_by_its_mean_as_the_chapter_does() -> None:
