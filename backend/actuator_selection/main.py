@@ -14,6 +14,7 @@ from starlette_compress import CompressMiddleware, add_compress_type
 
 from actuator_selection import __version__
 from actuator_selection.api import (
+    aas,
     actuators,
     admin,
     admission,
@@ -132,7 +133,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     def body_limit(module: ModuleType) -> int:
         return settings.max_bulk_body_bytes if module in bulk else settings.max_body_bytes
 
-    for module in (actuators, controllers, batch, selections, tools):
+    for module in (actuators, controllers, batch, selections, aas, tools):
         app.include_router(
             module.router,
             prefix=API_PREFIX,

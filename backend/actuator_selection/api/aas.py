@@ -1,0 +1,111 @@
+"""A stored selection as an IDTA 02021 sizing record (Asset Administration Shell)."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+from urllib.parse import quote
+
+from fastapi import APIRouter, Path, Query, Request, Response
+
+from actuator_selection.api.deps import SessionDep, catalogue_snapshot
+from actuator_selection.api.messages import localizer
+from actuator_selection.services.aas import (
+    SizingRecord,
+    record_aasx,
+    record_json,
+    sizing_record,
+)
+
+router = APIRouter(tags=["selections"])
+
+AASX_MEDIA_TYPE = "application/asset-administration-shell-package"
+
+_ERRORS: dict[int | str, dict[str, Any]] = {
+    404: {"description": "unknown selection, or a model that is no candidate of it"},
+    409: {"description": "the catalogue has changed since the selection"},
+}
+
+SelectionId = Annotated[str, Path(max_length=36)]
+ProjectName = Annotated[
+    str | None, Query(max_length=200, description="SizingProjectName (default: the selection)")
+]
+ClientName = Annotated[str, Query(max_length=200, description="ClientName")]
+Model = Annotated[
+    str | None,
+    Query(max_length=60, description="the chosen candidate (default: the first of the ranking)"),
+]
+
+
+def _record(
+    request: Request,
+    session: SessionDep,
+    selection_id: str,
+    project_name: str | None,
+    client_name: str,
+    model: str | None,
+) -> SizingRecord:
+    return sizing_record(
+        session,
+        catalogue_snapshot(request, session),
+        selection_id,
+        localizers={"en": localizer("en"), "de": localizer("de")},
+        link=str(request.url_for("get_selection", selection_id=selection_id)),
+        project_name=project_name,
+        client_name=client_name,
+        model_name=model,
+    )
+
+
+@router.get(
+    "/selections/{selection_id}/aas",
+    response_class=Response,
+    responses={
+        200: {
+            "content": {"application/json": {"schema": {"type": "object"}}},
+            "description": "AAS JSON: a shell and its IDTA 02021 PowerDriveTrainSizing "
+            "submodel (docs/aas.md)",
+        },
+        **_ERRORS,
+    },
+)
+def get_selection_aas(
+    selection_id: SelectionId,
+    request: Request,
+    session: SessionDep,
+    project_name: ProjectName = None,
+    client_name: ClientName = "",
+    model: Model = None,
+) -> Response:
+    """The selection as an IDTA 02021 "Sizing of Power Drive Trains" record, AAS JSON."""
+    record = _record(request, session, selection_id, project_name, client_name, model)
+    return Response(record_json(record), media_type="application/json")
+
+
+@router.get(
+    "/selections/{selection_id}/aas.aasx",
+    response_class=Response,
+    responses={
+        200: {
+            "content": {AASX_MEDIA_TYPE: {"schema": {"type": "string", "format": "binary"}}},
+            "description": "AASX package: the AAS JSON and the motion file "
+            "(aasx/files/MotionSection1.csv)",
+        },
+        **_ERRORS,
+    },
+)
+def get_selection_aasx(
+    selection_id: SelectionId,
+    request: Request,
+    session: SessionDep,
+    project_name: ProjectName = None,
+    client_name: ClientName = "",
+    model: Model = None,
+) -> Response:
+    """The selection as an IDTA 02021 record in an AASX package with its motion file."""
+    record = _record(request, session, selection_id, project_name, client_name, model)
+    name = quote(f"selection-{selection_id}.aasx", safe="")
+    return Response(
+        record_aasx(record),
+        media_type=AASX_MEDIA_TYPE,
+        headers={"Content-Disposition": f'attachment; filename="{name}"'},
+    )

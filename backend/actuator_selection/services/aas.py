@@ -1,0 +1,559 @@
+"""A stored selection as an IDTA 02021 "Sizing of Power Drive Trains" record (AAS, AASX).
+
+IDTA 02021 version 1.0 (IDTA, ZVEI, AutomationML; submodel semanticId
+``https://admin-shell.io/idta/PowerDriveTrainSizing/1/0``) is the Asset Administration
+Shell submodel in which machine builders, component makers and sizing tools exchange a
+drive sizing. This module writes one selection as that submodel, with the model classes
+of the Eclipse BaSyx Python SDK (``basyx.aas.model``) and its JSON and AASX writers:
+
+* ``SizingProjectInformation``: the project and client names the caller gives, this
+  service as the sizing tool, the selection's time as created and changed (a stored
+  selection never changes), its address as the project link, the catalogue version in the
+  description.
+* ``ApplicationRequirements``: one ``RotativeSection`` at the actuator output, which is
+  where the flowchart sizes (CHA p. 514): J_L, T_L (friction), T_G (the load torque that
+  acts at standstill too), the output bearing's forces and levers where given, and the
+  cycle as the motion file ``MotionSection1.csv`` (rows at the start and end of every piece
+  of constant or linear acceleration, so the profile is exact between them). A mechanism
+  is already reflected to the output there; ``TransformationMechanism`` names it with its
+  efficiency, friction coefficient, feed constant and inclination, for information.
+  ``OverallSystemRequirements`` says whether a brake is fitted.
+* ``SizingResult``: the overall system's inertias and their ratio, the chosen candidate
+  (the first of the ranking unless the caller names one) as main component with its
+  utilisations (value/limit of its checks), RMS torque and the output bearing's L_10 life,
+  the best controller of Table 521.1 for it as a second main component, and every check
+  of the candidate that did not pass or passed only approximately as a message.
+
+The template's idShorts are kept as it spells them (``RotraryTable``,
+``InternalMomentOfIntertia``, ``EnergyConsumtionPerCycle``). Where the template types a
+physical quantity ``xs:long`` while its concept description is a real measure with a unit,
+the real value is written as ``xs:double`` in the concept's unit (``docs/aas.md``).
+"""
+
+from __future__ import annotations
+
+import io
+import math
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from basyx.aas import model
+from basyx.aas.adapter import aasx
+from basyx.aas.adapter.json import json_serialization
+from sqlalchemy.orm import Session
+
+import actuator_selection
+from actuator_selection.core.motion import Piece, pieces_of
+from actuator_selection.core.units import rpm_to_rad_per_s
+from actuator_selection.db.repositories import SelectionRepository
+from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.quotes import StoredSelection
+from actuator_selection.schemas.selections import SelectionRequest
+from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.services.errors import not_found
+from actuator_selection.services.selections import candidate_detail, stored_answer_json
+
+SUBMODEL_SEMANTIC_ID = "https://admin-shell.io/idta/PowerDriveTrainSizing/1/0"
+"""IDTA 02021 version 1.0, the submodel's semanticId."""
+
+_IDTA = "https://admin-shell.io/idta/PowerDriveTrainSizing/"
+
+_SEMANTIC_IDS: Mapping[str, str] = {
+    # The template's own spelling, where it is not _IDTA + idShort + "/1/0".
+    "SizingProjectInformation": _IDTA + "SizingProjectInformation1/0",
+    "ContactInformation": "https://admin-shell.io/zvei/nameplate/1/0/ContactInformations/"
+    "ContactInformation",
+    "Time": "https://admin-shell.io/idta/TimeSeries/RelativePointInTime/1/1",
+    "RotativeSection": _IDTA + "RotativeMotionPatternSection/1/0",
+    "Environmental": _IDTA + "EnvironmentalRequirements/1/0",
+    "InternalMomentOfIntertia": _IDTA + "InternalMomentOfInertia/1/0",
+    "MovingPart": _IDTA + "RackMovingPart/1/0",
+    "BrakePresent": "0173-1#02-BAE085#007",
+    "ManufacturerName": "0173-1#02-AAO677#002",
+    "ManufacturerArticleNumber": "0173-1#02-AAO676#003",
+    "ManufacturerProductDesignation": "0173-1#02-AAW338#001",
+    "ManufacturerOrderCode": "0173-1#02-AAO227#002",
+}
+
+MOTION_FILE = "/aasx/files/MotionSection1.csv"
+"""Where the AASX holds the cycle's motion file."""
+
+MOTION_COLUMNS = (
+    ("Time", "s"),
+    ("AngularPosition", "rad"),
+    ("AngularVelocity", "rad/s"),
+    ("AngularAcceleration", "rad/s²"),
+)
+"""The motion file's columns, idShorts of ``MetadataRotativeMotionFile`` and their units."""
+
+ACTUATOR_MANUFACTURER = "Harmonic Drive"
+"""The maker of every actuator of the catalogue (its families' data sheets)."""
+
+SIZING_TOOL = f"actuator-selection {actuator_selection.__version__}"
+
+_MECHANISMS: Mapping[str, str] = {
+    "ball_screw": "SpindleDrive",
+    "ball_screw_incline": "SpindleDrive",
+    "rotary_table": "RotraryTable",
+    "rotary": "RotraryTable",
+    "belt": "BeltDrive",
+    "rack_pinion": "RackDrive",
+    "conveyor": "BeltConveyor",
+}
+"""The template's entity of each of the request's mechanisms (a lift has none)."""
+
+_UTILISATIONS = (
+    # (check, utilisation percentage idShort, idShort of the value the check compares)
+    ("peak_torque", "MaxTorqueUtilizationPercentage", "MaxTorqueUtilization"),
+    ("max_speed", "MaxRotationSpeedUtilizationPercentage", "MaxRotationSpeedUtilization"),
+    ("drive_current", "MaxCurrentUtilizationPercentage", "MaxCurrentUtilization"),
+    ("continuous_duty", "MaxThermalUtilizationPercentage", None),
+)
+"""The flowchart's checks the template has a utilisation for: T_max (Eq. 514.1), n_max,
+the drive current (Eq. 521.1), the continuous duty zone (the actuator's thermal limit)."""
+
+Localize = Callable[[str], str]
+
+
+@dataclass(frozen=True, slots=True)
+class SizingRecord:
+    """One selection as an Asset Administration Shell with its sizing submodel."""
+
+    shell: model.AssetAdministrationShell
+    submodel: model.Submodel
+    motion_csv: bytes
+
+    def store(self) -> model.DictIdentifiableStore[model.Identifiable]:
+        """The shell and the submodel, as BaSyx's writers take them."""
+        return model.DictIdentifiableStore([self.shell, self.submodel])
+
+
+def semantic_id(id_short: str) -> model.ExternalReference:
+    """The template's semanticId of an element of the submodel."""
+    value = _SEMANTIC_IDS.get(id_short, f"{_IDTA}{id_short}/1/0")
+    return model.ExternalReference((model.Key(model.KeyTypes.GLOBAL_REFERENCE, value),))
+
+
+def _real(id_short: str, value: float | None) -> list[model.Property]:
+    """A real measure in the concept's unit, or nothing where the value is unknown."""
+    if value is None or not math.isfinite(value):
+        return []
+    return [
+        model.Property(
+            id_short,
+            value_type=model.datatypes.Double,
+            value=float(value),
+            semantic_id=semantic_id(id_short),
+        )
+    ]
+
+
+def _text(id_short: str, value: str) -> model.Property:
+    return model.Property(
+        id_short, value_type=model.datatypes.String, value=value, semantic_id=semantic_id(id_short)
+    )
+
+
+def _words(id_short: str, words: Mapping[str, str]) -> model.MultiLanguageProperty:
+    return model.MultiLanguageProperty(
+        id_short, value=model.MultiLanguageTextType(dict(words)), semantic_id=semantic_id(id_short)
+    )
+
+
+def _collection(
+    id_short: str, elements: Iterable[model.SubmodelElement]
+) -> model.SubmodelElementCollection:
+    return model.SubmodelElementCollection(
+        id_short, value=list(elements), semantic_id=semantic_id(id_short)
+    )
+
+
+def _entity(
+    id_short: str,
+    statements: Iterable[model.SubmodelElement],
+    *,
+    semantic: str | None = None,
+    global_asset_id: str | None = None,
+) -> model.Entity:
+    kind = (
+        model.EntityType.CO_MANAGED_ENTITY
+        if global_asset_id is None
+        else model.EntityType.SELF_MANAGED_ENTITY
+    )
+    return model.Entity(
+        id_short,
+        entity_type=kind,
+        statement=list(statements),
+        global_asset_id=global_asset_id,
+        semantic_id=semantic_id(semantic or id_short),
+    )
+
+
+def motion_rows(pieces: Iterable[Piece]) -> list[tuple[float, float, float, float]]:
+    """(t [s], θ [rad], ω [rad/s], α [rad/s²]) at the start and end of every piece.
+
+    Within a piece the acceleration is constant or linear (``core.motion.Piece``), so
+    θ(t) = θ₀ + ω₀·t + α₀·t²/2 + (α₁ − α₀)·t²/6 is exact; where the acceleration jumps
+    between pieces the file has two rows at the same time.
+
+    The worked example (Table 516.1) turns 40 rpm·(0.1/2 + 0.1 + 0.1/2) s = 0.8378 rad:
+
+    >>> from actuator_selection.core.cycle import Load, SpeedPattern
+    >>> from actuator_selection.core.selection import Application
+    >>> pattern = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1,
+    ...                        pause_s=1.0)
+    >>> app = Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3))
+    >>> rows = motion_rows(pieces_of(app.cycle))
+    >>> [round(v, 4) for v in rows[-1]]
+    [1.3, 0.8378, 0.0, 0.0]
+    """
+    rows: list[tuple[float, float, float, float]] = []
+    time_s = angle_rad = 0.0
+    for p in pieces:
+        w0, w1 = rpm_to_rad_per_s(p.start_rpm), rpm_to_rad_per_s(p.end_rpm)
+        rows.append((time_s, angle_rad, w0, p.accel_start))
+        t = p.duration_s
+        angle_rad += w0 * t + p.accel_start * t * t / 2 + (p.accel_end - p.accel_start) * t * t / 6
+        time_s += t
+        rows.append((time_s, angle_rad, w1, p.accel_end))
+    return rows
+
+
+def motion_csv(rows: Iterable[tuple[float, ...]]) -> bytes:
+    """The motion file as IDTA 02021 §2.2.2 defines it: a heading line of ``idShort
+    [unit]``, ``;`` between columns, floats with a decimal point (Python's shortest repr,
+    so each value reads back exactly)."""
+    lines = [";".join(f"{name} [{unit}]" for name, unit in MOTION_COLUMNS)]
+    lines += [";".join(repr(float(v)) for v in row) for row in rows]
+    return ("\r\n".join(lines) + "\r\n").encode()
+
+
+def _rotative_section(stored: StoredSelection, request: SelectionRequest) -> list[Any]:
+    load, bearing = stored.load, request.output_load
+    gravity = getattr(request.load, "gravity_torque_nm", None)
+    metadata = [
+        model.Property(
+            name,
+            value_type=model.datatypes.Long,
+            value=column,
+            semantic_id=semantic_id(name),
+        )
+        for column, (name, _) in enumerate(MOTION_COLUMNS, start=1)
+    ]
+    return [
+        *_real("FrictionTorque", load.torque_nm),
+        *(
+            []
+            if bearing is None
+            else [
+                *_real("LeverArmAxialForce", bearing.axial_lever_m),
+                *_real("AxialForce", bearing.axial_force_n),
+                *_real("LeverArmRadialForce", bearing.radial_lever_m),
+                *_real("RadialForce", bearing.radial_force_n),
+            ]
+        ),
+        *_real("MomentOfInertiaOfLoad", load.inertia_kgm2),
+        *_real("LoadTorque", gravity),
+        _collection("MetadataRotativeMotionFile", metadata),
+        model.File(
+            "MotionSectionFile",
+            content_type="text/csv",
+            value=MOTION_FILE,
+            semantic_id=semantic_id("MotionSectionFile"),
+        ),
+    ]
+
+
+def _feed_constant_m(mechanism: Mapping[str, Any]) -> float | None:
+    """Travel per revolution of the mechanism's input [m/rev]: the lead, or π·D."""
+    if "lead_m" in mechanism:
+        return float(mechanism["lead_m"])
+    if "lead_mm" in mechanism:
+        return float(mechanism["lead_mm"]) / 1000
+    for key in ("pulley_diameter_mm", "pinion_diameter_mm", "roller_diameter_mm"):
+        if key in mechanism:
+            return math.pi * float(mechanism[key]) / 1000
+    return None
+
+
+def _mechanism(selection_id: str, mechanism: Mapping[str, Any] | None) -> list[model.Entity]:
+    kind = None if mechanism is None else _MECHANISMS.get(str(mechanism.get("type")))
+    if mechanism is None or kind is None:
+        return []
+    incline = mechanism.get("incline_deg")
+    pinion = mechanism.get("pinion_diameter_mm")
+    statements = [
+        *_real("Efficiency", mechanism.get("efficiency")),
+        *_real("InclinationAngle", None if incline is None else math.radians(incline)),
+        *_real("FrictionCoefficient", mechanism.get("friction_coefficient")),
+        *_real("FeedConstant", _feed_constant_m(mechanism) if kind != "RotraryTable" else None),
+        *_real("DiameterPinion", None if pinion is None else pinion / 1000),
+    ]
+    asset = f"urn:actuator-selection:selection:{selection_id}:mechanism"
+    return [_entity(kind, statements, global_asset_id=asset)]
+
+
+def _check(detail_checks: list[CheckOut], name: str) -> CheckOut | None:
+    return next((c for c in detail_checks if c.name == name), None)
+
+
+def _percent(check: CheckOut | None) -> float | None:
+    return None if check is None or check.utilisation is None else 100 * check.utilisation
+
+
+def _service_life_h(checks: list[CheckOut]) -> float | None:
+    """The output bearing's L_10 [h] as the ``bearing_life`` check's message gives it."""
+    check = _check(checks, "bearing_life")
+    life = (
+        None
+        if check is None or check.message_params is None
+        else check.message_params.get("life_h")
+    )
+    return float(life) if isinstance(life, int | float) else None
+
+
+@dataclass(frozen=True, slots=True)
+class _Chosen:
+    """The chosen candidate in full, its check messages in each language."""
+
+    checks: list[CheckOut]
+    messages: Mapping[str, list[str]]
+    detail: Any
+
+
+def _main_components(chosen: _Chosen) -> list[model.Entity]:
+    d = chosen.detail
+    checks = chosen.checks
+    utilisation: list[model.Property] = []
+    for name, percent, absolute in _UTILISATIONS:
+        check = _check(checks, name)
+        utilisation += _real(percent, _percent(check))
+        if absolute is not None and check is not None:
+            utilisation += _real(absolute, check.value)
+    actuator = _entity(
+        "MainComponent01",
+        [
+            _text("MainComponentType", "Servo actuator (motor and gear)"),
+            _text("ManufacturerName", ACTUATOR_MANUFACTURER),
+            _text("ManufacturerArticleNumber", d.model),
+            _words("ManufacturerProductDesignation", {"en": f"{d.family} {d.model}"}),
+            _text("ManufacturerOrderCode", d.model),
+            *utilisation,
+            *_real("CalculatedServiceLife", _service_life_h(checks)),
+            *_real("MassInertiaRatio", getattr(_check(checks, "inertia_ratio"), "value", None)),
+            *_real("RmsOfMotorTorque", d.rms_torque_nm),
+        ],
+        semantic="MainComponent",
+    )
+    controllers = [c for c in d.controllers if c.level != "excluded"]
+    if not controllers:
+        return [actuator]
+    c = controllers[0]
+    article = c.type if c.variant is None else f"{c.type} {c.variant}"
+    controller = _entity(
+        "MainComponent02",
+        [
+            _text("MainComponentType", "Drive controller"),
+            _text("ManufacturerName", c.manufacturer),
+            _text("ManufacturerArticleNumber", article),
+            _text("ManufacturerOrderCode", article),
+        ],
+        semantic="MainComponent",
+    )
+    return [actuator, controller]
+
+
+def _messages(chosen: _Chosen) -> model.SubmodelElementCollection:
+    """Each check of the chosen candidate that failed, warned, lacked data or passed only
+    approximately, its words in English and German."""
+    entries = []
+    for i, check in enumerate(chosen.checks):
+        if check.status == "pass" and not check.approximate:
+            continue
+        criticality = "error" if check.status == "fail" else "warning"
+        text = {lang: words[i] for lang, words in chosen.messages.items()}
+        entries.append((criticality, text))
+    return _collection(
+        "Messages",
+        [
+            model.SubmodelElementCollection(
+                f"Message{n:02d}",
+                value=[_text("CriticalityOfMessage", crit), _words("MessageText", text)],
+                semantic_id=semantic_id("Message"),
+            )
+            for n, (crit, text) in enumerate(entries, start=1)
+        ],
+    )
+
+
+def sizing_record(
+    session: Session,
+    catalogue: CatalogueSnapshot,
+    selection_id: str,
+    *,
+    localizers: Mapping[str, Localize],
+    link: str,
+    project_name: str | None = None,
+    client_name: str = "",
+    model_name: str | None = None,
+) -> SizingRecord:
+    """The IDTA 02021 record of a stored selection (module docstring); 404 when there is
+    none, 409 when the catalogue has changed since (as the candidate's detail)."""
+    answer = stored_answer_json(session, selection_id)
+    stored_request = SelectionRepository(session).request(selection_id)
+    if answer is None or stored_request is None:
+        raise not_found(["path", "selection_id"], "unknown_selection", selection_id=selection_id)
+    stored = StoredSelection.model_validate(answer)
+    request = SelectionRequest.model_validate(stored_request[0])
+    app = request.to_core()
+    chosen_model = model_name or stored.candidates[0].model
+    details = {
+        lang: candidate_detail(session, catalogue, selection_id, chosen_model, localize)
+        for lang, localize in localizers.items()
+    }
+    first = next(iter(details.values()))
+    chosen = _Chosen(
+        checks=first.checks,
+        messages={lang: [c.message for c in d.checks] for lang, d in details.items()},
+        detail=first,
+    )
+    rows = motion_rows(pieces_of(app.profile.motion))
+
+    created = stored.created_at
+    trapezoid = stored.cycle.is_trapezoid
+    information = _collection(
+        "SizingProjectInformation",
+        [
+            _text("ClientName", client_name),
+            _text("SizingProjectName", project_name or f"Selection {selection_id}"),
+            _words(
+                "SizingProjectDescription",
+                {
+                    "en": f"Harmonic Drive servo actuator selection {selection_id}, "
+                    f"catalogue version {stored.catalogue_version}",
+                },
+            ),
+            model.File(
+                "SizingProjectLink",
+                content_type="application/json",
+                value=link,
+                semantic_id=semantic_id("SizingProjectLink"),
+            ),
+            _text("SizingToolName", SIZING_TOOL),
+            model.Property(
+                "DateCreated",
+                value_type=model.datatypes.DateTime,
+                value=created,
+                semantic_id=semantic_id("DateCreated"),
+            ),
+            model.Property(
+                "DateChanged",
+                value_type=model.datatypes.DateTime,
+                value=created,
+                semantic_id=semantic_id("DateChanged"),
+            ),
+            _collection("ContactInformation", []),
+        ],
+    )
+    requirements = _collection(
+        "ApplicationRequirements",
+        [
+            _collection(
+                "MotionPattern",
+                [
+                    _text("MotionPatternName", "trapezoid" if trapezoid else "segments"),
+                    _collection(
+                        "MotionPatternSections",
+                        [_collection("RotativeSection", _rotative_section(stored, request))],
+                    ),
+                ],
+            ),
+            _collection(
+                "OverallSystemRequirements",
+                [_text("BrakePresent", "true" if request.brake else "false")],
+            ),
+        ],
+    )
+    mechanism = _mechanism(selection_id, stored.mechanism)
+    actuator_inertia = first.actuator.inertia_kgm2
+    overall = _entity(
+        "OverallSystem",
+        [
+            *_real("ExternalMomentOfInertia", stored.load.inertia_kgm2),
+            *_real("InternalMomentOfIntertia", actuator_inertia),
+            *_real(
+                "MassInertiaRatio", getattr(_check(chosen.checks, "inertia_ratio"), "value", None)
+            ),
+        ],
+    )
+    verdicts = {lang: d.reasons for lang, d in details.items()}
+    result = _collection(
+        "SizingResult",
+        [
+            overall,
+            *_main_components(chosen),
+            _messages(chosen),
+            _words(
+                "TextStatement",
+                {
+                    lang: f"{chosen_model}: {first.verdict}"
+                    + ("" if not reasons else " — " + "; ".join(reasons))
+                    for lang, reasons in verdicts.items()
+                },
+            ),
+        ],
+    )
+    submodel = model.Submodel(
+        f"urn:actuator-selection:selection:{selection_id}:sizing",
+        id_short="PowerDriveTrainSizing",
+        semantic_id=model.ExternalReference(
+            (model.Key(model.KeyTypes.GLOBAL_REFERENCE, SUBMODEL_SEMANTIC_ID),)
+        ),
+        administration=model.AdministrativeInformation(version="1", revision="0"),
+        kind=model.ModellingKind.INSTANCE,
+        submodel_element=[
+            information,
+            requirements,
+            *([_collection("TransformationMechanism", mechanism)] if mechanism else []),
+            result,
+        ],
+    )
+    shell = model.AssetAdministrationShell(
+        model.AssetInformation(
+            model.AssetKind.INSTANCE,
+            global_asset_id=f"urn:actuator-selection:selection:{selection_id}",
+        ),
+        f"urn:actuator-selection:selection:{selection_id}:aas",
+        id_short="SizingProject",
+        submodel={model.ModelReference.from_referable(submodel)},
+    )
+    return SizingRecord(shell=shell, submodel=submodel, motion_csv=motion_csv(rows))
+
+
+class _Encoder(json_serialization.AASToJsonEncoder):
+    """BaSyx's JSON encoder, without the empty ``specificAssetIds`` it writes for every
+    entity (the metamodel wants the list absent or not empty)."""
+
+    @classmethod
+    def _entity_to_json(cls, obj: model.Entity) -> dict[str, object]:
+        data = super()._entity_to_json(obj)
+        if not data.get("specificAssetIds"):
+            data.pop("specificAssetIds", None)
+        return data
+
+
+def record_json(record: SizingRecord) -> bytes:
+    """The record as AAS JSON (shell and submodel; the motion file is the AASX's)."""
+    return json_serialization.object_store_to_json(record.store(), encoder=_Encoder).encode()
+
+
+def record_aasx(record: SizingRecord) -> bytes:
+    """The record as an AASX package, the motion file at :data:`MOTION_FILE`; the model
+    as XML, which BaSyx writes without the JSON encoder's empty lists."""
+    files = aasx.DictSupplementaryFileContainer()  # type: ignore[no-untyped-call]
+    files.add_file(MOTION_FILE, io.BytesIO(record.motion_csv), "text/csv")
+    buffer = io.BytesIO()
+    with aasx.AASXWriter(buffer) as writer:
+        writer.write_aas(record.shell.id, record.store(), files)
+    return buffer.getvalue()
