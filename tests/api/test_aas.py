@@ -334,3 +334,22 @@ def test_names_given_and_an_unknown_selection(client: TestClient) -> None:
     long_name = client.get(url, params={"project_name": "x" * 201})
     assert long_name.status_code == 422
     assert long_name.json()["detail"][0]["loc"] == ["query", "project_name"]
+
+
+def test_text_the_record_cannot_hold_and_a_model_that_is_no_candidate(client: TestClient) -> None:
+    answer = _selection(client)
+    for suffix in ("aas", "aas.aasx"):
+        url = f"/api/v1/selections/{answer['id']}/{suffix}"
+        for bad in ("a\x01b", "a\ufffeb"):
+            response = client.get(url, params={"client_name": bad})
+            assert response.status_code == 422, (suffix, bad, response.text)
+            assert response.json()["detail"][0]["loc"] == ["query", "client_name"]
+        response = client.get(url, params={"model": "NO-SUCH-MODEL"})
+        assert response.status_code == 422, response.text
+        entry = response.json()["detail"][0]
+        assert entry["loc"] == ["query", "model"]
+        assert entry["code"] == "not_a_candidate"
+        german = client.get(
+            url, params={"model": "NO-SUCH-MODEL"}, headers={"Accept-Language": "de"}
+        )
+        assert german.json()["detail"][0]["msg"] != entry["msg"]

@@ -9,6 +9,7 @@ from fastapi import APIRouter, Path, Query, Request, Response
 
 from actuator_selection.api.deps import SessionDep, catalogue_snapshot
 from actuator_selection.api.messages import localizer
+from actuator_selection.schemas.aas import AasRecordQuery
 from actuator_selection.services.aas import (
     SizingRecord,
     record_aasx,
@@ -21,28 +22,16 @@ router = APIRouter(tags=["selections"])
 AASX_MEDIA_TYPE = "application/asset-administration-shell-package"
 
 _ERRORS: dict[int | str, dict[str, Any]] = {
-    404: {"description": "unknown selection, or a model that is no candidate of it"},
+    404: {"description": "unknown selection"},
     409: {"description": "the catalogue has changed since the selection"},
 }
 
 SelectionId = Annotated[str, Path(max_length=36)]
-ProjectName = Annotated[
-    str | None, Query(max_length=200, description="SizingProjectName (default: the selection)")
-]
-ClientName = Annotated[str, Query(max_length=200, description="ClientName")]
-Model = Annotated[
-    str | None,
-    Query(max_length=60, description="the chosen candidate (default: the first of the ranking)"),
-]
+RecordQuery = Annotated[AasRecordQuery, Query()]
 
 
 def _record(
-    request: Request,
-    session: SessionDep,
-    selection_id: str,
-    project_name: str | None,
-    client_name: str,
-    model: str | None,
+    request: Request, session: SessionDep, selection_id: str, query: AasRecordQuery
 ) -> SizingRecord:
     return sizing_record(
         session,
@@ -50,9 +39,9 @@ def _record(
         selection_id,
         localizers={"en": localizer("en"), "de": localizer("de")},
         link=str(request.url_for("get_selection", selection_id=selection_id)),
-        project_name=project_name,
-        client_name=client_name,
-        model_name=model,
+        project_name=query.project_name,
+        client_name=query.client_name,
+        model_name=query.model,
     )
 
 
@@ -72,12 +61,10 @@ def get_selection_aas(
     selection_id: SelectionId,
     request: Request,
     session: SessionDep,
-    project_name: ProjectName = None,
-    client_name: ClientName = "",
-    model: Model = None,
+    query: RecordQuery,
 ) -> Response:
     """The selection as an IDTA 02021 "Sizing of Power Drive Trains" record, AAS JSON."""
-    record = _record(request, session, selection_id, project_name, client_name, model)
+    record = _record(request, session, selection_id, query)
     return Response(record_json(record), media_type="application/json")
 
 
@@ -97,12 +84,10 @@ def get_selection_aasx(
     selection_id: SelectionId,
     request: Request,
     session: SessionDep,
-    project_name: ProjectName = None,
-    client_name: ClientName = "",
-    model: Model = None,
+    query: RecordQuery,
 ) -> Response:
     """The selection as an IDTA 02021 record in an AASX package with its motion file."""
-    record = _record(request, session, selection_id, project_name, client_name, model)
+    record = _record(request, session, selection_id, query)
     name = quote(f"selection-{selection_id}.aasx", safe="")
     return Response(
         record_aasx(record),

@@ -51,7 +51,7 @@ from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.quotes import StoredSelection
 from actuator_selection.schemas.selections import SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
-from actuator_selection.services.errors import not_found
+from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.selections import candidate_detail, stored_answer_json
 
 SUBMODEL_SEMANTIC_ID = "https://admin-shell.io/idta/PowerDriveTrainSizing/1/0"
@@ -89,6 +89,9 @@ MOTION_COLUMNS = (
 
 ACTUATOR_MANUFACTURER = "Harmonic Drive"
 """The maker of every actuator of the catalogue (its families' data sheets)."""
+
+SHOWN_CANDIDATES = 10
+"""Candidates an error names when the chosen model is none of them."""
 
 SIZING_TOOL = f"actuator-selection {actuator_selection.__version__}"
 
@@ -408,6 +411,16 @@ def sizing_record(
     request = SelectionRequest.model_validate(stored_request[0])
     app = request.to_core()
     chosen_model = model_name or stored.candidates[0].model
+    if all(c.model != chosen_model for c in stored.candidates):
+        usable = [c.model for c in stored.candidates if c.verdict != "unsuitable"]
+        raise invalid(
+            ["query", "model"],
+            "not_a_candidate" if usable else "no_usable_candidate",
+            "not_a_candidate",
+            model=chosen_model,
+            selection_id=selection_id,
+            **({"models": usable[:SHOWN_CANDIDATES]} if usable else {}),
+        )
     details = {
         lang: candidate_detail(session, catalogue, selection_id, chosen_model, localize)
         for lang, localize in localizers.items()
