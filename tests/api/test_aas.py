@@ -14,6 +14,7 @@ import json
 import math
 import re
 from collections.abc import Iterator
+from datetime import datetime
 from functools import cache
 from pathlib import Path
 from typing import Any
@@ -223,7 +224,7 @@ def test_the_aasx_holds_the_same_record(client: TestClient) -> None:
     assert object_store_to_json(model.DictIdentifiableStore([from_aasx])) == (
         object_store_to_json(model.DictIdentifiableStore([from_json]))
     )
-    assert set(files) == {"/aasx/files/MotionSection1.csv"}
+    assert set(files) == {"/aasx/files/MotionSection1.csv", "/aasx/files/selection-request.json"}
 
 
 def _motion_rows(csv_bytes: bytes) -> tuple[list[str], list[list[float]]]:
@@ -240,10 +241,9 @@ def test_values_are_the_stored_answers(client: TestClient) -> None:
         "/SizingProjectInformation",
         ("/ApplicationRequirements/MotionPattern/MotionPatternSections/RotativeSection"),
     )
-    assert _value(e, f"{info}/DateCreated").isoformat() == answer["created_at"].replace(
-        "Z", "+00:00"
-    )
-    link = e[f"{info}/SizingProjectLink"]
+    created = datetime.fromisoformat(answer["created_at"].replace("Z", "+00:00"))
+    assert _value(e, f"{info}/DateCreated") == created
+    link = e[f"{info}/SizingProjectLink01"]
     assert isinstance(link, model.File)
     assert link.value is not None
     assert link.value.endswith(f"/api/v1/selections/{answer['id']}")
@@ -353,3 +353,116 @@ def test_text_the_record_cannot_hold_and_a_model_that_is_no_candidate(client: Te
             url, params={"model": "NO-SUCH-MODEL"}, headers={"Accept-Language": "de"}
         )
         assert german.json()["detail"][0]["msg"] != entry["msg"]
+
+
+def _same_answer(a: dict[str, Any], b: dict[str, Any]) -> None:
+    """Two answers of one load case: everything but the id and the time is equal."""
+    assert {k: v for k, v in a.items() if k not in ("id", "created_at")} == {
+        k: v for k, v in b.items() if k not in ("id", "created_at")
+    }
+
+
+@pytest.mark.parametrize(
+    "changes",
+    [
+        {},
+        {
+            "load": {
+                "type": "ball_screw",
+                "speed_rpm": 40,
+                "mass_kg": 50,
+                "lead_m": 0.01,
+                "friction_coefficient": 0.05,
+                "efficiency": 0.9,
+            }
+        },
+    ],
+)
+def test_an_exported_record_imports_to_the_same_answer(
+    client: TestClient, changes: dict[str, Any]
+) -> None:
+    answer = _selection(client, **changes)
+    package = client.get(f"/api/v1/selections/{answer['id']}/aas.aasx").content
+    response = client.post(
+        "/api/v1/selections/from-aas",
+        content=package,
+        headers={"Content-Type": "application/asset-administration-shell-package"},
+    )
+    assert response.status_code == 201, response.text
+    again = response.json()
+    assert again["id"] != answer["id"]
+    _same_answer(again, answer)
+
+
+def _other_tools_record(inertia_kgm2: float, friction_nm: float, csv_text: str) -> bytes:
+    """An AASX as another AAS tool writes it: the IDTA template read by BaSyx, made an
+    instance, its rotative section filled in, the motion file beside it."""
+    store = read_aas_json_file(str(TEMPLATE), failsafe=False)
+    sm = next(o for o in store if isinstance(o, model.Submodel))
+    sm.kind = model.ModellingKind.INSTANCE
+    section = sm.get_referable(
+        ["ApplicationRequirements", "MotionPattern", "MotionPatternSections", "RotativeSection"]
+    )
+    assert isinstance(section, model.SubmodelElementCollection)
+    for id_short, value in (
+        ("MomentOfInertiaOfLoad", inertia_kgm2),
+        ("FrictionTorque", friction_nm),
+    ):
+        prop = section.get_referable(id_short)
+        assert isinstance(prop, model.Property)
+        prop.value_type = model.datatypes.Double
+        prop.value = value
+    motion = section.get_referable("MotionSectionFile")
+    assert isinstance(motion, model.File)
+    motion.value = "/aasx/files/Axis1.csv"
+    files = aasx.DictSupplementaryFileContainer()  # type: ignore[no-untyped-call]
+    files.add_file("/aasx/files/Axis1.csv", io.BytesIO(csv_text.encode()), "text/csv")
+    shell = next(o for o in store if isinstance(o, model.AssetAdministrationShell))
+    buffer = io.BytesIO()
+    with aasx.AASXWriter(buffer) as writer:
+        writer.write_aas(shell.id, store, files)
+    return buffer.getvalue()
+
+
+def test_a_record_another_tool_wrote_imports(client: TestClient) -> None:
+    # The worked example's cycle (Table 516.1): 0 → 40 rpm in 0.1 s, 0.1 s at speed,
+    # to 0 in 0.1 s, 1 s pause; ω in rad/s as IDTA 02021 writes it.
+    w = 40 * 2 * math.pi / 60
+    csv_text = (
+        "Time [s];AngularPosition [rad];AngularVelocity [rad/s];AngularAcceleration [rad/s²]\n"
+        f"0.0;0;0;0\n0.1;0;{w};0\n0.2;0;{w};0\n0.3;0;0;0\n1.3;0;0;0\n"
+    )
+    response = client.post(
+        "/api/v1/selections/from-aas",
+        content=_other_tools_record(1.3, 5.0, csv_text),
+        headers={"Content-Type": "application/asset-administration-shell-package"},
+    )
+    assert response.status_code == 201, response.text
+    imported = response.json()
+    assert imported["load"]["inertia_kgm2"] == 1.3
+    assert imported["load"]["torque_nm"] == 5.0
+    assert imported["load"]["speed_rpm"] == pytest.approx(40, rel=1e-12)
+    assert imported["cycle_time_s"] == pytest.approx(1.3, rel=1e-12)
+    # The worked example's actuator (Table 516.3) is sized as the chapter sizes it.
+    direct = _selection(client)
+    by_model = {c["model"]: c for c in direct["candidates"]}
+    for c in imported["candidates"]:
+        assert c["verdict"] == by_model[c["model"]]["verdict"], c["model"]
+        assert c["rms_torque_nm"] == pytest.approx(by_model[c["model"]]["rms_torque_nm"], rel=1e-9)
+
+
+def test_a_record_that_is_not_one(client: TestClient) -> None:
+    url = "/api/v1/selections/from-aas"
+    for content, code in (
+        (b"not a record", "aas_unreadable"),
+        (b'{"assetAdministrationShells": [], "submodels": []}', "aas_no_sizing_submodel"),
+    ):
+        response = client.post(url, content=content, headers={"Content-Type": "application/json"})
+        assert response.status_code == 422, response.text
+        assert response.json()["detail"][0]["code"] == code
+        german = client.post(
+            url,
+            content=content,
+            headers={"Content-Type": "application/json", "Accept-Language": "de"},
+        )
+        assert german.json()["detail"][0]["msg"] != response.json()["detail"][0]["msg"]

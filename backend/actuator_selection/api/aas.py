@@ -6,16 +6,23 @@ from typing import Annotated, Any
 from urllib.parse import quote
 
 from fastapi import APIRouter, Path, Query, Request, Response
+from fastapi.exceptions import RequestValidationError
+from pydantic import ValidationError
+from starlette.concurrency import run_in_threadpool
 
-from actuator_selection.api.deps import SessionDep, catalogue_snapshot
+from actuator_selection.api.deps import SessionDep, catalogue_snapshot, reads_only
 from actuator_selection.api.messages import localizer
+from actuator_selection.api.selections import create_selection
 from actuator_selection.schemas.aas import AasRecordQuery
+from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.aas import (
+    SUBMODEL_SEMANTIC_ID,
     SizingRecord,
     record_aasx,
     record_json,
     sizing_record,
 )
+from actuator_selection.services.aas_import import request_from_record
 
 router = APIRouter(tags=["selections"])
 
@@ -94,3 +101,56 @@ def get_selection_aasx(
         media_type=AASX_MEDIA_TYPE,
         headers={"Content-Disposition": f'attachment; filename="{name}"'},
     )
+
+
+_JSON_EXAMPLE = {
+    "assetAdministrationShells": [],
+    "submodels": [
+        {
+            "modelType": "Submodel",
+            "id": "urn:example:sizing",
+            "idShort": "PowerDriveTrainSizing",
+            "semanticId": {
+                "type": "ExternalReference",
+                "keys": [{"type": "GlobalReference", "value": SUBMODEL_SEMANTIC_ID}],
+            },
+            "submodelElements": [],
+        }
+    ],
+}
+"""The shape of an AAS JSON record (an AASX carries the motion file it needs)."""
+
+
+@router.post(
+    "/selections/from-aas",
+    status_code=201,
+    response_model=SelectionOut,
+    openapi_extra={
+        "requestBody": {
+            "required": True,
+            "content": {
+                AASX_MEDIA_TYPE: {
+                    "schema": {"type": "string", "format": "binary"},
+                    "example": "(the AASX package, as GET /selections/{id}/aas.aasx writes it)",
+                },
+                "application/json": {"schema": {"type": "object"}, "example": _JSON_EXAMPLE},
+            },
+        }
+    },
+    responses={422: {"description": "a record that cannot be read or lacks the axis"}},
+)
+@reads_only  # no request transaction: it writes in its own (services.selections)
+async def create_selection_from_aas(request: Request) -> Response:
+    """Size the axis an IDTA 02021 record (AASX or AAS JSON) describes, and store it."""
+    content = await request.body()
+    return await run_in_threadpool(_size_record, content, request)
+
+
+def _size_record(content: bytes, request: Request) -> Response:
+    wanted = request_from_record(content)
+    try:
+        body = SelectionRequest.model_validate(wanted)
+    except ValidationError as exc:
+        errors = [{**e, "loc": ("body", *e["loc"])} for e in exc.errors()]
+        raise RequestValidationError(errors) from None
+    return create_selection(body, request)

@@ -8,8 +8,8 @@ of the Eclipse BaSyx Python SDK (``basyx.aas.model``) and its JSON and AASX writ
 
 * ``SizingProjectInformation``: the project and client names the caller gives, this
   service as the sizing tool, the selection's time as created and changed (a stored
-  selection never changes), its address as the project link, the catalogue version in the
-  description.
+  selection never changes), its address and (in the AASX) its request as project links,
+  the catalogue version in the description.
 * ``ApplicationRequirements``: one ``RotativeSection`` at the actuator output, which is
   where the flowchart sizes (CHA p. 514): J_L, T_L (friction), T_G (the load torque that
   acts at standstill too), the output bearing's forces and levers where given, and the
@@ -33,6 +33,7 @@ the real value is written as ``xs:double`` in the concept's unit (``docs/aas.md`
 from __future__ import annotations
 
 import io
+import json
 import math
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
@@ -78,6 +79,10 @@ _SEMANTIC_IDS: Mapping[str, str] = {
 
 MOTION_FILE = "/aasx/files/MotionSection1.csv"
 """Where the AASX holds the cycle's motion file."""
+
+REQUEST_FILE = "/aasx/files/selection-request.json"
+"""Where the AASX holds the selection request, this tool's own project data (a
+``SizingProjectLink``), which an import sizes again (``services.aas_import``)."""
 
 MOTION_COLUMNS = (
     ("Time", "s"),
@@ -126,6 +131,7 @@ class SizingRecord:
     shell: model.AssetAdministrationShell
     submodel: model.Submodel
     motion_csv: bytes
+    request_json: bytes
 
     def store(self) -> model.DictIdentifiableStore[model.Identifiable]:
         """The shell and the submodel, as BaSyx's writers take them."""
@@ -448,9 +454,15 @@ def sizing_record(
                 },
             ),
             model.File(
-                "SizingProjectLink",
+                "SizingProjectLink01",
                 content_type="application/json",
                 value=link,
+                semantic_id=semantic_id("SizingProjectLink"),
+            ),
+            model.File(
+                "SizingProjectLink02",
+                content_type="application/json",
+                value=REQUEST_FILE,
                 semantic_id=semantic_id("SizingProjectLink"),
             ),
             _text("SizingToolName", SIZING_TOOL),
@@ -541,7 +553,12 @@ def sizing_record(
         id_short="SizingProject",
         submodel={model.ModelReference.from_referable(submodel)},
     )
-    return SizingRecord(shell=shell, submodel=submodel, motion_csv=motion_csv(rows))
+    return SizingRecord(
+        shell=shell,
+        submodel=submodel,
+        motion_csv=motion_csv(rows),
+        request_json=json.dumps(stored_request[0]).encode(),
+    )
 
 
 class _Encoder(json_serialization.AASToJsonEncoder):
@@ -562,10 +579,12 @@ def record_json(record: SizingRecord) -> bytes:
 
 
 def record_aasx(record: SizingRecord) -> bytes:
-    """The record as an AASX package, the motion file at :data:`MOTION_FILE`; the model
+    """The record as an AASX package, the motion file at :data:`MOTION_FILE` and the
+    request at :data:`REQUEST_FILE`; the model
     as XML, which BaSyx writes without the JSON encoder's empty lists."""
     files = aasx.DictSupplementaryFileContainer()  # type: ignore[no-untyped-call]
     files.add_file(MOTION_FILE, io.BytesIO(record.motion_csv), "text/csv")
+    files.add_file(REQUEST_FILE, io.BytesIO(record.request_json), "application/json")
     buffer = io.BytesIO()
     with aasx.AASXWriter(buffer) as writer:
         writer.write_aas(record.shell.id, record.store(), files)

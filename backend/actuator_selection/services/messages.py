@@ -61,6 +61,12 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
         "for a new quote"
     ),
     "valid_until_past": N_("must be today ({today}) or later"),
+    # IDTA 02021 records (services/aas_import.py)
+    "aas_unreadable": N_("is neither an AASX package nor AAS JSON that can be read: {reason}"),
+    "aas_no_sizing_submodel": N_("holds no IDTA 02021 sizing submodel (semanticId {semantic_id})"),
+    "aas_missing_element": N_("the sizing record lacks {path}"),
+    "aas_not_a_number": N_("{path} of the sizing record is not a finite number"),
+    "aas_motion_file": N_("the motion file {path} cannot be read: {reason}"),
     "not_a_candidate": N_(
         "'{model}' is not a candidate of selection {selection_id}; its usable candidates "
         "include {models}"

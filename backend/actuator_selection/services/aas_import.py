@@ -1,0 +1,191 @@
+"""A selection request read from an IDTA 02021 sizing record (AASX or AAS JSON).
+
+A record this service wrote carries its selection request as the sizing tool's own
+project file (``SizingProjectLink``, "resource for storing data of a sizing
+application", :data:`services.aas.REQUEST_FILE`): that request is sized again, so the
+answer is the one exported. Any other record describes one axis by its
+``ApplicationRequirements``: the first ``RotativeSection`` gives J_L
+(``MomentOfInertiaOfLoad``), T_L (``FrictionTorque``) and T_G (``LoadTorque``) at the
+actuator output, and its motion file (``MotionSectionFile``, IDTA 02021 §2.2.2: ``;``
+between columns, headings ``idShort [unit]``) the cycle: each pair of rows at different
+times is a segment at constant acceleration from the one speed to the other.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import itertools
+import json
+import math
+import zipfile
+from collections.abc import Iterable
+from typing import Any
+
+from basyx.aas import model
+from basyx.aas.adapter import aasx
+from basyx.aas.adapter.json import read_aas_json_file
+
+from actuator_selection.services.aas import REQUEST_FILE, SUBMODEL_SEMANTIC_ID
+from actuator_selection.services.errors import UseCaseError, invalid
+
+Store = model.DictIdentifiableStore[model.Identifiable]
+
+_SECTION = ("ApplicationRequirements", "MotionPattern", "MotionPatternSections")
+_VELOCITY_HEADER = "AngularVelocity [rad/s]"
+_TIME_HEADER = "Time [s]"
+
+
+def _unreadable(reason: str) -> UseCaseError:
+    return invalid(["body"], "aas_unreadable", reason=reason)
+
+
+def _read(content: bytes) -> tuple[Store, aasx.DictSupplementaryFileContainer]:
+    """The model and the package's files (none for JSON) by BaSyx's readers."""
+    store: Store = model.DictIdentifiableStore()
+    files = aasx.DictSupplementaryFileContainer()  # type: ignore[no-untyped-call]
+    try:
+        if zipfile.is_zipfile(io.BytesIO(content)):
+            with aasx.AASXReader(io.BytesIO(content), failsafe=False) as reader:
+                reader.read_into(store, files)
+        else:
+            store = read_aas_json_file(io.StringIO(content.decode("utf-8")), failsafe=False)
+    except (ValueError, KeyError, TypeError, zipfile.BadZipFile, UnicodeDecodeError) as exc:
+        raise _unreadable(f"{type(exc).__name__}: {exc}"[:300]) from None
+    return store, files
+
+
+def _sizing_submodel(store: Store) -> model.Submodel:
+    for obj in store:
+        semantic = obj.semantic_id if isinstance(obj, model.Submodel) else None
+        if semantic is not None and any(k.value == SUBMODEL_SEMANTIC_ID for k in semantic.key):
+            assert isinstance(obj, model.Submodel)
+            return obj
+    raise invalid(["body"], "aas_no_sizing_submodel", semantic_id=SUBMODEL_SEMANTIC_ID)
+
+
+def _children(element: model.Referable) -> Iterable[model.SubmodelElement]:
+    if isinstance(element, model.Submodel):
+        return element.submodel_element
+    if isinstance(element, model.SubmodelElementCollection):
+        return element.value
+    if isinstance(element, model.Entity):
+        return element.statement
+    return ()
+
+
+def _child(element: model.Referable, id_short: str) -> model.SubmodelElement | None:
+    """The child ``id_short``, or the first numbered one (``RotativeSection01``)."""
+    children = list(_children(element))
+    exact = next((c for c in children if c.id_short == id_short), None)
+    if exact is not None:
+        return exact
+    return next(
+        (
+            c
+            for c in children
+            if c.id_short is not None
+            and c.id_short.startswith(id_short)
+            and c.id_short[len(id_short) :].isdigit()
+        ),
+        None,
+    )
+
+
+def _path(root: model.Referable, names: Iterable[str]) -> model.SubmodelElement:
+    element: model.Referable = root
+    walked: list[str] = []
+    for name in names:
+        walked.append(name)
+        found = _child(element, name)
+        if found is None:
+            raise invalid(["body"], "aas_missing_element", path="/".join(walked))
+        element = found
+    assert isinstance(element, model.SubmodelElement)
+    return element
+
+
+def _file(files: aasx.DictSupplementaryFileContainer, name: str) -> bytes | None:
+    if name not in files:
+        return None
+    buffer = io.BytesIO()
+    files.write_file(name, buffer)
+    return buffer.getvalue()
+
+
+def _native_request(
+    submodel: model.Submodel, files: aasx.DictSupplementaryFileContainer
+) -> dict[str, Any] | None:
+    """The request this service wrote into the record, if it is one of its records."""
+    information = _child(submodel, "SizingProjectInformation")
+    for element in [] if information is None else _children(information):
+        if isinstance(element, model.File) and element.value == REQUEST_FILE:
+            content = _file(files, REQUEST_FILE)
+            if content is None:
+                return None
+            try:
+                request = json.loads(content)
+            except ValueError as exc:
+                raise _unreadable(f"{REQUEST_FILE}: {exc}"[:300]) from None
+            return request if isinstance(request, dict) else None
+    return None
+
+
+def _real(section: model.Referable, id_short: str) -> float | None:
+    element = _child(section, id_short)
+    if not isinstance(element, model.Property) or element.value is None:
+        return None
+    try:
+        value = float(element.value)
+    except (TypeError, ValueError):
+        raise invalid(["body"], "aas_not_a_number", path=id_short) from None
+    if not math.isfinite(value):
+        raise invalid(["body"], "aas_not_a_number", path=id_short)
+    return value
+
+
+def _cycle(csv_bytes: bytes, name: str) -> dict[str, Any]:
+    """The segments of the motion file: one per pair of rows at different times."""
+    try:
+        rows = list(csv.reader(io.StringIO(csv_bytes.decode("utf-8-sig")), delimiter=";"))
+        header = [h.strip() for h in rows[0]]
+        t_col, w_col = header.index(_TIME_HEADER), header.index(_VELOCITY_HEADER)
+        points = [(float(r[t_col]), float(r[w_col]) * 60 / (2 * math.pi)) for r in rows[1:] if r]
+    except (ValueError, IndexError, UnicodeDecodeError) as exc:
+        raise invalid(
+            ["body"], "aas_motion_file", path=name, reason=f"{type(exc).__name__}: {exc}"[:300]
+        ) from None
+    segments = [
+        {"speed": n1, "duration_s": t1 - t0}
+        for (t0, _), (t1, n1) in itertools.pairwise(points)
+        if t1 > t0
+    ]
+    if not points or not segments:
+        raise invalid(["body"], "aas_motion_file", path=name, reason="no two rows in time")
+    return {"start_speed": points[0][1], "segments": segments}
+
+
+def request_from_record(content: bytes) -> dict[str, Any]:
+    """The selection request of an IDTA 02021 record (module docstring); 422 naming what
+    the record lacks."""
+    store, files = _read(content)
+    submodel = _sizing_submodel(store)
+    native = _native_request(submodel, files)
+    if native is not None:
+        return native
+    section = _path(submodel, (*_SECTION, "RotativeSection"))
+    motion = _child(section, "MotionSectionFile")
+    if not isinstance(motion, model.File) or not motion.value:
+        raise invalid(["body"], "aas_missing_element", path="RotativeSection/MotionSectionFile")
+    csv_bytes = _file(files, motion.value)
+    if csv_bytes is None:
+        raise invalid(["body"], "aas_motion_file", path=motion.value, reason="not in the package")
+    inertia = _real(section, "MomentOfInertiaOfLoad")
+    if inertia is None:
+        raise invalid(["body"], "aas_missing_element", path="RotativeSection/MomentOfInertiaOfLoad")
+    load: dict[str, Any] = {
+        "torque_nm": _real(section, "FrictionTorque") or 0.0,
+        "inertia_kgm2": inertia,
+        "gravity_torque_nm": _real(section, "LoadTorque") or 0.0,
+    }
+    return {"load": load, "cycle": _cycle(csv_bytes, motion.value)}
