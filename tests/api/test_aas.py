@@ -13,6 +13,7 @@ import io
 import json
 import math
 import re
+import zipfile
 from collections.abc import Iterator
 from datetime import datetime
 from functools import cache
@@ -451,11 +452,29 @@ def test_a_record_another_tool_wrote_imports(client: TestClient) -> None:
         assert c["rms_torque_nm"] == pytest.approx(by_model[c["model"]]["rms_torque_nm"], rel=1e-9)
 
 
+def _repacked(package: bytes, name: str, content: bytes) -> bytes:
+    """``package`` with its part ``name`` replaced by ``content``."""
+    source = zipfile.ZipFile(io.BytesIO(package))
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as target:
+        for part in source.namelist():
+            target.writestr(part, content if part == name else source.read(part))
+    return buffer.getvalue()
+
+
 def test_a_record_that_is_not_one(client: TestClient) -> None:
     url = "/api/v1/selections/from-aas"
+    answer = _selection(client)
+    package = client.get(f"/api/v1/selections/{answer['id']}/aas.aasx").content
+    # 65 MiB of zeros, a few kilobytes packed.
+    bomb = _repacked(package, "aasx/files/MotionSection1.csv", bytes(65 * 1024 * 1024))
     for content, code in (
         (b"not a record", "aas_unreadable"),
+        (b"", "aas_unreadable"),
+        (_repacked(package, "aasx/data.xml", b"<broken"), "aas_unreadable"),
         (b'{"assetAdministrationShells": [], "submodels": []}', "aas_no_sizing_submodel"),
+        (client.get(f"/api/v1/selections/{answer['id']}/aas").content, "aas_motion_file"),
+        (bomb, "aas_too_large"),
     ):
         response = client.post(url, content=content, headers={"Content-Type": "application/json"})
         assert response.status_code == 422, response.text

@@ -40,17 +40,47 @@ def _unreadable(reason: str) -> UseCaseError:
     return invalid(["body"], "aas_unreadable", reason=reason)
 
 
+MAX_UNPACKED_BYTES = 64 * 1024 * 1024
+"""What an AASX may hold unpacked [bytes]: a sizing record is kilobytes, a motion file of
+200 segments too; the bound keeps a small zip that unpacks to gigabytes out."""
+
+_UNREADABLE = (
+    ValueError,  # JSON, the model's constraints, OPC (pyecma376-2)
+    KeyError,
+    TypeError,
+    AttributeError,
+    IndexError,
+    SyntaxError,  # lxml's XMLSyntaxError
+    OSError,
+    zipfile.BadZipFile,
+)
+"""What BaSyx's readers raise on a record they cannot read (``failsafe=False``)."""
+
+
+def _unpacked_bytes(content: bytes) -> int:
+    """What the zip ``content`` says its parts hold unpacked [bytes]."""
+    try:
+        with zipfile.ZipFile(io.BytesIO(content)) as package:
+            return sum(i.file_size for i in package.infolist())
+    except _UNREADABLE as exc:
+        raise _unreadable(f"{type(exc).__name__}: {exc}"[:300]) from None
+
+
 def _read(content: bytes) -> tuple[Store, aasx.DictSupplementaryFileContainer]:
     """The model and the package's files (none for JSON) by BaSyx's readers."""
     store: Store = model.DictIdentifiableStore()
     files = aasx.DictSupplementaryFileContainer()  # type: ignore[no-untyped-call]
+    packed = zipfile.is_zipfile(io.BytesIO(content))
+    unpacked = _unpacked_bytes(content) if packed else 0
+    if unpacked > MAX_UNPACKED_BYTES:
+        raise invalid(["body"], "aas_too_large", size=unpacked, max=MAX_UNPACKED_BYTES)
     try:
-        if zipfile.is_zipfile(io.BytesIO(content)):
+        if packed:
             with aasx.AASXReader(io.BytesIO(content), failsafe=False) as reader:
                 reader.read_into(store, files)
         else:
             store = read_aas_json_file(io.StringIO(content.decode("utf-8")), failsafe=False)
-    except (ValueError, KeyError, TypeError, zipfile.BadZipFile, UnicodeDecodeError) as exc:
+    except _UNREADABLE as exc:
         raise _unreadable(f"{type(exc).__name__}: {exc}"[:300]) from None
     return store, files
 

@@ -64,6 +64,7 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     # IDTA 02021 records (services/aas_import.py)
     "aas_unreadable": N_("is neither an AASX package nor AAS JSON that can be read: {reason}"),
     "aas_no_sizing_submodel": N_("holds no IDTA 02021 sizing submodel (semanticId {semantic_id})"),
+    "aas_too_large": N_("unpacks to {size} bytes; an AASX may hold at most {max}"),
     "aas_missing_element": N_("the sizing record lacks {path}"),
     "aas_not_a_number": N_("{path} of the sizing record is not a finite number"),
     "aas_motion_file": N_("the motion file {path} cannot be read: {reason}"),
