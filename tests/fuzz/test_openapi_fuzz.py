@@ -123,6 +123,10 @@ def price_csvs(draw: st.DrawFn) -> bytes:
 
 schemathesis.openapi.media_type("application/zip", st.one_of(st.binary(), catalogue_zips()))
 schemathesis.openapi.media_type("text/csv", st.one_of(st.binary(), price_csvs()))
+# An IDTA 02021 record (POST /selections/from-aas): bytes, zips among them.
+schemathesis.openapi.media_type(
+    "application/asset-administration-shell-package", st.one_of(st.binary(), catalogue_zips())
+)
 
 SCHEMA = schemathesis.openapi.from_dict(_openapi_document())
 
