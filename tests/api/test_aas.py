@@ -377,6 +377,20 @@ def _same_answer(a: dict[str, Any], b: dict[str, Any]) -> None:
                 "efficiency": 0.9,
             }
         },
+        {
+            "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
+            "cycle": {
+                "start_speed": 0,
+                "segments": [
+                    {"speed": 30, "duration_s": 0.2, "jerk_share": 0.5},
+                    {"duration_s": 0.4, "process_load": 10},
+                    {"speed": 0, "duration_s": 0.2},
+                    {"speed": -30, "duration_s": 0.2, "jerk_share": 1},
+                    {"speed": 0, "duration_s": 0.2},
+                    {"duration_s": 0.3},
+                ],
+            },
+        },
     ],
 )
 def test_an_exported_record_imports_to_the_same_answer(
@@ -485,3 +499,38 @@ def test_a_record_that_is_not_one(client: TestClient) -> None:
             headers={"Content-Type": "application/json", "Accept-Language": "de"},
         )
         assert german.json()["detail"][0]["msg"] != response.json()["detail"][0]["msg"]
+
+
+def test_the_motion_file_of_a_segment_cycle_turns_as_its_segments(client: TestClient) -> None:
+    """S-curves and a reversal: each segment turns (n_start + n_end)/2 · t (the S-curve is
+    symmetric), and the file's time, speeds and end angle are the answer's segments'."""
+    cycle = {
+        "start_speed": 0,
+        "segments": [
+            {"speed": 30, "duration_s": 0.2, "jerk_share": 0.5},
+            {"duration_s": 0.4},
+            {"speed": 0, "duration_s": 0.2, "jerk_share": 1},
+            {"speed": -30, "duration_s": 0.2},
+            {"speed": 0, "duration_s": 0.2},
+            {"duration_s": 0.3},
+        ],
+    }
+    answer = _selection(client, load={"torque_nm": 5, "inertia_kgm2": 1.3}, cycle=cycle)
+    _, files = _read_aasx(client, answer["id"])
+    _, rows = _motion_rows(files["/aasx/files/MotionSection1.csv"])
+    rad = 2 * math.pi / 60
+    turned = sum(
+        (s["start_rpm"] + s["end_rpm"]) / 2 * s["duration_s"] * rad for s in answer["segments"]
+    )
+    assert rows[-1][0] == pytest.approx(answer["cycle_time_s"], rel=1e-12)
+    assert rows[-1][1] == pytest.approx(turned, rel=1e-9, abs=1e-12)
+    assert min(r[2] for r in rows) == pytest.approx(-30 * rad, rel=1e-12)
+    assert max(r[2] for r in rows) == pytest.approx(30 * rad, rel=1e-12)
+    times = [r[0] for r in rows]
+    assert times == sorted(times)
+    report = aas_submodel_validate.validate(
+        client.get(f"/api/v1/selections/{answer['id']}/aas").content,
+        format="json",
+        template=str(TEMPLATE),
+    )
+    assert [f for f in report.findings if not _allowed_deviation(f)] == []
