@@ -866,7 +866,8 @@ def test_keyboard_and_screen_reader_affordances(page: Page) -> None:
     marks = page.locator(f'#ranking-table tr[data-model="{FHA}"] .marks')
     expect(marks).to_have_attribute("role", "img")
     titles = marks.locator(".mark").evaluate_all("ms => ms.map(m => m.title)")
-    assert len(titles) == 7  # the six of the flowchart and the drive's voltage
+    # the six of the flowchart, the continuous speed and the drive's voltage
+    assert len(titles) == 8
     assert marks.get_attribute("aria-label") == "; ".join(titles)
     assert titles[2].startswith("T1 ≤ Tmax: pass (95.48\u202fNm / 151\u202fNm")
     assert "no data" in titles[4]

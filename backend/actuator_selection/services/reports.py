@@ -6,9 +6,10 @@ Every number is the stored answer's (``GET /selections/{id}``), read through
 
 **CSV** (UTF-8 with a byte order mark so that a spreadsheet reads ``kgm²`` right, RFC 4180
 quoting, CRLF line ends, written by the stdlib ``csv`` module): one tidy table with one
-header row (``COLUMNS``), one row per check of each candidate in the answer's order; the
-selection's figures (load, cycle, n_av, ED) and the candidate's are repeated on each row,
-so that every row stands alone in a filter or a pivot table. Numbers are written as
+header row (``COLUMNS``, with a segment cycle's segments), one row per check of each
+candidate in the answer's order; the selection's figures (load, cycle, n_av, ED) and the
+candidate's are repeated on each row, so that every row stands alone in a filter or a
+pivot table. Numbers are written as
 Python's shortest repr of the stored double, so they read back as exactly the answer's
 value; an unknown value (and a cycle time of a segment cycle) is an empty cell. Text
 cells that a spreadsheet would run as a formula get a leading single quote
@@ -38,7 +39,7 @@ from actuator_selection.core.checks import margin_percent
 from actuator_selection.core.csvio import neutralised
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection
+from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection, cycle_facts
 from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.selections import stored_answer_json
 
@@ -81,7 +82,8 @@ CHECK_COLUMNS = (
 )
 """A candidate's and one of its checks' columns."""
 COLUMNS = SELECTION_COLUMNS + CHECK_COLUMNS
-"""The CSV's one header row."""
+"""The CSV's one header row; a segment cycle's segments stand between the two
+(``segment_1_duration_s``, ``segment_1_start_rpm``, ``segment_1_end_rpm``, …)."""
 
 TOP = 5
 """How many candidates the report's first page ranks."""
@@ -185,10 +187,13 @@ def report_csv(report: SelectionReport) -> str:
         s.mean_speed_rpm,
         s.duty_cycle_percent,
     ]
+    # A segment cycle's segments: their columns after the selection's (times are empty).
+    segments = [] if cycle.is_trapezoid else cycle_facts(cycle, s.segments)
+    selection += [value for _, _, value, _ in segments]
     buffer = io.StringIO()
     buffer.write("\ufeff")
     writer = csv.writer(buffer, lineterminator="\r\n")
-    writer.writerow(COLUMNS)
+    writer.writerow((*SELECTION_COLUMNS, *(key for key, *_ in segments), *CHECK_COLUMNS))
     for rank, c in enumerate(s.candidates, start=1):
         head = [
             *selection,
