@@ -22,8 +22,10 @@ from sqlalchemy.engine import make_url
 from tests.server.conftest import WORKED_EXAMPLE, LiveServer, free_port, seeded_database
 
 PROXY = Path(__file__).with_name("tcp_proxy.py")
-RATIO = 10
-"""An answer while the database is down takes less than this many unloaded selections."""
+RATIO = 50
+"""An answer while the database is down takes less than this many unloaded selections.
+Generous: the machine running the suite is shared by other tests, and the fault it
+guards against waits for a queue or connect timeout of seconds."""
 
 REQUESTS: list[tuple[str, str, str | None, dict[str, Any] | None]] = [
     ("GET", "/api/v1/health", None, None),

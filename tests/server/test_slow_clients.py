@@ -19,8 +19,10 @@ from tests.server.conftest import WORKED_EXAMPLE, LiveServer, StartServer
 SLOW_CLIENTS = 8
 """More than the server admits and queues together (2 + 2 below)."""
 BODY_TIMEOUT_S = 5
-RATIO = 10
-"""A request beside the slow clients takes less than this many unloaded selections."""
+RATIO = 50
+"""A request beside the slow clients takes less than this many unloaded selections.
+Generous: the machine running the suite is shared by other tests, and the fault it
+guards against waits for a queue or connect timeout of seconds."""
 
 
 def _slow_client(server: LiveServer, body: bytes) -> socket.socket:
