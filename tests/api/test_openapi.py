@@ -344,3 +344,16 @@ def test_a_quotes_total_is_named_net_and_the_old_name_deprecated(api: SalesApi) 
     quote = api.post("/api/v1/quotes", json=body).json()
     assert quote["total"] == quote["net_total"]
     assert quote["gross_total"] is not None
+
+
+@pytest.mark.parametrize(
+    ("path", "status"), [("/api/v1/health", "ok"), ("/api/v1/health/ready", "ready")]
+)
+def test_health_answers_are_documented(api: SalesApi, path: str, status: str) -> None:
+    """A proxy or a generated client reads the documented shape, and the answer keeps it."""
+    ok = DOCUMENT["paths"][path]["get"]["responses"]["200"]["content"]["application/json"]
+    schema = DOCUMENT["components"]["schemas"][ok["schema"]["$ref"].rsplit("/", 1)[1]]
+    assert schema["required"] == ["status"]
+    assert schema["properties"]["status"]["const"] == status
+    assert schema["additionalProperties"] is False
+    assert api.client.get(path).json() == {"status": status}

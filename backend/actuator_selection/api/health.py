@@ -14,6 +14,7 @@ from fastapi import APIRouter
 from sqlalchemy import text
 
 from actuator_selection.api.deps import SessionDep
+from actuator_selection.schemas.health import HealthOut, ReadyOut
 
 router = APIRouter(tags=["health"])
 
@@ -26,17 +27,17 @@ _DOWN: dict[int | str, dict[str, Any]] = {
 
 
 @router.get("/health", responses=_DOWN)
-def health(session: SessionDep) -> dict[str, str]:
+def health(session: SessionDep) -> HealthOut:
     """``{"status": "ok"}`` once the database has answered a query."""
     session.execute(text("SELECT 1"))
-    return {"status": "ok"}
+    return HealthOut(status="ok")
 
 
 @router.get("/health/ready", responses=_DOWN)
-def readiness(session: SessionDep) -> dict[str, str]:
+def readiness(session: SessionDep) -> ReadyOut:
     """Readiness for a load balancer or proxy: 200 ``{"status": "ready"}`` when this
     process can serve requests (the database has answered a query), else 503. Send
     traffic elsewhere while it answers 503; it turns 200 by itself when the database is
     back, without a restart."""
     session.execute(text("SELECT 1"))
-    return {"status": "ready"}
+    return ReadyOut(status="ready")
