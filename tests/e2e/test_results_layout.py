@@ -197,12 +197,16 @@ def test_nothing_fits_says_what_binds_above_the_ranking(
         largest = body["binding"]["checks"][0]
         assert largest["name"] == "max_speed"
         assert largest["model"] in text
-        # above the ranking
-        ranking = page.locator(".ranking-card").bounding_box()
-        box = binding.bounding_box()
-        assert box is not None
-        assert ranking is not None
-        assert box["y"] + box["height"] <= ranking["y"]
+        # above the ranking: both boxes read in one frame, once the layout has settled
+        # (two separate reads raced with the ranking's later rows and the charts)
+        bottom, ranking_top = page.evaluate(
+            """() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(() => {
+                const panel = document.querySelector("#binding").getBoundingClientRect();
+                const ranking = document.querySelector(".ranking-card").getBoundingClientRect();
+                done([panel.bottom, ranking.top]);
+            })))"""
+        )
+        assert bottom <= ranking_top
         caption = page.locator("#ranking-table caption").inner_text()
         assert ("nearest miss first" in caption) or ("knappste Fehlschlag zuerst" in caption)
     finally:
