@@ -45,7 +45,7 @@ from actuator_selection.config import REPO_ROOT
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.db.engine import normalise_url
 from actuator_selection.main import GZIP_LEVEL, ZSTD_LEVEL
-from bench.reference import agreement, numpy_reference
+from bench.reference import disagreements, numpy_reference, snapshot_actuators
 from bench.selection import http_case, http_columns, random_cases, starter_catalogue
 
 WORKED_EXAMPLE: dict[str, Any] = {
@@ -172,13 +172,14 @@ def _batch(
             service[case].append(model)
     else:
         service = [[c["model"] for c in r["candidates"]] for r in answer["results"]]
-    same = agreement(actuators, numpy_reference(actuators, apps, 3), service)
+    differ = disagreements(actuators, numpy_reference(actuators, apps, 3), service)
     print(
         f"  POST {path}, {n} cases, checks {'yes' if checks else 'no '}  "
         f"{elapsed:6.2f} s  HTTP {response.status_code}  answer "
         f"{len(response.content) / 1e6:5.1f} MB  server peak RSS {before:.0f} → "
         f"{_peak_rss_mb(pid):.0f} MB\n"
-        f"    numpy reference {reference_s * 1e3:6.1f} ms (same top 3 in {same:.1%} of cases): "
+        f"    numpy reference {reference_s * 1e3:6.1f} ms "
+        f"(top 3 differs in {differ} of {n} cases): "
         f"the request takes {elapsed / reference_s:4.1f}× the reference"
     )
     if not columns:
@@ -266,7 +267,8 @@ def main() -> None:
                 print("PostgreSQL unreachable: measuring on SQLite")
         else:
             url, drop = found
-        actuators = starter_catalogue(url)
+        starter_catalogue(url)
+        actuators = snapshot_actuators(url)
         process, base = _serve(url, {"WORKERS": str(args.workers)})
         try:
             print(
