@@ -68,11 +68,16 @@ PUBLISHED: dict[str, dict[str, float | None]] = {
         "brake_holding_torque_nm": 28,
         "output_bearing_pitch_diameter_m": 0.049,
     },
-    # FHA-C manual §2-4-6 (continuous), §1-4-2 (output bearing); brake not published for
-    # the absolute system
+    # FHA-C manual §2-4-6 (continuous), §1-4-2 (output bearing), §2-3 Table 1 (cross
+    # roller bearing d_p, R, C, C_0, printed p. 20); brake not published for the absolute
+    # system
     "FHA-25C-50": {
         "continuous_torque_nm": 35,
         "continuous_speed_rpm": 70,
+        "output_bearing_pitch_diameter_m": 0.0962,
+        "output_bearing_offset_m": 0.018,
+        "output_bearing_dynamic_load_rating_n": 18000,
+        "output_bearing_static_load_rating_n": 33300,
         "output_bearing_radial_load_n": 4900,
         "output_bearing_axial_load_n": 14700,
         "output_bearing_moment_load_nm": 370,
@@ -82,10 +87,27 @@ PUBLISHED: dict[str, dict[str, float | None]] = {
         "max_torque_nm": 150,
         "inertia_kgm2": 0.8,
     },
-    "FHA-17C-100": {"continuous_torque_nm": 24, "continuous_speed_rpm": 35},
+    "FHA-17C-100": {
+        "continuous_torque_nm": 24,
+        "continuous_speed_rpm": 35,
+        "output_bearing_pitch_diameter_m": 0.077,
+        "output_bearing_offset_m": 0.017,
+        "output_bearing_dynamic_load_rating_n": 10800,
+        "output_bearing_static_load_rating_n": 18700,
+    },
+    "FHA-32C-50": {
+        "output_bearing_pitch_diameter_m": 0.1122,
+        "output_bearing_offset_m": 0.0185,
+        "output_bearing_dynamic_load_rating_n": 24100,
+        "output_bearing_static_load_rating_n": 44300,
+    },
     "FHA-40C-160": {
         "continuous_torque_nm": 300,
         "continuous_speed_rpm": 16,
+        "output_bearing_pitch_diameter_m": 0.1488,
+        "output_bearing_offset_m": 0.0265,
+        "output_bearing_dynamic_load_rating_n": 44900,
+        "output_bearing_static_load_rating_n": 88900,
         "output_bearing_radial_load_n": 14700,
         "output_bearing_axial_load_n": 39200,
         "output_bearing_moment_load_nm": 690,
@@ -134,7 +156,7 @@ def test_the_chapter_row_keeps_only_its_own_values(client: TestClient) -> None:
 def test_every_new_value_names_its_document(client: TestClient) -> None:
     documents = {
         "CHA": ("Engineering Data AC Servo Actuators CHA", "1018854"),
-        "FHA-C": ("Harmonic Drive LLC, FHA-C series manual", "§1-4-2"),
+        "FHA-C": ("Harmonic Drive LLC, FHA-C series AC Servo Actuator Manual", "§1-4-2"),
         "FHA-C mini": ("Harmonic Drive LLC, FHA-C mini series manual", "p. 13"),
     }
     rows = client.get("/api/v1/actuators").json()["actuators"]
@@ -147,7 +169,10 @@ def test_every_new_value_names_its_document(client: TestClient) -> None:
         if row["family"] == "CHA":
             assert "Table 55.1" in row["source"], row["model"]
         if row["output_bearing_radial_load_n"] is not None:
-            assert "checked" in row["source"], row["model"]
+            # where the value was checked is kept beside the citation, not in it
+            assert "manualshive.com" in row["read_at"], row["model"]
+        if row["family"] == "FHA-C" and row["output_bearing_pitch_diameter_m"] is not None:
+            assert '§2-3 "Verifying loads", Table 1' in row["source"], row["model"]
         if row["family"] == "FHA-C" and row["continuous_torque_nm"] is not None:
             assert "§2-4-6" in row["source"], row["model"]
 

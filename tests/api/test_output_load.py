@@ -73,9 +73,12 @@ def test_output_load_and_drive_add_their_checks(client: TestClient) -> None:
     assert mini["bearing_moment"]["value"] == pytest.approx(1000 * 0.064 + 500 * 0.02)
     assert mini["bearing_moment"]["limit"] == 75
     assert mini["bearing_moment"]["reference"].startswith("CHA §4.3; FHA-C manual ch. 2")
-    # FHA-25C (LLC manual): no R, d_p, C: no data; no pole pairs, no V_rms K_E.
+    # FHA-25C: R = 18 mm (FHA-C manual §2-3, Table 1), allowable moment 370 Nm (§1-4-2);
+    # no pole pairs, no V_rms K_E: the drive voltage has no data.
     fha = {c["name"]: c for c in detail(client, answer["id"], "FHA-25C-50")["checks"]}
-    assert fha["bearing_moment"]["status"] == "no_data"
+    assert fha["bearing_moment"]["value"] == pytest.approx(1000 * (0.05 + 0.018) + 500 * 0.02)
+    assert fha["bearing_moment"]["limit"] == 370
+    assert fha["bearing_moment"]["status"] == "pass"
     assert fha["drive_voltage"]["status"] == "no_data"
     cha = {c["name"]: c for c in detail(client, answer["id"], "CHA-25A-50")["checks"]}
     assert cha["drive_voltage"]["status"] in {"pass", "fail"}

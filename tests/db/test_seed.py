@@ -127,6 +127,31 @@ def test_seed_converts_units_and_keeps_sources(empty_engine: Engine) -> None:
         assert all(r.source for r in CatalogueRepository(s).actuators())
 
 
+def test_seed_stores_the_citation_and_where_it_was_read_apart(empty_engine: Engine) -> None:
+    """``source`` holds the manufacturer's document, ``read_at`` the public copy (issue 28,
+    item 11); the FHA-C output bearing's d_p, R, C, C_0 (FHA-C manual §2-3, Table 1) load."""
+    with make_session_factory(empty_engine).begin() as s:
+        load_seed(s, SEED_DIR)
+    with Session(empty_engine) as s:
+        fha = CatalogueRepository(s).actuator("FHA-25C-50")
+        assert fha is not None
+        bearing = fha.actuator
+        assert (
+            bearing.output_bearing_pitch_diameter_m,
+            bearing.output_bearing_offset_m,
+            bearing.output_bearing_dynamic_load_rating_n,
+            bearing.output_bearing_static_load_rating_n,
+            bearing.output_bearing_type,
+        ) == (0.0962, 0.018, 18000, 33300, "cross_roller")
+        assert "§2-3" in fha.source
+        assert "Table 1" in fha.source
+        assert fha.read_at is not None
+        assert "fha-series/3976486?page=23" in fha.read_at
+        stored = s.scalars(select(ActuatorRow)).all()
+        assert all("easymanua" not in r.source and "manualshive" not in r.source for r in stored)
+        assert {r.model for r in stored if r.read_at} >= {"CHA-25A-50", "FHA-8C-30"}
+
+
 def test_seed_updates_a_changed_value(empty_engine: Engine, seed_dir: Path) -> None:
     factory = make_session_factory(empty_engine)
     with factory.begin() as s:

@@ -30,6 +30,8 @@ class ActuatorRecord:
     zone_source: str | None
     derivation: str | None = None
     """How derived values of the row were obtained (e.g. rated output speed = n_N / i)."""
+    read_at: str | None = None
+    """Where values were read or checked (public copies of the documents ``source`` cites)."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

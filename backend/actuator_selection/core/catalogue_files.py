@@ -154,13 +154,17 @@ ACTUATORS = CsvSpec(
         Column(name="notes"),
         Column(name="derivation"),
         Column(name="source", required=True),
+        Column(name="read_at"),
     ),
 )
 """Columns after ``feedback`` came with the second audit of public copies (revision 0006):
 allowable continuous and rated output speed, brake holding torque and the output
 bearing's data; ``output_bearing_type`` (revision 0009) the bearing's type, which sets
 its life exponent. Each is empty where no public source gives it; ``derivation`` says how a
-derived value (e.g. rated output speed = rated motor speed / i) was obtained."""
+derived value (e.g. rated output speed = rated motor speed / i) was obtained. ``source``
+cites the manufacturer's documents only (publisher, title, document number, edition, page
+or table); ``read_at`` (revision 0010) names the public copies (mirror websites) the values
+were read or checked on, beside the citation and never printed in its place."""
 
 ZONE_POINTS = CsvSpec(
     file="zone_points.csv",

@@ -105,6 +105,7 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
         notes=row.notes,
         derivation=row.derivation,
         source=row.source,
+        read_at=row.read_at,
         zone_source="; ".join(sorted({p.source for p in row.zone_points})) or None,
     )
 

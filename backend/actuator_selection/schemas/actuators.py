@@ -108,7 +108,14 @@ class ActuatorOut(ResponseModel):
     )
     notes: str | None
     derivation: str | None = Field(description="how the row's derived values were obtained")
-    source: str
+    source: str = Field(
+        description="the manufacturer's documents the values come from: publisher, title, "
+        "document number, edition, page or table"
+    )
+    read_at: str | None = Field(
+        description="where values were read or checked: public copies of the cited documents "
+        "(mirror websites), kept beside the citation, never in its place"
+    )
 
     @classmethod
     def from_record(cls, record: ActuatorRecord) -> ActuatorOut:
@@ -166,6 +173,7 @@ class ActuatorOut(ResponseModel):
             notes=record.notes,
             derivation=record.derivation,
             source=record.source,
+            read_at=record.read_at,
         )
 
 

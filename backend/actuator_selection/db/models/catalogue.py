@@ -85,6 +85,9 @@ class ActuatorRow(Base):
     notes: Mapped[str | None] = mapped_column(Text)
     derivation: Mapped[str | None] = mapped_column(Text)
     source: Mapped[str] = mapped_column(Text)
+    """The manufacturer's documents the values come from (never a mirror website)."""
+    read_at: Mapped[str | None] = mapped_column(Text)
+    """Where a value was read or checked (a public copy of the document), beside ``source``."""
     retired_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True))
     """Set when the actuator is withdrawn: it leaves listings and selections, stays for quotes."""
 
