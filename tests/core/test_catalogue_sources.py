@@ -10,33 +10,16 @@ it. The check covers the seed catalogue and the data prepared for new fields und
 from __future__ import annotations
 
 import csv
-import re
 from pathlib import Path
 
 import pytest
 
 from actuator_selection.config import SEED_DIR
 from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS
+from actuator_selection.core.citations import citation, mirror_addresses
 from actuator_selection.core.csvio import read
 
-MANUFACTURER_DOMAINS = ("harmonicdrive.de", "harmonicdrive.net", "hds.co.jp")
-"""Harmonic Drive AG, Harmonic Drive LLC and Harmonic Drive Systems Inc.: a link to the
-manufacturer's own site is a citation of its document, any other address is not."""
-WEB_ADDRESS = re.compile(
-    r"(?:https?://|www\.)\S+|\b(?:[a-z0-9-]+\.)+(?:com|ls|net|org|de|io|tips|top|jp)/\S*",
-    re.IGNORECASE,
-)
-"""A web address, with or without scheme: ``easymanua.ls/harmonic-drive/cha/manual?p=36``."""
 CATALOGUE_DATA = Path(__file__).resolve().parents[2] / "docs" / "catalogue-data"
-
-
-def mirror_addresses(text: str) -> list[str]:
-    """The web addresses in ``text`` that are not on a manufacturer's site."""
-    return [
-        address
-        for address in WEB_ADDRESS.findall(text)
-        if not any(domain in address.lower() for domain in MANUFACTURER_DOMAINS)
-    ]
 
 
 def test_the_pattern_finds_the_mirrors_the_catalogue_was_read_on() -> None:
@@ -47,6 +30,9 @@ def test_the_pattern_finds_the_mirrors_the_catalogue_was_read_on() -> None:
     assert mirror_addresses("manualshive.com/en/manual/harmonic-drive/fha-series/3976486?page=9")
     assert mirror_addresses("see https://www.yumpu.com/en/document/view/44572722")
     assert not mirror_addresses("https://www.harmonicdrive.de/en/downloads")
+    assert not mirror_addresses(
+        citation("p. 36 (checked: easymanua.ls/harmonic-drive/cha/manual?p=36)")
+    )
     assert not mirror_addresses(
         "Harmonic Drive AG, Engineering Data AC Servo Actuators CHA, 1018854 12/2015 V01, "
         "Table 36.3, p. 36; §1-4-2; Eq. 68.1; 10^3 Nm/rad"

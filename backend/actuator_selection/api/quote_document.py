@@ -28,6 +28,7 @@ from markupsafe import Markup
 from actuator_selection.api.messages import render_check
 from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language, load_rows
 from actuator_selection.api.static import PLOTLY_URL
+from actuator_selection.core.citations import citation
 from actuator_selection.core.quote_terms import SellerParty
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.core.symbols import symbols
@@ -603,9 +604,10 @@ def quote_document_context(
         catalogue_rows=catalogue_rows,
         checks=checks,
         figure=Markup(figure_json),  # script-safe JSON (no "<"), not HTML
-        # a citation as written, the chapter's words ("Table") in the document's language
+        # the manufacturer's document as cited (a mirror address a quote stored before the
+        # read_at split may hold is left out), the chapter's words ("Table") translated
         catalogue_source=_with_data(
-            t, "catalogue_source", source=t.reference(str(actuator.get("source")))
+            t, "catalogue_source", source=t.reference(citation(str(actuator.get("source"))))
         ),
         selection_footer=t(
             "selection_footer",
