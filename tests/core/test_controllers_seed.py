@@ -16,7 +16,7 @@ import pytest
 
 CHAPTER = Path(__file__).parents[2].parent / "shared/seed/engineering-data-servo-actuators.txt"
 SEED = Path(__file__).parents[2] / "seed_data" / "controllers.csv"
-SOURCE = "Engineering Data for Harmonic Drive Servo Actuators, Table 521.1"
+SOURCE = "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 521.1"
 
 # The 16 mark columns in the chapter's order (second heading row of Table 521.1).
 HEADINGS = (
