@@ -10,6 +10,7 @@ it. The check covers the seed catalogue and the data prepared for new fields und
 from __future__ import annotations
 
 import csv
+import io
 from pathlib import Path
 
 import pytest
@@ -17,7 +18,7 @@ import pytest
 from actuator_selection.config import SEED_DIR
 from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS
 from actuator_selection.core.citations import citation, mirror_addresses
-from actuator_selection.core.csvio import read
+from actuator_selection.core.csvio import parse, read
 
 CATALOGUE_DATA = Path(__file__).resolve().parents[2] / "docs" / "catalogue-data"
 
@@ -66,3 +67,23 @@ def test_no_prepared_source_holds_a_mirror_address(path: Path) -> None:
         if mirror_addresses(r["source"])
     } == {}
     assert all(r["source"].strip() for r in rows), "every row names where it looked"
+
+
+def test_an_actuators_file_written_before_read_at_still_reads() -> None:
+    """``read_at`` came later (revision 0010): a file without the column reads, its cells
+    empty, and every other column is still required."""
+    rows = list(csv.reader(io.StringIO((SEED_DIR / "actuators.csv").read_text())))
+    at = rows[0].index("read_at")
+    without = [row[:at] + row[at + 1 :] for row in rows]
+    text = io.StringIO()
+    csv.writer(text, lineterminator="\n").writerows(without)
+    records, problems = parse(ACTUATORS, text.getvalue())
+    assert problems == []
+    assert len(records) == len(rows) - 1
+    assert all(r.values["read_at"] is None for r in records)
+    source = rows[0].index("source")
+    no_source = [row[:source] + row[source + 1 :] for row in rows]
+    text = io.StringIO()
+    csv.writer(text, lineterminator="\n").writerows(no_source)
+    _, problems = parse(ACTUATORS, text.getvalue())
+    assert [(p.column, p.message) for p in problems] == [("source", "column missing")]

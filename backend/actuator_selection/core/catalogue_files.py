@@ -154,7 +154,7 @@ ACTUATORS = CsvSpec(
         Column(name="notes"),
         Column(name="derivation"),
         Column(name="source", required=True),
-        Column(name="read_at"),
+        Column(name="read_at", optional=True),
     ),
 )
 """Columns after ``feedback`` came with the second audit of public copies (revision 0006):
@@ -164,7 +164,8 @@ its life exponent. Each is empty where no public source gives it; ``derivation``
 derived value (e.g. rated output speed = rated motor speed / i) was obtained. ``source``
 cites the manufacturer's documents only (publisher, title, document number, edition, page
 or table); ``read_at`` (revision 0010) names the public copies (mirror websites) the values
-were read or checked on, beside the citation and never printed in its place."""
+were read or checked on, beside the citation and never printed in its place; a file
+written before it may leave the column out."""
 
 ZONE_POINTS = CsvSpec(
     file="zone_points.csv",

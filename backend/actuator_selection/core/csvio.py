@@ -75,7 +75,9 @@ class Column:
     restricts the characters of a name that identifies a row (a model, a family).
     ``convert`` turns a non-empty text cell into its value (a date, a decimal
     amount, a choice, ...) and raises ``ValueError("must be ...")`` naming the
-    rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`.
+    rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`. A header may leave out
+    an ``optional`` column (one added after files were written without it): its cells
+    are then empty.
     """
 
     name: str
@@ -88,6 +90,7 @@ class Column:
     max_length: int | None = None
     pattern: NamePattern | None = None
     convert: Callable[[str], Any] | None = None
+    optional: bool = False
 
     @property
     def attribute(self) -> str:
@@ -558,9 +561,10 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
                     f"expected one of: {', '.join(known)})",
                 )
             )
-    for name in known:
-        if name not in header:
+    for name, column in known.items():
+        if name not in header and not column.optional:
             problems.append(Problem(file=spec.file, line=1, column=name, message="column missing"))
+    absent = [(name, "") for name in known if name not in header]
     if len(set(header)) != len(header):
         problems.append(
             Problem(file=spec.file, line=1, column=None, message="a column name appears twice")
@@ -585,7 +589,7 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
         pairs = [
             (name, restored(raw) if known[name].text else raw)
             for name, raw in zip(header, cells, strict=True)
-        ]
+        ] + absent
         values, row_problems = _row(spec, pairs, line)
         problems.extend(row_problems)
         record = Record(line=line, values=values)
