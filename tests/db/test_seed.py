@@ -118,13 +118,13 @@ def test_seed_converts_units_and_keeps_sources(empty_engine: Engine) -> None:
         assert cha.actuator.no_load_current_constant_30c_a_per_rpm == pytest.approx(0.006)
         assert cha.actuator.max_torque_nm == 98
         assert cha.actuator.max_speed_rpm == 112
-        assert "CHA" in cha.source
+        assert "CHA" in str(cha.values["source"])
         example = CatalogueRepository(s).actuator("FHA-25C-50-L")
         assert example is not None
         assert (example.actuator.max_torque_nm, example.actuator.inertia_kgm2) == (151, 0.86)
         assert example.actuator.stall_torque_nm is None  # not published: stays empty
-        assert "Table 516.3" in example.source
-        assert all(r.source for r in CatalogueRepository(s).actuators())
+        assert "Table 516.3" in str(example.values["source"])
+        assert all(r.values["source"] for r in CatalogueRepository(s).actuators())
 
 
 def test_seed_stores_the_citation_and_where_it_was_read_apart(empty_engine: Engine) -> None:

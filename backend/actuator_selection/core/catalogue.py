@@ -6,32 +6,25 @@ keeps its source, so every value shown can be traced to the publication it came 
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.catalogue_fields import CatalogueValue
 from actuator_selection.core.compatibility import ActuatorInterface, Controller
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
 class ActuatorRecord:
-    """A catalogue actuator with what the catalogue says besides the engineering values."""
+    """A catalogue actuator: the engine's record and every value the catalogue holds for it."""
 
     actuator: Actuator
-    continuous_current_a: float | None
-    inductance_line_mh: float | None
-    inductance_phase_mh: float | None
-    motor_torque_constant_nm_per_a: float | None
-    mass_kg: float | None
-    max_dc_bus_voltage_v: float | None
-    supply_voltage: str | None
-    feedback: str | None
-    notes: str | None
-    source: str
+    values: Mapping[str, CatalogueValue]
+    """Every value of :data:`~.catalogue_fields.ACTUATOR_FIELDS` by name, as stored (the
+    engine's among them): what the API shows, with the row's ``notes``, ``derivation``
+    (how derived values were obtained) and ``source``."""
     zone_source: str | None
-    derivation: str | None = None
-    """How derived values of the row were obtained (e.g. rated output speed = n_N / i)."""
-    read_at: str | None = None
-    """Where values were read or checked (public copies of the documents ``source`` cites)."""
+    """The sources of the continuous-duty zone's points, where it has any."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

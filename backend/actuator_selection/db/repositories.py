@@ -10,6 +10,7 @@ import functools
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass, fields
 from datetime import UTC, datetime
+from types import MappingProxyType
 from typing import Any, cast
 
 from sqlalchemy import Insert, Table, bindparam, func, insert, select, update
@@ -17,6 +18,7 @@ from sqlalchemy.orm import Session, selectinload
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.catalogue import ActuatorRecord, FamilyRecord
+from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS, ENGINE_FIELDS
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -45,6 +47,11 @@ class ActuatorFilter:
 
 
 def _to_record(row: ActuatorRow) -> ActuatorRecord:
+    """The record of a row: every declared value under its name, the engine's among them."""
+    values: dict[str, Any] = {
+        f.name: row.family.name if f.name == "family" else getattr(row, f.name)
+        for f in ACTUATOR_FIELDS
+    }
     zone = (
         ContinuousDutyZone(
             points=tuple(
@@ -54,60 +61,15 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
         if row.zone_points
         else None
     )
-    actuator = Actuator(
-        model=row.model,
-        family=row.family.name,
-        gear_ratio=row.gear_ratio,
-        max_torque_nm=row.max_torque_nm,
-        max_speed_rpm=row.max_speed_rpm,
-        inertia_kgm2=row.inertia_kgm2,
-        stall_torque_nm=row.stall_torque_nm,
-        continuous_torque_nm=row.continuous_torque_nm,
-        max_current_a=row.max_current_a,
-        stall_current_a=row.stall_current_a,
-        torque_constant_nm_per_a=row.torque_constant_nm_per_a,
-        motor_voltage_constant_v_per_krpm=row.motor_voltage_constant_v_per_krpm,
-        output_voltage_constant_v_per_rpm=row.output_voltage_constant_v_per_rpm,
-        resistance_line_ohm=row.resistance_line_ohm,
-        resistance_phase_ohm=row.resistance_phase_ohm,
-        no_load_starting_current_a=row.no_load_starting_current_a,
-        no_load_current_constant_30c_a_per_rpm=row.no_load_current_constant_30c_a_per_rpm,
-        no_load_current_constant_80c_a_per_rpm=row.no_load_current_constant_80c_a_per_rpm,
-        thermal_time_constant_s=row.thermal_time_constant_s,
-        zone=zone,
-        continuous_speed_rpm=row.continuous_speed_rpm,
-        rated_speed_rpm=row.rated_speed_rpm,
-        brake_holding_torque_nm=row.brake_holding_torque_nm,
-        output_bearing_pitch_diameter_m=row.output_bearing_pitch_diameter_m,
-        output_bearing_offset_m=row.output_bearing_offset_m,
-        output_bearing_dynamic_load_rating_n=row.output_bearing_dynamic_load_rating_n,
-        output_bearing_static_load_rating_n=row.output_bearing_static_load_rating_n,
-        output_bearing_dynamic_tilting_moment_nm=row.output_bearing_dynamic_tilting_moment_nm,
-        output_bearing_static_tilting_moment_nm=row.output_bearing_static_tilting_moment_nm,
-        output_bearing_radial_load_n=row.output_bearing_radial_load_n,
-        output_bearing_axial_load_n=row.output_bearing_axial_load_n,
-        output_bearing_moment_load_nm=row.output_bearing_moment_load_nm,
-        output_bearing_moment_stiffness_nm_per_rad=row.output_bearing_moment_stiffness_nm_per_rad,
-        inductance_line_mh=row.inductance_line_mh,
-        pole_pairs=row.pole_pairs,
-        output_bearing_type=row.output_bearing_type,
-    )
     return ActuatorRecord(
-        actuator=actuator,
-        continuous_current_a=row.continuous_current_a,
-        inductance_line_mh=row.inductance_line_mh,
-        inductance_phase_mh=row.inductance_phase_mh,
-        motor_torque_constant_nm_per_a=row.motor_torque_constant_nm_per_a,
-        mass_kg=row.mass_kg,
-        max_dc_bus_voltage_v=row.max_dc_bus_voltage_v,
-        supply_voltage=row.supply_voltage,
-        feedback=row.feedback,
-        notes=row.notes,
-        derivation=row.derivation,
-        source=row.source,
-        read_at=row.read_at,
+        actuator=Actuator(zone=zone, **{f.name: values[f.name] for f in ENGINE_FIELDS}),
+        values=MappingProxyType(values),
         zone_source="; ".join(sorted({p.source for p in row.zone_points})) or None,
     )
+
+
+_VALUES = ActuatorRow.__table__.c
+"""The catalogue values' columns, by name (generated from their declarations)."""
 
 
 class CatalogueRepository:
@@ -129,19 +91,19 @@ class CatalogueRepository:
         if query.family is not None:
             stmt = stmt.where(ActuatorFamilyRow.name == query.family)
         if query.min_max_torque_nm is not None:
-            stmt = stmt.where(ActuatorRow.max_torque_nm >= query.min_max_torque_nm)
+            stmt = stmt.where(_VALUES.max_torque_nm >= query.min_max_torque_nm)
         if query.max_inertia_kgm2 is not None:
-            stmt = stmt.where(ActuatorRow.inertia_kgm2 <= query.max_inertia_kgm2)
+            stmt = stmt.where(_VALUES.inertia_kgm2 <= query.max_inertia_kgm2)
         if query.min_max_speed_rpm is not None:
-            stmt = stmt.where(ActuatorRow.max_speed_rpm >= query.min_max_speed_rpm)
+            stmt = stmt.where(_VALUES.max_speed_rpm >= query.min_max_speed_rpm)
         if query.models is not None:
             stmt = stmt.where(ActuatorRow.model.in_(list(query.models)))
         if query.max_max_torque_nm is not None:
-            stmt = stmt.where(ActuatorRow.max_torque_nm <= query.max_max_torque_nm)
+            stmt = stmt.where(_VALUES.max_torque_nm <= query.max_max_torque_nm)
         if query.min_continuous_torque_nm is not None:
-            stmt = stmt.where(ActuatorRow.continuous_torque_nm >= query.min_continuous_torque_nm)
+            stmt = stmt.where(_VALUES.continuous_torque_nm >= query.min_continuous_torque_nm)
         if query.gear_ratio is not None:
-            stmt = stmt.where(ActuatorRow.gear_ratio == query.gear_ratio)
+            stmt = stmt.where(_VALUES.gear_ratio == query.gear_ratio)
         if query.after_model is not None:
             stmt = stmt.where(ActuatorRow.model > query.after_model)
         if query.limit is not None:

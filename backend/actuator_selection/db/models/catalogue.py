@@ -7,10 +7,19 @@ may not publish the value; every row keeps its ``source``.
 from __future__ import annotations
 
 from datetime import datetime
+from typing import TYPE_CHECKING, Any
 
 from sqlalchemy import DateTime, Float, ForeignKey, Integer, String, Text, UniqueConstraint
-from sqlalchemy.orm import Mapped, mapped_column, relationship
+from sqlalchemy.orm import Mapped, MappedColumn, mapped_column, relationship
+from sqlalchemy.types import TypeEngine
 
+from actuator_selection.core.catalogue_fields import (
+    ACTUATOR_FIELDS,
+    FAMILY_LENGTH,
+    MODEL_LENGTH,
+    CatalogueField,
+    Kind,
+)
 from actuator_selection.db.models.base import Base
 
 
@@ -20,7 +29,7 @@ class ActuatorFamilyRow(Base):
     __tablename__ = "actuator_families"
 
     id: Mapped[int] = mapped_column(primary_key=True)
-    name: Mapped[str] = mapped_column(String(40), unique=True)
+    name: Mapped[str] = mapped_column(String(FAMILY_LENGTH), unique=True)
     description: Mapped[str | None] = mapped_column(Text)
     temperature_sensors: Mapped[str | None] = mapped_column(Text)
     warning_temperature_c: Mapped[float | None] = mapped_column(Float)
@@ -35,59 +44,17 @@ class ActuatorFamilyRow(Base):
 
 
 class ActuatorRow(Base):
-    """One catalogue actuator (one size and gear ratio), values at the output shaft."""
+    """One catalogue actuator (one size and gear ratio), values at the output shaft.
+
+    Besides its key, its family and its retirement, a column per catalogue value of
+    :data:`~actuator_selection.core.catalogue_fields.ACTUATOR_FIELDS`, added below the class.
+    """
 
     __tablename__ = "actuators"
 
     id: Mapped[int] = mapped_column(primary_key=True)
-    model: Mapped[str] = mapped_column(String(60), unique=True)
+    model: Mapped[str] = mapped_column(String(MODEL_LENGTH), unique=True)
     family_id: Mapped[int] = mapped_column(ForeignKey("actuator_families.id"), index=True)
-    gear_ratio: Mapped[float] = mapped_column(Float)
-    max_torque_nm: Mapped[float | None] = mapped_column(Float)
-    max_speed_rpm: Mapped[float | None] = mapped_column(Float)
-    inertia_kgm2: Mapped[float | None] = mapped_column(Float)
-    stall_torque_nm: Mapped[float | None] = mapped_column(Float)
-    continuous_torque_nm: Mapped[float | None] = mapped_column(Float)
-    max_current_a: Mapped[float | None] = mapped_column(Float)
-    stall_current_a: Mapped[float | None] = mapped_column(Float)
-    continuous_current_a: Mapped[float | None] = mapped_column(Float)
-    torque_constant_nm_per_a: Mapped[float | None] = mapped_column(Float)
-    motor_torque_constant_nm_per_a: Mapped[float | None] = mapped_column(Float)
-    motor_voltage_constant_v_per_krpm: Mapped[float | None] = mapped_column(Float)
-    output_voltage_constant_v_per_rpm: Mapped[float | None] = mapped_column(Float)
-    resistance_line_ohm: Mapped[float | None] = mapped_column(Float)
-    resistance_phase_ohm: Mapped[float | None] = mapped_column(Float)
-    inductance_line_mh: Mapped[float | None] = mapped_column(Float)
-    inductance_phase_mh: Mapped[float | None] = mapped_column(Float)
-    no_load_starting_current_a: Mapped[float | None] = mapped_column(Float)
-    no_load_current_constant_30c_a_per_rpm: Mapped[float | None] = mapped_column(Float)
-    no_load_current_constant_80c_a_per_rpm: Mapped[float | None] = mapped_column(Float)
-    thermal_time_constant_s: Mapped[float | None] = mapped_column(Float)
-    mass_kg: Mapped[float | None] = mapped_column(Float)
-    max_dc_bus_voltage_v: Mapped[float | None] = mapped_column(Float)
-    supply_voltage: Mapped[str | None] = mapped_column(String(40))
-    feedback: Mapped[str | None] = mapped_column(String(80))
-    continuous_speed_rpm: Mapped[float | None] = mapped_column(Float)
-    rated_speed_rpm: Mapped[float | None] = mapped_column(Float)
-    brake_holding_torque_nm: Mapped[float | None] = mapped_column(Float)
-    output_bearing_pitch_diameter_m: Mapped[float | None] = mapped_column(Float)
-    output_bearing_offset_m: Mapped[float | None] = mapped_column(Float)
-    output_bearing_dynamic_load_rating_n: Mapped[float | None] = mapped_column(Float)
-    output_bearing_static_load_rating_n: Mapped[float | None] = mapped_column(Float)
-    output_bearing_dynamic_tilting_moment_nm: Mapped[float | None] = mapped_column(Float)
-    output_bearing_static_tilting_moment_nm: Mapped[float | None] = mapped_column(Float)
-    output_bearing_radial_load_n: Mapped[float | None] = mapped_column(Float)
-    output_bearing_axial_load_n: Mapped[float | None] = mapped_column(Float)
-    output_bearing_moment_load_nm: Mapped[float | None] = mapped_column(Float)
-    output_bearing_moment_stiffness_nm_per_rad: Mapped[float | None] = mapped_column(Float)
-    pole_pairs: Mapped[float | None] = mapped_column(Float)
-    output_bearing_type: Mapped[str | None] = mapped_column(String(40))
-    notes: Mapped[str | None] = mapped_column(Text)
-    derivation: Mapped[str | None] = mapped_column(Text)
-    source: Mapped[str] = mapped_column(Text)
-    """The manufacturer's documents the values come from (never a mirror website)."""
-    read_at: Mapped[str | None] = mapped_column(Text)
-    """Where a value was read or checked (a public copy of the document), beside ``source``."""
     retired_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True))
     """Set when the actuator is withdrawn: it leaves listings and selections, stays for quotes."""
 
@@ -97,6 +64,30 @@ class ActuatorRow(Base):
         order_by="ZonePointRow.speed_rpm",
         cascade="all, delete-orphan",
     )
+
+    if TYPE_CHECKING:
+
+        def __getattr__(self, name: str) -> Any:
+            """A catalogue value: its column is generated from its declaration."""
+
+
+def value_column(field: CatalogueField) -> MappedColumn[Any]:
+    """The column of a catalogue value: a float or a text as wide as its rule allows,
+    NULL where the value may be missing ("no data")."""
+    if field.kind is Kind.NUMBER:
+        type_: TypeEngine[Any] = Float()
+    elif field.max_length is not None:
+        type_ = String(field.max_length)
+    else:
+        type_ = Text()
+    return mapped_column(type_, nullable=not field.required)
+
+
+# The key (model) and the family (a foreign key) are declared in the class.
+for _field in ACTUATOR_FIELDS:
+    if _field.name not in {"model", "family"}:
+        # Declarative adds a column assigned to a mapped class to its table and mapper.
+        setattr(ActuatorRow, _field.name, value_column(_field))
 
 
 class ZonePointRow(Base):
