@@ -1,5 +1,5 @@
-"""The catalogue's values are declared once: the engine's record, the file's columns, the
-words and the seed's derivations agree with the declarations (core/catalogue_fields.py)."""
+"""The catalogue's values are declared once: the engine's record, the file's columns and
+the seed's derivations agree with the declarations (core/catalogue_fields.py)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,6 @@ from pathlib import Path
 
 import pytest
 
-from actuator_selection.api.messages import translations
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.catalogue_fields import (
     ACTUATOR_FIELDS,
@@ -22,7 +21,6 @@ from actuator_selection.core.catalogue_fields import (
 )
 from actuator_selection.core.catalogue_files import ACTUATORS
 from actuator_selection.core.csvio import read
-from actuator_selection.core.messages import Text
 
 SEED = Path(__file__).resolve().parents[2] / "seed_data"
 
@@ -72,12 +70,6 @@ def test_a_published_unit_other_than_the_stored_one_has_its_own_header() -> None
     one, and the scale converts (house style: the unit is in every name)."""
     for field in ACTUATOR_FIELDS:
         assert (field.scale != 1.0) == (field.csv is not None), field.name
-
-
-@pytest.mark.parametrize("field", ACTUATOR_FIELDS, ids=lambda f: f.name)
-def test_every_value_has_words_in_both_languages(field: CatalogueField) -> None:
-    assert isinstance(field.label, Text), "mark the words with N_ so that they are extracted"
-    assert translations("de").get(field.label), f"no German for {field.label!r}: make messages"
 
 
 def test_only_values_declared_derivable_are_derived_in_the_seed() -> None:

@@ -1,15 +1,19 @@
 """The API's actuator is derived from the declared catalogue values (core/catalogue_fields.py):
-a property per value, described by its symbol, words and unit, showing the stored value."""
+a property per value, described by its symbol, words and unit, showing the stored value;
+the words of every value are in both languages."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from fastapi.testclient import TestClient
 
-from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS
+from actuator_selection.api.messages import translations
+from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS, CatalogueField
 from actuator_selection.core.catalogue_files import ACTUATORS
 from actuator_selection.core.csvio import read
+from actuator_selection.core.messages import Text
 
 SEED = Path(__file__).resolve().parents[2] / "seed_data"
 BESIDES = ["continuous_duty_zone", "continuous_duty_zone_source", "output_turns_opposite_to_motor"]
@@ -35,3 +39,9 @@ def test_an_actuator_shows_every_value_as_the_file_gives_it(client: TestClient) 
     shown = client.get("/api/v1/actuators/CHA-20A-30").json()
     assert {f.name: shown[f.name] for f in ACTUATOR_FIELDS} == row
     assert shown["output_bearing_dynamic_tilting_moment_nm"] == 172  # CHA 8/2018 Table 55.1
+
+
+@pytest.mark.parametrize("field", ACTUATOR_FIELDS, ids=lambda f: f.name)
+def test_every_value_has_words_in_both_languages(field: CatalogueField) -> None:
+    assert isinstance(field.label, Text), "mark the words with N_ so that they are extracted"
+    assert translations("de").get(field.label), f"no German for {field.label!r}: make messages"
