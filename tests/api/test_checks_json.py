@@ -19,20 +19,20 @@ from tests.core.test_batch import (
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import evaluate_batch
 from actuator_selection.core.selection import Application
-from actuator_selection.services.selections import (
+from actuator_selection.services.presenters.selection import (
     CHECKS_AS_DICTS_UP_TO,
-    _checks,
-    _checks_as_dicts,
-    _checks_as_json,
+    checks_as_dicts,
+    checks_as_json,
+    checks_of,
     dump_json,
 )
 
 
 def assert_same_text(actuators: list[Actuator], app: Application) -> None:
     ev = evaluate_batch(actuators, [app], rules=app.rules)
-    as_dicts = dump_json(_checks_as_dicts(ev))
-    assert dump_json(_checks_as_json(ev)) == as_dicts
-    assert dump_json(_checks(ev)) == as_dicts
+    as_dicts = dump_json(checks_as_dicts(ev))
+    assert dump_json(checks_as_json(ev)) == as_dicts
+    assert dump_json(checks_of(ev)) == as_dicts
 
 
 @pytest.mark.parametrize("seed", range(8))
@@ -58,6 +58,6 @@ def test_a_large_catalogue_takes_the_json_writer() -> None:
     rng = random.Random(5)
     actuators = [random_actuator(rng, k) for k in range(CHECKS_AS_DICTS_UP_TO + 1)]
     ev = evaluate_batch(actuators, [random_case(rng, actuators)])
-    checks = _checks(ev)
+    checks = checks_of(ev)
     assert all(not isinstance(c, list) for c in checks)  # orjson.Fragment, not dicts
-    assert dump_json(checks) == dump_json(_checks_as_dicts(ev))
+    assert dump_json(checks) == dump_json(checks_as_dicts(ev))

@@ -16,7 +16,7 @@ from actuator_selection.main import API_PREFIX
 from actuator_selection.schemas.batch import MAX_BATCH_CANDIDATES, MAX_BATCH_CASES
 from actuator_selection.schemas.batch_columns import COLUMNS_EXAMPLE, BatchColumnsOut
 from actuator_selection.services.batch import _coalesced, _json_pieces
-from actuator_selection.services.selections import dump_json
+from actuator_selection.services.presenters.selection import dump_json
 
 URL = f"{API_PREFIX}/selections/batch/columns"
 COLUMNS = ("speed_rpm", "torque_nm", "inertia_kgm2", "accel_s", "constant_s", "decel_s", "pause_s")

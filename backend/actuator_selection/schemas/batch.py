@@ -4,9 +4,10 @@ Each case is a :class:`~actuator_selection.schemas.selections.SelectionRequest`;
 candidate has the names and values of a single selection's
 :class:`~actuator_selection.schemas.selections.CandidateOut`, less the detail lists the
 request leaves out (``include_checks``, ``include_controllers``). The response models
-document the contract (OpenAPI) and validate it in the tests; the endpoint writes the
-same JSON from plain dicts (:func:`result_body`), because building a pydantic model per
-candidate and check would cost more than the engineering of the whole batch.
+document the contract (OpenAPI); the endpoint writes the same JSON from plain dicts
+(``services/presenters/batch.py``, validated against these models in the tests), because
+building a pydantic model per candidate and check would cost more than the engineering
+of the whole batch.
 """
 
 from __future__ import annotations
@@ -15,9 +16,7 @@ from typing import Annotated, Any
 
 from pydantic import ConfigDict, Field, field_validator
 
-from actuator_selection.core.check_messages import jsonable_params
-from actuator_selection.core.selection import VALUE_OF, Candidate, Check, Selection
-from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
+from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.controllers import DriveOptionOut
 from actuator_selection.schemas.selections import (
@@ -26,7 +25,6 @@ from actuator_selection.schemas.selections import (
     CandidateFigures,
     ResolvedLoad,
     SelectionRequest,
-    resolved_load,
 )
 
 MAX_BATCH_CASES = 20_000
@@ -177,92 +175,3 @@ class BatchSelectionOut(ResponseModel):
     catalogue_version: int = Field(description="version of the catalogue the batch used")
     ranking: str = Field(default=RANKING_RULE, description="how candidates are ordered")
     results: list[BatchResultOut]
-
-
-def _number(x: float | None) -> float | None:
-    # What a pydantic float field makes of a value: an int becomes a float.
-    return None if x is None else float(x)
-
-
-def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
-    """``CheckOut.from_core(check, localize).model_dump(mode="json")``, without building the
-    model."""
-    value, limit, message = check.value, check.limit, check.message
-    margin, utilisation = check.margin_percent, check.utilisation
-    return {
-        "name": check.name,
-        "status": VALUE_OF[check.status],
-        "value": None if value is None else float(value),
-        "limit": None if limit is None else float(limit),
-        "unit": check.unit,
-        "reference": check.reference,
-        "message": localize(message),
-        "message_code": message_code(message),
-        "message_params": jsonable_params(message),
-        "approximate": check.approximate,
-        "margin_percent": None if margin is None else float(margin),
-        "utilisation": None if utilisation is None else float(utilisation),
-    }
-
-
-def candidate_body(
-    candidate: Candidate,
-    *,
-    include_checks: bool,
-    controllers: list[dict[str, Any]] | None,
-    controllers_summary: dict[str, Any],
-    localize: Localize = english,
-) -> dict[str, Any]:
-    """``CandidateOut.from_core(...)`` as a JSON-ready dict; ``checks`` and ``controllers``
-    only when given; ``controllers_summary`` from :func:`controllers_summary`."""
-    t = candidate.torques
-    a = candidate.actuator
-    # The checks first: a batch candidate's reasons then come from the checks built.
-    checks = [check_body(c, localize) for c in candidate.checks] if include_checks else None
-    body: dict[str, Any] = {
-        "model": a.model,
-        "family": a.family,
-        "gear_ratio": float(a.gear_ratio),
-        "verdict": VALUE_OF[candidate.verdict],
-        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
-        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
-        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
-        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
-        "reasons": [localize(r) for r in candidate.reasons],
-    }
-    if checks is not None:
-        body["checks"] = checks
-    if controllers is not None:
-        body["controllers"] = controllers
-    body.update(controllers_summary)
-    return body
-
-
-def controllers_summary(excluded: int, note: str, localize: Localize = english) -> dict[str, Any]:
-    """A candidate's ``controllers_excluded`` and ``controllers_note`` (with its code and
-    params): the same for every case of a model (Table 521.1 matches actuators, not loads)."""
-    return {
-        "controllers_excluded": excluded,
-        "controllers_note": localize(note),
-        "controllers_note_code": message_code(note),
-        "controllers_note_params": jsonable_params(note),
-    }
-
-
-def result_body(
-    *,
-    id: str | None,
-    case_id: str | None,
-    selection: Selection,
-    candidates: list[dict[str, Any]],
-) -> dict[str, Any]:
-    """One entry of ``results`` (:class:`BatchResultOut`) as a JSON-ready dict."""
-    return {
-        "id": id,
-        "case_id": case_id,
-        "load": resolved_load(selection.profile),
-        "cycle_time_s": selection.cycle_time_s,
-        "mean_speed_rpm": selection.mean_speed_rpm,
-        "duty_cycle_percent": selection.duty_cycle_percent,
-        "candidates": candidates,
-    }

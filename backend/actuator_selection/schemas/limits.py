@@ -6,10 +6,6 @@ from typing import Any, Literal
 
 from pydantic import ConfigDict, Field
 
-from actuator_selection.core.check_messages import jsonable_params
-from actuator_selection.core.inverse import Limit
-from actuator_selection.core.selection import Application
-from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.schemas.common import ResponseModel
 from actuator_selection.schemas.selections import (
     WORKED_EXAMPLE,
@@ -83,44 +79,3 @@ class LimitsOut(ResponseModel):
     model: str
     catalogue_version: int
     limits: list[LimitOut]
-
-    @classmethod
-    def build(
-        cls,
-        *,
-        model: str,
-        catalogue_version: int,
-        app: Application,
-        found: tuple[Limit, ...],
-        localize: Localize = english,
-    ) -> LimitsOut:
-        """The answer from the core's limits; references from the application's rules;
-        messages in words by ``localize``."""
-        reference = {rule.name: rule.reference for rule in app.rules}
-        out: list[dict[str, Any]] = [
-            {
-                "quantity": limit.quantity,
-                "bound": limit.bound,
-                "value": limit.value,
-                "unit": limit.unit,
-                "verdict": None if limit.verdict is None else limit.verdict.value,
-                "limiting_checks": [
-                    {
-                        "name": name,
-                        "reference": reference.get(name, ""),
-                        "message": localize(message),
-                        "message_code": message_code(message),
-                        "message_params": jsonable_params(message),
-                    }
-                    for name, message in zip(limit.limiting_checks, limit.messages, strict=True)
-                ],
-                "note": limit.note,
-                "reason": None if limit.reason is None else localize(limit.reason),
-                "reason_code": None if limit.reason is None else message_code(limit.reason),
-                "reason_params": None if limit.reason is None else jsonable_params(limit.reason),
-            }
-            for limit in found
-        ]
-        return cls.model_validate(
-            {"model": model, "catalogue_version": catalogue_version, "limits": out}
-        )

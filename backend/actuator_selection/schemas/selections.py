@@ -11,15 +11,13 @@ from typing import Annotated, Any, Literal
 from pydantic import ConfigDict, Discriminator, Field, Tag
 
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.check_messages import jsonable_params
 from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.drive import DriveOptions
 from actuator_selection.core.errors import DomainError, InvalidInputError
 from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
-from actuator_selection.core.motion import MAX_SEGMENTS, Motion, Profile, Segment, trapezoid
-from actuator_selection.core.selection import Application, Candidate
+from actuator_selection.core.motion import MAX_SEGMENTS, Motion, Segment, trapezoid
+from actuator_selection.core.selection import Application
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
+from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
     MAX_INERTIA_KGM2,
@@ -35,9 +33,7 @@ from actuator_selection.schemas.common import (
     StrictModel,
 )
 from actuator_selection.schemas.controllers import (
-    DriveOptionBodies,
     DriveOptionOut,
-    controllers_note,
 )
 from actuator_selection.schemas.mechanisms import (
     MECHANISM_TYPES,
@@ -437,18 +433,6 @@ class ResolvedLoad(ResponseModel):
     efficiency: float = Field(description="η between actuator and load")
 
 
-def resolved_load(profile: Profile) -> dict[str, float]:
-    """:class:`ResolvedLoad` of a cycle, as a JSON-ready dict."""
-    axis = profile.load
-    return {
-        "speed_rpm": profile.peak_speed_rpm,
-        "torque_nm": axis.friction_torque_nm,
-        "inertia_kgm2": axis.inertia_kgm2,
-        "gravity_torque_nm": axis.gravity_torque_nm,
-        "efficiency": axis.efficiency,
-    }
-
-
 class CheckBrief(ResponseModel):
     """One check of a candidate in a selection's answer: its outcome and its numbers.
 
@@ -556,24 +540,6 @@ class SegmentOut(ResponseModel):
     process_torque_nm: float
 
 
-def segments_out(profile: Profile) -> list[dict[str, float]]:
-    """The cycle's segments at the output (:class:`SegmentOut`), as JSON-ready dicts."""
-    out, clock = [], 0.0
-    for seg in profile.motion.segments:
-        out.append(
-            {
-                "start_s": clock,
-                "duration_s": seg.duration_s,
-                "start_rpm": seg.start_rpm,
-                "end_rpm": seg.end_rpm,
-                "jerk_share": seg.jerk_share,
-                "process_torque_nm": seg.process_torque_nm,
-            }
-        )
-        clock += seg.duration_s
-    return out
-
-
 class CandidateDetailOut(CandidateFigures):
     """One candidate of a stored selection in full: every check in words, every controller
     of Table 521.1 with its criteria and voltage check, and the actuator's catalogue data."""
@@ -604,56 +570,6 @@ class CandidateDetailOut(CandidateFigures):
         default_factory=list,
         description="the torque along each segment with this actuator's J_A (empty without J_A)",
     )
-
-    @classmethod
-    def build(
-        cls,
-        *,
-        selection_id: str,
-        catalogue_version: int,
-        candidate: Candidate,
-        profile: Profile,
-        drive: DriveOptions,
-        actuator: ActuatorOut,
-        localize: Localize = english,
-    ) -> CandidateDetailOut:
-        """The detail of one candidate with its drive options, its messages in words by
-        ``localize``."""
-        t = candidate.torques
-        a = candidate.actuator
-        j_a = a.inertia_kgm2
-        segment_torques = (
-            []
-            if j_a is None
-            else [
-                SegmentTorqueOut(
-                    segment=st.segment, times_s=list(st.times_s), torques_nm=list(st.torques_nm)
-                )
-                for st in profile.segment_torques(j_a)
-            ]
-        )
-        note = controllers_note(drive)
-        return cls(
-            selection_id=selection_id,
-            catalogue_version=catalogue_version,
-            model=a.model,
-            family=a.family,
-            gear_ratio=a.gear_ratio,
-            verdict=candidate.verdict.value,
-            accel_torque_nm=t.accel_torque_nm if t else None,
-            constant_torque_nm=t.constant_torque_nm if t else None,
-            decel_torque_nm=t.decel_torque_nm if t else None,
-            rms_torque_nm=t.rms_torque_nm if t else None,
-            reasons=[localize(r) for r in candidate.reasons],
-            checks=[CheckOut.from_core(c, localize) for c in candidate.checks],
-            controllers=DriveOptionBodies(localize).controllers(drive),
-            controllers_excluded=drive.excluded,
-            controllers_note=localize(note),
-            controllers_note_code=message_code(note),
-            controllers_note_params=jsonable_params(note),
-            actuator=actuator,
-            segment_torques=segment_torques,
-        )
 
 
 RANKING_RULE = (

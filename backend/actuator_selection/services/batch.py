@@ -34,9 +34,6 @@ from actuator_selection.schemas.batch import (
     MAX_CANDIDATES_WITH_CONTROLLERS,
     MAX_STORED_CASES,
     BatchSelectionRequest,
-    candidate_body,
-    controllers_summary,
-    result_body,
 )
 from actuator_selection.schemas.batch_columns import BatchColumnsRequest
 from actuator_selection.schemas.checks import Localize
@@ -44,9 +41,14 @@ from actuator_selection.schemas.controllers import DriveOptionBodies, controller
 from actuator_selection.schemas.selections import RANKING_RULE
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
 from actuator_selection.services.errors import UseCaseError, entry
+from actuator_selection.services.presenters.batch import (
+    candidate_body,
+    controllers_summary,
+    result_body,
+)
+from actuator_selection.services.presenters.selection import dump_json
 from actuator_selection.services.selections import (
     Writer,
-    dump_json,
     size_selection,
     store_selections,
 )

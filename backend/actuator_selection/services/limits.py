@@ -9,6 +9,7 @@ from actuator_selection.core.inverse import limits
 from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.services.presenters.limits import limits_answer
 from actuator_selection.services.selections import stored_candidate
 
 
@@ -20,7 +21,7 @@ def solve_limits(
     if actuator is None:
         raise InvalidInputError("model", f"unknown actuator model {body.model!r}")
     app = body.to_core()
-    return LimitsOut.build(
+    return limits_answer(
         model=actuator.model,
         catalogue_version=catalogue.version,
         app=app,
@@ -39,7 +40,7 @@ def stored_limits(
     """The limits of a stored selection's load case for one of its candidates."""
     body, actuator = stored_candidate(session, catalogue, selection_id, model, what="the limits")
     app = body.to_core()
-    return LimitsOut.build(
+    return limits_answer(
         model=actuator.model,
         catalogue_version=catalogue.version,
         app=app,

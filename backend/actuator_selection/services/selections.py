@@ -1,17 +1,14 @@
 """Selections: size a load case against the catalogue, store it, read it back.
 
-The answer lists every candidate lean: its verdict, torques and checks as numbers,
-and, for candidates that are not unsuitable, its drive options grouped so that no
-controller and no voltage check is written twice. The full detail of one candidate
-(every check in words, every criterion of Table 521.1) is computed on request from
-the stored load case (:func:`candidate_detail`).
-
-The answer is built as plain JSON data (the response models of
-``schemas.selections`` describe it, and the tests validate it against them): building
-~1,000 model instances per selection cost more than the engineering.
+The engine ranks the candidates; the answer is built from its results by the
+selection presenter (``services/presenters/selection.py``, its contract
+``SelectionOut``). The full detail of one candidate (every check in words, every
+criterion of Table 521.1) is computed on request from the stored load case
+(:func:`candidate_detail`, presented by ``services/presenters/detail.py``).
 
 A stored selection is its request, its catalogue version and its answer, the answer
-gzip-compressed as it was sent (the starter catalogue's answer: 49 kB, 6.8 kB stored).
+gzip-compressed as it was sent (the starter catalogue's answer: 49 kB, 6.8 kB stored),
+with the version of the answer's shape (:data:`~.presenters.selection.ANSWER_VERSION`).
 """
 
 from __future__ import annotations
@@ -25,49 +22,38 @@ from datetime import datetime
 from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 import orjson
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.batch import (
-    STATUS_BY_CODE,
     VERDICT_BY_CODE,
-    BatchEvaluation,
-    FloatArray,
     evaluate_batch,
 )
-from actuator_selection.core.checks import Check, Rule
-from actuator_selection.core.drive import shared_voltage_check
-from actuator_selection.core.electrical import DcBusClass
-from actuator_selection.core.errors import ConflictError, InvalidInputError, NotFoundError
-from actuator_selection.core.inverse import shortest_accel, shortest_pause
-from actuator_selection.core.selection import VALUE_OF, Application, Verdict, evaluate, select
+from actuator_selection.core.errors import ConflictError, NotFoundError
+from actuator_selection.core.selection import Application, Verdict, evaluate, select
 from actuator_selection.db.repositories import (
     CatalogueRepository,
     NewSelection,
     SelectionRepository,
 )
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.checks import Localize, english, message_code
-from actuator_selection.schemas.output_load import output_bearing_note
-from actuator_selection.schemas.selections import (
-    RANKING_RULE,
-    CandidateDetailOut,
-    DirectLoad,
-    SelectionRequest,
-    resolved_load,
-    segments_out,
-)
+from actuator_selection.schemas.checks import Localize, english
+from actuator_selection.schemas.selections import CandidateDetailOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot, DriveContext
-
-JSON = dict[str, Any]
-
-
-def _check_rules(rules: Sequence[Rule]) -> list[JSON]:
-    """``check_rules`` of an answer: its checks in their order, with reference and unit."""
-    return [{"name": r.name, "reference": r.reference, "unit": r.unit} for r in rules]
-
+from actuator_selection.services.presenters import selection as presenter
+from actuator_selection.services.presenters.detail import (
+    candidate_detail as candidate_detail_answer,
+)
+from actuator_selection.services.presenters.selection import (
+    CHECKS_AS_DICTS_UP_TO,
+    JSON,
+    check_entry,
+    checks_as_dicts,
+    checks_of,
+    dump_json,
+    or_none,
+)
 
 STORE_COMPRESSION = 1
 """gzip level of stored answers, compressed once for the row and for the answer to a
@@ -103,175 +89,6 @@ class SizedSelection:
         )
 
 
-DRIVE_OPTIONS_LISTED = 100
-"""Drive options are listed for the first this many candidates of a ranking (and never for
-an unsuitable one); below, the candidate's detail lists them. The starter catalogue's 64
-are all within; a catalogue of thousands would otherwise spend most of its answer on
-controller checks for actuators nobody picks."""
-
-
-def dump_json(data: Any) -> bytes:
-    """JSON of an answer built as plain data, as the API's models would write it (floats
-    in their shortest round-trip form, UTC times with ``Z``), by orjson: a whole-catalogue
-    answer of 6,400 candidates in a third of the time pydantic's encoder takes."""
-    return orjson.dumps(data, option=orjson.OPT_UTC_Z | orjson.OPT_SERIALIZE_NUMPY)
-
-
-def _or_none(column: FloatArray) -> Any:
-    """The array's floats as (nested) lists, None where NaN (unknown)."""
-    out = column.astype(object)
-    out[np.isnan(column)] = None
-    return out.tolist()
-
-
-def _checks(ev: BatchEvaluation) -> list[Any]:
-    """Each actuator's checks of the (single) case in ``ev``, as the answer lists them:
-    what :meth:`~actuator_selection.core.checks.Rule.check` reports, less its words. As
-    dicts up to :data:`CHECKS_AS_DICTS_UP_TO` actuators, beyond as their JSON; the text
-    that :func:`dump_json` writes is the same (the tests compare the two)."""
-    if ev.statuses.shape[1] <= CHECKS_AS_DICTS_UP_TO:
-        return _checks_as_dicts(ev)
-    return _checks_as_json(ev)
-
-
-CHECKS_AS_DICTS_UP_TO = 256
-"""Beyond this many actuators a selection writes its checks' JSON rule by rule
-(:func:`_checks_as_json`: a few numpy operations per rule for every actuator at once),
-rather than a dict per check. Building and writing the checks, with the served collector
-thresholds (2026-11-24): 64 actuators 0.19 ms as dicts against 0.22 ms as JSON, 256
-actuators 0.70 against 0.69 ms, 1,024 2.8 against 2.4 ms, 6,400 25 against 16 ms (and
-the whole selection over 6,400 actuators 60 → 37 ms, measured in turn)."""
-
-
-def _checks_as_dicts(ev: BatchEvaluation) -> list[list[JSON]]:
-    """The checks as dicts (NaN → None in numpy), the actuators' lists at once."""
-    names = ev.check_names
-    statuses = _STATUS_NAMES[ev.statuses[0]].tolist()
-    values, limits = _or_none(ev.values[0]), _or_none(ev.limits[0])
-    rows: list[list[JSON]] = [
-        [
-            {"name": name, "status": st, "value": v, "limit": li}
-            for name, st, v, li in zip(names, status, value, limit, strict=True)
-        ]
-        for status, value, limit in zip(statuses, values, limits, strict=True)
-    ]
-    for j, k in zip(*np.nonzero(ev.approximate[0]), strict=True):
-        rows[j][k]["approximate"] = True
-    missing = ev.first_missing[0]
-    for j, k in zip(*np.nonzero(missing >= 0), strict=True):
-        rows[j][k]["missing"] = ev.missing_what[k][missing[j, k]]
-    return rows
-
-
-def _checks_as_json(ev: BatchEvaluation) -> list[orjson.Fragment]:
-    """The checks as JSON, one ``orjson.Fragment`` per actuator, which :func:`dump_json`
-    writes as it is: rule by rule for every actuator at once, orjson writes the values
-    and the limits (NaN as null), numpy's string functions join them with the rule's
-    name, the statuses and the optional members into check objects, and each actuator's
-    are joined into its array."""
-    columns = []  # per rule, each actuator's check object
-    for k, name in enumerate(ev.check_names):
-        check: Any = b'{"name":' + orjson.dumps(name) + b',"status":'
-        check = np.strings.add(check, _STATUS_JSON[ev.statuses[0][:, k]])
-        check = np.strings.add(np.strings.add(check, b',"value":'), _json_items(ev.values[0][:, k]))
-        check = np.strings.add(np.strings.add(check, b',"limit":'), _json_items(ev.limits[0][:, k]))
-        approximate = ev.approximate[0][:, k]
-        if approximate.any():
-            check = np.where(approximate, np.strings.add(check, b',"approximate":true'), check)
-        first = ev.first_missing[0][:, k]
-        if (first >= 0).any():
-            members = [b',"missing":' + orjson.dumps(what) for what in ev.missing_what[k]]
-            check = np.strings.add(check, np.array([b"", *members], dtype=np.bytes_)[first + 1])
-        columns.append(np.strings.add(check, b"}").tolist())
-    return [orjson.Fragment(b"[" + b",".join(row) + b"]") for row in zip(*columns, strict=True)]
-
-
-def _json_items(column: FloatArray) -> npt.NDArray[np.bytes_]:
-    """Each float of ``column`` as orjson writes it (NaN as null), as byte strings."""
-    written = orjson.dumps(np.ascontiguousarray(column), option=orjson.OPT_SERIALIZE_NUMPY)
-    return np.array(written[1:-1].split(b","), dtype=np.bytes_)
-
-
-_STATUS_NAMES = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
-"""The API's status names by status code (:data:`~actuator_selection.core.batch.
-STATUS_BY_CODE`)."""
-_STATUS_JSON = np.array([orjson.dumps(s.value) for s in STATUS_BY_CODE], dtype=np.bytes_)
-"""The API's status names as JSON strings, by status code."""
-
-
-class _DriveOptionGroups:
-    """A selection's drive options: grouped per candidate, each controller numbered once.
-
-    The grouping by match and shared DC bus classes is the catalogue's
-    (:meth:`CatalogueSnapshot.match_groups`); here each group gets the candidate's
-    voltage check (Eq. 521.2 at n_2), and groups whose checks come out equal merge.
-    """
-
-    def __init__(self, catalogue: CatalogueSnapshot) -> None:
-        self._catalogue = catalogue
-        self._numbers: dict[int, int] = {}
-        """Index into the snapshot's controllers → index into the answer's."""
-        self._lists: dict[tuple[tuple[int, int], ...], list[int]] = {}
-        """A group's controllers (:attr:`MatchGroup.controllers`) → their numbers: the
-        actuators of one interface share their groups."""
-
-    def groups(self, actuator: Actuator, speed_rpm: float) -> list[JSON]:
-        """``actuator``'s drive options at n_2 = ``speed_rpm``, best first."""
-        interface = self._catalogue.interfaces[actuator.model]
-        voltages: dict[tuple[DcBusClass, ...], JSON] = {}
-        merged: dict[tuple[Any, ...], JSON] = {}
-        places: dict[tuple[Any, ...], tuple[tuple[int, int], ...]] = {}
-        for g in self._catalogue.match_groups(interface):
-            voltage = voltages.get(g.shared)
-            if voltage is None:
-                v = shared_voltage_check(
-                    actuator=actuator,
-                    interface=interface,
-                    shared=g.shared,
-                    speed_rpm=speed_rpm,
-                    words=False,
-                )
-                voltage = voltages[g.shared] = {
-                    "status": v.status.value,
-                    "value": v.value,
-                    "limit": v.limit,
-                    "reference": v.reference,
-                }
-            key = (g.level, g.missing, *voltage.values())
-            if key not in merged:
-                merged[key] = {"level": g.level, "missing": list(g.missing), "voltage": voltage}
-                places[key] = g.controllers
-            else:  # merged groups: best first again
-                places[key] = tuple(sorted((*places[key], *g.controllers)))
-        for key, group in merged.items():
-            group["controllers"] = self._numbered(places[key])
-        return list(merged.values())
-
-    def refs(self) -> list[JSON]:
-        """The ``controllers`` of the answer, in the order they were numbered."""
-        rows = self._catalogue.controllers
-        return [
-            {
-                "manufacturer": c.manufacturer,
-                "type": c.type,
-                "variant": c.variant,
-                "source_row": c.source_row,
-            }
-            for c in (rows[i] for i in self._numbers)
-        ]
-
-    def _numbered(self, controllers: tuple[tuple[int, int], ...]) -> list[int]:
-        """The answer's numbers of ``controllers`` (place, index), numbering those not
-        numbered yet in the order they come."""
-        found = self._lists.get(controllers)
-        if found is None:
-            numbers = self._numbers
-            found = self._lists[controllers] = [
-                numbers.setdefault(i, len(numbers)) for _, i in controllers
-            ]
-        return found
-
-
 SCALAR_UP_TO = 24
 """A selection of at most this many actuators runs the scalar flowchart
 (:func:`~actuator_selection.core.selection.select`), a larger one the vectorised
@@ -296,7 +113,7 @@ class _Ranked:
     checks: list[Any]
     """Per candidate, its checks: a list of dicts, or their JSON (``orjson.Fragment``)."""
     check_dicts: Callable[[], list[list[JSON]]]
-    """Per candidate, its checks as dicts (made when asked: :func:`_binding`)."""
+    """Per candidate, its checks as dicts (made when asked: :func:`presenter.binding`)."""
 
 
 def _ranked_vector(
@@ -308,11 +125,11 @@ def _ranked_vector(
         # Finite inputs that overflow a torque: the scalar flowchart names the input (422).
         select(actuators, app)
     order = np.array(ev.ranking(0), dtype=np.intp)
-    checks = _checks(ev)
+    checks = checks_of(ev)
     places = order.tolist()
 
     def check_dicts() -> list[list[JSON]]:
-        rows = checks if len(checks) <= CHECKS_AS_DICTS_UP_TO else _checks_as_dicts(ev)
+        rows = checks if len(checks) <= CHECKS_AS_DICTS_UP_TO else checks_as_dicts(ev)
         return [rows[j] for j in places]
 
     return _Ranked(
@@ -320,10 +137,10 @@ def _ranked_vector(
         verdicts=[VERDICT_BY_CODE[v] for v in ev.verdicts[0][order].tolist()],
         torques=list(
             zip(
-                _or_none(ev.accel_torque_nm[0][order]),
-                _or_none(ev.constant_torque_nm[0][order]),
-                _or_none(ev.decel_torque_nm[0][order]),
-                _or_none(ev.rms_torque_nm[0][order]),
+                or_none(ev.accel_torque_nm[0][order]),
+                or_none(ev.constant_torque_nm[0][order]),
+                or_none(ev.decel_torque_nm[0][order]),
+                or_none(ev.rms_torque_nm[0][order]),
                 strict=True,
             )
         ),
@@ -343,83 +160,16 @@ def _ranked_scalar(actuators: Sequence[Actuator], app: Application) -> _Ranked:
             else (t.accel_torque_nm, t.constant_torque_nm, t.decel_torque_nm, t.rms_torque_nm)
             for c in candidates
         ],
-        checks=(checks := [[_check(k) for k in c.checks] for c in candidates]),
+        checks=(checks := [[check_entry(k) for k in c.checks] for c in candidates]),
         check_dicts=lambda: checks,
     )
-
-
-def _check(check: Check) -> JSON:
-    """A check as :func:`_checks` lists it, from the scalar flowchart's."""
-    out: JSON = {
-        "name": check.name,
-        "status": VALUE_OF[check.status],
-        "value": check.value,
-        "limit": check.limit,
-    }
-    if check.approximate:
-        out["approximate"] = True
-    if check.missing is not None:
-        out["missing"] = check.missing
-    return out
-
-
-def _binding(ranked: _Ranked, app: Application) -> JSON | None:
-    """What binds across the catalogue when every candidate is unsuitable (else None).
-
-    Per check that fails anywhere: how many candidates fail it, and its nearest miss, the
-    failing candidate with the smallest value/limit (for the speed: n_2 against the
-    largest n_max), from the candidates' own checks. Then what the inverse solve
-    (``core/inverse.py``) says of a longer pause and a longer t_1 for the nearest miss of
-    all, the first candidate: the shortest value with which no check fails, or none (and
-    the checks that fail at every value). A range of ratios or leads is not searched."""
-    if not ranked.verdicts or any(v is not Verdict.UNSUITABLE for v in ranked.verdicts):
-        return None
-    failing: dict[str, list[tuple[float, JSON, str]]] = {}
-    for actuator, checks in zip(ranked.actuators, ranked.check_dicts(), strict=True):
-        for check in checks:
-            if check["status"] != "fail":
-                continue
-            value, limit = check["value"], check["limit"]
-            ratio = value / limit if value is not None and limit else float("inf")
-            failing.setdefault(check["name"], []).append((ratio, check, actuator.model))
-    kinds = []
-    for name, misses in failing.items():
-        ratio, nearest, model = min(misses, key=lambda miss: miss[0])
-        kinds.append(
-            {
-                "name": name,
-                "failing": len(misses),
-                "value": nearest["value"],
-                "limit": nearest["limit"],
-                "model": model,
-            }
-        )
-    kinds.sort(key=lambda kind: -kind["failing"])
-    first = ranked.actuators[0]
-    changes = []
-    for solve in (shortest_accel, shortest_pause):
-        try:
-            limit = solve(first, app)
-        except InvalidInputError:  # a pause where the cycle does not end at standstill
-            continue
-        changes.append(
-            {
-                "quantity": limit.quantity,
-                "model": first.model,
-                "value": limit.value,
-                "unit": limit.unit,
-                "limiting_checks": list(limit.limiting_checks),
-                "reason_code": None if limit.reason is None else message_code(limit.reason),
-            }
-        )
-    return {"candidates": len(ranked.actuators), "checks": kinds, "changes": changes}
 
 
 def _candidates(
     actuators: Sequence[Actuator],
     app: Application,
     catalogue: CatalogueSnapshot,
-    groups: _DriveOptionGroups,
+    groups: presenter.DriveOptionGroups,
 ) -> tuple[list[JSON], JSON | None]:
     """Every actuator's candidate for ``app``, ranked (``core.selection.ranking_key``),
     by the flowchart that is the cheaper for their number (:data:`SCALAR_UP_TO`); the
@@ -430,30 +180,16 @@ def _candidates(
         if len(actuators) <= SCALAR_UP_TO
         else _ranked_vector(actuators, app, catalogue)
     )
-    excluded_by_model = catalogue.excluded_by_model()
-    out: list[JSON] = [
-        {
-            "model": a.model,
-            "family": a.family,
-            "gear_ratio": a.gear_ratio,
-            "verdict": VALUE_OF[verdict],
-            "accel_torque_nm": t_1,
-            "constant_torque_nm": t_2,
-            "decel_torque_nm": t_3,
-            "rms_torque_nm": t_rms,
-            "checks": checks,
-            "controllers_excluded": excluded_by_model[a.model],
-            "drive_options": None,
-        }
-        for a, verdict, (t_1, t_2, t_3, t_rms), checks in zip(
-            ranked.actuators, ranked.verdicts, ranked.torques, ranked.checks, strict=True
-        )
-    ]
-    # Drive options for the first candidates that are not unsuitable (DRIVE_OPTIONS_LISTED).
-    for place, verdict in enumerate(ranked.verdicts[:DRIVE_OPTIONS_LISTED]):
-        if verdict is not Verdict.UNSUITABLE:
-            out[place]["drive_options"] = groups.groups(ranked.actuators[place], speed)
-    return out, _binding(ranked, app)
+    candidates = presenter.candidates(
+        ranked.actuators,
+        ranked.verdicts,
+        ranked.torques,
+        ranked.checks,
+        catalogue=catalogue,
+        groups=groups,
+        speed_rpm=speed,
+    )
+    return candidates, presenter.binding(ranked.actuators, ranked.verdicts, ranked.check_dicts, app)
 
 
 def size_selection(
@@ -464,36 +200,22 @@ def size_selection(
     created_at: datetime,
 ) -> SizedSelection:
     """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
-    groups = _DriveOptionGroups(catalogue)
+    groups = presenter.DriveOptionGroups(catalogue)
     candidates, binding = _candidates(actuators, app, catalogue, groups)
-    profile = app.profile
     # The selection request's fields alone (a batch case's ``case_id`` is the batch's).
     request = body.model_dump(mode="json", include=set(SelectionRequest.model_fields))
-    bearing = output_bearing_note(body.output_load)
-    answer = {
-        "id": str(uuid.uuid4()),
-        "created_at": created_at,
-        "catalogue_version": catalogue.version,
-        "load": resolved_load(profile),
-        "segments": segments_out(profile),
-        "mechanism": None if isinstance(body.load, DirectLoad) else request["load"],
-        "cycle": request["cycle"],
-        "high_dynamics": body.high_dynamics,
-        "brake": body.brake,
-        "drive": body.drive,
-        "output_load": request.get("output_load"),
-        "output_bearing": bearing,
-        "output_bearing_code": bearing.code,
-        "models": body.models,
-        "cycle_time_s": profile.cycle_s,
-        "mean_speed_rpm": profile.mean_speed_rpm,
-        "duty_cycle_percent": profile.duty_cycle_percent,
-        "ranking": RANKING_RULE,
-        "check_rules": _check_rules(app.rules),
-        "controllers": groups.refs(),
-        "candidates": candidates,
-        "binding": binding,
-    }
+    answer = presenter.selection_answer(
+        id=str(uuid.uuid4()),
+        created_at=created_at,
+        catalogue_version=catalogue.version,
+        body=body,
+        request=request,
+        profile=app.profile,
+        rules=app.rules,
+        controllers=groups.refs(),
+        candidates=candidates,
+        binding=binding,
+    )
     encoded = dump_json(answer)
     return SizedSelection(
         id=answer["id"],
@@ -624,7 +346,7 @@ def candidate_detail(
         raise NotFoundError("model", f"no actuator {model!r}", where="path")
     version = catalogue.version
     app = body.to_core()
-    return CandidateDetailOut.build(
+    return candidate_detail_answer(
         selection_id=selection_id,
         catalogue_version=version,
         candidate=evaluate(actuator, app),
