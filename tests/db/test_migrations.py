@@ -7,6 +7,7 @@ import json
 from collections.abc import Callable
 from datetime import UTC, date, datetime
 from decimal import Decimal
+from pathlib import Path
 from typing import Any
 
 from alembic import command
@@ -30,6 +31,13 @@ from actuator_selection.db.engine import make_engine
 from actuator_selection.db.migrate import alembic_config, upgrade
 from actuator_selection.db.models import Base
 from actuator_selection.db.sales import QuoteRepository
+
+LEAN_ANSWER = json.dumps(
+    json.loads((Path(__file__).parent / "data" / "selection_answers_v1.json").read_bytes())[
+        "cases"
+    ]["worked_example"]["answer"]
+).encode()
+"""A stored answer as the lean code of 2026-11-23 wrote it (``test_answer_upgrade.py``)."""
 
 
 def test_upgrade_from_empty_creates_every_table(
@@ -144,7 +152,11 @@ def test_quotes_made_before_0008_keep_their_figures_and_read_without_terms(
             )
             conn.execute(
                 insert(selections).values(
-                    id="s-1", created_at=now, catalogue_version=1, request={}, answer_gzip=b""
+                    id="s-1",
+                    created_at=now,
+                    catalogue_version=1,
+                    request={},
+                    answer_gzip=gzip.compress(LEAN_ANSWER),
                 )
             )
             conn.execute(insert(quotes).values(**old_quote))

@@ -89,6 +89,7 @@ def _database(url: str, *, postgres: bool) -> Iterator[Engine]:
                 catalogue_version=1,
                 request={},
                 answer_gzip=gzip.compress(b"{}"),
+                answer_version=2,
             )
         )
     yield engine

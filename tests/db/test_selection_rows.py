@@ -24,6 +24,7 @@ def _row(id: str, version: int) -> NewSelection:
         catalogue_version=version,
         request={"load": {"speed_rpm": 40.0}, "models": None},
         answer_gzip=b"\x1f\x8b stored as sent",
+        answer_version=2,
     )
 
 

@@ -182,13 +182,14 @@ class CatalogueVersionRepository:
 @dataclass(frozen=True, slots=True, kw_only=True)
 class NewSelection:
     """A selection to store: its request, the catalogue version it was sized against and
-    its answer as sent, gzip-compressed."""
+    its answer as sent, gzip-compressed, and the version of the answer's shape."""
 
     id: str
     created_at: datetime
     catalogue_version: int
     request: dict[str, Any]
     answer_gzip: bytes
+    answer_version: int
 
 
 _NEW_SELECTION_FIELDS = tuple(f.name for f in fields(NewSelection))
@@ -234,6 +235,16 @@ class SelectionRepository:
     def answer_gzip(self, id: str) -> bytes | None:
         """The stored answer of a selection (gzip-compressed JSON), or None."""
         return self._session.scalar(select(SelectionRow.answer_gzip).where(SelectionRow.id == id))
+
+    def answer(self, id: str) -> tuple[bytes, int] | None:
+        """The stored answer of a selection (gzip-compressed JSON) and the version of its
+        shape, or None."""
+        row = self._session.execute(
+            select(SelectionRow.answer_gzip, SelectionRow.answer_version).where(
+                SelectionRow.id == id
+            )
+        ).one_or_none()
+        return None if row is None else (row.answer_gzip, row.answer_version)
 
     def request(self, id: str) -> tuple[dict[str, Any], int] | None:
         """The stored request of a selection and its catalogue version, or None."""

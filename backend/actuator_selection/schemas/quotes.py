@@ -16,7 +16,6 @@ from typing import Annotated, Any, Literal
 
 from pydantic import (
     AfterValidator,
-    BaseModel,
     BeforeValidator,
     ConfigDict,
     Field,
@@ -39,6 +38,14 @@ from actuator_selection.core.quote_status import (
 from actuator_selection.core.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, SellerParty
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.common import ResponseModel, StrictModel
+from actuator_selection.schemas.selections import (
+    CandidateFigures,
+    CheckBrief,
+    CheckRuleOut,
+    ResolvedLoad,
+    SegmentOut,
+    SelectionOut,
+)
 
 DECIMAL_TEXT_RULE = N_(
     'must be a decimal number written with the digits 0–9 and perhaps a point, e.g. "7.5"'
@@ -383,34 +390,17 @@ class QuoteListOut(ResponseModel):
     quotes: list[QuoteOut]
 
 
-class _Stored(BaseModel):
-    """A part of a stored selection response, read leniently: fields added to the
-    selection contract later are ignored, so old and new selections both read."""
-
-    model_config = ConfigDict(extra="ignore", frozen=True)
-
-
 _UNNAMED_NEED = N_("value this check needs")
-"""What a no-data check stored without ``missing`` lacks."""
+"""What a no-data check lacks where the answer does not name it (answers upgraded from
+before the lean one, migration 0010)."""
 
 
-class StoredCheck(_Stored):
-    """A flowchart check as stored with the selection.
+class StoredCheck(CheckBrief):
+    """A check of a stored candidate: its numbers as the answer lists them, and its rule's
+    unit and reference (the answer's ``check_rules``, set by :class:`StoredSelection`)."""
 
-    Selections stored before the lean answer hold unit, reference, message and margin
-    with every check; later ones hold the numbers, the rule's unit and reference once
-    (``check_rules``), and what a no-data check misses. Both read the same.
-    """
-
-    name: str
-    status: str
-    value: float | None = None
-    limit: float | None = None
     unit: str = ""
     reference: str = ""
-    message: str = ""
-    approximate: bool = False
-    missing: str | None = None
 
     @property
     def margin_percent(self) -> float | None:
@@ -419,19 +409,16 @@ class StoredCheck(_Stored):
 
     @property
     def summary(self) -> str:
-        """The check in words (English): the stored message, or one written from its numbers
-        after the check's name (``max_speed: 40 rpm ≤ 90 rpm``)."""
+        """The check in words (English), after the check's name where it has numbers
+        (``max_speed: 40 rpm ≤ 90 rpm``)."""
         said = self.phrase
-        return said if self.message or self.status == "no_data" else f"{self.name}: {said}"
+        return said if self.status == "no_data" else f"{self.name}: {said}"
 
     @property
     def phrase(self) -> str:
         """The check in words as a message with a code (``core/check_messages.py``), which
         the API renders in a reader's language (the check's name, which :attr:`summary` puts
-        before the numbers, stands beside it where it is shown); a message stored as text by
-        an older answer stays that text."""
-        if self.message:
-            return self.message
+        before the numbers, stands beside it where it is shown)."""
         if self.status == "no_data":
             return phrase("no_data", what=Words(self.missing or _UNNAMED_NEED))
         if self.value is None or self.limit is None:
@@ -444,18 +431,10 @@ class StoredCheck(_Stored):
         )
 
 
-class StoredCandidate(_Stored):
-    """A candidate as stored with the selection."""
+class StoredCandidate(CandidateFigures):
+    """A candidate as stored with the selection: its figures and its checks."""
 
-    model: str
-    family: str
-    gear_ratio: float
-    verdict: Literal["suitable", "unconfirmed", "unsuitable"]
-    accel_torque_nm: float | None = None
-    constant_torque_nm: float | None = None
-    decel_torque_nm: float | None = None
-    rms_torque_nm: float | None = None
-    checks: list[StoredCheck] = []
+    checks: list[StoredCheck]
 
     @property
     def reasons(self) -> list[str]:
@@ -463,23 +442,7 @@ class StoredCandidate(_Stored):
         return [c.summary for c in self.checks if c.status != "pass"]
 
 
-class StoredRule(_Stored):
-    """Reference and unit of a check, as the lean answer lists them once."""
-
-    name: str
-    reference: str
-    unit: str
-
-
-class StoredLoad(_Stored):
-    """The resolved load at the output."""
-
-    speed_rpm: float
-    torque_nm: float
-    inertia_kgm2: float
-
-
-class StoredCycle(_Stored):
+class StoredCycle(ResponseModel):
     """The cycle as sent: the chapter's t_1…t_p [s], or segments (then the times are None
     and the selection's :attr:`StoredSelection.segments` list them at the output)."""
 
@@ -494,19 +457,8 @@ class StoredCycle(_Stored):
         return self.accel_s is not None
 
 
-class StoredSegment(_Stored):
-    """One segment of the cycle at the actuator output, as the answer lists it."""
-
-    start_s: float
-    duration_s: float
-    start_rpm: float
-    end_rpm: float
-    jerk_share: float = 0.0
-    process_torque_nm: float = 0.0
-
-
 def cycle_facts(
-    cycle: StoredCycle, segments: list[StoredSegment]
+    cycle: StoredCycle, segments: list[SegmentOut]
 ) -> list[tuple[str, str, float | None, str]]:
     """The cycle as a report lists it: (key, label, value, unit) per time of the chapter's
     t_1…t_p, or per segment its duration and its speeds at the output."""
@@ -527,32 +479,47 @@ def cycle_facts(
     return facts
 
 
-class StoredSelection(_Stored):
-    """What a quote needs of a stored selection (``GET /selections/{id}``'s body)."""
+class StoredSelection(ResponseModel):
+    """What quotes, reports and the AAS export read of a stored selection (``GET
+    /selections/{id}``'s body), read strictly: the answer must be today's
+    ``SelectionOut`` with every field, as the selection presenter writes it
+    (``ANSWER_VERSION``); the migration 0010 upgraded the answers of older shapes."""
 
     id: str
     created_at: datetime
     catalogue_version: int
-    load: StoredLoad
-    mechanism: dict[str, Any] | None = None
+    load: ResolvedLoad
+    mechanism: dict[str, Any] | None
     cycle: StoredCycle
-    segments: list[StoredSegment] = []
-    high_dynamics: bool = True
+    segments: list[SegmentOut]
+    high_dynamics: bool
     cycle_time_s: float
     mean_speed_rpm: float
     duty_cycle_percent: float
     candidates: list[StoredCandidate]
-    check_rules: list[StoredRule] = []
+    check_rules: list[CheckRuleOut]
+
+    @model_validator(mode="before")
+    @classmethod
+    def _todays_shape(cls, data: Any) -> Any:
+        """The stored answer is a whole ``SelectionOut``: every field present and valid."""
+        if isinstance(data, dict):
+            missing = sorted(set(SelectionOut.model_fields) - set(data))
+            if missing:
+                raise ValueError(f"not an answer of today's shape, it lacks {missing}")
+            SelectionOut.model_validate(data)
+        return data
 
     @model_validator(mode="after")
     def _rules_on_checks(self) -> StoredSelection:
-        """Each check with its rule's unit and reference (the lean answer lists them once)."""
+        """Each check with its rule's unit and reference (the answer lists them once)."""
         rules = {r.name: r for r in self.check_rules}
         for candidate in self.candidates:
             for i, check in enumerate(candidate.checks):
                 rule = rules.get(check.name)
-                if rule is not None and not check.unit:
-                    candidate.checks[i] = check.model_copy(
-                        update={"unit": rule.unit, "reference": rule.reference}
-                    )
+                if rule is None:
+                    raise ValueError(f"check {check.name!r} is not among the check_rules")
+                candidate.checks[i] = check.model_copy(
+                    update={"unit": rule.unit, "reference": rule.reference}
+                )
         return self

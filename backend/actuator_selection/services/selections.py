@@ -86,6 +86,7 @@ class SizedSelection:
             catalogue_version=self.catalogue_version,
             request=self.request,
             answer_gzip=self.answer_gzip,
+            answer_version=presenter.ANSWER_VERSION,
         )
 
 
@@ -296,9 +297,21 @@ def stored_answer(session: Session, selection_id: str) -> bytes:
 
 
 def stored_answer_json(session: Session, selection_id: str) -> JSON | None:
-    """The stored answer of a selection as JSON data, or None."""
-    stored = SelectionRepository(session).answer_gzip(selection_id)
-    return None if stored is None else orjson.loads(gzip.decompress(stored))
+    """The stored answer of a selection as JSON data, or None; an answer of an older
+    shape than :data:`~.presenters.selection.ANSWER_VERSION` (its upgrade, a migration,
+    not run) is an error."""
+    stored = SelectionRepository(session).answer(selection_id)
+    if stored is None:
+        return None
+    answer, version = stored
+    if version != presenter.ANSWER_VERSION:
+        raise RuntimeError(
+            f"selection {selection_id!r} holds an answer of version {version}, not "
+            f"{presenter.ANSWER_VERSION}: upgrade the database "
+            "(python -m actuator_selection migrate)"
+        )
+    data: JSON = orjson.loads(gzip.decompress(answer))
+    return data
 
 
 def stored_candidate(

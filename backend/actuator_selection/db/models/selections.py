@@ -25,3 +25,6 @@ class SelectionRow(Base):
     request: Mapped[dict[str, Any]] = mapped_column(JSONDocument)
     answer_gzip: Mapped[bytes] = mapped_column(LargeBinary)
     """The answer's JSON bytes as sent, gzip-compressed (~8× smaller than the JSON)."""
+    answer_version: Mapped[int] = mapped_column(Integer)
+    """The shape of the answer (``services.presenters.selection.ANSWER_VERSION``): the
+    answers of older shapes were upgraded to the current one by a migration, once."""
