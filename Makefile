@@ -9,7 +9,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
 NODE_STAMP := node_modules/.installed-$(shell cat package.json package-lock.json | cksum | cut -d' ' -f1)
 
-.PHONY: install run test check lint typecheck jslint pytest bench lock messages clean
+.PHONY: install run test check lint typecheck jslint pytest bench lock messages api-types clean
 
 $(STAMP): requirements.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -101,6 +101,12 @@ messages: install
 	@# The template has no locations (extract --no-location), so neither has the catalog.
 	$(BIN)/pybabel update -i var/messages.pot -d backend/actuator_selection/locale -D messages \
 		--ignore-obsolete --width 100
+
+## The page's types of the API's requests and answers (types/api.d.ts), generated from
+## /openapi.json by openapi-typescript (package-lock.json); run after changing a schema:
+## tests/api/test_generated_typescript.py fails while the file is stale.
+api-types: install
+	$(BIN)/python -m tests.api.test_generated_typescript
 
 clean:
 	rm -rf $(VENV) node_modules var .mypy_cache .ruff_cache .pytest_cache

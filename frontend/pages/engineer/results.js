@@ -61,7 +61,11 @@ function definition(term, value, props = {}) {
   return h("div", { class: "kv", ...props }, h("dt", {}, term), h("dd", {}, value));
 }
 
-/** The load case as the API resolved it, and the cycle figures of Eq. 514.3/514.4. */
+/**
+ * The load case as the API resolved it, and the cycle figures of Eq. 514.3/514.4.
+ * @param {import("../../lib/api.js").SelectionOut} sel
+ * @param {string} lang
+ */
 export function renderSummary(sel, lang) {
   const t = (k) => translate(lang, k);
   const termWithSym = (key, symbol) => [t(key), " ", sym(symbol, { class: "sym" })];
@@ -323,6 +327,7 @@ function firstRows(candidates, filter) {
  * filter), the table says ``data-rows="partial"`` and ``drawRemainingRows`` adds the rest:
  * the whole catalogue's 64 rows were half the results' first layout, and all but a few
  * are below the fold of their scroll box.
+ * @param {import("../../lib/api.js").SelectionOut} sel
  */
 export function renderRanking(sel, chosenModel, filter, lang, options, { rows = "all" } = {}) {
   const { onFilter, compareCell, compareStatus } = options;
@@ -419,6 +424,8 @@ export function renderRanking(sel, chosenModel, filter, lang, options, { rows = 
  * When nothing fits: what binds across the catalogue and what would change it, in words,
  * from the answer's ``binding`` (counted and solved by the server; null when something
  * fits, absent from answers stored before it existed). Null when there is nothing to say.
+ * @param {import("../../lib/api.js").SelectionOut} sel
+ * @param {string} lang
  */
 export function renderBinding(sel, lang) {
   const binding = sel.binding;
