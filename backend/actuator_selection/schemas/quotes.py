@@ -42,6 +42,8 @@ from actuator_selection.schemas.selections import (
     CandidateFigures,
     CheckBrief,
     CheckRuleOut,
+    ControllerRef,
+    DriveOptionGroup,
     ResolvedLoad,
     SegmentOut,
     SelectionOut,
@@ -435,6 +437,7 @@ class StoredCandidate(CandidateFigures):
     """A candidate as stored with the selection: its figures and its checks."""
 
     checks: list[StoredCheck]
+    drive_options: list[DriveOptionGroup] | None
 
     @property
     def reasons(self) -> list[str]:
@@ -498,6 +501,7 @@ class StoredSelection(ResponseModel):
     duty_cycle_percent: float
     candidates: list[StoredCandidate]
     check_rules: list[CheckRuleOut]
+    controllers: list[ControllerRef]
 
     @model_validator(mode="before")
     @classmethod

@@ -24,7 +24,6 @@ import hashlib
 import json
 from dataclasses import dataclass
 from datetime import UTC, date, datetime
-from typing import Any
 from urllib.parse import quote as quote_path
 
 from sqlalchemy.orm import Session
@@ -167,23 +166,21 @@ def _price(
     return prices[0]
 
 
-def _compatible(stored: dict[str, Any], model: str) -> dict[int, str]:
+def _compatible(selection: StoredSelection, model: str) -> dict[int, str]:
     """The Table 521.1 rows the stored answer lists for ``model``, with their level."""
-    refs = stored.get("controllers") or []
-    raw: dict[str, Any] = next(
-        (c for c in stored.get("candidates", ()) if c.get("model") == model), {}
-    )
+    refs = selection.controllers
+    candidate = next((c for c in selection.candidates if c.model == model), None)
     rows: dict[int, str] = {}
-    for group in raw.get("drive_options") or ():
-        for index in group.get("controllers", ()):
-            row = refs[index].get("source_row") if 0 <= index < len(refs) else None
-            if isinstance(row, int):
-                rows.setdefault(row, str(group.get("level", "")))
+    for group in (candidate.drive_options if candidate is not None else None) or ():
+        for index in group.controllers:
+            row = refs[index].source_row if 0 <= index < len(refs) else None
+            if row is not None:
+                rows.setdefault(row, group.level)
     return rows
 
 
 def _controller_description(
-    session: Session, body: QuoteCreate, stored: dict[str, Any], model: str
+    session: Session, body: QuoteCreate, selection: StoredSelection, model: str
 ) -> str:
     """The controller line's text; with ``source_row``, checked against Table 521.1 as the
     selection matched it for ``model`` (422 naming the field and the rule otherwise)."""
@@ -198,7 +195,7 @@ def _controller_description(
     if record is None:
         raise invalid(loc, "unknown_controller", row=row)
     controller = record.controller
-    compatible = _compatible(stored, model)
+    compatible = _compatible(selection, model)
     level = compatible.get(row)
     if level is None:
         interface = repository.interfaces([model]).get(model)
@@ -295,7 +292,7 @@ def _new_quote(
             (
                 "controller",
                 body.controller.item_code,
-                _controller_description(session, body, stored, candidate.model),
+                _controller_description(session, body, selection, candidate.model),
                 body.controller.quantity,
                 controller_price,
             )
