@@ -880,11 +880,20 @@ export interface components {
          * @description A catalogue actuator; ``null`` where no public source gives the value.
          */
         ActuatorOut: {
-            /** Model */
+            /**
+             * Model
+             * @description catalogue model
+             */
             model: string;
-            /** Family */
+            /**
+             * Family
+             * @description actuator family
+             */
             family: string;
-            /** Gear Ratio */
+            /**
+             * Gear Ratio
+             * @description i, gear ratio
+             */
             gear_ratio: number;
             /**
              * Max Torque Nm
@@ -913,7 +922,7 @@ export interface components {
             continuous_torque_nm: number | null;
             /**
              * Max Current A
-             * @description I_max [A_rms]
+             * @description I_max, maximum current [A_rms]
              */
             max_current_a: number | null;
             /**
@@ -928,22 +937,22 @@ export interface components {
             continuous_current_a: number | null;
             /**
              * Torque Constant Nm Per A
-             * @description k_T at the output [Nm/A]
+             * @description k_T, torque constant at the output [Nm/A]
              */
             torque_constant_nm_per_a: number | null;
             /**
              * Motor Torque Constant Nm Per A
-             * @description k_TM of the motor [Nm/A]
+             * @description k_TM, torque constant of the motor [Nm/A]
              */
             motor_torque_constant_nm_per_a: number | null;
             /**
              * Motor Voltage Constant V Per Krpm
-             * @description K_E of the motor, line-to-line [V per 1000 rpm motor speed]
+             * @description K_E, voltage constant of the motor, line-to-line [V per 1000 rpm motor speed]
              */
             motor_voltage_constant_v_per_krpm: number | null;
             /**
              * Output Voltage Constant V Per Rpm
-             * @description k_E referred to the output [V per output rpm]
+             * @description k_E, voltage constant referred to the output [V per output rpm]
              */
             output_voltage_constant_v_per_rpm: number | null;
             /**
@@ -956,34 +965,55 @@ export interface components {
              * @description winding resistance per phase [Ω]
              */
             resistance_phase_ohm: number | null;
-            /** Inductance Line Mh */
+            /**
+             * Inductance Line Mh
+             * @description L, winding inductance, line-to-line [mH]
+             */
             inductance_line_mh: number | null;
-            /** Inductance Phase Mh */
+            /**
+             * Inductance Phase Mh
+             * @description winding inductance per phase [mH]
+             */
             inductance_phase_mh: number | null;
             /**
              * No Load Starting Current A
-             * @description I_NLS (Eq. 522.2) [A]
+             * @description I_NLS, no-load starting current [A] (Eq. 522.2)
              */
             no_load_starting_current_a: number | null;
             /**
              * No Load Current Constant 30C A Per Rpm
-             * @description K_INL at 30 °C (Eq. 522.2) [A/rpm]
+             * @description K_INL, no-load current constant at 30 °C [A/rpm] (Eq. 522.2)
              */
             no_load_current_constant_30c_a_per_rpm: number | null;
             /**
              * No Load Current Constant 80C A Per Rpm
-             * @description K_INL at 80 °C [A/rpm]
+             * @description K_INL, no-load current constant at 80 °C [A/rpm] (Eq. 522.2)
              */
             no_load_current_constant_80c_a_per_rpm: number | null;
-            /** Thermal Time Constant S */
+            /**
+             * Thermal Time Constant S
+             * @description thermal time constant [s]
+             */
             thermal_time_constant_s: number | null;
-            /** Mass Kg */
+            /**
+             * Mass Kg
+             * @description mass of the actuator [kg]
+             */
             mass_kg: number | null;
-            /** Max Dc Bus Voltage V */
+            /**
+             * Max Dc Bus Voltage V
+             * @description maximum DC bus voltage [V]
+             */
             max_dc_bus_voltage_v: number | null;
-            /** Supply Voltage */
+            /**
+             * Supply Voltage
+             * @description supply voltage, as the catalogue writes it
+             */
             supply_voltage: string | null;
-            /** Feedback */
+            /**
+             * Feedback
+             * @description feedback system, as the catalogue writes it
+             */
             feedback: string | null;
             /**
              * Continuous Duty Zone
@@ -1065,23 +1095,34 @@ export interface components {
             output_bearing_moment_stiffness_nm_per_rad: number | null;
             /**
              * Pole Pairs
-             * @description the motor's number of pole pairs p
+             * @description p, number of pole pairs of the motor
              */
             pole_pairs: number | null;
             /**
              * Output Bearing Type
-             * @description the output bearing's type, `cross_roller` or `four_point_contact_ball`: it sets the life exponent (10/3 or 3)
+             * @description type of the output bearing (`cross_roller` or `four_point_contact_ball`): it sets the life exponent (10/3 or 3)
              */
             output_bearing_type: string | null;
-            /** Notes */
+            /**
+             * Notes
+             * @description notes
+             */
             notes: string | null;
             /**
              * Derivation
              * @description how the row's derived values were obtained
              */
             derivation: string | null;
-            /** Source */
+            /**
+             * Source
+             * @description the manufacturer's documents the row's values come frompublisher, title, document number, edition, page or table; never a mirror
+             */
             source: string;
+            /**
+             * Read At
+             * @description where the values were read or checkedpublic copies of the documents that source cites, beside the citation
+             */
+            read_at: string | null;
         };
         /**
          * ActuatorPageOut
@@ -4453,6 +4494,8 @@ export interface operations {
                     derivation?: string | null;
                     /** @description as the column source of actuators.csv */
                     source: string;
+                    /** @description as the column read_at of actuators.csv */
+                    read_at?: string | null;
                 };
             };
         };
@@ -4743,6 +4786,8 @@ export interface operations {
                     derivation?: string | null;
                     /** @description as the column source of actuators.csv */
                     source: string;
+                    /** @description as the column read_at of actuators.csv */
+                    read_at?: string | null;
                 };
             };
         };
@@ -7913,7 +7958,7 @@ export interface operations {
                  *           "warning_resistance_ohm": 882,
                  *           "shutdown_resistance_ohm": 940,
                  *           "resistance_tolerance_percent": 3,
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 518.1 (sensor) and Table 519.2 (FHA/CHA limits)"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 518.1 (sensor) and Table 519.2 (FHA/CHA limits)"
                  *         }
                  *       ],
                  *       "actuators": [
@@ -7962,7 +8007,8 @@ export interface operations {
                  *           "output_bearing_type": null,
                  *           "notes": "the chapter's worked example; only T_max, n_max and J_A are given there",
                  *           "derivation": null,
-                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 516.3"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 516.3",
+                 *           "read_at": null
                  *         }
                  *       ],
                  *       "zone_points": [],
@@ -7989,7 +8035,7 @@ export interface operations {
                  *           "feedback_endat": "tested",
                  *           "feedback_ttl": null,
                  *           "correction": "column TorqDrive read as TorkDrive (spelling of Table 518.1; one product family)",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 521.1"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 521.1"
                  *         }
                  *       ],
                  *       "temperature_sensors": [
@@ -8001,7 +8047,7 @@ export interface operations {
                  *           "sensor_count": 1,
                  *           "nominal_response_temperature_c": 145,
                  *           "note": "Table 518.1 row FHA-C-L/CHA/CHM",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 518.1"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 518.1"
                  *         },
                  *         {
                  *           "family": "FHA-C",
@@ -8011,7 +8057,7 @@ export interface operations {
                  *           "sensor_count": 1,
                  *           "nominal_response_temperature_c": null,
                  *           "note": "Table 518.1 row FHA-C-H/CHA/CHM FFA-H/FPA-H",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 518.1"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 518.1"
                  *         }
                  *       ],
                  *       "kty84_130": [
@@ -8197,21 +8243,21 @@ export interface operations {
                  *           "label": "24 VDC bus voltage",
                  *           "nominal_dc_voltage_v": 24,
                  *           "derivation": "the class's own voltage",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 521.1 (column heading)"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 521.1 (column heading)"
                  *         },
                  *         {
                  *           "bus_class": "320vdc",
                  *           "label": "320 VDC bus voltage",
                  *           "nominal_dc_voltage_v": 320,
                  *           "derivation": "the class's own voltage; derived check: a rectified single-phase 230 V AC supply gives 230 V · √2 ≈ 325 V",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 521.1 (column heading)"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 521.1 (column heading)"
                  *         },
                  *         {
                  *           "bus_class": "560vdc",
                  *           "label": "≥ 560 VDC bus voltage",
                  *           "nominal_dc_voltage_v": 560,
                  *           "derivation": "the class's lower bound (the heading reads ≥ 560 VDC), so the available output voltage is conservative for the class; derived check: a rectified three-phase 400 V AC supply gives 400 V · √2 ≈ 566 V",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 521.1 (column heading)"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 521.1 (column heading)"
                  *         }
                  *       ],
                  *       "actuator_interfaces": [
@@ -8221,7 +8267,7 @@ export interface operations {
                  *           "temperature_sensors": "ptc",
                  *           "feedback_systems": null,
                  *           "derivation": "the -L variant carries the PTC 116-K13-145 °C (Table 518.1, row FHA-C-L); bus class and feedback not given by the chapter",
-                 *           "source": "Engineering Data for Harmonic Drive Servo Actuators, Table 518.1"
+                 *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 518.1"
                  *         }
                  *       ]
                  *     }

@@ -1,10 +1,10 @@
-"""Stored answers of the historical shapes are upgraded once (migration 0010), then read
+"""Stored answers of the historical shapes are upgraded once (migration 0011), then read
 strictly, on SQLite and PostgreSQL.
 
 The old answers are the ones the old code wrote (``data/selection_answers_v0.json``: the
 answer before the lean one, commit 2cc9373^; ``…_v1.json``: the lean answer as first
 stored, commit 2cc9373; ``data/generate_old_answers.py`` made them). They are stored
-in a database at revision 0009 as those versions stored them, beside an answer of today
+in a database at revision 0010 as those versions stored them, beside an answer of today
 and a quote made from an old one; after the upgrade every answer is today's
 ``SelectionOut``, with the same figures, and the quotes render.
 """
@@ -55,7 +55,7 @@ SELECTIONS = table(
     column("request", JSON),
     column("answer_gzip"),
 )
-"""The selections table at revision 0009."""
+"""The selections table at revision 0010."""
 
 ADDED = {
     "brake": False,
@@ -107,11 +107,11 @@ _QUOTE_TYPES: dict[str, Any] = {
 
 @pytest.fixture
 def upgraded(backend: str, new_database: Callable[[str], str]) -> Iterator[tuple[Engine, bytes]]:
-    """A database at 0009 holding old answers of each version, today's answer (id
+    """A database at 0010 holding old answers of each version, today's answer (id
     ``today``) and a quote from an old answer, upgraded to head; and today's answer."""
     url = new_database(backend)
     config = alembic_config(url=url)
-    command.upgrade(config, "0009")
+    command.upgrade(config, "0010")
     engine = make_engine(url)
     now = datetime(2026, 11, 20, tzinfo=UTC)
     try:
