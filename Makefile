@@ -92,15 +92,20 @@ lock: install
 		--python-platform x86_64-manylinux_2_28 --no-header --no-annotate \
 		--constraint requirements.lock -o requirements-runtime.lock
 
-## Re-extract the error message templates (N_) and merge them into the catalogs; then
-## translate every new msgid in backend/actuator_selection/locale/*/LC_MESSAGES/messages.po.
-## The catalogs are read as .po at run time: nothing to compile.
+## The catalogue of words (docs/i18n.md): re-extract the server's messages (N_ in the code),
+## keep the keyed words declared in the catalogue (msgctxt: the page's keys, document.*),
+## merge both into backend/actuator_selection/locale/*/LC_MESSAGES/messages.po, and export
+## the page's words to frontend/lib/messages.js (checked in; a test fails when it is stale).
+## Then translate every new or fuzzy entry. The catalogs are read as .po at run time.
 messages: install
+	mkdir -p var
 	$(BIN)/pybabel extract -F babel.cfg -k N_ --no-default-keywords --sort-output \
 		--no-location --width 100 --project actuator-selection -o var/messages.pot backend
+	$(BIN)/python -m actuator_selection.api.page_words template var/messages.pot
 	@# The template has no locations (extract --no-location), so neither has the catalog.
 	$(BIN)/pybabel update -i var/messages.pot -d backend/actuator_selection/locale -D messages \
 		--ignore-obsolete --width 100
+	$(BIN)/python -m actuator_selection.api.page_words export
 
 ## The page's types of the API's requests and answers (types/api.d.ts), generated from
 ## /openapi.json by openapi-typescript (package-lock.json); run after changing a schema:

@@ -19,7 +19,8 @@ from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language
+from actuator_selection.api.messages import words
+from actuator_selection.api.quote_document_text import DOCUMENT, DocumentText, Language
 from actuator_selection.services.pdf import DocumentPdf, unicode_font
 
 __all__ = ["api", "sales_api_with"]
@@ -53,8 +54,9 @@ def _pdf(body: bytes) -> tuple[str, int]:
 
 def _english_only() -> set[str]:
     """Words only the documents' English texts use."""
-    english = {w.lower() for text in TEXT.values() for w in WORD.findall(text["en"])}
-    german = {w.lower() for text in TEXT.values() for w in WORD.findall(text["de"])}
+    labels = [key for key in words("en") if key.startswith(DOCUMENT)]
+    english = {w.lower() for key in labels for w in WORD.findall(words("en")[key])}
+    german = {w.lower() for key in labels for w in WORD.findall(words("de")[key])}
     return english - german
 
 

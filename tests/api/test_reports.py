@@ -189,7 +189,7 @@ def test_pdf_shows_the_answer_in_the_requests_language(
         place = text.index(f"{rank}. {candidate['model']} (", place)
         shown = torques.search(text, place)
         assert shown is not None
-        verdict = f": {t('verdict_' + candidate['verdict'])} "
+        verdict = f": {t('verdict.' + candidate['verdict'])} "
         assert text.index(verdict, place) < shown.start()  # a page's footer may fall between
         if candidate["accel_torque_nm"] is not None:
             values = [_read_number(shown.group(k), language) for k in (2, 4, 6, 8)]

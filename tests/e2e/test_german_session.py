@@ -2,10 +2,10 @@
 form, its results, a field error, a candidate's detail, the sales page, a quote, its
 printable document and its PDF, three clicks from the engineer's result to the PDF.
 
-"No English" is checked against words, not phrases: every word of the page's English
-texts (``frontend/lib/i18n.js``), of the server's English messages (the msgids of the
-German catalogue) and of the quote document (``api/quote_document_text.py``) that none of
-their German texts use (so "Nm", "Harmonic Drive", "Status" or model names never count). The
+"No English" is checked against words, not phrases: every word of the English texts (the
+msgids of the German catalogue: the page's words, the server's messages and the
+documents' labels, ``docs/i18n.md``) that none of their German texts use (so "Nm",
+"Harmonic Drive", "Status" or model names never count). The
 visible text of the page and its ``aria-label``, ``title`` and ``placeholder`` attributes
 are read; text in an element marked ``translate="no"`` (names and data: a controller's
 type, a catalogue source, a price list's own description) and data the test itself
@@ -26,17 +26,14 @@ from playwright.sync_api import Browser, Locator, Page, expect
 from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST
 
 from actuator_selection.api.messages import catalog_path
-from actuator_selection.api.quote_document_text import TEXT as DOCUMENT_TEXT
 
 from .conftest import SalesSite
 from .test_engineer_page import fill_worked_example, wait_for_charts
 
 pytestmark = pytest.mark.browser
 
-ROOT = Path(__file__).resolve().parents[2]
 SLOW_MS = 30_000
 WORD = re.compile(r"[A-Za-zÄÖÜäöüß]{3,}")
-STRING = re.compile(r'"([^"\\]+(?:\\.[^"\\]*)*)":\s*"((?:[^"\\]|\\.)*)"')
 
 VISIBLE_TEXT_JS = """() => {
   // the rendered text of every element, its label attributes, less what is marked translate=no
@@ -69,16 +66,10 @@ def _words(texts: list[str]) -> set[str]:
 
 @cache
 def english_words() -> frozenset[str]:
-    """Words only the English texts use: the page's, the server's and the quote document's,
-    less every word of their German texts."""
-    source = (ROOT / "frontend" / "lib" / "i18n.js").read_text(encoding="utf-8")
-    german_block = source[source.index("  de: {") : source.index("  en: {")]
-    english_block = source[source.index("  en: {") : source.index("\n};")]
-    english = [text for _, text in STRING.findall(english_block)]
-    german = [text for _, text in STRING.findall(german_block)]
-    for text in DOCUMENT_TEXT.values():  # the quote document's own table
-        english.append(text["en"])
-        german.append(text["de"])
+    """Words only the English texts use: the page's, the server's and the documents' (one
+    catalogue), less every word of their German texts."""
+    english: list[str] = []
+    german: list[str] = []
     with catalog_path("de").open("rb") as file:
         for message in read_po(file):
             if isinstance(message.id, str) and message.id and isinstance(message.string, str):

@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any, Final
 
 from babel import Locale
+from babel.messages.catalog import Catalog
 from babel.messages.pofile import read_po
 from babel.numbers import format_decimal, format_scientific
 from werkzeug.datastructures import LanguageAccept
@@ -79,18 +80,53 @@ def catalog_path(language: str) -> Path:
     return LOCALE_DIR / language / "LC_MESSAGES" / f"{DOMAIN}.po"
 
 
+SOURCE_CATALOG: Final = "de"
+"""The catalog whose msgids (English) also declare the keyed words (:func:`words`)."""
+
+
+@functools.cache
+def catalog(language: str) -> Catalog:
+    """``language``'s catalog as it is written (read once)."""
+    with catalog_path(language).open("rb") as file:
+        return read_po(file, locale=language, domain=DOMAIN)
+
+
 @functools.cache
 def translations(language: str) -> Mapping[str, str]:
-    """msgid → translation of ``language``'s catalog (empty for English, the msgids)."""
+    """msgid → translation of ``language``'s catalog (empty for English, the msgids), of
+    the messages without a context (the templates marked with ``N_``)."""
     if language == DEFAULT_LANGUAGE:
         return {}
-    with catalog_path(language).open("rb") as file:
-        catalog = read_po(file, locale=language, domain=DOMAIN)
     return {
         str(m.id): str(m.string)
-        for m in catalog
-        if m.id and isinstance(m.id, str) and m.string and not m.fuzzy
+        for m in catalog(language)
+        if m.id and isinstance(m.id, str) and m.string and not m.fuzzy and not m.context
     }
+
+
+@functools.cache
+def words(language: str) -> Mapping[str, str]:
+    """Key (msgctxt) → text in ``language`` of the keyed words: the page's
+    (``frontend/lib/messages.js`` is exported from them) and the documents'. English is
+    the msgid, another language its catalog's translation.
+
+    >>> words("en")["document.heading"], words("de")["document.heading"]
+    ('Quotation', 'Angebot')
+    """
+    if language == DEFAULT_LANGUAGE:
+        source = catalog(SOURCE_CATALOG)
+        return {m.context: str(m.id) for m in source if m.context and isinstance(m.id, str)}
+    return {
+        m.context: str(m.string)
+        for m in catalog(language)
+        if m.context and isinstance(m.string, str) and m.string and not m.fuzzy
+    }
+
+
+def word(key: str, language: str) -> str:
+    """The keyed word ``key`` in ``language`` (:func:`words`); KeyError where the catalog
+    has none (a test holds every key the code and the page use against the catalog)."""
+    return words(language)[key]
 
 
 def translate(text: str, language: str) -> str:

@@ -26,10 +26,11 @@ from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescap
 from markupsafe import Markup
 
 from actuator_selection.api.messages import render_check
-from actuator_selection.api.quote_document_text import TEXT, DocumentText, Language, load_rows
+from actuator_selection.api.quote_document_text import DocumentText, Language, load_rows
 from actuator_selection.api.static import PLOTLY_URL
 from actuator_selection.core.citations import citation
-from actuator_selection.core.quote_terms import SellerParty
+from actuator_selection.core.money import ROUNDING_RULE
+from actuator_selection.core.quote_terms import VAT_ROUNDING_RULE, SellerParty
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.core.symbols import symbols
 from actuator_selection.schemas.quotes import (
@@ -103,7 +104,7 @@ def script_safe_json(text: str) -> str:
 def _label(t: DocumentText, key: str, fallback: str) -> Markup:
     """The label ``key`` if the table has it, else ``fallback`` (a name added later, its
     underscores as spaces), symbols subscripted."""
-    return t.words(key) if key in TEXT else symbols(fallback.replace("_", " "))
+    return t.words(key) if t.has(key) else symbols(fallback.replace("_", " "))
 
 
 def margin_text(value: float | None, limit: float | None, t: DocumentText) -> str:
@@ -432,6 +433,7 @@ def quote_document_context(
     actuator = record.actuator_snapshot
     seller = record.seller or current_seller
     currency = quote.currency
+    rounding_rule = t("rounding", rule=t.translate(ROUNDING_RULE))
     if record.tax is not None:
         tax = record.tax
         totals = [
@@ -442,14 +444,14 @@ def quote_document_context(
             {"cls": "total", "label": t("gross_total", currency=currency), "field": "gross",
              "value": money(tax.gross, currency, t)},
         ]  # fmt: skip
-        rounding = f"{t('rounding')} {t('vat_rounding')}"
+        rounding = f"{rounding_rule} {t.translate(VAT_ROUNDING_RULE)}."
     else:
         # A quote made before VAT was stated: net only, as it was sent.
         totals = [
             {"cls": "total", "label": t("total_no_tax", currency=currency), "field": "total",
              "value": money(quote.total, currency, t)},
         ]  # fmt: skip
-        rounding = t("rounding")
+        rounding = rounding_rule
     seller_rows = [{"label": t("vat_id"), "value": seller.vat_id, "field": "seller-vat-id"}]
     seller_rows.append({"label": t("email"), "value": seller.email, "field": ""})
     if seller.phone:
@@ -506,7 +508,7 @@ def quote_document_context(
         if quote.selection_catalogue_version != quote.catalogue_version
         else ""
     )
-    verdict = t("verdict_suitable" if quote.verdict == "suitable" else "verdict_unconfirmed")
+    verdict = t("verdict.suitable" if quote.verdict == "suitable" else "verdict.unconfirmed")
     labels = {
         f"l_{key}": t(key)
         for key in (
@@ -540,7 +542,7 @@ def quote_document_context(
         number=quote.number,
         date=t.date(quote.created_at.date()),
         valid_until=t.date(quote.valid_until),
-        status=t(f"status_{quote.status.value}"),
+        status=t(f"quote.status.{quote.status.value}"),
         seller={"name": seller.name, "address": seller.address, "rows": seller_rows},
         customer=customer,
         customer_reference=(

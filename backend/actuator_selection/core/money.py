@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from decimal import ROUND_HALF_UP, Decimal
 
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.messages import N_
 
 CENT = Decimal("0.01")
 """Smallest unit kept: every money amount is a whole number of cents."""
@@ -38,7 +39,7 @@ MAX_AMOUNT = Decimal("999999999999.99")
 MAX_QUANTITY = 1_000_000
 """Largest quantity of one quote line."""
 
-ROUNDING_RULE = (
+ROUNDING_RULE = N_(
     "each line total (unit price × quantity) is rounded to cents, half up; the subtotal is "
     "their sum; the discount (subtotal × percent / 100) is rounded to cents, half up; "
     "total = subtotal − discount"

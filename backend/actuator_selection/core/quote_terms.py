@@ -24,9 +24,10 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.messages import N_
 from actuator_selection.core.money import HUNDRED, MAX_AMOUNT, check_amount, check_percent, to_cents
 
-VAT_ROUNDING_RULE = (
+VAT_ROUNDING_RULE = N_(
     "VAT = net total × rate / 100, rounded once to cents, half up; gross total = net total + VAT"
 )
 

@@ -80,7 +80,7 @@ def _checks(pdf: FigurePdf, c: StoredCandidate, t: ReportWords) -> None:
 
 def _candidate_heading(pdf: FigurePdf, rank: int, c: StoredCandidate, t: ReportWords) -> None:
     ratio = t.number(c.gear_ratio, "#,##0.######")
-    pdf.heading(f"{rank}. {c.model} ({c.family}, i = {ratio}): {t(f'verdict_{c.verdict}')}", 10)
+    pdf.heading(f"{rank}. {c.model} ({c.family}, i = {ratio}): {t(f'verdict.{c.verdict}')}", 10)
     torques = (
         ("T_1", c.accel_torque_nm),
         ("T_2", c.constant_torque_nm),
@@ -98,7 +98,7 @@ def _top(pdf: FigurePdf, report: SelectionReport, t: ReportWords) -> None:
             (
                 str(rank),
                 c.model,
-                t(f"verdict_{c.verdict}"),
+                t(f"verdict.{c.verdict}"),
                 *(percent(u, t) for u in used),
             )
         )
