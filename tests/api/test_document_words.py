@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import csv
 import io
+import itertools
 import os
 import re
 from pathlib import Path
@@ -226,3 +227,67 @@ def test_a_table_that_would_break_moves_to_the_next_page_whole() -> None:
     assert "row 0" not in first
     for k in range(12):
         assert f"row {k} " in second.replace("\n", " ")
+
+
+def _subscripts(body: bytes) -> set[tuple[str, str]]:
+    """(letter, subscript) of every subscript the PDF sets: a run of text in a smaller size
+    than the run before it, on its line, right after a letter (``T`` and ``L`` of T_L).
+    Read back with pypdf's text visitor, independent of fpdf2."""
+    found: set[tuple[str, str]] = set()
+    for page in pypdf.PdfReader(io.BytesIO(body)).pages:
+        runs: list[tuple[str, float, float]] = []
+
+        def visit(text: str, cm: Any, tm: Any, font: Any, size: float) -> None:
+            if text.strip():
+                runs.append((text, size * tm[0], tm[5]))  # noqa: B023 (called at once)
+
+        page.extract_text(visitor_text=visit)
+        for (before, size, y), (text, sub_size, sub_y) in itertools.pairwise(runs):
+            if sub_size < 0.8 * size and abs(sub_y - y) < 1 and before[-1:].isalpha():
+                found.add((before[-1], text.strip()))
+    return found
+
+
+CAPITAL_SUBSCRIPTS = {("T", "L"), ("J", "L"), ("J", "A")}
+"""Symbols whose subscript Unicode has no letter for: T_L, J_L, J_A (issue 29: "T_L"
+printed as "TL")."""
+
+
+@pytest.mark.parametrize("language", ["de", "en"])
+def test_the_report_sets_capital_subscripts_lowered_and_smaller(
+    client: TestClient, language: Language
+) -> None:
+    answer = _selection(client)
+    response = client.get(f"/api/v1/selections/{answer['id']}/report.pdf?lang={language}")
+    assert response.status_code == 200, response.text
+    assert _subscripts(response.content) >= CAPITAL_SUBSCRIPTS
+    text, _ = _pdf(response.content)
+    assert not IDENTIFIER.findall(text), IDENTIFIER.findall(text)
+    assert not HYPHEN_NUMBER.findall(text), HYPHEN_NUMBER.findall(text)
+    assert "−" in text
+
+
+@pytest.mark.parametrize("language", ["de", "en"])
+def test_the_quote_sets_capital_subscripts_lowered_and_smaller(
+    api: SalesApi, language: Language
+) -> None:
+    selection = api.selection(models=["FHA-25C-50-L"], load=ROTARY_TABLE)
+    created = api.post("/api/v1/quotes", json=api.quote_body(selection["id"], vat_percent="19"))
+    assert created.status_code == 201, created.text
+    headers = api.headers("sales", **{"Accept-Language": language})
+    number = created.json()["number"]
+    pdf = api.client.get(f"/api/v1/quotes/{number}/document.pdf", headers=headers)
+    assert pdf.status_code == 200
+    assert _subscripts(pdf.content) >= CAPITAL_SUBSCRIPTS
+
+
+def test_without_a_unicode_font_every_subscript_is_set_smaller() -> None:
+    """The built-in Helvetica has no subscript letters: n_av is set as n and a smaller av."""
+    from markupsafe import Markup
+
+    pdf = _blank_pdf()
+    pdf._unicode = False
+    pdf._family = "Helvetica"
+    pdf.font(8.5)
+    pdf.paragraph(Markup("n<sub>av</sub> and T<sub>L</sub>"))
+    assert _subscripts(bytes(pdf.output())) == {("n", "av"), ("T", "L")}

@@ -2,7 +2,8 @@
 
 Texts and messages write a symbol ``X_sub`` (n_av, T_rms, J_L, η_tr), as the page's
 ``frontend/lib/symbols.js`` reads them; a document shows ``X<sub>sub</sub>`` in HTML
-(:func:`symbols`) and Unicode's subscript letters in a PDF (:func:`subscript`). A negative
+(:func:`symbols`); a PDF sets it in Unicode's subscript letters where they exist
+(:func:`subscript`), else lowered and smaller (``services/pdf.py``). A negative
 number gets the minus sign (U+2212), as the page's ``frontend/lib/format.js`` writes it.
 """
 
@@ -48,8 +49,8 @@ def symbols(text: str) -> Markup:
 
 def subscript(text: str) -> str:
     """A subscript in plain text: Unicode's subscript letters where each has one (``av`` →
-    ``ₐᵥ``, ``rms`` → ``ᵣₘₛ``); else as it is, written after its letter (``T_L`` → ``TL``:
-    Unicode has no subscript capitals).
+    ``ₐᵥ``, ``rms`` → ``ᵣₘₛ``); else as it is (Unicode has no subscript capitals: a PDF
+    then sets ``L`` of ``T_L`` lowered and smaller, ``services.pdf.DocumentPdf``).
 
     >>> subscript("av"), subscript("max"), subscript("L")
     ('ₐᵥ', 'ₘₐₓ', 'L')

@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any, Final
 
 from fpdf import FPDF
-from fpdf.enums import XPos, YPos
+from fpdf.enums import CharVPos, XPos, YPos
+from fpdf.line_break import Fragment
 from markupsafe import Markup
 
 from actuator_selection.core.symbols import subscript
@@ -72,18 +73,46 @@ def unicode_font() -> Path | None:
 
 _SUB = re.compile(r"<sub>(.*?)</sub>")
 
+SUB_START: Final = "\x0e"
+SUB_END: Final = "\x0f"
+"""The marks around a subscript that Unicode has no letters for (capitals: ``T_L``, ``J_A``,
+``m_B``): :class:`DocumentPdf` sets what is between them lowered and smaller (fpdf2's
+``char_vpos`` SUB), as the HTML's ``<sub>`` does. Latin-1 control characters, so that
+the built-in fonts' encoding keeps them until they are read."""
 
-def plain(value: object) -> str:
-    """A context value as text: markup (the intro's emphasis, data spans) without its tags,
-    a subscript (``<sub>av</sub>``, ``api.quote_document_text.symbols``) in Unicode's
-    subscript letters where it has them (``subscript``).
+_MARKED = re.compile(f"{SUB_START}([^{SUB_END}]*){SUB_END}")
+
+
+def _marked(sub: str) -> str:
+    """A subscript the font cannot write in Unicode's subscript letters, marked."""
+    return f"{SUB_START}{sub}{SUB_END}"
+
+
+def plain(value: object, *, unicode_subscripts: bool = True) -> str:
+    r"""A context value as text: markup (the intro's emphasis, data spans) without its tags,
+    a subscript (``<sub>av</sub>``, ``core.symbols.symbols``) in Unicode's subscript
+    letters where it has them all (``subscript``), else between :data:`SUB_START` and
+    :data:`SUB_END` (set as a subscript by :class:`DocumentPdf`).
 
     >>> plain(Markup("n<sub>av</sub> &amp; T<sub>L</sub>"))
-    'nₐᵥ & TL'
+    'nₐᵥ & T\x0eL\x0f'
+    >>> plain(Markup("n<sub>av</sub>"), unicode_subscripts=False)
+    'n\x0eav\x0f'
     """
     if isinstance(value, Markup):
-        return Markup(_SUB.sub(lambda m: subscript(m.group(1)), str(value))).striptags()
+
+        def one(match: re.Match[str]) -> str:
+            sub = match.group(1)
+            letters = subscript(sub)
+            return letters if unicode_subscripts and letters != sub else _marked(sub)
+
+        return Markup(_SUB.sub(one, str(value))).striptags()
     return str(value)
+
+
+def unmarked(text: str) -> str:
+    r"""``text`` without the subscript marks (``T\x0eL\x0f`` → ``TL``)."""
+    return text.replace(SUB_START, "").replace(SUB_END, "")
 
 
 class DocumentPdf(FPDF):
@@ -105,17 +134,56 @@ class DocumentPdf(FPDF):
             self._family = "Helvetica"
         self.set_auto_page_break(auto=True, margin=16)
         self.set_margins(16, 15, 16)
-        self.set_title(self.words(title))
+        self.set_title(unmarked(self.words(title)))
         self.set_lang(lang)
         self.set_creator("actuator selection service")
         self.alias_nb_pages()
 
     def words(self, value: object) -> str:
-        """``value`` as the font can write it."""
-        text = plain(value)
+        """``value`` as the font can write it: subscripts in Unicode's letters where the
+        font has them, else marked to be set lowered and smaller (:func:`plain`)."""
+        text = plain(value, unicode_subscripts=self._unicode)
         if self._unicode:
             return text
         return pdf_text(text.replace("min⁻¹", "1/min").replace("„", '"').replace("€", "EUR"))
+
+    def _parse_chars(self, text: str, markdown: bool, **kwargs: Any) -> Iterator[Fragment]:
+        """fpdf2's fragments of ``text`` (every cell, table and paragraph), what lies
+        between :data:`SUB_START` and :data:`SUB_END` as subscript fragments."""
+        if SUB_START not in text:
+            yield from super()._parse_chars(text, markdown, **kwargs)
+            return
+        for index, piece in enumerate(_MARKED.split(text)):
+            if not piece:
+                continue
+            if index % 2 == 0:
+                yield from super()._parse_chars(piece, markdown, **kwargs)
+                continue
+            before = self.char_vpos
+            self.char_vpos = CharVPos.SUB
+            try:
+                yield from super()._parse_chars(piece, markdown, **kwargs)
+            finally:
+                self.char_vpos = before
+
+    def text(self, x: float, y: float, text: str = "") -> None:
+        """fpdf2's ``text`` (a figure's labels), subscripts marked by :func:`plain` set
+        smaller and lowered as fpdf2 sets them in cells (``sub_scale``, ``sub_lift``)."""
+        if SUB_START not in text:
+            super().text(x, y, text)
+            return
+        size = self.font_size_pt
+        for index, piece in enumerate(_MARKED.split(text)):
+            if not piece:
+                continue
+            if index % 2 == 0:
+                super().text(x, y, piece)
+                x += self.get_string_width(piece)
+                continue
+            self.set_font_size(size * self.sub_scale)
+            super().text(x, y - self.sub_lift * size / self.k, piece)
+            x += self.get_string_width(piece)
+            self.set_font_size(size)
 
     def font(self, size: float, *, bold: bool = False) -> None:
         self.set_font(self._family, style="B" if bold else "", size=size)
@@ -300,9 +368,9 @@ class FigurePdf(DocumentPdf):
         self.set_line_width(0.25)
         self.line(left, top + plot_h, left + plot_w, top + plot_h)
         self.line(left, top, left, top + plot_h)
-        x_label = self.words(plain(Markup(x_title)) if "<" in x_title else x_title)
+        x_label = self.figure_words(x_title)
         self.text(left + (plot_w - self.get_string_width(x_label)) / 2, top + plot_h + 7.5, x_label)
-        y_label = self.words(y_title)
+        y_label = self.figure_words(y_title)
         with self.rotation(
             90, self.l_margin + 2.5, top + (plot_h + self.get_string_width(y_label)) / 2
         ):
@@ -321,6 +389,11 @@ class FigurePdf(DocumentPdf):
         self.set_dash_pattern()
         self.set_line_width(0.2)
         self.set_xy(self.l_margin, top + height)
+
+    def figure_words(self, text: str) -> str:
+        """A figure's text (plotly's, HTML where it holds a tag: ``T<sub>L</sub>``) as the
+        font can write it."""
+        return self.words(Markup(text) if "<" in text else text)
 
     def _trace(
         self, trace: Mapping[str, Any], px: Callable[[float], float], py: Callable[[float], float]
@@ -354,10 +427,12 @@ class FigurePdf(DocumentPdf):
                     self.font(6.5)
                     self.set_text_color(*color)
                     above = "top" in str(trace.get("textposition", "top"))
-                    self.text(x + 1.6, y - 1.4 if above else y + 3.2, self.words(texts[k]))
+                    self.text(
+                        x + 1.6, y - 1.4 if above else y + 3.2, self.figure_words(str(texts[k]))
+                    )
                     self.set_text_color(0, 0, 0)
         kind = "marker" if "markers" in mode else "area" if trace.get("fill") else "line"
-        return plain(Markup(str(trace.get("name", "")))), color, kind
+        return self.figure_words(str(trace.get("name", ""))), color, kind
 
     def _marker(self, symbol: str, x: float, y: float, r: float = 1.1) -> None:
         if symbol == "triangle-up":
