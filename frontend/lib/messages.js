@@ -500,7 +500,7 @@ export const WORDS = {
     "check.brake_holding": "Haltebremse: T_L im Stillstand ≤ Haltemoment",
     "check.continuous_duty": "Dauerbetrieb (n_av, T_rms) im Dauerbetriebsbereich",
     "check.continuous_speed": "Dauerdrehzahl n_th (Erwärmung) ≤ Dauer- bzw. Nenndrehzahl",
-    "check.decel_torque": "Bremsmoment |T_3| ≤ T_max",
+    "check.decel_torque": "Verzögerungsmoment |T_3| ≤ T_max",
     "check.drive_current": "Spitzenstrom I ≤ I_max (Regler)",
     "check.drive_voltage": "Ausgangsspannung mit ωL·I ≤ U_OUT des Reglers",
     "check.finding.against": "{value}, Grenze {limit}",

@@ -262,6 +262,7 @@ def test_the_report_sets_capital_subscripts_lowered_and_smaller(
     assert response.status_code == 200, response.text
     assert _subscripts(response.content) >= CAPITAL_SUBSCRIPTS
     text, _ = _pdf(response.content)
+    assert not re.findall(r"</?sub>|&lt;|&gt;|&amp;", text)  # no markup printed as text
     assert not IDENTIFIER.findall(text), IDENTIFIER.findall(text)
     assert not HYPHEN_NUMBER.findall(text), HYPHEN_NUMBER.findall(text)
     assert "−" in text
@@ -279,6 +280,8 @@ def test_the_quote_sets_capital_subscripts_lowered_and_smaller(
     pdf = api.client.get(f"/api/v1/quotes/{number}/document.pdf", headers=headers)
     assert pdf.status_code == 200
     assert _subscripts(pdf.content) >= CAPITAL_SUBSCRIPTS
+    text, _ = _pdf(pdf.content)
+    assert not re.findall(r"</?sub>|&lt;|&gt;|&amp;", text)  # no markup printed as text
 
 
 def test_without_a_unicode_font_every_subscript_is_set_smaller() -> None:

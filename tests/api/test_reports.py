@@ -18,7 +18,7 @@ from tests import worked_example
 
 from actuator_selection.api.quote_document_text import DocumentText, Language
 from actuator_selection.core.symbols import symbols
-from actuator_selection.services.pdf import DocumentPdf
+from actuator_selection.services.pdf import DocumentPdf, unmarked
 from actuator_selection.services.reports import COLUMNS
 
 
@@ -131,7 +131,7 @@ def _pdf_text(content: bytes) -> tuple[str, int]:
 def _printed(text: str | Markup) -> str:
     """``text`` as the PDF writes it: as it is in DejaVu Sans, in ASCII for the chapter's
     symbols where the system lacks that font (services/pdf.py)."""
-    return " ".join(_document().words(text).split())
+    return " ".join(unmarked(_document().words(text)).split())
 
 
 @cache
@@ -206,7 +206,7 @@ def test_pdf_shows_the_answer_in_the_requests_language(
         following = text.find(f"{rank + 1}. ", shown.end())
         block = text[shown.end() : following if following > 0 else None]
         for check in candidate["checks"]:
-            assert _printed(t.words(f"check_{check['name']}")) in block, check["name"]
+            assert _printed(t.words(f"check.{check['name']}")) in block, check["name"]
             assert _printed(t(f"result_{check['status']}")) in block
 
 

@@ -128,7 +128,7 @@ def _check_row(c: StoredCheck, t: DocumentText, language: Language) -> dict[str,
     not pass."""
     return {
         "name": c.name,
-        "label": _label(t, "check_" + c.name, c.name),
+        "label": _label(t, "check." + c.name, c.name),
         "message": t.message(render_check(c.phrase, language)) if c.status != "pass" else None,
         "status": c.status,
         "status_label": _label(t, "result_" + c.status, c.status),
@@ -166,7 +166,7 @@ def _reasons(
     if candidate is None:
         return [t.message(reason) for reason in quote.verdict_reasons]
     return [
-        _label(t, "check_" + c.name, c.name) + ": " + t.message(render_check(c.phrase, language))
+        _label(t, "check." + c.name, c.name) + ": " + t.message(render_check(c.phrase, language))
         for c in candidate.checks
         if c.status != "pass"
     ]

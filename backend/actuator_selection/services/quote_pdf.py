@@ -15,6 +15,7 @@ import json
 from typing import Any
 
 from fpdf.enums import XPos, YPos
+from markupsafe import Markup
 
 from actuator_selection.services.pdf import FigurePdf
 
@@ -63,7 +64,7 @@ def render_quote_pdf(context: dict[str, Any]) -> bytes:
         pdf.ln(1)
         pdf.paragraph(c["unconfirmed"]["text"])
         for reason in c["unconfirmed"]["reasons"]:
-            pdf.paragraph(f"– {reason}", size=8)
+            pdf.paragraph(Markup("– ") + reason, size=8)
     pdf.heading(c["l_items"])
     money_rows: list[list[object]] = [
         [i["position"], i["code"], i["description"], i["quantity"], i["unit_price"], i["total"]]
@@ -124,7 +125,7 @@ def render_quote_pdf(context: dict[str, Any]) -> bytes:
             ),
             [
                 (
-                    ch["label"] + (f"\n{ch['message']}" if ch["message"] else ""),
+                    ch["label"] + (Markup("\n") + ch["message"] if ch["message"] else ""),
                     f"{ch['status_label']}{ch['approximate']}",
                     ch["value"],
                     ch["limit"],

@@ -51,7 +51,7 @@ def percent(value: float | None, t: ReportWords) -> str:
 def _check_rows(checks: list[StoredCheck], t: ReportWords) -> list[tuple[object, ...]]:
     return [
         (
-            t.words(f"check_{c.name}"),
+            t.words(f"check.{c.name}"),
             t(f"result_{c.status}") + (t("approximate") if c.approximate else ""),
             t.reference(c.reference),
             number(c.value, c.unit, t),
