@@ -1,6 +1,6 @@
 """The printable quote: HTML laid out for A4, with the engineering that justifies the offer.
 
-In English or German (``api/quote_document_text.py``: every label from one table,
+In English or German (``api/quote_document_text.py``: every label from the gettext catalogue,
 numbers, money and dates formatted by Babel for the locale); the seller block, net,
 VAT and gross totals, payment, delivery and validity terms, and page numbers in print.
 
