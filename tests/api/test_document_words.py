@@ -294,3 +294,21 @@ def test_without_a_unicode_font_every_subscript_is_set_smaller() -> None:
     pdf.font(8.5)
     pdf.paragraph(Markup("n<sub>av</sub> and T<sub>L</sub>"))
     assert _subscripts(bytes(pdf.output())) == {("n", "av"), ("T", "L")}
+
+
+def test_every_check_has_a_title_in_both_languages(client: TestClient) -> None:
+    """A check without one would be titled by its name (``peak_torque``) in the documents
+    and on the page: every rule a selection may run has its words in the catalogue."""
+    output_load = {"radial_force_n": 500, "radial_lever_m": 0.05, "axial_force_n": 100}
+    answer = _selection(
+        client,
+        brake=True,
+        drive=True,
+        output_load={**output_load, "axial_lever_m": 0.01, "required_life_h": 20000},
+    )
+    names = {rule["name"] for rule in answer["check_rules"]}
+    assert {"peak_torque", "brake_holding", "drive_current", "bearing_life"} <= names
+    for language in ("de", "en"):
+        t = DocumentText(language)
+        assert all(t.has(f"check.{name}") for name in names), language
+        assert all(f"check.short.{name}" in words(language) for name in names), language
