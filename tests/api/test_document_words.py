@@ -194,6 +194,9 @@ def test_quote_documents_name_the_mechanism_in_words(api: SalesApi, language: La
             "CTRL-SINAMICS-S120",
         )  # data: as entered
         assert not _english_lines(text, data=data), _english_lines(text, data=data)
+        body = html.text.split("<body", 1)[1].split("<script", 1)[0]
+        shown = re.sub(r"<[^>]+>", "\n", re.sub(r"</?(?:sub|var|em|strong)>", "", body))
+        assert not _english_lines(shown, data=data), _english_lines(shown, data=data)
 
 
 def _blank_pdf() -> DocumentPdf:
