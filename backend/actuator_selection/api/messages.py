@@ -8,10 +8,11 @@ language (``0,0001`` in German) and units the chapter (``min⁻¹`` where Englis
 ``rpm``); ``params`` are the same in every language.
 
 The templates are English ``str.format`` strings; they are the msgids of the gettext
-catalogs in ``actuator_selection/locale/<lang>/LC_MESSAGES/messages.po``, which are read
-as they are when first needed (no compiled ``.mo``: nothing to build, nothing to go
-stale). ``pybabel extract`` collects every template marked with ``N_`` (``babel.cfg``,
-README "Messages in the user's language").
+catalogs in ``actuator_selection/locale/<lang>/LC_MESSAGES/messages.po``, which also
+hold the page's and the documents' labels as keyed words (:func:`words`,
+``docs/i18n.md``). The catalogs are read as they are when first needed (no compiled
+``.mo``: nothing to build, nothing to go stale). ``pybabel extract`` collects every
+template marked with ``N_`` (``babel.cfg``, README "Messages in the user's language").
 
 A message without a template (free text from a use case) keeps its English text; its
 ``code`` is its ``type`` and its ``params`` are empty.
@@ -83,6 +84,9 @@ def catalog_path(language: str) -> Path:
 SOURCE_CATALOG: Final = "de"
 """The catalog whose msgids (English) also declare the keyed words (:func:`words`)."""
 
+PLOTLY: Final = "plotly"
+"""The context of plotly.js's own words (msgid its English; ``api/page_words.py``)."""
+
 
 @functools.cache
 def catalog(language: str) -> Catalog:
@@ -115,11 +119,19 @@ def words(language: str) -> Mapping[str, str]:
     """
     if language == DEFAULT_LANGUAGE:
         source = catalog(SOURCE_CATALOG)
-        return {m.context: str(m.id) for m in source if m.context and isinstance(m.id, str)}
+        return {
+            m.context: str(m.id)
+            for m in source
+            if m.context and m.context != PLOTLY and isinstance(m.id, str)
+        }
     return {
         m.context: str(m.string)
         for m in catalog(language)
-        if m.context and isinstance(m.string, str) and m.string and not m.fuzzy
+        if m.context
+        and m.context != PLOTLY
+        and isinstance(m.string, str)
+        and m.string
+        and not m.fuzzy
     }
 
 

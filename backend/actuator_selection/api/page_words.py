@@ -28,6 +28,7 @@ from actuator_selection.api.messages import (
     DEFAULT_LANGUAGE,
     DOMAIN,
     LANGUAGES,
+    PLOTLY,
     SOURCE_CATALOG,
     catalog,
     check_templates,
@@ -41,9 +42,6 @@ PAGE_MODULE: Final = REPO_ROOT / "frontend" / "lib" / "messages.js"
 
 DOCUMENT: Final = "document."
 """The contexts of the documents' labels (not the page's)."""
-
-PLOTLY: Final = "plotly"
-"""The context of plotly.js's own words (its ``locales`` dictionary)."""
 
 WORDS_PREFIX: Final = "words."
 """The page's key of a catalogue value a check lacks: ``words.<English>``."""
@@ -65,11 +63,7 @@ def page_words() -> dict[str, dict[str, str]]:
     """Language → key → text of every word the page may ask for."""
     out: dict[str, dict[str, str]] = {}
     for language in LANGUAGES:
-        keyed = {
-            key: text
-            for key, text in words(language).items()
-            if not key.startswith(DOCUMENT) and key != PLOTLY
-        }
+        keyed = {key: text for key, text in words(language).items() if not key.startswith(DOCUMENT)}
         keyed |= {f"{WORDS_PREFIX}{w}": translate(w, language) for w in check_words()}
         out[language] = dict(sorted(keyed.items()))
     return out
