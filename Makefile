@@ -9,7 +9,8 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
 NODE_STAMP := node_modules/.installed-$(shell cat package.json package-lock.json | cksum | cut -d' ' -f1)
 
-.PHONY: install run test check lint typecheck jslint pytest bench lock messages api-types clean
+.PHONY: install run test check lint typecheck jslint pytest bench lock messages api-types mechanisms clean
+.PHONY: install run test check lint typecheck jslint pytest bench lock messages mechanisms clean
 
 $(STAMP): requirements.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -112,6 +113,11 @@ messages: install
 ## tests/api/test_generated_typescript.py fails while the file is stale.
 api-types: install
 	$(BIN)/python -m tests.api.test_generated_typescript
+
+## The page's load kinds and their fields, written from the request models
+## (schemas/mechanism_spec.py, also GET /api/v1/mechanisms); a test fails while it is stale.
+mechanisms: install
+	$(BIN)/python -m actuator_selection.schemas.mechanism_spec frontend/pages/engineer/mechanism-spec.js
 
 clean:
 	rm -rf $(VENV) node_modules var .mypy_cache .ruff_cache .pytest_cache

@@ -23,6 +23,7 @@ from actuator_selection.api import (
     controllers,
     errors,
     health,
+    mechanisms,
     media_types,
     methods,
     openapi,
@@ -133,7 +134,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     def body_limit(module: ModuleType) -> int:
         return settings.max_bulk_body_bytes if module in bulk else settings.max_body_bytes
 
-    for module in (actuators, controllers, batch, selections, aas, tools):
+    for module in (actuators, controllers, mechanisms, batch, selections, aas, tools):
         app.include_router(
             module.router,
             prefix=API_PREFIX,

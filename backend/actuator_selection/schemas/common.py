@@ -13,6 +13,7 @@ from types import UnionType
 from typing import Annotated, Any, ClassVar, Literal, Union, get_args, get_origin
 
 from pydantic import BaseModel, ConfigDict, ValidationInfo, field_validator
+from pydantic.config import JsonDict
 
 from actuator_selection.core.text import text_problem
 
@@ -41,6 +42,14 @@ like 1e-300 drives T_L (and T_rms) past the largest float. With η ≥ 0.01 and 
 bounds here, T_L ≤ 1.6·10¹¹ Nm and every result of the cycle stays finite."""
 MAX_FRICTION_COEFFICIENT = 10.0
 """μ bound [-]: dry rubber on rubber stays below 2."""
+
+
+def shown(symbol: str, label: str) -> JsonDict:
+    """How a page shows a request field (``json_schema_extra``): its symbol as the chapter
+    prints it (``"J_S"``, subscript after ``_``) and the message key of its label
+    (``"load.screw_inertia"``). ``schemas/mechanism_spec.py`` reads both from the models,
+    so that the page's mechanism fields are declared here once (``GET /mechanisms``)."""
+    return {"x-symbol": symbol, "x-label": label}
 
 
 def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:

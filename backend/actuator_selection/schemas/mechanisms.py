@@ -44,6 +44,7 @@ from actuator_selection.schemas.common import (
     MIN_EFFICIENCY,
     MIN_LENGTH_M,
     StrictModel,
+    shown,
 )
 from actuator_selection.schemas.quantities import (
     ANGLE_DEG,
@@ -109,11 +110,16 @@ class TransmissionIn(StrictModel):
         ge=MIN_RATIO,
         le=MAX_RATIO,
         description="i [-]: actuator output speed over mechanism shaft speed (i > 1 reduces)",
+        json_schema_extra=shown("i", "mech.tr.ratio"),
     )
     inertia_kgm2: Inertia = Field(
-        default=0.0, description="J_tr, its moment of inertia at the actuator side [kgm²]"
+        default=0.0,
+        description="J_tr, its moment of inertia at the actuator side [kgm²]",
+        json_schema_extra=shown("J_tr", "mech.tr.inertia"),
     )
-    efficiency: Efficiency = Field(default=1.0, description="η_tr [-]")
+    efficiency: Efficiency = Field(
+        default=1.0, description="η_tr [-]", json_schema_extra=shown("η_tr", "mech.tr.efficiency")
+    )
 
     def to_core(self) -> Transmission:
         """The transmission as the core sees it."""
@@ -156,17 +162,34 @@ class BallScrewInclineIn(_MechanismIn):
 
     type: Literal["ball_screw_incline"]
     speed: LinearSpeed | None = Field(default=None, description=_LINEAR_SPEED)
-    mass_kg: Mass = Field(description="moved mass m [kg]")
-    lead_mm: Length = Field(description="screw lead P [mm per revolution]")
-    friction_coefficient: Friction
-    efficiency: Efficiency = Field(description="screw efficiency η [-], by power flow")
-    incline_deg: Incline = Field(
-        default=0.0, description="θ [°]: 0 horizontal, 90 vertical (positive motion lifts)"
+    mass_kg: Mass = Field(
+        description="moved mass m [kg]", json_schema_extra=shown("m", "mech.mass")
     )
-    screw_inertia_kgm2: Inertia = Field(default=0.0, description="J_S [kgm²]")
-    counterweight_kg: Mass = Field(default=0.0, description="m_c [kg], on a rope over a pulley")
+    lead_mm: Length = Field(
+        description="screw lead P [mm per revolution]", json_schema_extra=shown("P", "load.lead")
+    )
+    friction_coefficient: Friction = Field(json_schema_extra=shown("μ", "load.friction"))
+    efficiency: Efficiency = Field(
+        description="screw efficiency η [-], by power flow",
+        json_schema_extra=shown("η", "load.efficiency"),
+    )
+    incline_deg: Incline = Field(
+        default=0.0,
+        description="θ [°]: 0 horizontal, 90 vertical (positive motion lifts)",
+        json_schema_extra=shown("θ", "mech.incline"),
+    )
+    screw_inertia_kgm2: Inertia = Field(
+        default=0.0, description="J_S [kgm²]", json_schema_extra=shown("J_S", "load.screw_inertia")
+    )
+    counterweight_kg: Mass = Field(
+        default=0.0,
+        description="m_c [kg], on a rope over a pulley",
+        json_schema_extra=shown("m_c", "mech.counterweight"),
+    )
     friction_force_n: FrictionForce = Field(
-        default=0.0, description="friction force independent of the weight [N]"
+        default=0.0,
+        description="friction force independent of the weight [N]",
+        json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
     def _axis(self) -> AxisLoad:
@@ -189,22 +212,53 @@ class BeltIn(_MechanismIn):
 
     type: Literal["belt"]
     speed: LinearSpeed | None = Field(default=None, description=_LINEAR_SPEED)
-    mass_kg: Mass = Field(description="moved mass m (carriage and payload) [kg]")
-    pulley_diameter_mm: Length = Field(description="pitch diameter D of the drive pulley [mm]")
-    friction_coefficient: Friction
-    efficiency: Efficiency = Field(description="belt drive efficiency η [-], by power flow")
+    mass_kg: Mass = Field(
+        description="moved mass m (carriage and payload) [kg]",
+        json_schema_extra=shown("m", "mech.mass"),
+    )
+    pulley_diameter_mm: Length = Field(
+        description="pitch diameter D of the drive pulley [mm]",
+        json_schema_extra=shown("D", "mech.pulley_diameter"),
+    )
+    friction_coefficient: Friction = Field(json_schema_extra=shown("μ", "load.friction"))
+    efficiency: Efficiency = Field(
+        description="belt drive efficiency η [-], by power flow",
+        json_schema_extra=shown("η", "load.efficiency"),
+    )
     incline_deg: Incline = Field(
-        default=0.0, description="θ [°]: 0 horizontal, 90 vertical (positive motion lifts)"
+        default=0.0,
+        description="θ [°]: 0 horizontal, 90 vertical (positive motion lifts)",
+        json_schema_extra=shown("θ", "mech.incline"),
     )
-    belt_mass_kg: Mass = Field(default=0.0, description="m_B, the whole belt [kg]")
-    pulley_inertia_kgm2: Inertia = Field(default=0.0, description="J_D, drive pulley [kgm²]")
-    idler_inertia_kgm2: Inertia = Field(default=0.0, description="J_I, idler pulley [kgm²]")
+    belt_mass_kg: Mass = Field(
+        default=0.0,
+        description="m_B, the whole belt [kg]",
+        json_schema_extra=shown("m_B", "mech.belt_mass"),
+    )
+    pulley_inertia_kgm2: Inertia = Field(
+        default=0.0,
+        description="J_D, drive pulley [kgm²]",
+        json_schema_extra=shown("J_D", "mech.pulley_inertia"),
+    )
+    idler_inertia_kgm2: Inertia = Field(
+        default=0.0,
+        description="J_I, idler pulley [kgm²]",
+        json_schema_extra=shown("J_I", "mech.idler_inertia"),
+    )
     idler_diameter_mm: Length | None = Field(
-        default=None, description="D_I [mm]; omitted: the drive pulley's"
+        default=None,
+        description="D_I [mm]; omitted: the drive pulley's",
+        json_schema_extra=shown("D_I", "mech.idler_diameter"),
     )
-    counterweight_kg: Mass = Field(default=0.0, description="m_c [kg], on a rope over a pulley")
+    counterweight_kg: Mass = Field(
+        default=0.0,
+        description="m_c [kg], on a rope over a pulley",
+        json_schema_extra=shown("m_c", "mech.counterweight"),
+    )
     friction_force_n: FrictionForce = Field(
-        default=0.0, description="friction force independent of the weight [N]"
+        default=0.0,
+        description="friction force independent of the weight [N]",
+        json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
     def _axis(self) -> AxisLoad:
@@ -232,17 +286,35 @@ class RackPinionIn(_MechanismIn):
 
     type: Literal["rack_pinion"]
     speed: LinearSpeed | None = Field(default=None, description=_LINEAR_SPEED)
-    mass_kg: Mass = Field(description="moved mass m [kg]")
-    pinion_diameter_mm: Length = Field(description="pitch diameter d of the pinion [mm]")
-    friction_coefficient: Friction
-    efficiency: Efficiency = Field(description="rack and pinion efficiency η [-], by power flow")
-    incline_deg: Incline = Field(
-        default=0.0, description="θ [°]: 0 horizontal, 90 vertical (positive motion lifts)"
+    mass_kg: Mass = Field(
+        description="moved mass m [kg]", json_schema_extra=shown("m", "mech.mass")
     )
-    pinion_inertia_kgm2: Inertia = Field(default=0.0, description="J_P [kgm²]")
-    counterweight_kg: Mass = Field(default=0.0, description="m_c [kg], on a rope over a pulley")
+    pinion_diameter_mm: Length = Field(
+        description="pitch diameter d of the pinion [mm]",
+        json_schema_extra=shown("d", "mech.pinion_diameter"),
+    )
+    friction_coefficient: Friction = Field(json_schema_extra=shown("μ", "load.friction"))
+    efficiency: Efficiency = Field(
+        description="rack and pinion efficiency η [-], by power flow",
+        json_schema_extra=shown("η", "load.efficiency"),
+    )
+    incline_deg: Incline = Field(
+        default=0.0,
+        description="θ [°]: 0 horizontal, 90 vertical (positive motion lifts)",
+        json_schema_extra=shown("θ", "mech.incline"),
+    )
+    pinion_inertia_kgm2: Inertia = Field(
+        default=0.0, description="J_P [kgm²]", json_schema_extra=shown("J_P", "mech.pinion_inertia")
+    )
+    counterweight_kg: Mass = Field(
+        default=0.0,
+        description="m_c [kg], on a rope over a pulley",
+        json_schema_extra=shown("m_c", "mech.counterweight"),
+    )
     friction_force_n: FrictionForce = Field(
-        default=0.0, description="friction force independent of the weight [N]"
+        default=0.0,
+        description="friction force independent of the weight [N]",
+        json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
     def _axis(self) -> AxisLoad:
@@ -265,21 +337,47 @@ class ConveyorIn(_MechanismIn):
 
     type: Literal["conveyor"]
     speed: LinearSpeed | None = Field(default=None, description=_LINEAR_SPEED)
-    load_mass_kg: Mass = Field(description="m_L, everything on the belt [kg]")
-    belt_mass_kg: Mass = Field(description="m_B, the whole belt [kg]")
-    roller_diameter_mm: Length = Field(description="D, drive roller [mm]")
-    friction_coefficient: Friction = Field(
-        description="μ [-] between the carrying strand and its bed"
+    load_mass_kg: Mass = Field(
+        description="m_L, everything on the belt [kg]",
+        json_schema_extra=shown("m", "mech.conveyor_load"),
     )
-    efficiency: Efficiency = Field(description="η [-], by power flow")
-    incline_deg: Incline = Field(default=0.0, description="θ [°] (the load is lifted for θ > 0)")
-    drive_roller_inertia_kgm2: Inertia = Field(default=0.0, description="J_D [kgm²]")
-    tail_roller_inertia_kgm2: Inertia = Field(default=0.0, description="J_T [kgm²]")
+    belt_mass_kg: Mass = Field(
+        description="m_B, the whole belt [kg]", json_schema_extra=shown("m_B", "mech.belt_mass")
+    )
+    roller_diameter_mm: Length = Field(
+        description="D, drive roller [mm]", json_schema_extra=shown("D", "mech.roller_diameter")
+    )
+    friction_coefficient: Friction = Field(
+        description="μ [-] between the carrying strand and its bed",
+        json_schema_extra=shown("μ", "load.friction"),
+    )
+    efficiency: Efficiency = Field(
+        description="η [-], by power flow", json_schema_extra=shown("η", "load.efficiency")
+    )
+    incline_deg: Incline = Field(
+        default=0.0,
+        description="θ [°] (the load is lifted for θ > 0)",
+        json_schema_extra=shown("θ", "mech.incline"),
+    )
+    drive_roller_inertia_kgm2: Inertia = Field(
+        default=0.0,
+        description="J_D [kgm²]",
+        json_schema_extra=shown("J_D", "mech.drive_roller_inertia"),
+    )
+    tail_roller_inertia_kgm2: Inertia = Field(
+        default=0.0,
+        description="J_T [kgm²]",
+        json_schema_extra=shown("J_T", "mech.tail_roller_inertia"),
+    )
     tail_roller_diameter_mm: Length | None = Field(
-        default=None, description="D_T [mm]; omitted: the drive roller's"
+        default=None,
+        description="D_T [mm]; omitted: the drive roller's",
+        json_schema_extra=shown("D_T", "mech.tail_roller_diameter"),
     )
     friction_force_n: FrictionForce = Field(
-        default=0.0, description="friction force independent of the weight [N]"
+        default=0.0,
+        description="friction force independent of the weight [N]",
+        json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
     def _axis(self) -> AxisLoad:
@@ -306,13 +404,27 @@ class LiftIn(_MechanismIn):
 
     type: Literal["lift"]
     speed: LinearSpeed | None = Field(default=None, description=_LINEAR_SPEED)
-    load_mass_kg: Mass = Field(description="m, cage or hook and payload [kg]")
-    drum_diameter_mm: Length = Field(description="D at the rope's centre line [mm]")
-    efficiency: Efficiency = Field(description="η [-], by power flow")
-    counterweight_kg: Mass = Field(default=0.0, description="m_c [kg]")
-    drum_inertia_kgm2: Inertia = Field(default=0.0, description="J_D [kgm²]")
+    load_mass_kg: Mass = Field(
+        description="m, cage or hook and payload [kg]",
+        json_schema_extra=shown("m", "mech.lift_mass"),
+    )
+    drum_diameter_mm: Length = Field(
+        description="D at the rope's centre line [mm]",
+        json_schema_extra=shown("D", "mech.drum_diameter"),
+    )
+    efficiency: Efficiency = Field(
+        description="η [-], by power flow", json_schema_extra=shown("η", "load.efficiency")
+    )
+    counterweight_kg: Mass = Field(
+        default=0.0, description="m_c [kg]", json_schema_extra=shown("m_c", "mech.counterweight")
+    )
+    drum_inertia_kgm2: Inertia = Field(
+        default=0.0, description="J_D [kgm²]", json_schema_extra=shown("J_D", "mech.drum_inertia")
+    )
     friction_force_n: FrictionForce = Field(
-        default=0.0, description="friction force of the load's guides [N]"
+        default=0.0,
+        description="friction force of the load's guides [N]",
+        json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
     def _axis(self) -> AxisLoad:
@@ -338,9 +450,14 @@ class RotaryIn(_MechanismIn):
         description="load speed for the trapezoid shorthand [rpm]; omit it where a segment "
         "cycle gives the speeds",
     )
-    inertia_kgm2: Inertia = Field(description="J, moment of inertia of the load [kgm²]")
+    inertia_kgm2: Inertia = Field(
+        description="J, moment of inertia of the load [kgm²]",
+        json_schema_extra=shown("J", "load.inertia"),
+    )
     friction_torque_nm: Annotated[float, Field(ge=0, le=MAX_TORQUE_NM), InUnit(TORQUE_NM)] = Field(
-        default=0.0, description="T_F, friction opposing the motion [Nm]"
+        default=0.0,
+        description="T_F, friction opposing the motion [Nm]",
+        json_schema_extra=shown("T_F", "mech.friction_torque"),
     )
     gravity_torque_nm: Annotated[
         float, Field(ge=-MAX_TORQUE_NM, le=MAX_TORQUE_NM), InUnit(TORQUE_NM)
@@ -348,8 +465,13 @@ class RotaryIn(_MechanismIn):
         default=0.0,
         description="T_G, a torque acting at standstill too (an unbalanced weight) [Nm]; "
         "positive opposes positive rotation",
+        json_schema_extra=shown("T_G", "mech.gravity_torque"),
     )
-    efficiency: Efficiency = Field(default=1.0, description="η [-], by power flow")
+    efficiency: Efficiency = Field(
+        default=1.0,
+        description="η [-], by power flow",
+        json_schema_extra=shown("η", "load.efficiency"),
+    )
 
     def _axis(self) -> AxisLoad:
         return AxisLoad(

@@ -31,6 +31,7 @@ from actuator_selection.schemas.common import (
     MIN_RAMP_S,
     ResponseModel,
     StrictModel,
+    shown,
 )
 from actuator_selection.schemas.controllers import (
     DriveOptionOut,
@@ -105,9 +106,15 @@ class DirectLoad(_LoadIn):
 
     type: Literal["direct"] = "direct"
     torque_nm: float = Field(
-        ge=0, le=MAX_TORQUE_NM, description="T_L, load torque opposing the motion [Nm]"
+        ge=0,
+        le=MAX_TORQUE_NM,
+        description="T_L, load torque opposing the motion [Nm]",
+        json_schema_extra=shown("T_L", "load.torque"),
     )
-    inertia_kgm2: Inertia = Field(description="J_L, load moment of inertia [kgm²]")
+    inertia_kgm2: Inertia = Field(
+        description="J_L, load moment of inertia [kgm²]",
+        json_schema_extra=shown("J_L", "load.inertia"),
+    )
     gravity_torque_nm: float = Field(
         default=0.0,
         ge=-MAX_TORQUE_NM,
@@ -115,6 +122,7 @@ class DirectLoad(_LoadIn):
         description="T_G, a torque that acts at standstill too (a weight less its "
         "counterweight) [Nm], signed: positive opposes positive rotation; negative "
         "overhauls (drives the axis)",
+        json_schema_extra=shown("T_G", "load.gravity"),
     )
     efficiency: float = Field(
         default=1.0,
@@ -122,6 +130,7 @@ class DirectLoad(_LoadIn):
         le=1,
         description="η between actuator and load: torques are divided by η where the "
         "actuator drives, multiplied where the load drives back",
+        json_schema_extra=shown("η", "load.efficiency"),
     )
 
     def _resolve(self) -> Load:
@@ -144,15 +153,25 @@ class BallScrewLoad(_LoadIn):
     """Linear horizontal motion by a ball screw (Fig. 515.2, Eq. 515.4)."""
 
     type: Literal["ball_screw"]
-    mass_kg: Mass
+    mass_kg: Mass = Field(json_schema_extra=shown("m", "load.mass"))
     lead_m: float = Field(
-        ge=MIN_LENGTH_M, le=MAX_LENGTH_M, description="screw lead P [m/rev], ≥ 1 µm"
+        ge=MIN_LENGTH_M,
+        le=MAX_LENGTH_M,
+        description="screw lead P [m/rev], ≥ 1 µm",
+        json_schema_extra=shown("P", "load.lead"),
     )
-    friction_coefficient: Friction
+    friction_coefficient: Friction = Field(json_schema_extra=shown("μ", "load.friction"))
     efficiency: float = Field(
-        ge=MIN_EFFICIENCY, le=1, description="screw efficiency η [-], 0.01 ≤ η ≤ 1"
+        ge=MIN_EFFICIENCY,
+        le=1,
+        description="screw efficiency η [-], 0.01 ≤ η ≤ 1",
+        json_schema_extra=shown("η", "load.efficiency"),
     )
-    screw_inertia_kgm2: Inertia = Field(default=0.0, description="J_S, screw inertia [kgm²]")
+    screw_inertia_kgm2: Inertia = Field(
+        default=0.0,
+        description="J_S, screw inertia [kgm²]",
+        json_schema_extra=shown("J_S", "load.screw_inertia"),
+    )
 
     def _resolve(self) -> Load:
         """T_L and J_L by Eq. 515.4."""
@@ -171,13 +190,19 @@ class RotaryTableLoad(_LoadIn):
     """A rotary table, a uniform disc (Fig. 515.3/515.5, Eq. 515.6)."""
 
     type: Literal["rotary_table"]
-    mass_kg: Mass
+    mass_kg: Mass = Field(json_schema_extra=shown("m", "load.mass"))
     diameter_m: float = Field(
-        ge=MIN_LENGTH_M, le=MAX_LENGTH_M, description="table diameter D [m], ≥ 1 µm"
+        ge=MIN_LENGTH_M,
+        le=MAX_LENGTH_M,
+        description="table diameter D [m], ≥ 1 µm",
+        json_schema_extra=shown("D", "load.diameter"),
     )
-    friction_coefficient: Friction
+    friction_coefficient: Friction = Field(json_schema_extra=shown("μ", "load.friction"))
     friction_radius_m: float = Field(
-        ge=0, le=MAX_LENGTH_M, description="radius r at which friction acts [m]"
+        ge=0,
+        le=MAX_LENGTH_M,
+        description="radius r at which friction acts [m]",
+        json_schema_extra=shown("r", "load.friction_radius"),
     )
 
     def _resolve(self) -> Load:
