@@ -3,11 +3,56 @@
 
 import { appendSymbols } from "./symbols.js";
 
-/** The first element matching ``selector`` under ``root``. */
+/**
+ * The first element matching ``selector`` under ``root``.
+ * @param {string} selector
+ * @param {ParentNode} [root]
+ */
 export const $ = (selector, root = document) => root.querySelector(selector);
 
 /** The element with this id. */
 export const byId = (id) => document.getElementById(id);
+
+/**
+ * The first element matching ``selector`` under ``root`` if it is a ``type``, else null: a
+ * lookup whose kind the type checker knows (``$as("#f-hd", HTMLInputElement).checked``).
+ * @template {Element} T
+ * @param {string} selector
+ * @param {{ new (): T }} type an element class: HTMLInputElement, HTMLSelectElement, …
+ * @param {ParentNode} [root]
+ * @returns {T | null}
+ */
+export function $as(selector, type, root = document) {
+  const el = root.querySelector(selector);
+  return el instanceof type ? el : null;
+}
+
+/**
+ * Every element matching ``selector`` under ``root`` that is a ``type``, in document order.
+ * @template {Element} T
+ * @param {string} selector
+ * @param {{ new (): T }} type
+ * @param {ParentNode} [root]
+ * @returns {T[]}
+ */
+export function $$as(selector, type, root = document) {
+  /** @type {T[]} */
+  const out = [];
+  for (const el of root.querySelectorAll(selector)) if (el instanceof type) out.push(el);
+  return out;
+}
+
+/**
+ * The element with this id if it is a ``type``, else null (``byIdAs("f-qty", HTMLInputElement)``).
+ * @template {Element} T
+ * @param {string} id
+ * @param {{ new (): T }} type
+ * @returns {T | null}
+ */
+export function byIdAs(id, type) {
+  const el = document.getElementById(id);
+  return el instanceof type ? el : null;
+}
 
 /**
  * A DOM element: ``h("td", {class: "num", dataset: {model}, onclick: f}, "1", child)``.

@@ -85,7 +85,7 @@ def test_the_engineers_page_in_every_state(axe_page: Page) -> None:
     page.locator("#ranking-table .compare-toggle:not(:checked)").first.click()
     page.wait_for_selector("#compare-status:has-text('at most 4')")
     assert violations(page) == [], "comparison with a fifth mark refused"
-    page.locator("#f-torque").fill("6")  # an edit makes the results stale
+    page.locator("#f-direct-torque_nm").fill("6")  # an edit makes the results stale
     page.wait_for_selector("#results.is-stale")
     assert violations(page) == [], "stale results"
     page.get_by_role("button", name="Deutsch").click()
@@ -120,9 +120,9 @@ def test_number_fields_with_their_reading_and_a_refusal(axe_page: Page) -> None:
     page = axe_page
     page.goto("/")
     page.locator("#f-t1").press_sequentially("0,15")  # "read as 0.15" beside it
-    page.locator("#f-inertia").press_sequentially("1.300,5")  # refused at the field
-    page.locator("#f-inertia").press("Tab")
-    page.wait_for_selector("#err-inertia:not([hidden])")
+    page.locator("#f-direct-inertia_kgm2").press_sequentially("1.300,5")  # refused at the field
+    page.locator("#f-direct-inertia_kgm2").press("Tab")
+    page.wait_for_selector("#err-f-direct-inertia_kgm2:not([hidden])")
     page.wait_for_selector("#read-f-t1:not([hidden])")
     assert violations(page) == [], "a number's reading and a refused number"
 

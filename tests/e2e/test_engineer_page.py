@@ -69,8 +69,8 @@ def shown(text: str) -> float:
 def fill_worked_example(page: Page) -> None:
     """Type Table 516.1 into the form, field by field."""
     page.locator("#f-speed").fill("40")
-    page.locator("#f-torque").fill("5")
-    page.locator("#f-inertia").fill("1.3")
+    page.locator("#f-direct-torque_nm").fill("5")
+    page.locator("#f-direct-inertia_kgm2").fill("1.3")
     fill_cycle(page, "0.1", "0.1", "0.1", "1")
 
 
@@ -368,12 +368,12 @@ def test_rotary_table_shows_the_converted_load(page: Page) -> None:
     page.goto("/")
     page.get_by_label("Rotary motion (rotary table)").check()
     expect(page.locator("#mech-rotary_table")).to_be_visible()
-    expect(page.locator("#f-torque")).to_be_hidden()
+    expect(page.locator("#f-direct-torque_nm")).to_be_hidden()
     page.locator("#f-speed").fill("40")
-    page.locator("#f-rt-mass").fill("50")
-    page.locator("#f-rt-diameter").fill("0.4")
-    page.locator("#f-rt-friction").fill("0.02")
-    page.locator("#f-rt-radius").fill("0.15")
+    page.locator("#f-rotary_table-mass_kg").fill("50")
+    page.locator("#f-rotary_table-diameter_m").fill("0.4")
+    page.locator("#f-rotary_table-friction_coefficient").fill("0.02")
+    page.locator("#f-rotary_table-friction_radius_m").fill("0.15")
     fill_cycle(page, "0.1", "0.1", "0.1", "1")
     status, body = post_selection(page)
     assert status == 201
@@ -395,7 +395,7 @@ def test_rotary_table_shows_the_converted_load(page: Page) -> None:
     expect(page.locator("#sum-mechanism")).to_contain_text("rotary table")
 
     # editing the input marks the result as belonging to the previous input
-    page.locator("#f-rt-mass").fill("60")
+    page.locator("#f-rotary_table-mass_kg").fill("60")
     expect(page.locator("#results-body .notice-warn")).to_contain_text("inputs have changed")
 
 
@@ -403,10 +403,12 @@ def test_api_errors_appear_at_their_fields(page: Page) -> None:
     page.goto("/")
     page.get_by_label("Linear horizontal motion (ball screw)").check()
     page.locator("#f-speed").fill("40")
-    page.locator("#f-bs-mass").fill("20")
-    page.locator("#f-bs-lead").fill("0.01")
-    page.locator("#f-bs-friction").fill("11")  # HTML allows it, the API's bound is μ ≤ 10
-    page.locator("#f-bs-eff").fill("1.5")  # η ≤ 1
+    page.locator("#f-ball_screw-mass_kg").fill("20")
+    page.locator("#f-ball_screw-lead_m").fill("0.01")
+    page.locator("#f-ball_screw-friction_coefficient").fill(
+        "11"
+    )  # HTML allows it, the API's bound is μ ≤ 10
+    page.locator("#f-ball_screw-efficiency").fill("1.5")  # η ≤ 1
     fill_cycle(page, "0", "0.1", "0.1", "1")  # t_1 = 0: HTML min=0 allows it, the API not
     status, body = post_selection(page)
     assert status == 422
@@ -414,24 +416,28 @@ def test_api_errors_appear_at_their_fields(page: Page) -> None:
     assert ("body", "load", "friction_coefficient") in locs
 
     for field, error, text in (
-        ("#f-bs-friction", "#err-bs-friction", "less than or equal to 10"),
-        ("#f-bs-eff", "#err-bs-eff", "less than or equal to 1"),
+        (
+            "#f-ball_screw-friction_coefficient",
+            "#err-f-ball_screw-friction_coefficient",
+            "less than or equal to 10",
+        ),
+        ("#f-ball_screw-efficiency", "#err-f-ball_screw-efficiency", "less than or equal to 1"),
         ("#f-t1", "#err-t1", "greater than or equal to 0.0001"),
     ):
         expect(page.locator(error)).to_be_visible()
         expect(page.locator(error)).to_contain_text(text)
         expect(page.locator(field)).to_have_attribute("aria-invalid", "true")
-    expect(page.locator("#err-bs-lead")).to_be_hidden()
+    expect(page.locator("#err-f-ball_screw-lead_m")).to_be_hidden()
     expect(page.locator("#form-status")).to_contain_text("3 input(s) rejected")
     # the first rejected field gets the focus; no result is lost or left blank
-    expect(page.locator("#f-bs-friction")).to_be_focused()
+    expect(page.locator("#f-ball_screw-friction_coefficient")).to_be_focused()
     expect(page.locator("#results-body")).to_contain_text("No calculation yet")
     expect(page.locator("body")).not_to_contain_text("Traceback")
 
     # correcting a field clears its message; an unknown model is named at its field
-    page.locator("#f-bs-friction").fill("0.1")
-    expect(page.locator("#err-bs-friction")).to_be_hidden()
-    page.locator("#f-bs-eff").fill("0.9")
+    page.locator("#f-ball_screw-friction_coefficient").fill("0.1")
+    expect(page.locator("#err-f-ball_screw-friction_coefficient")).to_be_hidden()
+    page.locator("#f-ball_screw-efficiency").fill("0.9")
     page.locator("#f-t1").fill("0.1")
     page.locator("#f-models").fill("FHA-25C-50-L, NO-SUCH-MODEL")
     status, body = post_selection(page)
@@ -452,10 +458,10 @@ def test_permalink_reopens_the_selection(page: Page, browser: Browser, base_url:
     page.goto("/")
     page.get_by_label("Rotary motion (rotary table)").check()
     page.locator("#f-speed").fill("30")
-    page.locator("#f-rt-mass").fill("50")
-    page.locator("#f-rt-diameter").fill("0.4")
-    page.locator("#f-rt-friction").fill("0.02")
-    page.locator("#f-rt-radius").fill("0.15")
+    page.locator("#f-rotary_table-mass_kg").fill("50")
+    page.locator("#f-rotary_table-diameter_m").fill("0.4")
+    page.locator("#f-rotary_table-friction_coefficient").fill("0.02")
+    page.locator("#f-rotary_table-friction_radius_m").fill("0.15")
     fill_cycle(page, "0.2", "0.5", "0.25", "2")
     page.locator("#f-hd").uncheck()
     _, body = post_selection(page)
@@ -481,10 +487,10 @@ def test_permalink_reopens_the_selection(page: Page, browser: Browser, base_url:
         expect(other.locator('input[name="load-kind"][value="rotary_table"]')).to_be_checked()
         for field, value in (
             ("#f-speed", 30),
-            ("#f-rt-mass", 50),
-            ("#f-rt-diameter", 0.4),
-            ("#f-rt-friction", 0.02),
-            ("#f-rt-radius", 0.15),
+            ("#f-rotary_table-mass_kg", 50),
+            ("#f-rotary_table-diameter_m", 0.4),
+            ("#f-rotary_table-friction_coefficient", 0.02),
+            ("#f-rotary_table-friction_radius_m", 0.15),
             ("#f-t1", 0.2),
             ("#f-t2", 0.5),
             ("#f-t3", 0.25),

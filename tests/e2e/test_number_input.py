@@ -17,6 +17,8 @@ from typing import Any, cast
 import pytest
 from playwright.sync_api import Browser, Locator, Page, Request, expect
 
+from actuator_selection.schemas.mechanism_spec import mechanism_spec
+
 from .conftest import DESKTOP, SalesSite
 from .test_sales_page import selection_id, sign_in
 
@@ -26,17 +28,8 @@ SLOW_MS = 20_000
 FORM = "#selection-form"
 NUMBER_FIELDS = f'{FORM} input[inputmode="decimal"]:enabled:visible'
 """The engineer form's number fields as they stand (those shown and sent)."""
-LOAD_KINDS = [
-    "direct",
-    "ball_screw",
-    "rotary_table",
-    "belt",
-    "rack_pinion",
-    "ball_screw_incline",
-    "lift",
-    "conveyor",
-    "rotary",
-]
+LOAD_KINDS = [kind.type for kind in mechanism_spec().kinds]
+"""Every kind of load, as the API declares them (the page builds its form from the same)."""
 AMBIGUOUS = ["1.300,5", "1,300.5", "1.000.000"]
 
 
@@ -96,8 +89,8 @@ def type_worked_example(page: Page, inertia: str, accel: str) -> None:
     """Table 516.1 typed in, with J_L and t_1 as given."""
     for field, text in (
         ("#f-speed", "40"),
-        ("#f-torque", "5"),
-        ("#f-inertia", inertia),
+        ("#f-direct-torque_nm", "5"),
+        ("#f-direct-inertia_kgm2", inertia),
         ("#f-t1", accel),
         ("#f-t2", "0,1"),
         ("#f-t3", "0.1"),
@@ -119,19 +112,19 @@ def test_german_decimal_commas_reach_the_api_as_typed(german: Page) -> None:
     # sized with what was typed: J_L = 1.3 kgm², t_0 = 0.15 + 0.1 + 0.1 + 1 s (not 16.2 s)
     assert answer["load"]["inertia_kgm2"] == 1.3
     assert answer["cycle_time_s"] == pytest.approx(1.35)
-    expect(page.locator("#f-inertia")).to_have_value("1,3")  # never rewritten
+    expect(page.locator("#f-direct-inertia_kgm2")).to_have_value("1,3")  # never rewritten
     expect(page.locator("#f-t1")).to_have_value("0,15")
     # a point in a German page is read as a decimal point too, and the page says so
     expect(page.locator("#read-f-t3")).to_have_text("gelesen als 0,1")
     expect(page.locator("#read-f-t3")).to_be_visible()
-    expect(page.locator("#read-f-inertia")).to_have_count(0)  # "1,3" says it already
+    expect(page.locator("#read-f-direct-inertia_kgm2")).to_have_count(0)  # "1,3" says it already
 
 
 def test_the_page_writes_its_numbers_in_its_language(german: Page) -> None:
     page = german
     page.goto("/")
     page.locator("#example").click()  # Table 516.1, written by the page
-    expect(page.locator("#f-inertia")).to_have_value("1,3")
+    expect(page.locator("#f-direct-inertia_kgm2")).to_have_value("1,3")
     expect(page.locator("#f-t1")).to_have_value("0,1")
     expect(page.locator(f"{FORM} .number-reading:visible")).to_have_count(0)
     page.locator('input[name="cycle-mode"][value="segments"]').check()
@@ -206,20 +199,22 @@ def test_two_decimal_marks_are_refused_at_the_field_and_nothing_is_sent(
     page.on("request", lambda r: posts.append(r) if is_selection_post(r) else None)
     page.goto("/")
     type_worked_example(page, inertia=ambiguous, accel="0,1")
-    page.locator("#f-inertia").press("Tab")  # left: named at once
-    error = page.locator("#err-inertia")
+    page.locator("#f-direct-inertia_kgm2").press("Tab")  # left: named at once
+    error = page.locator("#err-f-direct-inertia_kgm2")
     expect(error).to_be_visible()
     expect(error).to_contain_text("Nicht eindeutig")
-    expect(page.locator("#f-inertia")).to_have_attribute("aria-invalid", "true")
+    expect(page.locator("#f-direct-inertia_kgm2")).to_have_attribute("aria-invalid", "true")
     page.locator("#submit").click()
     expect(page.locator("#form-status")).to_contain_text("1 Eingabe(n) abgelehnt")
-    expect(page.locator("#f-inertia")).to_be_focused()
-    expect(page.locator("#f-inertia")).to_have_value(ambiguous)  # as typed, not "corrected"
+    expect(page.locator("#f-direct-inertia_kgm2")).to_be_focused()
+    expect(page.locator("#f-direct-inertia_kgm2")).to_have_value(
+        ambiguous
+    )  # as typed, not "corrected"
     # the message follows the page's language
     page.locator('.lang-button[data-lang="en"]').click()
     expect(error).to_contain_text("Ambiguous")
     # corrected, the form goes: the one request seen is this one (none went before)
-    type_in(page.locator("#f-inertia"), "1,3")
+    type_in(page.locator("#f-direct-inertia_kgm2"), "1,3")
     expect(error).to_be_hidden()
     body = submit(page)
     assert body["load"]["inertia_kgm2"] == 1.3

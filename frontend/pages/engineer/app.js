@@ -1,10 +1,9 @@
-// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // The engineer's page: reads the form, asks the API, shows what it answers.
 // No engineering is computed here; see figures.js for how answers become charts,
 // results.js for the result as DOM.
 
 import { ApiError, createClient, encodePath } from "../../lib/api.js";
-import { $, h, notice } from "../../lib/dom.js";
+import { $, $$as, $as, h, notice } from "../../lib/dom.js";
 import { appendSymbols, num, prepareNumbers, qty } from "../../lib/format.js";
 import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, translate, unitText } from "../../lib/i18n.js";
 import { fieldRefusal, isNumberField, numberText, readField, showReading, showReadings } from "../../lib/numbers.js";
@@ -12,9 +11,9 @@ import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { NARROW_CHART_PX, cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
 import {
-  MECHANISMS,
-  MECHANISM_KINDS,
+  LOAD_KINDS,
   TRANSMISSION_FIELDS,
+  kindSpec,
   quantityField,
   renderMechanisms,
   setTransmission,
@@ -40,8 +39,6 @@ import {
   setSegmentUnits,
 } from "./segments.js";
 
-const CHAPTER_KINDS = ["direct", "ball_screw", "rotary_table"];
-const LOAD_KINDS = [...CHAPTER_KINDS, ...MECHANISM_KINDS];
 /** The optional load on the output flange (schemas/output_load.py). */
 const OUTPUT_LOAD_FIELDS = [
   { name: "radial_force_n", symbol: "F_r", unit: "N", key: "ol.radial_force", required: true },
@@ -52,10 +49,6 @@ const OUTPUT_LOAD_FIELDS = [
   { name: "static_safety_min", symbol: "f_s", unit: "–", key: "ol.static_safety" },
   { name: "required_life_h", symbol: "L_10", unit: "h", key: "ol.required_life" },
 ];
-const MECHANISM_FIELDS = {
-  ball_screw: ["mass_kg", "lead_m", "friction_coefficient", "efficiency", "screw_inertia_kgm2"],
-  rotary_table: ["mass_kg", "diameter_m", "friction_coefficient", "friction_radius_m"],
-};
 /** Table 516.1, the chapter's worked example. */
 const EXAMPLE = {
   kind: "direct",
@@ -84,6 +77,10 @@ const state = {
 };
 
 const form = () => $("#selection-form");
+/** The input ``selector`` names (a text field, a checkbox, a radio button), or null. */
+const input = (selector) => $as(selector, HTMLInputElement);
+/** The HTML element ``selector`` names (for its dataset, hidden, focus), or null. */
+const html = (selector) => $as(selector, HTMLElement);
 const t = (key, params) => translate(state.lang, key, params);
 
 // ---------------------------------------------------------------- API
@@ -109,7 +106,7 @@ async function showLimits() {
   const model = chosenCandidate()?.model;
   const slot = document.querySelector('#detail [data-slot="limits"]');
   if (!sel || !model || !slot) return;
-  const still = () => sel === state.selection && $("#detail")?.dataset.model === model;
+  const still = () => sel === state.selection && html("#detail")?.dataset.model === model;
   slot.replaceChildren(renderLimits({ status: "loading" }, state.lang));
   let view;
   try {
@@ -166,27 +163,30 @@ function candidateDetail(sel, model, { retry = false } = {}) {
 // ---------------------------------------------------------------- form
 
 function loadKind() {
-  const checked = $('input[name="load-kind"]:checked');
-  return LOAD_KINDS.includes(checked?.value) ? checked.value : "direct";
+  const checked = input('input[name="load-kind"]:checked');
+  return LOAD_KINDS.includes(checked?.value) ? checked.value : LOAD_KINDS[0];
 }
 
 function cycleMode() {
-  return $('input[name="cycle-mode"]:checked')?.value === "segments" ? "segments" : "trapezoid";
+  return input('input[name="cycle-mode"]:checked')?.value === "segments" ? "segments" : "trapezoid";
 }
 
 /** Whether ``kind`` is a linear axis: speeds in mm/s, process loads in N. */
-const isLinear = (kind) => Boolean(MECHANISMS[kind]?.linear);
+const isLinear = (kind) => Boolean(kindSpec(kind)?.linear);
+
+/** The request field of the trapezoid's load speed for ``kind``: "speed_rpm" or "speed". */
+const speedField = (kind) => kindSpec(kind)?.speed_field ?? "speed_rpm";
 
 /** The speed field as the load kind asks for it: n_2 [rpm] (speed_rpm or speed) or v [mm/s]. */
 function updateSpeedField(kind) {
-  const speed = $("#f-speed");
+  const speed = input("#f-speed");
   const linear = isLinear(kind);
-  speed.dataset.path = CHAPTER_KINDS.includes(kind) ? "load.speed_rpm" : "load.speed";
-  const label = $("#speed-label");
+  speed.dataset.path = `load.${speedField(kind)}`;
+  const label = html("#speed-label");
   label.dataset.i18n = linear ? "load.speed.linear" : "load.speed";
   label.textContent = t(label.dataset.i18n);
   $("#speed-sym").replaceChildren(...(linear ? [h("var", {}, "v")] : [h("var", {}, "n"), h("sub", {}, "2")]));
-  const unit = $("#u-speed");
+  const unit = html("#u-speed");
   unit.dataset.unit = linear ? "mm/s" : "rpm";
   unit.textContent = unitText(state.lang, unit.dataset.unit);
   setSegmentUnits(
@@ -197,10 +197,10 @@ function updateSpeedField(kind) {
 }
 
 function setLoadKind(kind) {
-  for (const radio of document.querySelectorAll('input[name="load-kind"]')) {
+  for (const radio of $$as('input[name="load-kind"]', HTMLInputElement)) {
     radio.checked = radio.value === kind;
   }
-  for (const fs of document.querySelectorAll("fieldset.mechanism")) {
+  for (const fs of $$as("fieldset.mechanism", HTMLFieldSetElement)) {
     const active = fs.dataset.kind === kind;
     fs.hidden = !active;
     fs.disabled = !active; // inactive fields are neither validated nor sent
@@ -215,18 +215,17 @@ function setCycleMode(mode) {
     (path) => readNumber(path, { any: true }),
   );
   const n = readNumber("load.speed_rpm", { any: true }) ?? readNumber("load.speed", { any: true });
-  for (const radio of document.querySelectorAll('input[name="cycle-mode"]')) {
+  for (const radio of $$as('input[name="cycle-mode"]', HTMLInputElement)) {
     radio.checked = radio.value === mode;
   }
-  for (const fs of document.querySelectorAll("fieldset.cycle-form")) {
+  for (const fs of $$as("fieldset.cycle-form", HTMLFieldSetElement)) {
     const active = fs.dataset.mode === mode;
     fs.hidden = !active;
     fs.disabled = !active;
   }
   // segments give their own speeds: the load speed is left out of the request
-  const speedField = $("#speed-field");
-  speedField.hidden = mode === "segments";
-  $("#f-speed").disabled = mode === "segments";
+  html("#speed-field").hidden = mode === "segments";
+  input("#f-speed").disabled = mode === "segments";
   if (prefill) {
     // the chapter's four phases restated as segments: the same inputs, nothing computed
     fillSegments([
@@ -238,17 +237,33 @@ function setCycleMode(mode) {
   }
 }
 
-/** The input for an API path among the active fields ("load.mass_kg" → #f-rt-mass …). */
+/**
+ * The control for an API path among the active fields ("load.mass_kg" →
+ * #f-rotary_table-mass_kg …): an input, or a group (fieldset) that stands for its fields.
+ * @param {string} path
+ * @param {{ any?: boolean }} [options] ``any``: among the inactive fields too
+ * @returns {HTMLElement | null}
+ */
 function fieldFor(path, { any = false } = {}) {
-  for (const el of form().querySelectorAll(`[data-path="${CSS.escape(path)}"]`)) {
+  for (const el of $$as(`[data-path="${CSS.escape(path)}"]`, HTMLElement, form())) {
     if (any || !el.closest("fieldset[disabled]")) return el;
   }
   return null;
 }
 
+/**
+ * The input for an API path among the active fields, or null (none, or a group).
+ * @param {string} path
+ * @param {{ any?: boolean }} [options]
+ */
+function inputFor(path, options) {
+  const el = fieldFor(path, options);
+  return el instanceof HTMLInputElement ? el : null;
+}
+
 /** A number field's number ("1,3" and "1.3" alike, lib/numbers.js); null when blank or refused. */
 function readNumber(path, options) {
-  const el = fieldFor(path, options);
+  const el = inputFor(path, options);
   return el && !el.disabled ? readField(el).value : null;
 }
 
@@ -257,11 +272,12 @@ function readNumber(path, options) {
  * with its unit ("0,5 in" sent as "0.5 in") or to refuse at the field; null when blank.
  */
 function readQuantity(path) {
-  const el = fieldFor(path);
+  const el = inputFor(path);
   if (!el) return null;
   const reading = readField(el);
   if (reading.state === "empty") return null;
-  return reading.state === "number" ? reading.value : reading.decimal;
+  if (reading.state === "number") return reading.value;
+  return el.dataset.number === "units" ? reading.decimal : null;
 }
 
 /** The fields of ``specs`` under ``prefix``: required ones always (null when blank), others when given. */
@@ -274,33 +290,18 @@ function readQuantities(prefix, specs) {
   return out;
 }
 
+/**
+ * The ``load`` of the request: the kind's fields as its spec lists them (required ones
+ * always, others when given), the trapezoid's speed, a mechanism's transmission when
+ * ticked. The default kind goes without its ``type`` (the API's default).
+ */
 function readLoad(kind, segments) {
-  if (kind === "direct") {
-    const load = {
-      torque_nm: readNumber("load.torque_nm"),
-      inertia_kgm2: readNumber("load.inertia_kgm2"),
-    };
-    const gravity = readNumber("load.gravity_torque_nm");
-    const efficiency = readNumber("load.efficiency");
-    if (gravity !== null) load.gravity_torque_nm = gravity;
-    if (efficiency !== null) load.efficiency = efficiency;
-    return segments ? load : { speed_rpm: readNumber("load.speed_rpm"), ...load };
-  }
-  if (CHAPTER_KINDS.includes(kind)) {
-    const load = { type: kind };
-    if (!segments) load.speed_rpm = readNumber("load.speed_rpm");
-    for (const field of MECHANISM_FIELDS[kind]) {
-      const value = readNumber(`load.${field}`);
-      // J_S may be left empty: the API's default (0) applies
-      if (value !== null || field !== "screw_inertia_kgm2") load[field] = value;
-    }
-    return load;
-  }
-  const load = { type: kind };
-  if (!segments) load.speed = readNumber("load.speed");
-  Object.assign(load, readQuantities("load", MECHANISMS[kind].fields));
+  const spec = kindSpec(kind);
+  const load = kind === LOAD_KINDS[0] ? {} : { type: kind };
+  if (!segments) load[spec.speed_field] = readNumber(`load.${spec.speed_field}`);
+  Object.assign(load, readQuantities("load", spec.fields));
   const fs = $(`#mech-${kind}`);
-  if (fs?.querySelector(".transmission-toggle")?.checked) {
+  if (spec.transmission && (fs && $as(".transmission-toggle", HTMLInputElement, fs))?.checked) {
     load.transmission = readQuantities("load.transmission", TRANSMISSION_FIELDS);
   }
   return load;
@@ -319,12 +320,12 @@ function readForm() {
           decel_s: readNumber("cycle.decel_s"),
           pause_s: readNumber("cycle.pause_s"),
         },
-    high_dynamics: $("#f-hd").checked,
-    brake: $("#f-brake").checked,
+    high_dynamics: input("#f-hd").checked,
+    brake: input("#f-brake").checked,
   };
-  if ($("#f-drive").checked) body.drive = true;
-  if ($("#f-ol").checked) body.output_load = readQuantities("output_load", OUTPUT_LOAD_FIELDS);
-  const models = $("#f-models")
+  if (input("#f-drive").checked) body.drive = true;
+  if (input("#f-ol").checked) body.output_load = readQuantities("output_load", OUTPUT_LOAD_FIELDS);
+  const models = input("#f-models")
     .value.split(/[,;\s]+/)
     .map((m) => m.trim())
     .filter(Boolean);
@@ -333,15 +334,15 @@ function readForm() {
 }
 
 function setField(path, value) {
-  const el = fieldFor(path);
+  const el = inputFor(path);
   if (el) {
     el.value = typeof value === "string" && el.dataset.quantity !== undefined ? value : numberText(value, state.lang);
   }
 }
 
 function setOutputLoad(on) {
-  $("#f-ol").checked = on;
-  const fs = $("#output-load");
+  input("#f-ol").checked = on;
+  const fs = $as("#output-load", HTMLFieldSetElement);
   fs.hidden = !on;
   fs.disabled = !on;
 }
@@ -349,24 +350,18 @@ function setOutputLoad(on) {
 /** Refill the form from a stored selection's echo (load, mechanism, cycle, options). */
 function fillForm(sel) {
   const mech = sel.mechanism && typeof sel.mechanism === "object" ? sel.mechanism : null;
-  const kind = mech && LOAD_KINDS.includes(mech.type) ? mech.type : "direct";
+  const kind = mech && LOAD_KINDS.includes(mech.type) ? mech.type : LOAD_KINDS[0];
+  const spec = kindSpec(kind);
   const segments = Array.isArray(sel.cycle?.segments);
   setLoadKind(kind);
-  if (kind === "direct") {
-    setField("load.speed_rpm", segments ? null : sel.load.speed_rpm);
-    setField("load.torque_nm", sel.load.torque_nm);
-    setField("load.inertia_kgm2", sel.load.inertia_kgm2);
-    setField("load.gravity_torque_nm", sel.load.gravity_torque_nm || null);
-    setField("load.efficiency", sel.load.efficiency === 1 ? null : sel.load.efficiency);
-  } else if (CHAPTER_KINDS.includes(kind)) {
-    setField("load.speed_rpm", mech.speed_rpm);
-    for (const field of MECHANISM_FIELDS[kind]) setField(`load.${field}`, mech[field]);
-  } else {
-    setField("load.speed", mech.speed);
-    for (const field of MECHANISMS[kind].fields) setField(`load.${field.name}`, mech[field.name]);
-    const fs = $(`#mech-${kind}`);
+  // the default kind is the answer's load itself; its blank optional fields stay blank
+  const given = kind === LOAD_KINDS[0] ? sel.load : mech;
+  const defaulted = (field) => kind === LOAD_KINDS[0] && !field.required && given[field.name] === field.default;
+  setField(`load.${spec.speed_field}`, segments ? null : given[spec.speed_field]);
+  for (const field of spec.fields) setField(`load.${field.name}`, defaulted(field) ? null : given[field.name]);
+  if (spec.transmission) {
     const tr = mech.transmission && typeof mech.transmission === "object" ? mech.transmission : null;
-    setTransmission(fs, Boolean(tr));
+    setTransmission($(`#mech-${kind}`), Boolean(tr));
     if (tr) for (const field of TRANSMISSION_FIELDS) setField(`load.transmission.${field.name}`, tr[field.name]);
   }
   if (segments) {
@@ -379,9 +374,9 @@ function fillForm(sel) {
     setField("cycle.decel_s", sel.cycle.decel_s);
     setField("cycle.pause_s", sel.cycle.pause_s);
   }
-  $("#f-hd").checked = Boolean(sel.high_dynamics);
-  $("#f-brake").checked = Boolean(sel.brake);
-  $("#f-drive").checked = Boolean(sel.drive);
+  input("#f-hd").checked = Boolean(sel.high_dynamics);
+  input("#f-brake").checked = Boolean(sel.brake);
+  input("#f-drive").checked = Boolean(sel.drive);
   const ol = sel.output_load && typeof sel.output_load === "object" ? sel.output_load : null;
   setOutputLoad(Boolean(ol));
   if (ol) for (const field of OUTPUT_LOAD_FIELDS) setField(`output_load.${field.name}`, ol[field.name]);
@@ -393,8 +388,8 @@ function fillExample() {
   setLoadKind(EXAMPLE.kind);
   setCycleMode("trapezoid");
   for (const [path, value] of Object.entries(EXAMPLE)) if (path !== "kind") setField(path, value);
-  $("#f-hd").checked = true;
-  $("#f-models").value = "";
+  input("#f-hd").checked = true;
+  input("#f-models").value = "";
   clearErrors();
   onFormEdited();
   updateCycleSum();
@@ -410,7 +405,7 @@ function updateCycleSum() {
 
 /** The server's T_L and J_L for a mechanism, shown inside its fieldset. */
 function updateResolved() {
-  for (const fs of document.querySelectorAll("fieldset.mechanism[data-kind]")) {
+  for (const fs of $$as("fieldset.mechanism[data-kind]", HTMLFieldSetElement)) {
     const box = $(".resolved-values", fs);
     if (!box) continue;
     box.replaceChildren();
@@ -432,7 +427,7 @@ function updateResolved() {
       );
     const kind = fs.dataset.kind;
     // a mechanism also has a speed at the output, a weight and losses (the answer's load block)
-    const more = CHAPTER_KINDS.includes(kind)
+    const more = speedField(kind) === "speed_rpm"
       ? []
       : [
           " ",
@@ -457,7 +452,7 @@ function updateResolved() {
 
 function clearErrors() {
   $("#form-status").replaceChildren();
-  for (const el of form().querySelectorAll(".field-error")) {
+  for (const el of $$as(".field-error", HTMLElement, form())) {
     el.hidden = true;
     el.replaceChildren();
   }
@@ -591,10 +586,10 @@ function updateUrl() {
   if (!state.selection) return;
   const url = permalinkUrl();
   window.history.replaceState({ selection: state.selection.id }, "", url);
-  const input = $("#permalink");
-  if (input) input.value = url;
+  const permalink = input("#permalink");
+  if (permalink) permalink.value = url;
   // the quotes page opens on this selection and the chosen actuator: one click to a quote
-  const sales = $(".sales-link");
+  const sales = $as(".sales-link", HTMLAnchorElement);
   if (sales) {
     const target = new URL("/sales.html", window.location.href);
     target.searchParams.set("selection", state.selection.id);
@@ -604,16 +599,16 @@ function updateUrl() {
 }
 
 async function copyLink() {
-  const input = $("#permalink");
+  const permalink = input("#permalink");
   const status = $("#copy-status");
-  if (!input) return;
+  if (!permalink) return;
   let ok;
   try {
-    await navigator.clipboard.writeText(input.value);
+    await navigator.clipboard.writeText(permalink.value);
     ok = true;
   } catch {
-    input.focus();
-    input.select();
+    permalink.focus();
+    permalink.select();
     try {
       ok = document.execCommand("copy");
     } catch {
@@ -700,7 +695,7 @@ function renderComparison() {
     onClear: clearMarks,
   });
   slot.replaceChildren(...(section ? [section] : []));
-  for (const box of document.querySelectorAll("#ranking-table .compare-toggle")) {
+  for (const box of $$as("#ranking-table .compare-toggle", HTMLInputElement)) {
     const marked = state.compare.includes(box.dataset.model);
     box.checked = marked;
     box.closest("tr")?.classList.toggle("compared", marked);
@@ -733,9 +728,9 @@ function unmark(model, { focusBox = false } = {}) {
   renderComparison();
   updateUrl();
   if (focusBox) {
-    const box = document.querySelector(`#ranking-table .compare-toggle[data-model="${CSS.escape(model)}"]`);
+    const box = $as(`#ranking-table .compare-toggle[data-model="${CSS.escape(model)}"]`, HTMLInputElement);
     if (box && !box.closest("tr")?.hidden) box.focus();
-    else $("#compare-status")?.focus?.();
+    else html("#compare-status")?.focus();
   }
 }
 
@@ -744,15 +739,15 @@ function clearMarks() {
   state.compareRefused = null;
   renderComparison();
   updateUrl();
-  $("#ranking-table .compare-toggle")?.focus();
+  input("#ranking-table .compare-toggle")?.focus();
 }
 
 function applyFilter() {
   completeRanking();
-  for (const row of document.querySelectorAll("#ranking-table tbody tr[data-model]")) {
+  for (const row of $$as("#ranking-table tbody tr[data-model]", HTMLTableRowElement)) {
     row.hidden = state.filter !== "all" && row.dataset.verdict !== state.filter;
   }
-  for (const button of document.querySelectorAll(".filter-button")) {
+  for (const button of $$as(".filter-button", HTMLButtonElement)) {
     button.setAttribute("aria-pressed", String(button.dataset.filter === state.filter));
   }
 }
@@ -764,7 +759,7 @@ function renderChosen() {
   purgeCharts();
   const view = candidateDetail(state.selection, candidate.model);
   slot.replaceChildren(renderDetail(state.selection, candidate, view, state.lang));
-  for (const row of document.querySelectorAll("#ranking-table tbody tr[data-model]")) {
+  for (const row of $$as("#ranking-table tbody tr[data-model]", HTMLTableRowElement)) {
     const chosen = row.dataset.model === candidate.model;
     row.classList.toggle("chosen", chosen);
     if (chosen) row.setAttribute("aria-current", "true");
@@ -776,7 +771,7 @@ function renderChosen() {
 
 /** A detail has arrived (or failed): the panel shows it if its candidate is still the chosen one. */
 function detailSettled(sel, model) {
-  const panel = $("#detail");
+  const panel = html("#detail");
   const candidate = chosenCandidate();
   if (sel !== state.selection || candidate?.model !== model || panel?.dataset.model !== model) return;
   fillDetail(panel, sel, candidate, candidateDetail(sel, model), state.lang);
@@ -831,8 +826,8 @@ async function drawCharts() {
   const sel = state.selection;
   const candidate = chosenCandidate();
   const lang = state.lang;
-  const cycleDiv = $("#chart-cycle");
-  const diagramDiv = $("#chart-diagram");
+  const cycleDiv = html("#chart-cycle");
+  const diagramDiv = html("#chart-diagram");
   if (!sel || !candidate || !cycleDiv || !diagramDiv) return;
   $("#cycle-caption").replaceChildren(appendSymbols(h("span"), cycleCaption(sel, candidate, lang)));
   // the detail is on its way (asked when the panel was drawn) while plotly.js loads and the
@@ -953,7 +948,7 @@ async function warmCharts(Plotly) {
 function setBusy(busy, messageKey = "results.loading") {
   state.busy = busy;
   state.message = messageKey;
-  const submit = $("#submit");
+  const submit = $as("#submit", HTMLButtonElement);
   submit.disabled = busy;
   submit.textContent = t(busy ? "form.running" : "form.submit");
   $("#results").setAttribute("aria-busy", String(busy));
@@ -981,7 +976,7 @@ function acceptSelection(sel, preferredModel, marks = []) {
  * heading, scrolled to the top of the viewport (smoothly, unless reduced motion is asked for).
  */
 function bringResultsIntoView() {
-  const heading = $("#results-heading");
+  const heading = html("#results-heading");
   if (!heading) return;
   heading.setAttribute("tabindex", "-1");
   heading.focus({ preventScroll: true });
@@ -1051,7 +1046,7 @@ function applyLang(lang) {
   document.documentElement.lang = state.lang;
   applyStaticTexts(document, state.lang);
   setSegmentLang(state.lang);
-  for (const button of document.querySelectorAll(".lang-button")) {
+  for (const button of $$as(".lang-button", HTMLButtonElement)) {
     button.setAttribute("aria-pressed", String(button.dataset.lang === state.lang));
   }
   document.title = `${t("app.title")} · Harmonic Drive`;
@@ -1069,7 +1064,7 @@ function applyLang(lang) {
 
 /** The generated parts of the form: the mechanisms' fieldsets and the output load's fields. */
 function buildForm() {
-  renderMechanisms($("#mech-rotary_table"));
+  renderMechanisms(html("#load-kind"), $("#speed-field"));
   $("#output-load").append(
     ...OUTPUT_LOAD_FIELDS.map((field) =>
       quantityField({ id: `f-ol-${field.name}`, path: `output_load.${field.name}`, ...field }),
@@ -1086,41 +1081,45 @@ function init() {
   const f = form();
   f.addEventListener("submit", onSubmit);
   f.addEventListener("input", (event) => {
-    const field = event.target.closest(".field, .seg-field");
+    const target = event.target;
+    if (!(target instanceof HTMLElement)) return;
+    const field = target.closest(".field, .seg-field");
     if (field?.classList.contains("has-error")) {
       field.classList.remove("has-error");
-      event.target.removeAttribute("aria-invalid");
-      const err = errorElementFor(event.target);
+      target.removeAttribute("aria-invalid");
+      const err = errorElementFor(target);
       if (err) err.hidden = true;
     }
-    if (event.target.matches('[data-path^="cycle."]')) updateCycleSum();
-    showReading(event.target, state.lang);
+    if (target.matches('[data-path^="cycle."]')) updateCycleSum();
+    showReading(target, state.lang);
     onFormEdited();
   });
   f.addEventListener("change", (event) => {
-    if (isNumberField(event.target)) {
+    const target = event.target;
+    if (!(target instanceof HTMLInputElement || target instanceof HTMLSelectElement)) return;
+    if (isNumberField(target)) {
       // a number the page cannot read is named when the field is left, not only at submit
-      const key = fieldRefusal(event.target);
-      if (key) numberError(event.target, key);
+      const key = fieldRefusal(target);
+      if (key) numberError(target, key);
     }
-    if (event.target.name === "load-kind") {
+    if (target.name === "load-kind") {
       setLoadKind(loadKind());
       onFormEdited();
-    } else if (event.target.name === "cycle-mode") {
+    } else if (target.name === "cycle-mode") {
       setCycleMode(cycleMode());
       onFormEdited();
-    } else if (event.target.id === "f-ol") {
-      setOutputLoad(event.target.checked);
+    } else if (target instanceof HTMLInputElement && target.id === "f-ol") {
+      setOutputLoad(target.checked);
       onFormEdited();
-    } else if (event.target.matches(".transmission-toggle")) {
+    } else if (target.matches(".transmission-toggle")) {
       onFormEdited();
     }
   });
   $("#example").addEventListener("click", fillExample);
   $("#results").addEventListener("click", (event) => {
-    if (event.target.closest("#limits-button")) showLimits();
+    if (event.target instanceof Element && event.target.closest("#limits-button")) showLimits();
   });
-  for (const button of document.querySelectorAll(".lang-button")) {
+  for (const button of $$as(".lang-button", HTMLButtonElement)) {
     button.addEventListener("click", () => {
       rememberLang(button.dataset.lang);
       applyLang(button.dataset.lang);

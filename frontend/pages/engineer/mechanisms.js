@@ -1,110 +1,34 @@
-// The mechanisms of the API's `load.type` beyond the chapter's two (schemas/mechanisms.py):
-// their inputs with symbols and units, a small line sketch each, and an optional
-// transmission between the actuator output and the mechanism. Built once into the form;
-// texts carry data-i18n keys, so the language switch relabels them like the static page.
-// Nothing is converted here: numbers (or text with a unit, "0.5 in") go to the API as typed,
-// read by lib/numbers.js (a decimal comma as a point: "0,5 in" goes as "0.5 in").
+// The kinds of load and their inputs, as the API declares them (mechanism-spec.js, made by
+// `make mechanisms` from the request models; GET /api/v1/mechanisms answers the same):
+// the choice of kind, each kind's fieldset with its fields' symbols and units, a line sketch
+// per mechanism and, where the kind takes one, an optional transmission between the
+// actuator output and the mechanism. Built once into the form; texts carry data-i18n keys,
+// so the language switch relabels them like the static page.
+// Nothing is converted here: numbers (or, where the API takes it, text with a unit,
+// "0.5 in") go to the API as typed, read by lib/numbers.js (a decimal comma as a point:
+// "0,5 in" goes as "0.5 in").
 
 import { h } from "../../lib/dom.js";
+import { SPEC } from "./mechanism-spec.js";
 
-/** A field: request name, symbol, unit as shown, i18n key, required or optional. */
-const f = (name, symbol, unit, key, required = false) => ({ name, symbol, unit, key, required });
+/** @typedef {import("./mechanism-spec.js").FieldSpec} FieldSpec */
+/** @typedef {import("./mechanism-spec.js").MechanismSpec} MechanismSpec */
 
-const MASS = (name = "mass_kg", key = "mech.mass") => f(name, "m", "kg", key, true);
-const FRICTION = f("friction_coefficient", "μ", "–", "load.friction", true);
-const EFFICIENCY = f("efficiency", "η", "–", "load.efficiency", true);
-const INCLINE = f("incline_deg", "θ", "°", "mech.incline");
-const COUNTERWEIGHT = f("counterweight_kg", "m_c", "kg", "mech.counterweight");
-const FRICTION_FORCE = f("friction_force_n", "F_R", "N", "mech.friction_force");
+/** Every kind of load, in the API's order; the first is the default. */
+export const KINDS = SPEC.kinds;
 
-/** Every mechanism: `linear` ones take their speed in mm/s, the rotary one in rpm. */
-export const MECHANISMS = {
-  belt: {
-    linear: true,
-    fields: [
-      MASS(),
-      f("pulley_diameter_mm", "D", "mm", "mech.pulley_diameter", true),
-      FRICTION,
-      EFFICIENCY,
-      INCLINE,
-      f("belt_mass_kg", "m_B", "kg", "mech.belt_mass"),
-      f("pulley_inertia_kgm2", "J_D", "kgm²", "mech.pulley_inertia"),
-      f("idler_inertia_kgm2", "J_I", "kgm²", "mech.idler_inertia"),
-      f("idler_diameter_mm", "D_I", "mm", "mech.idler_diameter"),
-      COUNTERWEIGHT,
-      FRICTION_FORCE,
-    ],
-  },
-  rack_pinion: {
-    linear: true,
-    fields: [
-      MASS(),
-      f("pinion_diameter_mm", "d", "mm", "mech.pinion_diameter", true),
-      FRICTION,
-      EFFICIENCY,
-      INCLINE,
-      f("pinion_inertia_kgm2", "J_P", "kgm²", "mech.pinion_inertia"),
-      COUNTERWEIGHT,
-      FRICTION_FORCE,
-    ],
-  },
-  ball_screw_incline: {
-    linear: true,
-    fields: [
-      MASS(),
-      f("lead_mm", "P", "mm", "load.lead", true),
-      FRICTION,
-      EFFICIENCY,
-      INCLINE,
-      f("screw_inertia_kgm2", "J_S", "kgm²", "load.screw_inertia"),
-      COUNTERWEIGHT,
-      FRICTION_FORCE,
-    ],
-  },
-  lift: {
-    linear: true,
-    fields: [
-      MASS("load_mass_kg", "mech.lift_mass"),
-      f("drum_diameter_mm", "D", "mm", "mech.drum_diameter", true),
-      EFFICIENCY,
-      COUNTERWEIGHT,
-      f("drum_inertia_kgm2", "J_D", "kgm²", "mech.drum_inertia"),
-      FRICTION_FORCE,
-    ],
-  },
-  conveyor: {
-    linear: true,
-    fields: [
-      MASS("load_mass_kg", "mech.conveyor_load"),
-      f("belt_mass_kg", "m_B", "kg", "mech.belt_mass", true),
-      f("roller_diameter_mm", "D", "mm", "mech.roller_diameter", true),
-      FRICTION,
-      EFFICIENCY,
-      INCLINE,
-      f("drive_roller_inertia_kgm2", "J_D", "kgm²", "mech.drive_roller_inertia"),
-      f("tail_roller_inertia_kgm2", "J_T", "kgm²", "mech.tail_roller_inertia"),
-      f("tail_roller_diameter_mm", "D_T", "mm", "mech.tail_roller_diameter"),
-      FRICTION_FORCE,
-    ],
-  },
-  rotary: {
-    linear: false,
-    fields: [
-      f("inertia_kgm2", "J", "kgm²", "load.inertia", true),
-      f("friction_torque_nm", "T_F", "Nm", "mech.friction_torque"),
-      f("gravity_torque_nm", "T_G", "Nm", "mech.gravity_torque"),
-      f("efficiency", "η", "–", "load.efficiency"),
-    ],
-  },
-};
+/** Every kind's ``type`` (``load.type``). */
+export const LOAD_KINDS = KINDS.map((kind) => kind.type);
 
-export const MECHANISM_KINDS = Object.keys(MECHANISMS);
+/** The fields of ``load.transmission``. */
+export const TRANSMISSION_FIELDS = SPEC.transmission;
 
-export const TRANSMISSION_FIELDS = [
-  f("ratio", "i", "–", "mech.tr.ratio", true),
-  f("inertia_kgm2", "J_tr", "kgm²", "mech.tr.inertia"),
-  f("efficiency", "η_tr", "–", "mech.tr.efficiency"),
-];
+/**
+ * The spec of load kind ``type``, or undefined.
+ * @param {string} type
+ * @returns {MechanismSpec | undefined}
+ */
+export const kindSpec = (type) => KINDS.find((kind) => kind.type === type);
 
 // ---------------------------------------------------------------- sketches
 
@@ -228,8 +152,25 @@ export function sketch(kind) {
 
 // ---------------------------------------------------------------- fields
 
-/** One input row as the page's static fields are built: label with symbol, input, unit, error. */
-export function quantityField({ id, path, symbol, unit, key, required, optional = !required }) {
+/**
+ * One input row as the page's static fields are built: label with symbol, input, unit, error.
+ * ``units``: the input also takes text with a unit ("0.5 in"), which goes to the API as typed;
+ * ``placeholder``: what a blank optional field stands for (the API's default). A blank
+ * required field is sent as null, and the API's answer names it at the field.
+ * @param {{ id: string, path: string, symbol: string, unit: string, key: string,
+ *   required?: boolean, optional?: boolean, units?: boolean, placeholder?: string }} field
+ */
+export function quantityField({
+  id,
+  path,
+  symbol,
+  unit,
+  key,
+  required = false,
+  optional = !required,
+  units = true,
+  placeholder = undefined,
+}) {
   const [letter, sub] = symbol.split("_");
   return h(
     "div",
@@ -248,13 +189,14 @@ export function quantityField({ id, path, symbol, unit, key, required, optional 
       h("input", {
         id,
         "data-path": path,
-        "data-quantity": "",
-        // a number, or text with a unit ("0.5 in"), read by lib/numbers.js
-        "data-number": "units",
+        "data-quantity": units ? "" : null,
+        // a number, or (units) text with a unit ("0.5 in"), read by lib/numbers.js
+        "data-number": units ? "units" : "",
         type: "text",
         inputmode: "decimal",
         spellcheck: "false",
         autocomplete: "off",
+        placeholder: placeholder ?? null,
         "aria-describedby": `u-${id} err-${id}`,
       }),
       h("span", { class: "unit", id: `u-${id}` }, unit),
@@ -263,63 +205,125 @@ export function quantityField({ id, path, symbol, unit, key, required, optional 
   );
 }
 
-/** The fieldset of one mechanism: sketch, required fields, optional ones, transmission. */
-function mechanismFieldset(kind) {
-  const spec = MECHANISMS[kind];
-  const fields = spec.fields.map((field) =>
-    quantityField({ id: `f-${kind}-${field.name}`, path: `load.${field.name}`, ...field }),
-  );
-  const transmission = h(
-    "fieldset",
-    { class: "transmission", "data-path": "load.transmission", disabled: true, hidden: true },
-    h("legend", { class: "visually-hidden", "data-i18n": "mech.tr.legend" }),
-    TRANSMISSION_FIELDS.map((field) =>
-      quantityField({ id: `f-${kind}-tr-${field.name}`, path: `load.transmission.${field.name}`, ...field }),
-    ),
-  );
-  const toggle = h(
-    "div",
-    { class: "field check-field" },
-    h("input", { id: `f-${kind}-tr`, type: "checkbox", class: "transmission-toggle" }),
-    h("label", { for: `f-${kind}-tr`, "data-i18n": "mech.tr.legend" }),
-  );
+/**
+ * The input row of a field of the spec, under ``prefix`` (its id ``f-<kind>-<name>``).
+ * @param {FieldSpec} field
+ * @param {string} id
+ * @param {string} prefix
+ */
+function specField(field, id, prefix) {
+  return quantityField({
+    id,
+    path: `${prefix}.${field.name}`,
+    symbol: field.symbol,
+    unit: field.unit,
+    key: field.label,
+    required: field.required,
+    units: field.units,
+    placeholder: !field.required && typeof field.default === "number" ? String(field.default) : undefined,
+  });
+}
+
+/**
+ * The fieldset of one kind of load: its fields and, for a mechanism, its sketch, hint and
+ * transmission. The first kind (the default, T_L and J_L as they are) is shown without a
+ * heading of its own or a server echo; the others start hidden and disabled.
+ * @param {MechanismSpec} spec
+ * @param {boolean} first
+ */
+function mechanismFieldset(spec, first) {
+  const active = first;
+  const kind = spec.type;
+  const fields = spec.fields.map((field) => specField(field, `f-${kind}-${field.name}`, "load"));
+  const transmission = spec.transmission
+    ? [
+        h(
+          "div",
+          { class: "field check-field" },
+          h("input", { id: `f-${kind}-tr`, type: "checkbox", class: "transmission-toggle" }),
+          h("label", { for: `f-${kind}-tr`, "data-i18n": "mech.tr.legend" }),
+        ),
+        h(
+          "fieldset",
+          { class: "transmission", "data-path": "load.transmission", disabled: true, hidden: true },
+          h("legend", { class: "visually-hidden", "data-i18n": "mech.tr.legend" }),
+          TRANSMISSION_FIELDS.map((field) => specField(field, `f-${kind}-tr-${field.name}`, "load.transmission")),
+        ),
+      ]
+    : [];
+  const legend = active
+    ? h("legend", { class: "visually-hidden", "data-i18n": spec.label })
+    : h(
+        "legend",
+        { class: "sub-legend" },
+        h("span", { "data-i18n": spec.label }),
+        spec.equation ? [" · ", h("span", { "data-i18n": spec.equation })] : null,
+      );
+  const drawing = spec.hint ? sketch(kind) : null;
   return h(
     "fieldset",
-    { class: "mechanism generated", id: `mech-${kind}`, "data-kind": kind, hidden: true, disabled: true },
-    h(
-      "legend",
-      { class: "sub-legend" },
-      h("span", { "data-i18n": `load.${kind}` }),
-    ),
-    h("div", { class: "sketch-box" }, sketch(kind), h("p", { class: "hint", "data-i18n": `mech.${kind}.hint` })),
+    {
+      class: first ? "mechanism" : "mechanism generated",
+      id: `mech-${kind}`,
+      "data-kind": kind,
+      hidden: !active,
+      disabled: !active,
+    },
+    legend,
+    drawing || spec.hint
+      ? h("div", { class: "sketch-box" }, drawing, spec.hint ? h("p", { class: "hint", "data-i18n": spec.hint }) : null)
+      : null,
     fields,
-    toggle,
     transmission,
-    h(
-      "div",
-      { class: "resolved", "aria-live": "polite" },
-      h("span", { class: "resolved-label", "data-i18n": "resolved.label" }),
-      h("span", { class: "resolved-values" }),
-    ),
+    active
+      ? null
+      : h(
+          "div",
+          { class: "resolved", "aria-live": "polite" },
+          h("span", { class: "resolved-label", "data-i18n": "resolved.label" }),
+          h("span", { class: "resolved-values" }),
+        ),
   );
 }
 
-/** Build every mechanism's fieldset after ``anchor``; transmission checkboxes wired. */
-export function renderMechanisms(anchor) {
-  const sets = MECHANISM_KINDS.map(mechanismFieldset);
+/**
+ * The choice of kind (radio buttons named ``load-kind``, the first checked) into ``choices``,
+ * and every kind's fieldset after ``anchor``; transmission checkboxes wired.
+ * @param {HTMLElement} choices
+ * @param {Element} anchor
+ */
+export function renderMechanisms(choices, anchor) {
+  choices.append(
+    ...KINDS.map((spec, k) =>
+      h(
+        "label",
+        { class: "choice" },
+        h("input", { type: "radio", name: "load-kind", value: spec.type, checked: k === 0 }),
+        " ",
+        h("span", { "data-i18n": spec.label }),
+      ),
+    ),
+  );
+  const sets = KINDS.map((spec, k) => mechanismFieldset(spec, k === 0));
   anchor.after(...sets);
   for (const fs of sets) {
     const toggle = fs.querySelector(".transmission-toggle");
-    toggle.addEventListener("change", () => setTransmission(fs, toggle.checked));
+    if (toggle instanceof HTMLInputElement) {
+      toggle.addEventListener("change", () => setTransmission(fs, toggle.checked));
+    }
   }
   return sets;
 }
 
-/** Show (and send) a mechanism's transmission, or not. */
+/**
+ * Show (and send) a mechanism's transmission, or not.
+ * @param {Element} fs
+ * @param {boolean} on
+ */
 export function setTransmission(fs, on) {
   const toggle = fs.querySelector(".transmission-toggle");
   const box = fs.querySelector("fieldset.transmission");
-  if (!toggle || !box) return;
+  if (!(toggle instanceof HTMLInputElement) || !(box instanceof HTMLFieldSetElement)) return;
   toggle.checked = on;
   box.hidden = !on;
   box.disabled = !on;
