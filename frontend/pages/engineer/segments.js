@@ -1,4 +1,3 @@
-// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // The segment editor: the cycle as the API's list of segments (schemas/selections.py,
 // SegmentsCycleIn) — end speed, duration or acceleration, S-curve share, process load —
 // one row per segment, added, removed and moved. Speeds and loads are in the chosen
@@ -6,7 +5,7 @@
 // the request field (cycle.segments.<k>.speed …), so the API's 422 lands at the field.
 // No number is computed here: the rows are read and sent as typed.
 
-import { h } from "../../lib/dom.js";
+import { $as, $$as, byIdAs, h } from "../../lib/dom.js";
 import { translate, unitText } from "../../lib/i18n.js";
 import { numberText, readField, showReading } from "../../lib/numbers.js";
 
@@ -89,12 +88,12 @@ function row(values = {}) {
 /** Ids, request paths, labels and units of every row after a change (index k = position). */
 function relabel() {
   const t = (key, params) => translate(lang, key, params);
-  const rows = [...list().children];
+  const rows = $$as(":scope > li", HTMLLIElement, list());
   rows.forEach((li, k) => {
     const n = k + 1;
     li.dataset.index = String(k);
     li.querySelector(".segment-title").textContent = t("seg.title", { n });
-    const mode = li.querySelector('[data-seg="mode"]');
+    const mode = $as('[data-seg="mode"]', HTMLSelectElement, li);
     const paths = {
       speed: "speed",
       time: mode.value,
@@ -102,7 +101,7 @@ function relabel() {
       process_load: "process_load",
     };
     for (const [kind, field] of Object.entries(paths)) {
-      const el = li.querySelector(`[data-seg="${kind}"]`);
+      const el = $as(`[data-seg="${kind}"]`, HTMLInputElement, li);
       const id = `seg-${k}-${kind}`;
       const box = el.closest(".seg-field");
       const error = box.querySelector(".field-error");
@@ -123,19 +122,19 @@ function relabel() {
     li.querySelector('[data-seg-label="time"]').textContent = t(mode.value === "accel" ? "seg.accel" : "seg.duration");
     li.querySelector('[data-seg-label="jerk_share"]').textContent = t("seg.jerk_share");
     li.querySelector('[data-seg-label="process_load"]').textContent = t("seg.process_load");
-    li.querySelector('[data-seg="speed"]').placeholder = t("seg.speed.same");
+    $as('[data-seg="speed"]', HTMLInputElement, li).placeholder = t("seg.speed.same");
     li.querySelector('[data-seg-unit="speed"]').textContent = unitText(lang, units.speed);
     li.querySelector('[data-seg-unit="time"]').textContent = mode.value === "accel" ? unitText(lang, units.accel) : "s";
     li.querySelector('[data-seg-unit="jerk_share"]').textContent = "–";
     li.querySelector('[data-seg-unit="process_load"]').textContent = units.load;
     for (const [action, key] of [["up", "seg.up"], ["down", "seg.down"], ["remove", "seg.remove"]]) {
-      const b = li.querySelector(`[data-action="${action}"]`);
+      const b = $as(`[data-action="${action}"]`, HTMLButtonElement, li);
       b.setAttribute("aria-label", t(key, { n }));
       b.title = t(key, { n });
     }
-    li.querySelector('[data-action="up"]').disabled = k === 0;
-    li.querySelector('[data-action="down"]').disabled = k === rows.length - 1;
-    li.querySelector('[data-action="remove"]').disabled = rows.length === 1;
+    $as('[data-action="up"]', HTMLButtonElement, li).disabled = k === 0;
+    $as('[data-action="down"]', HTMLButtonElement, li).disabled = k === rows.length - 1;
+    $as('[data-action="remove"]', HTMLButtonElement, li).disabled = rows.length === 1;
   });
   const start = document.getElementById("u-seg-start");
   if (start) start.textContent = unitText(lang, units.speed);
@@ -154,7 +153,7 @@ export function addSegment(values = {}, { focus = false } = {}) {
 export function fillSegments(segments, startSpeed = 0) {
   list().replaceChildren();
   for (const seg of segments) list().append(row(seg));
-  const start = document.getElementById("f-seg-start");
+  const start = byIdAs("f-seg-start", HTMLInputElement);
   if (start) start.value = startSpeed !== 0 ? numberText(startSpeed, lang) : "";
   relabel();
 }
@@ -163,20 +162,21 @@ export function segmentCount() {
   return list().children.length;
 }
 
+/** @param {HTMLInputElement | null} el */
 function numberOrNull(el) {
   return el ? readField(el).value : null;
 }
 
 /** The request's cycle: ``{start_speed, segments}``; blank optional inputs are left out. */
 export function readSegments() {
-  const start = numberOrNull(document.getElementById("f-seg-start"));
+  const start = numberOrNull(byIdAs("f-seg-start", HTMLInputElement));
   const segments = [...list().children].map((li) => {
-    const get = (kind) => numberOrNull(li.querySelector(`[data-seg="${kind}"]`));
+    const get = (kind) => numberOrNull($as(`[data-seg="${kind}"]`, HTMLInputElement, li));
     const seg = {};
     const speed = get("speed");
     if (speed !== null) seg.speed = speed;
     // the chosen one of duration_s / accel always goes, null when blank: the API names it
-    seg[li.querySelector('[data-seg="mode"]').value] = get("time");
+    seg[$as('[data-seg="mode"]', HTMLSelectElement, li).value] = get("time");
     const jerk = get("jerk_share");
     if (jerk !== null) seg.jerk_share = jerk;
     const load = get("process_load");
@@ -205,8 +205,8 @@ export function initSegments({ onChange }) {
     changed();
   });
   list().addEventListener("click", (event) => {
-    const b = event.target.closest("button[data-action]");
-    if (!b) return;
+    const b = event.target instanceof Element ? event.target.closest("button[data-action]") : null;
+    if (!(b instanceof HTMLButtonElement)) return;
     const li = b.closest("li.segment");
     const action = b.dataset.action;
     if (action === "up" && li.previousElementSibling) li.previousElementSibling.before(li);
@@ -214,14 +214,14 @@ export function initSegments({ onChange }) {
     else if (action === "remove" && list().children.length > 1) {
       const next = li.nextElementSibling ?? li.previousElementSibling;
       li.remove();
-      next?.querySelector("button[data-action]")?.focus();
+      (next && $as("button[data-action]", HTMLButtonElement, next))?.focus();
     } else return;
     relabel();
     if (action !== "remove") b.focus();
     changed();
   });
   list().addEventListener("change", (event) => {
-    if (event.target.matches('[data-seg="mode"]')) {
+    if (event.target instanceof Element && event.target.matches('[data-seg="mode"]')) {
       relabel();
       changed();
     }

@@ -1,4 +1,3 @@
-// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // The sales engineer's page: quotes from stored selections.
 // Every figure comes from the API (prices, totals, verdicts); money stays the
 // decimal text the API sends and is never turned into a float. Text from the
@@ -8,7 +7,7 @@
 
 import { createClient, encodePath } from "../../lib/api.js";
 import { openCheckLines } from "../../lib/checks.js";
-import { byId, h, said } from "../../lib/dom.js";
+import { $$as, byId, byIdAs, h, said } from "../../lib/dom.js";
 import { appendSymbols, dateTime, localeOf, qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
 import { fieldRefusal, isNumberField, readField, showReading, showReadings } from "../../lib/numbers.js";
@@ -106,6 +105,7 @@ function count(n) {
 function day(iso) {
   const date = new Date(`${iso}T00:00:00Z`);
   if (Number.isNaN(date.getTime())) return iso;
+  /** @type {Intl.DateTimeFormatOptions} */
   const options = { dateStyle: "medium", timeZone: "UTC" };
   return new Intl.DateTimeFormat(localeOf(state.lang), options).format(date);
 }
@@ -150,7 +150,7 @@ function signedOut(message) {
   if (message) show(error, message);
   else clear(error);
   error.hidden = !message;
-  byId("api-key").focus();
+  byIdAs("api-key", HTMLInputElement).focus();
 }
 
 async function signIn(key) {
@@ -190,7 +190,7 @@ function showFieldError(id, render) {
 }
 
 function clearErrors() {
-  for (const node of document.querySelectorAll(".field-error")) {
+  for (const node of $$as(".field-error", HTMLElement)) {
     node.hidden = true;
     clear(node);
   }
@@ -246,7 +246,7 @@ const quotable = (candidate) => candidate.verdict !== "unsuitable";
 
 /** The selection's candidates as options, in the page's language; keeps the choice. */
 function renderCandidates() {
-  const select = byId("f-model");
+  const select = byIdAs("f-model", HTMLSelectElement);
   const chosen = select.value;
   select.replaceChildren(
     ...state.selection.candidates.map((c) =>
@@ -263,17 +263,17 @@ function renderCandidates() {
 }
 
 function fillCandidates(selection, preferred = null) {
-  byId("f-model").value = "";
+  byIdAs("f-model", HTMLSelectElement).value = "";
   renderCandidates();
   const wanted = selection.candidates.find((c) => c.model === preferred && quotable(c));
   const first = wanted ?? selection.candidates.find(quotable);
-  if (first) byId("f-model").value = first.model;
+  if (first) byIdAs("f-model", HTMLSelectElement).value = first.model;
   describeCandidate();
   return Boolean(first);
 }
 
 function describeCandidate() {
-  const model = byId("f-model").value;
+  const model = byIdAs("f-model", HTMLSelectElement).value;
   const candidate = state.selection?.candidates.find((c) => c.model === model);
   const hint = byId("hint-model");
   hint.className = candidate?.verdict === "unconfirmed" ? "hint hint-warn" : "hint";
@@ -329,7 +329,7 @@ async function loadSelection(id, model = null) {
   const url = new URL(location.href);
   url.searchParams.set("selection", selection.id);
   history.replaceState(null, "", url);
-  byId("engineer-link").href = `/?selection=${encodeURIComponent(selection.id)}`;
+  byIdAs("engineer-link", HTMLAnchorElement).href = `/?selection=${encodeURIComponent(selection.id)}`;
   const canQuote = fillCandidates(selection, model);
   const box = byId("selection-summary");
   show(box, () => [
@@ -342,7 +342,7 @@ async function loadSelection(id, model = null) {
   // The form shows at once, but takes a quote only once its price lists are in: a quote
   // asked for before that would be refused for the empty list.
   const form = byId("quote-form");
-  const create = byId("create-quote");
+  const create = byIdAs("create-quote", HTMLButtonElement);
   form.hidden = false;
   form.setAttribute("aria-busy", "true");
   create.disabled = true;
@@ -356,7 +356,7 @@ async function loadSelection(id, model = null) {
 
 /** The price lists as options, in the page's language; keeps the choice. */
 function renderPriceLists() {
-  const select = byId("f-price-list");
+  const select = byIdAs("f-price-list", HTMLSelectElement);
   const chosen = select.value;
   select.replaceChildren(
     ...state.priceLists.map((list) => {
@@ -376,7 +376,7 @@ async function loadPriceLists() {
       return;
     }
   }
-  const select = byId("f-price-list");
+  const select = byIdAs("f-price-list", HTMLSelectElement);
   const chosen = select.value;
   renderPriceLists();
   if (!state.priceLists.length) formStatus(() => t("sales.price_list.none"));
@@ -388,7 +388,7 @@ async function loadPriceLists() {
 }
 
 async function priceListChanged() {
-  const name = byId("f-price-list").value;
+  const name = byIdAs("f-price-list", HTMLSelectElement).value;
   const list = state.priceLists.find((l) => l.name === name);
   byId("example-warning").hidden = !(list && list.is_example);
   const codes = byId("controller-codes");
@@ -407,21 +407,23 @@ async function priceListChanged() {
   }
 }
 
+/** A text field's text, trimmed. @param {string} id an input's or a textarea's */
 function text(id) {
-  return byId(id).value.trim();
+  const el = byId(id);
+  return el instanceof HTMLInputElement || el instanceof HTMLTextAreaElement ? el.value.trim() : "";
 }
 
 function requestBody() {
   const body = {
     selection_id: state.selection.id,
     customer: { name: text("f-customer") },
-    actuator: { model: byId("f-model").value, quantity: numberOf("f-qty") },
-    price_list: byId("f-price-list").value,
+    actuator: { model: byIdAs("f-model", HTMLSelectElement).value, quantity: numberOf("f-qty") },
+    price_list: byIdAs("f-price-list", HTMLSelectElement).value,
     // a decimal as the API reads it ("7,5" → "7.5"), kept as text: money is never a float
     discount_percent: readField(byId("f-discount")).decimal || "0",
-    valid_until: byId("f-valid").value,
+    valid_until: byIdAs("f-valid", HTMLInputElement).value,
   };
-  if (text("f-address")) body.customer.address = byId("f-address").value;
+  if (text("f-address")) body.customer.address = byIdAs("f-address", HTMLTextAreaElement).value;
   if (text("f-reference")) body.customer.reference = text("f-reference");
   if (text("f-ctrl-name") || text("f-ctrl-code")) {
     body.controller = {
@@ -431,7 +433,7 @@ function requestBody() {
     };
   }
   if (text("f-currency")) body.currency = text("f-currency").toUpperCase();
-  if (text("f-notes")) body.notes = byId("f-notes").value;
+  if (text("f-notes")) body.notes = byIdAs("f-notes", HTMLTextAreaElement).value;
   return body;
 }
 
@@ -474,7 +476,7 @@ async function createQuote(event) {
     formStatus(() => t("sales.form.correct"));
     return;
   }
-  const button = byId("create-quote");
+  const button = byIdAs("create-quote", HTMLButtonElement);
   button.disabled = true;
   try {
     const quote = await api.post("/quotes", requestBody(), {
@@ -644,8 +646,8 @@ async function search({ append = false, keepOffset = false } = {}) {
   if (!append && !keepOffset) state.offset = 0;
   const params = new URLSearchParams({ limit: String(append ? PAGE_SIZE : state.offset + PAGE_SIZE) });
   if (append) params.set("offset", String(state.offset));
-  const q = byId("q").value.trim();
-  const status = byId("status-filter").value;
+  const q = byIdAs("q", HTMLInputElement).value.trim();
+  const status = byIdAs("status-filter", HTMLSelectElement).value;
   if (q) params.set("q", q);
   if (status) params.set("status", status);
   const note = state.listNote;
@@ -658,7 +660,7 @@ async function search({ append = false, keepOffset = false } = {}) {
     return;
   }
   state.quotes = append ? [...state.quotes, ...page.quotes] : page.quotes;
-  show(byId("quotes").tBodies[0], () => state.quotes.map(row));
+  show(byIdAs("quotes", HTMLTableElement).tBodies[0], () => state.quotes.map(row));
   state.offset = state.quotes.length;
   byId("more").hidden = state.offset >= page.total;
   show(byId("list-status"), note ?? (() => listCount(page.total, Boolean(q || status))));
@@ -670,7 +672,7 @@ function applyLang(lang) {
   state.lang = LANGS.includes(lang) ? lang : "de";
   document.documentElement.lang = state.lang;
   applyStaticTexts(document, state.lang);
-  for (const button of document.querySelectorAll(".lang-button")) {
+  for (const button of $$as(".lang-button", HTMLButtonElement)) {
     button.setAttribute("aria-pressed", String(button.dataset.lang === state.lang));
   }
   document.title = `${t("sales.title")} · ${t("app.title")}`;
@@ -684,42 +686,43 @@ function applyLang(lang) {
 
 async function start() {
   applyLang(initialLang());
-  for (const button of document.querySelectorAll(".lang-button")) {
+  for (const button of $$as(".lang-button", HTMLButtonElement)) {
     button.addEventListener("click", () => {
       rememberLang(button.dataset.lang);
       applyLang(button.dataset.lang);
     });
   }
-  byId("f-valid").value = isoDate(30);
+  byIdAs("f-valid", HTMLInputElement).value = isoDate(30);
   byId("key-form").addEventListener("submit", async (event) => {
     event.preventDefault();
-    const key = byId("api-key").value.trim();
-    byId("api-key").value = "";
+    const key = byIdAs("api-key", HTMLInputElement).value.trim();
+    byIdAs("api-key", HTMLInputElement).value = "";
     if (key && (await signIn(key))) await afterSignIn();
   });
   byId("sign-out").addEventListener("click", () => signedOut(null));
   byId("selection-form").addEventListener("submit", (event) => {
     event.preventDefault();
-    const { id, model } = selectionReference(byId("selection-id").value.trim());
+    const { id, model } = selectionReference(byIdAs("selection-id", HTMLInputElement).value.trim());
     if (id) {
-      byId("selection-id").value = id;
+      byIdAs("selection-id", HTMLInputElement).value = id;
       loadSelection(id, model);
     }
   });
-  byId("f-model").addEventListener("change", describeCandidate);
-  byId("f-price-list").addEventListener("change", priceListChanged);
+  byIdAs("f-model", HTMLSelectElement).addEventListener("change", describeCandidate);
+  byIdAs("f-price-list", HTMLSelectElement).addEventListener("change", priceListChanged);
   byId("quote-form").addEventListener("submit", createQuote);
   byId("quote-form").addEventListener("input", (event) => showReading(event.target, state.lang));
   byId("quote-form").addEventListener("change", (event) => {
     // a number the page cannot read is named when the field is left; a corrected one is not
-    if (!isNumberField(event.target)) return;
-    const error = byId(errorId(event.target));
+    const target = event.target;
+    if (!(target instanceof HTMLInputElement) || !isNumberField(target)) return;
+    const error = byId(errorId(target));
     if (error) {
       error.hidden = true;
       clear(error);
     }
-    event.target.removeAttribute("aria-invalid");
-    refuseNumber(event.target);
+    target.removeAttribute("aria-invalid");
+    refuseNumber(target);
   });
   byId("search-form").addEventListener("submit", (event) => {
     event.preventDefault();
@@ -736,7 +739,7 @@ async function afterSignIn() {
   const params = new URLSearchParams(location.search);
   const selection = params.get("selection");
   if (selection) {
-    byId("selection-id").value = selection;
+    byIdAs("selection-id", HTMLInputElement).value = selection;
     await loadSelection(selection, params.get("model"));
   }
   await search();
