@@ -30,6 +30,7 @@ from markupsafe import Markup
 from actuator_selection.api.messages import translate, word, words
 from actuator_selection.core.quote_terms import LANGUAGES
 from actuator_selection.core.symbols import MINUS, symbols
+from actuator_selection.schemas.mechanism_spec import UNIT_SUFFIXES
 
 Language = Literal["en", "de"]
 
@@ -183,18 +184,9 @@ class DocumentText:
         return self("unit.rpm") if unit == "rpm" else unit
 
 
-_FIELD_UNITS = (
-    ("_kgm2", "kgm²"),
-    ("_kg", "kg"),
-    ("_mm", "mm"),
-    ("_m", "m"),
-    ("_nm", "Nm"),
-    ("_n", "N"),
-    ("_deg", "°"),
-    ("_rpm", "rpm"),
-)
-"""A load field's unit by the suffix of its name (``schemas/selections.py``,
-``schemas/mechanisms.py``: SI or mm, as the request sends them)."""
+_FIELD_UNITS = UNIT_SUFFIXES
+"""A load field's unit by the suffix of its name (``schemas/mechanism_spec.py``: SI or mm,
+as the request sends them)."""
 
 
 def field_unit(name: str, load_type: str | None) -> str:

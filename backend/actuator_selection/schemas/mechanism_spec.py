@@ -39,6 +39,7 @@ UNIT_SUFFIXES = (
     ("_nm", "Nm"),
     ("_n", "N"),
     ("_deg", "°"),
+    ("_rpm", "rpm"),
 )
 """The unit of a plain-number field by the end of its name (the API's naming rule);
 any other field is a ratio or coefficient, shown as "–"."""
