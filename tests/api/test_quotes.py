@@ -480,17 +480,21 @@ def test_document_draws_the_continuous_rectangle_the_check_compares_with(
     quote = create(api, body)
     assert quote.status_code == 201, quote.text
     html = api.get(f"/api/v1/quotes/{quote.json()['number']}/document").text
-    traces = {t["name"]: t for t in _document_figure(html)["data"]}
+    traces = {t["uid"]: t for t in _document_figure(html)["data"]}
     actuator = api.get(f"/api/v1/actuators/{model}", role=None).json()
     if edge_field is None:
         assert speed["status"] == "no_data"
-        assert "continuous limit (approximate)" not in traces
+        assert "zone-approx" not in traces
         return
     assert duty["approximate"] is True
-    rectangle = traces["continuous limit (approximate)"]
+    rectangle = traces["zone-approx"]
     assert max(rectangle["x"]) == actuator[edge_field] < actuator["max_speed_rpm"]
     assert speed["limit"] == actuator[edge_field]
-    assert max(rectangle["y"]) == duty["limit"]
+    # its upper edge (T_0 falling with speed where k_T and K_INL are published) at n_av is
+    # the limit the continuous_duty check compared T_rms with
+    (_, t_zero, t_edge, _, _), edge = rectangle["y"], rectangle["x"][2]
+    n_av = selection["mean_speed_rpm"]
+    assert t_zero + (t_edge - t_zero) * n_av / edge == pytest.approx(duty["limit"], rel=1e-9)
 
 
 def test_document_keeps_the_catalogue_as_quoted(api: SalesApi, selection_id: str) -> None:

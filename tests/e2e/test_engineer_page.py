@@ -906,8 +906,10 @@ def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffi
     assert not traffic.console_errors
 
 
-def test_figures_module_draws_a_published_zone_and_says_no_data(page: Page) -> None:
-    """figures.js is pure: the zone case (no catalogue zone is seeded yet) and the gaps."""
+def test_figures_module_words_the_api_diagram_and_says_no_data(page: Page) -> None:
+    """figures.js is pure: the diagram is the API's (its zone cases are tested with
+    api/figures.py), fitted to a narrow chart and captioned from its ``layout.meta``; the
+    cycle without torques says so."""
     page.goto("/")
     result = cast(
         dict[str, Any],
@@ -920,64 +922,27 @@ def test_figures_module_draws_a_published_zone_and_says_no_data(page: Page) -> N
       const cand = {model: 'X', accel_torque_nm: 95.48, constant_torque_nm: 5,
                     decel_torque_nm: -85.48, rms_torque_nm: 35.57,
                     checks: [{name: 'continuous_duty', status: 'pass'}]};
-      const zoneAct = {max_torque_nm: 151, max_speed_rpm: 90, stall_torque_nm: 58,
-                       continuous_torque_nm: null,
-                       continuous_duty_zone: [{speed_rpm: 90, torque_nm: 30},
-                                              {speed_rpm: 0, torque_nm: 60},
-                                              {speed_rpm: 60, torque_nm: 50}]};
-      const before = JSON.stringify([sel, cand, zoneAct]);
-      const zone = f.diagramFigure(sel, cand, zoneAct, 'en');
-      const unchanged = JSON.stringify([sel, cand, zoneAct]) === before;
-      const contAct = {max_torque_nm: 8.3, max_speed_rpm: 116, stall_torque_nm: null,
-                       continuous_torque_nm: 2.9, continuous_duty_zone: null,
-                       continuous_speed_rpm: null, rated_speed_rpm: 60};
-      const approx = f.diagramFigure(sel, cand, contAct, 'de');
-      const approxCaption = f.diagramCaption(sel, cand, contAct, 'en');
-      const both = f.diagramFigure(sel, cand, {...contAct, stall_torque_nm: 3.1,
-                                               continuous_speed_rpm: 40}, 'en');
-      const noSpeed = f.diagramFigure(sel, cand, {...contAct, rated_speed_rpm: null}, 'en');
-      const none = f.diagramFigure(sel, cand, {max_torque_nm: 151, max_speed_rpm: 90}, 'en');
-      const noActuator = f.diagramFigure(sel, cand, null, 'en');
+      const name = 'a name long enough to be wrapped on a phone';
+      const figure = {data: [{uid: 'zone-approx', name}],
+                      layout: {meta: {zone: 'approximate', what: 'allowable continuous torque',
+                                      torque: 2.9, speed_what: 'rated speed', speed: 60}}};
+      const before = JSON.stringify(figure);
+      const narrow = f.fitDiagram(figure, {narrow: true});
+      const unchanged = JSON.stringify(figure) === before;
+      const approxCaption = f.diagramCaption(sel, cand, {max_torque_nm: 8.3}, figure, 'en');
+      const noneCaption = f.diagramCaption(sel, cand, null, null, 'en');
       const noTorques = f.cycleFigure(sel, {model: 'Y', accel_torque_nm: null,
         constant_torque_nm: null, decel_torque_nm: null, rms_torque_nm: null, checks: []}, 'de');
-      return {zone, approx, approxCaption, both, noSpeed, none, noActuator, noTorques, unchanged};
+      return {narrow, approxCaption, noneCaption, noTorques, unchanged};
     }"""
         ),
     )
     assert result["unchanged"], "figure functions must not change their inputs"
-
-    def by_uid(fig: dict[str, Any]) -> dict[str, dict[str, Any]]:
-        return {t["uid"]: t for t in fig["data"]}
-
-    zone = by_uid(result["zone"])
-    assert zone["zone"]["x"] == [0, 60, 90, 90]  # sorted by speed, closed down to T = 0
-    assert zone["zone"]["y"] == [60, 50, 30, 0]
-    assert "zone-approx" not in zone
-    assert zone["operating-point"]["x"] == [6.15]
-
-    # without a zone: the check's rectangle, up to the rated speed (not n_max = 116)
-    approx = by_uid(result["approx"])
-    assert approx["zone-approx"]["y"] == [0, 2.9, 2.9, 0, 0]
-    assert approx["zone-approx"]["x"] == [0, 0, 60, 60, 0]
-    assert "näherungsweise" in approx["zone-approx"]["name"]
-    assert "Nenndrehzahl" in approx["zone-approx"]["name"]
-    assert result["approx"]["layout"]["separators"] == ",."
+    assert "<br>" in result["narrow"]["data"][0]["name"]
+    assert result["narrow"]["layout"]["legend"]["orientation"] == "v"
     assert "rated speed = 60" in result["approxCaption"]
-    # T_0 before the allowable continuous torque, the continuous speed before the rated one
-    both = by_uid(result["both"])
-    assert both["zone-approx"]["y"] == [0, 3.1, 3.1, 0, 0]
-    assert both["zone-approx"]["x"] == [0, 0, 40, 40, 0]
-    assert "and allowable continuous speed" in both["zone-approx"]["name"]
-
-    for case in ("noSpeed", "none", "noActuator"):
-        fig = result[case]
-        uids = {t["uid"] for t in fig["data"]}
-        assert not uids & {"zone", "zone-approx"}, case
-        assert any("no data" in a["text"] for a in fig["layout"]["annotations"]), case
-    assert {"t-max", "n-max"} <= {t["uid"] for t in result["none"]["data"]}
-    assert not {"t-max", "n-max"} & {t["uid"] for t in result["noActuator"]["data"]}
-
-    no_torques = by_uid(result["noTorques"])
+    assert "no data" in result["noneCaption"]
+    no_torques = {t["uid"]: t for t in result["noTorques"]["data"]}
     assert set(no_torques) == {"cycle-speed"}
     assert any("keine Daten" in a["text"] for a in result["noTorques"]["layout"]["annotations"])
 

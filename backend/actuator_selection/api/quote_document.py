@@ -17,6 +17,7 @@ plus the actuator's catalogue entry as copied into the quote when it was made.
 
 from __future__ import annotations
 
+import json
 import re
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
@@ -25,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 from markupsafe import Markup
 
+from actuator_selection.api.figures import DiagramPoints, diagram_figure
 from actuator_selection.api.messages import render_check
 from actuator_selection.api.quote_document_text import DocumentText, Language, load_rows
 from actuator_selection.api.static import PLOTLY_URL
@@ -176,151 +178,31 @@ def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
     return next((c for c in checks if c.name == name), None)
 
 
-def continuous_speed_edge(actuator: Mapping[str, Any]) -> float | None:
-    """The speed up to which the approximate continuous-duty rectangle holds, as the
-    continuous_speed check bounds it (``core.checks._speed_limit``): the allowable
-    continuous speed, else the rated speed; never n_max, a peak speed. None where the
-    quoted catalogue entry has neither (the check then lacks data).
-
-    >>> continuous_speed_edge({"continuous_speed_rpm": 40.0, "rated_speed_rpm": 60.0})
-    40.0
-    >>> continuous_speed_edge({"continuous_speed_rpm": None, "rated_speed_rpm": 60.0})
-    60.0
-    >>> continuous_speed_edge({"max_speed_rpm": 120.0}) is None
-    True
-    """
-    for key in ("continuous_speed_rpm", "rated_speed_rpm"):
-        value = actuator.get(key)
-        if value is not None:
-            return float(value)
-    return None
+def diagram_points(candidate: StoredCandidate, selection: StoredSelection) -> DiagramPoints:
+    """What the speed/torque diagram draws of a stored candidate and its selection."""
+    return DiagramPoints(
+        n2=selection.load.speed_rpm,
+        n_av=selection.mean_speed_rpm,
+        t1=candidate.accel_torque_nm,
+        t3=candidate.decel_torque_nm,
+        trms=candidate.rms_torque_nm,
+        statuses={c.name: c.status for c in candidate.checks},
+    )
 
 
 def speed_torque_figure(
     candidate: StoredCandidate,
     selection: StoredSelection,
-    actuator: Mapping[str, Any],
+    actuator: Mapping[str, Any] | None,
     t: DocumentText = ENGLISH,
-) -> go.Figure:
-    """The speed/torque diagram (Fig. 517.1 style) of the quoted actuator and load case.
-
-    Limits come from the candidate's checks (n_max, T_max, the continuous limit),
-    the zone edge from the actuator's catalogue entry as quoted, the operating
-    points from the candidate's torques and the selection's speeds.
-    """
-    import plotly.graph_objects as go  # ~15 MB: loaded with the first quote document
-
-    checks = candidate.checks
-    n_max_check = _check(checks, "max_speed")
-    n_max = n_max_check.limit if n_max_check else None
-    t_max_check = _check(checks, "peak_torque")
-    t_max = t_max_check.limit if t_max_check else None
-    continuous = _check(checks, "continuous_duty")
-    n2 = selection.load.speed_rpm
-    n_av = selection.mean_speed_rpm
-    fig = go.Figure()
-    zone = actuator.get("continuous_duty_zone")
-    if zone:
-        xs = [p["speed_rpm"] for p in zone]
-        ys = [p["torque_nm"] for p in zone]
-        fig.add_trace(
-            go.Scatter(
-                x=[0, *xs, xs[-1]],
-                y=[0, *ys, 0],
-                fill="toself",
-                mode="lines",
-                name=t("zone"),
-                line={"color": "#2e8b57"},
-                fillcolor="rgba(46,139,87,0.22)",
-            )
-        )
-    elif (
-        continuous is not None
-        and continuous.limit is not None
-        and continuous.approximate
-        and (edge_speed := continuous_speed_edge(actuator)) is not None
-    ):
-        fig.add_trace(
-            go.Scatter(
-                x=[0, 0, edge_speed, edge_speed, 0],
-                y=[0, continuous.limit, continuous.limit, 0, 0],
-                fill="toself",
-                mode="lines",
-                name=t("zone_approximate"),
-                line={"color": "#2e8b57", "dash": "dash"},
-                fillcolor="rgba(46,139,87,0.15)",
-            )
-        )
-    if t_max is not None:
-        fig.add_trace(
-            go.Scatter(
-                x=[0, n_max or n2],
-                y=[t_max, t_max],
-                mode="lines",
-                name=str(symbols(f"T_max = {t.number(t_max, '#,##0.###')} Nm")),
-                line={"color": "#444", "width": 2},
-            )
-        )
-    if n_max is not None:
-        fig.add_trace(
-            go.Scatter(
-                x=[n_max, n_max],
-                y=[0, t_max or 0],
-                mode="lines",
-                name=str(symbols(f"n_max = {t.number(n_max, '#,##0.###')} {t.unit('rpm')}")),
-                line={"color": "#444", "width": 2, "dash": "dot"},
-            )
-        )
-    t3 = candidate.decel_torque_nm
-    points = [
-        (t("point_accel"), n2, candidate.accel_torque_nm, "#b3471d", "triangle-up", "top right"),
-        (
-            t("point_decel"),
-            n2,
-            abs(t3) if t3 is not None else None,
-            "#c0262d",
-            "triangle-down",
-            "bottom right",
-        ),
-        (t("point_rms"), n_av, candidate.rms_torque_nm, "#6b4fa0", "circle", "top right"),
-    ]
-    tops = [y for _, _, y, _, _, _ in points]
-    for label, x, y, color, symbol, position in points:
-        if y is None:
-            continue
-        fig.add_trace(
-            go.Scatter(
-                x=[x],
-                y=[y],
-                mode="markers+text",
-                name=str(symbols(label)),
-                text=[f"{t.number(y, '#,##0.0')} Nm"],
-                textposition=position,
-                marker={"color": color, "size": 11, "symbol": symbol},
-            )
-        )
-    fig.update_layout(
-        template="none",
-        width=640,
-        height=280,
-        margin={"l": 56, "r": 8, "t": 12, "b": 44},
-        font={"family": "system-ui, 'Segoe UI', Roboto, sans-serif", "size": 11},
-        xaxis={
-            "title": {"text": t("axis_speed", rpm=t.unit("rpm"))},
-            "range": [0, 1.1 * max(n_max or 0, n2)],
-            "gridcolor": GRID,
-        },
-        yaxis={
-            "title": {"text": t("axis_torque")},
-            "range": [0, 1.15 * max([t for t in (t_max, *tops) if t is not None] or [1])],
-            "gridcolor": GRID,
-        },
-        legend={"orientation": "v", "x": 1.02, "xanchor": "left", "y": 1, "yanchor": "top"},
-        showlegend=True,
-        # Plotly's own number formatting (axis ticks) in the document's locale.
-        separators=t.number(1000.5, "#,##0.0")[-2] + t.number(1000.5, "#,##0.0")[1],
-    )
-    return fig
+) -> dict[str, Any]:
+    """The speed/torque diagram (Fig. 517.1) of a stored candidate as plotly JSON, sized
+    for print: the page's figure (``api/figures.py``), the same definition."""
+    figure = diagram_figure(diagram_points(candidate, selection), actuator, t)
+    layout = figure["layout"]
+    layout.update(width=640, height=280, margin={"l": 56, "r": 8, "t": 12, "b": 44})
+    layout["legend"] = {"orientation": "v", "x": 1.02, "xanchor": "left", "y": 1, "yanchor": "top"}
+    return figure
 
 
 def cycle_figure(selection: StoredSelection, t: DocumentText = ENGLISH) -> go.Figure:
@@ -491,7 +373,7 @@ def quote_document_context(
         ]
         checks = [_check_row(c, t, language) for c in candidate.checks]
         figure_json = script_safe_json(
-            speed_torque_figure(candidate, selection, actuator, t).to_json()
+            json.dumps(speed_torque_figure(candidate, selection, actuator, t))
         )
     family_ratio = (
         f"{num_plain(actuator.get('family'), t)}, i = {num_plain(actuator.get('gear_ratio'), t)}"

@@ -20,8 +20,9 @@ from actuator_selection.api.deps import (
     write_transaction,
 )
 from actuator_selection.api.errors import RequestFieldError, language_of, service_error
+from actuator_selection.api.figures import diagram_figure
 from actuator_selection.api.messages import localizer
-from actuator_selection.api.quote_document import cycle_figure, speed_torque_figure
+from actuator_selection.api.quote_document import cycle_figure, diagram_points, speed_torque_figure
 from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
@@ -34,6 +35,7 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.reports import (
     COLUMNS,
+    candidate_diagram,
     report_csv,
     selection_report,
 )
@@ -189,6 +191,32 @@ def get_candidate(
 
 
 @router.get(
+    "/selections/{selection_id}/candidates/{model}/diagram",
+    responses={404: {"description": "unknown selection, or a model that is no candidate of it"}},
+)
+@reads_only
+def get_candidate_diagram(
+    selection_id: Annotated[str, Path(max_length=36)],
+    model: Annotated[str, Path(max_length=60)],
+    session: SessionDep,
+    language: DocumentLanguageDep,
+    response: Response,
+    catalogue: Annotated[
+        bool,
+        Query(description="with the actuator's catalogue limits and zone (false: without)"),
+    ] = True,
+) -> dict[str, Any]:
+    """The candidate's speed/torque diagram (Fig. 517.1) as a plotly figure (`data` and
+    `layout`, JSON), in the document's language: the figure the quote and the report
+    print, from the same definition (`api/figures.py`). The page draws it with plotly.js."""
+    found = candidate_diagram(session, selection_id, model, catalogue=catalogue)
+    response.headers["Content-Language"] = language
+    response.headers["Vary"] = "Accept-Language"
+    points = diagram_points(found.candidate, found.selection)
+    return diagram_figure(points, found.actuator, DocumentText(language))
+
+
+@router.get(
     "/selections/{selection_id}/candidates/{model}/limits",
     responses={
         404: {"description": "unknown selection, or a model that is no candidate of it"},
@@ -275,8 +303,7 @@ def get_selection_report_pdf(
     figures = [cycle_figure(report.selection, t).to_plotly_json()]
     if report.selection.candidates:
         first = report.selection.candidates[0]
-        figure = speed_torque_figure(first, report.selection, report.actuator or {}, t)
-        figures.append(figure.to_plotly_json())
+        figures.append(speed_torque_figure(first, report.selection, report.actuator, t))
     body = render_pdf(report, t, figures)
     headers = {**_attachment(selection_id, "pdf"), "Content-Language": language}
     return Response(body, media_type="application/pdf", headers=headers)

@@ -37,6 +37,7 @@ from sqlalchemy.orm import Session
 
 from actuator_selection.core.checks import margin_percent
 from actuator_selection.core.csvio import neutralised
+from actuator_selection.core.errors import NotFoundError
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection, cycle_facts
@@ -155,6 +156,37 @@ def selection_report(
         if record is not None:
             actuator = ActuatorOut.from_record(record).model_dump(mode="json")
     return SelectionReport(selection, actuator, tuple(dict.fromkeys(candidates)))
+
+
+@dataclass(frozen=True, slots=True)
+class CandidateDiagram:
+    """What the speed/torque diagram of one candidate is drawn from: the stored selection,
+    the candidate in it, and the actuator's catalogue entry (None: left out or unknown)."""
+
+    selection: StoredSelection
+    candidate: StoredCandidate
+    actuator: dict[str, Any] | None
+
+
+def candidate_diagram(
+    session: Session, selection_id: str, model: str, *, catalogue: bool = True
+) -> CandidateDiagram:
+    """The diagram's inputs for ``model`` in a stored selection, with its catalogue entry
+    unless ``catalogue`` is false; 404 for an unknown selection or a model that is not one
+    of its candidates."""
+    stored = stored_answer_json(session, selection_id)
+    if stored is None:
+        raise not_found(["path", "selection_id"], "unknown_selection", selection_id=selection_id)
+    selection = StoredSelection.model_validate(stored)
+    candidate = next((c for c in selection.candidates if c.model == model), None)
+    if candidate is None:
+        raise NotFoundError(
+            "model", f"{model!r} is no candidate of selection {selection_id!r}", where="path"
+        )
+    actuator = None
+    if catalogue and (record := CatalogueRepository(session).actuator(model)) is not None:
+        actuator = ActuatorOut.from_record(record).model_dump(mode="json")
+    return CandidateDiagram(selection, candidate, actuator)
 
 
 def _cell(value: Any) -> str:

@@ -9,7 +9,7 @@ import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, tra
 import { fieldRefusal, isNumberField, numberText, readField, showReading, showReadings } from "../../lib/numbers.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
-import { NARROW_CHART_PX, cycleCaption, cycleFigure, diagramCaption, diagramFigure } from "./figures.js";
+import { NARROW_CHART_PX, cycleCaption, cycleFigure, diagramCaption, fitDiagram } from "./figures.js";
 import {
   LOAD_KINDS,
   TRANSMISSION_FIELDS,
@@ -96,6 +96,28 @@ const getSelection = (id) => api.get(encodePath`/selections/${id}`);
 
 /** GET /api/v1/selections/{id}/candidates/{model}: one candidate in full, with its catalogue data. */
 const getCandidateDetail = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}`);
+
+/**
+ * GET …/candidates/{model}/diagram: the speed/torque diagram as plotly JSON in ``lang``, the
+ * figure the quote and the report print; without the catalogue's limits where
+ * ``catalogue`` is false (its record could not be read).
+ */
+const getCandidateDiagram = (id, model, lang, catalogue) =>
+  api.get(encodePath`/selections/${id}/candidates/${model}/diagram?lang=${lang}&catalogue=${String(catalogue)}`);
+
+/** Diagrams asked for, by selection, model, language and catalogue: a promise each. */
+const diagrams = new Map();
+
+/** The API's diagram, asked once per selection, model, language and catalogue. */
+function candidateDiagram(sel, model, lang, catalogue) {
+  const key = JSON.stringify([sel.id, model, lang, catalogue]);
+  if (!diagrams.has(key)) {
+    const pending = getCandidateDiagram(sel.id, model, lang, catalogue);
+    pending.catch(() => diagrams.delete(key)); // a failure is asked again next time
+    diagrams.set(key, pending);
+  }
+  return diagrams.get(key);
+}
 
 /** GET …/candidates/{model}/limits: the shortest pause and t_1, the largest J_L (inverse solve). */
 const getCandidateLimits = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}/limits`);
@@ -862,14 +884,27 @@ async function drawCharts() {
   const detail = await detailPending;
   const actuator = detail?.actuator ?? null;
   if (token !== drawToken) return;
+  // the API's figure (the one the documents print), with the catalogue's limits where the
+  // detail could read them
+  let figure;
+  try {
+    figure = await candidateDiagram(sel, candidate.model, lang, Boolean(actuator));
+  } catch {
+    figure = null;
+  }
+  if (token !== drawToken) return;
   $("#diagram-caption").replaceChildren(
-    appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, lang)),
+    appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, figure, lang)),
   );
-  const diagram = diagramFigure(sel, candidate, actuator, lang, narrow);
-  diagramDiv.replaceChildren();
-  await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
-  diagramDiv.dataset.model = candidate.model;
-  diagramDiv.dataset.state = "ready";
+  if (!figure || !Array.isArray(figure.data) || !figure.layout) {
+    chartUnavailable(diagramDiv, t("charts.unavailable"));
+  } else {
+    const diagram = fitDiagram(figure, narrow);
+    diagramDiv.replaceChildren();
+    await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
+    diagramDiv.dataset.model = candidate.model;
+    diagramDiv.dataset.state = "ready";
+  }
   if (token !== drawToken) return;
   // the torque along each segment comes with the detail: the cycle is drawn again with it
   // (after the diagram, which the detail's catalogue data completes)
@@ -894,15 +929,6 @@ const WARM_CANDIDATE = {
   rms_torque_nm: 35,
   checks: [],
 };
-const WARM_ACTUATOR = {
-  max_speed_rpm: 100,
-  max_torque_nm: 150,
-  stall_torque_nm: 40,
-  continuous_duty_zone: [
-    { speed_rpm: 0, torque_nm: 40 },
-    { speed_rpm: 100, torque_nm: 30 },
-  ],
-};
 
 /** The page waits this long, untouched, after plotly.js has run before warming it up. */
 const WARM_AFTER_MS = 400;
@@ -911,7 +937,7 @@ const WARM_AFTER_MS = 400;
 let touched = false;
 
 /**
- * Both charts drawn once off screen and thrown away, while the page waits for its first
+ * The cycle chart drawn once off screen and thrown away, while the page waits for its first
  * input. plotly.js compiles its drawing code on first use: a first chart took 100–130 ms
  * here and a warmed-up one 35 ms, so the user's first charts come that much sooner.
  * Skipped once the user has started (clicked or typed: the 200 ms of drawing would hold
@@ -927,10 +953,8 @@ async function warmCharts(Plotly) {
   document.body.append(host);
   try {
     const lang = state.lang;
-    const figures = [
-      cycleFigure(WARM_SELECTION, WARM_CANDIDATE, lang),
-      diagramFigure(WARM_SELECTION, WARM_CANDIDATE, WARM_ACTUATOR, lang),
-    ];
+    // the cycle chart's lines, shapes and annotations (the diagram comes from the API)
+    const figures = [cycleFigure(WARM_SELECTION, WARM_CANDIDATE, lang)];
     for (const figure of figures) {
       await Plotly.newPlot(host, figure.data, figure.layout, { ...PLOT_CONFIG, locale: lang });
       Plotly.purge(host);

@@ -1,15 +1,16 @@
-// The two charts of a chosen candidate, as plotly {data, layout} objects.
-// Pure functions: every number drawn comes from the API's answer (the selection,
-// its candidate, the catalogue actuator); nothing engineering is computed here.
-// Polylines are only the chapter's shapes (Fig. 516.2 steps and ramps, the
-// rectangle of an approximate zone) laid through those numbers.
+// The cycle chart of a chosen candidate as a plotly {data, layout} object, and the
+// speed/torque diagram as the API defines it (api/figures.py, the figure the quote and the
+// report print), fitted to the chart's width. Pure functions: every number drawn comes
+// from the API's answer (the selection, its candidate); nothing engineering is computed
+// here. Polylines are only the chapter's shapes (Fig. 516.2 steps and ramps) laid through
+// those numbers.
 //
 // Trace uids name what a trace is, so tests and readers can find it:
 //   cycle:   "cycle-speed", "cycle-torque" (per segment once the detail is there), "cycle-rms"
-//   diagram: "zone" | "zone-approx", "t-max", "n-max", "operating-point",
+//   diagram (the API's): "zone" | "zone-approx", "t-max", "n-max", "operating-point",
 //            "peak-accel", "peak-decel"
 
-import { PLOTLY_NUMBER, num, plotlySeparators, plotlySymbols, qty } from "../../lib/format.js";
+import { PLOTLY_NUMBER, plotlySeparators, plotlySymbols, qty } from "../../lib/format.js";
 import { translate, unitText } from "../../lib/i18n.js";
 
 const COLORS = {
@@ -303,225 +304,15 @@ export function cycleFigure(selection, candidate, lang, detail = undefined, { na
   return { data: legendNames(data, narrow), layout };
 }
 
-function sortedZone(points) {
-  return [...points]
-    .filter((p) => p && isNum(p.speed_rpm) && isNum(p.torque_nm))
-    .sort((p, q) => p.speed_rpm - q.speed_rpm);
-}
-
-function checkStatus(candidate, name) {
-  return candidate.checks?.find((c) => c.name === name)?.status ?? "no_data";
-}
-
 /**
- * The zone that stands for the continuous-duty zone where the catalogue has none, as the
- * continuous_duty and continuous_speed checks bound it (core/checks.py
- * ``_continuous_limit``, ``_speed_limit``): T_0, else the allowable continuous torque; up
- * to the allowable continuous speed, else the rated speed. Where k_T and K_INL are
- * published with T_0, the edge falls with speed as the winding current does, T_0 −
- * k_T·K_INL·n (K_INL at 80 °C, else at 30 °C; core/electrical.py
- * ``no_load_torque_slope_nm_per_rpm``): ``slope`` is k_T·K_INL, else 0. A missing value
- * is null.
+ * The speed/torque diagram as the API defines it (``GET …/candidates/{model}/diagram``, the
+ * figure the quote and the report print, from ``api/figures.py``), fitted to the chart's
+ * width: a narrow chart lists its legend one entry a line below the plot, names broken
+ * into lines. ``figure`` is left unchanged.
  */
-function approximateZone(actuator, t) {
-  const stall = actuator?.stall_torque_nm;
-  const continuousSpeed = actuator?.continuous_speed_rpm;
-  const kT = actuator?.torque_constant_nm_per_a;
-  const hot = actuator?.no_load_current_constant_80c_a_per_rpm;
-  const kInl = isNum(hot) ? hot : actuator?.no_load_current_constant_30c_a_per_rpm;
-  return {
-    torque: isNum(stall) ? stall : (actuator?.continuous_torque_nm ?? null),
-    what: isNum(stall) ? t("fig.stall") : t("fig.continuous"),
-    speed: isNum(continuousSpeed) ? continuousSpeed : (actuator?.rated_speed_rpm ?? null),
-    speedWhat: isNum(continuousSpeed) ? t("fig.continuous_speed") : t("fig.rated_speed"),
-    slope: isNum(stall) && isNum(kT) && isNum(kInl) ? kT * kInl : 0,
-  };
-}
-
-/**
- * Fig. 517.1: the speed/torque diagram of ``actuator`` with the candidate's points.
- *
- * The continuous-duty zone from ``actuator.continuous_duty_zone`` where the
- * catalogue has one; else the approximate rectangle up to T_0
- * (``stall_torque_nm``, else ``continuous_torque_nm``) and the allowable continuous
- * speed (``continuous_speed_rpm``, else ``rated_speed_rpm``), marked approximate: the
- * rectangle the continuous_duty check compares with (core/checks.py
- * ``_continuous_limit``, ``_speed_limit``), never up to n_max, a peak speed;
- * else "no data", as the check says. T_max and n_max as limit lines; the operating
- * point (n_av, T_rms) and the peaks (n_2, T_1), (n_2, |T_3|). ``actuator`` may be
- * null when the catalogue record could not be read.
- */
-export function diagramFigure(selection, candidate, actuator, lang, { narrow = false } = {}) {
-  const t = (key, params) => translate(lang, key, params);
-  const nMax = actuator?.max_speed_rpm;
-  const tMax = actuator?.max_torque_nm;
-  const n2 = selection.load.speed_rpm;
-  const nAv = selection.mean_speed_rpm;
-  const T1 = candidate.accel_torque_nm;
-  const T3 = candidate.decel_torque_nm;
-  const Trms = candidate.rms_torque_nm;
-  const zone = Array.isArray(actuator?.continuous_duty_zone)
-    ? sortedZone(actuator.continuous_duty_zone)
-    : [];
-  const {
-    torque: approxTorque,
-    speed: approxSpeed,
-    what: approxWhat,
-    speedWhat,
-    slope: approxSlope,
-  } = approximateZone(actuator, t);
-
-  const layout = baseLayout(lang, narrow);
-  layout.xaxis = axis(t("fig.speed"));
-  layout.yaxis = axis(t("fig.torque"));
-  const data = [];
-  const xs = [n2, nAv];
-  const ys = [];
-
-  if (zone.length >= 2) {
-    const last = zone[zone.length - 1];
-    data.push({
-      uid: "zone",
-      name: plotlySymbols(t("fig.zone")),
-      type: "scatter",
-      mode: "lines",
-      x: [...zone.map((p) => p.speed_rpm), last.speed_rpm],
-      y: [...zone.map((p) => p.torque_nm), 0],
-      fill: "tozeroy",
-      fillcolor: COLORS.zone,
-      line: { color: COLORS.zoneLine, width: 2 },
-      hovertemplate: hover(lang, "rpm", "Nm"),
-    });
-    xs.push(last.speed_rpm);
-    ys.push(...zone.map((p) => p.torque_nm));
-  } else if (isNum(approxTorque) && isNum(approxSpeed)) {
-    data.push({
-      uid: "zone-approx",
-      name: plotlySymbols(t("fig.zone_approx", { what: approxWhat, speed: speedWhat })),
-      type: "scatter",
-      mode: "lines",
-      x: [0, 0, approxSpeed, approxSpeed, 0],
-      y: [0, approxTorque, Math.max(approxTorque - approxSlope * approxSpeed, 0), 0, 0],
-      fill: "toself",
-      fillcolor: COLORS.zone,
-      line: { color: COLORS.zoneLine, width: 2, dash: "dash" },
-      hovertemplate: hover(lang, "rpm", "Nm"),
-    });
-    xs.push(approxSpeed);
-    ys.push(approxTorque);
-    layout.annotations.push({
-      x: approxSpeed / 2,
-      y: approxTorque,
-      xref: "x",
-      yref: "y",
-      yanchor: "top",
-      text: plotlySymbols(`≈ ${approxWhat} = ${num(approxTorque, lang)} Nm (${t("detail.approximate")})`),
-      showarrow: false,
-      font: { size: 11, color: COLORS.zoneLine },
-    });
-  } else {
-    // Above the plot area, where it can never hide a point.
-    layout.margin = { ...layout.margin, t: actuator ? 44 : 62 };
-    layout.annotations.push({
-      xref: "paper",
-      yref: "paper",
-      x: 0,
-      y: 1,
-      xanchor: "left",
-      yanchor: "bottom",
-      yshift: 8,
-      align: "left",
-      // two lines without the catalogue, so that the box fits a narrow chart
-      text: actuator
-        ? plotlySymbols(t("fig.zone_nodata"))
-        : `${plotlySymbols(t("fig.zone_nodata"))}<br>${plotlySymbols(t("charts.catalogue_missing"))}`,
-      showarrow: false,
-      bgcolor: "#f0f2f5",
-      bordercolor: "#999",
-      borderwidth: 1,
-      borderpad: 4,
-      font: { size: 13, color: "#333" },
-    });
-  }
-
-  if (isNum(T1)) ys.push(T1);
-  if (isNum(T3)) ys.push(Math.abs(T3));
-  if (isNum(Trms)) ys.push(Trms);
-  if (isNum(nMax)) xs.push(nMax);
-  if (isNum(tMax)) ys.push(tMax);
-  // Axis extents only frame what is drawn, with some room for labels.
-  const xTop = Math.max(...xs.filter(isNum), 1) * 1.1;
-  const yTop = Math.max(...ys.filter(isNum), 1) * 1.15;
-  layout.xaxis.range = [0, xTop];
-  layout.yaxis.range = [0, yTop];
-
-  if (isNum(tMax)) {
-    data.push({
-      uid: "t-max",
-      name: plotlySymbols(`${t("fig.t_max")} = ${num(tMax, lang)} Nm`),
-      type: "scatter",
-      mode: "lines",
-      x: [0, isNum(nMax) ? nMax : xTop],
-      y: [tMax, tMax],
-      line: { color: COLORS.limit, width: 2 },
-      hovertemplate: hover(lang, "rpm", "Nm"),
-    });
-  }
-  if (isNum(nMax)) {
-    data.push({
-      uid: "n-max",
-      name: plotlySymbols(`${t("fig.n_max")} = ${num(nMax, lang)} ${unitText(lang, "rpm")}`),
-      type: "scatter",
-      mode: "lines",
-      x: [nMax, nMax],
-      y: [0, isNum(tMax) ? tMax : yTop],
-      line: { color: COLORS.limit, width: 2, dash: "dot" },
-      hovertemplate: hover(lang, "rpm", "Nm"),
-    });
-  }
-
-  const statusColor = (status) =>
-    status === "pass" ? COLORS.pass : status === "fail" ? COLORS.fail : COLORS.other;
-  const point = (uid, label, x, y, status, symbol) => ({
-    uid,
-    name: plotlySymbols(label),
-    type: "scatter",
-    mode: "markers",
-    x: [x],
-    y: [y],
-    marker: { size: 12, symbol, color: statusColor(status), line: { color: "#000", width: 1 } },
-    hovertemplate: hover(lang, "rpm", "Nm"),
-  });
-  if (isNum(Trms)) {
-    data.push(
-      point(
-        "operating-point",
-        t("fig.operating"),
-        nAv,
-        Trms,
-        checkStatus(candidate, "continuous_duty"),
-        "circle",
-      ),
-    );
-  }
-  if (isNum(T1)) {
-    data.push(
-      point("peak-accel", t("fig.peak_accel"), n2, T1, checkStatus(candidate, "peak_torque"), "triangle-up"),
-    );
-  }
-  if (isNum(T3)) {
-    data.push(
-      point(
-        "peak-decel",
-        t("fig.peak_decel"),
-        n2,
-        Math.abs(T3),
-        checkStatus(candidate, "decel_torque"),
-        "triangle-down",
-      ),
-    );
-  }
-  return { data: legendNames(data, narrow), layout };
+export function fitDiagram(figure, { narrow = false } = {}) {
+  const layout = { ...figure.layout, legend: legendBelow(narrow, -0.2) };
+  return { data: legendNames(figure.data, narrow), layout };
 }
 
 /** A text alternative of the cycle chart, for the figure's caption. */
@@ -551,19 +342,22 @@ export function cycleCaption(selection, candidate, lang) {
   });
 }
 
-/** A text alternative of the speed/torque diagram, for the figure's caption. */
-export function diagramCaption(selection, candidate, actuator, lang) {
+/**
+ * A text alternative of the speed/torque diagram, for the figure's caption: the candidate's
+ * numbers, and the zone the API's figure drew (its ``layout.meta.zone``; ``figure`` null
+ * before it is there).
+ */
+export function diagramCaption(selection, candidate, actuator, figure, lang) {
   const q = (v, u) => qty(v, u, lang);
-  const hasZone = Array.isArray(actuator?.continuous_duty_zone) && actuator.continuous_duty_zone.length >= 2;
-  const approx = approximateZone(actuator, (key, params) => translate(lang, key, params));
+  const meta = figure?.layout?.meta?.zone === undefined ? null : figure.layout.meta;
   let zone;
-  if (hasZone) zone = translate(lang, "fig.caption.zone");
-  else if (isNum(approx.torque) && isNum(approx.speed)) {
+  if (meta?.zone === "catalogue") zone = translate(lang, "fig.caption.zone");
+  else if (meta?.zone === "approximate") {
     zone = translate(lang, "fig.caption.approx", {
-      what: approx.what,
-      value: q(approx.torque, "Nm"),
-      speed: approx.speedWhat,
-      speedValue: q(approx.speed, "rpm"),
+      what: meta.what,
+      value: q(meta.torque, "Nm"),
+      speed: meta.speed_what,
+      speedValue: q(meta.speed, "rpm"),
     });
   } else zone = translate(lang, "fig.caption.nodata");
   const t3 = candidate.decel_torque_nm;

@@ -1,0 +1,116 @@
+"""The speed/torque diagram, defined once (``api/figures.py``) for the page, the quote and
+the report: the zone cases and the gaps (moved here from the page's figures.js test), and
+the page's figure is the quote's, served by ``GET …/candidates/{model}/diagram``."""
+
+from __future__ import annotations
+
+import copy
+from typing import Any
+
+from fastapi.testclient import TestClient
+
+from actuator_selection.api.figures import DiagramPoints, diagram_figure
+from actuator_selection.api.quote_document_text import DocumentText
+
+EN, DE = DocumentText("en"), DocumentText("de")
+POINTS = DiagramPoints(
+    n2=40, n_av=6.15, t1=95.48, t3=-85.48, trms=35.57, statuses={"continuous_duty": "pass"}
+)
+ZONE_ACTUATOR: dict[str, Any] = {
+    "max_torque_nm": 151,
+    "max_speed_rpm": 90,
+    "stall_torque_nm": 58,
+    "continuous_torque_nm": None,
+    "continuous_duty_zone": [
+        {"speed_rpm": 90, "torque_nm": 30},
+        {"speed_rpm": 0, "torque_nm": 60},
+        {"speed_rpm": 60, "torque_nm": 50},
+    ],
+}
+CONTINUOUS_ACTUATOR: dict[str, Any] = {
+    "max_torque_nm": 8.3,
+    "max_speed_rpm": 116,
+    "stall_torque_nm": None,
+    "continuous_torque_nm": 2.9,
+    "continuous_duty_zone": None,
+    "continuous_speed_rpm": None,
+    "rated_speed_rpm": 60,
+}
+
+
+def _by_uid(figure: dict[str, Any]) -> dict[str, dict[str, Any]]:
+    return {t["uid"]: t for t in figure["data"]}
+
+
+def test_a_published_zone_is_drawn_sorted_and_closed_down_to_zero() -> None:
+    before = copy.deepcopy(ZONE_ACTUATOR)
+    zone = _by_uid(diagram_figure(POINTS, ZONE_ACTUATOR, EN))
+    assert before == ZONE_ACTUATOR, "the figure must not change its inputs"
+    assert zone["zone"]["x"] == [0, 0, 60, 90, 90, 0]  # sorted by speed, closed at T = 0
+    assert zone["zone"]["y"] == [0, 60, 50, 30, 0, 0]
+    assert "zone-approx" not in zone
+    assert zone["operating-point"]["x"] == [6.15]
+    assert zone["operating-point"]["marker"]["color"] == "#1e7b3c"  # its check passed
+
+
+def test_without_a_zone_the_checks_rectangle_up_to_the_rated_speed() -> None:
+    """Not up to n_max = 116: the continuous_speed check bounds it by the rated speed."""
+    figure = diagram_figure(POINTS, CONTINUOUS_ACTUATOR, DE)
+    approx = _by_uid(figure)["zone-approx"]
+    assert approx["y"] == [0, 2.9, 2.9, 0, 0]
+    assert approx["x"] == [0, 0, 60, 60, 0]
+    assert "näherungsweise" in approx["name"]
+    assert "Nenndrehzahl" in approx["name"]
+    assert figure["layout"]["separators"] == ",."
+    assert figure["layout"]["meta"]["zone"] == "approximate"
+    # T_0 before the allowable continuous torque, the continuous speed before the rated one
+    both = {**CONTINUOUS_ACTUATOR, "stall_torque_nm": 3.1, "continuous_speed_rpm": 40}
+    rectangle = _by_uid(diagram_figure(POINTS, both, EN))["zone-approx"]
+    assert rectangle["y"] == [0, 3.1, 3.1, 0, 0]
+    assert rectangle["x"] == [0, 0, 40, 40, 0]
+    assert "and allowable continuous speed" in rectangle["name"]
+
+
+def test_no_zone_says_no_data_and_no_catalogue_draws_no_limits() -> None:
+    cases = {
+        "no speed": {**CONTINUOUS_ACTUATOR, "rated_speed_rpm": None},
+        "none": {"max_torque_nm": 151, "max_speed_rpm": 90},
+        "no actuator": None,
+    }
+    for case, actuator in cases.items():
+        figure = diagram_figure(POINTS, actuator, EN)
+        assert not set(_by_uid(figure)) & {"zone", "zone-approx"}, case
+        assert any("no data" in a["text"] for a in figure["layout"]["annotations"]), case
+        assert figure["layout"]["meta"] == {"zone": "none"}
+    assert {"t-max", "n-max"} <= set(_by_uid(diagram_figure(POINTS, cases["none"], EN)))
+    missing = diagram_figure(POINTS, None, EN)
+    assert not {"t-max", "n-max"} & set(_by_uid(missing))
+    assert any("catalogue data" in a["text"] for a in missing["layout"]["annotations"])
+
+
+def test_the_page_gets_the_figure_the_quote_prints(client: TestClient) -> None:
+    """The page's diagram and the quote's are one definition: the API's figure for a
+    candidate has the same traces, in the same order, as the printed one."""
+    from actuator_selection.api.quote_document import speed_torque_figure
+    from actuator_selection.schemas.quotes import StoredSelection
+
+    body = {
+        "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+        "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1},
+        "models": ["FHA-25C-50-L"],
+    }
+    created = client.post("/api/v1/selections", json=body)
+    assert created.status_code == 201, created.text
+    answer = created.json()
+    url = f"/api/v1/selections/{answer['id']}/candidates/FHA-25C-50-L/diagram"
+    served = client.get(url, params={"lang": "de"})
+    assert served.status_code == 200
+    assert served.headers["content-language"] == "de"
+    actuator = client.get("/api/v1/actuators/FHA-25C-50-L").json()
+    stored = StoredSelection.model_validate(client.get(f"/api/v1/selections/{answer['id']}").json())
+    printed = speed_torque_figure(stored.candidates[0], stored, actuator, DE)
+    assert served.json()["data"] == printed["data"]
+    assert _by_uid(served.json())["t-max"]["y"] == [151, 151]
+    without = client.get(url, params={"catalogue": "false"}).json()
+    assert not {"t-max", "n-max"} & set(_by_uid(without))
+    assert client.get(url.replace("FHA-25C-50-L", "NO-SUCH")).status_code == 404
