@@ -11,7 +11,7 @@ in degrees and forces in N as numbers; any of them may also be text with a unit
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, get_args
 
 from pydantic import Discriminator, Field, Tag
 
@@ -482,7 +482,30 @@ class RotaryIn(_MechanismIn):
         )
 
 
-MECHANISM_TYPES = ("ball_screw_incline", "belt", "rack_pinion", "conveyor", "lift", "rotary")
+Mechanisms = (
+    Annotated[BallScrewInclineIn, Tag("ball_screw_incline")]
+    | Annotated[BeltIn, Tag("belt")]
+    | Annotated[RackPinionIn, Tag("rack_pinion")]
+    | Annotated[ConveyorIn, Tag("conveyor")]
+    | Annotated[LiftIn, Tag("lift")]
+    | Annotated[RotaryIn, Tag("rotary")]
+)
+"""Every mechanism, tagged by its ``type``: the one list of them (the request's load union
+takes it whole, ``schemas/selections.py``)."""
+
+
+def union_tags(union: Any) -> tuple[str, ...]:
+    """The tags of a union of ``Annotated[Model, Tag(…)]`` members, in its order.
+
+    >>> union_tags(Mechanisms)[:2]
+    ('ball_screw_incline', 'belt')
+    """
+    return tuple(
+        next(m.tag for m in member.__metadata__ if isinstance(m, Tag)) for member in get_args(union)
+    )
+
+
+MECHANISM_TYPES = union_tags(Mechanisms)
 """The ``type`` of each mechanism in :data:`MechanismIn`."""
 
 
@@ -492,12 +515,7 @@ def _mechanism_kind(value: Any) -> str | None:
 
 
 MechanismIn = Annotated[
-    Annotated[BallScrewInclineIn, Tag("ball_screw_incline")]
-    | Annotated[BeltIn, Tag("belt")]
-    | Annotated[RackPinionIn, Tag("rack_pinion")]
-    | Annotated[ConveyorIn, Tag("conveyor")]
-    | Annotated[LiftIn, Tag("lift")]
-    | Annotated[RotaryIn, Tag("rotary")],
+    Mechanisms,
     Discriminator(
         _mechanism_kind,
         custom_error_type="mechanism_type",

@@ -36,16 +36,7 @@ from actuator_selection.schemas.common import (
 from actuator_selection.schemas.controllers import (
     DriveOptionOut,
 )
-from actuator_selection.schemas.mechanisms import (
-    MECHANISM_TYPES,
-    BallScrewInclineIn,
-    BeltIn,
-    ConveyorIn,
-    LiftIn,
-    RackPinionIn,
-    RotaryIn,
-    _MechanismIn,
-)
+from actuator_selection.schemas.mechanisms import Mechanisms, _MechanismIn, union_tags
 from actuator_selection.schemas.output_load import (
     DRIVE_FIELD,
     OUTPUT_LOAD_FIELD,
@@ -222,18 +213,17 @@ def _load_kind(value: Any) -> str:
     return kind if isinstance(kind, str) else "direct"
 
 
-LOAD_TYPES = ("direct", "ball_screw", "rotary_table", *MECHANISM_TYPES)
-
-LoadIn = Annotated[
+_Loads = (
     Annotated[DirectLoad, Tag("direct")]
     | Annotated[BallScrewLoad, Tag("ball_screw")]
     | Annotated[RotaryTableLoad, Tag("rotary_table")]
-    | Annotated[BallScrewInclineIn, Tag("ball_screw_incline")]
-    | Annotated[BeltIn, Tag("belt")]
-    | Annotated[RackPinionIn, Tag("rack_pinion")]
-    | Annotated[ConveyorIn, Tag("conveyor")]
-    | Annotated[LiftIn, Tag("lift")]
-    | Annotated[RotaryIn, Tag("rotary")],
+    | Mechanisms
+)
+LOAD_TYPES = union_tags(_Loads)
+"""The ``type`` of each load in :data:`LoadIn`: the chapter's three, then the mechanisms."""
+
+LoadIn = Annotated[
+    _Loads,
     Discriminator(
         _load_kind,
         custom_error_type="load_type",
