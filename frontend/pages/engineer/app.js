@@ -855,6 +855,9 @@ async function drawCharts() {
   // the detail is on its way (asked when the panel was drawn) while plotly.js loads and the
   // cycle is drawn; without it the diagram is drawn without catalogue limits, and says so
   const detailPending = candidateDetail(sel, candidate.model).settled;
+  // the API's diagram with the catalogue's limits is asked at once, beside the detail (a
+  // failure is asked again, or without the catalogue, once the detail says which)
+  candidateDiagram(sel, candidate.model, lang, true).catch(() => {});
 
   let Plotly;
   try {
