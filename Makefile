@@ -10,7 +10,6 @@ STAMP  := $(VENV)/.installed-$(shell cksum requirements.lock | cut -d' ' -f1)
 NODE_STAMP := node_modules/.installed-$(shell cat package.json package-lock.json | cksum | cut -d' ' -f1)
 
 .PHONY: install run test check lint typecheck jslint pytest bench lock messages api-types mechanisms clean
-.PHONY: install run test check lint typecheck jslint pytest bench lock messages mechanisms clean
 
 $(STAMP): requirements.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)

@@ -219,6 +219,28 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/mechanisms": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * List Mechanisms
+         * @description Every kind of `load` with its fields: name, symbol, unit, bounds, default, whether
+         *     text with a unit is accepted, and the message keys of its words. The page builds its
+         *     load form from this (as the module generated from it).
+         */
+        get: operations["list_mechanisms"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/selections/batch": {
         parameters: {
             query?: never;
@@ -334,6 +356,28 @@ export interface paths {
          *     of Table 521.1 with its criteria and voltage check, the actuator's catalogue data.
          */
         get: operations["get_candidate"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/selections/{selection_id}/candidates/{model}/diagram": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Candidate Diagram
+         * @description The candidate's speed/torque diagram (Fig. 517.1) as a plotly figure (`data` and
+         *     `layout`, JSON), in the document's language: the figure the quote and the report
+         *     print, from the same definition (`api/figures.py`). The page draws it with plotly.js.
+         */
+        get: operations["get_candidate_diagram"];
         put?: never;
         post?: never;
         delete?: never;
@@ -2677,6 +2721,54 @@ export interface components {
          */
         FeedbackSystem: "resolver_2pole" | "sincos" | "hiperface" | "endat" | "ttl";
         /**
+         * FieldSpec
+         * @description One input of a load kind.
+         */
+        FieldSpec: {
+            /**
+             * Name
+             * @description the request field under `load` (or `load.transmission`)
+             */
+            name: string;
+            /**
+             * Symbol
+             * @description as the chapter prints it; `_` starts the subscript
+             */
+            symbol: string;
+            /**
+             * Label
+             * @description message key of the field's words (the page's catalogue)
+             */
+            label: string;
+            /**
+             * Unit
+             * @description the unit of a number in this field, as the API writes it
+             */
+            unit: string;
+            /**
+             * Units
+             * @description whether text with a unit ('0.5 in') is accepted too
+             */
+            units: boolean;
+            /** Required */
+            required: boolean;
+            /**
+             * Default
+             * @description the value an omitted field takes; null: none
+             */
+            default: number | null;
+            /** Minimum */
+            minimum?: number | null;
+            /** Maximum */
+            maximum?: number | null;
+            /**
+             * Exclusive Minimum
+             * @description the minimum itself is refused
+             * @default false
+             */
+            exclusive_minimum: boolean;
+        };
+        /**
          * HealthOut
          * @description The process answers and its database has answered a query.
          */
@@ -2897,6 +2989,60 @@ export interface components {
              * @description the actuator, as the catalogue names it
              */
             model: string;
+        };
+        /**
+         * MechanismSpec
+         * @description One kind of `load`: its `type`, words and fields.
+         */
+        MechanismSpec: {
+            /** Type */
+            type: string;
+            /**
+             * Label
+             * @description message key of the kind's name
+             */
+            label: string;
+            /**
+             * Hint
+             * @description message key of a line on its units, if any
+             */
+            hint: string | null;
+            /**
+             * Equation
+             * @description message key of the chapter's equation, if any
+             */
+            equation: string | null;
+            /**
+             * Speed Field
+             * @description the trapezoid's load speed: n_2 in rpm, or `speed` (mm/s or rpm)
+             * @enum {string}
+             */
+            speed_field: "speed_rpm" | "speed";
+            /**
+             * Linear
+             * @description a linear axis: speed in mm/s, process loads in N
+             */
+            linear: boolean;
+            /**
+             * Transmission
+             * @description whether it takes `load.transmission`
+             */
+            transmission: boolean;
+            /** Fields */
+            fields: components["schemas"]["FieldSpec"][];
+        };
+        /**
+         * MechanismsOut
+         * @description Every kind of `load` a selection takes, in the order a page offers them.
+         */
+        MechanismsOut: {
+            /** Kinds */
+            kinds: components["schemas"]["MechanismSpec"][];
+            /**
+             * Transmission
+             * @description the fields of `load.transmission`
+             */
+            transmission: components["schemas"]["FieldSpec"][];
         };
         /**
          * ModelColumns
@@ -5773,6 +5919,68 @@ export interface operations {
             };
         };
     };
+    list_mechanisms: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["MechanismsOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
     create_batch: {
         parameters: {
             query?: never;
@@ -6376,6 +6584,87 @@ export interface operations {
             };
             /** @description the catalogue has changed since the selection */
             409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidate_diagram: {
+        parameters: {
+            query?: {
+                /** @description with the actuator's catalogue limits and zone (false: without) */
+                catalogue?: boolean;
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+                model: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": {
+                        [key: string]: unknown;
+                    };
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection, or a model that is no candidate of it */
+            404: {
                 headers: {
                     [name: string]: unknown;
                 };

@@ -28,8 +28,12 @@ LITERAL = re.compile(r"""["'`]([a-z][a-z_]*(?:\.[A-Za-z0-9_]+)+)["'`]""")
 """A string literal shaped like a page key (``"results.heading"``)."""
 PREFIX = re.compile(r"`([a-z][a-z_]*(?:\.[A-Za-z0-9_]+)*\.)\$\{")
 """A key built at run time (``t(`verdict.${v}`)``): its fixed prefix."""
-DATA_PATH = re.compile(r'data-path="([^"]+)"|(?:readNumber|readQuantities|setField)\("([^"]+)"')
-"""A field's path in the request (``load.mass_kg``): shaped like a key, but no word."""
+DATA_PATH = re.compile(
+    r'data-path="([^"]+)"|(?:readNumber|readQuantities|setField)\("([^"]+)"'
+    r'|"([a-z_]+\.[a-z0-9_]+)": -?[0-9]'
+)
+"""A field's path in the request (``load.mass_kg``, also as the key of an example's
+number): shaped like a key, but no word."""
 COMMENT = re.compile(r"``[^`]*``|^\s*(?://|\*|/\*\*).*$", re.MULTILINE)
 """A comment line, and code quoted in a comment."""
 ATTRIBUTE = re.compile(r"""data-i18n="([^"]+)"|data-i18n-attr="([^"]+)"|i18n: "([^"]+)\"""")
@@ -90,7 +94,7 @@ def test_every_key_the_page_uses_is_in_the_catalogue() -> None:
     used: dict[str, Path] = {}
     prefixes: dict[str, Path] = {}
     sources = {path: COMMENT.sub(" ", path.read_text(encoding="utf-8")) for path in _page_sources()}
-    data_paths = {a or b for text in sources.values() for a, b in DATA_PATH.findall(text)}
+    data_paths = {a or b or c for text in sources.values() for a, b, c in DATA_PATH.findall(text)}
     for path, text in sources.items():
         for key in LITERAL.findall(text):
             if key.split(".")[0] in namespaces and key not in data_paths:
