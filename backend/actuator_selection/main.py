@@ -28,6 +28,7 @@ from actuator_selection.api import (
     methods,
     openapi,
     prices,
+    profiles,
     quotes,
     security_headers,
     selections,
@@ -129,12 +130,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # Body limits per router (413 above): bulk endpoints (batch, catalogue and price
     # imports) take larger bodies. Set on the routers rather than the app so that the
     # 413 passes through errors.UniformBodyTooLarge, which gives it the error shape.
-    bulk = {batch, admin, prices}
+    bulk = {batch, admin, prices, profiles}
 
     def body_limit(module: ModuleType) -> int:
         return settings.max_bulk_body_bytes if module in bulk else settings.max_body_bytes
 
-    for module in (actuators, controllers, mechanisms, batch, selections, aas, tools):
+    for module in (actuators, controllers, mechanisms, batch, selections, aas, profiles, tools):
         app.include_router(
             module.router,
             prefix=API_PREFIX,

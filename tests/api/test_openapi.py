@@ -185,8 +185,9 @@ def test_every_json_body_has_an_example_of_its_schema(
     assert not problems, problems
 
 
-def example(operation_id: str, media_type: str = "application/json") -> Any:
+def example(operation_id: str, media_type: str | None = None) -> Any:
     _, _, op = by_id(operation_id)
+    media_type = media_type or "application/json"
     return op["requestBody"]["content"][media_type]["example"]
 
 
@@ -292,6 +293,7 @@ def test_the_created_answers_are_known() -> None:
         "create_actuator",
         "create_batch",
         "create_controller",
+        "create_profile",
         "create_quote",
         "create_selection",
         "create_selection_from_aas",
@@ -303,7 +305,7 @@ def test_every_201_names_what_it_created(api: SalesApi, operation_id: str) -> No
     """Each 201's ``Location`` is documented, and a GET of it answers what was created."""
     path, method, op = by_id(operation_id)
     assert "Location" in op["responses"]["201"]["headers"]
-    body = example(operation_id)
+    body = example(operation_id, "text/csv" if operation_id == "create_profile" else None)
     role = {"create_actuator": "admin", "create_controller": "admin"}.get(operation_id)
     if operation_id == "create_batch":
         body = {**body, "store": True}
@@ -318,6 +320,10 @@ def test_every_201_names_what_it_created(api: SalesApi, operation_id: str) -> No
             _path(path),
             content=package.content,
             headers={"Content-Type": package.headers["Content-Type"]},
+        )
+    elif operation_id == "create_profile":  # a CSV file, the example of its request body
+        created = api.client.request(
+            method, _path(path), content=body, headers={"Content-Type": "text/csv"}
         )
     else:
         created = api.client.request(method, _path(path), json=body, headers=api.headers(role))

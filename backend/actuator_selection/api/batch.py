@@ -45,6 +45,7 @@ from actuator_selection.services.batch import (
     size_batch,
     size_columns,
 )
+from actuator_selection.services.profiles import with_profiles
 
 
 class _BulkRequest(Request):
@@ -134,6 +135,10 @@ def _applications(
 def create_batch(body: BatchSelectionRequest, request: Request, session: SessionDep) -> Response:
     """Size many load cases against the catalogue."""
     check_limits(body)
+    cases = with_profiles(
+        session, body.cases, [["body", "cases", i] for i in range(len(body.cases))]
+    )
+    body = body.model_copy(update={"cases": cases})
     catalogue = catalogue_snapshot(request, session)
     apps, errors = _applications(body, {a.model for a in catalogue.actuators})
     if errors:

@@ -228,7 +228,7 @@ PYDANTIC_MESSAGES: Final[Mapping[str, str]] = {
     "union_tag_not_found": N_("Unable to extract tag using discriminator {discriminator}"),
     "load_type": N_("type must be one of {expected}"),
     "mechanism_type": N_("type must be one of {expected}"),
-    "cycle_form": N_("cycle must be the t_1…t_p pattern or a list of segments"),
+    "cycle_form": N_("cycle must be the t_1…t_p pattern, a list of segments or a profile's id"),
     "decimal_text": DECIMAL_TEXT_RULE,
 }
 """pydantic's error types (and the schemas' own) → template over their ``ctx``."""

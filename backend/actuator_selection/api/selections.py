@@ -28,11 +28,13 @@ from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
     CandidateDetailOut,
+    ProfileCycleIn,
     SelectionOut,
     SelectionRequest,
 )
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
+from actuator_selection.services.profiles import with_profiles
 from actuator_selection.services.reports import (
     COLUMNS,
     candidate_diagram,
@@ -95,7 +97,9 @@ def refuse_unknown_models(models: list[str] | None, catalogue: CatalogueSnapshot
 @reads_only  # no request transaction: it writes in its own (services.selections)
 def create_selection(body: SelectionRequest, request: Request) -> Response:
     """Size the load case against the catalogue and store the selection."""
-
+    if isinstance(body.cycle, ProfileCycleIn):
+        with read_transaction(request) as session:
+            (body,) = with_profiles(session, [body], [["body"]])
     sized = store_new_selection(
         body,
         catalogue=request.app.state.catalogue,

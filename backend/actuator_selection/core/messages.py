@@ -70,6 +70,15 @@ MESSAGES: Final[Mapping[str, str]] = {
     "speed_jump": N_("must equal the end speed of the segment before: speed cannot jump"),
     "cycle_not_closed": N_("the cycle must end at the speed it starts at: it repeats"),
     "cycle_zero_duration": N_("the cycle must last longer than 0 s"),
+    # Measured profiles (core/sampled.py)
+    "profile_not_closed": N_(
+        "the profile must end at the speed it starts at (it repeats): it starts at "
+        "{first} and ends at {last}"
+    ),
+    "profile_too_many_reversals": N_(
+        "the profile changes direction {count} times; a cycle holds at most {max} segments"
+    ),
+    "profile_not_resolved": N_("names a profile that was not read"),
     "speed_required": N_("is required with the t_1…t_p cycle"),
     "speed_with_segments": N_("must be left out with segments: they give the speeds"),
     "duration_or_accel": N_("give either duration_s or accel"),

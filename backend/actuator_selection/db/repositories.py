@@ -7,7 +7,7 @@ where its numbers came from.
 from __future__ import annotations
 
 import functools
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import asdict, dataclass, fields
 from datetime import UTC, datetime
 from types import MappingProxyType
@@ -24,6 +24,7 @@ from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorRow,
     CatalogueStateRow,
+    ProfileRow,
     SelectionRow,
 )
 
@@ -254,3 +255,22 @@ class SelectionRepository:
             )
         ).one_or_none()
         return None if row is None else (row.request, row.catalogue_version)
+
+
+class ProfileRepository:
+    """Stored motion profiles: written once, read back unchanged."""
+
+    def __init__(self, session: Session) -> None:
+        self._session = session
+
+    def add(self, id: str, created_at: datetime, kind: str, answer: dict[str, Any]) -> None:
+        """Store one profile."""
+        self._session.add(ProfileRow(id=id, created_at=created_at, kind=kind, answer=answer))
+        self._session.flush()
+
+    def answers(self, ids: Collection[str]) -> dict[str, dict[str, Any]]:
+        """The stored answers of the profiles ``ids`` that exist, by id."""
+        rows = self._session.execute(
+            select(ProfileRow.id, ProfileRow.answer).where(ProfileRow.id.in_(list(ids)))
+        )
+        return {row.id: row.answer for row in rows}

@@ -280,6 +280,9 @@ KIND_WORDS = (
     N_("angle"),
     N_("force"),
     N_("torque"),
+    N_("time"),
+    N_("rotary acceleration"),
+    N_("linear acceleration"),
 )
 """What the kinds measure, as :func:`kind_words` gives it: marked for the catalogs."""
 
@@ -311,3 +314,10 @@ ANGLE_DEG = QuantityKind(
 )
 FORCE_N = QuantityKind(unit="N", label="N", kind=N_("a force"), example="20 lbf")
 TORQUE_NM = QuantityKind(unit="N*m", label="Nm", kind=N_("a torque"), example="10 lbf*ft")
+TIME_S = QuantityKind(unit="s", label="s", kind=N_("a time"), example="20 ms")
+ROTARY_ACCEL_RPM_PER_S = QuantityKind(
+    unit="rpm/s", label="rpm/s", kind=N_("a rotary acceleration"), example="2 rad/s^2"
+)
+LINEAR_ACCEL_MM_PER_S2 = QuantityKind(
+    unit="mm/s^2", label="mm/s²", kind=N_("a linear acceleration"), example="2 m/s^2"
+)

@@ -359,18 +359,38 @@ class SegmentsCycleIn(StrictModel):
             raise _renamed(exc, "cycle") from None
 
 
+class ProfileCycleIn(StrictModel):
+    """A measured profile uploaded before (``POST /profiles``), by its id: sized as the
+    segments stored with it, which the stored selection then holds."""
+
+    profile_id: str = Field(
+        min_length=1, max_length=36, description="the id `POST /profiles` answered"
+    )
+
+    def to_motion(self, speed: float | None, axis: AxisLoad, speed_field: str) -> Motion:
+        """Never reached: the service puts the stored segments in its place first."""
+        raise InvalidInputError("cycle.profile_id", code="profile_not_resolved")
+
+
 def _cycle_kind(value: Any) -> str:
     if isinstance(value, dict):
+        if "profile_id" in value:
+            return "profile"
         return "segments" if "segments" in value else "trapezoid"
+    if isinstance(value, ProfileCycleIn):
+        return "profile"
     return "segments" if isinstance(value, SegmentsCycleIn) else "trapezoid"
 
 
 AnyCycleIn = Annotated[
-    Annotated[CycleIn, Tag("trapezoid")] | Annotated[SegmentsCycleIn, Tag("segments")],
+    Annotated[CycleIn, Tag("trapezoid")]
+    | Annotated[SegmentsCycleIn, Tag("segments")]
+    | Annotated[ProfileCycleIn, Tag("profile")],
     Discriminator(
         _cycle_kind,
         custom_error_type="cycle_form",
-        custom_error_message="cycle must be the t_1…t_p pattern or a list of segments",
+        custom_error_message="cycle must be the t_1…t_p pattern, a list of segments or a "
+        "profile's id",
     ),
 ]
 

@@ -61,6 +61,49 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
         "for a new quote"
     ),
     "valid_until_past": N_("must be today ({today}) or later"),
+    # Motion profiles (services/profile_csv.py, services/profiles.py)
+    "profile_too_large": N_("line {line}: the file is larger than {max} bytes"),
+    "profile_binary": N_("line {line}: is not text (UTF-8, no control characters)"),
+    "profile_line_too_long": N_("line {line}: is longer than {max} characters"),
+    "profile_empty": N_("line {line}: the file holds no heading line"),
+    "profile_too_many_columns": N_("line {line}: has more than {max} columns"),
+    "profile_column_twice": N_("line {line}, column {column}: '{heading}' names a column twice"),
+    "profile_no_time_column": N_("line {line}: no time column (a heading such as 'Time [s]')"),
+    "profile_no_motion_column": N_(
+        "line {line}: no position or velocity column (a heading such as "
+        "'AngularVelocity [rad/s]' or 'Position [mm]')"
+    ),
+    "profile_unit_missing": N_(
+        "line {line}, column {column}: '{heading}' gives no unit; write it in the heading "
+        "('{heading} [unit]') or choose it on upload"
+    ),
+    "profile_unit_wrong": N_(
+        "line {line}, column {column}: '{unit}' of '{heading}' is no unit of {expected}"
+    ),
+    "profile_unit_kinds": N_(
+        "line {line}, column {column}: '{unit}' of '{heading}' belongs to the other kind of "
+        "axis (rotary: angles, rpm, Nm; linear: mm, mm/s, N)"
+    ),
+    "profile_too_many_samples": N_("line {line}: more than {max} rows of samples"),
+    "profile_too_slow": N_("line {line}: reading took longer than {seconds} s"),
+    "profile_cells": N_(
+        "line {line}, column {column}: {count} cells where the heading has {width}"
+    ),
+    "profile_not_a_number": N_("line {line}, column {column}: '{text}' is not a number"),
+    "profile_not_finite": N_("line {line}, column {column}: '{text}' is not a finite number"),
+    "profile_time_not_increasing": N_(
+        "line {line}, column {column}: the time {time} s does not follow the line before "
+        "it: times must increase"
+    ),
+    "profile_too_few_samples": N_("line {line}: {count} rows of samples; a cycle needs {min}"),
+    "profile_speed_overflow": N_("the positions imply speeds beyond any number"),
+    "profile_out_of_bounds": N_("the profile's segments break a rule at {where}: {rule}"),
+    "profile_above_every_n_max": N_(
+        "the profile reaches {peak_rpm} rpm; no actuator of the catalogue runs faster "
+        "than {max_rpm} rpm (n_max)"
+    ),
+    "unknown_profile": N_("no stored profile '{id}'"),
+    "profile_kind": N_("a {kind} profile does not fit a load of type '{load}'"),
     # IDTA 02021 records (services/aas_import.py)
     "aas_unreadable": N_("is neither an AASX package nor AAS JSON that can be read: {reason}"),
     "aas_no_sizing_submodel": N_("holds no IDTA 02021 sizing submodel (semanticId {semantic_id})"),

@@ -14,6 +14,7 @@ from actuator_selection.db.models.controllers import (
     SensorFittingRow,
     SensorPointRow,
 )
+from actuator_selection.db.models.profiles import ProfileRow
 from actuator_selection.db.models.sales import (
     ApiKeyRow,
     PriceListRow,
@@ -35,6 +36,7 @@ __all__ = [
     "DcBusClassRow",
     "PriceListRow",
     "PriceRow",
+    "ProfileRow",
     "QuoteCounterRow",
     "QuoteItemRow",
     "QuoteRow",
