@@ -74,6 +74,7 @@ bench: install
 	$(BIN)/python -m bench.batch
 	$(BIN)/python -m bench.page
 	$(BIN)/python -m bench.http
+	$(BIN)/python -m bench.profile
 
 ## A longer fuzz run than the suite's (not part of `make test`): schemathesis gives every
 ## operation FUZZ_MAX_EXAMPLES requests and walks the OpenAPI links in stateful chains of

@@ -242,3 +242,13 @@ def test_a_file_not_sent_as_csv_is_a_415(client: TestClient) -> None:
         f"{API}/profiles", content=b"{}", headers={"Content-Type": "application/json"}
     )
     assert response.status_code == 415
+
+
+def test_a_bad_cell_deep_in_a_large_file_is_named_by_its_line(client: TestClient) -> None:
+    rows = [f"{k * 0.001:.3f};{(k % 7):d}" for k in range(60_000)]
+    rows[50_000] = "50.000;nan"
+    content = ("Time [s];Speed [rpm]\n" + "\n".join(rows) + "\n").encode()
+    response = upload(client, content)
+    assert response.status_code == 422, response.text
+    detail = response.json()["detail"][0]
+    assert (detail["code"], detail["loc"]) == ("profile_not_finite", ["body", 50_002, 2])

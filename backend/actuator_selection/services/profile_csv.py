@@ -22,11 +22,12 @@ import codecs
 import math
 import re
 import time
-from array import array
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+import numpy.typing as npt
 from pydantic_core import PydanticCustomError
 
 from actuator_selection.schemas.quantities import (
@@ -143,11 +144,11 @@ class ProfileSamples:
 
     kind: str
     """``rotary`` or ``linear``."""
-    time_s: array[float]
-    motion: array[float]
+    time_s: npt.NDArray[np.float64]
+    motion: npt.NDArray[np.float64]
     from_positions: bool
-    load: array[float] | None
-    acceleration: array[float] | None
+    load: npt.NDArray[np.float64] | None
+    acceleration: npt.NDArray[np.float64] | None
     columns: dict[str, str] = field(default_factory=dict)
     """Each role read, and the heading it was read from."""
     ignored: list[str] = field(default_factory=list)
@@ -161,49 +162,51 @@ def _error(line: int, column: int | None, code: str, **params: object) -> UseCas
     return invalid(loc, code, None, **where, **params)
 
 
-def lines_of(chunks: Iterable[bytes]) -> Iterator[tuple[int, str]]:
-    """The file's lines, numbered from 1, decoded as UTF-8 as the chunks arrive (a
-    leading BOM dropped; LF, CRLF or CR end a line); a 422 for a file past
-    :data:`MAX_PROFILE_BYTES`, binary content or a line past :data:`MAX_LINE_CHARS`."""
+def blocks_of(chunks: Iterable[bytes]) -> Iterator[tuple[int, list[str]]]:
+    """The file's lines in blocks as the chunks arrive: the number of each block's first
+    line (from 1) and its lines, decoded as UTF-8 (a leading BOM dropped; LF, CRLF or CR
+    end a line); a 422 for a file past :data:`MAX_PROFILE_BYTES`, binary content or a line
+    past :data:`MAX_LINE_CHARS`."""
     decoder = codecs.getincrementaldecoder("utf-8")("strict")
     pending = ""
-    number = 0
+    number = 0  # lines handed out so far
     size = 0
-    for chunk in chunks:
-        size += len(chunk)
-        if size > MAX_PROFILE_BYTES:
-            raise _error(number + 1, None, "profile_too_large", max=MAX_PROFILE_BYTES)
+    started = False
+    for chunk in [*chunks, None]:
+        if chunk is not None:
+            size += len(chunk)
+            if size > MAX_PROFILE_BYTES:
+                raise _error(number + 1, None, "profile_too_large", max=MAX_PROFILE_BYTES)
         try:
-            text = decoder.decode(chunk)
+            text = decoder.decode(chunk or b"", final=chunk is None)
         except UnicodeDecodeError as exc:
-            before = pending.count("\n") + chunk[: max(exc.start, 0)].count(b"\n")
+            before = pending.count("\n") + (chunk or b"")[: max(exc.start, 0)].count(b"\n")
             raise _error(number + 1 + before, None, "profile_binary") from None
-        if number == 0 and not pending and text.startswith("\ufeff"):
-            text = text[1:]
-        pending += text
-        parts = pending.splitlines(keepends=True)
-        pending = ""
-        if parts and not parts[-1].endswith("\n"):
-            pending = parts.pop()  # an incomplete line, or a CR whose LF may follow
-        for part in parts:
-            number += 1
-            yield number, _checked(number, part.rstrip("\r\n"))
-        if len(pending) > MAX_LINE_CHARS:
-            raise _error(number + 1, None, "profile_line_too_long", max=MAX_LINE_CHARS)
-    try:
-        pending += decoder.decode(b"", final=True)
-    except UnicodeDecodeError:
-        raise _error(number + 1, None, "profile_binary") from None
-    if pending.rstrip("\r\n"):
-        yield number + 1, _checked(number + 1, pending.rstrip("\r\n"))
-
-
-def _checked(number: int, line: str) -> str:
-    if len(line) > MAX_LINE_CHARS:
-        raise _error(number, None, "profile_line_too_long", max=MAX_LINE_CHARS)
-    if _CONTROL.search(line):
-        raise _error(number, None, "profile_binary")
-    return line
+        if not started and text:
+            text, started = text.removeprefix("\ufeff"), True
+        text = pending + text
+        if chunk is not None and text.endswith("\r"):
+            text, pending = text[:-1], "\r"  # a CR whose LF may follow
+        else:
+            pending = ""
+        if "\r" in text:
+            text = text.replace("\r\n", "\n").replace("\r", "\n")
+        lines = text.split("\n")
+        if chunk is not None:
+            pending = lines.pop() + pending  # the line not yet ended
+            if len(pending) > MAX_LINE_CHARS:
+                raise _error(
+                    number + 1 + len(lines), None, "profile_line_too_long", max=MAX_LINE_CHARS
+                )
+        bad = _CONTROL.search(text)
+        if bad is not None and (chunk is None or bad.start() < len(text) - len(pending)):
+            raise _error(number + 1 + text.count("\n", 0, bad.start()), None, "profile_binary")
+        if lines and max(map(len, lines)) > MAX_LINE_CHARS:
+            longest = next(i for i, line in enumerate(lines) if len(line) > MAX_LINE_CHARS)
+            raise _error(number + 1 + longest, None, "profile_line_too_long", max=MAX_LINE_CHARS)
+        if lines:
+            yield number + 1, lines
+            number += len(lines)
 
 
 def _role(name: str) -> str | None:
@@ -309,79 +312,146 @@ def _number(text: str, comma: bool | None) -> float | None:
     return float(text)
 
 
+def _skipped(line: str) -> bool:
+    """A blank line or a comment (``#``)."""
+    stripped = line.lstrip()
+    return not stripped or stripped.startswith("#")
+
+
+@dataclass(slots=True)
+class _Reader:
+    """The rows after the heading line, block by block (:meth:`block`)."""
+
+    sep: str
+    width: int
+    read: list[tuple[int, str]]
+    scales: dict[str, float]
+    deadline: float
+    comma: bool | None = None
+    rows: int = 0
+    last_time: float = -math.inf
+    values: dict[str, list[Any]] = field(default_factory=dict)
+
+    def block(self, first: int, lines: list[str]) -> None:
+        """Read ``lines`` (the first numbered ``first``): all at once where every line is
+        a row of plain numbers, else line by line, which names the line and cell that
+        breaks a rule."""
+        if time.monotonic() > self.deadline:
+            raise _error(first, None, "profile_too_slow", seconds=READ_SECONDS)
+        text = "\n".join(lines)
+        if self.comma is None and self.sep != ",":  # decided by the first decimal mark
+            self.comma = True if "," in text else False if "." in text else None
+        if not self._fast(first, lines, text):
+            for k, line in enumerate(lines):
+                if not _skipped(line):
+                    self._line(first + k, line)
+
+    def _fast(self, first: int, lines: list[str], text: str) -> bool:
+        if not text.isascii() or "_" in text or "#" in text or "" in lines:
+            return False  # Unicode digits, 1_000, comments, blank lines: line by line
+        if self.comma:
+            text = text.replace(",", ".")
+        cells = text.replace("\n", self.sep).split(self.sep)
+        if len(cells) != self.width * len(lines):
+            return False
+        columns = {}
+        try:
+            for index, role in self.read:
+                columns[role] = np.array(cells[index :: self.width], dtype=np.float64)
+        except ValueError:
+            return False
+        if self.rows + len(lines) > MAX_SAMPLES:
+            return False
+        for _, role in self.read:
+            column = columns[role] * self.scales[role]
+            wrong = ~np.isfinite(column)
+            if role == "time":
+                steps = np.diff(column, prepend=self.last_time)
+                wrong |= ~(steps > 0)
+            if wrong.any():
+                return False  # the line-by-line reading names it
+            columns[role] = column
+        for role, column in columns.items():
+            self.values.setdefault(role, []).append(column)
+        self.rows += len(lines)
+        self.last_time = float(columns["time"][-1])
+        return True
+
+    def _line(self, number: int, text: str) -> None:
+        self.rows += 1
+        if self.rows > MAX_SAMPLES:
+            raise _error(number, None, "profile_too_many_samples", max=MAX_SAMPLES)
+        row = text.split(self.sep)
+        if len(row) == self.width + 1 and not row[-1].strip():
+            row.pop()  # a separator closing the row
+        if len(row) != self.width:
+            column = min(len(row), self.width) + 1
+            raise _error(number, column, "profile_cells", count=len(row), width=self.width)
+        for index, role in self.read:
+            value = _number(row[index], self.comma)
+            cell = row[index].strip()[:40]
+            if value is None:
+                finite = cell.lower().lstrip("+-") not in {"nan", "inf", "infinity"}
+                code = "profile_not_a_number" if finite else "profile_not_finite"
+                raise _error(number, index + 1, code, text=cell)
+            value *= self.scales[role]
+            if not math.isfinite(value):
+                raise _error(number, index + 1, "profile_not_finite", text=cell)
+            if role == "time":
+                if not value > self.last_time:
+                    raise _error(number, index + 1, "profile_time_not_increasing", time=value)
+                self.last_time = value
+            self.values.setdefault(role, []).append(np.array([value]))
+
+    def column(self, role: str) -> npt.NDArray[np.float64] | None:
+        parts = self.values.get(role)
+        return None if parts is None else np.concatenate(parts)
+
+
 def read_profile(chunks: Iterable[bytes], units: ColumnUnits) -> ProfileSamples:
     """The samples of a profile file (module docstring)."""
     deadline = time.monotonic() + READ_SECONDS
-    lines = lines_of(chunks)
-    header_line, header = 0, ""
-    for number, text in lines:
-        if text.strip() and not text.lstrip().startswith("#"):
-            header_line, header = number, text
-            break
-    if not header:
-        raise _error(max(header_line, 1), None, "profile_empty")
-    sep = ";" if ";" in header else "\t" if "\t" in header else ","
-    cells = header.split(sep)
-    columns, ignored = _columns(header_line, cells, units)
-    kind, scales = _scales(header_line, columns)
-    width = len(cells)
-    read = [(c.index, c.role) for c in columns]
-    values: dict[str, array[float]] = {c.role: array("d") for c in columns}
-    comma: bool | None = None if sep != "," else False
-    last_time = -math.inf
-    rows = 0
-    for number, text in lines:
-        if not text.strip() or text.lstrip().startswith("#"):
-            continue
-        rows += 1
-        if rows > MAX_SAMPLES:
-            raise _error(number, None, "profile_too_many_samples", max=MAX_SAMPLES)
-        if rows % 4096 == 0 and time.monotonic() > deadline:
-            raise _error(number, None, "profile_too_slow", seconds=READ_SECONDS)
-        row = text.split(sep)
-        if len(row) == width + 1 and not row[-1].strip():
-            row.pop()  # a separator closing the row
-        if len(row) != width:
-            raise _error(
-                number, min(len(row), width) + 1, "profile_cells", count=len(row), width=width
+    reader: _Reader | None = None
+    header_line = 1
+    columns: list[_Column] = []
+    ignored: list[str] = []
+    kind = "rotary"
+    for first, lines in blocks_of(chunks):
+        if reader is None:
+            start = next((k for k, line in enumerate(lines) if not _skipped(line)), None)
+            if start is None:
+                continue
+            header_line, header = first + start, lines[start]
+            sep = ";" if ";" in header else "\t" if "\t" in header else ","
+            cells = header.split(sep)
+            columns, ignored = _columns(header_line, cells, units)
+            kind, scales = _scales(header_line, columns)
+            read = [(c.index, c.role) for c in columns]
+            reader = _Reader(
+                sep, len(cells), read, scales, deadline, comma=False if sep == "," else None
             )
-        if comma is None:  # decided by the first row with a decimal mark
-            if any("," in row[i] for i, _ in read):
-                comma = True
-            elif any("." in row[i] for i, _ in read):
-                comma = False
-        for index, role in read:
-            value = _number(row[index], comma)
-            if value is None:
-                cell = row[index].strip()
-                code = (
-                    "profile_not_finite"
-                    if cell.lower().lstrip("+-") in {"nan", "inf", "infinity"}
-                    else "profile_not_a_number"
-                )
-                raise _error(number, index + 1, code, text=cell[:40])
-            value *= scales[role]
-            if not math.isfinite(value):
-                raise _error(number, index + 1, "profile_not_finite", text=row[index].strip()[:40])
-            if role == "time":
-                if not value > last_time:
-                    raise _error(number, index + 1, "profile_time_not_increasing", time=value)
-                last_time = value
-            values[role].append(value)
-    if rows < 3:
-        raise _error(header_line, None, "profile_too_few_samples", count=rows, min=3)
-    motion_role = "velocity" if "velocity" in values else "position"
-    motion = values[motion_role]
-    if motion_role == "position" and kind == "rotary":
-        motion = array("d", (x / 360.0 for x in motion))  # degrees → revolutions
+            first, lines = header_line + 1, lines[start + 1 :]
+        reader.block(first, lines)
+    if reader is None:
+        raise _error(1, None, "profile_empty")
+    if reader.rows < 3:
+        raise _error(header_line, None, "profile_too_few_samples", count=reader.rows, min=3)
+    time_s = reader.column("time")
+    velocity = reader.column("velocity")
+    from_positions = velocity is None
+    motion = velocity if velocity is not None else reader.column("position")
+    assert time_s is not None
+    assert motion is not None
+    if from_positions and kind == "rotary":
+        motion = motion / 360.0  # degrees → revolutions
     return ProfileSamples(
         kind=kind,
-        time_s=values["time"],
+        time_s=time_s,
         motion=motion,
-        from_positions=motion_role == "position",
-        load=values.get("load"),
-        acceleration=values.get("acceleration"),
+        from_positions=from_positions,
+        load=reader.column("load"),
+        acceleration=reader.column("acceleration"),
         columns={c.role: c.heading for c in columns},
         ignored=ignored,
-        lines=rows,
+        lines=reader.rows,
     )

@@ -87,9 +87,7 @@ def read_and_fit(
 ) -> dict[str, Any]:
     """The answer of ``POST /profiles`` for the file ``chunks`` (without id and time)."""
     samples = read_profile(chunks, units)
-    time_s = np.frombuffer(samples.time_s, dtype=np.float64)
-    motion = np.frombuffer(samples.motion, dtype=np.float64)
-    load = None if samples.load is None else np.frombuffer(samples.load, dtype=np.float64)
+    time_s, motion, load = samples.time_s, samples.motion, samples.load
     speed = speeds_from_positions(time_s, motion) if samples.from_positions else motion
     if samples.from_positions and samples.kind == "rotary":
         speed = speed * 60.0  # rev/s → rpm
