@@ -79,11 +79,15 @@ export function createClient({ base = API, headers = () => ({}), onError = null 
   /**
    * @param {string} method
    * @param {string} path
-   * @param {{body?: unknown, headers?: Record<string, string>}} [options]
+   * @param {{body?: unknown, file?: Blob, headers?: Record<string, string>}} [options]
    */
-  async function request(method, path, { body, headers: extra = {} } = {}) {
+  async function request(method, path, { body, file, headers: extra = {} } = {}) {
     const init = { method, headers: { Accept: "application/json", ...headers(), ...extra } };
-    if (body !== undefined) {
+    if (file !== undefined) {
+      // a file as the body itself, with its media type (api/uploads.py: no multipart)
+      init.headers["Content-Type"] ??= file.type || "application/octet-stream";
+      init.body = file;
+    } else if (body !== undefined) {
       init.headers["Content-Type"] = "application/json";
       init.body = JSON.stringify(body);
     }
@@ -117,6 +121,9 @@ export function createClient({ base = API, headers = () => ({}), onError = null 
     request,
     get: (path, options) => request("GET", path, options),
     post: (path, body, options = {}) => request("POST", path, { ...options, body }),
+    /** POST a file (``Blob``) as the request body; ``type`` overrides its media type. */
+    upload: (path, file, type = undefined) =>
+      request("POST", path, { file, headers: type ? { "Content-Type": type } : {} }),
   };
 }
 

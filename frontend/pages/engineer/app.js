@@ -9,6 +9,7 @@ import { LANGS, PLOTLY_LOCALES, applyStaticTexts, initialLang, rememberLang, tra
 import { fieldRefusal, isNumberField, numberText, readField, showReading, showReadings } from "../../lib/numbers.js";
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
+import { initProfile } from "./profile.js";
 import { NARROW_CHART_PX, cycleCaption, cycleFigure, diagramCaption, fitDiagram } from "./figures.js";
 import {
   LOAD_KINDS,
@@ -1143,6 +1144,7 @@ function init() {
     }
   });
   $("#example").addEventListener("click", fillExample);
+  initProfile(); // the profile and AAS uploads on the form
   $("#results").addEventListener("click", (event) => {
     if (event.target instanceof Element && event.target.closest("#limits-button")) showLimits();
   });

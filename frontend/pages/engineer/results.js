@@ -911,6 +911,8 @@ export function renderReports(sel, lang) {
     h("a", { id: "report-pdf", href: `${base}/report.pdf`, download: "" }, t("reports.pdf")),
     " · ",
     h("a", { id: "report-csv", href: `${base}/report.csv`, download: "" }, t("reports.csv")),
+    " · ",
+    h("a", { id: "report-aas", href: `${base}/aas.aasx`, download: "" }, t("reports.aas")),
   );
 }
 
