@@ -111,15 +111,21 @@ class Check:
 
     @property
     def utilisation(self) -> float | None:
-        """value/limit: how much of the limit the value uses (> 1 when it is exceeded)."""
-        if self.value is None or self.limit is None or self.limit <= 0:
-            return None
-        return self.value / self.limit
+        """value/limit: how much of the limit the value uses (:func:`utilisation`)."""
+        return utilisation(self.value, self.limit)
 
     @property
     def overload(self) -> float:
         """How far a failed check is over its limit (:func:`overload`); 0 unless failed."""
         return overload(self.status, self.value, self.limit)
+
+
+def utilisation(value: float | None, limit: float | None) -> float | None:
+    """value/limit: how much of the limit the value uses (> 1 when it is exceeded); None
+    without both or where the limit is not positive."""
+    if value is None or limit is None or limit <= 0:
+        return None
+    return value / limit
 
 
 class _Words(Deferred):

@@ -21,8 +21,11 @@ of the Eclipse BaSyx Python SDK (``basyx.aas.model``) and its JSON and AASX writ
 * ``SizingResult``: the overall system's inertias and their ratio, the chosen candidate
   (the first of the ranking unless the caller names one) as main component with its
   utilisations (value/limit of its checks), RMS torque and the output bearing's L_10 life,
-  the best controller of Table 521.1 for it as a second main component, and every check
-  of the candidate that did not pass or passed only approximately as a message.
+  the best controller of Table 521.1 for it as a second main component, every other
+  suitable candidate as a further main component (its utilisations from the stored
+  checks), and every check of the chosen candidate that did not pass or passed only
+  approximately as a message. The emergency stop and the energy per cycle are written
+  without a value ("no data": the chapter sizes neither, :data:`NO_DATA`).
 
 The template's idShorts are kept as it spells them (``RotraryTable``,
 ``InternalMomentOfIntertia``, ``EnergyConsumtionPerCycle``). Where the template types a
@@ -45,11 +48,12 @@ from basyx.aas.adapter.json import json_serialization
 from sqlalchemy.orm import Session
 
 import actuator_selection
+from actuator_selection.core.checks import utilisation
 from actuator_selection.core.motion import Piece, pieces_of
 from actuator_selection.core.units import rpm_to_rad_per_s
 from actuator_selection.db.repositories import SelectionRepository
 from actuator_selection.schemas.checks import CheckOut
-from actuator_selection.schemas.quotes import StoredSelection
+from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection
 from actuator_selection.schemas.selections import SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.errors import invalid, not_found
@@ -307,10 +311,6 @@ def _check(detail_checks: list[CheckOut], name: str) -> CheckOut | None:
     return next((c for c in detail_checks if c.name == name), None)
 
 
-def _percent(check: CheckOut | None) -> float | None:
-    return None if check is None or check.utilisation is None else 100 * check.utilisation
-
-
 def _service_life_h(checks: list[CheckOut]) -> float | None:
     """The output bearing's L_10 [h] as the ``bearing_life`` check's message gives it."""
     check = _check(checks, "bearing_life")
@@ -331,46 +331,110 @@ class _Chosen:
     detail: Any
 
 
-def _main_components(chosen: _Chosen) -> list[model.Entity]:
-    d = chosen.detail
-    checks = chosen.checks
-    utilisation: list[model.Property] = []
-    for name, percent, absolute in _UTILISATIONS:
-        check = _check(checks, name)
-        utilisation += _real(percent, _percent(check))
-        if absolute is not None and check is not None:
-            utilisation += _real(absolute, check.value)
-    actuator = _entity(
-        "MainComponent01",
+def _actuator(
+    id_short: str, family: str, model_name: str, statements: Iterable[model.SubmodelElement]
+) -> model.Entity:
+    return _entity(
+        id_short,
         [
             _text("MainComponentType", "Servo actuator (motor and gear)"),
             _text("ManufacturerName", ACTUATOR_MANUFACTURER),
-            _text("ManufacturerArticleNumber", d.model),
-            _words("ManufacturerProductDesignation", {"en": f"{d.family} {d.model}"}),
-            _text("ManufacturerOrderCode", d.model),
-            *utilisation,
+            _text("ManufacturerArticleNumber", model_name),
+            _words("ManufacturerProductDesignation", {"en": f"{family} {model_name}"}),
+            _text("ManufacturerOrderCode", model_name),
+            *statements,
+        ],
+        semantic="MainComponent",
+    )
+
+
+def _utilisations(checks: Iterable[Any]) -> list[model.Property]:
+    """The template's utilisations of the checks (:data:`_UTILISATIONS`): 100·value/limit
+    and the value compared, where the check has them."""
+    by_name = {c.name: c for c in checks}
+    out: list[model.Property] = []
+    for name, percent, absolute in _UTILISATIONS:
+        check = by_name.get(name)
+        if check is None:
+            continue
+        share = utilisation(check.value, check.limit)
+        out += _real(percent, None if share is None else 100 * share)
+        if absolute is not None:
+            out += _real(absolute, check.value)
+    return out
+
+
+def _main_components(chosen: _Chosen, others: Iterable[StoredCandidate]) -> list[model.Entity]:
+    """The chosen actuator (01) with its controller (02), then every other suitable
+    candidate of the selection (03, …) with the utilisations its stored checks give."""
+    d = chosen.detail
+    checks = chosen.checks
+    actuator = _actuator(
+        "MainComponent01",
+        d.family,
+        d.model,
+        [
+            *_utilisations(checks),
             *_real("CalculatedServiceLife", _service_life_h(checks)),
             *_real("MassInertiaRatio", getattr(_check(checks, "inertia_ratio"), "value", None)),
             *_real("RmsOfMotorTorque", d.rms_torque_nm),
         ],
-        semantic="MainComponent",
     )
+    components = [actuator]
     controllers = [c for c in d.controllers if c.level != "excluded"]
-    if not controllers:
-        return [actuator]
-    c = controllers[0]
-    article = c.type if c.variant is None else f"{c.type} {c.variant}"
-    controller = _entity(
-        "MainComponent02",
-        [
-            _text("MainComponentType", "Drive controller"),
-            _text("ManufacturerName", c.manufacturer),
-            _text("ManufacturerArticleNumber", article),
-            _text("ManufacturerOrderCode", article),
-        ],
-        semantic="MainComponent",
+    if controllers:
+        c = controllers[0]
+        article = c.type if c.variant is None else f"{c.type} {c.variant}"
+        components.append(
+            _entity(
+                "MainComponent02",
+                [
+                    _text("MainComponentType", "Drive controller"),
+                    _text("ManufacturerName", c.manufacturer),
+                    _text("ManufacturerArticleNumber", article),
+                    _text("ManufacturerOrderCode", article),
+                ],
+                semantic="MainComponent",
+            )
+        )
+    for candidate in others:
+        ratio = next((c.value for c in candidate.checks if c.name == "inertia_ratio"), None)
+        components.append(
+            _actuator(
+                f"MainComponent{len(components) + 1:02d}",
+                candidate.family,
+                candidate.model,
+                [
+                    *_utilisations(candidate.checks),
+                    *_real("MassInertiaRatio", ratio),
+                    *_real("RmsOfMotorTorque", candidate.rms_torque_nm),
+                ],
+            )
+        )
+    return components
+
+
+NO_DATA = (
+    "DecelerationForEmergencyStop",
+    "CurrentForEmergencyStop",
+    "DisplacementDuringEmergencyStop",
+    "EnergyConsumtionPerCycle",
+)
+"""Elements of the overall system the service has no number for: the chapter sizes no
+emergency stop (no stopping deceleration, current or distance) and no energy balance (no
+losses, no regeneration). They are written without a value, "no data" (docs/aas.md)."""
+
+
+def _no_data(id_short: str) -> model.Property:
+    return model.Property(
+        id_short,
+        value_type=model.datatypes.Double,
+        value=None,
+        semantic_id=semantic_id(id_short),
+        description=model.MultiLanguageTextType(
+            {"en": "no data: not computed by this sizing", "de": "keine Daten: nicht berechnet"}
+        ),
     )
-    return [actuator, controller]
 
 
 def _messages(chosen: _Chosen) -> model.SubmodelElementCollection:
@@ -510,6 +574,7 @@ def sizing_record(
             *_real(
                 "MassInertiaRatio", getattr(_check(chosen.checks, "inertia_ratio"), "value", None)
             ),
+            *[_no_data(name) for name in NO_DATA],
         ],
     )
     verdicts = {lang: d.reasons for lang, d in details.items()}
@@ -517,7 +582,14 @@ def sizing_record(
         "SizingResult",
         [
             overall,
-            *_main_components(chosen),
+            *_main_components(
+                chosen,
+                [
+                    c
+                    for c in stored.candidates
+                    if c.verdict == "suitable" and c.model != chosen_model
+                ],
+            ),
             _messages(chosen),
             _words(
                 "TextStatement",

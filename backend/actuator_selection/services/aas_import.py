@@ -8,7 +8,12 @@ answer is the one exported. Any other record describes one axis by its
 (``MomentOfInertiaOfLoad``), T_L (``FrictionTorque``) and T_G (``LoadTorque``) at the
 actuator output, and its motion file (``MotionSectionFile``, IDTA 02021 §2.2.2: ``;``
 between columns, headings ``idShort [unit]``) the cycle: each pair of rows at different
-times is a segment at constant acceleration from the one speed to the other.
+times is a segment at constant acceleration from the one speed to the other. A record
+whose first section is a ``LinearSection`` describes a linear axis: its ``LoadMass``,
+``FrictionForce``, ``CounterMass`` and ``LoadSideForce`` (the process force of every
+segment) through the record's ``TransformationMechanism`` (``SpindleDrive``,
+``BeltDrive`` or ``RackDrive``: ``FeedConstant``, ``Efficiency``, ``InclinationAngle``,
+``FrictionCoefficient``), and its motion file's ``LinearVelocity [m/s]`` the cycle.
 """
 
 from __future__ import annotations
@@ -34,6 +39,7 @@ Store = model.DictIdentifiableStore[model.Identifiable]
 _SECTION = ("ApplicationRequirements", "MotionPattern", "MotionPatternSections")
 _VELOCITY_HEADER = "AngularVelocity [rad/s]"
 _TIME_HEADER = "Time [s]"
+_LINEAR_VELOCITY_HEADER = "LinearVelocity [m/s]"
 
 
 def _unreadable(reason: str) -> UseCaseError:
@@ -174,13 +180,14 @@ def _real(section: model.Referable, id_short: str) -> float | None:
     return value
 
 
-def _cycle(csv_bytes: bytes, name: str) -> dict[str, Any]:
-    """The segments of the motion file: one per pair of rows at different times."""
+def _cycle(csv_bytes: bytes, name: str, heading: str, scale: float) -> dict[str, Any]:
+    """The segments of the motion file: one per pair of rows at different times, the speed
+    from the column ``heading`` times ``scale`` (rad/s → rpm, m/s → mm/s)."""
     try:
         rows = list(csv.reader(io.StringIO(csv_bytes.decode("utf-8-sig")), delimiter=";"))
         header = [h.strip() for h in rows[0]]
-        t_col, w_col = header.index(_TIME_HEADER), header.index(_VELOCITY_HEADER)
-        points = [(float(r[t_col]), float(r[w_col]) * 60 / (2 * math.pi)) for r in rows[1:] if r]
+        t_col, w_col = header.index(_TIME_HEADER), header.index(heading)
+        points = [(float(r[t_col]), float(r[w_col]) * scale) for r in rows[1:] if r]
     except (ValueError, IndexError, UnicodeDecodeError) as exc:
         raise invalid(
             ["body"], "aas_motion_file", path=name, reason=f"{type(exc).__name__}: {exc}"[:300]
@@ -195,6 +202,79 @@ def _cycle(csv_bytes: bytes, name: str) -> dict[str, Any]:
     return {"start_speed": points[0][1], "segments": segments}
 
 
+def _motion_file(
+    section: model.SubmodelElement, files: aasx.DictSupplementaryFileContainer
+) -> tuple[bytes, str]:
+    where = section.id_short
+    motion = _child(section, "MotionSectionFile")
+    if not isinstance(motion, model.File) or not motion.value:
+        raise invalid(["body"], "aas_missing_element", path=f"{where}/MotionSectionFile")
+    csv_bytes = _file(files, motion.value)
+    if csv_bytes is None:
+        raise invalid(["body"], "aas_motion_file", path=motion.value, reason="not in the package")
+    return csv_bytes, motion.value
+
+
+def _required(section: model.Referable, id_short: str) -> float:
+    value = _real(section, id_short)
+    if value is None:
+        raise invalid(["body"], "aas_missing_element", path=f"{section.id_short}/{id_short}")
+    return value
+
+
+_LINEAR_MECHANISMS = {
+    # the template's entity: (the request's type, its length field, FeedConstant [m/rev] → it)
+    "SpindleDrive": ("ball_screw_incline", "lead_mm", 1000.0),
+    "BeltDrive": ("belt", "pulley_diameter_mm", 1000.0 / math.pi),
+    "RackDrive": ("rack_pinion", "pinion_diameter_mm", 1000.0 / math.pi),
+}
+"""The transformation mechanisms a linear section is read through: a spindle's feed
+constant is its lead, a belt's or a rack's is π·D (IDTA 02021, ``FeedConstant``)."""
+
+
+def _linear_request(
+    submodel: model.Submodel,
+    section: model.SubmodelElement,
+    files: aasx.DictSupplementaryFileContainer,
+) -> dict[str, Any]:
+    """A linear axis: the section's mass and forces through the record's transformation
+    mechanism, the motion file's ``LinearVelocity`` [m/s] as the cycle in mm/s."""
+    mechanisms = _child(submodel, "TransformationMechanism")
+    entity = next(
+        (
+            e
+            for e in ([] if mechanisms is None else _children(mechanisms))
+            if e.id_short in _LINEAR_MECHANISMS
+        ),
+        None,
+    )
+    if entity is None:
+        raise invalid(
+            ["body"],
+            "aas_missing_element",
+            path="TransformationMechanism/" + " | ".join(_LINEAR_MECHANISMS),
+        )
+    kind, length_field, per_feed = _LINEAR_MECHANISMS[str(entity.id_short)]
+    incline = _real(entity, "InclinationAngle")
+    mechanism: dict[str, Any] = {
+        "type": kind,
+        "mass_kg": _required(section, "LoadMass"),
+        length_field: _required(entity, "FeedConstant") * per_feed,
+        "efficiency": _required(entity, "Efficiency"),
+        "friction_coefficient": _real(entity, "FrictionCoefficient") or 0.0,
+        "incline_deg": 0.0 if incline is None else math.degrees(incline),
+        "counterweight_kg": _real(section, "CounterMass") or 0.0,
+        "friction_force_n": _real(section, "FrictionForce") or 0.0,
+    }
+    csv_bytes, name = _motion_file(section, files)
+    cycle = _cycle(csv_bytes, name, _LINEAR_VELOCITY_HEADER, 1000.0)
+    process = _real(section, "LoadSideForce")
+    if process:
+        for segment in cycle["segments"]:
+            segment["process_load"] = process
+    return {"load": mechanism, "cycle": cycle}
+
+
 def request_from_record(content: bytes) -> dict[str, Any]:
     """The selection request of an IDTA 02021 record (module docstring); 422 naming what
     the record lacks."""
@@ -203,19 +283,22 @@ def request_from_record(content: bytes) -> dict[str, Any]:
     native = _native_request(submodel, files)
     if native is not None:
         return native
-    section = _path(submodel, (*_SECTION, "RotativeSection"))
-    motion = _child(section, "MotionSectionFile")
-    if not isinstance(motion, model.File) or not motion.value:
-        raise invalid(["body"], "aas_missing_element", path="RotativeSection/MotionSectionFile")
-    csv_bytes = _file(files, motion.value)
-    if csv_bytes is None:
-        raise invalid(["body"], "aas_motion_file", path=motion.value, reason="not in the package")
-    inertia = _real(section, "MomentOfInertiaOfLoad")
-    if inertia is None:
-        raise invalid(["body"], "aas_missing_element", path="RotativeSection/MomentOfInertiaOfLoad")
+    sections = _path(submodel, _SECTION)
+    section = _child(sections, "RotativeSection")
+    if section is None:
+        linear = _child(sections, "LinearSection")
+        if linear is None:
+            raise invalid(
+                ["body"],
+                "aas_missing_element",
+                path="/".join((*_SECTION, "RotativeSection | LinearSection")),
+            )
+        return _linear_request(submodel, linear, files)
+    csv_bytes, name = _motion_file(section, files)
+    inertia = _required(section, "MomentOfInertiaOfLoad")
     load: dict[str, Any] = {
         "torque_nm": _real(section, "FrictionTorque") or 0.0,
         "inertia_kgm2": inertia,
         "gravity_torque_nm": _real(section, "LoadTorque") or 0.0,
     }
-    return {"load": load, "cycle": _cycle(csv_bytes, motion.value)}
+    return {"load": load, "cycle": _cycle(csv_bytes, name, _VELOCITY_HEADER, 60 / (2 * math.pi))}
