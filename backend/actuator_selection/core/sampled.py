@@ -193,11 +193,11 @@ def _worst(
         deviation = np.abs(load[i : j + 1] - _segment_load(time_s, load, i, j))
         dev_l = float(np.max(deviation))
         score = np.maximum(score, deviation / load_tol)
-    inner = score[1:-1]
-    if not inner.size:
+    if score.size < 3:  # one interval: nothing to split
         return 0.0, i, float(np.max(dev_v)), dev_l
-    k = int(np.argmax(inner))
-    return float(inner[k]), i + 1 + k, float(np.max(dev_v)), dev_l
+    # the worst sample, or the one beside it where the worst is an end (a load's step)
+    k = min(max(int(np.argmax(score)), 1), score.size - 2)
+    return float(np.max(score)), i + k, float(np.max(dev_v)), dev_l
 
 
 def fit_segments(
@@ -283,7 +283,7 @@ def fit_segments(
         fitted=fitted,
         deviation=deviation,
         load_deviation=load_deviation,
-        exact=not heap,
+        exact=not heap and deviation <= speed_tol and load_deviation <= load_tol,
     )
 
 
