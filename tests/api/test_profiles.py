@@ -102,6 +102,17 @@ def test_the_profile_can_be_read_back(client: TestClient) -> None:
     assert client.get(f"{API}/profiles/nope").status_code == 404
 
 
+def test_the_limits_of_a_case_take_a_profile(client: TestClient) -> None:
+    profile = upload(client, idta_file(0.01)).json()
+    body = {
+        "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
+        "cycle": {"profile_id": profile["id"]},
+        "model": "FHA-25C-50-L",
+    }
+    response = client.post(f"{API}/selections/limits", json=body)
+    assert response.status_code == 200, response.text
+
+
 def test_a_batch_names_one_profile_per_case(client: TestClient) -> None:
     first = upload(client, idta_file(0.01)).json()
     second = upload(client, b"Time [s];Speed [rpm]\n0;0\n0.2;30\n0.6;30\n0.8;0\n2;0\n").json()

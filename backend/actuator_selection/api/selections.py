@@ -150,6 +150,7 @@ def solve_selection_limits(
     """How far the load case may go for one actuator: the shortest pause, the shortest
     acceleration time (t_1…t_p cycle) and the largest load inertia with no check failing,
     each with the check that fails just beyond it (bisection over the flowchart)."""
+    (body,) = with_profiles(session, [body], [["body"]])
     return solve_limits(body, catalogue_snapshot(request, session), _localize(request, response))
 
 
