@@ -4,6 +4,8 @@ batch, and hostile files answer 422 naming the line and column."""
 
 from __future__ import annotations
 
+import io
+import zipfile
 from typing import Any
 
 import numpy as np
@@ -92,6 +94,27 @@ def test_a_plain_csv_with_decimal_comma_and_units_chosen_on_upload(client: TestC
     assert [(s["speed"], s["process_load"]) for s in segments] == [(40, 2), (40, 2), (0, 2), (0, 2)]
     assert [s["duration_s"] for s in segments] == pytest.approx([0.1, 0.1, 0.1, 1.0])
     assert profile["figures"]["samples"]["duty_cycle_percent"] == pytest.approx(300 / 13)
+
+
+def test_the_motion_file_of_an_exported_record_uploads(client: TestClient) -> None:
+    """The IDTA 02021 motion file this service writes (rows repeated at the time where the
+    acceleration jumps) is a profile: the same cycle, the same figures."""
+    chapter = chapter_answer(client)
+    package = client.get(f"{API}/selections/{chapter['id']}/aas.aasx").content
+    with zipfile.ZipFile(io.BytesIO(package)) as aasx:
+        motion = aasx.read("aasx/files/MotionSection1.csv")
+    response = upload(client, motion)
+    assert response.status_code == 201, response.text
+    profile = response.json()
+    assert profile["fit"]["exact"]
+    figures = profile["figures"]["segments"]
+    assert figures["mean_speed"] == pytest.approx(chapter["mean_speed_rpm"], rel=1e-9)
+    assert figures["duty_cycle_percent"] == pytest.approx(chapter["duty_cycle_percent"], rel=1e-9)
+    # a repeated time with another speed is a jump, and refused
+    jump = b"Time [s];AngularVelocity [rad/s]\n0;0\n0.1;1\n0.1;2\n0.2;0\n"
+    refused = upload(client, jump)
+    assert refused.status_code == 422
+    assert refused.json()["detail"][0]["loc"] == ["body", 4, 1]
 
 
 def test_the_profile_can_be_read_back(client: TestClient) -> None:

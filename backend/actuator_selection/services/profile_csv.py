@@ -387,6 +387,7 @@ class _Reader:
         if len(row) != self.width:
             column = min(len(row), self.width) + 1
             raise _error(number, column, "profile_cells", count=len(row), width=self.width)
+        values: dict[str, float] = {}
         for index, role in self.read:
             value = _number(row[index], self.comma)
             cell = row[index].strip()[:40]
@@ -397,11 +398,30 @@ class _Reader:
             value *= self.scales[role]
             if not math.isfinite(value):
                 raise _error(number, index + 1, "profile_not_finite", text=cell)
-            if role == "time":
-                if not value > self.last_time:
-                    raise _error(number, index + 1, "profile_time_not_increasing", time=value)
-                self.last_time = value
+            values[role] = value
+        time_s = values["time"]
+        if not time_s > self.last_time:
+            # A row at the time of the one before with the same motion: where the
+            # acceleration jumps, IDTA 02021 motion files (this service's too) repeat
+            # the time; the second row says nothing new and is left out.
+            if time_s == self.last_time and self._repeats(values):
+                self.rows -= 1
+                return
+            column = self._index("time") + 1
+            raise _error(number, column, "profile_time_not_increasing", time=time_s)
+        self.last_time = time_s
+        for role, value in values.items():
             self.values.setdefault(role, []).append(np.array([value]))
+
+    def _index(self, role: str) -> int:
+        return next(index for index, r in self.read if r == role)
+
+    def _repeats(self, values: dict[str, float]) -> bool:
+        """Whether ``values`` repeat the last row's speed (or position)."""
+        for role in ("velocity", "position"):
+            if role in values:
+                return bool(values[role] == self.values[role][-1][-1])
+        return False
 
     def column(self, role: str) -> npt.NDArray[np.float64] | None:
         parts = self.values.get(role)
