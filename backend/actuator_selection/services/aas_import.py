@@ -18,7 +18,6 @@ segment) through the record's ``TransformationMechanism`` (``SpindleDrive``,
 
 from __future__ import annotations
 
-import csv
 import io
 import itertools
 import json
@@ -33,13 +32,11 @@ from basyx.aas.adapter.json import read_aas_json_file
 
 from actuator_selection.services.aas import REQUEST_FILE, SUBMODEL_SEMANTIC_ID
 from actuator_selection.services.errors import UseCaseError, invalid
+from actuator_selection.services.profile_csv import ColumnUnits, read_profile
 
 Store = model.DictIdentifiableStore[model.Identifiable]
 
 _SECTION = ("ApplicationRequirements", "MotionPattern", "MotionPatternSections")
-_VELOCITY_HEADER = "AngularVelocity [rad/s]"
-_TIME_HEADER = "Time [s]"
-_LINEAR_VELOCITY_HEADER = "LinearVelocity [m/s]"
 
 
 def _unreadable(reason: str) -> UseCaseError:
@@ -180,26 +177,24 @@ def _real(section: model.Referable, id_short: str) -> float | None:
     return value
 
 
-def _cycle(csv_bytes: bytes, name: str, heading: str, scale: float) -> dict[str, Any]:
-    """The segments of the motion file: one per pair of rows at different times, the speed
-    from the column ``heading`` times ``scale`` (rad/s → rpm, m/s → mm/s)."""
+def _cycle(csv_bytes: bytes, name: str, kind: str) -> dict[str, Any]:
+    """The segments of the motion file, read as a measured profile is read
+    (``services/profile_csv.py``: the headings' units, a time repeated where the
+    acceleration jumps): one segment per pair of rows, at constant acceleration from the
+    one speed to the other (rpm on a rotary axis, mm/s on a linear one)."""
     try:
-        rows = list(csv.reader(io.StringIO(csv_bytes.decode("utf-8-sig")), delimiter=";"))
-        header = [h.strip() for h in rows[0]]
-        t_col, w_col = header.index(_TIME_HEADER), header.index(heading)
-        points = [(float(r[t_col]), float(r[w_col]) * scale) for r in rows[1:] if r]
-    except (ValueError, IndexError, UnicodeDecodeError) as exc:
-        raise invalid(
-            ["body"], "aas_motion_file", path=name, reason=f"{type(exc).__name__}: {exc}"[:300]
-        ) from None
+        samples = read_profile([csv_bytes], ColumnUnits())
+    except UseCaseError as exc:
+        raise invalid(["body"], "aas_motion_file", path=name, reason=exc.message[:300]) from None
+    if samples.from_positions or samples.kind != kind:
+        reason = f"no {'angular' if kind == 'rotary' else 'linear'} velocity column"
+        raise invalid(["body"], "aas_motion_file", path=name, reason=reason)
+    times, speeds = samples.time_s.tolist(), samples.motion.tolist()
     segments = [
         {"speed": n1, "duration_s": t1 - t0}
-        for (t0, _), (t1, n1) in itertools.pairwise(points)
-        if t1 > t0
+        for (t0, t1), n1 in zip(itertools.pairwise(times), speeds[1:], strict=True)
     ]
-    if not points or not segments:
-        raise invalid(["body"], "aas_motion_file", path=name, reason="no two rows in time")
-    return {"start_speed": points[0][1], "segments": segments}
+    return {"start_speed": speeds[0], "segments": segments}
 
 
 def _motion_file(
@@ -267,7 +262,7 @@ def _linear_request(
         "friction_force_n": _real(section, "FrictionForce") or 0.0,
     }
     csv_bytes, name = _motion_file(section, files)
-    cycle = _cycle(csv_bytes, name, _LINEAR_VELOCITY_HEADER, 1000.0)
+    cycle = _cycle(csv_bytes, name, "linear")
     process = _real(section, "LoadSideForce")
     if process:
         for segment in cycle["segments"]:
@@ -301,4 +296,4 @@ def request_from_record(content: bytes) -> dict[str, Any]:
         "inertia_kgm2": inertia,
         "gravity_torque_nm": _real(section, "LoadTorque") or 0.0,
     }
-    return {"load": load, "cycle": _cycle(csv_bytes, name, _VELOCITY_HEADER, 60 / (2 * math.pi))}
+    return {"load": load, "cycle": _cycle(csv_bytes, name, "rotary")}
