@@ -510,6 +510,46 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/profiles": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Create Profile
+         * @description Read a measured motion profile (CSV) into the cycle the flowchart sizes, and store it.
+         */
+        post: operations["create_profile"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/profiles/{profile_id}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Profile
+         * @description A stored profile, as its upload answered it.
+         */
+        get: operations["get_profile"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/tools/controller-voltage": {
         parameters: {
             query?: never;
@@ -1373,7 +1413,7 @@ export interface components {
             /** Load */
             load: components["schemas"]["DirectLoad"] | components["schemas"]["BallScrewLoad"] | components["schemas"]["RotaryTableLoad"] | components["schemas"]["BallScrewInclineIn"] | components["schemas"]["BeltIn"] | components["schemas"]["RackPinionIn"] | components["schemas"]["ConveyorIn"] | components["schemas"]["LiftIn"] | components["schemas"]["RotaryIn"];
             /** Cycle */
-            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"];
+            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"] | components["schemas"]["ProfileCycleIn"];
             /**
              * High Dynamics
              * @description J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise; omitted: true
@@ -2959,7 +2999,7 @@ export interface components {
             /** Load */
             load: components["schemas"]["DirectLoad"] | components["schemas"]["BallScrewLoad"] | components["schemas"]["RotaryTableLoad"] | components["schemas"]["BallScrewInclineIn"] | components["schemas"]["BeltIn"] | components["schemas"]["RackPinionIn"] | components["schemas"]["ConveyorIn"] | components["schemas"]["LiftIn"] | components["schemas"]["RotaryIn"];
             /** Cycle */
-            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"];
+            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"] | components["schemas"]["ProfileCycleIn"];
             /**
              * High Dynamics
              * @description J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise; omitted: true
@@ -3390,6 +3430,151 @@ export interface components {
              * @description true when every endpoint needs a key
              */
             require_api_key: boolean;
+        };
+        /**
+         * ProfileCycleIn
+         * @description A measured profile uploaded before (``POST /profiles``), by its id: sized as the
+         *     segments stored with it, which the stored selection then holds.
+         */
+        ProfileCycleIn: {
+            /**
+             * Profile Id
+             * @description the id `POST /profiles` answered
+             */
+            profile_id: string;
+        };
+        /**
+         * ProfileFiguresOut
+         * @description Figures of a cycle that do not depend on the actuator, in the profile's units.
+         */
+        ProfileFiguresOut: {
+            /**
+             * Cycle Time S
+             * @description t_0 [s]
+             */
+            cycle_time_s: number;
+            /**
+             * Mean Speed
+             * @description n_av = ∫|v| dt / t_0 (Eq. 514.3)
+             */
+            mean_speed: number;
+            /**
+             * Duty Cycle Percent
+             * @description ED (Eq. 514.4) [%]
+             */
+            duty_cycle_percent: number;
+            /**
+             * Peak Speed
+             * @description max |v|
+             */
+            peak_speed: number;
+            /**
+             * Peak Accel
+             * @description max |dv/dt| [speed unit/s]
+             */
+            peak_accel: number;
+            /**
+             * Rms Load
+             * @description RMS of the process load; null without one
+             */
+            rms_load: number | null;
+            /**
+             * Peak Load
+             * @description max |load|; null without one
+             */
+            peak_load: number | null;
+        };
+        /** ProfileFiguresPair */
+        ProfileFiguresPair: {
+            /** @description of the samples (linear between them) */
+            samples: components["schemas"]["ProfileFiguresOut"];
+            /** @description of the segments the flowchart sizes */
+            segments: components["schemas"]["ProfileFiguresOut"];
+        };
+        /** ProfileFitOut */
+        ProfileFitOut: {
+            /** Tolerance Percent */
+            tolerance_percent: number;
+            /**
+             * Exact
+             * @description the segments lie within the tolerance of every sample
+             */
+            exact: boolean;
+            /**
+             * Speed Deviation
+             * @description largest |v_sample − v_segments|
+             */
+            speed_deviation: number;
+            /**
+             * Load Deviation
+             * @description largest |L_sample − L_segment|
+             */
+            load_deviation: number | null;
+        };
+        /** ProfileNoteOut */
+        ProfileNoteOut: {
+            /** Code */
+            code: string;
+            /** Msg */
+            msg: string;
+            /** Params */
+            params: {
+                [key: string]: number | string;
+            };
+        };
+        /**
+         * ProfileOut
+         * @description A stored profile: the cycle it sizes (`cycle: {"profile_id": id}` in a selection).
+         */
+        ProfileOut: {
+            /** Id */
+            id: string;
+            /** Created At */
+            created_at: string;
+            /**
+             * Kind
+             * @description rotary: speeds in rpm and loads in Nm at the actuator output (the chapter's loads and `rotary`); linear: mm/s and N (the linear mechanisms)
+             * @enum {string}
+             */
+            kind: "rotary" | "linear";
+            /** Speed Unit */
+            speed_unit: string;
+            /** Load Unit */
+            load_unit: string;
+            /**
+             * Samples
+             * @description rows of samples read
+             */
+            samples: number;
+            /**
+             * Columns
+             * @description each column read and its heading
+             */
+            columns: {
+                [key: string]: string;
+            };
+            /** Ignored Columns */
+            ignored_columns: string[];
+            /**
+             * From Positions
+             * @description the speeds are the positions' derivative
+             */
+            from_positions: boolean;
+            /** @description the segments, as POST /selections takes them */
+            cycle: components["schemas"]["SegmentsCycleIn"];
+            figures: components["schemas"]["ProfileFiguresPair"];
+            fit: components["schemas"]["ProfileFitOut"];
+            /** @description at most 2000 samples' speeds for the cycle chart */
+            preview: components["schemas"]["ProfilePreviewOut"];
+            /** Notes */
+            notes: components["schemas"]["ProfileNoteOut"][];
+        };
+        /** ProfilePreviewOut */
+        ProfilePreviewOut: {
+            /** Time S */
+            time_s: number[];
+            /** Speed */
+            speed: number[];
         };
         /**
          * PtcOut
@@ -3940,7 +4125,7 @@ export interface components {
                 [key: string]: unknown;
             } | null;
             /** Cycle */
-            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"];
+            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"] | components["schemas"]["ProfileCycleIn"];
             /** High Dynamics */
             high_dynamics: boolean;
             /**
@@ -4035,7 +4220,7 @@ export interface components {
             /** Load */
             load: components["schemas"]["DirectLoad"] | components["schemas"]["BallScrewLoad"] | components["schemas"]["RotaryTableLoad"] | components["schemas"]["BallScrewInclineIn"] | components["schemas"]["BeltIn"] | components["schemas"]["RackPinionIn"] | components["schemas"]["ConveyorIn"] | components["schemas"]["LiftIn"] | components["schemas"]["RotaryIn"];
             /** Cycle */
-            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"];
+            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"] | components["schemas"]["ProfileCycleIn"];
             /**
              * High Dynamics
              * @description J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise; omitted: true
@@ -7186,6 +7371,186 @@ export interface operations {
                 };
             };
             /** @description a record that cannot be read or lacks the axis */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    create_profile: {
+        parameters: {
+            query?: {
+                /** @description unit of the time column */
+                time_unit?: string;
+                /** @description unit of the position column where its heading gives none (pint's spelling, e.g. `deg`) */
+                position_unit?: string | null;
+                /** @description unit of the velocity column where its heading gives none (pint's spelling, e.g. `rpm`) */
+                velocity_unit?: string | null;
+                /** @description unit of the acceleration column where its heading gives none (pint's spelling, e.g. `rad/s^2`) */
+                acceleration_unit?: string | null;
+                /** @description unit of the load (torque or force) column where its heading gives none (pint's spelling, e.g. `N*m`) */
+                load_unit?: string | null;
+                /** @description deviation allowed between samples and segments, in % of the peak speed (and of the peak load) */
+                tolerance_percent?: number;
+            };
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example Time [s];AngularVelocity [rad/s]
+                 *     0;0
+                 *     0.1;4.18879
+                 *     0.2;4.18879
+                 *     0.3;0
+                 *     1.3;0
+                 */
+                "text/csv": string;
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            201: {
+                headers: {
+                    /** @description the path of the resource created (of a batch: its first case's) */
+                    Location?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProfileOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a file larger than the bulk body limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a body that is not a CSV file */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a file that breaks a rule: the entry names its line and column */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_profile: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                profile_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProfileOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown profile */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
             422: {
                 headers: {
                     [name: string]: unknown;

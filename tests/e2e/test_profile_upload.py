@@ -21,8 +21,8 @@ pytestmark = pytest.mark.browser
 
 def test_a_profile_upload_shows_its_chart_and_sizes(page: Page, tmp_path: Path) -> None:
     page.goto("/")
-    page.locator("#f-torque").fill("5")
-    page.locator("#f-inertia").fill("1.3")
+    page.locator("#f-direct-torque_nm").fill("5")
+    page.locator("#f-direct-inertia_kgm2").fill("1.3")
     file = tmp_path / "worked-example.csv"
     file.write_bytes(idta_file())
     with page.expect_response("**/api/v1/profiles") as uploaded:

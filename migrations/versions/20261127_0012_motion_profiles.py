@@ -3,8 +3,8 @@
 A profile is read once from its file and stored as the segments the flowchart sizes, with
 the figures of its samples, so that selections and batch cases name it by id.
 
-Revision ID: 0010_motion_profiles
-Revises: 0009
+Revision ID: 0012
+Revises: 0011
 Create Date: 2026-11-27
 """
 
@@ -16,8 +16,8 @@ import sqlalchemy as sa
 from alembic import op
 from sqlalchemy.dialects import postgresql
 
-revision: str = "0010_motion_profiles"
-down_revision: str | None = "0009"
+revision: str = "0012"
+down_revision: str | None = "0011"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 
