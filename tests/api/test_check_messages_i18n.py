@@ -14,6 +14,7 @@ import pytest
 from babel.messages.pofile import read_po
 from fastapi.testclient import TestClient
 from tests import worked_example
+from tests.oracle.flowchart import operands
 
 from actuator_selection.api.messages import catalog_path, check_templates, render_check
 from actuator_selection.core.check_messages import CHECK_MESSAGES, Phrase
@@ -26,9 +27,9 @@ from actuator_selection.core.checks import (
     Operands,
     Rule,
     Status,
-    _floor_message,
 )
-from actuator_selection.core.selection import evaluate, operands
+from actuator_selection.core.checks.rule import _floor_message
+from actuator_selection.core.selection import evaluate
 
 SELECTIONS = "/api/v1/selections"
 EXAMPLE_REQUEST: dict[str, Any] = {

@@ -8,7 +8,7 @@ import random
 
 import pytest
 from hypothesis import HealthCheck, given, settings
-from tests.core.test_batch import (
+from tests.oracle.test_engine_parity import (
     applications,
     boundary_actuators,
     catalogues,
@@ -17,7 +17,7 @@ from tests.core.test_batch import (
 )
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import evaluate_batch
+from actuator_selection.core.engine import evaluate_batch
 from actuator_selection.core.selection import Application
 from actuator_selection.services.presenters.selection import (
     CHECKS_AS_DICTS_UP_TO,

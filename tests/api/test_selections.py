@@ -13,13 +13,12 @@ from fastapi.testclient import TestClient
 from sqlalchemy import Connection
 from sqlalchemy.orm import Session
 from tests import worked_example
+from tests.oracle.flowchart import select
 
-from actuator_selection.core.selection import select
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.main import GC_THRESHOLDS, tune_gc
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
-from actuator_selection.services.selections import SCALAR_UP_TO
 
 WORKED_EXAMPLE: dict[str, Any] = {
     **worked_example.request(),
@@ -410,8 +409,9 @@ def random_case(rng: random.Random) -> dict[str, Any]:
 def test_answer_equals_the_scalar_flowchart_check_by_check(
     client: TestClient, connection: Connection
 ) -> None:
-    """The answer is computed by the vectorised flowchart, each candidate's detail by the
-    scalar one: the same order, verdicts, torques and checks, compared with ==."""
+    """The answer and each candidate's detail are the engine's (1 × N and 1 × 1 views):
+    the same order, verdicts, torques and checks as the plain-float oracle
+    (``tests/oracle``), compared with ==."""
     # The catalogue as a selection reads it: each actuator with its listed controllers'
     # best DC bus (the drive_voltage check's limit).
     actuators = list(CatalogueSnapshot.read(Session(connection), 0).actuators)
@@ -458,12 +458,12 @@ def _resolved(answer: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
-@pytest.mark.parametrize("size", [1, 2, SCALAR_UP_TO, SCALAR_UP_TO + 1])
+@pytest.mark.parametrize("size", [1, 2, 24, 25])
 def test_a_few_models_are_answered_as_in_the_whole_catalogue(client: TestClient, size: int) -> None:
-    """A selection of a few models runs the scalar flowchart, of many the vectorised one
-    (``services.selections.SCALAR_UP_TO``): each candidate, in the same order, with the
-    same numbers, checks and drive options as in the whole catalogue's answer, with and
-    without the checks of a brake, the drive and the output bearing."""
+    """A selection of a few models (the engine's 1 × few view; 24 was the scalar
+    flowchart's bound) answers each candidate, in the same order, with the same numbers,
+    checks and drive options as the whole catalogue's answer, with and without the checks
+    of a brake, the drive and the output bearing."""
     rng = random.Random(size)
     for _ in range(6):
         body = {**random_case(rng), "brake": rng.random() < 0.5, "drive": rng.random() < 0.5}

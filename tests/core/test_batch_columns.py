@@ -17,7 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from tests import worked_example
-from tests.core.test_batch import (
+from tests.oracle.test_engine_parity import (
     applications,
     boundary_actuators,
     catalogues,
@@ -26,15 +26,15 @@ from tests.core.test_batch import (
 )
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import (
+from actuator_selection.core.checks import BRAKE_RULES, RULES, Rule
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
     TrapezoidColumns,
     rank_columns,
     select_batch,
 )
-from actuator_selection.core.checks import BRAKE_RULES, RULES, Rule
-from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.selection import Application
 

@@ -16,10 +16,10 @@ import pytest
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.batch import evaluate_batch
 from actuator_selection.core.bearing import OutputLoad, l10_life_h, oscillating_life_h
 from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, RULES, Status
 from actuator_selection.core.cycle import Load, SpeedPattern, mean_speed_rpm
+from actuator_selection.core.engine import evaluate_batch
 from actuator_selection.core.motion import Motion, Segment
 from actuator_selection.core.selection import Application, evaluate
 

@@ -9,10 +9,10 @@ from typing import Any
 import numpy as np
 import pytest
 from tests import worked_example
+from tests.oracle.flowchart import operands
 
 from actuator_selection.core import checks, selection
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import ARRAY_OPS, CHECK_NAMES
 from actuator_selection.core.checks import (
     FLOAT_OPS,
     RULES,
@@ -20,11 +20,12 @@ from actuator_selection.core.checks import (
     Operands,
     Requirement,
     Status,
-    _new_check,
 )
+from actuator_selection.core.checks.rule import _new_check
 from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.engine import ARRAY_OPS, CHECK_NAMES
 from actuator_selection.core.motion import CycleTorques
-from actuator_selection.core.selection import Application, evaluate, operands
+from actuator_selection.core.selection import Application, evaluate
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 
 EXAMPLE = worked_example.APPLICATION

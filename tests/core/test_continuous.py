@@ -18,13 +18,13 @@ from pathlib import Path
 
 import pytest
 from tests import worked_example
-from tests.core.test_batch import assert_matches_scalar
+from tests.oracle.test_engine_parity import assert_matches_scalar
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.batch import evaluate_batch, select_batch
 from actuator_selection.core.catalogue_files import ACTUATORS
 from actuator_selection.core.checks import Check, Status
+from actuator_selection.core.engine import evaluate_batch, select_batch
 from actuator_selection.core.motion import Motion, Segment
 from actuator_selection.core.selection import Application, Verdict, evaluate, select
 from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S

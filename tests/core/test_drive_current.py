@@ -13,9 +13,9 @@ import math
 from collections.abc import Sequence
 
 import pytest
+from tests.oracle.flowchart import operands
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import evaluate_batch
 from actuator_selection.core.checks import (
     DRIVE_CURRENT,
     DRIVE_RULES,
@@ -28,7 +28,8 @@ from actuator_selection.core.checks import (
 )
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.electrical import controller_output_voltage
-from actuator_selection.core.selection import Application, evaluate, operands
+from actuator_selection.core.engine import evaluate_batch
+from actuator_selection.core.selection import Application, evaluate
 
 TWO_PI_OVER_60 = 2 * math.pi / 60
 

@@ -11,7 +11,7 @@ from dataclasses import fields
 import numpy as np
 import pytest
 from tests import worked_example
-from tests.core.test_batch import random_motion_case
+from tests.oracle.test_engine_parity import random_motion_case
 
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.cycle import cycle_torques, duty_cycle_percent, mean_speed_rpm

@@ -17,15 +17,16 @@ from collections.abc import Callable
 
 import numpy as np
 import pytest
+from tests.oracle.flowchart import operands
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.batch import evaluate_batch
 from actuator_selection.core.checks import Check, Operands, Status
 from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.engine import evaluate_batch
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.selection import Application, Verdict, evaluate, operands
+from actuator_selection.core.selection import Application, Verdict, evaluate
 from actuator_selection.core.thermal import (
     DEFAULT_THERMAL_TIME_CONSTANT_S,
     overload_duration_s,

@@ -17,7 +17,6 @@ from types import MappingProxyType
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import CatalogueArrays, catalogue_arrays
 from actuator_selection.core.compatibility import (
     ActuatorInterface,
     CompatibilityResult,
@@ -27,6 +26,7 @@ from actuator_selection.core.compatibility import (
 )
 from actuator_selection.core.drive import DriveOptions, drive_options, shared_bus_classes
 from actuator_selection.core.electrical import DcBusClass
+from actuator_selection.core.engine import CatalogueArrays, catalogue_arrays
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 
@@ -81,7 +81,7 @@ class CatalogueSnapshot:
         return found
 
     def arrays(self, actuators: tuple[Actuator, ...]) -> CatalogueArrays:
-        """:func:`~actuator_selection.core.batch.catalogue_arrays` of ``actuators`` (the
+        """:func:`~actuator_selection.core.engine.catalogue_arrays` of ``actuators`` (the
         whole catalogue or a ``models`` subset of it), built once per version."""
         key = tuple(a.model for a in actuators)
         found = self._arrays.get(key)

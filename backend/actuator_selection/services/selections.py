@@ -26,7 +26,7 @@ import orjson
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import (
+from actuator_selection.core.engine import (
     VERDICT_BY_CODE,
     evaluate_batch,
 )
@@ -48,7 +48,6 @@ from actuator_selection.services.presenters.detail import (
 from actuator_selection.services.presenters.selection import (
     CHECKS_AS_DICTS_UP_TO,
     JSON,
-    check_entry,
     checks_as_dicts,
     checks_of,
     dump_json,
@@ -90,18 +89,6 @@ class SizedSelection:
         )
 
 
-SCALAR_UP_TO = 24
-"""A selection of at most this many actuators runs the scalar flowchart
-(:func:`~actuator_selection.core.selection.select`), a larger one the vectorised
-(:func:`~actuator_selection.core.batch.evaluate_batch`). Both run the same rules to the
-same numbers, bit for bit (tests/core/test_batch.py; tests/api/test_selections.py
-compares the answers); each is the cheaper at its size. A numpy operation costs 1–2 µs
-whatever its size, so the vectorised flowchart costs about the same for one actuator as
-for 64, while the scalar one costs ~45 µs an actuator. Ranked candidates with their
-checks, best of 15 (2026-11-24): one model 0.12 ms against 1.15 ms, 24 actuators 1.11
-against 1.27 ms, 32 actuators 1.43 against 1.27 ms."""
-
-
 @dataclass(frozen=True, slots=True)
 class _Ranked:
     """The candidates of one case, best first, as the answer lists them."""
@@ -117,13 +104,16 @@ class _Ranked:
     """Per candidate, its checks as dicts (made when asked: :func:`presenter.binding`)."""
 
 
-def _ranked_vector(
+def _ranked(
     actuators: Sequence[Actuator], app: Application, catalogue: CatalogueSnapshot
 ) -> _Ranked:
+    """The candidates of ``app`` over ``actuators``, ranked: the engine's 1 × N view of one
+    case, whatever the number of actuators."""
     ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(tuple(actuators)))
     torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
     if any(np.isinf(t).any() for t in torques):
-        # Finite inputs that overflow a torque: the scalar flowchart names the input (422).
+        # Finite inputs that overflow a torque: the ranked candidates' torques name the
+        # input (422).
         select(actuators, app)
     order = np.array(ev.ranking(0), dtype=np.intp)
     checks = checks_of(ev)
@@ -150,37 +140,17 @@ def _ranked_vector(
     )
 
 
-def _ranked_scalar(actuators: Sequence[Actuator], app: Application) -> _Ranked:
-    candidates = select(actuators, app).candidates
-    return _Ranked(
-        actuators=[c.actuator for c in candidates],
-        verdicts=[c.verdict for c in candidates],
-        torques=[
-            (None, None, None, None)
-            if (t := c.torques) is None
-            else (t.accel_torque_nm, t.constant_torque_nm, t.decel_torque_nm, t.rms_torque_nm)
-            for c in candidates
-        ],
-        checks=(checks := [[check_entry(k) for k in c.checks] for c in candidates]),
-        check_dicts=lambda: checks,
-    )
-
-
 def _candidates(
     actuators: Sequence[Actuator],
     app: Application,
     catalogue: CatalogueSnapshot,
     groups: presenter.DriveOptionGroups,
 ) -> tuple[list[JSON], JSON | None]:
-    """Every actuator's candidate for ``app``, ranked (``core.selection.ranking_key``),
-    by the flowchart that is the cheaper for their number (:data:`SCALAR_UP_TO`); the
-    candidate's detail runs the scalar one, with the checks in words."""
-    speed = app.profile.peak_speed_rpm  # computed first: the batch takes its figures
-    ranked = (
-        _ranked_scalar(actuators, app)
-        if len(actuators) <= SCALAR_UP_TO
-        else _ranked_vector(actuators, app, catalogue)
-    )
+    """Every actuator's candidate for ``app``, ranked (``core.candidates.ranking_key``)
+    by the engine; a candidate's detail is the engine's 1 × 1 view, with the checks in
+    words."""
+    speed = app.profile.peak_speed_rpm  # computed first: the engine takes its figures
+    ranked = _ranked(actuators, app, catalogue)
     candidates = presenter.candidates(
         ranked.actuators,
         ranked.verdicts,
@@ -362,7 +332,7 @@ def candidate_detail(
     return candidate_detail_answer(
         selection_id=selection_id,
         catalogue_version=version,
-        candidate=evaluate(actuator, app),
+        candidate=evaluate(actuator, app, arrays=catalogue.arrays((actuator,))),
         profile=app.profile,
         drive=DriveContext(catalogue).options(actuator, speed_rpm=app.profile.peak_speed_rpm),
         actuator=ActuatorOut.from_record(record),

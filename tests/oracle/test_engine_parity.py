@@ -16,21 +16,22 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from tests import worked_example
+from tests.oracle.flowchart import evaluate, select
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.batch import (
+from actuator_selection.core.check_messages import jsonable_params, renderer
+from actuator_selection.core.checks import RULES, Requirement, Rule, published
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.engine import (
     CHECK_NAMES,
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
-    _cases,
     evaluate_batch,
     rank_batch,
     select_batch,
 )
-from actuator_selection.core.check_messages import jsonable_params, renderer
-from actuator_selection.core.checks import RULES, Requirement, Rule, published
-from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.engine.cases import cases_of
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import Motion, Segment, piece_arrays
 from actuator_selection.core.selection import (
@@ -39,9 +40,7 @@ from actuator_selection.core.selection import (
     Selection,
     Status,
     Verdict,
-    evaluate,
     ranking_key,
-    select,
 )
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
 
@@ -642,7 +641,7 @@ def test_trapezoid_columns_equal_the_pieces_of_their_segments() -> None:
     array for array, bit for bit."""
     rng = random.Random(7)
     apps = [random_case(rng, [FHA]) for _ in range(200)]
-    fast = _cases(apps).pieces
+    fast = cases_of(apps).pieces
     slow = piece_arrays([a.cycle for a in apps])
     for f in dataclasses.fields(fast):
         assert np.array_equal(getattr(fast, f.name), getattr(slow, f.name)), f.name

@@ -1,0 +1,138 @@
+"""The load case of a selection: :class:`Application`, the motion with its load and what
+else is checked (brake, drive, output bearing, τ_th)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from actuator_selection.core.axis import AxisLoad
+from actuator_selection.core.bearing import OutputLoad
+from actuator_selection.core.checks import (
+    BEARING_LIFE,
+    BEARING_RULES,
+    BRAKE_RULES,
+    DRIVE_RULES,
+    RULES,
+    Rule,
+)
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.motion import Motion, Profile, profile_of, trapezoid
+
+
+def require_time_constant(tau: float | None) -> None:
+    """Refuse a thermal time constant τ_th (:attr:`Application.thermal_time_constant_s`)
+    that is not a finite number > 0."""
+    if tau is not None and not (math.isfinite(tau) and tau > 0):
+        raise InvalidInputError(
+            "thermal_time_constant_s",
+            f"must be a finite number > 0: τ_th divides the time in the thermal model, got {tau!r}",
+        )
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Application:
+    """The load case: the motion (a cycle of segments driving an axis load, or the
+    chapter's trapezoid ``pattern`` with its ``load`` as a shorthand), and how dynamic it is.
+
+    Give either ``motion`` or both ``pattern`` and ``load``; :attr:`cycle` is the motion
+    either way (:func:`~actuator_selection.core.motion.trapezoid` for the shorthand).
+    """
+
+    pattern: SpeedPattern | None = None
+    load: Load | None = None
+    motion: Motion | None = None
+    high_dynamics: bool = True
+    brake: bool = False
+    """Whether the actuator is fitted with its holding brake (checked by
+    :data:`~actuator_selection.core.checks.BRAKE_HOLDING`)."""
+    _profile: list[Profile] = field(
+        default_factory=list, init=False, repr=False, compare=False, hash=False
+    )
+    """The cycle's :class:`~actuator_selection.core.motion.Profile`, once computed."""
+
+    def __post_init__(self) -> None:
+        if self.motion is None and (self.pattern is None or self.load is None):
+            raise InvalidInputError("cycle", "needs a motion, or a speed pattern and a load")
+        if self.motion is not None and (self.pattern is not None or self.load is not None):
+            raise InvalidInputError(
+                "cycle", "give segments or the t_1…t_p pattern with its load, not both"
+            )
+        require_time_constant(self.thermal_time_constant_s)
+
+    @property
+    def cycle(self) -> Motion:
+        """The motion: :attr:`motion`, or the chapter's trapezoid of the shorthand."""
+        if self.motion is not None:
+            return self.motion
+        assert self.pattern is not None
+        p = self.pattern
+        return trapezoid(
+            speed_rpm=p.speed_rpm,
+            accel_s=p.accel_s,
+            constant_s=p.constant_s,
+            decel_s=p.decel_s,
+            pause_s=p.pause_s,
+            load=self.axis_load,
+        )
+
+    @property
+    def axis_load(self) -> AxisLoad:
+        """The motion's axis load, without building the motion: for the shorthand, the
+        load's T_L as friction (acting against the motion) and its J_L."""
+        if self.motion is not None:
+            return self.motion.load
+        assert self.load is not None
+        return AxisLoad(inertia_kgm2=self.load.inertia_kgm2, friction_torque_nm=self.load.torque_nm)
+
+    @property
+    def profile(self) -> Profile:
+        """The cycle prepared for the flowchart (computed once)."""
+        if not self._profile:
+            self._profile.append(profile_of(self.cycle))
+        return self._profile[0]
+
+    @property
+    def known_profile(self) -> Profile | None:
+        """:attr:`profile` if it has been computed, else None (nothing is computed)."""
+        return self._profile[0] if self._profile else None
+
+    drive: bool = False
+    """Whether the drive's current is sized too
+    (:data:`~actuator_selection.core.checks.DRIVE_RULES`); the output voltage is checked
+    either way (:data:`~actuator_selection.core.checks.DRIVE_VOLTAGE`)."""
+    output_load: OutputLoad | None = None
+    """An external load on the output flange, or None: the output bearing is not checked
+    (:data:`~actuator_selection.core.checks.BEARING_RULES`)."""
+    thermal_time_constant_s: float | None = None
+    """The winding's thermal time constant τ_th [s] for the heating check
+    (:data:`~actuator_selection.core.checks.THERMAL_PEAK`) where the catalogue gives
+    none; None: :data:`~actuator_selection.core.thermal.DEFAULT_THERMAL_TIME_CONSTANT_S`,
+    an assumption (the check then says approximate)."""
+
+    @property
+    def rules(self) -> tuple[Rule, ...]:
+        """The checks this application needs: the flowchart's, the brake's if fitted, the
+        output bearing's if an output load is given (its life if a life is required)."""
+        load = self.output_load
+        return _rule_set(
+            self.brake,
+            self.drive,
+            load is not None,
+            load is not None and load.required_life_h is not None,
+        )
+
+
+@lru_cache(maxsize=16)
+def _rule_set(brake: bool, drive: bool, bearing: bool, life: bool) -> tuple[Rule, ...]:
+    """One tuple per combination, so that cases group by their rules cheaply."""
+    rules = BRAKE_RULES if brake else RULES
+    if drive:
+        rules = (*rules, *DRIVE_RULES)
+    if bearing:
+        rules = (*rules, *BEARING_RULES)
+    if life:
+        rules = (*rules, BEARING_LIFE)
+    return rules

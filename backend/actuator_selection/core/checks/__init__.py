@@ -1,0 +1,158 @@
+"""The flowchart's checks (chapter p. 514–517): the rule machinery, and the rules one
+family to a file, each with its words.
+
+- :mod:`~actuator_selection.core.checks.operands`: :class:`Operands`, what the rules
+  compute from, one name per quantity;
+- :mod:`~actuator_selection.core.checks.rule`: :class:`Check`, :class:`Rule`,
+  :class:`Requirement`, :class:`Ops`;
+- :mod:`~actuator_selection.core.checks.rules`: ``motion`` (speed, inertia, peak torques),
+  ``thermal`` (continuous duty, heating, continuous speed), ``drive`` (current, voltage),
+  ``bearing`` (output bearing), ``brake`` (holding brake); a family to come (``gear``)
+  is one more file.
+
+The engine (:mod:`actuator_selection.core.engine`) runs the rule sets below on arrays of
+load cases × actuators; the rules' order is the order of a candidate's checks.
+
+Each check compares one quantity, and reports it with its own value, limit and unit.
+
+**Adding a check is adding one rule** (its formulas and its words) to the file of its
+family and to a rule set below; the engine, the verdicts and the ranking follow. Here
+n_av ≤ n_max (Eq. 514.3) as a further check, with the chapter's worked example
+(Table 516.1, FHA-25C-50-L of Table 516.3):
+
+>>> from actuator_selection.core.actuators import Actuator
+>>> from actuator_selection.core.cycle import Load, SpeedPattern
+>>> from actuator_selection.core.engine import evaluate_batch
+>>> from actuator_selection.core.selection import Application, evaluate
+>>> mean_speed = Rule(
+...     name="mean_speed", reference="Eq. 514.3", unit="rpm",
+...     value=lambda q, xp: q.mean_speed_rpm,
+...     limit=lambda q, xp: q.max_speed_rpm,
+...     requires=(published("max_speed_rpm", "maximum output speed n_max"),),
+...     message=lambda q, status, value, limit: f"n_av = {value:.4g} rpm, n_max = {limit:.4g} rpm")
+>>> app = Application(
+...     pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1),
+...     load=Load(torque_nm=5, inertia_kgm2=1.3))
+>>> fha = Actuator(model="FHA-25C-50-L", family="FHA-C", gear_ratio=50,
+...                max_torque_nm=151, max_speed_rpm=90, inertia_kgm2=0.86)
+>>> rules = (*RULES, mean_speed)
+>>> check = evaluate(fha, app, rules=rules).checks[-1]
+>>> check.name, check.status.value, check.message
+('mean_speed', 'pass', 'n_av = 6.154 rpm, n_max = 90 rpm')
+>>> evaluate_batch([fha], [app], rules=rules).status(0, 0, "mean_speed").value
+'pass'
+"""
+
+from __future__ import annotations
+
+from actuator_selection.core.checks.operands import Operands, Real, Truth
+from actuator_selection.core.checks.rule import (
+    FLOAT_OPS,
+    Check,
+    DeferredChecks,
+    Formula,
+    Message,
+    Ops,
+    Requirement,
+    Rule,
+    Status,
+    margin_percent,
+    overload,
+    published,
+    utilisation,
+)
+from actuator_selection.core.checks.rules.bearing import (
+    BEARING_FRETTING,
+    BEARING_LIFE,
+    BEARING_MOMENT,
+    BEARING_STATIC,
+)
+from actuator_selection.core.checks.rules.brake import BRAKE_HOLDING
+from actuator_selection.core.checks.rules.drive import (
+    DRIVE_CURRENT,
+    DRIVE_VOLTAGE,
+    regenerative_energy_j,
+)
+from actuator_selection.core.checks.rules.motion import (
+    DECEL_TORQUE,
+    INERTIA_RATIO,
+    INERTIA_RATIO_LIMIT,
+    MAX_SPEED,
+    PEAK_TORQUE,
+)
+from actuator_selection.core.checks.rules.thermal import (
+    CONTINUOUS_DUTY,
+    CONTINUOUS_SPEED,
+    THERMAL_PEAK,
+)
+
+__all__ = [
+    "BEARING_FRETTING",
+    "BEARING_LIFE",
+    "BEARING_MOMENT",
+    "BEARING_RULES",
+    "BEARING_STATIC",
+    "BRAKE_HOLDING",
+    "BRAKE_RULES",
+    "CONTINUOUS_DUTY",
+    "CONTINUOUS_SPEED",
+    "DECEL_TORQUE",
+    "DRIVE_CURRENT",
+    "DRIVE_RULES",
+    "DRIVE_VOLTAGE",
+    "FLOAT_OPS",
+    "INERTIA_RATIO",
+    "INERTIA_RATIO_LIMIT",
+    "MAX_SPEED",
+    "PEAK_TORQUE",
+    "RULES",
+    "THERMAL_PEAK",
+    "Check",
+    "DeferredChecks",
+    "Formula",
+    "Message",
+    "Operands",
+    "Ops",
+    "Real",
+    "Requirement",
+    "Rule",
+    "Status",
+    "Truth",
+    "margin_percent",
+    "overload",
+    "published",
+    "regenerative_energy_j",
+    "utilisation",
+]
+
+BEARING_RULES: tuple[Rule, ...] = (BEARING_MOMENT, BEARING_STATIC, BEARING_FRETTING)
+"""The output bearing's checks where an output load is given (``Application.output_load``);
+:data:`BEARING_LIFE` joins them where a required life is given."""
+
+RULES: tuple[Rule, ...] = (
+    MAX_SPEED,
+    INERTIA_RATIO,
+    PEAK_TORQUE,
+    DECEL_TORQUE,
+    CONTINUOUS_DUTY,
+    THERMAL_PEAK,
+    CONTINUOUS_SPEED,
+    DRIVE_VOLTAGE,
+)
+"""The flowchart's checks in the manufacturer's order (chapter p. 514–517), then whether
+T_rms stands for the cycle's length (:data:`THERMAL_PEAK`, Fig. 520.1's model), then the
+continuous speed by the same model (:data:`CONTINUOUS_SPEED`), then whether a controller
+listed for the actuator (Table 521.1) delivers the voltage the axis needs
+(:data:`DRIVE_VOLTAGE`): an actuator that no listed controller can drive at n_2 is not
+suitable, whether or not the drive is sized (issue 28, item 1). Where the catalogue lacks
+the winding's constants (K_E in V_rms, L, p) or lists no controller on a bus class the
+actuator runs on, that check lacks data and the verdict is unconfirmed."""
+
+DRIVE_RULES: tuple[Rule, ...] = (DRIVE_CURRENT,)
+"""The drive's further check, where asked for (``Application.drive``): peak current
+(Eq. 522.2, 522.3), with the energy braking returns. The output voltage
+(:data:`DRIVE_VOLTAGE`) is in :data:`RULES`, checked for every selection."""
+
+BRAKE_RULES: tuple[Rule, ...] = (*RULES, BRAKE_HOLDING)
+"""The checks of an actuator fitted with its holding brake: the flowchart's, then the
+brake's (:data:`BRAKE_HOLDING`)."""

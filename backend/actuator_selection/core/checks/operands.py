@@ -1,0 +1,152 @@
+"""What the rules compute from: :class:`Operands`, one name per quantity.
+
+The engine (:mod:`actuator_selection.core.engine`) builds them in one place
+(:func:`~actuator_selection.core.engine.block.operands_of`), by name: the catalogue's
+values from :func:`~actuator_selection.core.engine.catalogue.catalogue_arrays` (one
+function, field by field), the case's and the cycle's from the load cases.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+Real = Any
+"""A float64 array of the engine's (a float where one cell is worded)."""
+Truth = Any
+"""A bool array of the engine's (a bool where one cell is worded)."""
+
+
+class Operands(NamedTuple):
+    """What the rules compute from: the load case, the cycle, the actuator.
+
+    In the engine, case quantities are columns (cases × 1), catalogue values rows
+    (actuators), cycle torques cases × actuators; one cell's are floats (the words of
+    its checks). Unpublished catalogue values are NaN.
+
+    Immutable like the frozen dataclasses of the core; a named tuple, so that one
+    cell's operands are cut from the arrays by position (:meth:`_make`).
+    """
+
+    speed_rpm: Real
+    """Load speed n_2 [rpm] (Table 516.1): the highest |speed| of the cycle."""
+    load_inertia_kgm2: Real
+    """Load moment of inertia J_L [kgm²]."""
+    high_dynamics: Truth
+    """Whether the application is highly dynamic (Table 515.1, footnote 1)."""
+    mean_speed_rpm: Real
+    """Average output speed n_av [rpm] (Eq. 514.3)."""
+    accel_torque_nm: Real
+    """Acceleration torque T_1 [Nm] (Eq. 514.1); NaN without J_A."""
+    decel_torque_nm: Real
+    """Deceleration torque T_3 [Nm] (Eq. 514.1), negative while braking; NaN without J_A."""
+    rms_torque_nm: Real
+    """RMS torque T_rms [Nm] (Eq. 514.2); NaN without J_A."""
+    max_torque_nm: Real
+    """Repeated peak torque T_max [Nm]."""
+    max_speed_rpm: Real
+    """Maximum output speed n_max [rpm]."""
+    inertia_kgm2: Real
+    """Actuator moment of inertia J_A at the output [kgm²]."""
+    stall_torque_nm: Real
+    """Continuous stall torque T_0 [Nm]."""
+    continuous_torque_nm: Real
+    """Allowable continuous torque, where a catalogue gives that instead of T_0 [Nm]."""
+    has_zone: Truth
+    """Whether a continuous-duty zone is published (Fig. 517.1)."""
+    zone_torque_nm: Real
+    """The zone's edge at n_av [Nm]; NaN without a zone or beyond its last speed."""
+    zone_max_speed_rpm: Real
+    """The highest speed the zone covers [rpm]; NaN without a zone."""
+    accel_torque_floor_nm: Real
+    """The least T_1 over every J_A ≥ 0 [Nm] (:class:`~actuator_selection.core.cycle.
+    TorqueFloors`): what fails without J_A."""
+    decel_torque_floor_nm: Real
+    """The least |T_3| over every J_A ≥ 0 [Nm]."""
+    rms_torque_floor_nm: Real
+    """The least T_rms over every J_A ≥ 0 [Nm]."""
+    continuous_speed_rpm: Real
+    """Allowable continuous output speed [rpm] (FHA-C); NaN where not published."""
+    rated_speed_rpm: Real
+    """Rated output speed [rpm] (CHA: rated motor speed / i); NaN where not published."""
+    load_torque_nm: Real
+    """The torque held at standstill [Nm]: |T_G| + T_F of the axis (for the chapter's load,
+    T_L, taken as acting at standstill for the brake)."""
+    brake_holding_torque_nm: Real
+    """The holding brake's holding torque at the output [Nm]; NaN where not published."""
+    decel_s: Real
+    """Deceleration time t_3 [s] (Table 516.1), for the energy braking returns."""
+    gear_ratio: Real
+    """Gear ratio i [-]."""
+    torque_constant_nm_per_a: Real
+    """Torque constant at the output k_T [Nm/A] (CHA k_Tout); NaN where not published."""
+    max_current_a: Real
+    """Maximum current I_max [A]; NaN where not published."""
+    no_load_starting_current_a: Real
+    """No-load starting current I_NLS [A] (Eq. 522.2); NaN where not published."""
+    no_load_current_constant_a_per_rpm: Real
+    """No-load running current constant K_INL at 30 °C [A/rpm] (Eq. 522.2); NaN where not
+    published (the cold value: the larger, so the safe side)."""
+    motor_voltage_constant_v_per_krpm: Real
+    """Motor voltage constant K_E [V_rms line-to-line per 1000 rpm] (CHA k_EM)."""
+    resistance_line_ohm: Real
+    """Winding resistance line-to-line R [Ω]."""
+    inductance_line_h: Real
+    """Winding inductance line-to-line L [H]."""
+    pole_pairs: Real
+    """The motor's number of pole pairs p; NaN where not published."""
+    dc_bus_voltage_v: Real
+    """The highest nominal DC bus voltage the actuator runs on (its Table 521.1 bus
+    classes) [V]; NaN where no bus class is published."""
+    radial_force_n: Real
+    """External radial force F_r on the output flange [N]; NaN without an output load."""
+    axial_force_n: Real
+    """External axial force F_a [N]; NaN without an output load."""
+    radial_lever_m: Real
+    """L_r [m]: where F_r acts, from the output flange."""
+    axial_lever_m: Real
+    """L_a [m]: the distance of F_a from the axis."""
+    load_factor: Real
+    """f_w of the bearing life formula [-]."""
+    static_safety_min: Real
+    """The least static safety factor f_s the application needs [-]."""
+    required_life_h: Real
+    """The bearing life L_10 the application needs [h]; NaN where not asked."""
+    swing_deg: Real
+    """The cycle's swing [°] (:func:`~actuator_selection.core.bearing.swing_deg`); NaN
+    without an output load (the output bearing is not checked)."""
+    bearing_pitch_diameter_m: Real
+    """Output bearing pitch circle diameter d_p [m]; NaN where not published."""
+    bearing_offset_m: Real
+    """Output bearing offset R [m]; NaN where not published."""
+    bearing_dynamic_load_rating_n: Real
+    """Output bearing basic dynamic load rating C [N]; NaN where not published."""
+    bearing_static_load_rating_n: Real
+    """Output bearing basic static load rating C_0 [N]; NaN where not published."""
+    bearing_life_exponent: Real
+    """Life exponent B of the output bearing's type: 3 for a ball, 10/3 for a roller
+    bearing (:func:`~actuator_selection.core.bearing.life_exponent`); NaN where the type is
+    not published."""
+    bearing_moment_load_nm: Real
+    """Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini)."""
+    bearing_dynamic_tilting_moment_nm: Real
+    """Allowable dynamic tilting moment M_dyn(max) [Nm] (CHA)."""
+    cycle_s: Real
+    """Cycle time t_0 [s] (Table 516.1: t_1 + t_2 + t_3 + t_p)."""
+    thermal_time_constant_s: Real
+    """The winding's thermal time constant τ_th [s]: the catalogue's, else the
+    application's, else :data:`~actuator_selection.core.thermal.
+    DEFAULT_THERMAL_TIME_CONSTANT_S`."""
+    thermal_time_constant_assumed: Truth
+    """Whether τ_th is that assumed default (neither catalogue nor application gives one)."""
+    thermal_torque_nm: Real
+    """The peak of the winding's heating over the repeating cycle as a torque, √max x [Nm]
+    (:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm`); NaN without J_A."""
+    thermal_speed_rpm: Real
+    """n_th: the speed the winding's speed-dependent heating follows, at its peak over the
+    repeating cycle, never below n_av [rpm] (:meth:`~actuator_selection.core.motion.
+    Profile.thermal_speed_rpm`, with τ_th as for :attr:`thermal_torque_nm`)."""
+    no_load_torque_slope_nm_per_rpm: Real
+    """k_T·K_INL [Nm/rpm]: the torque that the speed-dependent no-load current K_INL·n of
+    Eq. 522.2 takes from the continuous stall current, per rpm (Eq. 522.3); K_INL at
+    80 °C where published (the warm actuator of continuous duty), else at 30 °C; NaN
+    where k_T or K_INL is not published (:func:`no_load_torque_slope`)."""

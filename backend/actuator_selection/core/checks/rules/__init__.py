@@ -1,0 +1,1 @@
+"""The checks, one family to a file, each rule with its words."""

@@ -1,0 +1,190 @@
+"""The load cases as the engine reads them: rows of their cycles' pieces and figures,
+output loads and τ_th, and each case's operands by name (:func:`case_operands`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.application import Application
+from actuator_selection.core.bearing import swing_deg
+from actuator_selection.core.engine.arrays import BoolArray, FloatArray, IndexArray
+from actuator_selection.core.motion import (
+    CycleFigures,
+    PieceArrays,
+    cycle_figures,
+    figures_of,
+    piece_arrays,
+    trapezoid_piece_arrays,
+)
+from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
+
+OUTPUT_LOAD_FIELDS = (
+    "radial_force_n",
+    "axial_force_n",
+    "radial_lever_m",
+    "axial_lever_m",
+    "load_factor",
+    "static_safety_min",
+    "required_life_h",
+)
+"""The output load's fields, as :class:`Operands` and ``OutputLoad`` name them."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Cases:
+    """The load cases as rows: their cycles' pieces and figures."""
+
+    pieces: PieceArrays
+    figures: CycleFigures
+    load_inertia: FloatArray
+    high_dynamics: BoolArray
+    output_load: FloatArray
+    """The output load per case (cases × :data:`OUTPUT_LOAD_FIELDS`); NaN where none."""
+    thermal_time_constant: FloatArray
+    """τ_th per case where the catalogue gives none: the case's, else the default."""
+    thermal_assumed: BoolArray
+    """Whether that τ_th is the assumed default."""
+
+    @property
+    def size(self) -> int:
+        return self.load_inertia.size
+
+    @property
+    def mean_speed(self) -> FloatArray:
+        return self.figures.mean_speed_rpm
+
+    def rows(self, start: int, stop: int) -> Cases:
+        """The cases ``start:stop``."""
+        if start == 0 and stop >= self.size:
+            return self
+        p, f = self.pieces, self.figures
+        return Cases(
+            pieces=PieceArrays(**{x.name: getattr(p, x.name)[start:stop] for x in fields(p)}),
+            figures=CycleFigures(**{x.name: getattr(f, x.name)[start:stop] for x in fields(f)}),
+            load_inertia=self.load_inertia[start:stop],
+            high_dynamics=self.high_dynamics[start:stop],
+            output_load=self.output_load[start:stop],
+            thermal_time_constant=self.thermal_time_constant[start:stop],
+            thermal_assumed=self.thermal_assumed[start:stop],
+        )
+
+
+def cases_of(apps: Sequence[Application]) -> Cases:
+    shorthand = [(a.pattern, a.load) for a in apps if a.pattern is not None and a.load]
+    if len(shorthand) == len(apps):  # the chapter's trapezoids only: as columns
+
+        def column(values: list[float]) -> FloatArray:
+            return np.array(values, dtype=np.float64)
+
+        inertia = column([load.inertia_kgm2 for _, load in shorthand])
+        pieces = trapezoid_piece_arrays(
+            speed_rpm=column([p.speed_rpm for p, _ in shorthand]),
+            accel_s=column([p.accel_s for p, _ in shorthand]),
+            constant_s=column([p.constant_s for p, _ in shorthand]),
+            decel_s=column([p.decel_s for p, _ in shorthand]),
+            pause_s=column([p.pause_s for p, _ in shorthand]),
+            torque_nm=column([load.torque_nm for _, load in shorthand]),
+            inertia_kgm2=inertia,
+        )
+    else:
+        motions = [a.cycle for a in apps]
+        pieces = piece_arrays(motions)
+        inertia = np.array([m.load.inertia_kgm2 for m in motions], dtype=np.float64)
+    # A profile already computed holds its cycle's figures (a single selection's).
+    profiles = [p for p in (a.known_profile for a in apps) if p is not None]
+    figures = figures_of(profiles) if len(profiles) == len(apps) else cycle_figures(pieces)
+    return Cases(
+        pieces=pieces,
+        figures=figures,
+        load_inertia=inertia,
+        high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
+        output_load=_output_loads(apps),
+        thermal_time_constant=np.array(
+            [
+                DEFAULT_THERMAL_TIME_CONSTANT_S if tau is None else tau
+                for tau in (a.thermal_time_constant_s for a in apps)
+            ],
+            dtype=np.float64,
+        ),
+        thermal_assumed=np.array([a.thermal_time_constant_s is None for a in apps], dtype=np.bool_),
+    )
+
+
+def swing_of(cases: Cases) -> FloatArray:
+    """Each case's swing (:func:`~actuator_selection.core.bearing.swing_deg`) where it has
+    an output load, NaN elsewhere, as the scalar flowchart's operands give it."""
+    loaded = ~np.isnan(cases.output_load[:, 0])
+    if not loaded.any():
+        return np.full(cases.size, math.nan)
+    p = cases.pieces
+    columns = zip(
+        p.duration.T, p.start_rpm.T, p.end_rpm.T, p.accel_start.T, p.accel_end.T, strict=True
+    )
+    with np.errstate(all="ignore"):
+        swing = swing_deg(columns, np.where)
+    return np.asarray(np.where(loaded, swing, math.nan), dtype=np.float64)
+
+
+def _output_loads(apps: Sequence[Application]) -> FloatArray:
+    nan = math.nan
+    rows = [
+        [nan] * len(OUTPUT_LOAD_FIELDS)
+        if a.output_load is None
+        else [
+            nan if v is None else v
+            for v in (getattr(a.output_load, name) for name in OUTPUT_LOAD_FIELDS)
+        ]
+        for a in apps
+    ]
+    return np.array(rows, dtype=np.float64).reshape(len(apps), len(OUTPUT_LOAD_FIELDS))
+
+
+def zone_limits(
+    actuators: Sequence[Actuator], columns: IndexArray, mean_speed: FloatArray
+) -> FloatArray:
+    """ContinuousDutyZone.torque_limit_nm(n_av) per case × zone column; NaN beyond the zone."""
+    limits = np.full((mean_speed.size, columns.size), math.nan)
+    for k, j in enumerate(columns.tolist()):
+        zone = actuators[j].zone
+        assert zone is not None
+        speeds = np.array([p.speed_rpm for p in zone.points], dtype=np.float64)
+        torques = np.array([p.torque_nm for p in zone.points], dtype=np.float64)
+        last = speeds.size - 1
+        i = np.searchsorted(speeds, mean_speed, side="right")  # bisect_right
+        b = np.minimum(i, last)
+        a = b - 1
+        with np.errstate(all="ignore"):  # rows outside the zone are masked below
+            share = (mean_speed - speeds[a]) / (speeds[b] - speeds[a])
+            edge = torques[a] + share * (torques[b] - torques[a])
+        edge = np.where(i > last, torques[last], edge)
+        inside = (mean_speed >= 0) & (mean_speed <= speeds[last])
+        limits[:, k] = np.where(inside, edge, math.nan)
+    return limits
+
+
+def case_operands(cases: Cases) -> dict[str, Any]:
+    """The operands of each case by name, as columns (cases × 1): its speed, load and
+    cycle figures, the output load and the swing (:func:`~actuator_selection.core.engine.
+    block.operands_of`)."""
+    col = np.newaxis
+    f = cases.figures
+    return {
+        "speed_rpm": f.peak_speed_rpm[:, col],
+        "load_inertia_kgm2": cases.load_inertia[:, col],
+        "high_dynamics": cases.high_dynamics[:, col],
+        "mean_speed_rpm": f.mean_speed_rpm[:, col],
+        "accel_torque_floor_nm": f.accel_floor_nm[:, col],
+        "decel_torque_floor_nm": f.decel_floor_nm[:, col],
+        "rms_torque_floor_nm": f.rms_floor_nm[:, col],
+        "load_torque_nm": cases.pieces.holding[:, col],
+        "decel_s": f.braking_s[:, col],
+        **{name: cases.output_load[:, k, col] for k, name in enumerate(OUTPUT_LOAD_FIELDS)},
+        "swing_deg": swing_of(cases)[:, col],
+        "cycle_s": f.cycle_s[:, col],
+    }

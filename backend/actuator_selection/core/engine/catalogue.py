@@ -1,0 +1,141 @@
+"""The catalogue as the engine reads it: each actuator a column, each value by the name
+of its :class:`~actuator_selection.core.checks.Operands` field.
+
+:data:`CATALOGUE_OPERANDS` is the one place that says which catalogue value feeds which
+operand (and how: a unit, a derived value); :func:`catalogue_arrays` builds every column
+from it, once per catalogue (the service keeps it with its catalogue snapshot).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from dataclasses import field as dataclasses_field
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.bearing import life_exponent
+from actuator_selection.core.checks import Rule
+from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
+from actuator_selection.core.engine.arrays import (
+    BoolArray,
+    CodeArray,
+    FloatArray,
+    IndexArray,
+    optional,
+)
+
+
+def _no_load_torque_slope(a: Actuator) -> float | None:
+    return no_load_torque_slope_nm_per_rpm(
+        torque_constant_nm_per_a=a.torque_constant_nm_per_a,
+        constant_30c_a_per_rpm=a.no_load_current_constant_30c_a_per_rpm,
+        constant_80c_a_per_rpm=a.no_load_current_constant_80c_a_per_rpm,
+    )
+
+
+def _milli(value: float | None) -> float | None:
+    return None if value is None else value / 1000.0
+
+
+CATALOGUE_OPERANDS: Final[dict[str, Callable[[Actuator], float | None]]] = {
+    "max_torque_nm": lambda a: a.max_torque_nm,
+    "max_speed_rpm": lambda a: a.max_speed_rpm,
+    "inertia_kgm2": lambda a: a.inertia_kgm2,
+    "stall_torque_nm": lambda a: a.stall_torque_nm,
+    "continuous_torque_nm": lambda a: a.continuous_torque_nm,
+    "zone_max_speed_rpm": lambda a: None if a.zone is None else a.zone.max_speed_rpm,
+    "continuous_speed_rpm": lambda a: a.continuous_speed_rpm,
+    "rated_speed_rpm": lambda a: a.rated_speed_rpm,
+    "brake_holding_torque_nm": lambda a: a.brake_holding_torque_nm,
+    "gear_ratio": lambda a: a.gear_ratio,
+    "torque_constant_nm_per_a": lambda a: a.torque_constant_nm_per_a,
+    "max_current_a": lambda a: a.max_current_a,
+    "no_load_starting_current_a": lambda a: a.no_load_starting_current_a,
+    "no_load_current_constant_a_per_rpm": lambda a: a.no_load_current_constant_30c_a_per_rpm,
+    "motor_voltage_constant_v_per_krpm": lambda a: a.motor_voltage_constant_v_per_krpm,
+    "resistance_line_ohm": lambda a: a.resistance_line_ohm,
+    "inductance_line_h": lambda a: _milli(a.inductance_line_mh),
+    "pole_pairs": lambda a: a.pole_pairs,
+    "dc_bus_voltage_v": lambda a: a.dc_bus_voltage_v,
+    "bearing_pitch_diameter_m": lambda a: a.output_bearing_pitch_diameter_m,
+    "bearing_offset_m": lambda a: a.output_bearing_offset_m,
+    "bearing_dynamic_load_rating_n": lambda a: a.output_bearing_dynamic_load_rating_n,
+    "bearing_static_load_rating_n": lambda a: a.output_bearing_static_load_rating_n,
+    "bearing_life_exponent": lambda a: life_exponent(a.output_bearing_type),
+    "bearing_moment_load_nm": lambda a: a.output_bearing_moment_load_nm,
+    "bearing_dynamic_tilting_moment_nm": lambda a: a.output_bearing_dynamic_tilting_moment_nm,
+    "no_load_torque_slope_nm_per_rpm": _no_load_torque_slope,
+}
+"""Each catalogue operand (a field of :class:`~actuator_selection.core.checks.Operands`)
+from an actuator: None where the catalogue does not publish it (NaN in the arrays).
+``has_zone`` and the zone's edge at n_av come from the zone itself."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class CatalogueArrays:
+    """The actuators as columns; NaN where the catalogue gives no value."""
+
+    operands: dict[str, FloatArray | BoolArray]
+    """The catalogue's operands by name (:data:`CATALOGUE_OPERANDS`, and ``has_zone``)."""
+    thermal_time_constant: FloatArray
+    """τ_th where the catalogue publishes it, else NaN (the case's then)."""
+    heating_slope: FloatArray
+    """k_T·K_INL where the heating follows the winding current (no zone, T_0 published:
+    :meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm`), else NaN."""
+    zone_columns: IndexArray
+    """The columns of the actuators with a continuous-duty zone."""
+    rank_position: npt.NDArray[np.int32]
+    """Each actuator's place in the static order (T_max, J_A, model) that breaks ties."""
+    lacking: dict[Rule, tuple[CodeArray, BoolArray]] = dataclasses_field(default_factory=dict)
+    """Per rule, where the catalogue misses its requirements (``block.lacking``), filled
+    when the rule is first evaluated against these actuators."""
+
+    @property
+    def inertia(self) -> FloatArray:
+        """J_A per actuator [kgm²]; NaN where not published."""
+        inertia = self.operands["inertia_kgm2"]
+        assert inertia.dtype == np.float64
+        return inertia.astype(np.float64, copy=False)
+
+    @property
+    def size(self) -> int:
+        """The number of actuators."""
+        return self.inertia.size
+
+
+def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
+    """The actuators as the engine reads them (:data:`CATALOGUE_OPERANDS`, by name); build
+    once per catalogue and pass to the engine to spare it per request."""
+    operands: dict[str, FloatArray | BoolArray] = {
+        name: optional([value(a) for a in actuators]) for name, value in CATALOGUE_OPERANDS.items()
+    }
+    has_zone = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
+    operands["has_zone"] = has_zone
+    # ranking_key after the verdict: T_max, then J_A (unknown last), then the model name;
+    # the column index mirrors sorted()'s stability for equal keys.
+    inf = math.inf
+    order = sorted(
+        range(len(actuators)),
+        key=lambda j: (
+            inf if actuators[j].max_torque_nm is None else actuators[j].max_torque_nm,
+            inf if actuators[j].inertia_kgm2 is None else actuators[j].inertia_kgm2,
+            actuators[j].model,
+            j,
+        ),
+    )
+    rank_position = np.empty(len(actuators), dtype=np.int32)
+    rank_position[order] = np.arange(len(actuators), dtype=np.int32)
+    slope = operands["no_load_torque_slope_nm_per_rpm"]
+    on_current = ~has_zone & ~np.isnan(operands["stall_torque_nm"])
+    return CatalogueArrays(
+        operands=operands,
+        thermal_time_constant=optional([a.thermal_time_constant_s for a in actuators]),
+        heating_slope=np.where(on_current, slope, math.nan),
+        zone_columns=np.flatnonzero(has_zone),
+        rank_position=rank_position,
+    )
