@@ -104,9 +104,13 @@ class Block:
         return worst
 
 
-def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, BoolArray]:
+def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, BoolArray, bool]:
     """Per actuator, the index of the first of ``rule``'s requirements the catalogue does
-    not meet (−1: none), and whether any requirement after the first is unmet.
+    not meet (−1: none), and whether any requirement after the first is unmet; and
+    whether the rule lacks data for every actuator (and cannot fail on its
+    :attr:`~actuator_selection.core.checks.Rule.lower_bound`): then its status is
+    ``no_data`` in every cell, decided without comparing (a one-model selection's checks
+    are often so).
 
     A requirement names catalogue values only (:class:`~actuator_selection.core.checks.
     Requirement`), so this is a fact about the actuators, computed once per catalogue
@@ -124,7 +128,10 @@ def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, 
         first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
         if k:
             others_missing = others_missing | lacking
-    found = cat.lacking[rule] = (first_missing, others_missing)
+    everywhere = bool((first_missing >= 0).all()) and (
+        rule.lower_bound is None or not bool(((first_missing == 0) & ~others_missing).any())
+    )
+    found = cat.lacking[rule] = (first_missing, others_missing, everywhere)
     return found
 
 
@@ -146,7 +153,19 @@ def _status_codes(
     Called with numpy's floating-point errors ignored: NaN where data is missing is
     masked here."""
     xp = ARRAY_OPS
-    first_missing, others_missing = _lacking(rule, q, cat)  # per actuator
+    first_missing, others_missing, everywhere = _lacking(rule, q, cat)  # per actuator
+    if everywhere:  # no data in every cell: only the value, which the check reports
+        codes = np.full(first_missing.shape, NO_DATA)
+        overload = np.zeros(first_missing.shape)
+        if not detail:
+            return codes, overload, None
+        arrays = _RuleArrays(
+            values=rule.value(q, xp),
+            limits=np.full(first_missing.shape, math.nan),
+            approximate=np.False_,
+            first_missing=first_missing,
+        )
+        return codes, overload, arrays
     value, limit = rule.value(q, xp), rule.limit(q, xp)
     # numpy's True, not Python's: ~True is −2, which would make the masks integers.
     within = np.True_ if rule.within is None else rule.within(q, xp)
@@ -162,9 +181,13 @@ def _status_codes(
     codes = np.where(missing, NO_DATA, np.where(ok, PASS, fail))  # cases × actuators
     if rule.lower_bound is not None:
         codes = np.where(floor_fails, FAIL, codes)
-    no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
-    over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
-    overload = np.where(codes == FAIL, over, 0.0)
+    failing = codes == FAIL
+    if failing.any():
+        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+        overload = np.where(failing, over, 0.0)
+    else:  # nothing fails: no overload (most cells of a selection)
+        overload = np.zeros(np.shape(codes))
     if not detail:
         return codes, overload, None
     approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing

@@ -91,7 +91,7 @@ class CatalogueArrays:
     """The columns of the actuators with a continuous-duty zone."""
     rank_position: npt.NDArray[np.int32]
     """Each actuator's place in the static order (T_max, J_A, model) that breaks ties."""
-    lacking: dict[Rule, tuple[CodeArray, BoolArray]] = dataclasses_field(default_factory=dict)
+    lacking: dict[Rule, tuple[CodeArray, BoolArray, bool]] = dataclasses_field(default_factory=dict)
     """Per rule, where the catalogue misses its requirements (``block.lacking``), filled
     when the rule is first evaluated against these actuators."""
 
