@@ -53,7 +53,7 @@ class Candidate:
 
 _CHECKS: Any = defer_field(Candidate, "checks")
 """A candidate's checks may be :class:`~actuator_selection.core.checks.DeferredChecks`
-(the vectorised flowchart's), built when first read."""
+(the engine's), built when first read."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -1,6 +1,6 @@
 """Fields of the core's frozen dataclasses that may be computed when first read.
 
-The vectorised flowchart (:mod:`actuator_selection.core.batch`) details thousands of
+The engine (:mod:`actuator_selection.core.engine`) details thousands of
 candidates per request, and most of that work is building the checks and writing their
 words, which an answer without the checks never shows. A field made deferrable here
 holds either its value or a :class:`Deferred` that computes it; reading the field

@@ -27,6 +27,8 @@ Application`; the outcome :class:`~actuator_selection.core.candidates.Candidate`
 
 Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here):
 
+>>> from actuator_selection.core.actuators import Actuator
+>>> from actuator_selection.core.cycle import Load, SpeedPattern
 >>> app = Application(
 ...     pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1),
 ...     load=Load(torque_nm=5, inertia_kgm2=1.3))
@@ -45,7 +47,6 @@ Worked example (Table 516.1, FHA-25C-50-L of Table 516.3, no zone published here
 
 from __future__ import annotations
 
-from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.application import Application, require_time_constant
 from actuator_selection.core.candidates import (
     VALUE_OF,
@@ -56,19 +57,15 @@ from actuator_selection.core.candidates import (
     size_key,
 )
 from actuator_selection.core.checks import INERTIA_RATIO_LIMIT, Check, Status
-from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.engine import evaluate, evaluate_each, select
 
 __all__ = [
     "INERTIA_RATIO_LIMIT",
     "VALUE_OF",
-    "Actuator",
     "Application",
     "Candidate",
     "Check",
-    "Load",
     "Selection",
-    "SpeedPattern",
     "Status",
     "Verdict",
     "evaluate",

@@ -67,7 +67,7 @@ class CatalogueSnapshot:
     _arrays: dict[tuple[str, ...], CatalogueArrays] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )
-    """The vectorised flowchart's catalogue arrays, per list of models asked for."""
+    """The engine's catalogue arrays, per list of models asked for."""
     _excluded_by_model: dict[str, int] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )

@@ -111,9 +111,8 @@ def utilisation(value: float | None, limit: float | None) -> float | None:
 
 
 class _Words(Deferred):
-    """A check's message not written yet (:meth:`Rule.report` with ``defer``): the
-    scalar flowchart's checks (:meth:`Rule.check`) are listed as numbers by a
-    selection's answer, which never reads their words; a candidate's detail does.
+    """A check's message not written yet (:meth:`Rule.report` with ``defer``): a check
+    listed as numbers never has its words read; a candidate's detail reads them.
     """
 
     __slots__ = ("_limit", "_missing", "_q", "_rule", "_status", "_value")
@@ -138,7 +137,7 @@ defer_field(Check, "message")
 
 
 class DeferredChecks(Deferred):
-    """A candidate's checks decided (by the vectorised flowchart) but not built yet:
+    """A candidate's checks decided (by the engine) but not built yet:
     :meth:`resolve` builds them all, :meth:`reasons` words only those that do not pass
     (a candidate's ``reasons``) without building them."""
 
@@ -203,8 +202,8 @@ def _new_check(
     """``Check(name=…, …)`` at two thirds of the cost, for :meth:`Rule.check`.
 
     The generated frozen ``__init__`` takes keywords and looks up ``object.__setattr__``
-    for each field; the scalar flowchart builds five checks for every actuator of every
-    case (a batch: five for each of 30,000 candidates). tests/core/test_checks.py keeps
+    for each field; the engine's candidates build eight checks each
+    (a batch: eight for each of 30,000 candidates). tests/core/test_checks.py keeps
     this equal to ``Check(...)``, field for field.
     """
     check: Check = _new_object(Check)
@@ -243,14 +242,14 @@ class Ops:
 
 
 FLOAT_OPS = Ops(where=_where, isnan=math.isnan, not_=operator.not_, sqrt=math.sqrt, pow=math.pow)
-"""The operations on Python floats, for the scalar flowchart."""
+"""The operations on Python floats: one cell's words, and the tests' plain-float oracle."""
 
 Formula = Callable[[Operands, Ops], Any]
 """A rule's formula: a :data:`Real` or a :data:`Truth`, from the operands."""
 Message = Callable[[Operands, Status, Any, Any], str]
 """A rule's message from (operands, status, value, limit); floats, the limit NaN where
 there is none. Called on floats only: by :meth:`Rule.report`, for one actuator and one
-case (the vectorised flowchart's candidates are reported one by one)."""
+case (the engine's candidates are reported one by one)."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -304,8 +303,8 @@ class Rule:
     :class:`Ops` ``xp``, on floats and on arrays alike; it must give the same IEEE result
     on both (the same operations in the same order) and must not raise on NaN operands
     (Python raises on a division by zero where numpy gives ±inf: keep divisors nonzero).
-    The scalar flowchart computes ``value`` even where data is missing, and reports it
-    unless it is NaN.
+    The engine computes ``value`` even where data is missing, and reports it unless it
+    is NaN.
     """
 
     name: str
@@ -392,7 +391,7 @@ class Rule:
     ) -> Check:
         """The check with its words (:meth:`words`), from a decision already taken: by
         :meth:`check` (with ``defer``: the words written when first read), or by the
-        vectorised flowchart for the candidates whose checks a batch lists.
+        engine for the candidates whose checks it lists.
 
         ``value`` and ``limit`` as the rule computed them (NaN where unknown or beyond a
         zone's last speed); ``missing``: the index into :attr:`requires` of the first

@@ -45,7 +45,7 @@ CHECK_NAMES = tuple(rule.name for rule in RULES)
 
 
 def _python_pow(x: Any, exponent: float) -> Any:
-    """``math.pow`` element by element: bit for bit what the scalar flowchart computes
+    """``math.pow`` element by element: bit for bit what Python's floats compute
     (numpy's power differs in the last bit for some inputs). The rules raise only case
     quantities to a power, so the arrays are one column of cases."""
     base = np.asarray(x, dtype=np.float64)
@@ -73,7 +73,7 @@ class _RuleArrays:
     array broadcasts to the block's shape (cases × actuators)."""
 
     values: FloatArray
-    """The value checked; NaN where unknown (the scalar reports None)."""
+    """The value checked; NaN where unknown (the check reports None)."""
     limits: FloatArray
     """The limit; NaN where there is none (no data, or beyond a zone's last speed)."""
     approximate: BoolArray | np.bool_
@@ -115,7 +115,7 @@ def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, 
     A requirement names catalogue values only (:class:`~actuator_selection.core.checks.
     Requirement`), so this is a fact about the actuators, computed once per catalogue
     and rule: six rules' requirements were a fifth of a whole-catalogue selection's
-    vectorised flowchart."""
+    engine."""
     found = cat.lacking.get(rule)
     if found is not None:
         return found
@@ -209,8 +209,8 @@ class _HeatingGains:
 
     τ_th is the actuator's catalogue value where published, else the case's (given or
     assumed). The gains are computed with ``math.expm1`` on Python floats
-    (:func:`~actuator_selection.core.motion.heating_gain`), as the scalar flowchart
-    computes them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
+    (:func:`~actuator_selection.core.motion.heating_gain`), as Python's floats
+    compute them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
     the distinct τ_th values are computed: the case's, and each published one.
     """
 
@@ -401,7 +401,7 @@ def evaluate_block(
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
         for k in range(p.duration.shape[1]):
             torques, square = _piece_torques(cat, p, k)
-            # ∫T² dt of the piece: its mean T² times its duration, as the scalar sums it.
+            # ∫T² dt of the piece: its mean T² times its duration, in the pieces' order.
             energy = energy + square * p.duration[:, k, col]
             if on_current:
                 square = _heating_square(cat, p, k, square)
@@ -433,7 +433,7 @@ def evaluate_block(
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
         thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares)
         thermal_speed = _thermal_speed(cases, gains)
-    unknown = np.isnan(cat.inertia)  # no J_A: no torques (the scalar's None)
+    unknown = np.isnan(cat.inertia)  # no J_A: no torques (the candidate's None)
     accel_torque = np.where(unknown, math.nan, accel)
     decel_torque = np.where(unknown, math.nan, decel)
     rms_torque = np.where(unknown, math.nan, rms_torque)

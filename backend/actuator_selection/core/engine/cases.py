@@ -118,7 +118,7 @@ def cases_of(apps: Sequence[Application]) -> Cases:
 
 def swing_of(cases: Cases) -> FloatArray:
     """Each case's swing (:func:`~actuator_selection.core.bearing.swing_deg`) where it has
-    an output load, NaN elsewhere, as the scalar flowchart's operands give it."""
+    an output load, NaN elsewhere, as the rules read it."""
     loaded = ~np.isnan(cases.output_load[:, 0])
     if not loaded.any():
         return np.full(cases.size, math.nan)

@@ -44,7 +44,7 @@ class TrapezoidColumns:
 
     A row those classes refuse is refused here with their error, its field named with
     the row (``speed_rpm.17``): the rules are theirs, checked for the whole column at
-    once and worded by the scalar classes for the first row that breaks one.
+    once and worded by the single-case classes for the first row that breaks one.
     """
 
     speed_rpm: FloatArray
@@ -84,7 +84,7 @@ class TrapezoidColumns:
         require_time_constant(self.thermal_time_constant_s)
 
     def _refuse(self, row: int, actuator_inertia: float | None = None) -> None:
-        """Raise the scalar flowchart's error for ``row`` (the cycle's, or its torques' with
+        """Raise the single case's error for ``row`` (the cycle's, or its torques' with
         ``actuator_inertia``), its field named with the row (``speed_rpm.17``)."""
         figures = {name: float(getattr(self, name)[row]) for name in _TRAPEZOID_FIELDS}
         try:
@@ -97,7 +97,7 @@ class TrapezoidColumns:
                 profile.torques(actuator_inertia)
         except InvalidInputError as exc:
             raise exc.moved(f"{exc.field}.{row}") from None
-        raise AssertionError(f"row {row} breaks no rule of the scalar flowchart")
+        raise AssertionError(f"row {row} breaks no rule of a single case")
 
     @property
     def size(self) -> int:
@@ -207,7 +207,7 @@ def rank_columns(
     finite = np.isfinite(accel) & np.isfinite(decel) & np.isfinite(rms)
     inertia = cat.inertia[actuator]
     finite |= np.isnan(inertia)  # no J_A: no torques (NaN), as a single selection's None
-    if not finite.all():  # a torque overflowed: the scalar's error names the input
+    if not finite.all():  # a torque overflowed: the single case's error names the input
         bad = int(np.argmin(finite))
         columns._refuse(int(case[bad]), float(inertia[bad]))
     figures = cases.figures

@@ -57,8 +57,8 @@ from actuator_selection.core.motion import figure_rows, profile_from
 class BatchEvaluation:
     """The flowchart for every case (rows) × actuator (columns), as arrays.
 
-    Torques are NaN where the actuator has no J_A (the scalar ``torques`` is None).
-    Every number equals, bit for bit, what the scalar functions give.
+    Torques are NaN where the actuator has no J_A (a candidate's ``torques`` is None).
+    Every number equals, bit for bit, what the plain-float oracle of the tests gives.
     """
 
     mean_speed_rpm: FloatArray
