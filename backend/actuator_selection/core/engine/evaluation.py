@@ -325,6 +325,7 @@ def select_batch(
     top: int = 3,
     models: Sequence[Collection[str] | None] | None = None,
     rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
 ) -> list[Selection]:
     """The best ``top`` candidates of every load case, ranked as :func:`select` ranks them.
 
@@ -351,7 +352,13 @@ def select_batch(
     rules = rules_of(apps, rules)
     selections = []
     ranked_cases = ranked_blocks(
-        actuators, cases_of(apps), top=top, models=models, rules=rules, detail=True
+        actuators,
+        cases_of(apps),
+        top=top,
+        models=models,
+        rules=rules,
+        detail=True,
+        arrays=arrays,
     )
     for ranked in ranked_cases:
         order, kept, figures, holding = (
@@ -453,3 +460,18 @@ def select(
     app.profile  # noqa: B018 - computed first: the engine takes the profile's figures
     (selection,) = select_batch(actuators, [app], top=len(actuators), rules=rules)
     return selection
+
+
+def evaluate_cases(
+    actuator: Actuator,
+    apps: Sequence[Application],
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> list[Candidate]:
+    """The candidate of one actuator for each of ``apps``: the engine's M × 1 view (the
+    inverse solve's probes, a batch of them at once)."""
+    if not apps:
+        return []
+    chosen = select_batch((actuator,), apps, top=1, rules=rules, arrays=arrays)
+    return [selection.candidates[0] for selection in chosen]
