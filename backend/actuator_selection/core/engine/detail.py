@@ -6,8 +6,7 @@ and limit, built, with their words, when first read."""
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
@@ -48,8 +47,7 @@ def detail_cells(
     shape = block.accel_torque.shape
 
     def cells(array: Any) -> list[Any]:
-        picked: list[Any] = np.broadcast_to(array, shape)[rows, columns].tolist()
-        return picked
+        return _picked(array, shape, rows, columns)
 
     codes = [np.broadcast_to(c, shape)[rows, columns] for c in block.statuses]
     not_passing: list[list[int]] = [[] for _ in range(rows.size)]
@@ -69,7 +67,8 @@ def detail_cells(
             for rule_codes, d in zip(codes, block.details, strict=True)
         ],
         not_passing,
-        [cells(operand) for operand in block.operands],
+        block.operands,
+        cells,
     )
     torques = zip(
         cells(block.accel_torque),
@@ -116,21 +115,46 @@ Column = tuple[list[int], list[float], list[float], list[bool], list[int]]
 approximations and first missing requirements (−1: none)."""
 
 
-@dataclass(frozen=True, slots=True, eq=False)
+def _picked(array: Any, shape: tuple[int, ...], rows: IndexArray, columns: IndexArray) -> list[Any]:
+    """The cells (``rows``, ``columns``) of ``array`` broadcast to ``shape`` (cases ×
+    actuators), as Python values: a column of cases, a row of actuators and a scalar
+    are indexed as they are, without broadcasting them first."""
+    a = np.asarray(array)
+    if a.ndim == 2 and a.shape[1] == 1 and shape[1] != 1:  # a column of cases
+        picked: list[Any] = a[rows, 0].tolist()
+    elif a.ndim == 1 and a.shape[0] == shape[1]:  # a row of actuators
+        picked = a[columns].tolist()
+    elif a.ndim == 0:
+        picked = [a.item()] * rows.size
+    else:
+        picked = np.broadcast_to(a, shape)[rows, columns].tolist()
+    return picked
+
+
 class _Decided:
     """The rules' decisions for the cells of a block that are detailed."""
 
-    rules: Sequence[Rule]
-    columns: list[Column]
-    not_passing: list[list[int]]
-    """Per cell, the indexes of the rules that do not pass, in order."""
-    operands: list[list[Any]]
-    """Each of :class:`Operands`' fields, cell by cell, as floats (or truths)."""
+    __slots__ = ("_cells", "_operands", "_source", "columns", "not_passing", "rules")
+
+    def __init__(
+        self,
+        rules: Sequence[Rule],
+        columns: list[Column],
+        not_passing: list[list[int]],
+        source: Operands,
+        cells: Callable[[Any], list[Any]],
+    ) -> None:
+        self.rules, self.columns, self.not_passing = rules, columns, not_passing
+        self._source, self._cells = source, cells
+        self._operands: list[list[Any]] | None = None
 
     def operands_of(self, cell: int) -> Operands:
         """What the rules computed from for ``cell``: needed only to word a check, so
-        built only for a candidate whose checks or reasons are read."""
-        return Operands._make([field[cell] for field in self.operands])
+        built only for a candidate whose checks or reasons are read (each of
+        :class:`Operands`' fields for every cell detailed, as floats, on the first)."""
+        if self._operands is None:
+            self._operands = [self._cells(operand) for operand in self._source]
+        return Operands._make([field[cell] for field in self._operands])
 
     def check(self, k: int, q: Operands, cell: int) -> Check:
         """Rule ``k``'s check of ``cell`` (its operands ``q``), with its words: a batch
