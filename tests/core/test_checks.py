@@ -1,4 +1,4 @@
-"""The rule table (core/checks.py): one definition of each check for both flowcharts."""
+"""The rules (core/checks/): one definition of each check, run by the engine and the oracle."""
 
 from __future__ import annotations
 

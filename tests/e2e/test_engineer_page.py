@@ -302,7 +302,8 @@ def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> 
     assert max(zone["y"]) == pytest.approx(stall)
     assert max(zone["x"]) == pytest.approx(edge)
     # where k_T and K_INL are published, the edge falls with speed as the winding current
-    # does: T_0 − k_T·K_INL(80 °C)·n at the speed limit (core/checks.py _continuous_limit)
+    # does: T_0 − k_T·K_INL(80 °C)·n at the speed limit (_continuous_limit of
+    # core/checks/rules/thermal.py)
     k_t = catalogue["torque_constant_nm_per_a"]
     k_inl = catalogue["no_load_current_constant_80c_a_per_rpm"]
     falls = catalogue["stall_torque_nm"] and k_t and k_inl

@@ -515,7 +515,8 @@ def no_load_torque_slope_nm_per_rpm(
     current, K_INL·n (Eq. 522.2), takes from a given winding current at each rpm (Eq. 522.3,
     T_out = k_T·(I − I_NLS − K_INL·n)); None where k_T or K_INL is not published.
 
-    For the continuous-duty edge at speed (``core/checks.py``, ``_continuous_limit``):
+    For the continuous-duty edge at speed (``_continuous_limit`` of
+    ``core/checks/rules/thermal.py``):
     continuous duty is the warm steady state, so K_INL at 80 °C where published (the
     actuator at operating temperature; the 30 °C value is the cold start's), else at 30 °C,
     the larger, on the safe side. CHA-25A-50 (k_T = 26 Nm/A, K_INL(80 °C) = 2·10⁻³ A/rpm):

@@ -172,7 +172,7 @@ def overload(status: Status, value: float | None, limit: float | None) -> float:
     further condition, such as n_av beyond n_max in the continuous check, is at its
     limit at least), and infinite where there is no limit to compare with (beyond a
     zone's last speed). The vectorised ranking computes the same
-    (:mod:`actuator_selection.core.batch`).
+    (:mod:`actuator_selection.core.engine`).
 
     >>> overload(Status.FAIL, 120.0, 100.0), overload(Status.PASS, 80.0, 100.0)
     (1.2, 0.0)
