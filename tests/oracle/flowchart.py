@@ -65,8 +65,8 @@ def operands(
     zone = actuator.zone
     n_av = profile.mean_speed_rpm
     zone_torque = None if zone is None else zone.torque_limit_nm(n_av)
-    # Positional, in the order of the fields (a test checks each): a third of the time
-    # that keywords take, for every actuator of every case.
+    # The oracle's own reading of the catalogue, independent of the engine's
+    # (CATALOGUE_OPERANDS): positional, in the order of the fields (a test checks each).
     return Operands(
         profile.peak_speed_rpm,
         profile.load.inertia_kgm2,
