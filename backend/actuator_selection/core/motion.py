@@ -312,7 +312,7 @@ class Profile:
 
     def torques(self, actuator_inertia_kgm2: float) -> CycleTorques:
         """T_1, T_2, T_3, T_rms for an actuator of inertia J_A, written operation for
-        operation like the vectorised flowchart's (``core/batch.py``)."""
+        operation like the vectorised flowchart's (``core/engine/``)."""
         j_a = actuator_inertia_kgm2
         energy = 0.0
         accel, accel_abs = 0.0, -1.0
@@ -379,7 +379,7 @@ class Profile:
         τ_th). The peak of x is at a piece's end (within a piece x moves monotonically
         towards m_k); its square root is returned. A cycle short against τ_th gives
         √x → T_rms (Eq. 514.2); a segment long against it gives its own torque.
-        Written operation for operation like the vectorised flowchart (``core/batch.py``).
+        Written operation for operation like the vectorised flowchart (``core/engine/``).
 
         With ``no_load_slope`` k_T·K_INL, the heating follows the winding current rather
         than the torque alone (Eq. 522.2, 522.3): a piece counts as its rms torque plus
@@ -443,7 +443,7 @@ class Profile:
         at a piece's end. A cycle short against τ_th gives n_av back; a run at k times a
         speed limit n_c from standstill crosses n_c after τ_th·ln(k/(k − 1)) (the linear
         counterpart of Fig. 520.1's model): 1.1·τ_th at k = 1.5. Written operation for
-        operation like the vectorised flowchart (``core/batch.py``).
+        operation like the vectorised flowchart (``core/engine/``).
 
         Parameters
         ----------

@@ -19,10 +19,10 @@ import numpy.typing as npt
 import orjson
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.batch import STATUS_BY_CODE, BatchEvaluation, FloatArray
 from actuator_selection.core.checks import Check, Rule
 from actuator_selection.core.drive import shared_voltage_check
 from actuator_selection.core.electrical import DcBusClass
+from actuator_selection.core.engine import STATUS_BY_CODE, BatchEvaluation, FloatArray
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.inverse import shortest_accel, shortest_pause
 from actuator_selection.core.motion import Profile
@@ -141,7 +141,7 @@ def _json_items(column: FloatArray) -> npt.NDArray[np.bytes_]:
 
 
 _STATUS_NAMES = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
-"""The API's status names by status code (:data:`~actuator_selection.core.batch.
+"""The API's status names by status code (:data:`~actuator_selection.core.engine.
 STATUS_BY_CODE`)."""
 _STATUS_JSON = np.array([orjson.dumps(s.value) for s in STATUS_BY_CODE], dtype=np.bytes_)
 """The API's status names as JSON strings, by status code."""
