@@ -1,4 +1,4 @@
-"""Command line: ``python -m actuator_selection {migrate,seed,serve}``."""
+"""Command line: ``python -m actuator_selection {migrate,seed,serve,worker}``."""
 
 from __future__ import annotations
 
@@ -122,6 +122,38 @@ def _serve(args: argparse.Namespace) -> int:
     return 0
 
 
+def _worker(args: argparse.Namespace) -> int:
+    import logging
+
+    from sqlalchemy.engine import make_url
+
+    from actuator_selection.api.messages import localizer
+    from actuator_selection.db.engine import make_engine, make_session_factory
+    from actuator_selection.job_queue import run_worker
+
+    if make_url(args.database_url).get_backend_name() != "postgresql":
+        print(
+            "worker: batch jobs need no worker on SQLite (the server computes them); "
+            "workers share a PostgreSQL database's queue (--database-url postgresql://…)",
+            file=sys.stderr,
+        )
+        return 2
+    logging.basicConfig(level=logging.INFO, format="%(asctime)s %(name)s %(message)s")
+    settings = get_settings()
+    engine = make_engine(args.database_url, settings.engine_limits())
+    try:
+        run_worker(
+            args.database_url,
+            make_session_factory(engine),
+            localizer,
+            concurrency=args.concurrency,
+            stalled_after_s=settings.job_stalled_after_s,
+        )
+    finally:
+        engine.dispose()
+    return 0
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Parse ``argv`` and run the command; returns the exit status."""
     settings = get_settings()
@@ -168,6 +200,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         "instead of the placeholder one",
     )
     serve.set_defaults(run=_serve)
+    worker = commands.add_parser(
+        "worker", help="compute batch jobs' chunks from the PostgreSQL queue (any number, anywhere)"
+    )
+    worker.add_argument(
+        "--concurrency", type=int, default=1, help="chunks computed at once (default 1)"
+    )
+    worker.set_defaults(run=_worker)
     args = parser.parse_args(argv)
     status: int = args.run(args)
     return status

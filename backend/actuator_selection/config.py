@@ -64,6 +64,15 @@ class Settings(BaseSettings):
     max_bulk_body_bytes: int = Field(default=32 << 20, ge=1024)
     """Largest body [bytes] of the bulk endpoints: batch selection, catalogue and price
     imports (20,000 batch cases are about 5 MB of JSON)."""
+    max_job_body_bytes: int = Field(default=256 << 20, ge=1024)
+    """Largest body [bytes] of a batch job (POST /batch-jobs): a million load cases as
+    JSON lines are about 130 MB."""
+    job_chunk_cases: int = Field(default=2000, ge=1, le=20_000)
+    """Load cases per chunk of a batch job: the unit a worker computes and writes at once
+    (2,000 cases with checks: about 1 s and 20 MB of JSON, 2 MB stored)."""
+    job_stalled_after_s: float = Field(default=10.0, gt=0)
+    """A worker that has not reported for this long [s] is taken for dead, and the chunk
+    it was computing is run again by another (it reports every third of this)."""
     body_timeout_s: float = Field(default=10.0, gt=0)
     """Longest time to receive a request's whole body [s], then 408; a request is admitted
     (``MAX_CONCURRENT_REQUESTS``) only once its body is in, so a slow client holds no place.

@@ -23,6 +23,7 @@ from actuator_selection.api import (
     controllers,
     errors,
     health,
+    jobs,
     mechanisms,
     media_types,
     methods,
@@ -37,9 +38,11 @@ from actuator_selection.api import (
     tools,
 )
 from actuator_selection.api.auth import require_reader
+from actuator_selection.api.messages import localizer
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.availability import Availability
 from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.job_queue import job_queue
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.link_secret import link_secret
 from actuator_selection.supervision import exit_with_supervisor
@@ -97,8 +100,13 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     Availability().watch(engine)  # one log line per outage and per recovery
 
     @asynccontextmanager
-    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        # batch jobs' chunks: procrastinate's queue (PostgreSQL) or a thread here (SQLite)
+        app.state.job_queue = job_queue(
+            settings.database_url, app.state.session_factory, app.state.catalogue, localizer
+        )
         yield
+        app.state.job_queue.close()
         engine.dispose()
 
     # Swagger UI (/docs) and ReDoc (/redoc) from the assets fastapi-offline ships: the
@@ -133,9 +141,21 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     bulk = {batch, admin, prices, profiles}
 
     def body_limit(module: ModuleType) -> int:
+        if module is jobs:  # a million cases as JSON lines
+            return settings.max_job_body_bytes
         return settings.max_bulk_body_bytes if module in bulk else settings.max_body_bytes
 
-    for module in (actuators, controllers, mechanisms, batch, selections, aas, profiles, tools):
+    for module in (
+        actuators,
+        controllers,
+        mechanisms,
+        batch,
+        jobs,
+        selections,
+        aas,
+        profiles,
+        tools,
+    ):
         app.include_router(
             module.router,
             prefix=API_PREFIX,
@@ -168,7 +188,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_queued=settings.max_queued_requests,
         timeout_s=settings.queue_timeout_s,
         body_timeout_s=settings.body_timeout_s,
-        max_body_bytes=max(settings.max_body_bytes, settings.max_bulk_body_bytes),
+        max_body_bytes=max(
+            settings.max_body_bytes, settings.max_bulk_body_bytes, settings.max_job_body_bytes
+        ),
     )
     # 405 and OPTIONS from the routes, not from the static mount; CORS where configured.
     app.add_middleware(methods.AllowedMethods, router=app.router, api_prefix=API_PREFIX)

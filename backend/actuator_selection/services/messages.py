@@ -34,6 +34,11 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     "length_mismatch": N_(
         "needs one value per load case: {cases}, as many as speed_rpm has, got {length}"
     ),
+    # Batch jobs (services/jobs.py)
+    "job_without_cases": N_("a batch job needs at least one load case, one JSON object a line"),
+    "unknown_job": N_("no batch job '{job_id}'"),
+    "job_finished": N_("the job is {state} already: only a queued or running job can be cancelled"),
+    "job_not_done": N_("the job is {state}: its results can be read once it is done"),
     # The catalogue (services/catalogue_admin.py) and what names it
     "unknown_actuator": N_("unknown actuator model '{model}'"),
     "unknown_controller_row": N_("no controller in row {row}"),

@@ -14,6 +14,7 @@ from actuator_selection.db.models.controllers import (
     SensorFittingRow,
     SensorPointRow,
 )
+from actuator_selection.db.models.jobs import BatchJobChunkRow, BatchJobResultRow, BatchJobRow
 from actuator_selection.db.models.profiles import ProfileRow
 from actuator_selection.db.models.sales import (
     ApiKeyRow,
@@ -31,6 +32,9 @@ __all__ = [
     "ActuatorRow",
     "ApiKeyRow",
     "Base",
+    "BatchJobChunkRow",
+    "BatchJobResultRow",
+    "BatchJobRow",
     "CatalogueStateRow",
     "ControllerRow",
     "DcBusClassRow",
