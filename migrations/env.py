@@ -11,6 +11,7 @@ from sqlalchemy import Connection
 
 from actuator_selection.config import get_settings
 from actuator_selection.db.engine import make_engine, normalise_url
+from actuator_selection.db.migrate import ours
 from actuator_selection.db.models import Base
 
 config = context.config
@@ -23,6 +24,7 @@ def _run(connection: Connection) -> None:
         target_metadata=target_metadata,
         render_as_batch=connection.dialect.name == "sqlite",
         compare_type=True,
+        include_name=ours,  # procrastinate's tables are its own (migration 0010)
     )
     with context.begin_transaction():
         context.run_migrations()

@@ -24,12 +24,29 @@ down_revision: str | None = "0009"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 
-_PROCRASTINATE_TABLES = (
-    "procrastinate_events",
-    "procrastinate_periodic_defers",
-    "procrastinate_jobs",
-    "procrastinate_workers",
-)
+_DROP_PROCRASTINATE = r"""
+DO $$
+DECLARE r record;
+BEGIN
+    FOR r IN SELECT tablename FROM pg_tables
+             WHERE schemaname = current_schema() AND tablename LIKE 'procrastinate\_%%' LOOP
+        EXECUTE format('DROP TABLE IF EXISTS %%I CASCADE', r.tablename);
+    END LOOP;
+    FOR r IN SELECT p.oid::regprocedure AS f FROM pg_proc p
+             JOIN pg_namespace n ON n.oid = p.pronamespace
+             WHERE n.nspname = current_schema() AND p.proname LIKE 'procrastinate\_%%' LOOP
+        EXECUTE 'DROP FUNCTION IF EXISTS ' || r.f || ' CASCADE';
+    END LOOP;
+    FOR r IN SELECT t.typname FROM pg_type t
+             JOIN pg_namespace n ON n.oid = t.typnamespace
+             WHERE n.nspname = current_schema() AND t.typname LIKE 'procrastinate\_%%'
+               AND t.typtype IN ('e', 'c') LOOP
+        EXECUTE format('DROP TYPE IF EXISTS %%I CASCADE', r.typname);
+    END LOOP;
+END $$;
+"""
+"""procrastinate's tables, functions and types (everything its schema names
+``procrastinate_…``), as ``%`` reaches the driver doubled."""
 
 
 def upgrade() -> None:
@@ -80,8 +97,7 @@ def upgrade() -> None:
 
 def downgrade() -> None:
     if op.get_bind().dialect.name == "postgresql":
-        for table in _PROCRASTINATE_TABLES:
-            op.execute(f"DROP TABLE IF EXISTS {table} CASCADE")
+        op.get_bind().exec_driver_sql(_DROP_PROCRASTINATE)
     op.drop_table("batch_job_results")
     op.drop_table("batch_job_chunks")
     op.drop_table("batch_jobs")

@@ -28,7 +28,7 @@ from sqlalchemy import (
 from sqlalchemy.orm import Session
 
 from actuator_selection.db.engine import make_engine
-from actuator_selection.db.migrate import alembic_config, upgrade
+from actuator_selection.db.migrate import alembic_config, ours, upgrade
 from actuator_selection.db.models import Base
 from actuator_selection.db.sales import QuoteRepository
 
@@ -51,7 +51,8 @@ def test_upgrade_from_empty_creates_every_table(
         assert set(Base.metadata.tables) <= tables
         assert "alembic_version" in tables
         with engine.connect() as conn:
-            diff = compare_metadata(MigrationContext.configure(conn), Base.metadata)
+            context = MigrationContext.configure(conn, opts={"include_name": ours})
+            diff = compare_metadata(context, Base.metadata)
         assert diff == [], f"models and migrations disagree: {diff}"
     finally:
         engine.dispose()

@@ -6,6 +6,7 @@ from __future__ import annotations
 import socket
 from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 from sqlalchemy import Engine, text
@@ -134,11 +135,14 @@ def test_two_workers_share_a_job_and_one_killed_mid_chunk_loses_nothing(
         first.kill()
         lost = _doing(d.engine, first_id)  # frozen: A will never finish them
         assert lost, "A was killed between two chunks"
-        assert first.process is not None and first.process.returncode == -9
+        assert first.process is not None
+        assert first.process.returncode == -9
         job = finished(client, location)
         assert job["state"] == "done", (job, second.log())
-        assert job["cases_done"] == CASES and job["chunks_done"] == CASES // CHUNK_CASES
-        assert job["progress"] == 1.0 and job["eta_s"] == 0
+        assert job["cases_done"] == CASES
+        assert job["chunks_done"] == CASES // CHUNK_CASES
+        assert job["progress"] == 1.0
+        assert job["eta_s"] == 0
         assert_each_case_once(result_cases(client, location), CASES)
     host = socket.gethostname()
     assert _writers(d.engine, lost) == {f"{host}:{second.pid}"}
@@ -160,8 +164,13 @@ def test_a_cancelled_job_stops_and_keeps_nothing(deploy: Deploy) -> None:
         # the queue drains: the chunks left find the job cancelled and write nothing
         with d.engine.connect() as conn:
             wait_for(
-                lambda: not conn.scalar(
-                    text("SELECT count(*) FROM procrastinate_jobs WHERE status IN ('todo','doing')")
+                lambda: (
+                    not conn.scalar(
+                        text(
+                            "SELECT count(*) FROM procrastinate_jobs "
+                            "WHERE status IN ('todo', 'doing')"
+                        )
+                    )
                 ),
                 "the queue to drain",
             )
@@ -210,7 +219,7 @@ def test_bad_job_requests_are_4xx_naming_the_field(deploy: Deploy) -> None:
     good = cases(3).splitlines()
     with server.client() as client:
 
-        def post(body: bytes, **params: object) -> tuple[int, list[dict[str, object]]]:
+        def post(body: bytes, **params: object) -> tuple[int, list[dict[str, Any]]]:
             r = client.post("/api/v1/batch-jobs", content=body, headers=NDJSON, params=params)
             return r.status_code, r.json()["detail"]
 

@@ -2,11 +2,21 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from alembic import command
 from alembic.config import Config
 from sqlalchemy import Connection
 
 from actuator_selection.config import REPO_ROOT
+
+QUEUE_TABLE_PREFIX = "procrastinate_"
+"""Tables of procrastinate's own schema (PostgreSQL, migration 0010): its, not our models'."""
+
+
+def ours(name: str | None, type_: str, _parents: Mapping[str, str | None]) -> bool:
+    """Alembic's ``include_name``: compare our tables only, not the task queue's."""
+    return not (type_ == "table" and name is not None and name.startswith(QUEUE_TABLE_PREFIX))
 
 
 def alembic_config(*, url: str | None = None, connection: Connection | None = None) -> Config:
