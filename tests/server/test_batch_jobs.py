@@ -219,7 +219,7 @@ def test_bad_job_requests_are_4xx_naming_the_field(deploy: Deploy) -> None:
     good = cases(3).splitlines()
     with server.client() as client:
 
-        def post(body: bytes, **params: object) -> tuple[int, list[dict[str, Any]]]:
+        def post(body: bytes, **params: int) -> tuple[int, list[dict[str, Any]]]:
             r = client.post("/api/v1/batch-jobs", content=body, headers=NDJSON, params=params)
             return r.status_code, r.json()["detail"]
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from typing import Any
 
 from alembic import command
 from alembic.config import Config
@@ -14,7 +14,7 @@ QUEUE_TABLE_PREFIX = "procrastinate_"
 """Tables of procrastinate's own schema (PostgreSQL, migration 0010): its, not our models'."""
 
 
-def ours(name: str | None, type_: str, _parents: Mapping[str, str | None]) -> bool:
+def ours(name: str | None, type_: str, _parents: Any) -> bool:
     """Alembic's ``include_name``: compare our tables only, not the task queue's."""
     return not (type_ == "table" and name is not None and name.startswith(QUEUE_TABLE_PREFIX))
 
