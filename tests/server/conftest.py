@@ -26,6 +26,7 @@ import pytest
 from sqlalchemy import Engine
 from tests import worked_example
 from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST, create_keys, load_example_prices
+from tests.server.jobs_harness import Worker, registered_workers, wait_for
 
 from actuator_selection.config import REPO_ROOT, SEED_DIR
 from actuator_selection.db.engine import make_engine, make_session_factory
@@ -202,3 +203,62 @@ def stored_selection(client: httpx.Client, **changes: Any) -> str:
     assert response.status_code == 201, response.text
     selection_id: str = response.json()["id"]
     return selection_id
+
+
+CHUNK_CASES = 100
+"""``JOB_CHUNK_CASES`` of the servers a :class:`Deployment` starts."""
+
+
+class Deployment:
+    """Servers and workers on one fresh seeded database; all stopped at the end."""
+
+    def __init__(self, url: str, tmp_path: Path) -> None:
+        self.url = url
+        self.tmp_path = tmp_path
+        self.keys, self.engine = seeded_database(url)
+        self.servers: list[LiveServer] = []
+        self.workers: list[Worker] = []
+
+    def server(self, **env: str) -> LiveServer:
+        server = LiveServer(
+            database_url=self.url,
+            log_path=self.tmp_path / f"server-{len(self.servers)}.log",
+            keys=self.keys,
+            env={"JOB_CHUNK_CASES": str(CHUNK_CASES), **env},
+        )
+        self.servers.append(server)
+        server.start()
+        return server
+
+    def worker(self) -> Worker:
+        """A started worker, once procrastinate has registered it."""
+        before = len(registered_workers(self.engine))
+        worker = Worker(self.url, self.tmp_path / f"worker-{len(self.workers)}.log")
+        self.workers.append(worker)
+        worker.start()
+        wait_for(lambda: len(registered_workers(self.engine)) > before, "the worker to register")
+        return worker
+
+    def close(self) -> None:
+        for worker in self.workers:
+            worker.stop()
+        for server in self.servers:
+            server.stop()
+        self.engine.dispose()
+
+
+Deploy = Callable[[str], Deployment]
+
+
+@pytest.fixture
+def deploy(new_database: Callable[[str], str], tmp_path: Path) -> Iterator[Deploy]:
+    """``deploy(backend)``: a :class:`Deployment` on a fresh database of ``backend``."""
+    made: list[Deployment] = []
+
+    def make(backend: str) -> Deployment:
+        made.append(Deployment(new_database(backend), tmp_path))
+        return made[-1]
+
+    yield make
+    for deployment in made:
+        deployment.close()

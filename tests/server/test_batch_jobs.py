@@ -4,16 +4,12 @@ killed mid-chunk, every case answered exactly once; cancel; SQLite in the server
 from __future__ import annotations
 
 import socket
-from collections.abc import Callable, Iterator
-from pathlib import Path
 from typing import Any
 
-import pytest
 from sqlalchemy import Engine, text
-from tests.server.conftest import LiveServer, seeded_database
+from tests.server.conftest import CHUNK_CASES, Deploy
 from tests.server.jobs_harness import (
     NDJSON,
-    Worker,
     assert_each_case_once,
     cases,
     finished,
@@ -24,62 +20,6 @@ from tests.server.jobs_harness import (
 )
 
 CASES = 3000
-CHUNK_CASES = 100
-
-
-class Deployment:
-    """Servers and workers on one fresh seeded database; all stopped at the end."""
-
-    def __init__(self, url: str, tmp_path: Path) -> None:
-        self.url = url
-        self.tmp_path = tmp_path
-        self.keys, self.engine = seeded_database(url)
-        self.servers: list[LiveServer] = []
-        self.workers: list[Worker] = []
-
-    def server(self, **env: str) -> LiveServer:
-        server = LiveServer(
-            database_url=self.url,
-            log_path=self.tmp_path / f"server-{len(self.servers)}.log",
-            keys=self.keys,
-            env={"JOB_CHUNK_CASES": str(CHUNK_CASES), **env},
-        )
-        self.servers.append(server)
-        server.start()
-        return server
-
-    def worker(self) -> Worker:
-        """A started worker, once procrastinate has registered it."""
-        before = len(registered_workers(self.engine))
-        worker = Worker(self.url, self.tmp_path / f"worker-{len(self.workers)}.log")
-        self.workers.append(worker)
-        worker.start()
-        wait_for(lambda: len(registered_workers(self.engine)) > before, "the worker to register")
-        return worker
-
-    def close(self) -> None:
-        for worker in self.workers:
-            worker.stop()
-        for server in self.servers:
-            server.stop()
-        self.engine.dispose()
-
-
-Deploy = Callable[[str], Deployment]
-
-
-@pytest.fixture
-def deploy(new_database: Callable[[str], str], tmp_path: Path) -> Iterator[Deploy]:
-    """``deploy(backend)``: a :class:`Deployment` on a fresh database of ``backend``."""
-    made: list[Deployment] = []
-
-    def make(backend: str) -> Deployment:
-        made.append(Deployment(new_database(backend), tmp_path))
-        return made[-1]
-
-    yield make
-    for deployment in made:
-        deployment.close()
 
 
 def _doing(engine: Engine, worker_id: int) -> list[int]:
