@@ -75,6 +75,7 @@ bench: install
 	$(BIN)/python -m bench.page
 	$(BIN)/python -m bench.http
 	$(BIN)/python -m bench.profile
+	$(BIN)/python -m bench.jobs
 
 ## A longer fuzz run than the suite's (not part of `make test`): schemathesis gives every
 ## operation FUZZ_MAX_EXAMPLES requests and walks the OpenAPI links in stateful chains of

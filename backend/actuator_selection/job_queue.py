@@ -27,6 +27,7 @@ from procrastinate.types import JSONValue
 from sqlalchemy.engine import make_url
 from sqlalchemy.orm import Session, sessionmaker
 
+from actuator_selection.db.engine import EngineLimits, make_engine, make_session_factory
 from actuator_selection.schemas.checks import Localize
 from actuator_selection.services import jobs
 from actuator_selection.services.catalogue import CatalogueCache
@@ -95,11 +96,14 @@ class InProcessQueue:
 
     def __init__(
         self,
-        factory: sessionmaker[Session],
+        database_url: str,
         catalogue: CatalogueCache,
         localizer: Callable[[str], Localize],
     ) -> None:
-        self._factory = factory
+        # An engine of its own: the thread reads and writes committed state only, as a
+        # worker elsewhere would, never a request's transaction.
+        self._engine = make_engine(database_url, EngineLimits(pool_size=2))
+        factory = self._factory = make_session_factory(self._engine)
         self._catalogue = catalogue
         self._localizer = localizer
         self._wake = threading.Event()
@@ -129,6 +133,7 @@ class InProcessQueue:
         self._wake.set()
         if self._thread is not None:
             self._thread.join(30)
+        self._engine.dispose()
 
     def _run(self) -> None:
         while not self._stop.is_set():
@@ -148,15 +153,12 @@ class InProcessQueue:
 
 
 def job_queue(
-    database_url: str,
-    factory: sessionmaker[Session],
-    catalogue: CatalogueCache,
-    localizer: Callable[[str], Localize],
+    database_url: str, catalogue: CatalogueCache, localizer: Callable[[str], Localize]
 ) -> JobQueue:
     """procrastinate's queue on PostgreSQL, the in-process one otherwise."""
     if make_url(database_url).get_backend_name() == "postgresql":
         return ProcrastinateQueue(database_url)
-    return InProcessQueue(factory, catalogue, localizer)
+    return InProcessQueue(database_url, catalogue, localizer)
 
 
 def run_worker(

@@ -102,9 +102,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         # batch jobs' chunks: procrastinate's queue (PostgreSQL) or a thread here (SQLite)
-        app.state.job_queue = job_queue(
-            settings.database_url, app.state.session_factory, app.state.catalogue, localizer
-        )
+        app.state.job_queue = job_queue(settings.database_url, app.state.catalogue, localizer)
         yield
         app.state.job_queue.close()
         engine.dispose()

@@ -24,6 +24,7 @@ longer exploratory run; ``FUZZ_RANDOM=1`` draws new ones each run.
 from __future__ import annotations
 
 import io
+import json
 import os
 import zipfile
 from collections.abc import Iterator
@@ -40,6 +41,7 @@ from schemathesis.checks import not_a_server_error
 from schemathesis.specs.openapi.checks import response_schema_conformance
 from sqlalchemy import Connection, Engine
 from sqlalchemy.orm import Session, sessionmaker
+from tests import worked_example
 from tests.api._sales_fixtures import create_keys, load_example_prices
 
 from actuator_selection.config import SEED_DIR, Settings
@@ -121,7 +123,20 @@ def price_csvs(draw: st.DrawFn) -> bytes:
     return _mutated_csv(draw, text).encode()
 
 
+@st.composite
+def job_cases(draw: st.DrawFn) -> bytes:
+    """A batch job's body (POST /batch-jobs): the worked example as JSON lines, a few
+    times, one line perhaps broken."""
+    line = json.dumps(worked_example.request()).encode()
+    lines = [line] * draw(st.integers(min_value=1, max_value=3))
+    if draw(st.booleans()):
+        k = draw(st.integers(min_value=0, max_value=len(lines) - 1))
+        lines[k] = draw(st.binary(max_size=40))
+    return b"\n".join(lines) + b"\n"
+
+
 schemathesis.openapi.media_type("application/zip", st.one_of(st.binary(), catalogue_zips()))
+schemathesis.openapi.media_type("application/x-ndjson", st.one_of(st.binary(), job_cases()))
 schemathesis.openapi.media_type("text/csv", st.one_of(st.binary(), price_csvs()))
 # An IDTA 02021 record (POST /selections/from-aas): bytes, zips among them.
 schemathesis.openapi.media_type(
