@@ -21,6 +21,7 @@ import signal
 import subprocess
 import sys
 import time
+from typing import Any
 
 import httpx
 import pydantic_core
@@ -42,8 +43,16 @@ def _body(n: int) -> bytes:
     for first in range(0, n, BLOCK):
         apps = random_cases(min(BLOCK, n - first), seed=first)
         for i, app in enumerate(apps, start=first):
-            body += pydantic_core.to_json({**http_case(app), "case_id": str(i)}) + b"\n"
+            case = {**_rounded(http_case(app)), "case_id": str(i)}
+            body += pydantic_core.to_json(case) + b"\n"
     return bytes(body)
+
+
+def _rounded(value: Any) -> Any:
+    """``value`` with every float to 4 decimals, as an ERP would send its figures."""
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    return round(value, 4) if isinstance(value, float) else value
 
 
 def _worker(url: str) -> subprocess.Popen[bytes]:
@@ -69,7 +78,8 @@ def main() -> None:
     processes: list[subprocess.Popen[bytes]] = []
     try:
         starter_catalogue(url)
-        server, base = _serve(url, {"MAX_JOB_BODY_BYTES": str(1 << 30)})
+        # the body is received whole before the request is admitted: give it time and room
+        server, base = _serve(url, {"MAX_JOB_BODY_BYTES": str(1 << 30), "BODY_TIMEOUT_S": "600"})
         processes.append(server)
         workers = [_worker(url) for _ in range(WORKERS)]
         processes += workers
