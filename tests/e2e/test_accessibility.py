@@ -127,6 +127,22 @@ def test_number_fields_with_their_reading_and_a_refusal(axe_page: Page) -> None:
     assert violations(page) == [], "a number's reading and a refused number"
 
 
+def test_the_batch_jobs_page_with_a_job_and_a_refusal(axe_page: Page) -> None:
+    page = axe_page
+    page.goto("/jobs.html")
+    page.wait_for_selector("#job-form")
+    assert violations(page) == [], "an empty form"
+    page.fill("#job-example-count", "20")
+    page.click("#job-example")
+    page.click("#job-submit")
+    page.wait_for_selector("#job-results:not([hidden])", timeout=120_000)
+    assert violations(page) == [], "a job done"
+    page.fill("#job-cases", "")
+    page.click("#job-submit")
+    page.wait_for_selector("#job-error .notice")
+    assert violations(page) == [], "a refused job"
+
+
 def test_the_sales_pages_key_prompt(axe_page: Page) -> None:
     page = axe_page
     page.goto("/sales.html")
