@@ -4,6 +4,9 @@ killed mid-chunk, every case answered exactly once; cancel; SQLite in the server
 from __future__ import annotations
 
 import socket
+import subprocess
+import sys
+from pathlib import Path
 from typing import Any
 
 from sqlalchemy import Engine, text
@@ -18,6 +21,8 @@ from tests.server.jobs_harness import (
     submit,
     wait_for,
 )
+
+from actuator_selection.config import REPO_ROOT
 
 CASES = 3000
 
@@ -186,3 +191,19 @@ def test_bad_job_requests_are_4xx_naming_the_field(deploy: Deploy) -> None:
         assert (missing.status_code, missing.json()["detail"][0]["code"]) == (404, "unknown_job")
         assert client.delete("/api/v1/batch-jobs/no-such-job").status_code == 404
         assert client.get("/api/v1/batch-jobs", params={}).status_code in (404, 405)
+
+
+def test_the_worker_command_refuses_sqlite_saying_the_server_computes_jobs(
+    tmp_path: Path,
+) -> None:
+    url = f"sqlite:///{tmp_path / 'db.sqlite3'}"
+    done = subprocess.run(
+        [sys.executable, "-m", "actuator_selection", "--database-url", url, "worker"],
+        cwd=REPO_ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert done.returncode == 2
+    assert "the server computes them" in done.stderr
