@@ -33,6 +33,9 @@ def test_a_job_submitted_on_the_page_runs_to_done_with_its_progress_bar(
     assert [json.loads(line)["case_id"] for line in lines] == [
         f"example-{i + 1}" for i in range(600)
     ]
+    csv_href = page.locator("#job-results-csv").get_attribute("href")
+    assert csv_href == f"{href}?format=csv"
+    assert httpx.get(f"{base_url}{csv_href}").text.startswith("case,case_id,")
     assert not traffic.console_errors
 
 

@@ -3,6 +3,8 @@ killed mid-chunk, every case answered exactly once; cancel; SQLite in the server
 
 from __future__ import annotations
 
+import csv
+import io
 import socket
 import subprocess
 import sys
@@ -159,6 +161,18 @@ def test_on_sqlite_the_server_computes_the_job(deploy: Deploy) -> None:
         assert_each_case_once(results, 500)
         assert all(len(r["candidates"]) == 2 for r in results)
         assert all("checks" not in c for r in results for c in r["candidates"])
+        table = client.get(f"{location}/results", params={"format": "csv"})
+        assert table.status_code == 200, table.text
+        assert table.headers["content-type"].startswith("text/csv")
+        rows = list(csv.DictReader(io.StringIO(table.text)))
+        assert len(rows) == 500 * 2
+        expected = [
+            (str(r["case"]), r["case_id"], str(rank), c["model"], c["verdict"])
+            for r in results
+            for rank, c in enumerate(r["candidates"], start=1)
+        ]
+        columns = ("case", "case_id", "rank", "model", "verdict")
+        assert [tuple(row[k] for k in columns) for row in rows] == expected
 
 
 def test_bad_job_requests_are_4xx_naming_the_field(deploy: Deploy) -> None:

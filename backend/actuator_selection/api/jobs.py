@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import AsyncIterator
 from email.message import Message
-from typing import Any
+from typing import Any, Literal
 
 import anyio
 from fastapi import APIRouter, Query, Request, Response
@@ -189,21 +189,32 @@ def get_batch_job(job_id: str, session: SessionDep) -> dict[str, Any]:
         200: {
             "description": "one line per case in the order sent: `case` (its line's index) "
             "and its result as in POST /selections/batch's `results`",
-            "content": {NDJSON: {}},
+            "content": {NDJSON: {}, "text/csv": {}},
         },
         404: {"description": "no such job"},
         409: {"description": "the job is not done"},
     },
 )
-def get_batch_job_results(job_id: str, request: Request, session: SessionDep) -> Response:
-    """A done job's answers as JSON lines, streamed."""
+def get_batch_job_results(
+    job_id: str,
+    request: Request,
+    session: SessionDep,
+    format: Literal["jsonl", "csv"] = Query(
+        "jsonl",
+        description="`jsonl`: each case's result as one JSON line; `csv`: a row per "
+        "candidate with the case's and the candidate's figures",
+    ),
+) -> Response:
+    """A done job's answers as JSON lines or CSV, streamed."""
     job = jobs.get_job(session, job_id)
     jobs.require_done(job)
     session.commit()
+    lines = jobs.result_lines(request.app.state.session_factory, job)
+    body, media_type = (jobs.result_csv(lines), "text/csv") if format == "csv" else (lines, NDJSON)
     return StreamingResponse(
-        jobs.result_lines(request.app.state.session_factory, job),
-        media_type=NDJSON,
-        headers={"Content-Disposition": f'attachment; filename="batch-job-{job.id}.jsonl"'},
+        body,
+        media_type=media_type,
+        headers={"Content-Disposition": f'attachment; filename="batch-job-{job.id}.{format}"'},
     )
 
 

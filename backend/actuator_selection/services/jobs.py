@@ -16,6 +16,8 @@ slow) is written by the first to finish; the other's answer is dropped.
 
 from __future__ import annotations
 
+import csv
+import io
 import os
 import socket
 import uuid
@@ -33,6 +35,7 @@ from actuator_selection.db.engine import begin_write
 from actuator_selection.db.models.jobs import BatchJobChunkRow, BatchJobResultRow, BatchJobRow
 from actuator_selection.schemas.batch import BatchCaseIn, BatchSelectionRequest
 from actuator_selection.schemas.checks import Localize
+from actuator_selection.schemas.selections import CandidateFigures
 from actuator_selection.services.batch import size_batch
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 from actuator_selection.services.errors import UseCaseError, conflict, entry, not_found
@@ -214,6 +217,35 @@ def result_lines(factory: sessionmaker[Session], job: BatchJobRow) -> Iterator[b
         if data is None:  # deleted while it was read
             return
         yield zlib.decompress(data)
+
+
+CSV_CASE_FIELDS = ("case", "case_id", "cycle_time_s", "mean_speed_rpm", "duty_cycle_percent")
+"""The CSV's columns of the case (the JSON lines' names)."""
+CSV_CANDIDATE_FIELDS = ("rank", *CandidateFigures.model_fields, "controllers_excluded")
+"""The CSV's columns of each candidate: its rank in the case (1 the best), and the figures
+every form of a candidate states first."""
+
+
+def result_csv(lines: Iterator[bytes]) -> Iterator[bytes]:
+    """:func:`result_lines` as CSV, a row per candidate (a case without one: a row with
+    its candidate's columns empty), chunk by chunk."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow((*CSV_CASE_FIELDS, *CSV_CANDIDATE_FIELDS))
+    for chunk in lines:
+        for line in chunk.splitlines():
+            result = pydantic_core.from_json(line)
+            case = [result[name] for name in CSV_CASE_FIELDS]
+            candidates = result["candidates"] or [None]
+            for rank, candidate in enumerate(candidates, start=1):
+                if candidate is None:
+                    writer.writerow(case)
+                else:
+                    figures = [candidate[name] for name in CSV_CANDIDATE_FIELDS[1:]]
+                    writer.writerow((*case, rank, *figures))
+        yield buffer.getvalue().encode()
+        buffer.seek(0)
+        buffer.truncate()
 
 
 WORKER_NAME = f"{socket.gethostname()}:{os.getpid()}"

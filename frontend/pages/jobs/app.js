@@ -104,9 +104,11 @@ function show(/** @type {any} */ job) {
   status.replaceChildren(parts.join(" · "));
   if (job.error) status.append(" ", h("span", { lang: "en" }, job.error));
   el("job-cancel").hidden = ENDED.includes(job.state);
-  const results = el("job-results");
-  results.hidden = job.state !== "done";
-  if (job.state === "done" && state.location) results.href = `${state.location}/results`;
+  for (const [id, query] of [["job-results", ""], ["job-results-csv", "?format=csv"]]) {
+    const link = el(id);
+    link.hidden = job.state !== "done";
+    if (job.state === "done" && state.location) link.href = `${state.location}/results${query}`;
+  }
 }
 
 async function cancel() {
