@@ -186,9 +186,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_queued=settings.max_queued_requests,
         timeout_s=settings.queue_timeout_s,
         body_timeout_s=settings.body_timeout_s,
-        max_body_bytes=max(
-            settings.max_body_bytes, settings.max_bulk_body_bytes, settings.max_job_body_bytes
-        ),
+        max_body_bytes=max(settings.max_body_bytes, settings.max_bulk_body_bytes),
+        larger_bodies=((f"{API_PREFIX}/batch-jobs", settings.max_job_body_bytes),),
     )
     # 405 and OPTIONS from the routes, not from the static mount; CORS where configured.
     app.add_middleware(methods.AllowedMethods, router=app.router, api_prefix=API_PREFIX)

@@ -177,7 +177,7 @@ def test_on_sqlite_the_server_computes_the_job(deploy: Deploy) -> None:
 
 def test_bad_job_requests_are_4xx_naming_the_field(deploy: Deploy) -> None:
     d = deploy("sqlite")
-    server = d.server()
+    server = d.server(MAX_JOB_BODY_BYTES="4096")
     good = cases(3).splitlines()
     with server.client() as client:
 
@@ -185,6 +185,8 @@ def test_bad_job_requests_are_4xx_naming_the_field(deploy: Deploy) -> None:
             r = client.post("/api/v1/batch-jobs", content=body, headers=NDJSON, params=params)
             return r.status_code, r.json()["detail"]
 
+        status, detail = post(cases(40))  # 5.5 kB
+        assert (status, detail[0]["type"]) == (413, "body_too_large"), detail
         status, detail = post(b"")
         assert (status, detail[0]["code"]) == (422, "job_without_cases")
         status, detail = post(good[0] + b'\n{"load": {"speed_rpm": -1}}\n' + good[1])

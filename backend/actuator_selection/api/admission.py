@@ -12,7 +12,8 @@ A request is admitted only once its body is in. The body is received first, whol
 within ``body_timeout_s`` (else 408, and the connection is closed), and replayed to
 the application from memory: a client that sends its headers and then dribbles the
 body holds no place and makes no one wait. Bodies declared larger than
-``max_body_bytes`` (the largest route limit) are not received here; their route
+``max_body_bytes`` (the largest route limit; ``larger_bodies`` names the paths with a
+larger one, the batch jobs') are not received here; their route
 answers 413 from the declared length. Receiving happens before admission, so it is
 not bounded by the number of places: in front of the service, a reverse proxy that
 buffers request bodies (nginx does by default) bounds it by its own limits.
@@ -44,6 +45,7 @@ class AdmissionControl:
         timeout_s: float,
         body_timeout_s: float,
         max_body_bytes: int,
+        larger_bodies: tuple[tuple[str, int], ...] = (),
         prefix: str = "/api/",
     ) -> None:
         self.app = app
@@ -52,6 +54,7 @@ class AdmissionControl:
         self._timeout_s = timeout_s
         self._body_timeout_s = body_timeout_s
         self._max_body_bytes = max_body_bytes
+        self._larger_bodies = larger_bodies  # (path prefix, its limit): batch jobs
         self._prefix = prefix
         self._slots: anyio.Semaphore | None = None  # made in the server's event loop
         self._queued = 0
@@ -96,8 +99,12 @@ class AdmissionControl:
         Stops early past ``max_body_bytes``: the route refuses the body (413) as it reads
         on, so no more of it is held here.
         """
+        limit = next(
+            (n for prefix, n in self._larger_bodies if scope["path"].startswith(prefix)),
+            self._max_body_bytes,
+        )
         declared = Headers(scope=scope).get("content-length", "")
-        if declared.isdigit() and int(declared) > self._max_body_bytes:
+        if declared.isdigit() and int(declared) > limit:
             return []
         messages: list[Message] = []
         size = 0
@@ -108,7 +115,7 @@ class AdmissionControl:
                 if message["type"] != "http.request" or not message.get("more_body", False):
                     return messages
                 size += len(message.get("body", b""))
-                if size > self._max_body_bytes:
+                if size > limit:
                     return messages
         return None
 
