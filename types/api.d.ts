@@ -281,6 +281,90 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/batch-jobs": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Create Batch Job
+         * @description Accepts a batch of any size as a job: the body is JSON lines, each a load case exactly as one of POST /selections/batch's `cases`. Every case is checked before the job is stored; the job is then split into chunks that workers compute (GET the `Location` for the progress, GET its `/results` once done).
+         */
+        post: operations["create_batch_job"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs/{job_id}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Batch Job
+         * @description A batch job's state, progress and expected time to finish.
+         */
+        get: operations["get_batch_job"];
+        put?: never;
+        post?: never;
+        /**
+         * Delete Batch Job
+         * @description Delete a job with its cases and answers; a running one stops.
+         */
+        delete: operations["delete_batch_job"];
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs/{job_id}/results": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Batch Job Results
+         * @description A done job's answers as JSON lines or CSV, streamed.
+         */
+        get: operations["get_batch_job_results"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs/{job_id}/cancel": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Cancel Batch Job
+         * @description Stop a queued or running job; its cases and partial answers are dropped.
+         */
+        post: operations["cancel_batch_job"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/selections": {
         parameters: {
             query?: never;
@@ -1573,6 +1657,72 @@ export interface components {
              * @description the client's own id of each case (an order position, say), as long as `speed_rpm`; answered as `cases.case_id`
              */
             case_id?: string[] | null;
+        };
+        /**
+         * BatchJobOut
+         * @description A batch job: where it stands.
+         */
+        BatchJobOut: {
+            /** Id */
+            id: string;
+            /**
+             * State
+             * @description `queued` (no chunk started), `running`, `done` (every answer written, `results` can be read), `failed` (`error` says why) or `cancelled`
+             * @enum {string}
+             */
+            state: "queued" | "running" | "done" | "failed" | "cancelled";
+            /**
+             * Cases
+             * @description load cases of the job
+             */
+            cases: number;
+            /**
+             * Cases Done
+             * @description cases whose answers are written
+             */
+            cases_done: number;
+            /**
+             * Chunks
+             * @description chunks the cases were split into (the unit a worker computes)
+             */
+            chunks: number;
+            /** Chunks Done */
+            chunks_done: number;
+            /**
+             * Progress
+             * @description cases_done / cases
+             */
+            progress: number;
+            /**
+             * Eta S
+             * @description seconds until done at the pace so far (time per case since the first chunk started × cases left); null before a chunk is done, 0 once done
+             */
+            eta_s: number | null;
+            /** Top */
+            top: number;
+            /** Include Checks */
+            include_checks: boolean;
+            /**
+             * Catalogue Version
+             * @description the catalogue's version when the job was accepted
+             */
+            catalogue_version: number;
+            /**
+             * Catalogue Versions
+             * @description the versions the chunks done were computed against (one, unless the catalogue changed while the job ran)
+             */
+            catalogue_versions: number[];
+            /**
+             * Created At
+             * Format: date-time
+             */
+            created_at: string;
+            /** Started At */
+            started_at: string | null;
+            /** Finished At */
+            finished_at: string | null;
+            /** Error */
+            error: string | null;
         };
         /**
          * BatchResultOut
@@ -6402,6 +6552,426 @@ export interface operations {
                 };
             };
             /** @description a value outside its rule (`loc` names the column and the case's index), columns of unequal lengths, or a limit exceeded */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    create_batch_job: {
+        parameters: {
+            query?: {
+                /** @description best candidates answered per case */
+                top?: number;
+                /** @description true adds each candidate's `checks` */
+                include_checks?: boolean;
+            };
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /** @example {"load":{"speed_rpm":40,"torque_nm":5,"inertia_kgm2":1.3},"cycle":{"accel_s":0.1,"constant_s":0.1,"decel_s":0.1,"pause_s":1.0}} */
+                "application/x-ndjson": components["schemas"]["BatchCaseIn"];
+            };
+        };
+        responses: {
+            /** @description accepted; `Location` names the job, which workers now compute */
+            202: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchJobOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the request conflicts with the resource's state, or a concurrent change wrote the same record first (nothing was changed; send it again) */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a body that is not JSON lines */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description an invalid case (`loc` names its line, from 0), or no case */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_batch_job: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                job_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchJobOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no such job */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    delete_batch_job: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                job_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            204: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content?: never;
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no such job */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the request conflicts with the resource's state, or a concurrent change wrote the same record first (nothing was changed; send it again) */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_batch_job_results: {
+        parameters: {
+            query?: {
+                /** @description `jsonl`: each case's result as one JSON line; `csv`: a row per candidate with the case's and the candidate's figures */
+                format?: "jsonl" | "csv";
+            };
+            header?: never;
+            path: {
+                job_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description one line per case in the order sent: `case` (its line's index) and its result as in POST /selections/batch's `results` */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/x-ndjson": unknown;
+                    "text/csv": unknown;
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no such job */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the job is not done */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    cancel_batch_job: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                job_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchJobOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no such job */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the job has ended */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
             422: {
                 headers: {
                     [name: string]: unknown;

@@ -39,7 +39,7 @@ from actuator_selection.schemas.selections import CandidateFigures
 from actuator_selection.services.batch import size_batch
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 from actuator_selection.services.errors import UseCaseError, conflict, entry, not_found
-from actuator_selection.services.selections import dump_json
+from actuator_selection.services.presenters.selection import dump_json
 
 ACTIVE = ("queued", "running")
 """States of a job whose chunks are still to be computed."""

@@ -7,8 +7,8 @@ applied here so that ``migrate`` sets up everything; a later procrastinate whose
 changes gets a migration of ours applying its ``sql/migrations`` files. SQLite runs jobs
 in the server process and needs no queue tables.
 
-Revision ID: 0010_batch_jobs
-Revises: 0009
+Revision ID: 0013
+Revises: 0012
 Create Date: 2026-11-27
 """
 
@@ -19,8 +19,8 @@ from collections.abc import Sequence
 import sqlalchemy as sa
 from alembic import op
 
-revision: str = "0010_batch_jobs"
-down_revision: str | None = "0009"
+revision: str = "0013"
+down_revision: str | None = "0012"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 
