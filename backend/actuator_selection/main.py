@@ -30,6 +30,7 @@ from actuator_selection.api import (
     openapi,
     prices,
     profiles,
+    projects,
     quotes,
     security_headers,
     selections,
@@ -153,6 +154,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         aas,
         profiles,
         tools,
+        projects,
     ):
         app.include_router(
             module.router,

@@ -69,7 +69,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import Polynomial
 
-from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.electrical import line_resistance_from_phase_ohm
+from actuator_selection.core.errors import InvalidInputError, MissingDataError
 from actuator_selection.core.motion import Piece, Profile
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
 
@@ -111,6 +113,37 @@ class Motor:
             and self.no_load_starting_current_a is not None
             and self.no_load_current_constant_a_per_rpm is not None
         )
+
+
+def motor_of(actuator: Actuator) -> Motor:
+    """The :class:`Motor` of a catalogue actuator; "no data" (422) where J_A is not published (its
+    torque over the cycle, Eq. 514.1, needs it).
+
+    R_LL is the catalogue's line-to-line value, else 2·R_ph from the phase value
+    (:func:`~actuator_selection.core.electrical.line_resistance_from_phase_ohm`, a star
+    winding); K_INL is the 80 °C value where published, else the 30 °C one: the power of a
+    running machine is that of the warm actuator, as the continuous check takes it
+    (:func:`~actuator_selection.core.electrical.no_load_torque_slope_nm_per_rpm`).
+    """
+    if actuator.inertia_kgm2 is None:
+        raise MissingDataError(
+            "model",
+            f"no data: {actuator.model} publishes no J_A, so its torque over the cycle "
+            "(Eq. 514.1) and its power cannot be computed",
+        )
+    r_line = actuator.resistance_line_ohm
+    if r_line is None and actuator.resistance_phase_ohm is not None:
+        r_line = line_resistance_from_phase_ohm(actuator.resistance_phase_ohm)
+    k_80 = actuator.no_load_current_constant_80c_a_per_rpm
+    return Motor(
+        inertia_kgm2=actuator.inertia_kgm2,
+        torque_constant_nm_per_a=actuator.torque_constant_nm_per_a,
+        resistance_line_ohm=r_line,
+        no_load_starting_current_a=actuator.no_load_starting_current_a,
+        no_load_current_constant_a_per_rpm=(
+            k_80 if k_80 is not None else actuator.no_load_current_constant_30c_a_per_rpm
+        ),
+    )
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -16,6 +16,7 @@ from actuator_selection.db.models.controllers import (
 )
 from actuator_selection.db.models.jobs import BatchJobChunkRow, BatchJobResultRow, BatchJobRow
 from actuator_selection.db.models.profiles import ProfileRow
+from actuator_selection.db.models.projects import ProjectRow
 from actuator_selection.db.models.sales import (
     ApiKeyRow,
     PriceListRow,
@@ -41,6 +42,7 @@ __all__ = [
     "PriceListRow",
     "PriceRow",
     "ProfileRow",
+    "ProjectRow",
     "QuoteCounterRow",
     "QuoteItemRow",
     "QuoteRow",
