@@ -294,6 +294,7 @@ def test_the_created_answers_are_known() -> None:
         "create_batch",
         "create_controller",
         "create_profile",
+        "create_project",
         "create_quote",
         "create_selection",
         "create_selection_from_aas",
