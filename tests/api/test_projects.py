@@ -11,6 +11,8 @@ import pytest
 from fastapi.testclient import TestClient
 from tests.api.test_mechanism_selections import PICK_AND_PLACE
 
+from actuator_selection.schemas.projects import ProjectOut
+
 API = "/api/v1/projects"
 
 VERTICAL_BELT: dict[str, Any] = {"name": "Z", "offset_s": 0.0, **PICK_AND_PLACE}
@@ -108,6 +110,8 @@ def test_a_three_axis_pick_and_place_gives_peak_regeneration_and_a_braking_resis
     assert phasing["worst_peak_w"] >= power["peak_w"]
     assert len(answer["curve"]["axes_w"]) == 3
     assert len(answer["curve"]["times_s"]) == len(answer["curve"]["axes_w"][0])
+    # the presenter writes its contract: the model reads it and writes the same JSON
+    assert ProjectOut.model_validate(answer).model_dump(mode="json") == answer
     # stored: read back unchanged
     again = client.get(f"{API}/{answer['id']}")
     assert again.status_code == 200

@@ -14,7 +14,6 @@ import gzip
 import uuid
 from collections.abc import Callable
 from contextlib import AbstractContextManager
-from dataclasses import asdict
 from datetime import datetime
 from typing import Any
 
@@ -22,36 +21,22 @@ import orjson
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.bus import (
-    SIGMAS,
-    PowerFigures,
     axis_power,
     braking_resistor,
     capacitor,
     machine_bus,
     motor_of,
-    sample_curve,
 )
-from actuator_selection.core.errors import DomainError, NotFoundError
+from actuator_selection.core.errors import DomainError, MissingDataError, NotFoundError
 from actuator_selection.db.projects import ProjectRepository, StoredProject
 from actuator_selection.schemas.projects import ProjectRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
-from actuator_selection.services.selections import STORE_COMPRESSION, dump_json, size_selection
+from actuator_selection.services.presenters.project import axis_body, project_answer
+from actuator_selection.services.presenters.selection import dump_json
+from actuator_selection.services.selections import STORE_COMPRESSION, size_selection
 
 JSON = dict[str, Any]
 Writer = Callable[[], AbstractContextManager[Session]]
-
-PHASING_METHOD = (
-    "worst case: every axis's own peak at one instant (Σ max P_i, the largest any offsets "
-    f"give); statistical: μ + {SIGMAS:g}σ of the bus power at a random instant with "
-    "independent phases uniform over the cycle (μ = Σ μ_i, σ² = Σ σ_i², exact; the "
-    "quantile by the normal approximation)"
-)
-
-
-def _power(f: PowerFigures) -> JSON:
-    out = {k: v for k, v in asdict(f).items() if k not in ("cycle_s", "variance_w2")}
-    out["std_w"] = f.variance_w2**0.5
-    return out
 
 
 def _pick(candidates: list[JSON], catalogue: CatalogueSnapshot) -> JSON:
@@ -78,70 +63,37 @@ def size_project(
             app = axis.to_core()
             models = [axis.model] if axis.model is not None else axis.models
             sized = size_selection(axis, app, catalogue.actuators_of(models), catalogue, updated_at)
-            candidates = orjson.loads(sized.answer)["candidates"]
-            chosen = _pick(candidates, catalogue)
-            actuator = catalogue.actuators_of([chosen["model"]])[0]
+            candidate = _pick(orjson.loads(sized.answer)["candidates"], catalogue)
+            actuator = catalogue.actuators_of([candidate["model"]])[0]
             power = axis_power(app.profile, motor_of(actuator))
         except DomainError as exc:
             raise exc.moved(f"axes.{k}.{exc.field}") from None
         powers.append(power)
         offsets.append(axis.offset_s)
-        energies = power.energies_j()
-        axes_out.append(
-            {
-                "name": axis.name,
-                "offset_s": axis.offset_s,
-                "model": actuator.model,
-                "chosen": axis.model is not None,
-                "verdict": chosen["verdict"],
-                "gear_ratio": actuator.gear_ratio,
-                "accel_torque_nm": chosen["accel_torque_nm"],
-                "decel_torque_nm": chosen["decel_torque_nm"],
-                "rms_torque_nm": chosen["rms_torque_nm"],
-                "copper_loss_published": power.copper_loss_published,
-                "no_load_loss_published": power.no_load_loss_published,
-                "energies": {f"{name}_j": value for name, value in energies.items()},
-                "power": _power(power.figures()),
-            }
-        )
+        axes_out.append(axis_body(axis, actuator, candidate, power))
     bus = machine_bus(powers, offsets)
-    nominal = next(
-        b.nominal_voltage_v for b in catalogue.buses if b.bus_class == body.bus.bus_class
-    )
+    nominal = {b.bus_class: b.nominal_voltage_v for b in catalogue.buses}.get(body.bus.bus_class)
+    if nominal is None:
+        raise MissingDataError(
+            "bus.bus_class", f"no data: the catalogue has no voltage for {body.bus.bus_class}"
+        )
     cap = capacitor(
         capacitance_f=None if body.bus.capacitance_uf is None else body.bus.capacitance_uf * 1e-6,
         nominal_voltage_v=nominal,
         max_voltage_v=body.bus.max_voltage_v,
         pulse_energy_j=bus.figures.regen_pulse_energy_j,
     )
-    resistor = braking_resistor(bus.figures, cap, body.bus.chopper_voltage_v)
-    times, values = sample_curve(bus)
-    phasing = asdict(bus.phasing)
-    return {
-        "id": id,
-        "created_at": created_at,
-        "updated_at": updated_at,
-        "catalogue_version": catalogue.version,
-        "request": body.model_dump(mode="json"),
-        "cycle_time_s": bus.cycle_s,
-        "axes": axes_out,
-        "bus": {
-            "bus_class": body.bus.bus_class.value,
-            "nominal_voltage_v": nominal,
-            "power": _power(bus.figures),
-            "capacitor": {
-                "capacitance_uf": body.bus.capacitance_uf,
-                "nominal_voltage_v": cap.nominal_voltage_v,
-                "max_voltage_v": cap.max_voltage_v,
-                "energy_j": cap.energy_j,
-                "absorbs_every_pulse": cap.absorbs_every_pulse,
-                "reference": cap.reference,
-            },
-            "braking_resistor": {**asdict(resistor), "min_resistance_ohm": None},
-            "random_phasing": {**phasing, "method": PHASING_METHOD},
-        },
-        "curve": {"times_s": times, "axes_w": values},
-    }
+    return project_answer(
+        id=id,
+        created_at=created_at,
+        updated_at=updated_at,
+        catalogue_version=catalogue.version,
+        body=body,
+        axes=axes_out,
+        bus=bus,
+        cap=cap,
+        resistor=braking_resistor(bus.figures, cap, body.bus.chopper_voltage_v),
+    )
 
 
 def _stored(answer: JSON, request: ProjectRequest) -> StoredProject:

@@ -10,6 +10,7 @@ POST /selections, GET …/{id}  :mod:`.selection`           ``SelectionOut``
 GET …/candidates/{model}      :mod:`.detail`              ``CandidateDetailOut``
 POST /selections/batch        :mod:`.batch`               ``BatchResultOut``
 POST /selections/limits, …    :mod:`.limits`              ``LimitsOut``
+POST, PUT, GET /projects/…    :mod:`.project`             ``ProjectOut``
 ============================  ==========================  ===========================
 
 The selection and batch presenters build plain JSON data rather than model instances
