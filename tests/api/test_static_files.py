@@ -142,7 +142,11 @@ def _module_graph(entry: str) -> set[str]:
 
 @pytest.mark.parametrize(
     ("page", "entry"),
-    [("index.html", "/pages/engineer/app.js"), ("sales.html", "/pages/sales/app.js")],
+    [
+        ("index.html", "/pages/engineer/app.js"),
+        ("sales.html", "/pages/sales/app.js"),
+        ("projects.html", "/pages/projects/app.js"),
+    ],
 )
 def test_pages_load_their_module_and_preload_its_whole_graph(page: str, entry: str) -> None:
     head = _head(page)
@@ -152,9 +156,10 @@ def test_pages_load_their_module_and_preload_its_whole_graph(page: str, entry: s
     assert len(head.preloads) == len(set(head.preloads))
 
 
-def test_engineer_page_names_the_served_bundle_after_its_module() -> None:
+@pytest.mark.parametrize("page", ["index.html", "projects.html"])
+def test_chart_pages_name_the_served_bundle_after_their_module(page: str) -> None:
     """Deferred, after the module: fetched with the page, run once the form is set up."""
-    scripts = _head("index.html").scripts
+    scripts = _head(page).scripts
     bundles = [s for s in scripts if "data-plotly" in s]
     assert bundles == [{"defer": None, "data-plotly": None, "src": static.PLOTLY_URL}]
     assert scripts.index(bundles[0]) > next(
