@@ -127,9 +127,7 @@ def motor_of(actuator: Actuator) -> Motor:
     """
     if actuator.inertia_kgm2 is None:
         raise MissingDataError(
-            "model",
-            f"no data: {actuator.model} publishes no J_A, so its torque over the cycle "
-            "(Eq. 514.1) and its power cannot be computed",
+            "model", code="no_inertia_for_power", params={"model": actuator.model}
         )
     r_line = actuator.resistance_line_ohm
     if r_line is None and actuator.resistance_phase_ohm is not None:
@@ -436,8 +434,8 @@ def machine_bus(axes: Sequence[AxisPower], offsets_s: Sequence[float]) -> Bus:
         if not math.isclose(a.cycle_s, cycle, rel_tol=1e-9):
             raise InvalidInputError(
                 f"axes.{k}.cycle",
-                f"the axis's cycle lasts {a.cycle_s:g} s, the machine's {cycle:g} s: "
-                "all axes run on one machine cycle",
+                code="axis_cycle_differs",
+                params={"cycle_s": round(a.cycle_s, 9), "machine_s": round(cycle, 9)},
             )
     for k, o in enumerate(offsets_s):
         if not math.isfinite(o) or o < 0:
@@ -531,7 +529,9 @@ def capacitor(
         )
     if max_voltage_v <= nominal_voltage_v:
         raise InvalidInputError(
-            "bus.max_voltage_v", "must be above the bus class's nominal voltage"
+            "bus.max_voltage_v",
+            code="bus_voltage_not_above_nominal",
+            params={"nominal_v": nominal_voltage_v},
         )
     energy = 0.5 * capacitance_f * (max_voltage_v**2 - nominal_voltage_v**2)
     return Capacitor(

@@ -79,6 +79,18 @@ MESSAGES: Final[Mapping[str, str]] = {
         "the profile changes direction {count} times; a cycle holds at most {max} segments"
     ),
     "profile_not_resolved": N_("names a profile that was not read"),
+    # Several axes on one DC bus (core/bus.py)
+    "axis_cycle_differs": N_(
+        "the axis's cycle lasts {cycle_s} s, the machine's {machine_s} s: all axes of a "
+        "project run on one machine cycle"
+    ),
+    "bus_voltage_not_above_nominal": N_(
+        "must be above the bus class's nominal voltage of {nominal_v} V"
+    ),
+    "no_inertia_for_power": N_(
+        "no data: {model} publishes no J_A, so its torque over the cycle (Eq. 514.1) and "
+        "its power cannot be computed"
+    ),
     "speed_required": N_("is required with the t_1…t_p cycle"),
     "speed_with_segments": N_("must be left out with segments: they give the speeds"),
     "duration_or_accel": N_("give either duration_s or accel"),
