@@ -227,6 +227,29 @@ def test_random_phasing_worst_case_bounds_every_alignment_and_is_reached() -> No
     assert worst.statistical_peak_w < worst.worst_peak_w
 
 
+def test_motor_of_a_catalogue_actuator() -> None:
+    """R per phase becomes 2·R_ph line-to-line (star); K_INL at 80 °C where published."""
+    from actuator_selection.core.actuators import Actuator
+    from actuator_selection.core.bus import motor_of
+    from actuator_selection.core.errors import MissingDataError
+
+    base = {"model": "X-1", "family": "X", "gear_ratio": 50.0, "max_torque_nm": 10.0}
+    a = Actuator(
+        **base,
+        inertia_kgm2=0.2,
+        torque_constant_nm_per_a=26.0,
+        resistance_phase_ohm=2.6,
+        no_load_starting_current_a=0.19,
+        no_load_current_constant_30c_a_per_rpm=6e-3,
+        no_load_current_constant_80c_a_per_rpm=2e-3,
+    )
+    m = motor_of(a)
+    assert m.resistance_line_ohm == 5.2
+    assert m.no_load_current_constant_a_per_rpm == 2e-3
+    with pytest.raises(MissingDataError):
+        motor_of(Actuator(**base))
+
+
 def test_capacitor_and_braking_resistor() -> None:
     motor, motion = _hand_axis()
     bus = machine_bus([axis_power(profile_of(motion), motor)], [0.0])
@@ -255,5 +278,17 @@ def test_capacitor_and_braking_resistor() -> None:
         pulse_energy_j=f.regen_pulse_energy_j,
     )
     assert big.absorbs_every_pulse
+    # a capacitance that takes part of the pulse leaves the rest to the resistor
+    part = capacitor(
+        capacitance_f=1e-4,
+        nominal_voltage_v=320,
+        max_voltage_v=390,
+        pulse_energy_j=f.regen_pulse_energy_j,
+    )
+    assert part.energy_j is not None
+    assert 0 < part.energy_j < f.regen_pulse_energy_j
+    rest = braking_resistor(f, part, chopper_voltage_v=390)
+    assert rest.pulse_energy_j == pytest.approx(f.regen_pulse_energy_j - part.energy_j)
+    assert rest.continuous_power_w == pytest.approx((f.regen_energy_j - part.energy_j) / 3.0)
     assert not braking_resistor(f, big, chopper_voltage_v=None).needed
     assert braking_resistor(f, no_data, chopper_voltage_v=None).max_resistance_ohm is None

@@ -267,6 +267,8 @@ class PowerFigures:
     """The largest energy of one pulse of regeneration (a run of P < 0, around the cycle's
     end where it wraps), 0 where none is."""
     regen_pulses: int
+    regen_pulse_energies_j: tuple[float, ...]
+    """The energy of each pulse, in the order of the cycle."""
     variance_w2: float
     """Variance of P at a random instant of the cycle [W²]."""
 
@@ -313,6 +315,7 @@ def figures_of(stretches: Sequence[Stretch], cycle_s: float) -> PowerFigures:
         regen_peak_w=max(-least, 0.0),
         regen_pulse_energy_j=max((p[2] for p in pulses), default=0.0),
         regen_pulses=len(pulses),
+        regen_pulse_energies_j=tuple(p[2] for p in pulses),
         variance_w2=max(square / cycle_s - mean * mean, 0.0),
     )
 
@@ -568,9 +571,9 @@ def braking_resistor(
     pulse = max(figures.regen_pulse_energy_j - absorbed, 0.0)
     needed = figures.regen_energy_j > 0 and not cap.absorbs_every_pulse
     peak = figures.regen_peak_w if needed else 0.0
-    # every pulse's energy beyond the capacitance, per cycle (the largest pulse bounds it)
+    # every pulse's energy beyond what the capacitance absorbs, per cycle
     continuous = (
-        max(figures.regen_energy_j - absorbed * figures.regen_pulses, 0.0) / figures.cycle_s
+        sum(max(e - absorbed, 0.0) for e in figures.regen_pulse_energies_j) / figures.cycle_s
         if needed
         else 0.0
     )

@@ -30,7 +30,11 @@ PHASING_METHOD = (
 
 
 def _power(f: PowerFigures) -> JSON:
-    out = {k: v for k, v in asdict(f).items() if k not in ("cycle_s", "variance_w2")}
+    out = {
+        k: v
+        for k, v in asdict(f).items()
+        if k not in ("cycle_s", "variance_w2", "regen_pulse_energies_j")
+    }
     out["std_w"] = f.variance_w2**0.5
     return out
 
