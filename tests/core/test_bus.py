@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -233,9 +234,11 @@ def test_motor_of_a_catalogue_actuator() -> None:
     from actuator_selection.core.bus import motor_of
     from actuator_selection.core.errors import MissingDataError
 
-    base = {"model": "X-1", "family": "X", "gear_ratio": 50.0, "max_torque_nm": 10.0}
     a = Actuator(
-        **base,
+        model="X-1",
+        family="X",
+        gear_ratio=50.0,
+        max_torque_nm=10.0,
         inertia_kgm2=0.2,
         torque_constant_nm_per_a=26.0,
         resistance_phase_ohm=2.6,
@@ -247,7 +250,7 @@ def test_motor_of_a_catalogue_actuator() -> None:
     assert m.resistance_line_ohm == 5.2
     assert m.no_load_current_constant_a_per_rpm == 2e-3
     with pytest.raises(MissingDataError):
-        motor_of(Actuator(**base))
+        motor_of(dataclasses.replace(a, inertia_kgm2=None))
 
 
 def test_capacitor_and_braking_resistor() -> None:
