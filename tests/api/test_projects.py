@@ -24,7 +24,7 @@ HORIZONTAL_RACK: dict[str, Any] = {
     "load": {
         "type": "rack_pinion",
         "mass_kg": 12.0,
-        "pinion_diameter_mm": 40,
+        "pinion_diameter_mm": 80,
         "friction_coefficient": 0.05,
         "efficiency": 0.95,
     },
@@ -81,6 +81,7 @@ def test_a_three_axis_pick_and_place_gives_peak_regeneration_and_a_braking_resis
     answer = created(client, PICK_AND_PLACE_CELL)
     assert answer["cycle_time_s"] == pytest.approx(2.4)
     assert [a["name"] for a in answer["axes"]] == ["Z", "X", "C"]
+    assert [a["verdict"] for a in answer["axes"]] == ["suitable"] * 3
     bus = answer["bus"]
     assert bus["nominal_voltage_v"] == 560
     power = bus["power"]

@@ -50,7 +50,7 @@ const EXAMPLE = {
       name: "X",
       offset_s: 0.9,
       case: {
-        load: { type: "rack_pinion", mass_kg: 12, pinion_diameter_mm: 40, friction_coefficient: 0.05, efficiency: 0.95 },
+        load: { type: "rack_pinion", mass_kg: 12, pinion_diameter_mm: 80, friction_coefficient: 0.05, efficiency: 0.95 },
         cycle: {
           segments: [
             { speed: 600, duration_s: 0.2 },
