@@ -714,6 +714,74 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/projects": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * List Projects
+         * @description Stored projects in brief, oldest first, a page at a time.
+         */
+        get: operations["list_projects"];
+        put?: never;
+        /**
+         * Create Project
+         * @description Sizes every axis as POST /selections would (its chosen model, else the first candidate that publishes J_A), sums their electrical power on the DC bus over the machine cycle with their offsets, and stores the project.
+         */
+        post: operations["create_project"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/projects/{project_id}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Project
+         * @description A stored project, as it was last sized.
+         */
+        get: operations["get_project"];
+        /**
+         * Edit Project
+         * @description Replace a project's axes and bus, sized again and stored in place.
+         */
+        put: operations["edit_project"];
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/projects/{project_id}/size": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Size Project Again
+         * @description Size a stored project again against the catalogue as it is now, stored in place.
+         */
+        post: operations["size_project_again"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/auth/me": {
         parameters: {
             query?: never;
@@ -1304,6 +1372,112 @@ export interface components {
              * @description give as `cursor` for the next page; null: this is the last page
              */
             next_cursor: string | null;
+        };
+        /**
+         * AxisIn
+         * @description One axis: a selection request with its name, offset and chosen actuator.
+         * @example {
+         *       "cycle": {
+         *         "accel_s": 0.1,
+         *         "constant_s": 0.1,
+         *         "decel_s": 0.1,
+         *         "pause_s": 1
+         *       },
+         *       "load": {
+         *         "inertia_kgm2": 1.3,
+         *         "speed_rpm": 40,
+         *         "torque_nm": 5
+         *       },
+         *       "name": "X",
+         *       "offset_s": 0
+         *     }
+         */
+        AxisIn: {
+            /** Load */
+            load: components["schemas"]["DirectLoad"] | components["schemas"]["BallScrewLoad"] | components["schemas"]["RotaryTableLoad"] | components["schemas"]["BallScrewInclineIn"] | components["schemas"]["BeltIn"] | components["schemas"]["RackPinionIn"] | components["schemas"]["ConveyorIn"] | components["schemas"]["LiftIn"] | components["schemas"]["RotaryIn"];
+            /** Cycle */
+            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"] | components["schemas"]["ProfileCycleIn"];
+            /**
+             * High Dynamics
+             * @description J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise; omitted: true
+             */
+            high_dynamics?: boolean;
+            /**
+             * Brake
+             * @description the actuator is fitted with its holding brake: its holding torque is checked against T_L at standstill (check `brake_holding`); omitted: false
+             */
+            brake?: boolean;
+            /** Models */
+            models?: string[] | null;
+            /**
+             * Drive
+             * @description size the drive's current too: peak motor current against I_max (Eq. 522.2, 522.3) with the energy braking returns; the output voltage with the inductive drop against the best controller listed for the actuator (Eq. 521.2, Table 521.1) is checked with or without it; omitted: false
+             */
+            drive?: boolean;
+            /** @description an external load on the output flange: checks the output bearing's tilting moment, static safety and (with required_life_h) L_10 life; omitted: the output bearing is not checked */
+            output_load?: components["schemas"]["OutputLoadIn"] | null;
+            /**
+             * Thermal Time Constant S
+             * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
+             */
+            thermal_time_constant_s?: number | null;
+            /**
+             * Name
+             * @description the axis's name, e.g. Z; omitted: ""
+             */
+            name?: string;
+            /**
+             * Offset S
+             * @description when the axis's cycle starts on the machine cycle [s] (taken modulo t_0); omitted: 0.0
+             */
+            offset_s?: number;
+            /**
+             * Model
+             * @description the chosen actuator; omitted: the first candidate of the axis's selection that publishes J_A
+             */
+            model?: string | null;
+        };
+        /**
+         * AxisOut
+         * @description One axis sized: its actuator, its selection's figures and its power.
+         */
+        AxisOut: {
+            /** Name */
+            name: string;
+            /** Offset S */
+            offset_s: number;
+            /** Model */
+            model: string;
+            /**
+             * Chosen
+             * @description the engineer chose the model (else: best candidate)
+             */
+            chosen: boolean;
+            /**
+             * Verdict
+             * @description the actuator's verdict in the axis's selection
+             */
+            verdict: string;
+            /** Gear Ratio */
+            gear_ratio: number;
+            /** Accel Torque Nm */
+            accel_torque_nm: number | null;
+            /** Decel Torque Nm */
+            decel_torque_nm: number | null;
+            /** Rms Torque Nm */
+            rms_torque_nm: number | null;
+            /**
+             * Copper Loss Published
+             * @description k_T and R are published: the copper loss is in the power
+             */
+            copper_loss_published: boolean;
+            /**
+             * No Load Loss Published
+             * @description k_T, I_NLS and K_INL are published: the no-load loss is in the power
+             */
+            no_load_loss_published: boolean;
+            energies: components["schemas"]["EnergiesOut"];
+            power: components["schemas"]["PowerOut"];
         };
         /**
          * BallScrewInclineIn
@@ -2005,11 +2179,75 @@ export interface components {
             changes: components["schemas"]["BindingChangeOut"][];
         };
         /**
+         * BrakingResistorOut
+         * @description The braking resistor the regeneration needs.
+         */
+        BrakingResistorOut: {
+            /** Needed */
+            needed: boolean;
+            /** Peak Power W */
+            peak_power_w: number;
+            /** Continuous Power W */
+            continuous_power_w: number;
+            /** Pulse Energy J */
+            pulse_energy_j: number;
+            /** Chopper Voltage V */
+            chopper_voltage_v: number | null;
+            /**
+             * Max Resistance Ohm
+             * @description R ≤ U_ch²/P_peak; null: no data
+             */
+            max_resistance_ohm: number | null;
+            /**
+             * Min Resistance Ohm
+             * @description the chopper's minimum resistance (drive data sheet): no data
+             */
+            min_resistance_ohm?: number | null;
+            /** Reference */
+            reference: string;
+        };
+        /**
          * BusClass
          * @description The DC bus voltage classes of Table 521.1 (seed column ``bus_<value>``).
          * @enum {string}
          */
         BusClass: "24vdc" | "320vdc" | "560vdc";
+        /**
+         * BusIn
+         * @description The shared DC bus.
+         */
+        BusIn: {
+            /** @description the DC bus class of Table 521.1 */
+            bus_class: components["schemas"]["BusClass"];
+            /**
+             * Capacitance Uf
+             * @description the bus capacitance of all drives on the bus [µF], from their data sheets; omitted: the capacitor result says no data
+             */
+            capacitance_uf?: number | null;
+            /**
+             * Max Voltage V
+             * @description the highest bus voltage the drives allow before they brake or trip [V] (data sheet); omitted: no data
+             */
+            max_voltage_v?: number | null;
+            /**
+             * Chopper Voltage V
+             * @description the braking chopper's switching voltage U_ch [V] (data sheet); omitted: the resistance says no data
+             */
+            chopper_voltage_v?: number | null;
+        };
+        /**
+         * BusOut
+         * @description The shared bus over the machine cycle.
+         */
+        BusOut: {
+            bus_class: components["schemas"]["BusClass"];
+            /** Nominal Voltage V */
+            nominal_voltage_v: number;
+            power: components["schemas"]["PowerOut"];
+            capacitor: components["schemas"]["CapacitorOut"];
+            braking_resistor: components["schemas"]["BrakingResistorOut"];
+            random_phasing: components["schemas"]["PhasingOut"];
+        };
         /**
          * BusVoltageOut
          * @description What one DC bus class delivers against U_OUT.
@@ -2198,6 +2436,27 @@ export interface components {
              * @description controllers of Table 521.1 not excluded for this actuator, best first, grouped by match and voltage check; null for an unsuitable candidate (its detail lists them)
              */
             drive_options: components["schemas"]["DriveOptionGroup"][] | null;
+        };
+        /**
+         * CapacitorOut
+         * @description E = ½·C·(U_max² − U_nom²) against the largest pulse; nulls: no data.
+         */
+        CapacitorOut: {
+            /** Capacitance Uf */
+            capacitance_uf: number | null;
+            /**
+             * Nominal Voltage V
+             * @description U_nom of the bus class (Table 521.1)
+             */
+            nominal_voltage_v: number;
+            /** Max Voltage V */
+            max_voltage_v: number | null;
+            /** Energy J */
+            energy_j: number | null;
+            /** Absorbs Every Pulse */
+            absorbs_every_pulse: boolean | null;
+            /** Reference */
+            reference: string;
         };
         /**
          * CaseColumns
@@ -2720,6 +2979,16 @@ export interface components {
             reference: string;
         };
         /**
+         * CurveOut
+         * @description Each axis's electrical power for a chart, at every stretch's ends and inside.
+         */
+        CurveOut: {
+            /** Times S */
+            times_s: number[];
+            /** Axes W */
+            axes_w: number[][];
+        };
+        /**
          * CustomerIn
          * @description Who the quote is for; free text, shown escaped on the document.
          *
@@ -2877,6 +3146,20 @@ export interface components {
             /** Criteria */
             criteria: components["schemas"]["CriterionOut"][];
             voltage: components["schemas"]["CheckOut"];
+        };
+        /**
+         * EnergiesOut
+         * @description ∫ over the cycle of each power of an axis [J]: electrical = mechanical + losses.
+         */
+        EnergiesOut: {
+            /** Mechanical J */
+            mechanical_j: number;
+            /** No Load J */
+            no_load_j: number;
+            /** Copper J */
+            copper_j: number;
+            /** Electrical J */
+            electrical_j: number;
         };
         /**
          * FamilyOut
@@ -3465,6 +3748,91 @@ export interface components {
             time_to_shutdown_s: number | null;
         };
         /**
+         * PhasingOut
+         * @description The axes in random phase instead of synchronised.
+         */
+        PhasingOut: {
+            /**
+             * Worst Peak W
+             * @description worst-case alignment: Σ of each axis's peak
+             */
+            worst_peak_w: number;
+            /**
+             * Worst Regen Peak W
+             * @description worst-case alignment of the regeneration
+             */
+            worst_regen_peak_w: number;
+            /** Mean W */
+            mean_w: number;
+            /** Std W */
+            std_w: number;
+            /**
+             * Statistical Peak W
+             * @description μ + 3σ of the bus power at a random instant, independent uniform phases, normal approximation: a statistical figure, not a bound
+             */
+            statistical_peak_w: number;
+            /** Statistical Regen W */
+            statistical_regen_w: number;
+            /** Method */
+            method: string;
+        };
+        /**
+         * PowerOut
+         * @description Figures of one electrical power over the machine cycle (core/bus.py).
+         */
+        PowerOut: {
+            /**
+             * Peak W
+             * @description the largest power drawn [W]
+             */
+            peak_w: number;
+            /**
+             * Least W
+             * @description the least power [W], negative where it regenerates
+             */
+            least_w: number;
+            /**
+             * Mean W
+             * @description ∫P dt/t_0, the net mean [W]
+             */
+            mean_w: number;
+            /**
+             * Mean Supply W
+             * @description ∫max(P, 0) dt/t_0: the supply's mean when regeneration is burnt [W]
+             */
+            mean_supply_w: number;
+            /**
+             * Energy In J
+             * @description ∫max(P, 0) dt per cycle [J]
+             */
+            energy_in_j: number;
+            /**
+             * Regen Energy J
+             * @description ∫max(−P, 0) dt per cycle, fed back [J]
+             */
+            regen_energy_j: number;
+            /**
+             * Regen Peak W
+             * @description the largest power fed back [W]
+             */
+            regen_peak_w: number;
+            /**
+             * Regen Pulse Energy J
+             * @description the largest pulse fed back [J]
+             */
+            regen_pulse_energy_j: number;
+            /**
+             * Regen Pulses
+             * @description pulses of regeneration per cycle
+             */
+            regen_pulses: number;
+            /**
+             * Std W
+             * @description standard deviation of P at a random instant [W]
+             */
+            std_w: number;
+        };
+        /**
          * PriceImportOut
          * @description What a price list import changed (``dry_run``: would change; nothing was written).
          */
@@ -3725,6 +4093,107 @@ export interface components {
             time_s: number[];
             /** Speed */
             speed: number[];
+        };
+        /**
+         * ProjectBrief
+         * @description A project in a list.
+         */
+        ProjectBrief: {
+            /** Id */
+            id: string;
+            /** Name */
+            name: string;
+            /**
+             * Created At
+             * Format: date-time
+             */
+            created_at: string;
+            /**
+             * Updated At
+             * Format: date-time
+             */
+            updated_at: string;
+            /** Catalogue Version */
+            catalogue_version: number;
+            /** Axes */
+            axes: number;
+        };
+        /**
+         * ProjectOut
+         * @description A stored machine project and its sizing.
+         */
+        ProjectOut: {
+            /** Id */
+            id: string;
+            /**
+             * Created At
+             * Format: date-time
+             */
+            created_at: string;
+            /**
+             * Updated At
+             * Format: date-time
+             */
+            updated_at: string;
+            /**
+             * Catalogue Version
+             * @description the catalogue version the sizing used
+             */
+            catalogue_version: number;
+            request: components["schemas"]["ProjectRequest"];
+            /** Cycle Time S */
+            cycle_time_s: number;
+            /** Axes */
+            axes: components["schemas"]["AxisOut"][];
+            bus: components["schemas"]["BusOut"];
+            curve: components["schemas"]["CurveOut"];
+        };
+        /**
+         * ProjectPageOut
+         * @description A page of projects, oldest first.
+         */
+        ProjectPageOut: {
+            /** Projects */
+            projects: components["schemas"]["ProjectBrief"][];
+            /**
+             * Next Cursor
+             * @description give as `cursor` for the next page; null: this is the last page
+             */
+            next_cursor: string | null;
+        };
+        /**
+         * ProjectRequest
+         * @description A machine project: its axes on one bus, synchronised with their offsets.
+         * @example {
+         *       "axes": [
+         *         {
+         *           "cycle": {
+         *             "accel_s": 0.1,
+         *             "constant_s": 0.1,
+         *             "decel_s": 0.1,
+         *             "pause_s": 1
+         *           },
+         *           "load": {
+         *             "inertia_kgm2": 1.3,
+         *             "speed_rpm": 40,
+         *             "torque_nm": 5
+         *           },
+         *           "name": "X",
+         *           "offset_s": 0
+         *         }
+         *       ],
+         *       "bus": {
+         *         "bus_class": "560vdc"
+         *       },
+         *       "name": "Cell 1"
+         *     }
+         */
+        ProjectRequest: {
+            /** Name */
+            name: string;
+            bus: components["schemas"]["BusIn"];
+            /** Axes */
+            axes: components["schemas"]["AxisIn"][];
         };
         /**
          * PtcOut
@@ -8528,6 +8997,468 @@ export interface operations {
                 };
             };
             /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    list_projects: {
+        parameters: {
+            query?: {
+                /** @description at most this many (≤ 100) */
+                limit?: number;
+                /** @description the `next_cursor` of the page before */
+                cursor?: string | null;
+            };
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProjectPageOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    create_project: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "axes": [
+                 *         {
+                 *           "cycle": {
+                 *             "accel_s": 0.1,
+                 *             "constant_s": 0.1,
+                 *             "decel_s": 0.1,
+                 *             "pause_s": 1
+                 *           },
+                 *           "load": {
+                 *             "inertia_kgm2": 1.3,
+                 *             "speed_rpm": 40,
+                 *             "torque_nm": 5
+                 *           },
+                 *           "name": "X",
+                 *           "offset_s": 0
+                 *         }
+                 *       ],
+                 *       "bus": {
+                 *         "bus_class": "560vdc"
+                 *       },
+                 *       "name": "Cell 1"
+                 *     }
+                 */
+                "application/json": components["schemas"]["ProjectRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            201: {
+                headers: {
+                    /** @description the path of the resource created (of a batch: its first case's) */
+                    Location?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProjectOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description invalid axis or bus, or a model the catalogue lacks */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_project: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                project_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProjectOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown project */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    edit_project: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                project_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "axes": [
+                 *         {
+                 *           "cycle": {
+                 *             "accel_s": 0.1,
+                 *             "constant_s": 0.1,
+                 *             "decel_s": 0.1,
+                 *             "pause_s": 1
+                 *           },
+                 *           "load": {
+                 *             "inertia_kgm2": 1.3,
+                 *             "speed_rpm": 40,
+                 *             "torque_nm": 5
+                 *           },
+                 *           "name": "X",
+                 *           "offset_s": 0
+                 *         }
+                 *       ],
+                 *       "bus": {
+                 *         "bus_class": "560vdc"
+                 *       },
+                 *       "name": "Cell 1"
+                 *     }
+                 */
+                "application/json": components["schemas"]["ProjectRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProjectOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown project */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description invalid axis or bus, or a model the catalogue lacks */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    size_project_again: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                project_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ProjectOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown project */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the catalogue no longer has a model an axis names */
             422: {
                 headers: {
                     [name: string]: unknown;
