@@ -4,8 +4,8 @@ A project is its request (the axes, each a selection's load case with its offset
 chosen actuator, and the bus) and its sizing as answered, gzip-compressed, with the
 catalogue version that sizing used, like a selection.
 
-Revision ID: 0013_projects
-Revises: 0012
+Revision ID: 0014
+Revises: 0013
 Create Date: 2026-11-27
 """
 
@@ -17,8 +17,8 @@ import sqlalchemy as sa
 from alembic import op
 from sqlalchemy.dialects.postgresql import JSONB
 
-revision: str = "0013_projects"
-down_revision: str | None = "0012"
+revision: str = "0014"
+down_revision: str | None = "0013"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 
