@@ -91,7 +91,8 @@ def test_the_whole_catalogue_report_is_three_pages_with_both_diagrams(
     t = DocumentText("de")
     assert pages <= 3
     # both diagrams: their axes, the cycle's time and the speed/torque diagram's torque
-    assert t("axis_time") in text
+    assert t("fig.time") in text
+    assert t("fig.torque") in text  # the cycle's torque panel
     assert t("axis_torque") in text
     # the inputs in words, the first-ranked candidate's checks, the top five
     first = answer["candidates"][0]

@@ -114,3 +114,95 @@ def test_the_page_gets_the_figure_the_quote_prints(client: TestClient) -> None:
     without = client.get(url, params={"catalogue": "false"}).json()
     assert not {"t-max", "n-max"} & set(_by_uid(without))
     assert client.get(url.replace("FHA-25C-50-L", "NO-SUCH")).status_code == 404
+
+
+WORKED = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1},
+    "models": ["FHA-25C-50-L"],
+}
+
+
+def _stored(client: TestClient, body: dict[str, Any]) -> tuple[str, Any]:
+    from actuator_selection.schemas.quotes import StoredSelection
+
+    created = client.post("/api/v1/selections", json=body)
+    assert created.status_code == 201, created.text
+    ident = created.json()["id"]
+    stored = client.get(f"/api/v1/selections/{ident}").json()
+    return ident, StoredSelection.model_validate(stored)
+
+
+def test_the_cycle_is_the_chapters_trapezoid_with_the_answers_torques(
+    client: TestClient,
+) -> None:
+    """Fig. 516.2 from the stored answer: n(t) through t_1…t_p at n_2; T(t) the steps
+    T_1, T_2, T_3 of the answer, T_rms a line; two panels on one time axis."""
+    from actuator_selection.api.figures import cycle_figure
+
+    _, stored = _stored(client, WORKED)
+    candidate = stored.candidates[0]
+    figure = cycle_figure(stored, candidate, DE)
+    traces = _by_uid(figure)
+    assert list(traces) == ["cycle-speed", "cycle-torque", "cycle-rms"]
+    assert traces["cycle-speed"]["x"] == [0.0, 0.1, 0.2, 0.30000000000000004, 1.3]
+    assert traces["cycle-speed"]["y"] == [0.0, 40, 40, 0.0, 0.0]
+    torque = traces["cycle-torque"]["y"]
+    assert torque[1:7] == [
+        candidate.accel_torque_nm,
+        candidate.accel_torque_nm,
+        candidate.constant_torque_nm,
+        candidate.constant_torque_nm,
+        candidate.decel_torque_nm,
+        candidate.decel_torque_nm,
+    ]
+    assert traces["cycle-rms"]["y"] == [candidate.rms_torque_nm] * 2
+    assert traces["cycle-torque"]["yaxis"] == "y2"
+    layout = figure["layout"]
+    assert layout["meta"] == {"torques": "steps"}
+    assert layout["separators"] == ",."
+    assert layout["xaxis"]["title"]["text"] == "Zeit t [s]"
+    assert layout["yaxis"]["domain"][0] > layout["yaxis2"]["domain"][1]  # speed above
+    assert [a["text"] for a in layout["annotations"][-4:]] == [
+        "t<sub>1</sub>",
+        "t<sub>2</sub>",
+        "t<sub>3</sub>",
+        "t<sub>p</sub>",
+    ]
+    # a candidate without torques (no J_A): the speed, and a note why there is no torque
+    bare = candidate.model_copy(
+        update={
+            "accel_torque_nm": None,
+            "constant_torque_nm": None,
+            "decel_torque_nm": None,
+            "rms_torque_nm": None,
+        }
+    )
+    empty = cycle_figure(stored, bare, DE)
+    assert list(_by_uid(empty)) == ["cycle-speed"]
+    assert empty["layout"]["meta"] == {"torques": "none"}
+    assert any("keine Daten" in a["text"] for a in empty["layout"]["annotations"])
+
+
+def test_the_served_cycle_carries_the_torque_along_each_segment(client: TestClient) -> None:
+    """``GET …/cycle``: the torque along each segment as the candidate's detail gives it
+    (its points joined), or the stored steps with ``torques=false``; in the document's
+    language; 404 for a model that is no candidate."""
+    from actuator_selection.api.figures import cycle_figure
+
+    ident, stored = _stored(client, WORKED)
+    url = f"/api/v1/selections/{ident}/candidates/FHA-25C-50-L/cycle"
+    served = client.get(url, params={"lang": "de"})
+    assert served.status_code == 200, served.text
+    assert served.headers["content-language"] == "de"
+    figure = served.json()
+    assert figure["layout"]["meta"] == {"torques": "segments"}
+    detail = client.get(f"/api/v1/selections/{ident}/candidates/FHA-25C-50-L").json()
+    torque = _by_uid(figure)["cycle-torque"]
+    assert torque["x"] == [x for s in detail["segment_torques"] for x in s["times_s"]]
+    assert torque["y"] == [y for s in detail["segment_torques"] for y in s["torques_nm"]]
+    lean = client.get(url, params={"torques": "false", "lang": "en"})
+    assert lean.status_code == 200
+    assert lean.json() == cycle_figure(stored, stored.candidates[0], EN)
+    assert client.get(url.replace("FHA-25C-50-L", "NO-SUCH")).status_code == 404
+    assert client.get(url, params={"torques": "maybe"}).status_code == 422

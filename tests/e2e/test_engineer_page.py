@@ -909,8 +909,7 @@ def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffi
 
 def test_figures_module_words_the_api_diagram_and_says_no_data(page: Page) -> None:
     """figures.js is pure: the diagram is the API's (its zone cases are tested with
-    api/figures.py), fitted to a narrow chart and captioned from its ``layout.meta``; the
-    cycle without torques says so."""
+    api/figures.py), fitted to a narrow chart and captioned from its ``layout.meta``."""
     page.goto("/")
     result = cast(
         dict[str, Any],
@@ -928,13 +927,11 @@ def test_figures_module_words_the_api_diagram_and_says_no_data(page: Page) -> No
                       layout: {meta: {zone: 'approximate', what: 'allowable continuous torque',
                                       torque: 2.9, speed_what: 'rated speed', speed: 60}}};
       const before = JSON.stringify(figure);
-      const narrow = f.fitDiagram(figure, {narrow: true});
+      const narrow = f.fitFigure(figure, {narrow: true});
       const unchanged = JSON.stringify(figure) === before;
       const approxCaption = f.diagramCaption(sel, cand, {max_torque_nm: 8.3}, figure, 'en');
       const noneCaption = f.diagramCaption(sel, cand, null, null, 'en');
-      const noTorques = f.cycleFigure(sel, {model: 'Y', accel_torque_nm: null,
-        constant_torque_nm: null, decel_torque_nm: null, rms_torque_nm: null, checks: []}, 'de');
-      return {narrow, approxCaption, noneCaption, noTorques, unchanged};
+      return {narrow, approxCaption, noneCaption, unchanged};
     }"""
         ),
     )
@@ -943,9 +940,6 @@ def test_figures_module_words_the_api_diagram_and_says_no_data(page: Page) -> No
     assert result["narrow"]["layout"]["legend"]["orientation"] == "v"
     assert "rated speed = 60" in result["approxCaption"]
     assert "no data" in result["noneCaption"]
-    no_torques = {t["uid"]: t for t in result["noTorques"]["data"]}
-    assert set(no_torques) == {"cycle-speed"}
-    assert any("keine Daten" in a["text"] for a in result["noTorques"]["layout"]["annotations"])
 
 
 @pytest.mark.parametrize("viewport", [DESKTOP, PHONE], ids=["1280px", "375px"])

@@ -1,5 +1,12 @@
-"""The speed/torque diagram (Fig. 517.1), defined once for the page, the quote document
-and the selection report.
+"""The cycle chart (Fig. 516.2) and the speed/torque diagram (Fig. 517.1), each defined
+once for the page, the quote document and the selection report.
+
+:func:`cycle_figure` gives the cycle as a plotly figure of two panels sharing the time
+axis: the speed n(t) above, the torque T(t) below (``GET
+/selections/{id}/candidates/{model}/cycle``; the report PDF draws it with its own lines).
+Its trace uids: "cycle-speed", "cycle-torque", "cycle-rms"; ``layout.meta.torques`` says
+what the torque panel holds ("segments": the torque along each segment, "steps": the
+chapter's T_1, T_2, T_3, "none": a note why not).
 
 :func:`diagram_figure` gives a plotly figure as JSON (``data`` and ``layout``): the page
 draws it with its plotly.js (``GET /selections/{id}/candidates/{model}/diagram``, with
@@ -16,14 +23,19 @@ Trace uids name what a trace is, so that tests and readers can find it: "zone" |
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.core.symbols import symbols
+from actuator_selection.schemas.quotes import StoredSelection
+from actuator_selection.schemas.selections import CandidateFigures
 
 COLORS = {
+    "speed": "#1f5f99",
+    "torque": "#b3471d",
+    "rms": "#6b4fa0",
     "zone": "rgba(46, 139, 87, 0.22)",
     "zone_line": "#2e8b57",
     "limit": "#444",
@@ -159,20 +171,9 @@ def diagram_figure(
     t1, t3, trms = _num(points.t1), _num(points.t3), _num(points.trms)
     hover = _hover(t, "rpm", "Nm")
     number = "#,##0.###"
-    layout: dict[str, Any] = {
-        "separators": separators(t),
-        "font": FONT,
-        "margin": {"l": 64, "r": 16, "t": 28, "b": 48},
-        "paper_bgcolor": "#fff",
-        "plot_bgcolor": "#fff",
-        "showlegend": True,
-        "legend": {"orientation": "h", "x": 0, "xanchor": "left", "y": -0.2, "yanchor": "top"},
-        "hovermode": "closest",
-        "annotations": [],
-        "shapes": [],
-        "xaxis": _axis(t("axis_speed", rpm=t.unit("rpm"))),
-        "yaxis": _axis(t("axis_torque")),
-    }
+    layout = _base_layout(t)
+    layout["xaxis"] = _axis(t("axis_speed", rpm=t.unit("rpm")))
+    layout["yaxis"] = _axis(t("axis_torque"))
     data: list[dict[str, Any]] = []
     xs = [x for x in (n2, n_av, n_max) if x is not None]
     ys = [y for y in (t1, abs(t3) if t3 is not None else None, trms, t_max) if y is not None]
@@ -320,6 +321,207 @@ def diagram_figure(
         point("peak-accel", t("point_accel"), n2, t1, "peak_torque", "triangle-up")
     if t3 is not None and n2 is not None:
         point("peak-decel", t("point_decel"), n2, abs(t3), "decel_torque", "triangle-down")
+    return {"data": data, "layout": layout}
+
+
+def _base_layout(t: DocumentText) -> dict[str, Any]:
+    return {
+        "separators": separators(t),
+        "font": FONT,
+        "margin": {"l": 64, "r": 16, "t": 28, "b": 48},
+        "paper_bgcolor": "#fff",
+        "plot_bgcolor": "#fff",
+        "showlegend": True,
+        "legend": {"orientation": "h", "x": 0, "xanchor": "left", "y": -0.2, "yanchor": "top"},
+        "hovermode": "closest",
+        "annotations": [],
+        "shapes": [],
+    }
+
+
+SegmentTorques = Sequence[tuple[Sequence[float], Sequence[float]]]
+"""The torque along each segment: per segment the times from the cycle's start [s] and the
+torques at them [Nm] (``core/motion.py`` ``Profile.segment_torques``)."""
+
+
+def cycle_figure(
+    selection: StoredSelection,
+    candidate: CandidateFigures | None,
+    t: DocumentText,
+    torques: SegmentTorques | None = None,
+) -> dict[str, Any]:
+    """Fig. 516.2, generalised to segments: speed n(t) and torque T(t) over one period.
+
+    Speeds from the selection's ``segments`` (output speed at each segment's start and
+    end, straight between them, also for an S-curve segment, whose share is in the
+    segment table), else from its cycle t_1…t_p and n_2. Torque along each segment from
+    ``torques`` where given (straight between its points); else the chapter's steps T_1,
+    T_2, T_3 of ``candidate`` for the t_1…t_p form; else a note (no J_A; none without a
+    candidate). T_rms as a line.
+    Every number drawn is the answer's; the only shapes laid through them are the
+    chapter's steps and ramps.
+    """
+    segments = selection.segments
+    trapezoid = selection.cycle.is_trapezoid
+    end = selection.cycle_time_s
+    bounds: list[tuple[str, float, float]]
+    if segments:
+        # each segment starts at the speed the one before ends at: one point per boundary
+        speed_x = [seg.start_s for seg in segments] + [end]
+        speed_y = [seg.start_rpm for seg in segments] + [segments[-1].end_rpm]
+        names = ["t_1", "t_2", "t_3", "t_p"] if trapezoid and len(segments) == 4 else None
+        bounds = [
+            (names[k] if names else str(k + 1), seg.start_s, seg.start_s + seg.duration_s)
+            for k, seg in enumerate(segments)
+        ]
+    else:
+        c = selection.cycle
+        a = c.accel_s or 0.0
+        b = a + (c.constant_s or 0.0)
+        d = b + (c.decel_s or 0.0)
+        n2 = selection.load.speed_rpm
+        speed_x, speed_y = [0.0, a, b, d, end], [0.0, n2, n2, 0.0, 0.0]
+        bounds = [("t_1", 0.0, a), ("t_2", a, b), ("t_3", b, d), ("t_p", d, end)]
+
+    layout = _base_layout(t)
+    layout["margin"] = {"l": 64, "r": 16, "t": 24, "b": 48}
+    layout["xaxis"] = _axis(t("fig.time"), anchor="y2", range=[0, end], rangemode="normal")
+    layout["yaxis"] = _axis(t("fig.speed"), domain=[0.58, 1], anchor="x")
+    layout["yaxis2"] = _axis(t("fig.torque"), domain=[0, 0.46], anchor="x", rangemode="normal")
+    layout["legend"]["y"] = -0.22
+    data: list[dict[str, Any]] = [
+        {
+            "uid": "cycle-speed",
+            "name": _sym(t("fig.speed_trace")),
+            "type": "scatter",
+            "mode": "lines",
+            "x": speed_x,
+            "y": speed_y,
+            "xaxis": "x",
+            "yaxis": "y",
+            "line": {"color": COLORS["speed"], "width": 2.5},
+            "hovertemplate": _hover(t, "s", "rpm"),
+        }
+    ]
+
+    def torque_trace(key: str, x: list[float], y: list[float]) -> dict[str, Any]:
+        return {
+            "uid": "cycle-torque",
+            "name": _sym(t(key)),
+            "type": "scatter",
+            "mode": "lines",
+            "x": x,
+            "y": y,
+            "xaxis": "x",
+            "yaxis": "y2",
+            "line": {"color": COLORS["torque"], "width": 2.5},
+            "hovertemplate": _hover(t, "s", "Nm"),
+        }
+
+    t1, t2, t3, trms = (
+        (None,) * 4
+        if candidate is None
+        else (
+            _num(candidate.accel_torque_nm),
+            _num(candidate.constant_torque_nm),
+            _num(candidate.decel_torque_nm),
+            _num(candidate.rms_torque_nm),
+        )
+    )
+    drawn = "none"
+    if torques:
+        xs = [float(x) for times, _ in torques for x in times]
+        ys = [float(y) for _, values in torques for y in values]
+        data.append(torque_trace("fig.torque_segments", xs, ys))
+        drawn = "segments"
+    elif trapezoid and t1 is not None and t2 is not None and t3 is not None:
+        (_, _, a), (_, _, b), (_, _, d) = bounds[:3]
+        data.append(
+            torque_trace(
+                "fig.torque_trace",
+                [0.0, 0.0, a, a, b, b, d, d, end],
+                [0.0, t1, t1, t2, t2, t3, t3, 0.0, 0.0],
+            )
+        )
+
+        # short labels centred on their phase; the values are in hover and caption
+        def label(x: float, y: float, symbol: str, yshift: int) -> dict[str, Any]:
+            return {
+                "x": x,
+                "y": y,
+                "xref": "x",
+                "yref": "y2",
+                "text": _sym(symbol),
+                "showarrow": False,
+                "yshift": yshift,
+                "font": {"size": 12, "color": COLORS["torque"]},
+            }
+
+        layout["annotations"] += [
+            label(a / 2, t1, "T_1", 10),
+            label((a + b) / 2, t2, "T_2", 10 if t2 >= 0 else -10),
+            label((b + d) / 2, t3, "T_3", -10),
+        ]
+        drawn = "steps"
+    if drawn != "none" and trms is not None:
+        data.append(
+            {
+                "uid": "cycle-rms",
+                "name": _sym(t("fig.rms_trace")),
+                "type": "scatter",
+                "mode": "lines",
+                "x": [0.0, end],
+                "y": [trms, trms],
+                "xaxis": "x",
+                "yaxis": "y2",
+                "line": {"color": COLORS["rms"], "width": 1.5, "dash": "dash"},
+                "hovertemplate": _hover(t, "s", "Nm"),
+            }
+        )
+    if drawn == "none" and candidate is not None:
+        layout["annotations"].append(
+            {
+                "xref": "paper",
+                "yref": "y2 domain",
+                "x": 0.5,
+                "y": 0.5,
+                "text": _sym(t("fig.torques_nodata")),
+                "showarrow": False,
+                "font": {"size": 14, "color": COLORS["fail"]},
+            }
+        )
+    if drawn == "none":
+        layout["yaxis2"]["range"] = [-1, 1]
+    layout["meta"] = {"torques": drawn}
+
+    # the phases (t_1 … t_p) or segments (1 … n) named above the speed panel, split by lines
+    for symbol, start, stop in bounds:
+        if stop > start:
+            layout["annotations"].append(
+                {
+                    "x": (start + stop) / 2,
+                    "y": 1,
+                    "xref": "x",
+                    "yref": "paper",
+                    "yanchor": "bottom",
+                    "text": _sym(symbol),
+                    "showarrow": False,
+                    "font": {"size": 11, "color": "#555"},
+                }
+            )
+    for _, _, stop in bounds[:-1]:
+        layout["shapes"].append(
+            {
+                "type": "line",
+                "xref": "x",
+                "yref": "paper",
+                "x0": stop,
+                "x1": stop,
+                "y0": 0,
+                "y1": 1,
+                "line": {"color": "#bbb", "width": 1, "dash": "dot"},
+            }
+        )
     return {"data": data, "layout": layout}
 
 

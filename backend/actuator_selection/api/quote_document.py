@@ -21,7 +21,7 @@ import json
 import re
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 from markupsafe import Markup
@@ -43,9 +43,6 @@ from actuator_selection.schemas.quotes import (
     cycle_facts,
 )
 
-if TYPE_CHECKING:
-    import plotly.graph_objects as go
-
 DOCUMENT_SCRIPT_PATH = "/quote-document.js"
 """Route (under /api/v1) of the script that draws the figure from the page's JSON."""
 
@@ -62,7 +59,6 @@ DOCUMENT_SCRIPT = """\
 })();
 """
 
-GRID = "#e4e6ea"
 ENGLISH = DocumentText("en")
 
 
@@ -203,47 +199,6 @@ def speed_torque_figure(
     layout.update(width=640, height=280, margin={"l": 56, "r": 8, "t": 12, "b": 44})
     layout["legend"] = {"orientation": "v", "x": 1.02, "xanchor": "left", "y": 1, "yanchor": "top"}
     return figure
-
-
-def cycle_figure(selection: StoredSelection, t: DocumentText = ENGLISH) -> go.Figure:
-    """The cycle's speed over time at the output (Fig. 516.2): the chapter's trapezoid
-    t₁, t₂, t₃, t_p at n₂, or the segments as stored."""
-    import plotly.graph_objects as go  # ~15 MB: loaded with the first document
-
-    cycle = selection.cycle
-    n2 = selection.load.speed_rpm
-    if cycle.is_trapezoid:
-        t1, t2, t3 = cycle.accel_s or 0.0, cycle.constant_s or 0.0, cycle.decel_s or 0.0
-        xs = [0.0, t1, t1 + t2, t1 + t2 + t3, selection.cycle_time_s]
-        ys = [0.0, n2, n2, 0.0, 0.0]
-    else:
-        xs, ys = [], []
-        for seg in selection.segments:
-            xs += [seg.start_s, seg.start_s + seg.duration_s]
-            ys += [seg.start_rpm, seg.end_rpm]
-    fig = go.Figure(
-        go.Scatter(
-            x=xs, y=ys, mode="lines", name=t("cycle_speed"), line={"color": "#1f5fa8", "width": 2}
-        )
-    )
-    top = max([abs(y) for y in ys] or [1.0])
-    fig.update_layout(
-        template="none",
-        width=360,
-        height=280,
-        showlegend=False,
-        xaxis={
-            "title": {"text": t("axis_time")},
-            "range": [0, max(xs or [1.0])],
-            "gridcolor": GRID,
-        },
-        yaxis={
-            "title": {"text": t("axis_speed", rpm=t.unit("rpm"))},
-            "range": [min([0.0, *ys]) * 1.15, 1.15 * top],
-            "gridcolor": GRID,
-        },
-    )
-    return fig
 
 
 _TEMPLATES = Environment(

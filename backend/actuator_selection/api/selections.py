@@ -20,10 +20,11 @@ from actuator_selection.api.deps import (
     write_transaction,
 )
 from actuator_selection.api.errors import RequestFieldError, language_of, service_error
-from actuator_selection.api.figures import diagram_figure
+from actuator_selection.api.figures import cycle_figure, diagram_figure
 from actuator_selection.api.messages import localizer
-from actuator_selection.api.quote_document import cycle_figure, diagram_points, speed_torque_figure
+from actuator_selection.api.quote_document import diagram_points, speed_torque_figure
 from actuator_selection.api.quote_document_text import DocumentText
+from actuator_selection.core.errors import ConflictError, NotFoundError
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
@@ -43,6 +44,7 @@ from actuator_selection.services.reports import (
 )
 from actuator_selection.services.selections import (
     candidate_detail,
+    segment_torques,
     stored_answer,
 )
 from actuator_selection.services.selections import (
@@ -222,6 +224,50 @@ def get_candidate_diagram(
 
 
 @router.get(
+    "/selections/{selection_id}/candidates/{model}/cycle",
+    responses={
+        404: {"description": "unknown selection, or a model that is no candidate of it"},
+        409: {"description": "the catalogue has changed since the selection (with torques)"},
+    },
+)
+@reads_only
+def get_candidate_cycle(
+    selection_id: Annotated[str, Path(max_length=36)],
+    model: Annotated[str, Path(max_length=60)],
+    request: Request,
+    session: SessionDep,
+    language: DocumentLanguageDep,
+    response: Response,
+    torques: Annotated[
+        bool,
+        Query(
+            description="with the torque along each segment, computed again from the load "
+            "case as the candidate's detail gives it (false: the stored answer's T_1, T_2, "
+            "T_3 only, which also reads a selection whose catalogue has changed since)"
+        ),
+    ] = True,
+) -> dict[str, Any]:
+    """The candidate's cycle chart (Fig. 516.2: speed and torque over one period) as a
+    plotly figure (`data` and `layout`, JSON), in the document's language: the figure the
+    report prints, from the same definition (`api/figures.py`). The page draws it with
+    plotly.js."""
+    found = candidate_diagram(session, selection_id, model, catalogue=False)
+    along = (
+        segment_torques(session, catalogue_snapshot(request, session), selection_id, model)
+        if torques
+        else None
+    )
+    response.headers["Content-Language"] = language
+    response.headers["Vary"] = "Accept-Language"
+    return cycle_figure(
+        found.selection,
+        found.candidate,
+        DocumentText(language),
+        [(st.times_s, st.torques_nm) for st in along] if along else None,
+    )
+
+
+@router.get(
     "/selections/{selection_id}/candidates/{model}/limits",
     responses={
         404: {"description": "unknown selection, or a model that is no candidate of it"},
@@ -288,6 +334,7 @@ def get_selection_report_csv(
 )
 def get_selection_report_pdf(
     selection_id: Annotated[str, Path(max_length=36)],
+    request: Request,
     session: SessionDep,
     language: DocumentLanguageDep,
     candidates: Annotated[
@@ -305,9 +352,19 @@ def get_selection_report_pdf(
 
     report = selection_report(session, selection_id, candidates)
     t = DocumentText(language)
-    figures = [cycle_figure(report.selection, t).to_plotly_json()]
-    if report.selection.candidates:
-        first = report.selection.candidates[0]
+    first = report.selection.candidates[0] if report.selection.candidates else None
+    along = None
+    if first is not None:
+        try:
+            along = segment_torques(
+                session, catalogue_snapshot(request, session), selection_id, first.model
+            )
+        except (ConflictError, NotFoundError):  # a changed catalogue: the stored steps
+            along = None
+    figures = [
+        cycle_figure(report.selection, first, t, [(a.times_s, a.torques_nm) for a in along or ()])
+    ]
+    if first is not None:
         figures.append(speed_torque_figure(first, report.selection, report.actuator, t))
     body = render_pdf(report, t, figures)
     headers = {**_attachment(selection_id, "pdf"), "Content-Language": language}

@@ -316,11 +316,23 @@ def _axis(
     return low, high * 1.1 if high > 0 else 1.0, text
 
 
+def _y_axis(trace: Mapping[str, Any]) -> str:
+    """The layout's name of a trace's y axis ("y2" → "yaxis2")."""
+    return "yaxis" + str(trace.get("yaxis", "y"))[1:]
+
+
+def _scale(low: float, high: float, bottom: float, height: float) -> Callable[[float], float]:
+    """Page position of a value on an axis from ``low`` at ``bottom`` up to ``high``."""
+    span = high - low if high != low else 1.0
+    return lambda v: bottom - (v - low) / span * height
+
+
 class FigurePdf(DocumentPdf):
     """A :class:`DocumentPdf` that draws a plotly figure (its JSON: the same definition an
     HTML document hands to plotly.js) with the PDF's own lines, areas and text: filled
     ``toself`` areas, lines (solid, dash, dot), markers (circle, triangles) with their text,
-    axes with ticks and titles, and a legend of the traces' names."""
+    axes with ticks and titles, panels stacked by their y axes' ``domain`` on one x axis,
+    vertical line shapes, and a legend of the traces' names."""
 
     def figure(
         self,
@@ -338,7 +350,6 @@ class FigurePdf(DocumentPdf):
         data: Sequence[Mapping[str, Any]] = figure.get("data", [])
         layout: Mapping[str, Any] = figure.get("layout", {})
         x_low, x_high, x_title = _axis(layout, "xaxis", data)
-        y_low, y_high, y_title = _axis(layout, "yaxis", data)
         left, top = self.l_margin + 13.0, self.get_y() + 2.0
         plot_w = width - 13.0 - (legend if legend else 0.0)
         plot_h = height - 12.0
@@ -346,41 +357,39 @@ class FigurePdf(DocumentPdf):
         def px(x: float) -> float:
             return left + (x - x_low) / (x_high - x_low) * plot_w
 
-        def py(y: float) -> float:
-            return top + plot_h - (y - y_low) / (y_high - y_low) * plot_h
-
+        # one panel per y axis, stacked by its domain (the cycle's speed above its torque)
+        names = sorted((k for k in layout if re.fullmatch(r"yaxis\d*", k)), key=len) or ["yaxis"]
+        panels: dict[str, tuple[float, float, Callable[[float], float]]] = {}
+        for name in names:
+            low_d, high_d = layout.get(name, {}).get("domain", (0.0, 1.0))
+            p_top, p_h = top + (1.0 - float(high_d)) * plot_h, (float(high_d) - low_d) * plot_h
+            mine = [trace for trace in data if _y_axis(trace) == name]
+            y_low, y_high, y_title = _axis(layout, name, mine)
+            panels[name] = (p_top, p_h, _scale(y_low, y_high, p_top + p_h, p_h))
+            self._y_axis(y_low, y_high, y_title, left, plot_w, p_top, p_h, panels[name][2], number)
+            self.set_draw_color(68, 68, 68)
+            self.set_line_width(0.25)
+            self.line(left, p_top + p_h, left + plot_w, p_top + p_h)
         self.set_line_width(0.1)
         self.set_draw_color(228, 230, 234)
         self.font(6.5)
         for tick in nice_ticks(x_high):
             if tick < x_low:
                 continue
-            self.line(px(tick), top, px(tick), top + plot_h)
+            for p_top, p_h, _ in panels.values():
+                self.line(px(tick), p_top, px(tick), p_top + p_h)
             label = number(tick)
             self.text(px(tick) - self.get_string_width(label) / 2, top + plot_h + 3.2, label)
-        for tick in nice_ticks(y_high):
-            if tick < y_low:
-                continue
-            self.line(left, py(tick), left + plot_w, py(tick))
-            label = number(tick)
-            self.text(left - 1.2 - self.get_string_width(label), py(tick) + 1.0, label)
+        self._shapes(layout, px, top, plot_h)
         self.set_draw_color(68, 68, 68)
-        self.set_line_width(0.25)
-        self.line(left, top + plot_h, left + plot_w, top + plot_h)
-        self.line(left, top, left, top + plot_h)
         x_label = self.figure_words(x_title)
         self.text(left + (plot_w - self.get_string_width(x_label)) / 2, top + plot_h + 7.5, x_label)
-        y_label = self.figure_words(y_title)
-        with self.rotation(
-            90, self.l_margin + 2.5, top + (plot_h + self.get_string_width(y_label)) / 2
-        ):
-            self.text(
-                self.l_margin + 2.5, top + (plot_h + self.get_string_width(y_label)) / 2, y_label
-            )
         entries: list[tuple[str, tuple[int, ...], str]] = []
-        with self.rect_clip(left, top - 1, plot_w + 1, plot_h + 1):
-            for trace in data:
-                entries.append(self._trace(trace, px, py))
+        for p_top, p_h, py in panels.values():
+            with self.rect_clip(left, p_top - 1, plot_w + 1, p_h + 1):
+                for trace in data:
+                    if panels.get(_y_axis(trace)) == (p_top, p_h, py):
+                        entries.append(self._trace(trace, px, py))
         if legend:
             self._legend(entries, left + plot_w + 3.0, top)
         self.set_draw_color(0, 0, 0)
@@ -389,6 +398,54 @@ class FigurePdf(DocumentPdf):
         self.set_dash_pattern()
         self.set_line_width(0.2)
         self.set_xy(self.l_margin, top + height)
+
+    def _y_axis(
+        self,
+        low: float,
+        high: float,
+        title: str,
+        left: float,
+        plot_w: float,
+        top: float,
+        height: float,
+        py: Callable[[float], float],
+        number: NumberText,
+    ) -> None:
+        """A panel's grid, tick labels, axis line and rotated title."""
+        self.set_line_width(0.1)
+        self.set_draw_color(228, 230, 234)
+        self.font(6.5)
+        step_ticks = nice_ticks(max(high, -low))
+        for tick in sorted({*step_ticks, *(-v for v in step_ticks)}):
+            if not low <= tick <= high:
+                continue
+            self.line(left, py(tick), left + plot_w, py(tick))
+            label = number(tick)
+            self.text(left - 1.2 - self.get_string_width(label), py(tick) + 1.0, label)
+        self.set_draw_color(68, 68, 68)
+        self.set_line_width(0.25)
+        self.line(left, top, left, top + height)
+        label = self.figure_words(title)
+        y = top + (height + self.get_string_width(label)) / 2
+        with self.rotation(90, self.l_margin + 2.5, y):
+            self.text(self.l_margin + 2.5, y, label)
+
+    def _shapes(
+        self, layout: Mapping[str, Any], px: Callable[[float], float], top: float, height: float
+    ) -> None:
+        """The figure's vertical lines across the plot (plotly's ``shapes`` of type line at
+        an x, ``yref`` paper: the cycle's phase boundaries), dotted as plotly.js draws them."""
+        for shape in layout.get("shapes", []):
+            if shape.get("type") != "line" or shape.get("yref") != "paper":
+                continue
+            if shape.get("x0") != shape.get("x1"):
+                continue
+            self.set_draw_color(*_color(shape.get("line", {}).get("color"), (187, 187, 187)))
+            self.set_line_width(0.15)
+            self.set_dash_pattern(dash=0.4, gap=0.8)
+            x = px(float(shape["x0"]))
+            self.line(x, top, x, top + height)
+            self.set_dash_pattern()
 
     def figure_words(self, text: str) -> str:
         """A figure's text (plotly's, HTML where it holds a tag: ``T<sub>L</sub>``) as the

@@ -31,6 +31,7 @@ from actuator_selection.core.engine import (
     evaluate_batch,
 )
 from actuator_selection.core.errors import ConflictError, NotFoundError
+from actuator_selection.core.motion import SegmentTorque
 from actuator_selection.core.selection import Application, Verdict, evaluate, select
 from actuator_selection.db.repositories import (
     CatalogueRepository,
@@ -312,6 +313,19 @@ def stored_candidate(
             "model", f"{model!r} is no candidate of selection {selection_id!r}", where="path"
         )
     return body, actuator
+
+
+def segment_torques(
+    session: Session, catalogue: CatalogueSnapshot, selection_id: str, model: str
+) -> tuple[SegmentTorque, ...] | None:
+    """The torque along each segment of a stored selection's cycle for one of its
+    candidates, computed again from its load case (:func:`stored_candidate`), as the detail
+    gives it; None where the catalogue has no J_A for the actuator."""
+    body, actuator = stored_candidate(
+        session, catalogue, selection_id, model, what="the torque along the cycle"
+    )
+    j_a = actuator.inertia_kgm2
+    return None if j_a is None else body.to_core().profile.segment_torques(j_a)
 
 
 def candidate_detail(

@@ -10,7 +10,7 @@ import { fieldRefusal, isNumberField, numberText, readField, showReading, showRe
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { initProfile } from "./profile.js";
-import { NARROW_CHART_PX, cycleCaption, cycleFigure, diagramCaption, fitDiagram } from "./figures.js";
+import { NARROW_CHART_PX, WARM_FIGURE, cycleCaption, diagramCaption, fitFigure } from "./figures.js";
 import {
   LOAD_KINDS,
   TRANSMISSION_FIELDS,
@@ -99,25 +99,29 @@ const getSelection = (id) => api.get(encodePath`/selections/${id}`);
 const getCandidateDetail = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}`);
 
 /**
- * GET …/candidates/{model}/diagram: the speed/torque diagram as plotly JSON in ``lang``, the
- * figure the quote and the report print; without the catalogue's limits where
- * ``catalogue`` is false (its record could not be read).
+ * GET …/candidates/{model}/diagram or …/cycle: the speed/torque diagram or the cycle chart
+ * as plotly JSON in ``lang``, the figures the quote and the report print. ``flag``: the
+ * diagram with the catalogue's limits (false where its record could not be read); the
+ * cycle with the torque along each segment (false: the stored T_1…T_3, also after a
+ * catalogue change).
  */
-const getCandidateDiagram = (id, model, lang, catalogue) =>
-  api.get(encodePath`/selections/${id}/candidates/${model}/diagram?lang=${lang}&catalogue=${String(catalogue)}`);
+const getCandidateFigure = (kind, id, model, lang, flag) =>
+  kind === "diagram"
+    ? api.get(encodePath`/selections/${id}/candidates/${model}/diagram?lang=${lang}&catalogue=${String(flag)}`)
+    : api.get(encodePath`/selections/${id}/candidates/${model}/cycle?lang=${lang}&torques=${String(flag)}`);
 
-/** Diagrams asked for, by selection, model, language and catalogue: a promise each. */
-const diagrams = new Map();
+/** Figures asked for, by kind, selection, model, language and flag: a promise each. */
+const figures = new Map();
 
-/** The API's diagram, asked once per selection, model, language and catalogue. */
-function candidateDiagram(sel, model, lang, catalogue) {
-  const key = JSON.stringify([sel.id, model, lang, catalogue]);
-  if (!diagrams.has(key)) {
-    const pending = getCandidateDiagram(sel.id, model, lang, catalogue);
-    pending.catch(() => diagrams.delete(key)); // a failure is asked again next time
-    diagrams.set(key, pending);
+/** The API's figure ("diagram" or "cycle"), asked once per selection, model, language and flag. */
+function candidateFigure(kind, sel, model, lang, flag) {
+  const key = JSON.stringify([kind, sel.id, model, lang, flag]);
+  if (!figures.has(key)) {
+    const pending = getCandidateFigure(kind, sel.id, model, lang, flag);
+    pending.catch(() => figures.delete(key)); // a failure is asked again next time
+    figures.set(key, pending);
   }
-  return diagrams.get(key);
+  return figures.get(key);
 }
 
 /** GET …/candidates/{model}/limits: the shortest pause and t_1, the largest J_L (inverse solve). */
@@ -856,9 +860,14 @@ async function drawCharts() {
   // the detail is on its way (asked when the panel was drawn) while plotly.js loads and the
   // cycle is drawn; without it the diagram is drawn without catalogue limits, and says so
   const detailPending = candidateDetail(sel, candidate.model).settled;
-  // the API's diagram with the catalogue's limits is asked at once, beside the detail (a
-  // failure is asked again, or without the catalogue, once the detail says which)
-  candidateDiagram(sel, candidate.model, lang, true).catch(() => {});
+  // the API's figures are asked at once, beside the detail: the diagram with the
+  // catalogue's limits (a failure is asked again, or without the catalogue, once the detail
+  // says which) and the cycle with the torque along each segment
+  candidateFigure("diagram", sel, candidate.model, lang, true).catch(() => {});
+  const cyclePending = candidateFigure("cycle", sel, candidate.model, lang, true).catch(() =>
+    // the catalogue has changed since (409) or the server failed: the stored T_1…T_3
+    candidateFigure("cycle", sel, candidate.model, lang, false).catch(() => null),
+  );
 
   let Plotly;
   try {
@@ -875,15 +884,24 @@ async function drawCharts() {
     locale: lang, // plotly's own tooltips (the mode bar) in the page's language
     toImageButtonOptions: { filename: `${candidate.model}-${name}` },
   });
+  const drawn = (figure) => figure && Array.isArray(figure.data) && figure.layout;
 
   // a phone's chart lists its legend one entry a line (figures.js)
   const narrow = { narrow: diagramDiv.clientWidth > 0 && diagramDiv.clientWidth < NARROW_CHART_PX };
-  const cycle = cycleFigure(sel, candidate, lang, undefined, narrow);
-  cycleDiv.replaceChildren();
-  await Plotly.react(cycleDiv, cycle.data, cycle.layout, config("cycle"));
-  cycleDiv.dataset.model = candidate.model;
-  cycleDiv.dataset.state = "ready";
-  cycleDiv.dataset.torques = "pending";
+  const cycle = await cyclePending;
+  if (token !== drawToken) return;
+  if (!drawn(cycle)) {
+    chartUnavailable(cycleDiv, t("charts.unavailable"));
+  } else {
+    const fitted = fitFigure(cycle, narrow);
+    cycleDiv.replaceChildren();
+    await Plotly.react(cycleDiv, fitted.data, fitted.layout, config("cycle"));
+    if (token !== drawToken) return;
+    cycleDiv.dataset.model = candidate.model;
+    cycleDiv.dataset.state = "ready";
+    // "detail": the torque along each segment (as the detail gives it), "lean": without
+    cycleDiv.dataset.torques = cycle.layout.meta?.torques === "segments" ? "detail" : "lean";
+  }
 
   const detail = await detailPending;
   const actuator = detail?.actuator ?? null;
@@ -892,7 +910,7 @@ async function drawCharts() {
   // detail could read them
   let figure;
   try {
-    figure = await candidateDiagram(sel, candidate.model, lang, Boolean(actuator));
+    figure = await candidateFigure("diagram", sel, candidate.model, lang, Boolean(actuator));
   } catch {
     figure = null;
   }
@@ -900,39 +918,16 @@ async function drawCharts() {
   $("#diagram-caption").replaceChildren(
     appendSymbols(h("span"), diagramCaption(sel, candidate, actuator, figure, lang)),
   );
-  if (!figure || !Array.isArray(figure.data) || !figure.layout) {
+  if (!drawn(figure)) {
     chartUnavailable(diagramDiv, t("charts.unavailable"));
   } else {
-    const diagram = fitDiagram(figure, narrow);
+    const diagram = fitFigure(figure, narrow);
     diagramDiv.replaceChildren();
     await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
     diagramDiv.dataset.model = candidate.model;
     diagramDiv.dataset.state = "ready";
   }
-  if (token !== drawToken) return;
-  // the torque along each segment comes with the detail: the cycle is drawn again with it
-  // (after the diagram, which the detail's catalogue data completes)
-  const withTorques = cycleFigure(sel, candidate, lang, detail, narrow);
-  await Plotly.react(cycleDiv, withTorques.data, withTorques.layout, config("cycle"));
-  if (token !== drawToken) return;
-  cycleDiv.dataset.torques = detail ? "detail" : "lean";
 }
-
-// A made-up actuator and load case, drawn only to warm plotly.js up (never shown).
-const WARM_SELECTION = {
-  load: { speed_rpm: 40, torque_nm: 5, inertia_kgm2: 1 },
-  cycle: { accel_s: 0.1, constant_s: 0.1, decel_s: 0.1, pause_s: 1 },
-  cycle_time_s: 1.3,
-  mean_speed_rpm: 6,
-};
-const WARM_CANDIDATE = {
-  model: "warm-up",
-  accel_torque_nm: 90,
-  constant_torque_nm: 5,
-  decel_torque_nm: -80,
-  rms_torque_nm: 35,
-  checks: [],
-};
 
 /** The page waits this long, untouched, after plotly.js has run before warming it up. */
 const WARM_AFTER_MS = 400;
@@ -957,12 +952,10 @@ async function warmCharts(Plotly) {
   document.body.append(host);
   try {
     const lang = state.lang;
-    // the cycle chart's lines, shapes and annotations (the diagram comes from the API)
-    const figures = [cycleFigure(WARM_SELECTION, WARM_CANDIDATE, lang)];
-    for (const figure of figures) {
-      await Plotly.newPlot(host, figure.data, figure.layout, { ...PLOT_CONFIG, locale: lang });
-      Plotly.purge(host);
-    }
+    // two panels of lines, a filled area, markers, shapes and annotations, as the API's
+    // figures draw them
+    await Plotly.newPlot(host, WARM_FIGURE.data, WARM_FIGURE.layout, { ...PLOT_CONFIG, locale: lang });
+    Plotly.purge(host);
     document.documentElement.dataset.chartsWarm = "done";
   } catch {
     document.documentElement.dataset.chartsWarm = "failed";
