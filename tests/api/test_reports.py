@@ -256,3 +256,35 @@ def test_reports_are_in_the_openapi_document(client: TestClient) -> None:
     assert "application/pdf" in pdf_op["responses"]["200"]["content"]
     assert "404" in csv_op["responses"]
     assert "404" in pdf_op["responses"]
+
+
+OUTPUT_LOAD = {
+    "radial_force_n": 2000,
+    "axial_force_n": 150,
+    "radial_lever_m": 0.02,
+    "axial_lever_m": 0.01,
+    "load_factor": 1.2,
+    "static_safety_min": 2,
+    "required_life_h": 90000,
+}
+
+
+@pytest.mark.parametrize("language", ["en", "de"])
+def test_the_pdfs_inputs_list_the_output_load(client: TestClient, language: Language) -> None:
+    """The inputs in words name the external load on the output flange when one was sent
+    (issue 29 item 4): forces, levers, f_w, f_s and the required life, with their units;
+    and the first page draws both figures, the cycle with its speed and torque panels."""
+    from actuator_selection.services.report_pdf import OUTPUT_LOAD_ROWS, number
+
+    answer = _selection(client, output_load=OUTPUT_LOAD)
+    url = f"/api/v1/selections/{answer['id']}/report.pdf"
+    text, _ = _pdf_text(client.get(url, params={"lang": language}).content)
+    t = DocumentText(language)
+    for field, label, unit in OUTPUT_LOAD_ROWS:
+        value = number(OUTPUT_LOAD[field], unit, t)
+        assert f"{_printed(t.words(label))} {value}" in text, field
+    for title in ("fig.time", "fig.speed", "fig.torque", "axis_torque"):
+        assert _printed(t(title)) in text, title
+    without, _ = _pdf_text(client.get(f"/api/v1/selections/{_selection(client)['id']}/report.pdf",
+                                      params={"lang": language}).content)  # fmt: skip
+    assert _printed(t.words("output_load_radial_force")) not in without

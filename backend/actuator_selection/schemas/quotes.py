@@ -38,6 +38,7 @@ from actuator_selection.core.quote_status import (
 from actuator_selection.core.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, SellerParty
 from actuator_selection.core.sales import QuoteRecord
 from actuator_selection.schemas.common import ResponseModel, StrictModel
+from actuator_selection.schemas.output_load import OutputLoadIn
 from actuator_selection.schemas.selections import (
     CandidateFigures,
     CheckBrief,
@@ -493,6 +494,7 @@ class StoredSelection(ResponseModel):
     catalogue_version: int
     load: ResolvedLoad
     mechanism: dict[str, Any] | None
+    output_load: OutputLoadIn | None = None
     cycle: StoredCycle
     segments: list[SegmentOut]
     high_dynamics: bool

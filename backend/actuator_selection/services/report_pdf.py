@@ -20,6 +20,7 @@ from typing import Any
 from markupsafe import Markup
 
 from actuator_selection.core.symbols import symbols
+from actuator_selection.schemas.output_load import OutputLoadIn
 from actuator_selection.schemas.quotes import StoredCandidate, StoredCheck, cycle_facts
 from actuator_selection.services.pdf import FigurePdf
 from actuator_selection.services.reports import (
@@ -46,6 +47,30 @@ def number(value: float | None, unit: str, t: ReportWords) -> str:
 def percent(value: float | None, t: ReportWords) -> str:
     """A percentage to three significant digits; '–' when unknown."""
     return "–" if value is None else f"{t.number(value, PERCENT)} %"
+
+
+OUTPUT_LOAD_ROWS = (
+    ("radial_force_n", "output_load_radial_force", "N"),
+    ("axial_force_n", "output_load_axial_force", "N"),
+    ("radial_lever_m", "output_load_radial_lever", "m"),
+    ("axial_lever_m", "output_load_axial_lever", "m"),
+    ("load_factor", "output_load_load_factor", ""),
+    ("static_safety_min", "output_load_static_safety", ""),
+    ("required_life_h", "output_load_required_life", "h"),
+)
+"""The output load's inputs as the report lists them: field, label, unit."""
+
+
+def output_load_rows(load: OutputLoadIn | None, t: ReportWords) -> list[tuple[object, object]]:
+    """The external load on the output flange as it was sent (none where none was), one
+    row a given value, in ``t``'s words."""
+    if load is None:
+        return []
+    return [
+        (t.words(label), number(value, unit, t))
+        for name, label, unit in OUTPUT_LOAD_ROWS
+        if (value := getattr(load, name)) is not None
+    ]
 
 
 def _check_rows(checks: list[StoredCheck], t: ReportWords) -> list[tuple[object, ...]]:
@@ -165,6 +190,7 @@ def render_pdf(
         (t.words("load_inertia"), number(s.load.inertia_kgm2, "kgm²", t)),
         (t.words("high_dynamics"), t("yes" if s.high_dynamics else "no")),
         *(t.load_rows(s.mechanism) if s.mechanism else []),
+        *output_load_rows(s.output_load, t),
     ]
     cycle: list[tuple[object, object]] = [
         *(
@@ -178,7 +204,7 @@ def render_pdf(
     pdf.heading(t("inputs_heading"), 10)
     _columns(pdf, load, cycle)
     if figures:
-        if pdf.will_page_break(64):  # the heading stays with its diagrams
+        if pdf.will_page_break(70):  # the heading stays with its diagrams
             pdf.add_page()
         pdf.heading(t("diagrams_heading"), 10)
         top = pdf.get_y()
@@ -191,13 +217,13 @@ def render_pdf(
             pdf.figure(
                 figure,
                 width=width - 2,
-                height=52,
+                height=58,
                 number=lambda v: t.number(v, "#,##0.###"),
                 legend=0 if width < pdf.epw * 0.5 else 38,
             )
             x += width
         pdf.set_left_margin(margin)
-        pdf.set_xy(margin, top + 54)
+        pdf.set_xy(margin, top + 60)
     if s.candidates:
         pdf.heading(t("report_chosen"), 11)
         _candidate_heading(pdf, 1, s.candidates[0], t)
