@@ -470,6 +470,29 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/selections/{selection_id}/candidates/{model}/cycle": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Candidate Cycle
+         * @description The candidate's cycle chart (Fig. 516.2: speed and torque over one period) as a
+         *     plotly figure (`data` and `layout`, JSON), in the document's language: the figure the
+         *     report prints, from the same definition (`api/figures.py`). The page draws it with
+         *     plotly.js.
+         */
+        get: operations["get_candidate_cycle"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/selections/{selection_id}/candidates/{model}/limits": {
         parameters: {
             query?: never;
@@ -7889,6 +7912,96 @@ export interface operations {
             };
             /** @description unknown selection, or a model that is no candidate of it */
             404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidate_cycle: {
+        parameters: {
+            query?: {
+                /** @description with the torque along each segment, computed again from the load case as the candidate's detail gives it (false: the stored answer's T_1, T_2, T_3 only, which also reads a selection whose catalogue has changed since) */
+                torques?: boolean;
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+                model: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": {
+                        [key: string]: unknown;
+                    };
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection, or a model that is no candidate of it */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the catalogue has changed since the selection (with torques) */
+            409: {
                 headers: {
                     [name: string]: unknown;
                 };
