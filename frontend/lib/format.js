@@ -59,12 +59,4 @@ export function dateTime(iso, lang) {
   return f.format(date);
 }
 
-/** Plotly's separators: decimal mark, then thousands mark (unused: no grouping). */
-export function plotlySeparators(lang) {
-  return lang === "de" ? ",." : ".,";
-}
-
-/** Plotly's d3 format for hover labels with the same 4-significant-digit rule. */
-export const PLOTLY_NUMBER = ".4~g";
-
-export { appendSymbols, plainSymbols, plotlySymbols } from "./symbols.js";
+export { appendSymbols, plainSymbols } from "./symbols.js";

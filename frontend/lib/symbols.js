@@ -21,15 +21,6 @@ export function appendSymbols(el, text) {
   return el;
 }
 
-/** ``text`` with X_sub as Plotly's X<sub>sub</sub> markup; other "<" ">" "&" escaped. */
-export function plotlySymbols(text) {
-  const escaped = String(text ?? "")
-    .replaceAll("&", "&amp;")
-    .replaceAll("<", "&lt;")
-    .replaceAll(">", "&gt;");
-  return escaped.replace(SYMBOL, (_, before, letter, sub) => `${before}${letter}<sub>${sub}</sub>`);
-}
-
 /** ``text`` with X_sub as plain "Xsub", for attributes read aloud by screen readers. */
 export function plainSymbols(text) {
   return String(text ?? "").replace(SYMBOL, (_, before, letter, sub) => `${before}${letter}${sub}`);

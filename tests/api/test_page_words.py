@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 import string
+from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
@@ -130,3 +131,66 @@ def test_no_hand_written_dictionary_is_left_in_the_page() -> None:
     source = (FRONTEND / "lib" / "i18n.js").read_text(encoding="utf-8")
     assert len(source.splitlines()) < 150
     assert not re.search(r'^\s*"[a-z_]+\.[\w.]+":\s*"', source, re.MULTILINE)
+
+
+class _StaticTexts(HTMLParser):
+    """Each ``data-i18n`` element's key and text, and each ``data-i18n-attr`` pair's key
+    and attribute value, as a browser reads the HTML (independent of the writer's regex)."""
+
+    VOID = frozenset({"input", "br", "img", "meta", "link", "hr", "source", "wbr"})
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.open: list[tuple[str, str | None, list[str]]] = []
+        self.texts: list[tuple[str, str]] = []
+        self.attributes: list[tuple[str, str]] = []
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        values = dict(attrs)
+        for pair in (values.get("data-i18n-attr") or "").split(";"):
+            attr, _, key = (part.strip() for part in pair.partition(":"))
+            if attr and key:
+                self.attributes.append((key, values.get(attr) or ""))
+        if tag not in self.VOID:
+            self.open.append((tag, values.get("data-i18n"), []))
+
+    def handle_endtag(self, tag: str) -> None:
+        while self.open:
+            name, key, parts = self.open.pop()
+            text = "".join(parts)
+            if key is not None:
+                self.texts.append((key, text))
+            if self.open:
+                self.open[-1][2].append(text)
+            if name == tag:
+                break
+
+    def handle_data(self, data: str) -> None:
+        if self.open:
+            self.open[-1][2].append(data)
+
+
+@pytest.mark.parametrize("page", page_words.PAGES, ids=lambda p: p.name)
+def test_the_pages_first_paint_is_the_catalogues(page: Path) -> None:
+    """Every ``data-i18n`` element of the HTML holds the catalogue's word for its key in the
+    page's default language, as the script would fill it in (symbols ``X_sub`` shown with
+    their subscript), and every ``data-i18n-attr`` attribute too: the HTML holds no word
+    of its own (issue 27 item 4; ``make messages`` writes them)."""
+    source = page.read_text(encoding="utf-8")
+    language = page_words.PAGE_LANGUAGE
+    assert f'<html lang="{language}">' in source
+    parser = _StaticTexts()
+    parser.feed(source)
+    table = words(language)
+    assert len(parser.texts) > 30
+    differ = [
+        (key, text) for key, text in parser.texts if text != page_words.page_plain(table[key])
+    ]
+    assert not differ, differ
+    differ = [
+        (key, value)
+        for key, value in parser.attributes
+        if value != page_words.page_plain(table[key])
+    ]
+    assert not differ, differ
+    assert page_words.first_paint(source) == source  # make messages is idempotent

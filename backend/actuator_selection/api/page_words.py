@@ -9,6 +9,12 @@ module from the catalogue (``python -m actuator_selection.api.page_words export`
 test fails when the checked-in module differs from what the catalogue gives
 (``tests/api/test_page_words.py``). ``docs/i18n.md`` says how a word is added.
 
+The pages' HTML (``frontend/index.html``, ``frontend/sales.html``) holds the same words for
+its first paint, before the page's script has run: ``make messages`` writes each
+``data-i18n`` element's text and each ``data-i18n-attr`` attribute from the catalogue in
+the pages' default language (:data:`PAGE_LANGUAGE`, ``initialLang``'s fallback), so the
+HTML holds no word of its own (:func:`first_paint`).
+
 The module holds, per language, the page's keyed words, ``words.<English>`` for the
 catalogue values a check lacks (their German is the server's, the context-less msgid),
 and plotly.js's own words (msgctxt ``plotly``, the mode bar's tooltips).
@@ -16,7 +22,9 @@ and plotly.js's own words (msgctxt ``plotly``, the mode bar's tooltips).
 
 from __future__ import annotations
 
+import html
 import json
+import re
 import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -39,6 +47,26 @@ from actuator_selection.config import REPO_ROOT
 
 PAGE_MODULE: Final = REPO_ROOT / "frontend" / "lib" / "messages.js"
 """The page's words as a JavaScript module (checked in; written by ``make messages``)."""
+
+PAGES: Final = (REPO_ROOT / "frontend" / "index.html", REPO_ROOT / "frontend" / "sales.html")
+"""The pages whose first paint holds the catalogue's words (written by ``make messages``)."""
+
+PAGE_LANGUAGE: Final = "de"
+"""The pages' default language: ``initialLang`` (``frontend/lib/i18n.js``) falls back to
+German, and the HTML says so (``<html lang="de">``)."""
+
+PAGE_SYMBOL: Final = re.compile(r"(^|[^A-Za-z0-9_])([A-Za-z])_([A-Za-z0-9]+)")
+"""The page's rule for a symbol ``X_sub`` (``frontend/lib/symbols.js`` ``SYMBOL``)."""
+
+_TEXT_ELEMENT: Final = re.compile(
+    r'(?P<open><(?P<tag>[a-z][a-z0-9]*)\b[^>]*?\sdata-i18n="(?P<key>[^"]+)"[^>]*>)'
+    r"(?:[^<]|</?sub>)*(?P<close></(?P=tag)>)"
+)
+"""An element with ``data-i18n`` and its text (which may hold the ``<sub>`` of a symbol)."""
+
+_ATTR_ELEMENT: Final = re.compile(
+    r'<[a-z][a-z0-9]*\b[^>]*\sdata-i18n-attr="(?P<pairs>[^"]*)"[^>]*>'
+)
 
 DOCUMENT: Final = "document."
 """The contexts of the documents' labels (not the page's)."""
@@ -101,6 +129,47 @@ def module_text() -> str:
     )
 
 
+def page_html(text: str) -> str:
+    """A word as the page shows it (``appendSymbols``), as HTML: escaped, each symbol
+    ``X_sub`` as ``X<sub>sub</sub>``.
+
+    >>> page_html("T_1 & t_p < 1 s")
+    'T<sub>1</sub> &amp; t<sub>p</sub> &lt; 1 s'
+    """
+    return PAGE_SYMBOL.sub(r"\1\2<sub>\3</sub>", html.escape(text, quote=False))
+
+
+def page_plain(text: str) -> str:
+    """A word as an attribute of the page holds it (``plainSymbols``): ``T_1`` → ``T1``."""
+    return PAGE_SYMBOL.sub(r"\1\2\3", text)
+
+
+def first_paint(page: str, language: str = PAGE_LANGUAGE) -> str:
+    """``page`` (HTML) with every ``data-i18n`` element's text and every ``data-i18n-attr``
+    attribute the catalogue's word in ``language``, as the page's script fills them
+    (``applyStaticTexts``); an unknown key is a KeyError."""
+    table = words(language)
+
+    def text(match: re.Match[str]) -> str:
+        return match["open"] + page_html(table[match["key"]]) + match["close"]
+
+    def attributes(match: re.Match[str]) -> str:
+        tag = match[0]
+        for pair in match["pairs"].split(";"):
+            attr, _, key = (part.strip() for part in pair.partition(":"))
+            if attr and key:
+                value = html.escape(page_plain(table[key]), quote=True)
+                written = f'{attr}="{value}"'
+                pattern = re.compile(rf'(?<=\s){re.escape(attr)}="[^"]*"')
+                if pattern.search(tag):
+                    tag = pattern.sub(written.replace("\\", "\\\\"), tag)
+                else:
+                    tag = tag[:-1].rstrip("/").rstrip() + f" {written}>"
+        return tag
+
+    return _ATTR_ELEMENT.sub(attributes, _TEXT_ELEMENT.sub(text, page))
+
+
 def keep_keyed_in_template(template: Path) -> None:
     """Add the catalogue's keyed words (with a msgctxt) to the extracted ``template``, so
     that ``pybabel update`` keeps them: they are declared in the catalogue, not in code."""
@@ -114,10 +183,13 @@ def keep_keyed_in_template(template: Path) -> None:
 
 
 def main(argv: Sequence[str]) -> int:
-    """``export``: write :data:`PAGE_MODULE`; ``template FILE``: :func:`keep_keyed_in_template`."""
+    """``export``: write :data:`PAGE_MODULE` and the first paint of :data:`PAGES`;
+    ``template FILE``: :func:`keep_keyed_in_template`."""
     match list(argv):
         case ["export"]:
             PAGE_MODULE.write_text(module_text(), encoding="utf-8")
+            for page in PAGES:
+                page.write_text(first_paint(page.read_text(encoding="utf-8")), encoding="utf-8")
         case ["template", path]:
             keep_keyed_in_template(Path(path))
         case _:
