@@ -98,3 +98,22 @@ def test_a_candidates_detail_after_a_catalogue_change_is_a_conflict(api: SalesAp
     assert "run the selection again" in error["msg"]
     # the stored answer itself stays as it was answered
     assert api.client.get(f"/api/v1/selections/{selection['id']}").json() == selection
+
+
+def test_the_cycle_after_a_catalogue_change_keeps_the_stored_torques(api: SalesApi) -> None:
+    """The cycle's torque along each segment is computed again as the detail is: after a
+    catalogue change it is a conflict, and ``torques=false`` still draws the stored T_1,
+    T_2, T_3 (what the page falls back to); the report draws those too."""
+    body = {**worked_example.request(), "models": [MODEL]}
+    selection = api.client.post("/api/v1/selections", json=body).json()
+    url = f"/api/v1/selections/{selection['id']}/candidates/{MODEL}/cycle"
+    assert api.client.get(url).json()["layout"]["meta"] == {"torques": "segments"}
+    _set_peak_torque(api, 97)
+    after = api.client.get(url)
+    assert after.status_code == 409, after.text
+    assert after.json()["detail"][0]["loc"] == ["path", "selection_id"]
+    lean = api.client.get(url, params={"torques": "false"})
+    assert lean.status_code == 200, lean.text
+    assert lean.json()["layout"]["meta"] == {"torques": "steps"}
+    report = api.client.get(f"/api/v1/selections/{selection['id']}/report.pdf")
+    assert report.status_code == 200
