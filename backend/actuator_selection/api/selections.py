@@ -26,6 +26,7 @@ from actuator_selection.api.quote_document import diagram_points, speed_torque_f
 from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.core.errors import ConflictError, NotFoundError
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
+from actuator_selection.schemas.ratio import RatioStudyOut, RatioStudyRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
     CandidateDetailOut,
@@ -36,6 +37,7 @@ from actuator_selection.schemas.selections import (
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.profiles import with_profiles
+from actuator_selection.services.ratio import study
 from actuator_selection.services.reports import (
     COLUMNS,
     candidate_diagram,
@@ -154,6 +156,22 @@ def solve_selection_limits(
     each with the check that fails just beyond it (bisection over the flowchart)."""
     (body,) = with_profiles(session, [body], [["body"]])
     return solve_limits(body, catalogue_snapshot(request, session), _localize(request, response))
+
+
+@router.post(
+    "/selections/ratio-study",
+    responses={422: {"description": "invalid load case or study"}},
+)
+@reads_only
+def solve_ratio_study(
+    body: RatioStudyRequest, request: Request, session: SessionDep
+) -> RatioStudyOut:
+    """For every actuator, the interval(s) of a free transmission value (an external ratio,
+    a lead, a pulley or pinion diameter) in which every check passes, the value of least
+    binding utilisation and the checks that bind at each end (the engine over a grid of
+    values × the catalogue, the ends bisected)."""
+    (body,) = with_profiles(session, [body], [["body"]])
+    return study(body, catalogue_snapshot(request, session))
 
 
 @router.get(

@@ -1,0 +1,101 @@
+"""The ratio study as a use case: a load case's free transmission value over the
+catalogue (``core/ratio.py``)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from actuator_selection.core.application import Application
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.mechanisms import Transmission
+from actuator_selection.core.ratio import RatioResult, geared, ratio_study
+from actuator_selection.schemas.ratio import (
+    UNITS,
+    CurveOut,
+    IntervalOut,
+    RatioActuatorOut,
+    RatioStudyIn,
+    RatioStudyOut,
+    RatioStudyRequest,
+)
+from actuator_selection.schemas.selections import BallScrewLoad
+from actuator_selection.services.catalogue import CatalogueSnapshot
+
+
+def varied(body: RatioStudyRequest) -> Callable[[float], Application]:
+    """The load case at a value of the free variable, built as a selection builds it."""
+    study = body.ratio_study
+    if study.variable == "ratio":
+        base = body.to_core()
+        return lambda i: geared(
+            base,
+            Transmission(
+                ratio=i,
+                inertia_kgm2=study.transmission_inertia_kgm2,
+                efficiency=study.transmission_efficiency,
+            ),
+        )
+    load = body.load
+    field: str = study.variable
+    scale = 1.0
+    if field == "lead_mm" and isinstance(load, BallScrewLoad):
+        field, scale = "lead_m", 1e-3  # the chapter's ball screw takes its lead in m
+    if field not in type(load).model_fields:
+        raise InvalidInputError(
+            "ratio_study.variable",
+            f"the load of type {load.type!r} has no {study.variable}: choose one it has, or ratio",
+        )
+    body.to_core()  # the load case as sent is valid
+
+    def at(x: float) -> Application:
+        return body.model_copy(
+            update={"load": load.model_copy(update={field: x * scale})}
+        ).to_core()
+
+    return at
+
+
+def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
+    return RatioActuatorOut(
+        model=result.actuator.model,
+        intervals=[
+            IntervalOut(
+                low=i.low,
+                high=i.high,
+                low_binding=list(i.low_binding),
+                high_binding=list(i.high_binding),
+            )
+            for i in result.intervals
+        ],
+        best=result.best,
+        best_utilisation=result.best_utilisation,
+        best_binding=result.best_binding,
+        verdict=None if result.verdict is None else result.verdict.value,
+        curve=CurveOut(values=list(result.grid), utilisation=list(result.utilisation))
+        if curve
+        else None,
+    )
+
+
+def study(body: RatioStudyRequest, catalogue: CatalogueSnapshot) -> RatioStudyOut:
+    """Every actuator's feasible intervals and best value, those that fit first."""
+    spec: RatioStudyIn = body.ratio_study
+    low, high = spec.bounds
+    actuators = catalogue.actuators_of(body.models)
+    results = ratio_study(actuators, varied(body), low, high, series=spec.series)
+    results.sort(
+        key=lambda r: (
+            r.best_utilisation is None,
+            r.best_utilisation if r.best_utilisation is not None else 0.0,
+            r.actuator.model,
+        )
+    )
+    return RatioStudyOut(
+        catalogue_version=catalogue.version,
+        variable=spec.variable,
+        unit=UNITS[spec.variable],
+        min=low,
+        max=high,
+        series=spec.series,
+        actuators=[_out(r, n < spec.curves) for n, r in enumerate(results)],
+    )
