@@ -1,0 +1,93 @@
+"""The ratio study through the API (issue 31 part 1): the vertical screw that fits
+nowhere gets a lead range and a best lead per candidate, and each end is re-checked by a
+plain selection at that lead; on SQLite and PostgreSQL (the ``client`` fixture)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi.testclient import TestClient
+from tests.api.test_selection_binding import VERTICAL_SCREW
+
+API = "/api/v1/selections"
+
+
+def _study(client: TestClient, body: dict[str, Any]) -> dict[str, Any]:
+    response = client.post(f"{API}/ratio-study", json=body)
+    assert response.status_code == 200, response.text
+    answer: dict[str, Any] = response.json()
+    return answer
+
+
+def _verdict(client: TestClient, model: str, lead_mm: float) -> str:
+    body = VERTICAL_SCREW | {"models": [model]}
+    body["load"] = VERTICAL_SCREW["load"] | {"lead_mm": lead_mm}
+    response = client.post(API, json=body)
+    assert response.status_code == 201, response.text
+    (candidate,) = response.json()["candidates"]
+    verdict: str = candidate["verdict"]
+    return verdict
+
+
+def test_the_vertical_screw_gets_a_lead_range_and_a_best_lead(client: TestClient) -> None:
+    nothing = client.post(API, json=VERTICAL_SCREW).json()
+    assert {c["verdict"] for c in nothing["candidates"]} == {"unsuitable"}
+    # the catalogue's actuators turn at most a few hundred rpm: 300 mm/s needs a long lead
+    study = {"variable": "lead_mm", "min": 5, "max": 1000}
+    answer = _study(client, VERTICAL_SCREW | {"ratio_study": study})
+    assert (answer["variable"], answer["unit"], answer["min"], answer["max"]) == (
+        "lead_mm",
+        "mm",
+        5.0,
+        1000.0,
+    )
+    fitting = [a for a in answer["actuators"] if a["intervals"]]
+    assert fitting, "some actuator fits at some lead"
+    assert len(answer["actuators"]) == len(nothing["candidates"])
+    utilisations = [a["best_utilisation"] for a in fitting]
+    assert utilisations == sorted(utilisations)
+    for entry in fitting:
+        assert any(i["low"] <= entry["best"] <= i["high"] for i in entry["intervals"])
+        assert entry["verdict"] in ("suitable", "unconfirmed")
+    assert fitting[0]["curve"] is not None
+    assert len(fitting[0]["curve"]["values"]) == len(fitting[0]["curve"]["utilisation"])
+    # each end with a binding check, re-checked by a plain selection at that lead
+    checked = 0
+    for best in fitting[:3]:
+        for interval in best["intervals"]:
+            for end, binding, outside in (
+                (interval["low"], interval["low_binding"], 1 - 1e-4),
+                (interval["high"], interval["high_binding"], 1 + 1e-4),
+            ):
+                if binding:
+                    assert _verdict(client, best["model"], end) != "unsuitable"
+                    assert _verdict(client, best["model"], end * outside) == "unsuitable"
+                    checked += 1
+    assert checked
+
+
+def test_a_series_checks_only_its_values(client: TestClient) -> None:
+    series = [5, 10, 16, 20, 25, 32, 40, 50]
+    study = {"variable": "lead_mm", "min": 5, "max": 1000, "series": [*series, 200, 400, 800]}
+    answer = _study(client, VERTICAL_SCREW | {"ratio_study": study})
+    assert any(entry["intervals"] for entry in answer["actuators"])
+    for entry in answer["actuators"]:
+        if entry["best"] is not None:
+            assert entry["best"] in study["series"]
+        for interval in entry["intervals"]:
+            assert interval["low"] in study["series"]
+            assert interval["high"] in study["series"]
+
+
+def test_bad_studies_are_refused_naming_the_field(client: TestClient) -> None:
+    for study, field in (
+        ({"variable": "pulley_diameter_mm"}, "ratio_study.variable"),
+        ({"variable": "lead_mm", "min": 30, "max": 10}, "ratio_study"),
+        ({"variable": "ratio", "min": -1}, "ratio_study.min"),
+        ({"variable": "speed"}, "ratio_study.variable"),
+        ({"variable": "ratio", "series": []}, "ratio_study.series"),
+    ):
+        response = client.post(f"{API}/ratio-study", json=VERTICAL_SCREW | {"ratio_study": study})
+        assert response.status_code == 422, (study, response.text)
+        (error, *_) = response.json()["detail"]
+        assert ".".join(map(str, error["loc"][1:])).startswith(field), (study, response.text)
