@@ -68,15 +68,16 @@ def test_the_vertical_screw_gets_a_lead_range_and_a_best_lead(client: TestClient
 
 def test_a_series_checks_only_its_values(client: TestClient) -> None:
     series = [5, 10, 16, 20, 25, 32, 40, 50]
-    study = {"variable": "lead_mm", "min": 5, "max": 1000, "series": [*series, 200, 400, 800]}
+    leads = [*series, 200, 400, 800]
+    study = {"variable": "lead_mm", "min": 5, "max": 1000, "series": leads}
     answer = _study(client, VERTICAL_SCREW | {"ratio_study": study})
     assert any(entry["intervals"] for entry in answer["actuators"])
     for entry in answer["actuators"]:
         if entry["best"] is not None:
-            assert entry["best"] in study["series"]
+            assert entry["best"] in leads
         for interval in entry["intervals"]:
-            assert interval["low"] in study["series"]
-            assert interval["high"] in study["series"]
+            assert interval["low"] in leads
+            assert interval["high"] in leads
 
 
 def test_bad_studies_are_refused_naming_the_field(client: TestClient) -> None:
