@@ -1,0 +1,104 @@
+"""The whole-catalogue ratio study (issue 31 part 1) against a plain whole-catalogue
+selection of the same load case, in the same run: the study's time as a ratio of the
+selection's (the issue's target: at most 5×). Server side, no database or HTTP: what
+POST /selections and POST /selections/ratio-study compute after reading the request.
+Runs on a throw-away SQLite database seeded with the starter catalogue, and on 10 × and
+100 × its copies (renamed, a size to measure with, not data)."""
+
+from __future__ import annotations
+
+import tempfile
+import time
+from collections.abc import Callable
+from dataclasses import replace
+from datetime import UTC, datetime
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+from actuator_selection.db.engine import make_engine, make_session_factory
+from actuator_selection.main import tune_gc
+from actuator_selection.schemas.ratio import RatioStudyRequest
+from actuator_selection.schemas.selections import SelectionRequest
+from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
+from actuator_selection.services.ratio import study
+from actuator_selection.services.selections import size_selection
+from bench.selection import starter_catalogue
+
+CASES: dict[str, dict[str, Any]] = {
+    "vertical screw, lead 5–1000 mm": {
+        "load": {
+            "type": "ball_screw_incline",
+            "mass_kg": 25.0,
+            "lead_mm": 10.0,
+            "friction_coefficient": 0.1,
+            "efficiency": 0.9,
+            "incline_deg": 90,
+            "speed": 300,
+        },
+        "cycle": {"accel_s": 0.1, "constant_s": 0.3, "decel_s": 0.1, "pause_s": 0.5},
+        "ratio_study": {"variable": "lead_mm", "min": 5, "max": 1000},
+    },
+    "worked example, ratio 1–20": {
+        "load": {"speed_rpm": 4, "torque_nm": 5, "inertia_kgm2": 1.3},
+        "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+        "ratio_study": {"variable": "ratio", "min": 1, "max": 20},
+    },
+}
+
+
+def _best(run: Callable[[], object], repeat: int) -> float:
+    run()  # warm the caches
+    times = []
+    for _ in range(repeat):
+        started = time.perf_counter()
+        run()
+        times.append(time.perf_counter() - started)
+    return min(times)
+
+
+def _copies(starter: CatalogueSnapshot, copies: int) -> CatalogueSnapshot:
+    if copies == 1:
+        return starter
+    actuators = tuple(
+        replace(a, model=f"{a.model}~{k:03d}") for k in range(copies) for a in starter.actuators
+    )
+    interfaces = {
+        f"{model}~{k:03d}": interface
+        for k in range(copies)
+        for model, interface in starter.interfaces.items()
+    }
+    return replace(starter, actuators=actuators, interfaces=interfaces)
+
+
+def main() -> None:
+    """Run the benchmark and print its table."""
+    with tempfile.TemporaryDirectory() as tmp:
+        url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"
+        starter_catalogue(url)
+        with make_session_factory(make_engine(url))() as session:
+            starter = CatalogueCache().snapshot(session)
+    tune_gc()
+    for copies in (1, 10, 100):
+        catalogue = _copies(starter, copies)
+        actuators = catalogue.actuators
+        for name, body in CASES.items():
+            request = RatioStudyRequest.model_validate(body)
+            plain = SelectionRequest.model_validate(
+                {k: v for k, v in body.items() if k != "ratio_study"}
+            )
+            app = plain.to_core()
+            repeat = 5 if copies < 100 else 1
+            selection = _best(
+                partial(size_selection, plain, app, actuators, catalogue, datetime.now(UTC)),
+                repeat,
+            )
+            ratio = _best(partial(study, request, catalogue), repeat)
+            print(
+                f"{len(actuators):>5} actuators, {name:<32} selection {selection * 1e3:8.1f} ms, "
+                f"ratio study {ratio * 1e3:8.1f} ms = {ratio / selection:5.1f}× (target ≤ 5×)"
+            )
+
+
+if __name__ == "__main__":
+    main()
