@@ -17,8 +17,9 @@ The search runs on the engine, vectorised over cases × actuators:
    cases, the actuators that have one as the columns, each bracket's own cell read), so
    several intervals per actuator are found where the checks are not monotonic;
 3. the grid value of least binding utilisation (max value/limit over the checks,
-   :func:`~actuator_selection.core.checks.rule.utilisation`) is refined by golden-section
-   search within its feasible interval, all actuators together.
+   :func:`~actuator_selection.core.checks.rule.utilisation`) is refined by parabolic
+   steps in log x (a passing value only, and only where it lowers the utilisation), all
+   actuators together.
 
 Analytic cross-check (Van de Straete, De Schutter, Belmans, "An efficient procedure for
 checking performance limits in servo drive selection and optimization", IEEE/ASME Trans.
@@ -44,6 +45,7 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.application import Application
 from actuator_selection.core.candidates import Verdict
 from actuator_selection.core.checks import Rule, Status
+from actuator_selection.core.cycle import Load
 from actuator_selection.core.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -54,15 +56,17 @@ from actuator_selection.core.engine import (
     evaluate_batch,
 )
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.loads import _square
 from actuator_selection.core.mechanisms import Transmission, with_transmission
 from actuator_selection.core.motion import Motion
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
-BISECTION_STEPS = 14
-"""Halvings of each bracket: a grid step of 6.5 % narrowed to about 4·10⁻⁶ relative."""
-GOLDEN_STEPS = 16
-"""Golden-section steps for the best value (one grid step narrowed by 0.618¹⁶ ≈ 5·10⁻⁴)."""
+BISECTION_STEPS = 12
+"""Halvings of every bracket (one engine call each): a grid step of 6.5 % narrowed to
+1.6·10⁻⁵ relative."""
+REFINE_ROUNDS = 3
+"""Parabolic steps for the best value (two engine calls each)."""
 MAX_SERIES = 200
 """The most values of a standard series."""
 
@@ -86,6 +90,19 @@ def geared(app: Application, transmission: Transmission) -> Application:
     load through :func:`~actuator_selection.core.mechanisms.with_transmission` (J_L/i² +
     J_tr, T/i, η_tr·η by the power flow). At i = 1 with J_tr = 0 and η = 1 it is ``app``'s
     own load case."""
+    i = transmission.ratio
+    if app.pattern is not None and app.load is not None and transmission.efficiency == 1:
+        # the chapter's shorthand stays one (T_L as friction, η = 1): the numbers of
+        # with_transmission, and the engine's trapezoid columns
+        pattern, load = app.pattern, app.load
+        return dataclasses.replace(
+            app,
+            pattern=dataclasses.replace(pattern, speed_rpm=pattern.speed_rpm * i),
+            load=Load(
+                torque_nm=load.torque_nm / i,
+                inertia_kgm2=transmission.inertia_kgm2 + load.inertia_kgm2 / _square(i),
+            ),
+        )
     motion = app.cycle
     segments = tuple(
         dataclasses.replace(
@@ -96,9 +113,9 @@ def geared(app: Application, transmission: Transmission) -> Application:
         )
         for s in motion.segments
     )
-    load = with_transmission(motion.load, transmission)
+    axis = with_transmission(motion.load, transmission)
     return dataclasses.replace(
-        app, pattern=None, load=None, motion=Motion(segments=segments, load=load)
+        app, pattern=None, load=None, motion=Motion(segments=segments, load=axis)
     )
 
 
@@ -202,7 +219,7 @@ def ratio_study(
     ev = evaluate_batch(actuators, [vary(float(x)) for x in grid], rules=rules, arrays=cat)
     names = ev.check_names
     ok = ev.verdicts != _FAIL  # grid × actuators
-    util, _which = _utilisation(ev)
+    util, which = _utilisation(ev)
     cells = _Cells(actuators, vary, rules)
     failing_grid = ev.statuses == _CHECK_FAIL
 
@@ -228,41 +245,40 @@ def ratio_study(
         for j, k, o, row in zip(change_j, change_k, ok_side, bad_fail, strict=True)
     }
 
-    # the best grid value per actuator among the passing ones, then golden section
+    # the best grid value per actuator among the passing ones, then a finer grid about it
     masked = np.where(ok & np.isfinite(util), util, np.inf)
     best_k = np.argmin(masked, axis=0)
-    has_best = np.isfinite(masked[best_k, np.arange(len(actuators))])
+    every = np.arange(len(actuators))
+    has_best = np.isfinite(masked[best_k, every])
     best = grid[best_k].astype(float)
-    best_util = masked[best_k, np.arange(len(actuators))]
+    best_util = masked[best_k, every]
+    best_code = ev.verdicts[best_k, every]
+    best_which = which[best_k, every]
     columns = np.nonzero(has_best)[0]
     if series is None and columns.size:
-        k = best_k[columns]
-        a = grid[np.maximum(k - 1, 0)]
-        b = grid[np.minimum(k + 1, grid.size - 1)]
-        a, b = np.log(a), np.log(b)
-        ratio = (math.sqrt(5) - 1) / 2
-        for _ in range(GOLDEN_STEPS):
-            c = b - ratio * (b - a)
-            d = a + ratio * (b - a)
-            codes, u, _w, _f = cells(np.exp(np.concatenate([c, d])), np.tile(columns, 2))
-            fails = codes == _FAIL
-            uc = np.where(fails[: c.size] | ~np.isfinite(u[: c.size]), np.inf, u[: c.size])
-            ud = np.where(fails[c.size :] | ~np.isfinite(u[c.size :]), np.inf, u[c.size :])
-            left = uc <= ud
-            b = np.where(left, d, b)
-            a = np.where(left, a, c)
-        middle = np.exp((a + b) / 2)
-        codes, u, _w, _f = cells(middle, columns)
-        better = (codes != _FAIL) & np.isfinite(u) & (u < best_util[columns])
-        best[columns[better]] = middle[better]
-    verdict_at: dict[int, Verdict] = {}
-    binding_at: dict[int, str] = {}
-    if columns.size:  # the figures at the best value, as a selection there gives them
-        codes, u, w, _f = cells(best[columns], columns)
-        for n, c in enumerate(columns.tolist()):
-            verdict_at[c] = VERDICT_BY_CODE[int(codes[n])]
-            binding_at[c] = cells.names[int(w[n])]
-            best_util[c] = u[n]
+        # a parabola in log x through the best and its neighbours, its vertex evaluated;
+        # each round about the best so far, a quarter as wide
+        centre = np.log(best[columns])
+        half = np.full(columns.size, math.log(grid[1] / grid[0]))
+        for _ in range(REFINE_ROUNDS):
+            points = np.exp(centre[:, None] + half[:, None] * np.array([-1.0, 0.0, 1.0]))
+            u = cells(points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
+            left, mid, right = u[:, 0], u[:, 1], u[:, 2]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                shift = 0.5 * half * (left - right) / (left - 2 * mid + right)
+            convex = np.isfinite(shift) & (left - 2 * mid + right > 0)
+            vertex = np.exp(centre + np.where(convex, np.clip(shift, -half, half), 0.0))
+            vertex = np.clip(vertex, grid[0], grid[-1])  # within the range searched
+            codes, u, w, _f = cells(vertex, columns)
+            better = (codes != _FAIL) & np.isfinite(u) & (u < best_util[columns])
+            chosen = columns[better]
+            best[chosen] = vertex[better]
+            best_util[chosen] = u[better]
+            best_code[chosen] = codes[better]
+            best_which[chosen] = w[better]
+            centre, half = np.log(best[columns]), half / 4
+    verdict_at = {int(c): VERDICT_BY_CODE[int(best_code[c])] for c in columns}
+    binding_at = {int(c): names[int(best_which[c])] for c in columns}
 
     results = []
     for j, actuator in enumerate(actuators):
