@@ -21,7 +21,7 @@ The search runs on the engine, vectorised over cases × actuators:
    steps in log x (a passing value only, and only where it lowers the utilisation), all
    actuators together.
 
-Analytic cross-check (Van de Straete, De Schutter, Belmans, "An efficient procedure for
+Analytic cross-check (H.-J. Van de Straete, J. De Schutter, R. Belmans, "An efficient procedure for
 checking performance limits in servo drive selection and optimization", IEEE/ASME Trans.
 Mechatronics 4(4), 1999, pp. 378–386; Giberti, Cinquemani, Legnani, "A practical approach
 to the selection of the motor-reducer unit in electric drive systems", Mech. Based Des.
@@ -75,8 +75,8 @@ _CHECK_FAIL = STATUS_BY_CODE.index(Status.FAIL)
 
 
 def inertia_matched_ratio(load_inertia_kgm2: float, actuator_inertia_kgm2: float) -> float:
-    """i* = √(J_L/J_A): the ratio of least peak torque for a pure inertia load (Giberti et
-    al. 2011, Eq. 10; Van de Straete et al. 1999, the inertia match).
+    """i* = √(J_L/J_A): the ratio of least peak torque for a pure inertia load, the inertia
+    match (Giberti et al. 2011; Van de Straete et al. 1999).
 
     >>> inertia_matched_ratio(0.5, 0.02)
     5.0
