@@ -92,3 +92,15 @@ def test_bad_studies_are_refused_naming_the_field(client: TestClient) -> None:
         assert response.status_code == 422, (study, response.text)
         (error, *_) = response.json()["detail"]
         assert ".".join(map(str, error["loc"][1:])).startswith(field), (study, response.text)
+
+
+def test_nothing_fits_names_the_leads_that_make_an_actuator_fit(client: TestClient) -> None:
+    """The selection's `binding` says which lead makes which actuator fit, from the study."""
+    answer = client.post(API, json=VERTICAL_SCREW).json()
+    guided = answer["binding"]["transmissions"]
+    assert guided
+    assert {g["variable"] for g in guided} == {"lead_mm"}
+    for entry in guided:
+        assert entry["low"] <= entry["best"] <= entry["high"]
+        assert _verdict(client, entry["model"], entry["best"]) != "unsuitable"
+    assert client.get(f"{API}/{answer['id']}").json()["binding"] == answer["binding"]

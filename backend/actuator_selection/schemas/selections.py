@@ -643,6 +643,19 @@ class BindingChangeOut(ResponseModel):
     reason_code: str | None = Field(description="why `value` is null: a limit's reason_code")
 
 
+class BindingTransmissionOut(ResponseModel):
+    """Where the load's own lead or diameter makes an actuator fit (the ratio study,
+    POST /selections/ratio-study, over the variable's default range widened 10× both ways)."""
+
+    variable: str = Field(description="the load's field, e.g. lead_mm")
+    unit: str
+    model: str
+    low: float = Field(description="the interval of the variable that holds `best`")
+    high: float
+    best: float = Field(description="the value of least binding utilisation")
+    best_utilisation: float
+
+
 class BindingOut(ResponseModel):
     """What binds across the catalogue when no candidate is suitable or unconfirmed."""
 
@@ -652,7 +665,13 @@ class BindingOut(ResponseModel):
     )
     changes: list[BindingChangeOut] = Field(
         description="a longer t_1 and a longer pause for the nearest miss (no pause where the "
-        "cycle does not end at standstill); a range of ratios or leads is not searched yet"
+        "cycle does not end at standstill)"
+    )
+    transmissions: list[BindingTransmissionOut] = Field(
+        default_factory=list,
+        description="the load's own lead or diameter: the best few actuators that fit at "
+        "some value of it, with its interval and best value (empty: none, or the load has no "
+        "such value)",
     )
 
 

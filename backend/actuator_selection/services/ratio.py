@@ -3,13 +3,17 @@ catalogue (``core/ratio.py``)."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from typing import Any
 
+from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.application import Application
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.mechanisms import Transmission
 from actuator_selection.core.ratio import RatioResult, geared, ratio_study
 from actuator_selection.schemas.ratio import (
+    DEFAULT_RANGE,
+    MAX_VALUE,
     UNITS,
     CurveOut,
     IntervalOut,
@@ -18,13 +22,12 @@ from actuator_selection.schemas.ratio import (
     RatioStudyOut,
     RatioStudyRequest,
 )
-from actuator_selection.schemas.selections import BallScrewLoad
+from actuator_selection.schemas.selections import BallScrewLoad, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
 
 
-def varied(body: RatioStudyRequest) -> Callable[[float], Application]:
+def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], Application]:
     """The load case at a value of the free variable, built as a selection builds it."""
-    study = body.ratio_study
     if study.variable == "ratio":
         base = body.to_core()
         return lambda i: geared(
@@ -82,7 +85,7 @@ def study(body: RatioStudyRequest, catalogue: CatalogueSnapshot) -> RatioStudyOu
     spec: RatioStudyIn = body.ratio_study
     low, high = spec.bounds
     actuators = catalogue.actuators_of(body.models)
-    results = ratio_study(actuators, varied(body), low, high, series=spec.series)
+    results = ratio_study(actuators, varied(body, spec), low, high, series=spec.series)
     results.sort(
         key=lambda r: (
             r.best_utilisation is None,
@@ -99,3 +102,52 @@ def study(body: RatioStudyRequest, catalogue: CatalogueSnapshot) -> RatioStudyOu
         series=spec.series,
         actuators=[_out(r, n < spec.curves) for n, r in enumerate(results)],
     )
+
+
+GUIDED = 3
+"""How many actuators the guidance names per free value."""
+GUIDANCE_WIDENING = 10.0
+"""The guidance searches the variable's default range widened this much both ways."""
+
+
+def guidance(body: SelectionRequest, actuators: Sequence[Actuator]) -> list[dict[str, Any]]:
+    """When nothing fits: for the load's own lead or diameter, the actuators that fit at
+    some value of it (best utilisation first, at most :data:`GUIDED`), each with the
+    interval that holds its best value ("a lead of 190–1000 mm makes CHA-32A-50 fit").
+    The range is the variable's default range widened by :data:`GUIDANCE_WIDENING`."""
+    fields = type(body.load).model_fields
+    found: list[dict[str, Any]] = []
+    for variable, (low, high) in DEFAULT_RANGE.items():
+        own = variable in fields or (variable == "lead_mm" and isinstance(body.load, BallScrewLoad))
+        if variable == "ratio" or not own:
+            continue
+        spec = RatioStudyIn(
+            variable=variable,  # type: ignore[arg-type]
+            min=low / GUIDANCE_WIDENING,
+            max=min(high * GUIDANCE_WIDENING, MAX_VALUE),
+        )
+        lower, upper = spec.bounds
+        results = [
+            r
+            for r in ratio_study(actuators, varied(body, spec), lower, upper)
+            if r.best is not None and r.best_utilisation is not None
+        ]
+        results.sort(key=lambda r: (r.best_utilisation, r.actuator.model))
+        for result in results[:GUIDED]:
+            assert result.best is not None
+            best = result.best
+            interval = next(
+                (i for i in result.intervals if i.low <= best <= i.high), result.intervals[0]
+            )
+            found.append(
+                {
+                    "variable": variable,
+                    "unit": UNITS[variable],
+                    "model": result.actuator.model,
+                    "low": interval.low,
+                    "high": interval.high,
+                    "best": best,
+                    "best_utilisation": result.best_utilisation,
+                }
+            )
+    return found

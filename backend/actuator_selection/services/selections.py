@@ -54,6 +54,7 @@ from actuator_selection.services.presenters.selection import (
     dump_json,
     or_none,
 )
+from actuator_selection.services.ratio import guidance
 
 STORE_COMPRESSION = 1
 """gzip level of stored answers, compressed once for the row and for the answer to a
@@ -174,6 +175,8 @@ def size_selection(
     """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
     groups = presenter.DriveOptionGroups(catalogue)
     candidates, binding = _candidates(actuators, app, catalogue, groups)
+    if binding is not None:  # nothing fits: where the load's own lead or diameter would
+        binding["transmissions"] = guidance(body, actuators)
     # The selection request's fields alone (a batch case's ``case_id`` is the batch's).
     request = body.model_dump(mode="json", include=set(SelectionRequest.model_fields))
     answer = presenter.selection_answer(

@@ -293,8 +293,8 @@ def binding(
     largest n_max), from the candidates' own checks (``check_dicts()``, in the ranking's
     order). Then what the inverse solve (``core/inverse.py``) says of a longer pause and
     a longer t_1 for the nearest miss of all, the first candidate: the shortest value with
-    which no check fails, or none (and the checks that fail at every value). A range of
-    ratios or leads is not searched."""
+    which no check fails, or none (and the checks that fail at every value). The range of
+    the load's own lead or diameter is added by the service (``services/ratio.guidance``)."""
     if not verdicts or any(v is not Verdict.UNSUITABLE for v in verdicts):
         return None
     failing: dict[str, list[tuple[float, JSON, str]]] = {}
