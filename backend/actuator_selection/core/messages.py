@@ -103,6 +103,12 @@ MESSAGES: Final[Mapping[str, str]] = {
     ),
     "ratio_too_small": N_("is so small that J/i² has no value: no real gear"),
     "ratio_too_large": N_("is so large that the load vanishes behind it (underflow): no real gear"),
+    # The ratio study (core/ratio.py, services/ratio.py)
+    "study_variable_missing": N_(
+        "the load of type {type} has no {variable}: choose one it has, or ratio"
+    ),
+    "study_series_out_of_range": N_("has no value between min and max"),
+    "study_range": N_("must be > 0 and below max"),
     # Money and quotes (core/money.py, core/quote_status.py)
     "decimal_format": N_("must be a decimal number such as 1234.50"),
     "decimal_finite": N_("must be a finite decimal number"),

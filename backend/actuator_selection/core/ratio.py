@@ -192,7 +192,7 @@ def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatAr
     if series is not None:
         values = np.unique(np.asarray([s for s in series if lower <= s <= upper], dtype=float))
         if values.size == 0:
-            raise InvalidInputError("ratio_study.series", "no value of the series in the range")
+            raise InvalidInputError("ratio_study.series", code="study_series_out_of_range")
         return values
     return np.geomspace(lower, upper, GRID_POINTS)
 
@@ -211,7 +211,7 @@ def ratio_study(
     value; with ``series``, only the series' values (an interval: neighbouring series
     values that all pass)."""
     if not (0 < lower < upper and math.isfinite(upper)):
-        raise InvalidInputError("ratio_study.min", "must be > 0 and below max")
+        raise InvalidInputError("ratio_study.min", code="study_range")
     if not actuators:
         return []
     grid = _grid(lower, upper, series)

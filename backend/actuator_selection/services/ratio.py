@@ -46,7 +46,8 @@ def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], App
     if field not in type(load).model_fields:
         raise InvalidInputError(
             "ratio_study.variable",
-            f"the load of type {load.type!r} has no {study.variable}: choose one it has, or ratio",
+            code="study_variable_missing",
+            params={"type": load.type, "variable": study.variable},
         )
     body.to_core()  # the load case as sent is valid
 
