@@ -670,8 +670,8 @@ class BindingOut(ResponseModel):
     transmissions: list[BindingTransmissionOut] = Field(
         default_factory=list,
         description="the load's own lead or diameter: the best few actuators that fit at "
-        "some value of it, with its interval and best value (empty: none, or the load has no "
-        "such value)",
+        "some value of it, with its interval and best value (empty: none, the load has no "
+        "such value, or a batch's case: not searched there)",
     )
 
 

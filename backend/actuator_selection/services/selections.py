@@ -171,12 +171,16 @@ def size_selection(
     actuators: Sequence[Actuator],
     catalogue: CatalogueSnapshot,
     created_at: datetime,
+    *,
+    guide: bool = False,
 ) -> SizedSelection:
-    """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it."""
+    """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it;
+    ``guide``: where nothing fits, with the ratio study's leads or diameters that make an
+    actuator fit (``binding.transmissions``; a batch's cases go without)."""
     groups = presenter.DriveOptionGroups(catalogue)
     candidates, binding = _candidates(actuators, app, catalogue, groups)
-    if binding is not None:  # nothing fits: where the load's own lead or diameter would
-        binding["transmissions"] = guidance(body, actuators)
+    if binding is not None and guide:  # nothing fits: where the load's own lead or
+        binding["transmissions"] = guidance(body, actuators)  # diameter would
     # The selection request's fields alone (a batch case's ``case_id`` is the batch's).
     request = body.model_dump(mode="json", include=set(SelectionRequest.model_fields))
     answer = presenter.selection_answer(
@@ -259,7 +263,9 @@ def _sized(
     check: Callable[[CatalogueSnapshot], None],
 ) -> SizedSelection:
     check(catalogue)
-    return size_selection(body, body.to_core(), catalogue.actuators_of(body.models), catalogue, now)
+    return size_selection(
+        body, body.to_core(), catalogue.actuators_of(body.models), catalogue, now, guide=True
+    )
 
 
 def stored_answer(session: Session, selection_id: str) -> bytes:
