@@ -168,8 +168,8 @@ VERTICAL_SCREW = (("mass_kg", "25"), ("lead_mm", "10"), ("friction_coefficient",
 @pytest.mark.parametrize(
     ("locale", "words"),
     [
-        ("en-US", ("Why nothing fits", "is above every n", "No pause", "not offered yet")),
-        ("de-DE", ("Warum kein Antrieb passt", "liegt über jedem n", "Keine Pause", "noch nicht")),
+        ("en-US", ("Why nothing fits", "is above every n", "No pause", "A screw lead of")),
+        ("de-DE", ("Warum kein Antrieb passt", "über jedem n", "Keine Pause", "Spindelsteigung")),
     ],
 )
 def test_nothing_fits_says_what_binds_above_the_ranking(

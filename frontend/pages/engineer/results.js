@@ -456,6 +456,21 @@ export function renderBinding(sel, lang) {
     const names = (c.limiting_checks ?? []).map((name) => checkLabel(name, lang)).join("; ");
     return said(t(`binding.nochange.${c.quantity}`, { checks: names }));
   });
+  // The ratio study's leads or diameters that make an actuator fit (binding.transmissions).
+  const found = Array.isArray(binding.transmissions) ? binding.transmissions : [];
+  const transmissions = found.length
+    ? found.map((g) =>
+        said(
+          t("binding.transmission", {
+            variable: t(`binding.variable.${g.variable}`),
+            low: qty(g.low, g.unit, lang),
+            high: qty(g.high, g.unit, lang),
+            best: qty(g.best, g.unit, lang),
+            model: g.model,
+          }),
+        ),
+      )
+    : [said(t("binding.ratio"))];
   const model = binding.changes?.[0]?.model ?? sel.candidates?.[0]?.model ?? "–";
   return h(
     "section",
@@ -464,7 +479,7 @@ export function renderBinding(sel, lang) {
     h("p", {}, t("binding.intro", { candidates: binding.candidates })),
     h("ul", { class: "binding-checks" }, ...checks),
     h("p", {}, t("binding.changes", { model })),
-    h("ul", { class: "binding-changes" }, ...changes, said(t("binding.ratio"))),
+    h("ul", { class: "binding-changes" }, ...changes, ...transmissions),
   );
 }
 
