@@ -407,6 +407,29 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/selections/ratio-study": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Solve Ratio Study
+         * @description For every actuator, the interval(s) of a free transmission value (an external ratio,
+         *     a lead, a pulley or pinion diameter) in which every check passes, the value of least
+         *     binding utilisation and the checks that bind at each end (the engine over a grid of
+         *     values × the catalogue, the ends bisected).
+         */
+        post: operations["solve_ratio_study"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/selections/{selection_id}": {
         parameters: {
             query?: never;
@@ -2197,9 +2220,44 @@ export interface components {
             checks: components["schemas"]["BindingCheckOut"][];
             /**
              * Changes
-             * @description a longer t_1 and a longer pause for the nearest miss (no pause where the cycle does not end at standstill); a range of ratios or leads is not searched yet
+             * @description a longer t_1 and a longer pause for the nearest miss (no pause where the cycle does not end at standstill)
              */
             changes: components["schemas"]["BindingChangeOut"][];
+            /**
+             * Transmissions
+             * @description the load's own lead or diameter: the best few actuators that fit at some value of it, with its interval and best value (empty: none, the load has no such value, or a batch's case: not searched there)
+             */
+            transmissions?: components["schemas"]["BindingTransmissionOut"][];
+        };
+        /**
+         * BindingTransmissionOut
+         * @description Where the load's own lead or diameter makes an actuator fit (the ratio study,
+         *     POST /selections/ratio-study, over the variable's default range widened 10× both ways).
+         */
+        BindingTransmissionOut: {
+            /**
+             * Variable
+             * @description the load's field, e.g. lead_mm
+             */
+            variable: string;
+            /** Unit */
+            unit: string;
+            /** Model */
+            model: string;
+            /**
+             * Low
+             * @description the interval of the variable that holds `best`
+             */
+            low: number;
+            /** High */
+            high: number;
+            /**
+             * Best
+             * @description the value of least binding utilisation
+             */
+            best: number;
+            /** Best Utilisation */
+            best_utilisation: number;
         };
         /**
          * BrakingResistorOut
@@ -3002,16 +3060,6 @@ export interface components {
             reference: string;
         };
         /**
-         * CurveOut
-         * @description Each axis's electrical power for a chart, at every stretch's ends and inside.
-         */
-        CurveOut: {
-            /** Times S */
-            times_s: number[];
-            /** Axes W */
-            axes_w: number[][];
-        };
-        /**
          * CustomerIn
          * @description Who the quote is for; free text, shown escaped on the document.
          *
@@ -3292,6 +3340,26 @@ export interface components {
             derivation: string | null;
             /** Source */
             source: string | null;
+        };
+        /**
+         * IntervalOut
+         * @description A range of the free value in which no check fails.
+         */
+        IntervalOut: {
+            /** Low */
+            low: number;
+            /** High */
+            high: number;
+            /**
+             * Low Binding
+             * @description the checks failing just below `low` (empty: the range's end)
+             */
+            low_binding: string[];
+            /**
+             * High Binding
+             * @description the checks failing just above `high` (empty: the range's end)
+             */
+            high_binding: string[];
         };
         /**
          * LiftIn
@@ -4169,7 +4237,7 @@ export interface components {
             /** Axes */
             axes: components["schemas"]["AxisOut"][];
             bus: components["schemas"]["BusOut"];
-            curve: components["schemas"]["CurveOut"];
+            curve: components["schemas"]["actuator_selection__schemas__projects__CurveOut"];
         };
         /**
          * ProjectPageOut
@@ -4536,6 +4604,155 @@ export interface components {
              * @description friction force independent of the weight [N]; omitted: 0.0
              */
             friction_force_n?: number | string;
+        };
+        /** RatioActuatorOut */
+        RatioActuatorOut: {
+            /** Model */
+            model: string;
+            /** Intervals */
+            intervals: components["schemas"]["IntervalOut"][];
+            /**
+             * Best
+             * @description the value of least binding utilisation that fits
+             */
+            best: number | null;
+            /** Best Utilisation */
+            best_utilisation: number | null;
+            /**
+             * Best Binding
+             * @description the check of the largest utilisation there
+             */
+            best_binding: string | null;
+            /**
+             * Verdict
+             * @description the flowchart's verdict at `best`
+             */
+            verdict: ("suitable" | "unconfirmed" | "unsuitable") | null;
+            /** @description for the best actuators only */
+            curve: components["schemas"]["actuator_selection__schemas__ratio__CurveOut"] | null;
+        };
+        /**
+         * RatioStudyIn
+         * @description The free transmission value and where to look for it.
+         */
+        RatioStudyIn: {
+            /**
+             * Variable
+             * @description ratio: an external gear ratio i between the actuator and the load (in series with any transmission the mechanism has); otherwise the mechanism's own lead or diameter [mm], which the load must have
+             * @enum {string}
+             */
+            variable: "ratio" | "lead_mm" | "pulley_diameter_mm" | "pinion_diameter_mm" | "drum_diameter_mm" | "roller_diameter_mm";
+            /**
+             * Min
+             * @description lower end; omitted: 1, 5 mm or 20 mm
+             */
+            min?: number | null;
+            /**
+             * Max
+             * @description upper end; omitted: 20, 50 mm or 200 mm
+             */
+            max?: number | null;
+            /**
+             * Series
+             * @description a standard series (e.g. the leads 2, 4, 5, 10, 16, 20, 25, 32, 40, 50 mm): only these values are checked
+             */
+            series?: number[] | null;
+            /**
+             * Transmission Inertia Kgm2
+             * @description J_tr of the external ratio, actuator side; omitted: 0.0
+             */
+            transmission_inertia_kgm2?: number;
+            /**
+             * Transmission Efficiency
+             * @description η_tr of the external ratio; omitted: 1.0
+             */
+            transmission_efficiency?: number;
+            /**
+             * Curves
+             * @description how many of the best actuators carry their curve; omitted: 5
+             */
+            curves?: number;
+        };
+        /**
+         * RatioStudyOut
+         * @description Per actuator, where the free value makes every check pass; those that fit somewhere
+         *     first, by their best utilisation.
+         */
+        RatioStudyOut: {
+            /** Catalogue Version */
+            catalogue_version: number;
+            /**
+             * Variable
+             * @enum {string}
+             */
+            variable: "ratio" | "lead_mm" | "pulley_diameter_mm" | "pinion_diameter_mm" | "drum_diameter_mm" | "roller_diameter_mm";
+            /** Unit */
+            unit: string;
+            /** Min */
+            min: number;
+            /** Max */
+            max: number;
+            /** Series */
+            series: number[] | null;
+            /** Actuators */
+            actuators: components["schemas"]["RatioActuatorOut"][];
+        };
+        /**
+         * RatioStudyRequest
+         * @description A load case and its free transmission value (``models`` restricts the catalogue).
+         * @example {
+         *       "cycle": {
+         *         "accel_s": 0.1,
+         *         "constant_s": 0.3,
+         *         "decel_s": 0.1,
+         *         "pause_s": 0.5
+         *       },
+         *       "load": {
+         *         "efficiency": 0.9,
+         *         "friction_coefficient": 0.1,
+         *         "incline_deg": 90,
+         *         "lead_mm": 10,
+         *         "mass_kg": 25,
+         *         "speed": 300,
+         *         "type": "ball_screw_incline"
+         *       },
+         *       "ratio_study": {
+         *         "max": 50,
+         *         "min": 1,
+         *         "variable": "lead_mm"
+         *       }
+         *     }
+         */
+        RatioStudyRequest: {
+            /** Load */
+            load: components["schemas"]["DirectLoad"] | components["schemas"]["BallScrewLoad"] | components["schemas"]["RotaryTableLoad"] | components["schemas"]["BallScrewInclineIn"] | components["schemas"]["BeltIn"] | components["schemas"]["RackPinionIn"] | components["schemas"]["ConveyorIn"] | components["schemas"]["LiftIn"] | components["schemas"]["RotaryIn"];
+            /** Cycle */
+            cycle: components["schemas"]["CycleIn"] | components["schemas"]["SegmentsCycleIn"] | components["schemas"]["ProfileCycleIn"];
+            /**
+             * High Dynamics
+             * @description J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise; omitted: true
+             */
+            high_dynamics?: boolean;
+            /**
+             * Brake
+             * @description the actuator is fitted with its holding brake: its holding torque is checked against T_L at standstill (check `brake_holding`); omitted: false
+             */
+            brake?: boolean;
+            /** Models */
+            models?: string[] | null;
+            /**
+             * Drive
+             * @description size the drive's current too: peak motor current against I_max (Eq. 522.2, 522.3) with the energy braking returns; the output voltage with the inductive drop against the best controller listed for the actuator (Eq. 521.2, Table 521.1) is checked with or without it; omitted: false
+             */
+            drive?: boolean;
+            /** @description an external load on the output flange: checks the output bearing's tilting moment, static safety and (with required_life_h) L_10 life; omitted: the output bearing is not checked */
+            output_load?: components["schemas"]["OutputLoadIn"] | null;
+            /**
+             * Thermal Time Constant S
+             * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
+             */
+            thermal_time_constant_s?: number | null;
+            ratio_study: components["schemas"]["RatioStudyIn"];
         };
         /**
          * ReadyOut
@@ -5084,6 +5301,26 @@ export interface components {
             speed_rpm: number;
             /** Torque Nm */
             torque_nm: number;
+        };
+        /**
+         * CurveOut
+         * @description Each axis's electrical power for a chart, at every stretch's ends and inside.
+         */
+        actuator_selection__schemas__projects__CurveOut: {
+            /** Times S */
+            times_s: number[];
+            /** Axes W */
+            axes_w: number[][];
+        };
+        /**
+         * CurveOut
+         * @description The binding utilisation (max value/limit over the checks) at each grid value.
+         */
+        actuator_selection__schemas__ratio__CurveOut: {
+            /** Values */
+            values: number[];
+            /** Utilisation */
+            utilisation: (number | null)[];
         };
         /**
          * ErrorDetail
@@ -7683,6 +7920,123 @@ export interface operations {
                 };
             };
             /** @description invalid load case, or a model the catalogue lacks */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    solve_ratio_study: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "cycle": {
+                 *         "accel_s": 0.1,
+                 *         "constant_s": 0.3,
+                 *         "decel_s": 0.1,
+                 *         "pause_s": 0.5
+                 *       },
+                 *       "load": {
+                 *         "efficiency": 0.9,
+                 *         "friction_coefficient": 0.1,
+                 *         "incline_deg": 90,
+                 *         "lead_mm": 10,
+                 *         "mass_kg": 25,
+                 *         "speed": 300,
+                 *         "type": "ball_screw_incline"
+                 *       },
+                 *       "ratio_study": {
+                 *         "max": 50,
+                 *         "min": 1,
+                 *         "variable": "lead_mm"
+                 *       }
+                 *     }
+                 */
+                "application/json": components["schemas"]["RatioStudyRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["RatioStudyOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description invalid load case or study */
             422: {
                 headers: {
                     [name: string]: unknown;
