@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.check_messages import phrase
 from actuator_selection.core.checks import Check, Rule, Status
-from actuator_selection.core.engine import catalogue_arrays, evaluate_cases
+from actuator_selection.core.engine import case_verdicts, catalogue_arrays, evaluate_cases
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.selection import Application, Candidate, Verdict
 
@@ -91,6 +91,39 @@ def _fails(candidate: Candidate) -> tuple[Check, ...]:
     return tuple(c for c in candidate.checks if c.status is Status.FAIL)
 
 
+class _Probe:
+    """One probe of a search: its load case and verdict, decided from the engine's status
+    codes (:func:`~actuator_selection.core.engine.case_verdicts`); its candidate, with
+    the checks in words, is evaluated only where the answer reads it (the ends of the
+    bisection), so the probes between cost no words."""
+
+    __slots__ = ("_candidate", "_evaluate", "app", "verdict")
+
+    def __init__(
+        self,
+        app: Application,
+        verdict: Verdict | None,
+        evaluate: Callable[[Sequence[Application]], list[Candidate]],
+    ) -> None:
+        self.app = app
+        self._evaluate = evaluate
+        self._candidate: Candidate | None = None
+        if verdict is None:  # a torque overflowed: the candidate names the input
+            verdict = self.candidate.verdict
+        self.verdict: Verdict = verdict
+
+    @property
+    def fails(self) -> bool:
+        """Whether a check fails (the verdict ``unsuitable``)."""
+        return self.verdict is Verdict.UNSUITABLE
+
+    @property
+    def candidate(self) -> Candidate:
+        if self._candidate is None:
+            (self._candidate,) = self._evaluate([self.app])
+        return self._candidate
+
+
 _LEVELS = 4
 """The bisection's steps decided per engine call: every midpoint the next this many
 steps could take (2⁴ − 1 = 15 cases) is evaluated at once, then the steps are taken
@@ -108,11 +141,11 @@ def _open(ok_side: float, bad_side: float) -> float | None:
 
 
 def _bisect(
-    evaluate: Callable[[Sequence[Application]], list[Candidate]],
+    evaluate: Callable[[Sequence[Application]], list[_Probe]],
     vary: Callable[[float], Application],
     ok_side: float,
     bad_side: float,
-) -> tuple[float, Candidate, Candidate]:
+) -> tuple[float, _Probe, _Probe]:
     """Narrow [bad, ok] to the tolerance; the ok end, its candidate and the bad end's
     (:data:`_LEVELS` steps per engine call)."""
     ok, bad = evaluate([vary(ok_side), vary(bad_side)])
@@ -132,7 +165,7 @@ def _bisect(
         found = dict(zip(midpoints, evaluate([vary(m) for m in midpoints.values()]), strict=True))
         while (ok_side, bad_side) in found:
             middle, candidate = midpoints[(ok_side, bad_side)], found[(ok_side, bad_side)]
-            if _fails(candidate):
+            if candidate.fails:
                 bad_side, bad = middle, candidate
             else:
                 ok_side, ok = middle, candidate
@@ -162,12 +195,16 @@ def _search(
     0 for a ``max``) and ``end`` (the range's far end), stepping by factors of 2."""
     arrays = catalogue_arrays((actuator,))  # the actuator as the engine reads it, once
 
-    def evaluate(apps: Sequence[Application]) -> list[Candidate]:
+    def candidates(apps: Sequence[Application]) -> list[Candidate]:
         return evaluate_cases(actuator, apps, rules=rules, arrays=arrays)
+
+    def evaluate(apps: Sequence[Application]) -> list[_Probe]:
+        verdicts = case_verdicts(actuator, apps, rules=rules, arrays=arrays)
+        return [_Probe(app, v, candidates) for app, v in zip(apps, verdicts, strict=True)]
 
     (at_start,) = evaluate([vary(start)])
     if bound == "min":
-        if not _fails(at_start):
+        if not at_start.fails:
             return Limit(
                 quantity=quantity,
                 bound=bound,
@@ -182,19 +219,19 @@ def _search(
         bad_side = start
         probes = _doubling(start, max(start * 2, start + 1e-3), end)
         for probe, candidate in zip(probes, evaluate([vary(p) for p in probes]), strict=True):
-            if not _fails(candidate):
+            if not candidate.fails:
                 break
             bad_side = probe
             if probe >= end:
-                return _none_in_range(quantity, unit, bound, end, candidate)
+                return _none_in_range(quantity, unit, bound, end, candidate.candidate)
         value, ok, bad = _bisect(evaluate, vary, probe, bad_side)
     else:
-        if _fails(at_start):
-            return _none_in_range(quantity, unit, bound, start, at_start)
+        if at_start.fails:
+            return _none_in_range(quantity, unit, bound, start, at_start.candidate)
         ok_side = start
         probes = _doubling(start, max(start * 2, 1e-3), end)
         for probe, candidate in zip(probes, evaluate([vary(p) for p in probes]), strict=True):
-            if _fails(candidate):
+            if candidate.fails:
                 break
             ok_side = probe
             if probe >= end:
@@ -209,7 +246,7 @@ def _search(
                     note=f"every check passes up to the largest value searched ({end:g} {unit})",
                 )
         value, ok, bad = _bisect(evaluate, vary, ok_side, probe)
-    failing = _fails(bad)
+    failing = _fails(bad.candidate)
     return Limit(
         quantity=quantity,
         bound=bound,

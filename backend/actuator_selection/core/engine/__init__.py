@@ -37,6 +37,7 @@ from actuator_selection.core.engine.columns import (
 )
 from actuator_selection.core.engine.evaluation import (
     BatchEvaluation,
+    case_verdicts,
     evaluate,
     evaluate_batch,
     evaluate_cases,
@@ -61,6 +62,7 @@ __all__ = [
     "IndexArray",
     "RankedTable",
     "TrapezoidColumns",
+    "case_verdicts",
     "catalogue_arrays",
     "evaluate",
     "evaluate_batch",

@@ -475,3 +475,38 @@ def evaluate_cases(
         return []
     chosen = select_batch((actuator,), apps, top=1, rules=rules, arrays=arrays)
     return [selection.candidates[0] for selection in chosen]
+
+
+def case_verdicts(
+    actuator: Actuator,
+    apps: Sequence[Application],
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> list[Verdict | None]:
+    """The verdict of one actuator for each of ``apps``: :func:`evaluate_cases`'
+    verdicts from the status codes alone, no candidate built and no check worded (the
+    inverse solve's probes, which decide on the verdict). None where a finite input
+    overflowed a torque: the candidate (:func:`evaluate_cases`) names the input."""
+    if not apps:
+        return []
+    rules = rules_of(apps, rules)
+    cat = catalogue_arrays((actuator,)) if arrays is None else arrays
+    cases = cases_of(apps)
+    limits_of_zones = zone_limits((actuator,), cat.zone_columns, cases.mean_speed)
+    known = actuator.inertia_kgm2 is not None
+    out: list[Verdict | None] = []
+    for start, stop in blocks((actuator,), apps):
+        block = evaluate_block(
+            cat, cases.rows(start, stop), limits_of_zones[start:stop], rules, detail=False
+        )
+        finite = (
+            np.isfinite(block.accel_torque[:, 0])
+            & np.isfinite(block.decel_torque[:, 0])
+            & np.isfinite(block.rms_torque[:, 0])
+        )
+        out.extend(
+            VERDICT_BY_CODE[code] if ok or not known else None
+            for code, ok in zip(block.verdicts()[:, 0].tolist(), finite.tolist(), strict=True)
+        )
+    return out
