@@ -120,12 +120,14 @@ def _picked(array: Any, shape: tuple[int, ...], rows: IndexArray, columns: Index
     actuators), as Python values: a column of cases, a row of actuators and a scalar
     are indexed as they are, without broadcasting them first."""
     a = np.asarray(array)
-    if a.ndim == 2 and a.shape[1] == 1 and shape[1] != 1:  # a column of cases
-        picked: list[Any] = a[rows, 0].tolist()
+    if a.size == 1:  # a scalar, or one cell (a 1 × 1 view's arrays): the same everywhere
+        picked: list[Any] = [a.item()] * rows.size
+    elif a.ndim == 2 and a.shape[1] == 1:  # a column of cases
+        picked = a[rows, 0].tolist()
     elif a.ndim == 1 and a.shape[0] == shape[1]:  # a row of actuators
         picked = a[columns].tolist()
-    elif a.ndim == 0:
-        picked = [a.item()] * rows.size
+    elif a.shape == shape:
+        picked = a[rows, columns].tolist()
     else:
         picked = np.broadcast_to(a, shape)[rows, columns].tolist()
     return picked
