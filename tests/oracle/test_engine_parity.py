@@ -27,7 +27,9 @@ from actuator_selection.core.engine import (
     CHECK_NAMES,
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
+    case_verdicts,
     evaluate_batch,
+    evaluate_cases,
     rank_batch,
     select_batch,
 )
@@ -645,3 +647,17 @@ def test_trapezoid_columns_equal_the_pieces_of_their_segments() -> None:
     slow = piece_arrays([a.cycle for a in apps])
     for f in dataclasses.fields(fast):
         assert np.array_equal(getattr(fast, f.name), getattr(slow, f.name)), f.name
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_case_verdicts_are_the_candidates_verdicts(seed: int) -> None:
+    """The inverse solve's probes decide on :func:`case_verdicts` (status codes alone):
+    each actuator's verdict per case equals its detailed candidate's and the oracle's."""
+    rng = random.Random(seed)
+    actuators = [random_actuator(rng, k) for k in range(12)]
+    apps = [random_case(rng, actuators) for _ in range(40)]
+    for actuator in actuators:
+        candidates = evaluate_cases(actuator, apps)
+        expected = [c.verdict for c in candidates]
+        assert case_verdicts(actuator, apps) == expected
+        assert expected == [evaluate(actuator, app).verdict for app in apps]
