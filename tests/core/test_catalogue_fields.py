@@ -15,12 +15,15 @@ from actuator_selection.core.catalogue_fields import (
     ACTUATOR_FIELDS,
     DERIVED_ACTUATOR_ATTRIBUTES,
     ENGINE_FIELDS,
+    OPERAND_FIELDS,
     CatalogueField,
     Kind,
     Source,
 )
 from actuator_selection.core.catalogue_files import ACTUATORS
+from actuator_selection.core.checks import Operands
 from actuator_selection.core.csvio import read
+from actuator_selection.core.engine.catalogue import CATALOGUE_OPERANDS
 
 SEED = Path(__file__).resolve().parents[2] / "seed_data"
 
@@ -32,8 +35,9 @@ def _stored_type(field: CatalogueField) -> object:
 
 
 def test_the_engines_record_holds_every_engine_field_and_no_other() -> None:
-    """Actuator is written out for the engine; a value declared for the checks and missing
-    from it, or an attribute it has that no declaration (nor a derivation) explains, fails."""
+    """Actuator is generated from the declarations; a value declared for the checks and
+    missing from it, or an attribute it has that no declaration (nor a derivation)
+    explains, fails."""
     attributes = {f.name: f for f in dataclasses.fields(Actuator)}
     declared = {f.name for f in ENGINE_FIELDS}
     assert sorted(declared - attributes.keys()) == [], "declared engine=True, not on Actuator"
@@ -48,6 +52,14 @@ def test_the_engines_record_types_each_value_as_declared(field: CatalogueField) 
     assert hints[field.name] == _stored_type(field)
     default = {f.name: f.default for f in dataclasses.fields(Actuator)}[field.name]
     assert default is (dataclasses.MISSING if field.required else None)
+
+
+def test_each_operand_a_field_feeds_is_an_operand_the_engine_builds_once() -> None:
+    names = [f.operand_name for f in OPERAND_FIELDS]
+    assert len(set(CATALOGUE_OPERANDS)) == len(CATALOGUE_OPERANDS)
+    assert set(names) <= set(Operands._fields)
+    assert set(names) <= set(CATALOGUE_OPERANDS)
+    assert all(f.kind is Kind.NUMBER for f in OPERAND_FIELDS)
 
 
 def test_names_and_headers_are_unique_and_carry_no_spaces() -> None:

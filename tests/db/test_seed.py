@@ -141,7 +141,7 @@ def test_seed_stores_the_citation_and_where_it_was_read_apart(empty_engine: Engi
             bearing.output_bearing_offset_m,
             bearing.output_bearing_dynamic_load_rating_n,
             bearing.output_bearing_static_load_rating_n,
-            bearing.output_bearing_type,
+            bearing.text("output_bearing_type"),
         ) == (0.0962, 0.018, 18000, 33300, "cross_roller")
         source, read_at = fha.values["source"], fha.values["read_at"]
         assert isinstance(source, str)

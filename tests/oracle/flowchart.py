@@ -196,7 +196,7 @@ def _drive_and_bearing(actuator: Actuator, app: Application, profile: Profile) -
         _value(a.output_bearing_offset_m),
         _value(a.output_bearing_dynamic_load_rating_n),
         _value(a.output_bearing_static_load_rating_n),
-        life_exponent(a.output_bearing_type),
+        life_exponent(a.text("output_bearing_type")),
         _value(a.output_bearing_moment_load_nm),
         _value(a.output_bearing_dynamic_tilting_moment_nm),
     )

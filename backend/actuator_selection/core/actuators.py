@@ -1,107 +1,92 @@
 """What the core knows of one catalogue actuator.
 
-Every field that a public source does not give is ``None``; the calculations
-that need it say "no data" instead of guessing.
+:class:`Actuator` is generated from the field registry
+(:data:`~actuator_selection.core.catalogue_fields.ENGINE_FIELDS`): one attribute per
+value the engine's checks read, named and typed as declared there, plus the values
+derived from other files (:data:`~actuator_selection.core.catalogue_fields.
+DERIVED_ACTUATOR_ATTRIBUTES`). Adding a catalogue value is its declaration; this module
+does not change. Every value that a public source does not give is ``None``; the
+calculations that need it say "no data" instead of guessing.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import dataclasses
+from typing import TYPE_CHECKING, Any, ClassVar
 
+from actuator_selection.core.catalogue_fields import ENGINE_FIELDS, CatalogueField, Kind
 from actuator_selection.core.zones import ContinuousDutyZone
 
+_DOC = """A servo actuator as the catalogue publishes it, values at the output shaft.
 
-@dataclass(frozen=True, slots=True, kw_only=True)
-class Actuator:
-    """A servo actuator as the catalogue publishes it, values at the output shaft.
+Its attributes are the registry's ``engine=True`` fields (name, unit and meaning in
+:mod:`actuator_selection.core.catalogue_fields`), keyword-only, ``None`` where not
+published except the required ones (``model``, ``family``, ``gear_ratio``); a text value
+is also read by :meth:`text` (``a.text("output_bearing_type")``), typed. And:
 
-    Parameters
-    ----------
-    model
-        Catalogue model, e.g. ``"CHA-25A-50"``.
-    family
-        Product family, e.g. ``"CHA"``.
-    gear_ratio
-        Harmonic Drive gear ratio i [-].
-    max_torque_nm
-        Repeated peak torque T_max [Nm].
-    max_speed_rpm
-        Maximum output speed n_max [rpm].
-    inertia_kgm2
-        Moment of inertia J_A at the output [kgm²].
-    stall_torque_nm
-        Continuous stall torque T_0 [Nm].
-    continuous_torque_nm
-        Allowable continuous torque where the catalogue gives that instead of T_0 [Nm].
-    zone
-        Continuous-duty zone of the speed/torque diagram, where published.
-    continuous_speed_rpm
-        Allowable continuous output speed [rpm] (FHA-C, FHA-C mini), where published.
-    rated_speed_rpm
-        Rated output speed [rpm]; for the CHA the rated motor speed n_N divided by i
-        (derived; the catalogue row's ``derivation`` says so).
-    brake_holding_torque_nm
-        Holding torque of the motor brake referred to the output, T_Br [Nm].
-    output_bearing_pitch_diameter_m, output_bearing_offset_m
-        Output bearing pitch circle diameter d_p and offset R [m] (CHA).
-    output_bearing_dynamic_load_rating_n, output_bearing_static_load_rating_n
-        Output bearing dynamic and static load ratings C and C_0 [N] (CHA).
-    output_bearing_dynamic_tilting_moment_nm, output_bearing_static_tilting_moment_nm
-        Allowable dynamic and static tilting moments M_dyn(max) and M_0(max) [Nm] (CHA).
-    output_bearing_radial_load_n, output_bearing_axial_load_n
-        Allowable radial and axial load on the output bearing [N] (FHA-C).
-    output_bearing_moment_load_nm
-        Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini).
-    output_bearing_moment_stiffness_nm_per_rad
-        Moment stiffness of the output bearing [Nm/rad] (FHA-C, FHA-C mini).
-    output_bearing_type
-        The output bearing's type (:class:`~actuator_selection.core.bearing.BearingType`
-        value: ``cross_roller`` or ``four_point_contact_ball``), which sets the life
-        exponent; None where not published.
-    inductance_line_mh
-        Winding inductance line-to-line L [mH] (CHA).
-    pole_pairs
-        The motor's number of pole pairs p (CHA tables).
-    dc_bus_voltage_v
-        The highest nominal DC bus voltage among the Table 521.1 bus classes the actuator
-        runs on [V]; derived from its interface by the catalogue snapshot, None where no
-        bus class is published.
-    """
+zone
+    Continuous-duty zone of the speed/torque diagram, where published.
+dc_bus_voltage_v
+    The highest nominal DC bus voltage among the Table 521.1 bus classes the actuator
+    runs on [V]; derived from its interface by the catalogue snapshot, None where no
+    bus class is published.
+"""
 
-    model: str
-    family: str
-    gear_ratio: float
-    max_torque_nm: float | None = None
-    max_speed_rpm: float | None = None
-    inertia_kgm2: float | None = None
-    stall_torque_nm: float | None = None
-    continuous_torque_nm: float | None = None
-    max_current_a: float | None = None
-    stall_current_a: float | None = None
-    torque_constant_nm_per_a: float | None = None
-    motor_voltage_constant_v_per_krpm: float | None = None
-    output_voltage_constant_v_per_rpm: float | None = None
-    resistance_line_ohm: float | None = None
-    resistance_phase_ohm: float | None = None
-    no_load_starting_current_a: float | None = None
-    no_load_current_constant_30c_a_per_rpm: float | None = None
-    no_load_current_constant_80c_a_per_rpm: float | None = None
-    thermal_time_constant_s: float | None = None
-    zone: ContinuousDutyZone | None = None
-    continuous_speed_rpm: float | None = None
-    rated_speed_rpm: float | None = None
-    brake_holding_torque_nm: float | None = None
-    output_bearing_pitch_diameter_m: float | None = None
-    output_bearing_offset_m: float | None = None
-    output_bearing_dynamic_load_rating_n: float | None = None
-    output_bearing_static_load_rating_n: float | None = None
-    output_bearing_dynamic_tilting_moment_nm: float | None = None
-    output_bearing_static_tilting_moment_nm: float | None = None
-    output_bearing_radial_load_n: float | None = None
-    output_bearing_axial_load_n: float | None = None
-    output_bearing_moment_load_nm: float | None = None
-    output_bearing_moment_stiffness_nm_per_rad: float | None = None
-    output_bearing_type: str | None = None
-    inductance_line_mh: float | None = None
-    pole_pairs: float | None = None
-    dc_bus_voltage_v: float | None = None
+
+def _attribute(field: CatalogueField) -> tuple[str, Any, Any]:
+    """One declared value as a dataclass field: (name, type, default)."""
+    kind: Any = float if field.kind is Kind.NUMBER else str
+    if field.required:
+        return (field.name, kind, dataclasses.field())
+    return (field.name, kind | None, dataclasses.field(default=None))
+
+
+def _text(self: Any, name: str) -> str | None:
+    """A text value by its field name (``output_bearing_type``); None where not published."""
+    value = getattr(self, name)
+    assert value is None or isinstance(value, str), name
+    return value
+
+
+if TYPE_CHECKING:  # what mypy sees: the required values typed, a number by its name
+
+    class Actuator:
+        """A servo actuator as the catalogue publishes it (generated: see below)."""
+
+        __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]]
+        model: str
+        family: str
+        gear_ratio: float
+        zone: ContinuousDutyZone | None
+        dc_bus_voltage_v: float | None
+
+        def __init__(
+            self,
+            *,
+            model: str,
+            family: str,
+            gear_ratio: float,
+            zone: ContinuousDutyZone | None = None,
+            dc_bus_voltage_v: float | None = None,
+            **values: float | str | None,
+        ) -> None: ...
+
+        def __getattr__(self, name: str) -> float | None:
+            """A number by its field name (``a.max_torque_nm``); None where not published."""
+
+        def text(self, name: str) -> str | None:
+            """A text value by its field name (``output_bearing_type``)."""
+
+else:
+    Actuator = dataclasses.make_dataclass(
+        "Actuator",
+        [
+            *(_attribute(f) for f in ENGINE_FIELDS),
+            ("zone", ContinuousDutyZone | None, dataclasses.field(default=None)),
+            ("dc_bus_voltage_v", float | None, dataclasses.field(default=None)),
+        ],
+        namespace={"__doc__": _DOC, "__module__": __name__, "text": _text},
+        frozen=True,
+        slots=True,
+        kw_only=True,
+    )

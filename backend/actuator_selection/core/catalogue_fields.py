@@ -12,9 +12,11 @@ whether the engine's checks read it. Everything else is derived from
 - the repository's row → :class:`~.catalogue.ActuatorRecord` mapping (``db/repositories.py``);
 - the API's ``ActuatorOut``, its properties and their descriptions (``schemas/actuators.py``).
 
-The engine's record :class:`~.actuators.Actuator` is written out, attribute by attribute,
-because the engine reads it by name; ``tests/core/test_catalogue_fields.py`` holds its
-attributes against the fields marked ``engine=True``. The words (:attr:`CatalogueField.label`)
+- the engine's record :class:`~.actuators.Actuator` (generated from the fields marked
+  ``engine=True``) and the engine's catalogue operands (the fields with an ``operand``,
+  :func:`~.engine.catalogue.catalogue_arrays`).
+
+The words (:attr:`CatalogueField.label`)
 are gettext msgids: ``make messages`` extracts them and the German catalogue
 (``locale/de/LC_MESSAGES/messages.po``) translates them. How to add a value:
 ``docs/catalogue.md``.
@@ -113,10 +115,22 @@ class CatalogueField:
     source: Source = Source.PUBLISHED
     engine: bool = False
     """The engine's checks read it: :class:`~.actuators.Actuator` carries it."""
+    operand: bool | str = False
+    """The rules read it as published, as the :class:`~.checks.Operands` field of its name
+    (True) or of the name given (``bearing_offset_m`` for ``output_bearing_offset_m``): the
+    engine's catalogue arrays (:func:`~.engine.catalogue.catalogue_arrays`) carry it under
+    that name. False: no rule reads it, or only derived (``engine/catalogue.py``)."""
     remark: str | None = None
     """Words the API's description adds after the unit (a derivation, an equation)."""
     optional: bool = False
     """A file may leave the column out (one added after files were written without it)."""
+
+    @property
+    def operand_name(self) -> str | None:
+        """The :class:`~.checks.Operands` field it feeds as published, or None."""
+        if isinstance(self.operand, str):
+            return self.operand
+        return self.name if self.operand else None
 
     @property
     def header(self) -> str:
@@ -173,7 +187,12 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         engine=True,
     ),
     CatalogueField(
-        name="gear_ratio", label=N_("gear ratio"), symbol="i", required=True, engine=True
+        name="gear_ratio",
+        label=N_("gear ratio"),
+        symbol="i",
+        required=True,
+        engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="max_torque_nm",
@@ -181,6 +200,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_max",
         unit="Nm",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="max_speed_rpm",
@@ -188,6 +208,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="n_max",
         unit="rpm",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="inertia_kgm2",
@@ -195,6 +216,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="J_A",
         unit="kgm²",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="stall_torque_nm",
@@ -202,12 +224,14 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_0",
         unit="Nm",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="continuous_torque_nm",
         label=N_("allowable continuous torque"),
         unit="Nm",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="max_current_a",
@@ -215,6 +239,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="I_max",
         unit="A_rms",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="stall_current_a",
@@ -230,6 +255,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="k_T",
         unit="Nm/A",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="motor_torque_constant_nm_per_a",
@@ -243,6 +269,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="K_E",
         unit="V per 1000 rpm motor speed",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="output_voltage_constant_v_per_rpm",
@@ -256,6 +283,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         label=N_("winding resistance, line-to-line"),
         unit="Ω",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="resistance_phase_ohm",
@@ -279,6 +307,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         rule=_N,
         remark=" (Eq. 522.2)",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="no_load_current_constant_30c_a_per_rpm",
@@ -290,6 +319,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         rule=_N,
         remark=" (Eq. 522.2)",
         engine=True,
+        operand="no_load_current_constant_a_per_rpm",
     ),
     CatalogueField(
         name="no_load_current_constant_80c_a_per_rpm",
@@ -326,6 +356,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         label=N_("allowable continuous output speed"),
         unit="rpm",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="rated_speed_rpm",
@@ -334,6 +365,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         source=Source.PUBLISHED_OR_DERIVED,
         remark=" (CHA: derived, rated motor speed / i; see derivation)",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="brake_holding_torque_nm",
@@ -341,6 +373,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_Br",
         unit="Nm",
         engine=True,
+        operand=True,
     ),
     CatalogueField(
         name="output_bearing_pitch_diameter_m",
@@ -348,6 +381,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="d_p",
         unit="m",
         engine=True,
+        operand="bearing_pitch_diameter_m",
     ),
     CatalogueField(
         name="output_bearing_offset_m",
@@ -356,6 +390,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         unit="m",
         rule=_N,
         engine=True,
+        operand="bearing_offset_m",
     ),
     CatalogueField(
         name="output_bearing_dynamic_load_rating_n",
@@ -363,6 +398,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="C",
         unit="N",
         engine=True,
+        operand="bearing_dynamic_load_rating_n",
     ),
     CatalogueField(
         name="output_bearing_static_load_rating_n",
@@ -370,6 +406,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="C_0",
         unit="N",
         engine=True,
+        operand="bearing_static_load_rating_n",
     ),
     CatalogueField(
         name="output_bearing_dynamic_tilting_moment_nm",
@@ -377,6 +414,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="M_dyn(max)",
         unit="Nm",
         engine=True,
+        operand="bearing_dynamic_tilting_moment_nm",
     ),
     CatalogueField(
         name="output_bearing_static_tilting_moment_nm",
@@ -406,6 +444,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         label=N_("allowable moment load on the output bearing"),
         unit="Nm",
         engine=True,
+        operand="bearing_moment_load_nm",
     ),
     CatalogueField(
         name="output_bearing_moment_stiffness_nm_per_rad",
@@ -417,7 +456,11 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
     ),
     # Revision 0007
     CatalogueField(
-        name="pole_pairs", label=N_("number of pole pairs of the motor"), symbol="p", engine=True
+        name="pole_pairs",
+        label=N_("number of pole pairs of the motor"),
+        symbol="p",
+        engine=True,
+        operand=True,
     ),
     # Revision 0009: the bearing's type sets its life exponent.
     CatalogueField(
@@ -461,6 +504,9 @@ FIELDS_BY_NAME: Final = {f.name: f for f in ACTUATOR_FIELDS}
 ENGINE_FIELDS: Final = tuple(f for f in ACTUATOR_FIELDS if f.engine)
 """The values the engine's checks read: the catalogue attributes of
 :class:`~.actuators.Actuator`."""
+
+OPERAND_FIELDS: Final = tuple(f for f in ENGINE_FIELDS if f.operand_name is not None)
+"""The values the rules read as published, each an :class:`~.checks.Operands` field."""
 
 DERIVED_ACTUATOR_ATTRIBUTES: Final = {
     "zone": "the continuous-duty zone, from zone_points.csv",

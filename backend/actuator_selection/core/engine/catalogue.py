@@ -1,9 +1,9 @@
 """The catalogue as the engine reads it: each actuator a column, each value by the name
 of its :class:`~actuator_selection.core.checks.Operands` field.
 
-:data:`CATALOGUE_OPERANDS` is the one place that says which catalogue value feeds which
-operand (and how: a unit, a derived value); :func:`catalogue_arrays` builds every column
-from it, once per catalogue (the service keeps it with its catalogue snapshot).
+:func:`catalogue_arrays` builds every column once per catalogue (the service keeps it
+with its catalogue snapshot): the values the rules read as published from the field
+registry (each field's ``operand``), the derived ones from :data:`DERIVED_OPERANDS`.
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ import numpy.typing as npt
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.bearing import life_exponent
+from actuator_selection.core.catalogue_fields import OPERAND_FIELDS
 from actuator_selection.core.checks import Rule
 from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.core.engine.arrays import (
@@ -42,38 +43,24 @@ def _milli(value: float | None) -> float | None:
     return None if value is None else value / 1000.0
 
 
-CATALOGUE_OPERANDS: Final[dict[str, Callable[[Actuator], float | None]]] = {
-    "max_torque_nm": lambda a: a.max_torque_nm,
-    "max_speed_rpm": lambda a: a.max_speed_rpm,
-    "inertia_kgm2": lambda a: a.inertia_kgm2,
-    "stall_torque_nm": lambda a: a.stall_torque_nm,
-    "continuous_torque_nm": lambda a: a.continuous_torque_nm,
+DERIVED_OPERANDS: Final[dict[str, Callable[[Actuator], float | None]]] = {
     "zone_max_speed_rpm": lambda a: None if a.zone is None else a.zone.max_speed_rpm,
-    "continuous_speed_rpm": lambda a: a.continuous_speed_rpm,
-    "rated_speed_rpm": lambda a: a.rated_speed_rpm,
-    "brake_holding_torque_nm": lambda a: a.brake_holding_torque_nm,
-    "gear_ratio": lambda a: a.gear_ratio,
-    "torque_constant_nm_per_a": lambda a: a.torque_constant_nm_per_a,
-    "max_current_a": lambda a: a.max_current_a,
-    "no_load_starting_current_a": lambda a: a.no_load_starting_current_a,
-    "no_load_current_constant_a_per_rpm": lambda a: a.no_load_current_constant_30c_a_per_rpm,
-    "motor_voltage_constant_v_per_krpm": lambda a: a.motor_voltage_constant_v_per_krpm,
-    "resistance_line_ohm": lambda a: a.resistance_line_ohm,
     "inductance_line_h": lambda a: _milli(a.inductance_line_mh),
-    "pole_pairs": lambda a: a.pole_pairs,
     "dc_bus_voltage_v": lambda a: a.dc_bus_voltage_v,
-    "bearing_pitch_diameter_m": lambda a: a.output_bearing_pitch_diameter_m,
-    "bearing_offset_m": lambda a: a.output_bearing_offset_m,
-    "bearing_dynamic_load_rating_n": lambda a: a.output_bearing_dynamic_load_rating_n,
-    "bearing_static_load_rating_n": lambda a: a.output_bearing_static_load_rating_n,
-    "bearing_life_exponent": lambda a: life_exponent(a.output_bearing_type),
-    "bearing_moment_load_nm": lambda a: a.output_bearing_moment_load_nm,
-    "bearing_dynamic_tilting_moment_nm": lambda a: a.output_bearing_dynamic_tilting_moment_nm,
+    "bearing_life_exponent": lambda a: life_exponent(a.text("output_bearing_type")),
     "no_load_torque_slope_nm_per_rpm": _no_load_torque_slope,
 }
-"""Each catalogue operand (a field of :class:`~actuator_selection.core.checks.Operands`)
-from an actuator: None where the catalogue does not publish it (NaN in the arrays).
+"""The catalogue operands (fields of :class:`~actuator_selection.core.checks.Operands`)
+that are worked out from an actuator rather than read as published: None where the
+catalogue does not publish what they need (NaN in the arrays). The published ones come
+from the registry (:data:`~actuator_selection.core.catalogue_fields.OPERAND_FIELDS`);
 ``has_zone`` and the zone's edge at n_av come from the zone itself."""
+
+CATALOGUE_OPERANDS: Final = (
+    *(f.operand_name for f in OPERAND_FIELDS if f.operand_name is not None),
+    *DERIVED_OPERANDS,
+)
+"""Every catalogue operand's name, the published ones first."""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -112,8 +99,13 @@ def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
     """The actuators as the engine reads them (:data:`CATALOGUE_OPERANDS`, by name); build
     once per catalogue and pass to the engine to spare it per request."""
     operands: dict[str, FloatArray | BoolArray] = {
-        name: optional([value(a) for a in actuators]) for name, value in CATALOGUE_OPERANDS.items()
+        name: optional([getattr(a, f.name) for a in actuators])
+        for f in OPERAND_FIELDS
+        if (name := f.operand_name) is not None
     }
+    operands.update(
+        (name, optional([value(a) for a in actuators])) for name, value in DERIVED_OPERANDS.items()
+    )
     has_zone = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
     operands["has_zone"] = has_zone
     # ranking_key after the verdict: T_max, then J_A (unknown last), then the model name;
