@@ -34,3 +34,20 @@ def test_schemas_import_no_database_layer() -> None:
     assert "actuator_selection.schemas.prices" in modules
     for forbidden in ("actuator_selection.db", "sqlalchemy"):
         assert forbidden not in modules, f"the schemas imported {forbidden}"
+
+
+def test_the_core_imports_no_layer_above_it() -> None:
+    """Imports point one way: the core (its packages too, ``core.motion``,
+    ``core.thermal``, ``core.mechanisms``) never reaches the schemas, the database,
+    the services or the HTTP layer."""
+    modules = _modules_after_importing("actuator_selection.core")
+    for split in ("motion.segments", "thermal.overload", "mechanisms.hoist"):
+        assert f"actuator_selection.core.{split}" in modules  # the walk entered the packages
+    layers = ("schemas", "db", "services", "api")
+    above = sorted(m for m in modules if m.split(".")[1:2] and m.split(".")[1] in layers)
+    assert above == [], f"the core imported {above}"
+
+
+def test_the_schemas_packages_are_walked() -> None:
+    modules = _modules_after_importing("actuator_selection.schemas")
+    assert "actuator_selection.schemas.selections.answer" in modules

@@ -36,8 +36,8 @@ from actuator_selection.schemas.selections import (
     ProfileCycleIn,
     SegmentsCycleIn,
     SelectionRequest,
-    _LoadIn,
 )
+from actuator_selection.schemas.selections.loads import _LoadIn
 from actuator_selection.services.errors import UseCaseError, entry, invalid, invalid_rule
 from actuator_selection.services.profile_csv import ColumnUnits, read_profile
 

@@ -1,0 +1,85 @@
+"""A selection request: the load, the cycle, the options, and the worked example."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from pydantic import ConfigDict, Field
+
+from actuator_selection.core.cycle import SpeedPattern
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.selection import Application
+from actuator_selection.schemas.common import (
+    MAX_TIME_S,
+    StrictModel,
+)
+from actuator_selection.schemas.output_load import (
+    DRIVE_FIELD,
+    OUTPUT_LOAD_FIELD,
+    OutputLoadIn,
+    output_load_core,
+)
+from actuator_selection.schemas.selections.cycles import AnyCycleIn, CycleIn
+from actuator_selection.schemas.selections.loads import LoadIn, _load_speed, _LoadIn
+
+ModelName = Annotated[str, Field(min_length=1, max_length=60)]
+
+
+WORKED_EXAMPLE: dict[str, Any] = {
+    "load": {"speed_rpm": 40, "torque_nm": 5, "inertia_kgm2": 1.3},
+    "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+}
+"""The chapter's worked example (Table 516.1): the example request of the API documents."""
+
+
+class SelectionRequest(StrictModel):
+    """A load case to size; ``models`` restricts the catalogue to those listed."""
+
+    model_config = ConfigDict(json_schema_extra={"examples": [WORKED_EXAMPLE]})
+
+    load: LoadIn
+    cycle: AnyCycleIn
+    high_dynamics: bool = Field(
+        default=True, description="J_L ≤ 3·J_A is binding (fail) when true, a warning otherwise"
+    )
+    brake: bool = Field(
+        default=False,
+        description="the actuator is fitted with its holding brake: its holding torque is "
+        "checked against T_L at standstill (check `brake_holding`)",
+    )
+    models: list[ModelName] | None = Field(default=None, min_length=1, max_length=1000)
+    drive: bool = DRIVE_FIELD
+    output_load: OutputLoadIn | None = OUTPUT_LOAD_FIELD
+    thermal_time_constant_s: float | None = Field(
+        default=None,
+        gt=0,
+        le=MAX_TIME_S,
+        description="the winding's thermal time constant τ_th [s] where the catalogue gives "
+        "none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate",
+    )
+
+    def to_core(self) -> Application:
+        """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
+        t_1…t_p pattern) where that is what was sent, else a motion of segments."""
+        speed, speed_field = _load_speed(self.load)
+        options: dict[str, Any] = {
+            "high_dynamics": self.high_dynamics,
+            "brake": self.brake,
+            "drive": self.drive,
+            "output_load": output_load_core(self.output_load),
+            "thermal_time_constant_s": self.thermal_time_constant_s,
+        }
+        load = self.load
+        if isinstance(self.cycle, CycleIn) and isinstance(load, _LoadIn) and load.chapter_shorthand:
+            if speed is None:
+                raise InvalidInputError(speed_field, code="speed_required")
+            pattern = SpeedPattern(
+                speed_rpm=speed,
+                accel_s=self.cycle.accel_s,
+                constant_s=self.cycle.constant_s,
+                decel_s=self.cycle.decel_s,
+                pause_s=self.cycle.pause_s,
+            )
+            return Application(pattern=pattern, load=load.to_core(), **options)
+        motion = self.cycle.to_motion(speed, load.to_axis(), speed_field)
+        return Application(motion=motion, **options)
