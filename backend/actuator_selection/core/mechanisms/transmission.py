@@ -54,6 +54,7 @@ def with_transmission(load: AxisLoad, transmission: Transmission) -> AxisLoad:
     The vertical belt axis of :func:`belt_axis` behind a 5:1 belt reduction (0.0001 kgm²,
     η 0.95): J_L = 0.0001 + 0.003125/25 = 0.000225 kgm², T_G = 1.22625/5 = 0.24525 Nm:
 
+    >>> from actuator_selection.core.mechanisms.belt import BeltDrive, belt_axis
     >>> belt = belt_axis(BeltDrive(mass_kg=5, pulley_diameter_m=0.05,
     ...                            friction_coefficient=0.1, efficiency=0.9, incline_deg=90))
     >>> axis = with_transmission(belt, Transmission(ratio=5, inertia_kgm2=0.0001,
