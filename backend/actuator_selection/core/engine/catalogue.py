@@ -56,10 +56,12 @@ catalogue does not publish what they need (NaN in the arrays). The published one
 from the registry (:data:`~actuator_selection.core.catalogue_fields.OPERAND_FIELDS`);
 ``has_zone`` and the zone's edge at n_av come from the zone itself."""
 
-CATALOGUE_OPERANDS: Final = (
-    *(f.operand_name for f in OPERAND_FIELDS if f.operand_name is not None),
-    *DERIVED_OPERANDS,
+PUBLISHED_OPERANDS: Final = tuple(
+    (name, f.name) for f in OPERAND_FIELDS if (name := f.operand_name) is not None
 )
+"""(operand, catalogue field) of each value the rules read as published."""
+
+CATALOGUE_OPERANDS: Final = (*(name for name, _ in PUBLISHED_OPERANDS), *DERIVED_OPERANDS)
 """Every catalogue operand's name, the published ones first."""
 
 
@@ -99,9 +101,7 @@ def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
     """The actuators as the engine reads them (:data:`CATALOGUE_OPERANDS`, by name); build
     once per catalogue and pass to the engine to spare it per request."""
     operands: dict[str, FloatArray | BoolArray] = {
-        name: optional([getattr(a, f.name) for a in actuators])
-        for f in OPERAND_FIELDS
-        if (name := f.operand_name) is not None
+        name: optional([getattr(a, field) for a in actuators]) for name, field in PUBLISHED_OPERANDS
     }
     operands.update(
         (name, optional([value(a) for a in actuators])) for name, value in DERIVED_OPERANDS.items()
