@@ -92,6 +92,7 @@ def operands(
         nan if actuator.brake_holding_torque_nm is None else actuator.brake_holding_torque_nm,
         *_drive_and_bearing(actuator, app, profile),
         *_thermal(actuator, app, torques, profile, {} if heating is None else heating),
+        *_gear_stiffness_brake(actuator, app, profile),
     )
 
 
@@ -142,6 +143,54 @@ def _thermal(
         peak,
         speed,
         _value(slope),
+    )
+
+
+def _gear_stiffness_brake(
+    actuator: Actuator, app: Application, profile: Profile
+) -> tuple[float, ...]:
+    """The operands after k_T·K_INL: the cube of the gear's T_av written out from the
+    component catalogues' sum (CSD-2A 1019659 11/2014, p. 18), each piece at its mean |n|
+    and the larger |T| of its ends, the request's further inputs, then the stiffness, brake
+    and gear catalogue values."""
+    a, nan = actuator, math.nan
+    cube = weight = 0.0
+    if a.inertia_kgm2 is None:
+        t_cube = nan
+    else:
+        for p in profile.pieces:
+            w = (abs(p.start_rpm) + abs(p.end_rpm)) / 2.0 * p.duration_s
+            inertia = a.inertia_kgm2 + p.inertia_kgm2
+            t0 = p.static_nm + inertia * p.accel_start
+            t1 = p.static_nm + inertia * p.accel_end
+            largest = max(abs(t0), abs(t1))
+            cube = cube + w * (largest * largest * largest)
+            weight = weight + w
+        t_cube = cube / weight if weight > 0 else nan
+    basis = {"L10": 10.0, "L50": 50.0}
+    return (
+        t_cube,
+        _value(app.gear_required_life_h),
+        _value(app.momentary_torque_nm),
+        _value(app.momentary_count),
+        _value(app.min_natural_frequency_hz),
+        app.brake_safety_factor,
+        _value(app.emergency_stops),
+        _value(a.limit_torque_t1_nm),
+        _value(a.limit_torque_t2_nm),
+        _value(a.torsional_stiffness_k1_nm_per_rad),
+        _value(a.torsional_stiffness_k2_nm_per_rad),
+        _value(a.torsional_stiffness_k3_nm_per_rad),
+        _value(a.brake_emergency_stop_count),
+        _value(a.brake_closing_time_s),
+        _value(a.gear_average_torque_limit_nm),
+        _value(a.gear_repeated_peak_torque_nm),
+        _value(a.gear_momentary_peak_torque_nm),
+        _value(a.gear_momentary_peak_count),
+        _value(a.gear_average_input_speed_limit_rpm),
+        _value(a.gear_rated_torque_nm),
+        _value(a.gear_rated_life_h),
+        nan if a.gear_life_basis is None else basis[a.gear_life_basis],
     )
 
 

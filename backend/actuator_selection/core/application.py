@@ -12,11 +12,17 @@ from actuator_selection.core.bearing import OutputLoad
 from actuator_selection.core.checks import (
     BEARING_LIFE,
     BEARING_RULES,
+    BRAKE_EMERGENCY_STOPS,
     BRAKE_RULES,
     DRIVE_RULES,
+    GEAR_LIFE,
+    GEAR_MOMENTARY_PEAK,
+    GEAR_RULES,
+    NATURAL_FREQUENCY,
     RULES,
     Rule,
 )
+from actuator_selection.core.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.motion import Motion, Profile, profile_of, trapezoid
@@ -61,6 +67,23 @@ class Application:
                 "cycle", "give segments or the t_1…t_p pattern with its load, not both"
             )
         require_time_constant(self.thermal_time_constant_s)
+        for name in (
+            "gear_required_life_h",
+            "momentary_torque_nm",
+            "momentary_count",
+            "min_natural_frequency_hz",
+            "emergency_stops",
+        ):
+            value = getattr(self, name)
+            if value is not None and not (math.isfinite(value) and value > 0):
+                raise InvalidInputError(name, f"must be a finite number > 0, got {value!r}")
+        if not (math.isfinite(self.brake_safety_factor) and self.brake_safety_factor >= 1):
+            raise InvalidInputError(
+                "brake_safety_factor",
+                f"must be a finite number ≥ 1, got {self.brake_safety_factor!r}",
+            )
+        if self.momentary_torque_nm is not None and self.momentary_count is None:
+            raise InvalidInputError("momentary_count", "needed with momentary_torque_nm")
 
     @property
     def cycle(self) -> Motion:
@@ -106,6 +129,24 @@ class Application:
     output_load: OutputLoad | None = None
     """An external load on the output flange, or None: the output bearing is not checked
     (:data:`~actuator_selection.core.checks.BEARING_RULES`)."""
+    gear: bool = False
+    """Whether the strain wave gear's own limits are checked
+    (:data:`~actuator_selection.core.checks.GEAR_RULES`; docs/decisions/0024)."""
+    gear_required_life_h: float | None = None
+    """The wave generator life the application needs [h]; None: not checked."""
+    momentary_torque_nm: float | None = None
+    """A momentary peak torque (collision, emergency stop) at the output [Nm]; None: not
+    checked."""
+    momentary_count: float | None = None
+    """How often that momentary peak occurs over the life [-]."""
+    min_natural_frequency_hz: float | None = None
+    """The least natural frequency of the load on the gear's stiffness the application
+    needs [Hz]; None: not checked (:data:`~actuator_selection.core.checks.NATURAL_FREQUENCY`)."""
+    brake_safety_factor: float = DEFAULT_BRAKE_SAFETY_FACTOR
+    """S of the brake's holding check, S·T_L ≤ T_Br (docs/decisions/0024)."""
+    emergency_stops: float | None = None
+    """Emergency stops expected over the life, against the brake's allowable count; None:
+    not checked."""
     thermal_time_constant_s: float | None = None
     """The winding's thermal time constant τ_th [s] for the heating check
     (:data:`~actuator_selection.core.checks.THERMAL_PEAK`) where the catalogue gives
@@ -122,13 +163,38 @@ class Application:
             self.drive,
             load is not None,
             load is not None and load.required_life_h is not None,
+            self.gear,
+            self.gear and self.gear_required_life_h is not None,
+            self.gear and self.momentary_torque_nm is not None,
+            self.min_natural_frequency_hz is not None,
+            self.brake and self.emergency_stops is not None,
         )
 
 
 @lru_cache(maxsize=16)
-def _rule_set(brake: bool, drive: bool, bearing: bool, life: bool) -> tuple[Rule, ...]:
+def _rule_set(
+    brake: bool,
+    drive: bool,
+    bearing: bool,
+    life: bool,
+    gear: bool = False,
+    gear_life: bool = False,
+    momentary: bool = False,
+    frequency: bool = False,
+    emergency: bool = False,
+) -> tuple[Rule, ...]:
     """One tuple per combination, so that cases group by their rules cheaply."""
     rules = BRAKE_RULES if brake else RULES
+    if emergency:
+        rules = (*rules, BRAKE_EMERGENCY_STOPS)
+    if gear:
+        rules = (*rules, *GEAR_RULES)
+    if momentary:
+        rules = (*rules, GEAR_MOMENTARY_PEAK)
+    if gear_life:
+        rules = (*rules, GEAR_LIFE)
+    if frequency:
+        rules = (*rules, NATURAL_FREQUENCY)
     if drive:
         rules = (*rules, *DRIVE_RULES)
     if bearing:

@@ -7,8 +7,8 @@ family to a file, each with its words.
   :class:`Requirement`, :class:`Ops`;
 - :mod:`~actuator_selection.core.checks.rules`: ``motion`` (speed, inertia, peak torques),
   ``thermal`` (continuous duty, heating, continuous speed), ``drive`` (current, voltage),
-  ``bearing`` (output bearing), ``brake`` (holding brake); a family to come (``gear``)
-  is one more file.
+  ``bearing`` (output bearing), ``brake`` (holding brake, emergency stops), ``gear`` (the
+  strain wave gear's own limits), ``stiffness`` (natural frequency, deflection).
 
 The engine (:mod:`actuator_selection.core.engine`) runs the rule sets below on arrays of
 load cases × actuators; the rules' order is the order of a candidate's checks.
@@ -67,11 +67,19 @@ from actuator_selection.core.checks.rules.bearing import (
     BEARING_MOMENT,
     BEARING_STATIC,
 )
-from actuator_selection.core.checks.rules.brake import BRAKE_HOLDING
+from actuator_selection.core.checks.rules.brake import BRAKE_EMERGENCY_STOPS, BRAKE_HOLDING
 from actuator_selection.core.checks.rules.drive import (
     DRIVE_CURRENT,
     DRIVE_VOLTAGE,
     regenerative_energy_j,
+)
+from actuator_selection.core.checks.rules.gear import (
+    GEAR_AVERAGE_TORQUE,
+    GEAR_INPUT_SPEED,
+    GEAR_LIFE,
+    GEAR_MOMENTARY_PEAK,
+    GEAR_REPEATED_PEAK,
+    GEAR_RULES,
 )
 from actuator_selection.core.checks.rules.motion import (
     DECEL_TORQUE,
@@ -80,6 +88,7 @@ from actuator_selection.core.checks.rules.motion import (
     MAX_SPEED,
     PEAK_TORQUE,
 )
+from actuator_selection.core.checks.rules.stiffness import NATURAL_FREQUENCY
 from actuator_selection.core.checks.rules.thermal import (
     CONTINUOUS_DUTY,
     CONTINUOUS_SPEED,
@@ -92,6 +101,7 @@ __all__ = [
     "BEARING_MOMENT",
     "BEARING_RULES",
     "BEARING_STATIC",
+    "BRAKE_EMERGENCY_STOPS",
     "BRAKE_HOLDING",
     "BRAKE_RULES",
     "CONTINUOUS_DUTY",
@@ -101,9 +111,16 @@ __all__ = [
     "DRIVE_RULES",
     "DRIVE_VOLTAGE",
     "FLOAT_OPS",
+    "GEAR_AVERAGE_TORQUE",
+    "GEAR_INPUT_SPEED",
+    "GEAR_LIFE",
+    "GEAR_MOMENTARY_PEAK",
+    "GEAR_REPEATED_PEAK",
+    "GEAR_RULES",
     "INERTIA_RATIO",
     "INERTIA_RATIO_LIMIT",
     "MAX_SPEED",
+    "NATURAL_FREQUENCY",
     "PEAK_TORQUE",
     "RULES",
     "THERMAL_PEAK",

@@ -150,3 +150,49 @@ class Operands(NamedTuple):
     Eq. 522.2 takes from the continuous stall current, per rpm (Eq. 522.3); K_INL at
     80 °C where published (the warm actuator of continuous duty), else at 30 °C; NaN
     where k_T or K_INL is not published (:func:`no_load_torque_slope`)."""
+    gear_torque_cube_nm3: Real
+    """Σ|n_i|·t_i·|T_i|³ / Σ|n_i|·t_i [Nm³]: the cube of the gear's average output torque
+    T_av (a piece at its mean |n|, a ramp at n/2, a held pause weighing zero; |T_i| the
+    larger of its ends' magnitudes); NaN without J_A or where the cycle does not move."""
+    gear_required_life_h: Real
+    """The wave generator life the application needs [h]; NaN where not asked."""
+    momentary_torque_nm: Real
+    """A momentary peak torque at the output [Nm]; NaN where not asked."""
+    momentary_count: Real
+    """How often it occurs [-]; NaN where not asked."""
+    min_natural_frequency_hz: Real
+    """The least natural frequency the application needs [Hz]; NaN where not asked."""
+    brake_safety_factor: Real
+    """S of the brake's holding check [-]."""
+    emergency_stops: Real
+    """Emergency stops expected over the life [-]; NaN where not asked."""
+    limit_torque_t1_nm: Real
+    """T_1 of the torsional stiffness curve [Nm]; NaN where not published."""
+    limit_torque_t2_nm: Real
+    """T_2 of the torsional stiffness curve [Nm]; NaN where not published."""
+    stiffness_k1_nm_per_rad: Real
+    """K_1 [Nm/rad]; NaN where not published."""
+    stiffness_k2_nm_per_rad: Real
+    """K_2 [Nm/rad]; NaN where not published."""
+    stiffness_k3_nm_per_rad: Real
+    """K_3 [Nm/rad]; NaN where not published."""
+    brake_emergency_stop_count: Real
+    """The brake's allowable emergency stops [-]; NaN where not published."""
+    brake_closing_time_s: Real
+    """The brake's closing time [s]; NaN where not published."""
+    gear_average_torque_limit_nm: Real
+    """The gear's limit for average torque T_A [Nm]; NaN where not published."""
+    gear_repeated_peak_torque_nm: Real
+    """The gear's limit for repeated peak torque T_R [Nm]; NaN where not published."""
+    gear_momentary_peak_torque_nm: Real
+    """The gear's limit for momentary peak torque T_M [Nm]; NaN where not published."""
+    gear_momentary_peak_count: Real
+    """The count of momentary peaks the gear allows [-]; NaN where not published."""
+    gear_average_input_speed_limit_rpm: Real
+    """The gear's allowable average input speed [rpm]; NaN where not published."""
+    gear_rated_torque_nm: Real
+    """T_N at n_N = 2000 rpm [Nm]; NaN where not published."""
+    gear_rated_life_h: Real
+    """L_n [h]; NaN where not published."""
+    gear_life_basis: Real
+    """10 where L_n is an L_10, 50 where an L_50; NaN where not published."""

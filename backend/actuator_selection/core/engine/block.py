@@ -398,6 +398,7 @@ def evaluate_block(
     accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
     decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
     constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
+    cube, weight = np.zeros(shape), np.zeros(cases.size)  # the gear's T_av (rules.gear)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
         for k in range(p.duration.shape[1]):
             torques, square = _piece_torques(cat, p, k)
@@ -416,6 +417,13 @@ def evaluate_block(
             # Which extremes the piece can change (a piece brakes, or not, in every case
             # of a trapezoid): an update where no case takes part changes nothing.
             brakes, drives, runs = braking.any(), not braking.all(), steady.any()
+            # Σ|n|·t·|T|³: the piece at its mean |n| (a ramp at n/2), |T| its larger end.
+            w = (np.abs(p.start_rpm[:, k]) + np.abs(p.end_rpm[:, k])) / 2.0 * p.duration[:, k]
+            largest = np.abs(torques[0])
+            if len(torques) > 1:
+                largest = np.maximum(largest, np.abs(torques[1]))
+            cube = cube + w[:, col] * (largest * largest * largest)
+            weight = weight + w
             for torque in torques:
                 magnitude = np.abs(torque)
                 if brakes:
@@ -431,6 +439,7 @@ def evaluate_block(
                     constant = np.where(take, torque, constant)
                     constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
+        gear_cube = cube / weight[:, col]
         thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares)
         thermal_speed = _thermal_speed(cases, gains)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the candidate's None)
@@ -439,6 +448,7 @@ def evaluate_block(
     rms_torque = np.where(unknown, math.nan, rms_torque)
     thermal_torque = np.where(unknown, math.nan, thermal_torque)
     constant_torque = np.where(unknown, math.nan, constant)
+    gear_cube = np.where(unknown, math.nan, gear_cube)
     zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
     if cat.zone_columns.size:
         zone_torque = np.full(shape, math.nan)
@@ -455,6 +465,7 @@ def evaluate_block(
             "thermal_time_constant_assumed": gains.assumed,
             "thermal_torque_nm": thermal_torque,
             "thermal_speed_rpm": thermal_speed,
+            "gear_torque_cube_nm3": gear_cube,
         },
     )
     with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes

@@ -13,6 +13,7 @@ import numpy as np
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.application import Application
 from actuator_selection.core.bearing import swing_deg
+from actuator_selection.core.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.core.engine.arrays import BoolArray, FloatArray, IndexArray
 from actuator_selection.core.motion import (
     CycleFigures,
@@ -35,6 +36,25 @@ OUTPUT_LOAD_FIELDS = (
 )
 """The output load's fields, as :class:`Operands` and ``OutputLoad`` name them."""
 
+REQUEST_FIELDS = (
+    "gear_required_life_h",
+    "momentary_torque_nm",
+    "momentary_count",
+    "min_natural_frequency_hz",
+    "brake_safety_factor",
+    "emergency_stops",
+)
+"""The request's further inputs (gear, stiffness, brake), as :class:`Operands` and
+``Application`` name them; NaN where not given."""
+
+
+def default_requests(size: int) -> FloatArray:
+    """:data:`REQUEST_FIELDS` of ``size`` cases that name none: NaN, the brake's safety
+    factor its default (``Application.brake_safety_factor``)."""
+    requests = np.full((size, len(REQUEST_FIELDS)), math.nan)
+    requests[:, REQUEST_FIELDS.index("brake_safety_factor")] = DEFAULT_BRAKE_SAFETY_FACTOR
+    return requests
+
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Cases:
@@ -50,6 +70,8 @@ class Cases:
     """τ_th per case where the catalogue gives none: the case's, else the default."""
     thermal_assumed: BoolArray
     """Whether that τ_th is the assumed default."""
+    requests: FloatArray
+    """The further inputs per case (cases × :data:`REQUEST_FIELDS`); NaN where not given."""
 
     @property
     def size(self) -> int:
@@ -72,6 +94,7 @@ class Cases:
             output_load=self.output_load[start:stop],
             thermal_time_constant=self.thermal_time_constant[start:stop],
             thermal_assumed=self.thermal_assumed[start:stop],
+            requests=self.requests[start:stop],
         )
 
 
@@ -113,6 +136,13 @@ def cases_of(apps: Sequence[Application]) -> Cases:
             dtype=np.float64,
         ),
         thermal_assumed=np.array([a.thermal_time_constant_s is None for a in apps], dtype=np.bool_),
+        requests=np.array(
+            [
+                [math.nan if v is None else v for v in (getattr(a, n) for n in REQUEST_FIELDS)]
+                for a in apps
+            ],
+            dtype=np.float64,
+        ).reshape(len(apps), len(REQUEST_FIELDS)),
     )
 
 
@@ -187,4 +217,5 @@ def case_operands(cases: Cases) -> dict[str, Any]:
         **{name: cases.output_load[:, k, col] for k, name in enumerate(OUTPUT_LOAD_FIELDS)},
         "swing_deg": swing_of(cases)[:, col],
         "cycle_s": f.cycle_s[:, col],
+        **{name: cases.requests[:, k, col] for k, name in enumerate(REQUEST_FIELDS)},
     }

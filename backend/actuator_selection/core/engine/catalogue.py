@@ -21,6 +21,7 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.bearing import life_exponent
 from actuator_selection.core.catalogue_fields import OPERAND_FIELDS
 from actuator_selection.core.checks import Rule
+from actuator_selection.core.checks.rules.gear import life_basis
 from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.core.engine.arrays import (
     BoolArray,
@@ -49,6 +50,21 @@ DERIVED_OPERANDS: Final[dict[str, Callable[[Actuator], float | None]]] = {
     "dc_bus_voltage_v": lambda a: a.dc_bus_voltage_v,
     "bearing_life_exponent": lambda a: life_exponent(a.text("output_bearing_type")),
     "no_load_torque_slope_nm_per_rpm": _no_load_torque_slope,
+    "limit_torque_t1_nm": lambda a: a.limit_torque_t1_nm,
+    "limit_torque_t2_nm": lambda a: a.limit_torque_t2_nm,
+    "stiffness_k1_nm_per_rad": lambda a: a.torsional_stiffness_k1_nm_per_rad,
+    "stiffness_k2_nm_per_rad": lambda a: a.torsional_stiffness_k2_nm_per_rad,
+    "stiffness_k3_nm_per_rad": lambda a: a.torsional_stiffness_k3_nm_per_rad,
+    "brake_emergency_stop_count": lambda a: a.brake_emergency_stop_count,
+    "brake_closing_time_s": lambda a: a.brake_closing_time_s,
+    "gear_average_torque_limit_nm": lambda a: a.gear_average_torque_limit_nm,
+    "gear_repeated_peak_torque_nm": lambda a: a.gear_repeated_peak_torque_nm,
+    "gear_momentary_peak_torque_nm": lambda a: a.gear_momentary_peak_torque_nm,
+    "gear_momentary_peak_count": lambda a: a.gear_momentary_peak_count,
+    "gear_average_input_speed_limit_rpm": lambda a: a.gear_average_input_speed_limit_rpm,
+    "gear_rated_torque_nm": lambda a: a.gear_rated_torque_nm,
+    "gear_rated_life_h": lambda a: a.gear_rated_life_h,
+    "gear_life_basis": lambda a: life_basis(a.gear_life_basis),
 }
 """The catalogue operands (fields of :class:`~actuator_selection.core.checks.Operands`)
 that are worked out from an actuator rather than read as published: None where the

@@ -16,7 +16,7 @@ from actuator_selection.core.application import Application, require_time_consta
 from actuator_selection.core.checks import RULES, Rule
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.engine.arrays import BoolArray, CodeArray, FloatArray, IndexArray
-from actuator_selection.core.engine.cases import OUTPUT_LOAD_FIELDS, Cases
+from actuator_selection.core.engine.cases import OUTPUT_LOAD_FIELDS, Cases, default_requests
 from actuator_selection.core.engine.catalogue import CatalogueArrays, catalogue_arrays
 from actuator_selection.core.engine.evaluation import RankedBlock, check_arguments, ranked_blocks
 from actuator_selection.core.errors import InvalidInputError
@@ -129,6 +129,7 @@ def columns_cases(columns: TrapezoidColumns) -> Cases:
         output_load=np.full((n, len(OUTPUT_LOAD_FIELDS)), math.nan),
         thermal_time_constant=np.full(n, DEFAULT_THERMAL_TIME_CONSTANT_S if tau is None else tau),
         thermal_assumed=np.full(n, tau is None, dtype=np.bool_),
+        requests=default_requests(n),
     )
 
 
