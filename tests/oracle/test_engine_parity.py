@@ -661,3 +661,65 @@ def test_case_verdicts_are_the_candidates_verdicts(seed: int) -> None:
         expected = [c.verdict for c in candidates]
         assert case_verdicts(actuator, apps) == expected
         assert expected == [evaluate(actuator, app).verdict for app in apps]
+def with_gear_stiffness_brake(rng: random.Random, actuator: Actuator) -> Actuator:
+    """TEST VALUES, MADE UP (not catalogue data): gear ratings, stiffness and brake limits,
+    some missing, so that pass, fail and no data all occur."""
+
+    def maybe(low: float, high: float) -> float | None:
+        return None if rng.random() < 0.15 else rng.uniform(low, high)
+
+    t1 = maybe(1, 100)
+    return dataclasses.replace(
+        actuator,
+        brake_holding_torque_nm=maybe(1, 400),
+        limit_torque_t1_nm=t1,
+        limit_torque_t2_nm=None if t1 is None else 3.5 * t1,
+        torsional_stiffness_k1_nm_per_rad=maybe(1e3, 1e5),
+        torsional_stiffness_k2_nm_per_rad=maybe(1e3, 1e5),
+        torsional_stiffness_k3_nm_per_rad=maybe(1e3, 1e5),
+        brake_emergency_stop_count=rng.choice([None, 200.0]),
+        brake_closing_time_s=rng.choice([None, 0.07]),
+        gear_average_torque_limit_nm=maybe(5, 500),
+        gear_repeated_peak_torque_nm=maybe(5, 800),
+        gear_momentary_peak_torque_nm=maybe(5, 1500),
+        gear_momentary_peak_count=maybe(100, 1e5),
+        gear_average_input_speed_limit_rpm=maybe(500, 4000),
+        gear_rated_torque_nm=maybe(5, 300),
+        gear_rated_life_h=rng.choice([None, 7000.0, 10000.0]),
+        gear_life_basis=rng.choice([None, "L10", "L50"]),
+    )
+
+
+@pytest.mark.parametrize("motion", [False, True])
+def test_gear_stiffness_and_brake_checks_match_the_scalar_flowchart(motion: bool) -> None:
+    """Issue 28, items 7–9: the gear's, the stiffness' and the brake's checks in both
+    flowcharts, equal cell by cell, on trapezoids and on cycles of segments (S-curves,
+    both directions: T_av's sum piece by piece)."""
+    rng = random.Random(29 + motion)
+    actuators = [with_gear_stiffness_brake(rng, random_actuator(rng, k)) for k in range(12)]
+    base = [
+        random_motion_case(rng) if motion else random_case(rng, actuators) for _ in range(60)
+    ]
+    apps = [
+        dataclasses.replace(
+            app,
+            brake=True,
+            gear=True,
+            gear_required_life_h=20000.0,
+            momentary_torque_nm=300.0,
+            momentary_count=500.0,
+            min_natural_frequency_hz=15.0,
+            brake_safety_factor=1.5,
+            emergency_stops=150.0,
+        )
+        for app in base
+    ]
+    rules = apps[0].rules
+    names = [r.name for r in rules]
+    for name in ("gear_average_torque", "gear_life", "natural_frequency", "brake_emergency_stops"):
+        assert name in names
+    assert_matches_scalar(actuators, apps, rules=rules)
+    assert_selects_like_scalar(actuators, apps, top=3, rules=rules)
+    statuses = evaluate_batch(actuators, apps, rules=rules).statuses
+    for status in (Status.PASS, Status.FAIL, Status.NO_DATA):
+        assert (statuses == STATUS_BY_CODE.index(status)).any()

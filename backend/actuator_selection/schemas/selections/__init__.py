@@ -44,6 +44,7 @@ from actuator_selection.schemas.selections.loads import (
 )
 from actuator_selection.schemas.selections.request import (
     WORKED_EXAMPLE,
+    GearIn,
     ModelName,
     SelectionRequest,
 )
@@ -68,6 +69,7 @@ __all__ = [
     "DirectLoad",
     "DriveOptionGroup",
     "Friction",
+    "GearIn",
     "Inertia",
     "LoadIn",
     "Mass",

@@ -6,6 +6,7 @@ from typing import Annotated, Any
 
 from pydantic import ConfigDict, Field
 
+from actuator_selection.core.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.core.cycle import SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.selection import Application
@@ -30,6 +31,28 @@ WORKED_EXAMPLE: dict[str, Any] = {
     "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
 }
 """The chapter's worked example (Table 516.1): the example request of the API documents."""
+
+
+class GearIn(StrictModel):
+    """The strain wave gear's own limits are checked (issue 28, item 7): T_av, repeated
+    peak torque, average input speed; with a momentary peak and with a required life."""
+
+    required_life_h: float | None = Field(
+        default=None,
+        gt=0,
+        le=1e7,
+        description="wave generator life the application needs [h] (check `gear_life`)",
+    )
+    momentary_torque_nm: float | None = Field(
+        default=None,
+        gt=0,
+        le=1e7,
+        description="a momentary peak torque at the output, a collision or emergency stop "
+        "[Nm] (check `gear_momentary_peak`); needs `momentary_count`",
+    )
+    momentary_count: float | None = Field(
+        default=None, gt=0, le=1e12, description="how often that peak occurs over the life"
+    )
 
 
 class SelectionRequest(StrictModel):
@@ -58,6 +81,37 @@ class SelectionRequest(StrictModel):
         "none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate",
     )
 
+    gear: GearIn | None = Field(
+        default=None,
+        description="check the strain wave gear's own limits (checks `gear_average_torque`, "
+        "`gear_repeated_peak`, `gear_input_speed`, and `gear_momentary_peak`, `gear_life` "
+        "where asked); omitted: not checked (their ratings are catalogue values an "
+        "administrator imports; where missing the checks say no data)",
+    )
+    min_natural_frequency_hz: float | None = Field(
+        default=None,
+        gt=0,
+        le=1e6,
+        description="the least natural frequency of the load on the gear's torsional "
+        "stiffness, f_n = (1/2π)·√(K_1/J_L) [Hz] (check `natural_frequency`, which also "
+        "reports the torsional deflection under T_L and under T_1)",
+    )
+    brake_safety_factor: float = Field(
+        default=DEFAULT_BRAKE_SAFETY_FACTOR,
+        ge=1,
+        le=100,
+        description="S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); "
+        "default 1: no manufacturer document read names one",
+    )
+    emergency_stops: float | None = Field(
+        default=None,
+        gt=0,
+        le=1e12,
+        description="emergency stops expected over the life, with a brake: against the "
+        "brake's allowable number (check `brake_emergency_stops`, which also reports how "
+        "far a falling load turns the output while the brake closes)",
+    )
+
     def to_core(self) -> Application:
         """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
         t_1…t_p pattern) where that is what was sent, else a motion of segments."""
@@ -68,6 +122,13 @@ class SelectionRequest(StrictModel):
             "drive": self.drive,
             "output_load": output_load_core(self.output_load),
             "thermal_time_constant_s": self.thermal_time_constant_s,
+            "gear": self.gear is not None,
+            "gear_required_life_h": None if self.gear is None else self.gear.required_life_h,
+            "momentary_torque_nm": None if self.gear is None else self.gear.momentary_torque_nm,
+            "momentary_count": None if self.gear is None else self.gear.momentary_count,
+            "min_natural_frequency_hz": self.min_natural_frequency_hz,
+            "brake_safety_factor": self.brake_safety_factor,
+            "emergency_stops": self.emergency_stops,
         }
         load = self.load
         if isinstance(self.cycle, CycleIn) and isinstance(load, _LoadIn) and load.chapter_shorthand:

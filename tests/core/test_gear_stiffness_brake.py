@@ -1,0 +1,210 @@
+"""Issue 28, items 7–9: the gear's own limits, the torsional stiffness and the brake's
+emergency stops, each against a hand calculation from first principles, pass and fail,
+the engine equal (==) to the scalar oracle (tests/oracle/flowchart.py).
+
+GEAR RATINGS IN THIS FILE ARE TEST VALUES, MADE UP: no public document gives them for
+any catalogue actuator (docs/catalogue-data/gear-ratings.csv). They only exercise the
+arithmetic.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any
+
+import pytest
+from tests.oracle.flowchart import evaluate as oracle_evaluate
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.checks import RULES, Check, Status
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.selection import Application, Verdict, evaluate
+
+# The chapter's worked example (Table 516.1) on FHA-25C-50-L (Table 516.3).
+N, T1, T2, T3, TP, T_L, J_L, J_A, RATIO = 40.0, 0.1, 0.1, 0.1, 1.0, 5.0, 1.3, 0.86, 50.0
+EXAMPLE: dict[str, Any] = {
+    "pattern": SpeedPattern(speed_rpm=N, accel_s=T1, constant_s=T2, decel_s=T3, pause_s=TP),
+    "load": Load(torque_nm=T_L, inertia_kgm2=J_L),
+}
+FHA = Actuator(
+    model="FHA-25C-50-L", family="FHA-C", gear_ratio=RATIO, max_torque_nm=151, max_speed_rpm=90,
+    inertia_kgm2=J_A,
+)  # fmt: skip
+TEST_RATINGS: dict[str, Any] = {  # TEST VALUES, MADE UP (not catalogue data)
+    "gear_average_torque_limit_nm": 80.0,
+    "gear_repeated_peak_torque_nm": 120.0,
+    "gear_momentary_peak_torque_nm": 200.0,
+    "gear_momentary_peak_count": 1000.0,
+    "gear_average_input_speed_limit_rpm": 3000.0,
+    "gear_rated_torque_nm": 50.0,
+    "gear_rated_life_h": 10000.0,
+    "gear_life_basis": "L50",
+}
+
+# First principles (Eq. 514.1, 514.3; CSD-2A 1019659 11/2014 p. 18):
+ALPHA = N * 2 * math.pi / 60 / T1  # rad/s²
+T_ACC = T_L + (J_A + J_L) * ALPHA
+T_DEC = T_L - (J_A + J_L) * ALPHA
+W_ACC, W_RUN, W_DEC = N / 2 * T1, N * T2, N / 2 * T3  # |n|·t, a ramp at n/2, pause 0
+T_AV = (
+    (W_ACC * abs(T_ACC) ** 3 + W_RUN * T_L**3 + W_DEC * abs(T_DEC) ** 3) / (W_ACC + W_RUN + W_DEC)
+) ** (1 / 3)
+N_AV = (W_ACC + W_RUN + W_DEC) / (T1 + T2 + T3 + TP)  # the pause included
+N_IN = RATIO * N_AV
+
+
+def life_h(l_n: float, t_n: float) -> float:
+    return float(l_n * (t_n / T_AV) ** 3 * (2000.0 / N_IN))
+
+
+def checks(actuator: Actuator, app: Application) -> dict[str, Check]:
+    candidate = evaluate(actuator, app)
+    assert candidate == oracle_evaluate(actuator, app)  # engine == scalar oracle
+    return {c.name: c for c in candidate.checks}
+
+
+def test_hand_figures() -> None:
+    assert pytest.approx(72.03, abs=0.01) == T_AV
+    assert pytest.approx(307.69, abs=0.01) == N_IN
+    assert life_h(10000, 50) == pytest.approx(21737, rel=1e-4)
+
+
+def test_gear_checks_run_only_when_asked() -> None:
+    rated = dataclasses.replace(FHA, **TEST_RATINGS)
+    names = {c.name for c in evaluate(rated, Application(**EXAMPLE)).checks}
+    assert names == {r.name for r in RULES}  # the verdict as before: no gear check
+
+
+def test_gear_average_torque_and_life_pass_against_the_hand_calculation() -> None:
+    rated = dataclasses.replace(FHA, **TEST_RATINGS)
+    app = Application(
+        **EXAMPLE, gear=True, gear_required_life_h=20000, momentary_torque_nm=150,
+        momentary_count=10,
+    )  # fmt: skip
+    c = checks(rated, app)
+    assert c["gear_average_torque"].value == pytest.approx(T_AV, rel=1e-12)
+    assert (c["gear_average_torque"].status, c["gear_average_torque"].limit) == (
+        Status.PASS,
+        80.0,
+    )
+    assert c["gear_repeated_peak"].value == pytest.approx(abs(T_ACC), rel=1e-12)
+    assert c["gear_repeated_peak"].status is Status.PASS
+    assert c["gear_input_speed"].value == pytest.approx(N_IN, rel=1e-12)
+    assert c["gear_input_speed"].status is Status.PASS
+    assert c["gear_momentary_peak"].status is Status.PASS
+    life = c["gear_life"]
+    assert life.status is Status.PASS
+    # the L_n the required 20,000 h need: L_req·(T_av/T_N)³·(n_in,av/n_N)
+    assert life.value == pytest.approx(20000 * (T_AV / 50) ** 3 * (N_IN / 2000), rel=1e-12)
+    assert f"L_50 = {life_h(10000, 50):.4g} h" in life.message
+
+
+def test_gear_checks_fail_beyond_their_limits() -> None:
+    rated = dataclasses.replace(
+        FHA,
+        **TEST_RATINGS
+        | {
+            "gear_average_torque_limit_nm": 70.0,  # TEST VALUES, MADE UP
+            "gear_repeated_peak_torque_nm": 90.0,
+            "gear_average_input_speed_limit_rpm": 300.0,
+            "gear_life_basis": "L10",
+        },
+    )
+    app = Application(
+        **EXAMPLE, gear=True, gear_required_life_h=25000, momentary_torque_nm=150,
+        momentary_count=2000,
+    )  # fmt: skip
+    c = checks(rated, app)
+    for name in (
+        "gear_average_torque",
+        "gear_repeated_peak",
+        "gear_input_speed",
+        "gear_momentary_peak",
+        "gear_life",
+    ):
+        assert c[name].status is Status.FAIL, name
+    assert life_h(10000, 50) < 25000
+    assert f"L_10 = {life_h(10000, 50):.4g} h" in c["gear_life"].message
+
+
+def test_without_ratings_the_gear_checks_say_no_data() -> None:
+    app = Application(**EXAMPLE, gear=True, gear_required_life_h=20000)
+    candidate = evaluate(FHA, app)
+    assert candidate == oracle_evaluate(FHA, app)
+    gear = [c for c in candidate.checks if c.name.startswith("gear_")]
+    assert [c.status for c in gear] == [Status.NO_DATA] * 4
+    assert candidate.verdict is Verdict.UNCONFIRMED
+
+
+# --- stiffness: CHA-25A-50 (CHA manual 1018854 12/2015 §3.3.5 p. 50) -----------------------
+
+CHA = Actuator(
+    model="CHA-25A-50", family="CHA", gear_ratio=50, max_torque_nm=127, max_speed_rpm=110,
+    inertia_kgm2=1.2, limit_torque_t1_nm=14, limit_torque_t2_nm=48,
+    torsional_stiffness_k1_nm_per_rad=25000, torsional_stiffness_k2_nm_per_rad=34000,
+    torsional_stiffness_k3_nm_per_rad=44000,
+)  # fmt: skip
+ARCMIN = 60 * 180 / math.pi
+
+
+@pytest.mark.parametrize(("required", "status"), [(20.0, Status.PASS), (25.0, Status.FAIL)])
+def test_natural_frequency_against_the_hand_calculation(required: float, status: Status) -> None:
+    app = Application(
+        pattern=SpeedPattern(speed_rpm=20, accel_s=0.2, constant_s=0.5, decel_s=0.2, pause_s=1),
+        load=Load(torque_nm=30, inertia_kgm2=1.5),
+        min_natural_frequency_hz=required,
+    )
+    f_n = math.sqrt(25000 / 1.5) / (2 * math.pi)  # 20.55 Hz
+    c = checks(CHA, app)["natural_frequency"]
+    assert (c.status, c.value) == (status, required)
+    assert c.limit == pytest.approx(f_n, rel=1e-12)
+    # Eq. 68.2: 30 Nm between T_1 and T_2: φ = T_1/K_1 + (T − T_1)/K_2
+    phi = (14 / 25000 + (30 - 14) / 34000) * ARCMIN
+    assert f"{phi:.3g} arcmin under T_L = 30 Nm" in c.message
+    assert f"{14 / 25000 * ARCMIN:.3g} arcmin under T_1" in c.message
+
+
+# --- brake: CHA-25A (Table 36.3: 200 emergency stops, closing time 70 ms) ------------------
+
+BRAKED = dataclasses.replace(
+    CHA, brake_holding_torque_nm=90, brake_emergency_stop_count=200, brake_closing_time_s=0.07
+)
+
+
+@pytest.mark.parametrize(("stops", "status"), [(200.0, Status.PASS), (201.0, Status.FAIL)])
+def test_emergency_stops_and_the_drop(stops: float, status: Status) -> None:
+    app = Application(
+        pattern=SpeedPattern(speed_rpm=20, accel_s=0.2, constant_s=0.5, decel_s=0.2, pause_s=1),
+        load=Load(torque_nm=30, inertia_kgm2=1.5),
+        brake=True,
+        emergency_stops=stops,
+    )
+    c = checks(BRAKED, app)["brake_emergency_stops"]
+    assert (c.status, c.value, c.limit) == (status, stops, 200)
+    # θ = ½·T_L/(J_L + J_A)·t_c²: 30 Nm on 2.7 kgm² for 70 ms
+    theta = 0.5 * 30 / (1.5 + 1.2) * 0.07**2
+    assert f"{math.degrees(theta):.3g}°" in c.message
+
+
+@pytest.mark.parametrize(("factor", "status"), [(3.0, Status.PASS), (3.01, Status.FAIL)])
+def test_brake_holding_with_a_safety_factor(factor: float, status: Status) -> None:
+    app = Application(
+        pattern=SpeedPattern(speed_rpm=20, accel_s=0.2, constant_s=0.5, decel_s=0.2, pause_s=1),
+        load=Load(torque_nm=30, inertia_kgm2=1.5),
+        brake=True,
+        brake_safety_factor=factor,
+    )
+    c = checks(BRAKED, app)["brake_holding"]
+    assert (c.status, c.value, c.limit) == (status, factor * 30, 90)
+    assert "S·T_L" in c.message
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [("brake_safety_factor", 0.9), ("emergency_stops", 0.0), ("gear_required_life_h", -1.0)],
+)
+def test_bad_request_inputs_name_their_field(field: str, value: float) -> None:
+    with pytest.raises(InvalidInputError, match=field):
+        Application(**(EXAMPLE | {field: value}))
