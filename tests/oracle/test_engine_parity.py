@@ -697,9 +697,7 @@ def test_gear_stiffness_and_brake_checks_match_the_scalar_flowchart(motion: bool
     both directions: T_av's sum piece by piece)."""
     rng = random.Random(29 + motion)
     actuators = [with_gear_stiffness_brake(rng, random_actuator(rng, k)) for k in range(12)]
-    base = [
-        random_motion_case(rng) if motion else random_case(rng, actuators) for _ in range(60)
-    ]
+    base = [random_motion_case(rng) if motion else random_case(rng, actuators) for _ in range(60)]
     apps = [
         dataclasses.replace(
             app,
