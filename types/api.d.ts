@@ -1386,6 +1386,81 @@ export interface components {
              */
             output_bearing_type: string | null;
             /**
+             * Limit Torque T1 Nm
+             * @description T_1, limit torque T_1 of the torsional stiffness curve [Nm]
+             */
+            limit_torque_t1_nm: number | null;
+            /**
+             * Limit Torque T2 Nm
+             * @description T_2, limit torque T_2 of the torsional stiffness curve [Nm]
+             */
+            limit_torque_t2_nm: number | null;
+            /**
+             * Torsional Stiffness K1 Nm Per Rad
+             * @description K_1, torsional stiffness K_1 (0 to T_1) [Nm/rad]
+             */
+            torsional_stiffness_k1_nm_per_rad: number | null;
+            /**
+             * Torsional Stiffness K2 Nm Per Rad
+             * @description K_2, torsional stiffness K_2 (T_1 to T_2) [Nm/rad]
+             */
+            torsional_stiffness_k2_nm_per_rad: number | null;
+            /**
+             * Torsional Stiffness K3 Nm Per Rad
+             * @description K_3, torsional stiffness K_3 (above T_2) [Nm/rad]
+             */
+            torsional_stiffness_k3_nm_per_rad: number | null;
+            /**
+             * Brake Emergency Stop Count
+             * @description allowable number of emergency stops with the brake
+             */
+            brake_emergency_stop_count: number | null;
+            /**
+             * Brake Closing Time S
+             * @description closing time of the motor brake [s]
+             */
+            brake_closing_time_s: number | null;
+            /**
+             * Gear Average Torque Limit Nm
+             * @description T_A, limit for average torque of the gear [Nm]
+             */
+            gear_average_torque_limit_nm: number | null;
+            /**
+             * Gear Repeated Peak Torque Nm
+             * @description T_R, limit for repeated peak torque of the gear [Nm]
+             */
+            gear_repeated_peak_torque_nm: number | null;
+            /**
+             * Gear Momentary Peak Torque Nm
+             * @description T_M, limit for momentary peak torque of the gear [Nm]
+             */
+            gear_momentary_peak_torque_nm: number | null;
+            /**
+             * Gear Momentary Peak Count
+             * @description N_M, allowable number of momentary peak torques of the gear
+             */
+            gear_momentary_peak_count: number | null;
+            /**
+             * Gear Average Input Speed Limit Rpm
+             * @description n_in,av(max), allowable average input speed of the gear [rpm]
+             */
+            gear_average_input_speed_limit_rpm: number | null;
+            /**
+             * Gear Rated Torque Nm
+             * @description T_N, rated torque of the gear at 2000 rpm input speed [Nm]
+             */
+            gear_rated_torque_nm: number | null;
+            /**
+             * Gear Rated Life H
+             * @description L_n, nominal life of the wave generator [h]
+             */
+            gear_rated_life_h: number | null;
+            /**
+             * Gear Life Basis
+             * @description whether the gear's nominal life is an L_10 or an L_50 (`L10` or `L50`)
+             */
+            gear_life_basis: string | null;
+            /**
              * Notes
              * @description notes
              */
@@ -1742,6 +1817,23 @@ export interface components {
              * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
              */
             thermal_time_constant_s?: number | null;
+            /** @description check the strain wave gear's own limits (checks `gear_average_torque`, `gear_repeated_peak`, `gear_input_speed`, and `gear_momentary_peak`, `gear_life` where asked); omitted: not checked (their ratings are catalogue values an administrator imports; where missing the checks say no data) */
+            gear?: components["schemas"]["GearIn"] | null;
+            /**
+             * Min Natural Frequency Hz
+             * @description the least natural frequency of the load on the gear's torsional stiffness, f_n = (1/2π)·√(K_1/J_L) [Hz] (check `natural_frequency`, which also reports the torsional deflection under T_L and under T_1)
+             */
+            min_natural_frequency_hz?: number | null;
+            /**
+             * Brake Safety Factor
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             */
+            brake_safety_factor?: number;
+            /**
+             * Emergency Stops
+             * @description emergency stops expected over the life, with a brake: against the brake's allowable number (check `brake_emergency_stops`, which also reports how far a falling load turns the output while the brake closes)
+             */
+            emergency_stops?: number | null;
             /**
              * Case Id
              * @description the client's own id of the case (an order position, say), echoed as its result's `case_id`; not stored with a selection
@@ -3313,6 +3405,28 @@ export interface components {
             exclusive_minimum: boolean;
         };
         /**
+         * GearIn
+         * @description The strain wave gear's own limits are checked (issue 28, item 7): T_av, repeated
+         *     peak torque, average input speed; with a momentary peak and with a required life.
+         */
+        GearIn: {
+            /**
+             * Required Life H
+             * @description wave generator life the application needs [h] (check `gear_life`)
+             */
+            required_life_h?: number | null;
+            /**
+             * Momentary Torque Nm
+             * @description a momentary peak torque at the output, a collision or emergency stop [Nm] (check `gear_momentary_peak`); needs `momentary_count`
+             */
+            momentary_torque_nm?: number | null;
+            /**
+             * Momentary Count
+             * @description how often that peak occurs over the life
+             */
+            momentary_count?: number | null;
+        };
+        /**
          * HealthOut
          * @description The process answers and its database has answered a query.
          */
@@ -3548,6 +3662,23 @@ export interface components {
              * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
              */
             thermal_time_constant_s?: number | null;
+            /** @description check the strain wave gear's own limits (checks `gear_average_torque`, `gear_repeated_peak`, `gear_input_speed`, and `gear_momentary_peak`, `gear_life` where asked); omitted: not checked (their ratings are catalogue values an administrator imports; where missing the checks say no data) */
+            gear?: components["schemas"]["GearIn"] | null;
+            /**
+             * Min Natural Frequency Hz
+             * @description the least natural frequency of the load on the gear's torsional stiffness, f_n = (1/2π)·√(K_1/J_L) [Hz] (check `natural_frequency`, which also reports the torsional deflection under T_L and under T_1)
+             */
+            min_natural_frequency_hz?: number | null;
+            /**
+             * Brake Safety Factor
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             */
+            brake_safety_factor?: number;
+            /**
+             * Emergency Stops
+             * @description emergency stops expected over the life, with a brake: against the brake's allowable number (check `brake_emergency_stops`, which also reports how far a falling load turns the output while the brake closes)
+             */
+            emergency_stops?: number | null;
             /**
              * Model
              * @description the actuator, as the catalogue names it
@@ -5104,6 +5235,23 @@ export interface components {
              * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
              */
             thermal_time_constant_s?: number | null;
+            /** @description check the strain wave gear's own limits (checks `gear_average_torque`, `gear_repeated_peak`, `gear_input_speed`, and `gear_momentary_peak`, `gear_life` where asked); omitted: not checked (their ratings are catalogue values an administrator imports; where missing the checks say no data) */
+            gear?: components["schemas"]["GearIn"] | null;
+            /**
+             * Min Natural Frequency Hz
+             * @description the least natural frequency of the load on the gear's torsional stiffness, f_n = (1/2π)·√(K_1/J_L) [Hz] (check `natural_frequency`, which also reports the torsional deflection under T_L and under T_1)
+             */
+            min_natural_frequency_hz?: number | null;
+            /**
+             * Brake Safety Factor
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             */
+            brake_safety_factor?: number;
+            /**
+             * Emergency Stops
+             * @description emergency stops expected over the life, with a brake: against the brake's allowable number (check `brake_emergency_stops`, which also reports how far a falling load turns the output while the brake closes)
+             */
+            emergency_stops?: number | null;
         };
         /**
          * SellerOut
@@ -5698,6 +5846,36 @@ export interface operations {
                     pole_pairs?: number | null;
                     /** @description as the column output_bearing_type of actuators.csv */
                     output_bearing_type?: string | null;
+                    /** @description as the column limit_torque_t1_nm of actuators.csv; must be a finite number > 0 */
+                    limit_torque_t1_nm?: number | null;
+                    /** @description as the column limit_torque_t2_nm of actuators.csv; must be a finite number > 0 */
+                    limit_torque_t2_nm?: number | null;
+                    /** @description as the column torsional_stiffness_k1_nm_per_rad of actuators.csv; must be a finite number > 0 */
+                    torsional_stiffness_k1_nm_per_rad?: number | null;
+                    /** @description as the column torsional_stiffness_k2_nm_per_rad of actuators.csv; must be a finite number > 0 */
+                    torsional_stiffness_k2_nm_per_rad?: number | null;
+                    /** @description as the column torsional_stiffness_k3_nm_per_rad of actuators.csv; must be a finite number > 0 */
+                    torsional_stiffness_k3_nm_per_rad?: number | null;
+                    /** @description as the column brake_emergency_stop_count of actuators.csv; must be a finite number > 0 */
+                    brake_emergency_stop_count?: number | null;
+                    /** @description as the column brake_closing_time_ms of actuators.csv; must be a finite number > 0 */
+                    brake_closing_time_ms?: number | null;
+                    /** @description as the column gear_average_torque_limit_nm of actuators.csv; must be a finite number > 0 */
+                    gear_average_torque_limit_nm?: number | null;
+                    /** @description as the column gear_repeated_peak_torque_nm of actuators.csv; must be a finite number > 0 */
+                    gear_repeated_peak_torque_nm?: number | null;
+                    /** @description as the column gear_momentary_peak_torque_nm of actuators.csv; must be a finite number > 0 */
+                    gear_momentary_peak_torque_nm?: number | null;
+                    /** @description as the column gear_momentary_peak_count of actuators.csv; must be a finite number > 0 */
+                    gear_momentary_peak_count?: number | null;
+                    /** @description as the column gear_average_input_speed_limit_rpm of actuators.csv; must be a finite number > 0 */
+                    gear_average_input_speed_limit_rpm?: number | null;
+                    /** @description as the column gear_rated_torque_nm of actuators.csv; must be a finite number > 0 */
+                    gear_rated_torque_nm?: number | null;
+                    /** @description as the column gear_rated_life_h of actuators.csv; must be a finite number > 0 */
+                    gear_rated_life_h?: number | null;
+                    /** @description as the column gear_life_basis of actuators.csv */
+                    gear_life_basis?: string | null;
                     /** @description as the column notes of actuators.csv */
                     notes?: string | null;
                     /** @description as the column derivation of actuators.csv */
@@ -5990,6 +6168,36 @@ export interface operations {
                     pole_pairs?: number | null;
                     /** @description as the column output_bearing_type of actuators.csv */
                     output_bearing_type?: string | null;
+                    /** @description as the column limit_torque_t1_nm of actuators.csv; must be a finite number > 0 */
+                    limit_torque_t1_nm?: number | null;
+                    /** @description as the column limit_torque_t2_nm of actuators.csv; must be a finite number > 0 */
+                    limit_torque_t2_nm?: number | null;
+                    /** @description as the column torsional_stiffness_k1_nm_per_rad of actuators.csv; must be a finite number > 0 */
+                    torsional_stiffness_k1_nm_per_rad?: number | null;
+                    /** @description as the column torsional_stiffness_k2_nm_per_rad of actuators.csv; must be a finite number > 0 */
+                    torsional_stiffness_k2_nm_per_rad?: number | null;
+                    /** @description as the column torsional_stiffness_k3_nm_per_rad of actuators.csv; must be a finite number > 0 */
+                    torsional_stiffness_k3_nm_per_rad?: number | null;
+                    /** @description as the column brake_emergency_stop_count of actuators.csv; must be a finite number > 0 */
+                    brake_emergency_stop_count?: number | null;
+                    /** @description as the column brake_closing_time_ms of actuators.csv; must be a finite number > 0 */
+                    brake_closing_time_ms?: number | null;
+                    /** @description as the column gear_average_torque_limit_nm of actuators.csv; must be a finite number > 0 */
+                    gear_average_torque_limit_nm?: number | null;
+                    /** @description as the column gear_repeated_peak_torque_nm of actuators.csv; must be a finite number > 0 */
+                    gear_repeated_peak_torque_nm?: number | null;
+                    /** @description as the column gear_momentary_peak_torque_nm of actuators.csv; must be a finite number > 0 */
+                    gear_momentary_peak_torque_nm?: number | null;
+                    /** @description as the column gear_momentary_peak_count of actuators.csv; must be a finite number > 0 */
+                    gear_momentary_peak_count?: number | null;
+                    /** @description as the column gear_average_input_speed_limit_rpm of actuators.csv; must be a finite number > 0 */
+                    gear_average_input_speed_limit_rpm?: number | null;
+                    /** @description as the column gear_rated_torque_nm of actuators.csv; must be a finite number > 0 */
+                    gear_rated_torque_nm?: number | null;
+                    /** @description as the column gear_rated_life_h of actuators.csv; must be a finite number > 0 */
+                    gear_rated_life_h?: number | null;
+                    /** @description as the column gear_life_basis of actuators.csv */
+                    gear_life_basis?: string | null;
                     /** @description as the column notes of actuators.csv */
                     notes?: string | null;
                     /** @description as the column derivation of actuators.csv */
@@ -10627,6 +10835,21 @@ export interface operations {
                  *           "output_bearing_moment_stiffness_knm_per_rad": null,
                  *           "pole_pairs": null,
                  *           "output_bearing_type": null,
+                 *           "limit_torque_t1_nm": null,
+                 *           "limit_torque_t2_nm": null,
+                 *           "torsional_stiffness_k1_nm_per_rad": null,
+                 *           "torsional_stiffness_k2_nm_per_rad": null,
+                 *           "torsional_stiffness_k3_nm_per_rad": null,
+                 *           "brake_emergency_stop_count": null,
+                 *           "brake_closing_time_ms": null,
+                 *           "gear_average_torque_limit_nm": null,
+                 *           "gear_repeated_peak_torque_nm": null,
+                 *           "gear_momentary_peak_torque_nm": null,
+                 *           "gear_momentary_peak_count": null,
+                 *           "gear_average_input_speed_limit_rpm": null,
+                 *           "gear_rated_torque_nm": null,
+                 *           "gear_rated_life_h": null,
+                 *           "gear_life_basis": null,
                  *           "notes": "the chapter's worked example; only T_max, n_max and J_A are given there",
                  *           "derivation": null,
                  *           "source": "Harmonic Drive AG, Engineering Data for Harmonic Drive Servo Actuators, Table 516.3",
