@@ -57,11 +57,13 @@ def test_output_load_and_drive_add_their_checks(client: TestClient) -> None:
     assert response.status_code == 201
     answer = response.json()
     names = [r["name"] for r in answer["check_rules"]]
-    assert names[-6:] == [
+    assert names[-8:] == [
         "drive_voltage",
         "drive_current",
         "bearing_moment",
         "bearing_static_safety",
+        "bearing_radial_force",
+        "bearing_axial_force",
         "bearing_fretting",
         "bearing_life",
     ]

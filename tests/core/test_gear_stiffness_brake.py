@@ -17,6 +17,7 @@ import pytest
 from tests.oracle.flowchart import evaluate as oracle_evaluate
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.bearing import OutputLoad
 from actuator_selection.core.checks import RULES, Check, Status
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
@@ -208,3 +209,45 @@ def test_brake_holding_with_a_safety_factor(factor: float, status: Status) -> No
 def test_bad_request_inputs_name_their_field(field: str, value: float) -> None:
     with pytest.raises(InvalidInputError, match=field):
         Application(**(EXAMPLE | {field: value}))
+
+
+# --- output bearing forces: FHA-17C-50 (FHA-C manual §1-4-2: 2940 N radial, 9800 N axial) --
+
+FHA_17C = Actuator(
+    model="FHA-17C-50", family="FHA-C", gear_ratio=50, max_torque_nm=39, max_speed_rpm=96,
+    inertia_kgm2=0.17, output_bearing_radial_load_n=2940, output_bearing_axial_load_n=9800,
+    output_bearing_static_load_rating_n=18700,
+)  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("radial", "axial", "statuses"),
+    [
+        (2940.0, -9800.0, (Status.PASS, Status.PASS)),
+        (2941.0, 9801.0, (Status.FAIL, Status.FAIL)),
+    ],
+)
+def test_fha_c_allowable_forces(radial: float, axial: float, statuses: tuple[Status, ...]) -> None:
+    app = Application(
+        **EXAMPLE,
+        output_load=OutputLoad(
+            radial_force_n=radial, axial_force_n=axial, radial_lever_m=0.01, axial_lever_m=0.0
+        ),
+    )
+    c = checks(FHA_17C, app)
+    got = (c["bearing_radial_force"], c["bearing_axial_force"])
+    assert tuple(x.status for x in got) == statuses
+    assert [(x.value, x.limit) for x in got] == [(radial, 2940), (abs(axial), 9800)]
+
+
+def test_a_bearing_rated_by_c_0_is_not_judged_by_allowable_forces() -> None:
+    cha = dataclasses.replace(CHA, output_bearing_static_load_rating_n=34000)
+    app = Application(
+        **EXAMPLE,
+        output_load=OutputLoad(
+            radial_force_n=5000, axial_force_n=0, radial_lever_m=0.01, axial_lever_m=0.0
+        ),
+    )
+    c = checks(cha, app)["bearing_radial_force"]
+    assert (c.status, c.value, c.limit) == (Status.PASS, 0.0, 0.0)
+    assert "load ratings C and C_0" in c.message

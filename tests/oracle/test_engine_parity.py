@@ -20,6 +20,7 @@ from tests.oracle.flowchart import evaluate, select
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
+from actuator_selection.core.bearing import OutputLoad
 from actuator_selection.core.check_messages import jsonable_params, renderer
 from actuator_selection.core.checks import RULES, Requirement, Rule, published
 from actuator_selection.core.cycle import Load, SpeedPattern
@@ -687,6 +688,14 @@ def with_gear_stiffness_brake(rng: random.Random, actuator: Actuator) -> Actuato
         gear_rated_torque_nm=maybe(5, 300),
         gear_rated_life_h=rng.choice([None, 7000.0, 10000.0]),
         gear_life_basis=rng.choice([None, "L10", "L50"]),
+        output_bearing_pitch_diameter_m=maybe(0.03, 0.2),
+        output_bearing_offset_m=maybe(0.0, 0.03),
+        output_bearing_dynamic_load_rating_n=maybe(5e3, 1e5),
+        output_bearing_static_load_rating_n=maybe(5e3, 1e5),
+        output_bearing_radial_load_n=maybe(1e3, 2e4),
+        output_bearing_axial_load_n=maybe(1e3, 4e4),
+        output_bearing_moment_load_nm=maybe(50, 1000),
+        output_bearing_type=rng.choice([None, "cross_roller", "four_point_contact_ball"]),
     )
 
 
@@ -709,12 +718,26 @@ def test_gear_stiffness_and_brake_checks_match_the_scalar_flowchart(motion: bool
             min_natural_frequency_hz=15.0,
             brake_safety_factor=1.5,
             emergency_stops=150.0,
+            output_load=OutputLoad(
+                radial_force_n=rng.uniform(0, 1.5e4),
+                axial_force_n=rng.uniform(-3e4, 3e4),
+                radial_lever_m=rng.uniform(0, 0.1),
+                axial_lever_m=rng.uniform(0, 0.05),
+                required_life_h=20000.0,
+            ),
         )
         for app in base
     ]
     rules = apps[0].rules
     names = [r.name for r in rules]
-    for name in ("gear_average_torque", "gear_life", "natural_frequency", "brake_emergency_stops"):
+    for name in (
+        "gear_average_torque",
+        "gear_life",
+        "natural_frequency",
+        "brake_emergency_stops",
+        "bearing_radial_force",
+        "bearing_axial_force",
+    ):
         assert name in names
     assert_matches_scalar(actuators, apps, rules=rules)
     assert_selects_like_scalar(actuators, apps, top=3, rules=rules)

@@ -62,9 +62,11 @@ from actuator_selection.core.checks.rule import (
     utilisation,
 )
 from actuator_selection.core.checks.rules.bearing import (
+    BEARING_AXIAL_FORCE,
     BEARING_FRETTING,
     BEARING_LIFE,
     BEARING_MOMENT,
+    BEARING_RADIAL_FORCE,
     BEARING_STATIC,
 )
 from actuator_selection.core.checks.rules.brake import BRAKE_EMERGENCY_STOPS, BRAKE_HOLDING
@@ -96,9 +98,11 @@ from actuator_selection.core.checks.rules.thermal import (
 )
 
 __all__ = [
+    "BEARING_AXIAL_FORCE",
     "BEARING_FRETTING",
     "BEARING_LIFE",
     "BEARING_MOMENT",
+    "BEARING_RADIAL_FORCE",
     "BEARING_RULES",
     "BEARING_STATIC",
     "BRAKE_EMERGENCY_STOPS",
@@ -142,7 +146,13 @@ __all__ = [
     "utilisation",
 ]
 
-BEARING_RULES: tuple[Rule, ...] = (BEARING_MOMENT, BEARING_STATIC, BEARING_FRETTING)
+BEARING_RULES: tuple[Rule, ...] = (
+    BEARING_MOMENT,
+    BEARING_STATIC,
+    BEARING_RADIAL_FORCE,
+    BEARING_AXIAL_FORCE,
+    BEARING_FRETTING,
+)
 """The output bearing's checks where an output load is given (``Application.output_load``);
 :data:`BEARING_LIFE` joins them where a required life is given."""
 

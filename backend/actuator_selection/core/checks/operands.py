@@ -196,3 +196,7 @@ class Operands(NamedTuple):
     """L_n [h]; NaN where not published."""
     gear_life_basis: Real
     """10 where L_n is an L_10, 50 where an L_50; NaN where not published."""
+    bearing_radial_load_n: Real
+    """Allowable radial load on the output bearing [N] (FHA-C); NaN where not published."""
+    bearing_axial_load_n: Real
+    """Allowable axial load on the output bearing [N] (FHA-C); NaN where not published."""

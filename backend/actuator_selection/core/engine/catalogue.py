@@ -65,6 +65,8 @@ DERIVED_OPERANDS: Final[dict[str, Callable[[Actuator], float | None]]] = {
     "gear_rated_torque_nm": lambda a: a.gear_rated_torque_nm,
     "gear_rated_life_h": lambda a: a.gear_rated_life_h,
     "gear_life_basis": lambda a: life_basis(a.gear_life_basis),
+    "bearing_radial_load_n": lambda a: a.output_bearing_radial_load_n,
+    "bearing_axial_load_n": lambda a: a.output_bearing_axial_load_n,
 }
 """The catalogue operands (fields of :class:`~actuator_selection.core.checks.Operands`)
 that are worked out from an actuator rather than read as published: None where the

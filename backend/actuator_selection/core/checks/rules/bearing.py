@@ -16,6 +16,7 @@ from actuator_selection.core.checks.rule import (
     Requirement,
     Rule,
     Status,
+    Truth,
     larger,
     outcome,
     published,
@@ -67,6 +68,26 @@ WORDS: Final = {
         "warns of fretting of the output bearing under such oscillating motion (the rolling "
         "elements rock on a short track and the lubricant is not renewed); move it through a "
         "larger angle now and then, or ask the manufacturer"
+    ),
+    # bearing_radial_force, bearing_axial_force
+    "bearing_radial_force.pass": N_(
+        "radial force F_r = {value:.4g} N ≤ the output bearing's allowable radial load "
+        "{limit:.4g} N"
+    ),
+    "bearing_radial_force.fail": N_(
+        "radial force F_r = {value:.4g} N exceeds the output bearing's allowable radial load "
+        "{limit:.4g} N"
+    ),
+    "bearing_axial_force.pass": N_(
+        "axial force F_a = {value:.4g} N ≤ the output bearing's allowable axial load {limit:.4g} N"
+    ),
+    "bearing_axial_force.fail": N_(
+        "axial force F_a = {value:.4g} N exceeds the output bearing's allowable axial load "
+        "{limit:.4g} N"
+    ),
+    "bearing_force.by_ratings": N_(
+        "the catalogue rates this output bearing by its load ratings C and C_0 (checks "
+        "bearing_static_safety and bearing_life), not by allowable forces"
     ),
     "bearing_life.ball": N_("four-point contact ball bearing: B = 3"),
     "bearing_life.roller": N_("cross roller bearing: B = 10/3"),
@@ -290,3 +311,52 @@ below 5°, issue 28 item 4) and never fails: the manual gives no life for it. A 
 does not move passes (value 0). The swing is the range of the output's angle over the
 cycle, so one small move repeated in one direction warns as well: on the safe side, as
 the chapter's cycle does not say whether it returns."""
+
+
+# --- bearing_radial_force, bearing_axial_force: F ≤ the allowable load (FHA-C) ------------
+
+
+def _force_rule(name: str, force: str, allowable: str, what: str) -> Rule:
+    """F ≤ the allowable load where the catalogue publishes one (FHA-C manual §1-4-2,
+    allowable radial and axial load); where it rates the bearing by C and C_0 instead
+    (CHA), the check passes at 0 ≤ 0 and says so: the load ratings' checks judge it."""
+
+    def rated(q: Operands, xp: Ops) -> Truth:
+        return xp.not_(xp.isnan(getattr(q, allowable)))
+
+    def message(q: Operands, status: Status, value: float, limit: float) -> str:
+        if math.isnan(getattr(q, allowable)):
+            return phrase("bearing_force.by_ratings")
+        return phrase(f"{name}.{outcome(status)}", value=value, limit=limit)
+
+    return Rule(
+        name=name,
+        reference="FHA-C manual §1-4-2 (allowable radial and axial load)",
+        unit="N",
+        value=lambda q, xp: xp.where(rated(q, xp), abs(getattr(q, force)), 0.0),
+        limit=lambda q, xp: xp.where(rated(q, xp), getattr(q, allowable), 0.0),
+        requires=(
+            Requirement(
+                any_of=(allowable, "bearing_static_load_rating_n"),
+                what=what,
+            ),
+        ),
+        message=message,
+    )
+
+
+BEARING_RADIAL_FORCE = _force_rule(
+    "bearing_radial_force",
+    "radial_force_n",
+    "bearing_radial_load_n",
+    N_("allowable radial load or static load rating C_0 of the output bearing"),
+)
+"""|F_r| ≤ the allowable radial load (FHA-C), issue 28 item 4."""
+
+BEARING_AXIAL_FORCE = _force_rule(
+    "bearing_axial_force",
+    "axial_force_n",
+    "bearing_axial_load_n",
+    N_("allowable axial load or static load rating C_0 of the output bearing"),
+)
+"""|F_a| ≤ the allowable axial load (FHA-C), issue 28 item 4."""
