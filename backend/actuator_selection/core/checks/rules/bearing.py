@@ -331,7 +331,7 @@ def _force_rule(name: str, force: str, allowable: str, what: str) -> Rule:
 
     return Rule(
         name=name,
-        reference="FHA-C manual §1-4-2 (allowable radial and axial load)",
+        reference="FHA-C manual §1-4-2",
         unit="N",
         value=lambda q, xp: xp.where(rated(q, xp), abs(getattr(q, force)), 0.0),
         limit=lambda q, xp: xp.where(rated(q, xp), getattr(q, allowable), 0.0),

@@ -113,7 +113,7 @@ def _emergency_message(q: Operands, status: Status, value: float, limit: float) 
 
 BRAKE_EMERGENCY_STOPS = Rule(
     name="brake_emergency_stops",
-    reference="CHA 1018854 12/2015 Tables 36.3, 38.3, 40.3 (emergency brake cycles)",
+    reference="CHA 1018854 12/2015 Table 36.3, Table 38.3, Table 40.3",
     unit="",
     value=lambda q, xp: q.emergency_stops,
     limit=lambda q, xp: q.brake_emergency_stop_count,

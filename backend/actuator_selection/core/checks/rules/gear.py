@@ -141,7 +141,7 @@ def _simple(name: str):  # type: ignore[no-untyped-def]
 
 GEAR_AVERAGE_TORQUE = Rule(
     name="gear_average_torque",
-    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18 (T_av)",
+    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="Nm",
     value=average_torque_nm,
     limit=lambda q, xp: q.gear_average_torque_limit_nm,
@@ -155,7 +155,7 @@ GEAR_AVERAGE_TORQUE = Rule(
 
 GEAR_REPEATED_PEAK = Rule(
     name="gear_repeated_peak",
-    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18 (repeated peak torque)",
+    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="Nm",
     value=lambda q, xp: larger(abs(q.accel_torque_nm), abs(q.decel_torque_nm), xp),
     limit=lambda q, xp: q.gear_repeated_peak_torque_nm,
@@ -180,7 +180,7 @@ def _momentary_message(q: Operands, status: Status, value: float, limit: float) 
 
 GEAR_MOMENTARY_PEAK = Rule(
     name="gear_momentary_peak",
-    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18 (momentary peak torque)",
+    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="Nm",
     value=lambda q, xp: q.momentary_torque_nm,
     limit=lambda q, xp: q.gear_momentary_peak_torque_nm,
@@ -199,7 +199,7 @@ GEAR_MOMENTARY_PEAK = Rule(
 
 GEAR_INPUT_SPEED = Rule(
     name="gear_input_speed",
-    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18 (average input speed)",
+    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="rpm",
     value=input_speed_rpm,
     limit=lambda q, xp: q.gear_average_input_speed_limit_rpm,
@@ -226,7 +226,7 @@ def _life_message(q: Operands, status: Status, value: float, limit: float) -> st
 
 GEAR_LIFE = Rule(
     name="gear_life",
-    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18; L_n: Table 20.1",
+    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18; Table 20.1",
     unit="h",
     value=needed_rated_life_h,
     limit=lambda q, xp: q.gear_rated_life_h,
