@@ -21,8 +21,13 @@ from actuator_selection.core.check_messages import CHECK_MESSAGES, Phrase
 from actuator_selection.core.checks import (
     BEARING_LIFE,
     BEARING_RULES,
+    BRAKE_EMERGENCY_STOPS,
     BRAKE_HOLDING,
     DRIVE_RULES,
+    GEAR_LIFE,
+    GEAR_MOMENTARY_PEAK,
+    GEAR_RULES,
+    NATURAL_FREQUENCY,
     RULES,
     Operands,
     Rule,
@@ -250,6 +255,29 @@ def _base_operands(**changes: Any) -> Operands:
         bearing_dynamic_tilting_moment_nm=300.0,
         zone_max_speed_rpm=60.0,
         zone_torque_nm=40.0,
+        # issue 28, items 4, 7–9 (TEST VALUES for the gear ratings: none is published)
+        gear_required_life_h=20000.0,
+        momentary_torque_nm=150.0,
+        momentary_count=10.0,
+        min_natural_frequency_hz=10.0,
+        emergency_stops=100.0,
+        limit_torque_t1_nm=2.0,
+        limit_torque_t2_nm=6.9,
+        stiffness_k1_nm_per_rad=25000.0,
+        stiffness_k2_nm_per_rad=34000.0,
+        stiffness_k3_nm_per_rad=44000.0,
+        brake_emergency_stop_count=200.0,
+        brake_closing_time_s=0.07,
+        gear_average_torque_limit_nm=80.0,
+        gear_repeated_peak_torque_nm=120.0,
+        gear_momentary_peak_torque_nm=200.0,
+        gear_momentary_peak_count=1000.0,
+        gear_average_input_speed_limit_rpm=3000.0,
+        gear_rated_torque_nm=50.0,
+        gear_rated_life_h=10000.0,
+        gear_life_basis=50.0,
+        bearing_radial_load_n=4900.0,
+        bearing_axial_load_n=14700.0,
     )._replace(**changes)
 
 
@@ -259,6 +287,11 @@ ALL_RULES: tuple[Rule, ...] = (
     *DRIVE_RULES,
     *BEARING_RULES,
     BEARING_LIFE,
+    BRAKE_EMERGENCY_STOPS,
+    *GEAR_RULES,
+    GEAR_MOMENTARY_PEAK,
+    GEAR_LIFE,
+    NATURAL_FREQUENCY,
 )
 
 VARIANTS: tuple[dict[str, Any], ...] = (
@@ -276,6 +309,10 @@ VARIANTS: tuple[dict[str, Any], ...] = (
     {"bearing_life_exponent": 10.0 / 3.0},
     {"swing_deg": 0.0},
     {"swing_deg": 2.0},
+    {"brake_safety_factor": 2.0},
+    {"brake_closing_time_s": math.nan},
+    {"stiffness_k2_nm_per_rad": math.nan},
+    {"bearing_radial_load_n": math.nan, "bearing_axial_load_n": math.nan},
 )
 """Operands that lead each rule to each of its messages."""
 

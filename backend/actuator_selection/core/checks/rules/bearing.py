@@ -86,8 +86,8 @@ WORDS: Final = {
         "{limit:.4g} N"
     ),
     "bearing_force.by_ratings": N_(
-        "the catalogue rates this output bearing by its load ratings C and C_0 (checks "
-        "bearing_static_safety and bearing_life), not by allowable forces"
+        "the catalogue rates this output bearing by its load ratings C and C_0 (static "
+        "safety, L_10 life), not by allowable forces"
     ),
     "bearing_life.ball": N_("four-point contact ball bearing: B = 3"),
     "bearing_life.roller": N_("cross roller bearing: B = 10/3"),
