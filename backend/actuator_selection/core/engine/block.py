@@ -27,6 +27,7 @@ import numpy as np
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.checks import RULES, Operands, Ops, Rule
+from actuator_selection.core.checks.rules.gear import AVERAGE_TORQUE_RULES
 from actuator_selection.core.engine.arrays import (
     FAIL,
     NO_DATA,
@@ -398,7 +399,9 @@ def evaluate_block(
     accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
     decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
     constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
-    cube, weight = np.zeros(shape), np.zeros(cases.size)  # the gear's T_av (rules.gear)
+    # The gear's T_av (rules.gear), summed only where a rule reads it.
+    averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
+    cube, weight = np.zeros(shape), np.zeros(cases.size)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
         for k in range(p.duration.shape[1]):
             torques, square = _piece_torques(cat, p, k)
@@ -417,13 +420,13 @@ def evaluate_block(
             # Which extremes the piece can change (a piece brakes, or not, in every case
             # of a trapezoid): an update where no case takes part changes nothing.
             brakes, drives, runs = braking.any(), not braking.all(), steady.any()
-            # Σ|n|·t·|T|³: the piece at its mean |n| (a ramp at n/2), |T| its larger end.
-            w = (np.abs(p.start_rpm[:, k]) + np.abs(p.end_rpm[:, k])) / 2.0 * p.duration[:, k]
-            largest = np.abs(torques[0])
-            if len(torques) > 1:
-                largest = np.maximum(largest, np.abs(torques[1]))
-            cube = cube + w[:, col] * (largest * largest * largest)
-            weight = weight + w
+            if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
+                w = (np.abs(p.start_rpm[:, k]) + np.abs(p.end_rpm[:, k])) / 2.0 * p.duration[:, k]
+                largest = np.abs(torques[0])
+                if len(torques) > 1:
+                    largest = np.maximum(largest, np.abs(torques[1]))
+                cube = cube + w[:, col] * (largest * largest * largest)
+                weight = weight + w
             for torque in torques:
                 magnitude = np.abs(torque)
                 if brakes:

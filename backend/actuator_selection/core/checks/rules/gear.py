@@ -241,6 +241,9 @@ GEAR_LIFE = Rule(
 """L = L_n·(T_N/T_av)³·(n_N/n_in,av) ≥ L_req, checked as the L_n the required life needs
 ≤ the gear's L_n [h]; L is of L_n's basis (L_10 or L_50), which the message names."""
 
+AVERAGE_TORQUE_RULES: Final = frozenset({"gear_average_torque", "gear_life"})
+"""The checks that read T_av: the engine sums Σ|n_i|·t_i·|T_i|³ only for a rule set with one."""
+
 GEAR_RULES: tuple[Rule, ...] = (GEAR_AVERAGE_TORQUE, GEAR_REPEATED_PEAK, GEAR_INPUT_SPEED)
 """The gear's checks when asked; :data:`GEAR_MOMENTARY_PEAK` joins them with a momentary
 peak, :data:`GEAR_LIFE` with a required life."""
