@@ -1542,6 +1542,23 @@ export interface components {
              * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
              */
             thermal_time_constant_s?: number | null;
+            /** @description check the strain wave gear's own limits (checks `gear_average_torque`, `gear_repeated_peak`, `gear_input_speed`, and `gear_momentary_peak`, `gear_life` where asked); omitted: not checked (their ratings are catalogue values an administrator imports; where missing the checks say no data) */
+            gear?: components["schemas"]["GearIn"] | null;
+            /**
+             * Min Natural Frequency Hz
+             * @description the least natural frequency of the load on the gear's torsional stiffness, f_n = (1/2π)·√(K_1/J_L) [Hz] (check `natural_frequency`, which also reports the torsional deflection under T_L and under T_1)
+             */
+            min_natural_frequency_hz?: number | null;
+            /**
+             * Brake Safety Factor
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             */
+            brake_safety_factor?: number;
+            /**
+             * Emergency Stops
+             * @description emergency stops expected over the life, with a brake: against the brake's allowable number (check `brake_emergency_stops`, which also reports how far a falling load turns the output while the brake closes)
+             */
+            emergency_stops?: number | null;
             /**
              * Name
              * @description the axis's name, e.g. Z; omitted: ""
@@ -4883,6 +4900,23 @@ export interface components {
              * @description the winding's thermal time constant τ_th [s] where the catalogue gives none (check `thermal_peak`); omitted: 600 s, assumed, and the check says approximate
              */
             thermal_time_constant_s?: number | null;
+            /** @description check the strain wave gear's own limits (checks `gear_average_torque`, `gear_repeated_peak`, `gear_input_speed`, and `gear_momentary_peak`, `gear_life` where asked); omitted: not checked (their ratings are catalogue values an administrator imports; where missing the checks say no data) */
+            gear?: components["schemas"]["GearIn"] | null;
+            /**
+             * Min Natural Frequency Hz
+             * @description the least natural frequency of the load on the gear's torsional stiffness, f_n = (1/2π)·√(K_1/J_L) [Hz] (check `natural_frequency`, which also reports the torsional deflection under T_L and under T_1)
+             */
+            min_natural_frequency_hz?: number | null;
+            /**
+             * Brake Safety Factor
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             */
+            brake_safety_factor?: number;
+            /**
+             * Emergency Stops
+             * @description emergency stops expected over the life, with a brake: against the brake's allowable number (check `brake_emergency_stops`, which also reports how far a falling load turns the output while the brake closes)
+             */
+            emergency_stops?: number | null;
             ratio_study: components["schemas"]["RatioStudyIn"];
         };
         /**

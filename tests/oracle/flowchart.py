@@ -190,7 +190,7 @@ def _gear_stiffness_brake(
         _value(a.gear_average_input_speed_limit_rpm),
         _value(a.gear_rated_torque_nm),
         _value(a.gear_rated_life_h),
-        nan if a.gear_life_basis is None else basis[a.gear_life_basis],
+        nan if (life := a.text("gear_life_basis")) is None else basis[life],
         _value(a.output_bearing_radial_load_n),
         _value(a.output_bearing_axial_load_n),
     )

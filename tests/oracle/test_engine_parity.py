@@ -662,6 +662,8 @@ def test_case_verdicts_are_the_candidates_verdicts(seed: int) -> None:
         expected = [c.verdict for c in candidates]
         assert case_verdicts(actuator, apps) == expected
         assert expected == [evaluate(actuator, app).verdict for app in apps]
+
+
 def with_gear_stiffness_brake(rng: random.Random, actuator: Actuator) -> Actuator:
     """TEST VALUES, MADE UP (not catalogue data): gear ratings, stiffness and brake limits,
     some missing, so that pass, fail and no data all occur."""

@@ -430,6 +430,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         csv="output_bearing_radial_load_kn",
         scale=KILO,
         engine=True,
+        operand="bearing_radial_load_n",
     ),
     CatalogueField(
         name="output_bearing_axial_load_n",
@@ -438,6 +439,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         csv="output_bearing_axial_load_kn",
         scale=KILO,
         engine=True,
+        operand="bearing_axial_load_n",
     ),
     CatalogueField(
         name="output_bearing_moment_load_nm",
@@ -480,6 +482,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_1",
         unit="Nm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -488,6 +491,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_2",
         unit="Nm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -496,6 +500,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="K_1",
         unit="Nm/rad",
         engine=True,
+        operand="stiffness_k1_nm_per_rad",
         optional=True,
     ),
     CatalogueField(
@@ -504,6 +509,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="K_2",
         unit="Nm/rad",
         engine=True,
+        operand="stiffness_k2_nm_per_rad",
         optional=True,
     ),
     CatalogueField(
@@ -512,12 +518,14 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="K_3",
         unit="Nm/rad",
         engine=True,
+        operand="stiffness_k3_nm_per_rad",
         optional=True,
     ),
     CatalogueField(
         name="brake_emergency_stop_count",
         label=N_("allowable number of emergency stops with the brake"),
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -527,6 +535,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         csv="brake_closing_time_ms",
         scale=MILLI,
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -535,6 +544,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_A",
         unit="Nm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -543,6 +553,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_R",
         unit="Nm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -551,6 +562,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_M",
         unit="Nm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -558,6 +570,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         label=N_("allowable number of momentary peak torques of the gear"),
         symbol="N_M",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -566,6 +579,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="n_in,av(max)",
         unit="rpm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -574,6 +588,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="T_N",
         unit="Nm",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(
@@ -582,6 +597,7 @@ ACTUATOR_FIELDS: Final[tuple[CatalogueField, ...]] = (
         symbol="L_n",
         unit="h",
         engine=True,
+        operand=True,
         optional=True,
     ),
     CatalogueField(

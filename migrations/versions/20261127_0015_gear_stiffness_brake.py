@@ -5,8 +5,8 @@ allowable emergency stops and closing time (CHA technical data brake), the strai
 gear's ratings (limit for average, repeated and momentary peak torque, the count of
 momentary peaks, allowable average input speed, T_N, L_n) and the text L_n basis.
 
-Revision ID: 0013g
-Revises: 0012
+Revision ID: 0015
+Revises: 0014
 Create Date: 2026-11-27
 """
 
@@ -17,8 +17,8 @@ from collections.abc import Sequence
 import sqlalchemy as sa
 from alembic import op
 
-revision: str = "0013g"
-down_revision: str | None = "0012"
+revision: str = "0015"
+down_revision: str | None = "0014"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 
