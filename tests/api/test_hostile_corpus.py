@@ -31,7 +31,9 @@ from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 from tests.api.test_admin import NEW, ZONE, admin, export_zip, import_, unchanged, version, zipped
 
-from actuator_selection.api.uploads import MAX_UPLOAD_BYTES
+from actuator_selection.api.uploads import MAX_LINE_CHARS
+from actuator_selection.core.catalogue_files import FAMILIES
+from actuator_selection.core.csvio import MAX_ROWS
 from actuator_selection.schemas.mechanisms import MechanismIn, TransmissionIn
 from actuator_selection.schemas.quantities import MAX_QUANTITY_TEXT, InUnit
 
@@ -393,12 +395,25 @@ def test_truncated_archives_and_a_zip_bomb_are_refused(api: SalesApi) -> None:
     archive = zipped(export_zip(api))
     for cut in (22, len(archive) // 3, len(archive) // 2, len(archive) - 30):
         house_shape(import_(api, archive[:cut], "application/zip"))
+    # A member is read row by row as it unpacks: a bomb of one endless line stops at the
+    # longest line a row may take (422), a bomb of short rows at the rows a file may hold
+    # (413).
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w", compression=zipfile.ZIP_DEFLATED) as bomb:
-        bomb.writestr("families.csv", b"\0" * (MAX_UPLOAD_BYTES + 1))
+        bomb.writestr("families.csv", b"\0" * (64 << 20))
+    assert len(buffer.getvalue()) < 100_000
+    response = import_(api, buffer.getvalue(), "application/zip")
+    assert response.status_code == 422
+    assert f"line longer than {MAX_LINE_CHARS} characters" in house_shape(response)[0]["msg"]
+    buffer = io.BytesIO()
+    header = ",".join(c.name for c in FAMILIES.columns).encode()
+    with zipfile.ZipFile(buffer, "w", compression=zipfile.ZIP_DEFLATED) as bomb:
+        bomb.writestr("families.csv", header + b"\nX,,,,,,,,,s" * (MAX_ROWS + 1))
     assert len(buffer.getvalue()) < 100_000
     error = only_error(import_(api, buffer.getvalue(), "application/zip"), 413)
-    assert "too large unpacked" in error["msg"]
+    assert error["type"] == "too_many_rows"
+    assert error["loc"] == ["body", "families.csv", MAX_ROWS + 2]
+    assert f"holds more than {MAX_ROWS} rows" in error["msg"]
     assert version(api) == before
 
 

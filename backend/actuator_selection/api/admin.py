@@ -32,10 +32,11 @@ from fastapi import APIRouter, Body, Depends, Path, Query, Response
 from actuator_selection.api.auth import AdminDep
 from actuator_selection.api.deps import SessionDep
 from actuator_selection.api.uploads import (
-    Upload,
+    SpooledUpload,
     file_errors,
-    raw_upload,
+    spooled_upload,
     text_of,
+    too_many_rows,
     unsupported,
     unzip_csv,
 )
@@ -45,7 +46,12 @@ from actuator_selection.core.catalogue_files import (
     CONTROLLERS,
     INTERFACES,
 )
-from actuator_selection.core.csvio import WHOLE_NUMBER_MAX, CatalogueFileError, Problem
+from actuator_selection.core.csvio import (
+    WHOLE_NUMBER_MAX,
+    CatalogueFileError,
+    Problem,
+    TooManyRowsError,
+)
 from actuator_selection.db.seed import CatalogueFiles, catalogue_from_json, parse_catalogue
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, write_json_schema
@@ -229,17 +235,20 @@ def export_catalogue(
     return Response(export.body, media_type=export.media_type, headers=headers)
 
 
-def catalogue_upload(upload: Annotated[Upload, Depends(raw_upload)]) -> CatalogueFiles:
-    """The request body as the seed files: a ZIP of CSV files or their JSON form (415
-    otherwise, 422 naming file, line and column of every problem)."""
+def catalogue_upload(
+    upload: Annotated[SpooledUpload, Depends(spooled_upload)],
+) -> CatalogueFiles:
+    """The request body as the seed files: a ZIP of CSV files, each parsed row by row as it
+    unpacks, or their JSON form (415 otherwise, 422 naming file, line and column of every
+    problem, 413 naming the file and line past the rows a file may hold)."""
     try:
         if upload.media_type == "application/zip":
-            return parse_catalogue(
-                unzip_csv(upload.body, wanted=tuple(s.file for s in CATALOGUE_SPECS))
-            )
+            with unzip_csv(upload.file, wanted=tuple(s.file for s in CATALOGUE_SPECS)) as files:
+                return parse_catalogue(files)
         if upload.media_type == "application/json":
+            body = upload.file.read()
             try:
-                document = json.loads(text_of(upload.body, file="(body)"))
+                document = json.loads(text_of(body, file="(body)"))
             # RecursionError: arrays or objects nested thousands deep (the catalogue's
             # own depth is three); ValueError: not JSON, or an integer of over 4300 digits.
             except (ValueError, RecursionError) as exc:
@@ -253,6 +262,8 @@ def catalogue_upload(upload: Annotated[Upload, Depends(raw_upload)]) -> Catalogu
                 )
                 raise CatalogueFileError([problem])
             return catalogue_from_json(document)
+    except TooManyRowsError as exc:
+        raise too_many_rows(exc) from None
     except CatalogueFileError as exc:
         raise file_errors(exc) from None
     raise unsupported(upload.media_type, ("application/zip", "application/json"))

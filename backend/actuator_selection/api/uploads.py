@@ -11,10 +11,14 @@ from __future__ import annotations
 
 import io
 import lzma
+import tempfile
 import zipfile
 import zlib
+from collections.abc import AsyncIterator, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import PurePosixPath
+from typing import IO
 
 from fastapi import Request
 
@@ -24,7 +28,13 @@ from actuator_selection.api.errors import (
     UnsupportedMediaTypeError,
 )
 from actuator_selection.api.media_types import unsupported_media_type
-from actuator_selection.core.csvio import CatalogueFileError, Problem
+from actuator_selection.core.catalogue_files import CATALOGUE_SPECS
+from actuator_selection.core.csvio import (
+    MAX_CELL_CHARS,
+    CatalogueFileError,
+    Problem,
+    TooManyRowsError,
+)
 from actuator_selection.services.errors import problem_entry
 
 MAX_UPLOAD_BYTES = 20 * 1024 * 1024
@@ -64,6 +74,11 @@ def unsupported(media_type: str, accepted: tuple[str, ...]) -> UnsupportedMediaT
     return unsupported_media_type(media_type, accepted)
 
 
+def too_many_rows(exc: TooManyRowsError) -> PayloadTooLargeError:
+    """The 413 for a file beyond the rows an import may hold, naming file and line."""
+    return PayloadTooLargeError([{**problem_entry(exc.problem), "type": "too_many_rows"}])
+
+
 def file_errors(exc: CatalogueFileError) -> RequestFieldError:
     """The 422 for every problem of a file (raise it)."""
     return RequestFieldError([problem_entry(p) for p in exc.problems])
@@ -78,36 +93,110 @@ def text_of(body: bytes, *, file: str) -> str:
         raise file_errors(CatalogueFileError([problem])) from None
 
 
-def unzip_csv(body: bytes, *, wanted: tuple[str, ...]) -> dict[str, str | None]:
-    """The ``wanted`` CSV files of a ZIP archive as text, by file name (None: not in it).
+SPOOL_IN_MEMORY_BYTES = 1 << 20
+"""A spooled upload stays in memory up to this size, then moves to a temporary file."""
+MAX_UNPACKED_BYTES = 1 << 30
+"""Most bytes a ZIP member may unpack to: a bound for the disk and the clock only (a
+catalogue of 64,000 actuators unpacks to about 20–90 MB); the rules an import states are
+rows per file (:data:`~actuator_selection.core.csvio.MAX_ROWS`) and characters per cell."""
+
+
+async def spooled_upload(request: Request) -> AsyncIterator[SpooledUpload]:
+    """The request body in a temporary file (memory up to ``SPOOL_IN_MEMORY_BYTES``), read
+    chunk by chunk as it arrives; closed (deleted) when the request ends.
+
+    The body's size is bounded where it is received: the route's body limit
+    (``MAX_BULK_BODY_BYTES``) and the admission's ``BODY_TIMEOUT_S``.
+    """
+    media_type = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    with tempfile.SpooledTemporaryFile(max_size=SPOOL_IN_MEMORY_BYTES) as file:
+        async for chunk in request.stream():
+            file.write(chunk)
+        file.seek(0)
+        yield SpooledUpload(media_type=media_type, file=file)
+
+
+@dataclass(frozen=True, slots=True)
+class SpooledUpload:
+    """A request body in a (spooled) temporary file, and its media type."""
+
+    media_type: str
+    file: IO[bytes]
+
+
+MAX_LINE_CHARS = max(len(spec.columns) for spec in CATALOGUE_SPECS) * (MAX_CELL_CHARS + 3)
+"""The longest line a member may hold: every cell of the widest file at its limit, quoted
+and separated, so that no valid row is refused and no line is held whole beyond it."""
+
+
+class _MemberLines:
+    """The lines of a ZIP member as they unpack (UTF-8, a byte-order mark dropped), each
+    way the member fails to unpack a :class:`CatalogueFileError` naming the file and line,
+    no line beyond ``MAX_LINE_CHARS`` held, and at most ``MAX_UNPACKED_BYTES`` unpacked
+    (413 beyond)."""
+
+    def __init__(self, name: str, member: IO[bytes]) -> None:
+        self._name = name
+        self._member = member
+        self._text = io.TextIOWrapper(member, encoding="utf-8-sig", newline="")
+        self._unpacked = 0
+        self._lines = 0
+
+    def __iter__(self) -> Iterator[str]:
+        return self
+
+    def __next__(self) -> str:
+        try:
+            line = self._text.readline(MAX_LINE_CHARS)
+        except _UNPACK_ERRORS as exc:
+            problem = Problem(file=self._name, line=self._lines, column=None, message=_damaged(exc))
+            raise CatalogueFileError([problem]) from None
+        if not line:
+            self._text.close()
+            raise StopIteration
+        self._lines += 1
+        if len(line) == MAX_LINE_CHARS and not line.endswith(("\n", "\r")):
+            message = f"has a line longer than {MAX_LINE_CHARS} characters"
+            problem = Problem(file=self._name, line=self._lines, column=None, message=message)
+            raise CatalogueFileError([problem])
+        self._unpacked += len(line)
+        if self._unpacked > MAX_UNPACKED_BYTES:
+            raise _too_large(f"{self._name} is too large unpacked")
+        return line
+
+
+@contextmanager
+def unzip_csv(
+    file: IO[bytes], *, wanted: tuple[str, ...]
+) -> Iterator[dict[str, Iterable[str] | None]]:
+    """The ``wanted`` CSV files of a ZIP archive as streams of their lines, by file name
+    (None: not in it), read as they are consumed while the archive is open (a context).
 
     Files may sit at the archive's root or in one folder; other CSV files are
     returned too (so that the caller can name them as unknown).
     """
     try:
-        archive = zipfile.ZipFile(io.BytesIO(body))
+        archive = zipfile.ZipFile(file)
     except (zipfile.BadZipFile, EOFError, OSError, ValueError):  # a damaged directory too
         problem = Problem(file="(upload)", line=0, column=None, message="is not a ZIP archive")
         raise file_errors(CatalogueFileError([problem])) from None
-    texts: dict[str, str | None] = dict.fromkeys(wanted)
+    members: dict[str, Iterable[str] | None] = dict.fromkeys(wanted)
     problems: list[Problem] = []
     with archive:
         for info in archive.infolist():
             path = PurePosixPath(info.filename)
             if info.is_dir() or path.suffix.lower() != ".csv" or "__MACOSX" in path.parts:
                 continue
-            if info.file_size > MAX_UPLOAD_BYTES:
+            if info.file_size > MAX_UNPACKED_BYTES:
                 raise _too_large(f"{path.name} is too large unpacked")
-            data, message = _member(archive, info)
-            if message is not None:
+            member, message = _member(archive, info)
+            if member is None:
                 problems.append(Problem(file=path.name, line=0, column=None, message=message))
                 continue
-            if len(data) > MAX_UPLOAD_BYTES:
-                raise _too_large(f"{path.name} is too large unpacked")
-            texts[path.name] = text_of(data, file=path.name)
-    if problems:
-        raise file_errors(CatalogueFileError(problems))
-    return texts
+            members[path.name] = _MemberLines(path.name, member)
+        if problems:
+            raise file_errors(CatalogueFileError(problems))
+        yield members
 
 
 _COMPRESSION = {
@@ -121,26 +210,34 @@ _ENCRYPTED = 0x1
 """General purpose bit 0 of a ZIP entry: the member is encrypted."""
 
 
-def _member(archive: zipfile.ZipFile, info: zipfile.ZipInfo) -> tuple[bytes, str | None]:
-    """A member's bytes (at most ``MAX_UPLOAD_BYTES + 1``), or why it cannot be read.
+_UNPACK_ERRORS = (zipfile.BadZipFile, zlib.error, lzma.LZMAError, EOFError, OSError, ValueError)
+"""How unpacking a member fails as it is read: a bad CRC (BadZipFile, at the member's end),
+damaged data (zlib.error, EOFError, the decompressor's error), or ValueError for an
+impossible offset."""
 
-    Each way ``zipfile`` fails on a member (an encrypted one raises RuntimeError, an
-    unknown method NotImplementedError, a bad CRC BadZipFile, damaged data zlib.error,
-    EOFError, the decompressor's error, or ValueError for an impossible offset) becomes
-    a rule the 422 states.
+
+def _damaged(exc: BaseException) -> str:
+    return f"is damaged in the archive and cannot be unpacked ({exc})"
+
+
+def _member(archive: zipfile.ZipFile, info: zipfile.ZipInfo) -> tuple[IO[bytes] | None, str]:
+    """A member opened for reading, or why it cannot be read.
+
+    Each way ``zipfile`` fails to open a member (an encrypted one raises RuntimeError, an
+    unknown method NotImplementedError, a damaged header BadZipFile, ...) becomes a rule
+    the 422 states; failures while unpacking are :class:`_MemberLines`'.
     """
     if info.flag_bits & _ENCRYPTED:
-        return b"", "is encrypted: the archive must hold the files without a password"
+        return None, "is encrypted: the archive must hold the files without a password"
     if info.compress_type not in _COMPRESSION:
-        return b"", (
+        return None, (
             f"uses compression method {info.compress_type}, which is not supported: "
             f"pack the files with {', '.join(_COMPRESSION.values())} (a plain ZIP uses deflate)"
         )
     try:
-        with archive.open(info) as member:
-            return member.read(MAX_UPLOAD_BYTES + 1), None
-    except (zipfile.BadZipFile, zlib.error, lzma.LZMAError, EOFError, OSError, ValueError) as exc:
+        return archive.open(info), ""
+    except _UNPACK_ERRORS as exc:
         # ValueError: e.g. "negative seek value" from a directory whose offsets are garbage
-        return b"", f"is damaged in the archive and cannot be unpacked ({exc})"
+        return None, _damaged(exc)
     except (RuntimeError, NotImplementedError) as exc:
-        return b"", f"cannot be unpacked ({exc})"
+        return None, f"cannot be unpacked ({exc})"

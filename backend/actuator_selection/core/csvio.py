@@ -512,16 +512,39 @@ def parse_rows(
     return records, problems
 
 
-def _records(spec: CsvSpec, text: str, problems: list[Problem]) -> Iterator[tuple[int, list[str]]]:
-    """The CSV records of ``text`` with the line each starts on; a record the ``csv``
+MAX_ROWS = 250_000
+"""The most data rows a catalogue file may hold: four times a catalogue of 64,000 actuators
+with a zone of three points each. Together with :data:`MAX_CELL_CHARS` it bounds what an
+import reads, however well the file compresses (a ZIP bomb is refused by its rows)."""
+
+
+class TooManyRowsError(ValueError):
+    """A file holds more than ``limit`` data rows: the import is refused (413), not read on."""
+
+    def __init__(self, file: str, line: int, limit: int) -> None:
+        self.problem = Problem(
+            file=file, line=line, column=None, message=f"holds more than {limit} rows"
+        )
+        super().__init__(str(self.problem))
+
+
+def _records(
+    spec: CsvSpec, text: str | Iterable[str], problems: list[Problem]
+) -> Iterator[tuple[int, list[str]]]:
+    """The CSV records of ``text`` (the whole file, or its lines as they are read from a
+    stream opened with ``newline=""``) with the line each starts on; a record the ``csv``
     module cannot read (e.g. a cell beyond its size limit) ends the file as a problem."""
     # newline="": CR, LF and CRLF all end lines, and line breaks inside quoted cells stay.
-    reader = csv.reader(io.StringIO(text, newline=""))
+    reader = csv.reader(io.StringIO(text, newline="") if isinstance(text, str) else text)
     start = 1
     while True:
         try:
             cells = next(reader)
         except StopIteration:
+            return
+        except UnicodeDecodeError as exc:  # a stream decodes as it is read
+            message = f"is not UTF-8 text ({exc.reason})"
+            problems.append(Problem(file=spec.file, line=start, column=None, message=message))
             return
         except csv.Error as exc:
             message = (
@@ -535,10 +558,15 @@ def _records(spec: CsvSpec, text: str, problems: list[Problem]) -> Iterator[tupl
         start = reader.line_num + 1
 
 
-def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
+def parse(
+    spec: CsvSpec, text: str | Iterable[str], *, max_rows: int = MAX_ROWS
+) -> tuple[list[Record], list[Problem]]:
     """Validate the CSV ``text`` against ``spec``; returns the records and every problem.
 
-    Lines are the lines of the file (a record with a quoted line break spans two);
+    ``text`` is the whole file or a stream of its lines (opened with ``newline=""``), read
+    row by row: an import never holds the file itself, only its validated rows. A file of
+    more than ``max_rows`` data rows raises :class:`TooManyRowsError` at the first row
+    beyond. Lines are the lines of the file (a record with a quoted line break spans two);
     text cells are :func:`restored` (see the module's notes on formula injection).
     """
     problems: list[Problem] = []
@@ -573,9 +601,13 @@ def parse(spec: CsvSpec, text: str) -> tuple[list[Record], list[Problem]]:
         return [], problems
     records: list[Record] = []
     seen: dict[tuple[Any, ...], int] = {}
+    rows = 0
     for line, cells in reader:
         if not any(c.strip() for c in cells):
             continue
+        rows += 1
+        if rows > max_rows:
+            raise TooManyRowsError(spec.file, line, max_rows)
         if len(cells) != len(header):
             problems.append(
                 Problem(

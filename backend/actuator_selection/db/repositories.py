@@ -26,6 +26,7 @@ from actuator_selection.db.models import (
     CatalogueStateRow,
     ProfileRow,
     SelectionRow,
+    ZonePointRow,
 )
 
 
@@ -110,6 +111,39 @@ class CatalogueRepository:
         if query.limit is not None:
             stmt = stmt.limit(query.limit)
         return [_to_record(row) for row in self._session.scalars(stmt)]
+
+    def engine_actuators(self) -> list[Actuator]:
+        """Every active actuator as the engine reads it (the fields marked ``engine``, the
+        zone), ordered by model: two plain queries, no ORM rows.
+
+        This is the catalogue snapshot's read (``services/catalogue.py``), done by each
+        process after every catalogue change: building ORM rows and full records for
+        64,000 actuators took 6.7 s, these rows take well under one.
+        """
+        columns = [
+            ActuatorFamilyRow.name if f.name == "family" else _VALUES[f.name] for f in ENGINE_FIELDS
+        ]
+        active = ActuatorRow.retired_at.is_(None)
+        zones: dict[str, list[ZonePoint]] = {}
+        points = self._session.execute(
+            select(ActuatorRow.model, ZonePointRow.speed_rpm, ZonePointRow.torque_nm)
+            .join(ZonePointRow, ZonePointRow.actuator_id == ActuatorRow.id)
+            .where(active)
+            .order_by(ActuatorRow.model, ZonePointRow.speed_rpm)
+        )
+        for model, speed, torque in points:
+            zones.setdefault(model, []).append(ZonePoint(speed_rpm=speed, torque_nm=torque))
+        names = [f.name for f in ENGINE_FIELDS]
+        rows = self._session.execute(
+            select(*columns).join(ActuatorRow.family).where(active).order_by(ActuatorRow.model)
+        )
+        out = []
+        for row in rows:
+            values = dict(zip(names, row, strict=True))
+            its = zones.get(values["model"])
+            zone = ContinuousDutyZone(points=tuple(its)) if its else None
+            out.append(Actuator(zone=zone, **values))
+        return out
 
     def actuator(self, model: str) -> ActuatorRecord | None:
         """One actuator by its model, or None."""

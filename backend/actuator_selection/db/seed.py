@@ -22,7 +22,7 @@ Two modes share one code path and one rulebook (the ``CsvSpec`` of each file,
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
@@ -165,8 +165,9 @@ def read_catalogue(directory: Path) -> CatalogueFiles:
     return _checked(rows, problems)
 
 
-def parse_catalogue(texts: Mapping[str, str | None]) -> CatalogueFiles:
-    """Validate the catalogue files given as text by file name (None: the file is missing)."""
+def parse_catalogue(texts: Mapping[str, str | Iterable[str] | None]) -> CatalogueFiles:
+    """Validate the catalogue files given as text, or streams of their lines, by file name
+    (None: the file is missing); each is read row by row (:func:`~.csvio.parse`)."""
     rows: dict[str, list[Record]] = {}
     problems: list[Problem] = []
     for spec in CATALOGUE_SPECS:

@@ -158,7 +158,7 @@ class CatalogueSnapshot:
 
         return cls(
             version=version,
-            actuators=tuple(with_bus(r.actuator) for r in CatalogueRepository(session).actuators()),
+            actuators=tuple(map(with_bus, CatalogueRepository(session).engine_actuators())),
             controllers=controllers,
             buses=buses,
             interfaces=MappingProxyType(interfaces),
