@@ -26,10 +26,10 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
-from sqlalchemy import select
-from sqlalchemy.orm import Session, selectinload
+from sqlalchemy import Table, delete, insert, select
+from sqlalchemy.orm import Session
 
 from actuator_selection.core.catalogue_files import (
     ACTUATORS,
@@ -48,7 +48,7 @@ from actuator_selection.core.csvio import (
     parse_rows,
     read,
 )
-from actuator_selection.db.changes import retire_at, sync_rows
+from actuator_selection.db.changes import batches, retire_at, sync_rows
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
 from actuator_selection.db.repositories import CatalogueVersionRepository
 from actuator_selection.db.seed_controllers import apply_protection, protection_problems
@@ -292,33 +292,41 @@ def _apply_zones(
     if replace:
         for r in files[ACTUATORS]:
             wanted.setdefault(r.values["model"], [])
-    actuators = {
-        a.model: a
-        for a in session.scalars(
-            select(ActuatorRow)
-            .options(selectinload(ActuatorRow.zone_points))
-            .where(ActuatorRow.model.in_(wanted))
-        )
-    }
-    for model, points in wanted.items():
-        actuator = actuators[model]
-        have = sorted((p.speed_rpm, p.torque_nm, p.source) for p in actuator.zone_points)
-        if have == sorted(points):
-            zon.unchanged += len(points)
+    # Plain rows and batched statements, no ORM object per actuator or point (64,000
+    # actuators import in one request).
+    points = cast(Table, ZonePointRow.__table__)
+    ids = dict(session.execute(select(ActuatorRow.model, ActuatorRow.id)).all())
+    have: dict[int, list[tuple[float, float, str]]] = {}
+    for actuator_id, speed, torque, source in session.execute(
+        select(points.c.actuator_id, points.c.speed_rpm, points.c.torque_nm, points.c.source)
+    ):
+        have.setdefault(actuator_id, []).append((speed, torque, source))
+    emptied: list[int] = []
+    inserts: list[dict[str, Any]] = []
+    for model, given in wanted.items():
+        actuator_id = ids[model]
+        old = sorted(have.get(actuator_id, []))
+        new = sorted(given)
+        if old == new:
+            zon.unchanged += len(new)
             continue
-        # Delete before insert: the unit of work would insert first and trip the
-        # (actuator, speed) unique constraint.
-        actuator.zone_points.clear()
-        session.flush()
-        actuator.zone_points.extend(
-            ZonePointRow(speed_rpm=s, torque_nm=t, source=src) for s, t, src in sorted(points)
+        if old:
+            emptied.append(actuator_id)
+        inserts.extend(
+            {"actuator_id": actuator_id, "speed_rpm": s, "torque_nm": t, "source": src}
+            for s, t, src in new
         )
-        if not points:
-            zon.retired += len(have)
-        elif have:
-            zon.updated += len(points)
+        if not new:
+            zon.retired += len(old)
+        elif old:
+            zon.updated += len(new)
         else:
-            zon.inserted += len(points)
+            zon.inserted += len(new)
+    # Delete before insert: the (actuator, speed) unique constraint.
+    for batch in batches(emptied):
+        session.execute(delete(points).where(points.c.actuator_id.in_(batch)))
+    for batch in batches(inserts):
+        session.execute(insert(points), batch)
     session.flush()
 
 
