@@ -83,33 +83,55 @@ class ProtectionRepository:
 
     def interfaces(self, models: list[str] | None = None) -> dict[str, InterfaceRecord]:
         """Matching data by actuator model (every listed model, with None where unknown)."""
+        table = ActuatorInterfaceRow
         stmt = (
-            select(ActuatorRow.model, ActuatorFamilyRow.name, ActuatorInterfaceRow)
+            select(
+                ActuatorRow.model,
+                ActuatorFamilyRow.name,
+                table.id,
+                table.dc_bus_classes,
+                table.temperature_sensors,
+                table.feedback_systems,
+                table.derivation,
+                table.source,
+            )
             .join(ActuatorFamilyRow, ActuatorRow.family_id == ActuatorFamilyRow.id)
-            .outerjoin(ActuatorInterfaceRow, ActuatorInterfaceRow.actuator_id == ActuatorRow.id)
+            .outerjoin(table, table.actuator_id == ActuatorRow.id)
         )
         if models is not None:
             stmt = stmt.where(ActuatorRow.model.in_(models))
+        # A catalogue has a handful of distinct interfaces: each is built once (64,000
+        # actuators are read after every catalogue change).
+        built: dict[tuple[str, str | None, str | None, str | None, bool], ActuatorInterface] = {}
         out: dict[str, InterfaceRecord] = {}
-        for model, family, row in self._session.execute(stmt):
-            try:
-                product = product_family(family)
-            except NotFoundError:
-                product = None
-            out[model] = InterfaceRecord(
-                interface=ActuatorInterface(
-                    family=product,
-                    bus_classes=_options(row.dc_bus_classes, BusClass) if row else None,
-                    temperature_sensors=(
-                        _options(row.temperature_sensors, TemperatureSensor) if row else None
+        for (
+            model,
+            family,
+            row_id,
+            buses,
+            sensors,
+            feedback,
+            derivation,
+            source,
+        ) in self._session.connection().execute(stmt):
+            known = row_id is not None
+            key = (family, buses, sensors, feedback, known)
+            interface = built.get(key)
+            if interface is None:
+                try:
+                    product = product_family(family)
+                except NotFoundError:
+                    product = None
+                interface = built.setdefault(
+                    key,
+                    ActuatorInterface(
+                        family=product,
+                        bus_classes=_options(buses, BusClass) if known else None,
+                        temperature_sensors=_options(sensors, TemperatureSensor) if known else None,
+                        feedback_systems=_options(feedback, FeedbackSystem) if known else None,
                     ),
-                    feedback_systems=_options(row.feedback_systems, FeedbackSystem)
-                    if row
-                    else None,
-                ),
-                derivation=row.derivation if row else None,
-                source=row.source if row else None,
-            )
+                )
+            out[model] = InterfaceRecord(interface=interface, derivation=derivation, source=source)
         return out
 
     def bus_classes(self) -> list[DcBusClass]:

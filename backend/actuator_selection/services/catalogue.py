@@ -28,7 +28,11 @@ from actuator_selection.core.drive import DriveOptions, drive_options, shared_bu
 from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.core.engine import CatalogueArrays, catalogue_arrays
 from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+from actuator_selection.db.repositories import (
+    CatalogueRepository,
+    CatalogueVersionRepository,
+    EngineRow,
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,6 +75,16 @@ class CatalogueSnapshot:
     _excluded_by_model: dict[str, int] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )
+    _rows: Mapping[str, tuple[EngineRow, Actuator]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
+    """The actuators (before the bus voltage) with their stored values, by model: what
+    the next version's read reuses."""
+    _with_bus: Mapping[str, tuple[EngineRow, ActuatorInterface | None, Actuator]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
+    """:attr:`actuators` with the stored values and interface they were built from, by
+    model, reused while the controllers and bus classes are the same."""
 
     def excluded_by_model(self) -> Mapping[str, int]:
         """:meth:`excluded` of every actuator's interface, by model, built once."""
@@ -141,28 +155,50 @@ class CatalogueSnapshot:
         return found
 
     @classmethod
-    def read(cls, session: Session, version: int) -> CatalogueSnapshot:
-        """Read the catalogue in ``session``'s transaction (pinned at ``version``)."""
+    def read(
+        cls, session: Session, version: int, held: CatalogueSnapshot | None = None
+    ) -> CatalogueSnapshot:
+        """Read the catalogue in ``session``'s transaction (pinned at ``version``).
+
+        With ``held`` (the snapshot of an earlier version) the read is incremental where it
+        costs: every row is read, but an actuator whose stored values, zone and interface
+        are unchanged is ``held``'s object again (and so is the matching, when the
+        controllers and bus classes are), so a change builds only what changed.
+        """
         repo = ProtectionRepository(session)
         buses = tuple(repo.bus_classes())
         interfaces = {model: r.interface for model, r in repo.interfaces(None).items()}
         controllers = tuple(r.controller for r in repo.controllers())
+        same = held is not None and held.controllers == controllers and held.buses == buses
         matching: dict[ActuatorInterface, CompatibilityResult] = {}
         for interface in interfaces.values():
             if interface not in matching:
-                matching[interface] = match_controllers(actuator=interface, controllers=controllers)
-
-        def with_bus(actuator: Actuator) -> Actuator:
-            its = interfaces.get(actuator.model)
-            return with_bus_voltage(actuator, its, buses, None if its is None else matching[its])
-
+                found = held._matching.get(interface) if same and held is not None else None
+                matching[interface] = found or match_controllers(
+                    actuator=interface, controllers=controllers
+                )
+        rows = CatalogueRepository(session).engine_actuators(
+            held._rows if held is not None else None
+        )
+        kept = held._with_bus if same and held is not None else {}
+        with_bus: dict[str, tuple[EngineRow, ActuatorInterface | None, Actuator]] = {}
+        for model, (key, actuator) in rows.items():
+            its = interfaces.get(model)
+            before = kept.get(model)
+            if before is not None and before[0] is key and before[1] == its:
+                with_bus[model] = before
+                continue
+            built = with_bus_voltage(actuator, its, buses, None if its is None else matching[its])
+            with_bus[model] = (key, its, built)
         return cls(
             version=version,
-            actuators=tuple(map(with_bus, CatalogueRepository(session).engine_actuators())),
+            actuators=tuple(a for _, _, a in with_bus.values()),
             controllers=controllers,
             buses=buses,
             interfaces=MappingProxyType(interfaces),
             _matching=matching,
+            _rows=rows,
+            _with_bus=with_bus,
         )
 
     def has_all(self, models: Iterable[str] | None) -> bool:
@@ -254,7 +290,7 @@ class CatalogueCache:
         held = self._held
         if held is not None and held.version == version:
             return held
-        return self._keep(CatalogueSnapshot.read(session, version))
+        return self._keep(CatalogueSnapshot.read(session, version, held))
 
     def _keep(self, fresh: CatalogueSnapshot) -> CatalogueSnapshot:
         with self._lock:
@@ -271,7 +307,7 @@ class CatalogueCache:
         version = versions.pin()
         if held is not None and held.version == version:
             return held
-        return self._keep(CatalogueSnapshot.read(session, version))
+        return self._keep(CatalogueSnapshot.read(session, version, held))
 
 
 class DriveContext:
