@@ -113,7 +113,7 @@ class ProtectionRepository:
             feedback,
             derivation,
             source,
-        ) in self._session.connection().execute(stmt):
+        ) in self._session.connection().execute(stmt).all():
             known = row_id is not None
             key = (family, buses, sensors, feedback, known)
             interface = built.get(key)

@@ -140,13 +140,13 @@ class CatalogueRepository:
             .join(ZonePointRow, ZonePointRow.actuator_id == ActuatorRow.id)
             .where(active)
             .order_by(ActuatorRow.model, ZonePointRow.speed_rpm)
-        )
+        ).all()  # fetchall: iterating a result fetches row by row, 3× slower here
         for model, speed, torque in points:
             zones.setdefault(model, []).append((speed, torque))
         names = [f.name for f in ENGINE_FIELDS]
         rows = connection.execute(
             select(*columns).join(ActuatorRow.family).where(active).order_by(ActuatorRow.model)
-        )
+        ).all()
         held = held or {}
         out: dict[str, tuple[EngineRow, Actuator]] = {}
         for row in rows:
