@@ -109,19 +109,27 @@ _QUOTE_TYPES: dict[str, Any] = {
 def upgraded(backend: str, new_database: Callable[[str], str]) -> Iterator[tuple[Engine, bytes]]:
     """A database at 0010 holding old answers of each version, today's answer (id
     ``today``) and a quote from an old answer, upgraded to head; and today's answer."""
-    url = new_database(backend)
-    config = alembic_config(url=url)
-    command.upgrade(config, "0010")
-    engine = make_engine(url)
     now = datetime(2026, 11, 20, tzinfo=UTC)
+    # Today's answer comes from a database of today's schema: the catalogue's tables at
+    # 0010 lack the columns added since, which the ORM reads.
+    today_url = new_database(backend)
+    command.upgrade(alembic_config(url=today_url), "head")
+    today_engine = make_engine(today_url)
     try:
-        with make_session_factory(engine).begin() as session:
+        with make_session_factory(today_engine).begin() as session:
             load_seed(session, SEED_DIR)
             request = SelectionRequest.model_validate(worked_example.request())
             catalogue = CatalogueCache().snapshot(session)
             today = size_selection(
                 request, request.to_core(), catalogue.actuators_of(None), catalogue, now
             )
+    finally:
+        today_engine.dispose()
+    url = new_database(backend)
+    config = alembic_config(url=url)
+    command.upgrade(config, "0010")
+    engine = make_engine(url)
+    try:
         with engine.begin() as conn:
             for version, cases in OLD.items():
                 for case in cases.values():
@@ -155,6 +163,9 @@ def upgraded(backend: str, new_database: Callable[[str], str]) -> Iterator[tuple
             quotes = table("quotes", *(column(k, _QUOTE_TYPES.get(k)) for k in quote))
             conn.execute(insert(quotes).values(**quote))
         command.upgrade(config, "head")
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+            assert CatalogueCache().snapshot(session).version == catalogue.version
         yield engine, today.answer_gzip
     finally:
         engine.dispose()

@@ -60,6 +60,10 @@ VISIBLE_TEXT_JS = """() => {
 }"""
 
 
+UUID = re.compile(r"\b[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}\b")
+"""An identifier the page shows (a selection's, a quote's): data, not words."""
+
+
 def _words(texts: list[str]) -> set[str]:
     return {w.lower() for t in texts for w in WORD.findall(re.sub(r"\{[^}]*\}", " ", t))}
 
@@ -83,6 +87,7 @@ def english_on(page: Page, *, data: tuple[str, ...] = ()) -> list[tuple[str, str
     text = str(page.evaluate(VISIBLE_TEXT_JS))
     for value in data:
         text = text.replace(value, " ")
+    text = UUID.sub(" ", text)  # an id is data: "8aad244f-add6-…" holds no word
     found = []
     for line in text.splitlines():
         for word in WORD.findall(line):
