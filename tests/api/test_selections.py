@@ -133,6 +133,34 @@ def test_stored_selection_is_sent_as_stored_compressed_or_not(client: TestClient
 
 def test_unknown_selection_is_404(client: TestClient) -> None:
     assert client.get("/api/v1/selections/does-not-exist").status_code == 404
+    assert client.get("/api/v1/selections/does-not-exist/request").status_code == 404
+
+
+def test_the_stored_request_is_the_request_as_asked(client: TestClient) -> None:
+    """GET …/request answers what was asked, the checks asked for included (the page
+    refills its form from it) and the defaults stated; as sent again, it is the same case."""
+    asked = {
+        **WORKED_EXAMPLE,
+        "brake": True,
+        "gear": {"required_life_h": 7000},
+        "min_natural_frequency_hz": 1.3,
+        "brake_safety_factor": 1.3,
+        "emergency_stops": 150,
+    }
+    created = client.post("/api/v1/selections", json=asked)
+    assert created.status_code == 201, created.text
+    stored = client.get(f"/api/v1/selections/{created.json()['id']}/request")
+    assert stored.status_code == 200, stored.text
+    request = stored.json()
+    options = {k: v for k, v in asked.items() if k not in ("load", "cycle")}
+    assert {k: request[k] for k in options} == {
+        **options,
+        "gear": {"required_life_h": 7000, "momentary_torque_nm": None, "momentary_count": None},
+    }
+    assert request == SelectionRequest.model_validate(asked).model_dump(mode="json")
+    again = client.post("/api/v1/selections", json=request).json()
+    first = created.json()
+    assert [c["checks"] for c in again["candidates"]] == [c["checks"] for c in first["candidates"]]
 
 
 def test_whole_catalogue_answer_is_its_schema_without_repetition(client: TestClient) -> None:

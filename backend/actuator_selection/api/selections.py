@@ -48,6 +48,7 @@ from actuator_selection.services.selections import (
     candidate_detail,
     segment_torques,
     stored_answer,
+    stored_request,
 )
 from actuator_selection.services.selections import (
     create_selection as store_new_selection,
@@ -187,6 +188,20 @@ def get_selection(
     if "gzip" in request.headers.get("accept-encoding", ""):
         return Response(stored, media_type="application/json", headers={"Content-Encoding": "gzip"})
     return Response(gzip.decompress(stored), media_type="application/json")
+
+
+@router.get(
+    "/selections/{selection_id}/request",
+    response_model=SelectionRequest,
+    responses={404: {"description": "unknown selection"}},
+)
+def get_selection_request(
+    selection_id: Annotated[str, Path(max_length=36)], session: SessionDep
+) -> Any:
+    """The load case of a stored selection as it was asked: the request's fields with
+    their defaults stated (what the page refills its form from, the checks asked for
+    among them)."""
+    return stored_request(session, selection_id)
 
 
 @router.get(

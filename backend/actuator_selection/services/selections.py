@@ -276,6 +276,14 @@ def stored_answer(session: Session, selection_id: str) -> bytes:
     return stored
 
 
+def stored_request(session: Session, selection_id: str) -> JSON:
+    """The stored request of a selection: its fields as it was asked, defaults stated."""
+    stored = SelectionRepository(session).request(selection_id)
+    if stored is None:
+        raise NotFoundError("selection_id", f"no selection {selection_id!r}", where="path")
+    return stored[0]
+
+
 def stored_answer_json(session: Session, selection_id: str) -> JSON | None:
     """The stored answer of a selection as JSON data, or None; an answer of an older
     shape than :data:`~.presenters.selection.ANSWER_VERSION` (its upgrade, a migration,
