@@ -23,6 +23,16 @@ export function shortCheckLabel(name, lang) {
   return text === key ? checkLabel(name, lang) : text;
 }
 
+/**
+ * A check's status in ``lang`` ("pass" → "erfüllt"); a status the page has no word for
+ * (one the API added since) as the API names it, without its underscores.
+ */
+export function statusText(status, lang) {
+  const key = `status.${status}`;
+  const text = translate(lang, key);
+  return text === key ? String(status).replaceAll("_", " ") : text;
+}
+
 /** The selection's rule of a check, ``{name, reference, unit}``, or null. */
 export function checkRule(selection, name) {
   const rules = Array.isArray(selection?.check_rules) ? selection.check_rules : [];
@@ -84,7 +94,7 @@ export function openCheckLines(selection, candidate, lang) {
       "span",
       { class: "open-check", "data-check": c.name },
       sym(checkLabel(c.name, lang)),
-      ` (${translate(lang, `status.${c.status}`)}) – `,
+      ` (${statusText(c.status, lang)}) – `,
       checkFinding(c, checkRule(selection, c.name)?.unit, lang),
     ),
   );

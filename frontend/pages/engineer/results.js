@@ -15,6 +15,7 @@ import {
   marginPercent,
   openChecks,
   shortCheckLabel,
+  statusText,
 } from "../../lib/checks.js";
 import { answerLanguage } from "../../lib/api.js";
 import { h, notice, sym } from "../../lib/dom.js";
@@ -31,7 +32,7 @@ export function statusBadge(status, lang) {
     { class: `badge status-${status}` },
     h("span", { "aria-hidden": "true" }, STATUS_MARK[status] ?? "·"),
     " ",
-    translate(lang, `status.${status}`),
+    statusText(status, lang),
   );
 }
 
@@ -234,7 +235,7 @@ function checkMarks(sel, candidate, lang) {
       typeof c.value === "number" && typeof c.limit === "number"
         ? ` (${qty(c.value, unit, lang)} / ${c.approximate ? "≈ " : ""}${qty(c.limit, unit, lang)})`
         : "";
-    return `${plainSymbols(shortCheckLabel(c.name, lang))}: ${translate(lang, `status.${c.status}`)}${against}`;
+    return `${plainSymbols(shortCheckLabel(c.name, lang))}: ${statusText(c.status, lang)}${against}`;
   });
   return h(
     "span",
