@@ -29,7 +29,7 @@ export function translateReference(lang, reference) {
   // every "Eq." of "Eq. 522.2, Eq. 522.3"; whole phrases first, then words
   return reference
     .replace(/with ωL·I in quadrature|catalogue brake data \(holding torque\)/g, (phrase) => refWord(lang, phrase))
-    .replace(/\b(Table|Eq\.|Fig\.|manual|ch\.|formulas|formula)(?=\s|$|,|;)/g, (word) => refWord(lang, word))
+    .replace(/\b(Table|Eq\.|Fig\.|manual|ch\.|formulas|formula|p\.)(?=\s|$|,|;)/g, (word) => refWord(lang, word))
     .replace(/\((model)\)/g, (_, word) => `(${refWord(lang, word)})`);
 }
 

@@ -116,6 +116,19 @@ def test_the_segment_editor_and_a_machine_axis(axe_page: Page) -> None:
     assert violations(page) == [], "segment editor with the belt axis"
 
 
+def test_the_checks_asked_for_unfolded(axe_page: Page) -> None:
+    """The brake's fields, the gear's and the stiffness' (issue 28) open, one refused."""
+    page = axe_page
+    page.goto("/")
+    page.locator("#f-brake").check()
+    page.locator("#more-checks > summary").click()
+    page.locator("#f-gear").check()
+    page.locator("#f-gear-momentary_count").press_sequentially("1.000,5")
+    page.locator("#f-gear-momentary_count").press("Tab")
+    page.wait_for_selector("#err-f-gear-momentary_count:not([hidden])")
+    assert violations(page) == [], "gear, stiffness and brake fields"
+
+
 def test_number_fields_with_their_reading_and_a_refusal(axe_page: Page) -> None:
     page = axe_page
     page.goto("/")

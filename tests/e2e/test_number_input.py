@@ -145,6 +145,9 @@ def test_every_number_field_reads_one_comma_three(
     page = cast(Page, request.getfixturevalue(fixture))
     page.goto("/")
     page.locator("#f-ol").check()  # the output bearing's fields too
+    page.locator("#f-brake").check()  # the brake's safety factor and emergency stops
+    page.locator("#more-checks > summary").click()  # the checks that run when asked
+    page.locator("#f-gear").check()
     typed: set[str] = set()
     for kind in LOAD_KINDS:
         page.locator(f'input[name="load-kind"][value="{kind}"]').check()
@@ -157,7 +160,8 @@ def test_every_number_field_reads_one_comma_three(
     page.locator('input[name="cycle-mode"][value="segments"]').check()
     page.locator("#seg-add").click()
     typed |= type_everywhere_and_check(page, text)
-    # every kind of number field was met: static, generated, transmission, output load, segments
+    # every kind of number field was met: static, generated, transmission, output load,
+    # the checks asked for, segments
     for path in (
         "load.speed_rpm",
         "load.inertia_kgm2",
@@ -165,6 +169,12 @@ def test_every_number_field_reads_one_comma_three(
         "load.pulley_diameter_mm",
         "load.transmission.ratio",
         "output_load.radial_force_n",
+        "gear.required_life_h",
+        "gear.momentary_count",
+        "min_natural_frequency_hz",
+        "brake_safety_factor",
+        "emergency_stops",
+        "thermal_time_constant_s",
         "cycle.accel_s",
         "cycle.start_speed",
         "cycle.segments.0.speed",

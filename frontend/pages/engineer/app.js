@@ -50,6 +50,25 @@ const OUTPUT_LOAD_FIELDS = [
   { name: "static_safety_min", symbol: "f_s", unit: "–", key: "ol.static_safety" },
   { name: "required_life_h", symbol: "L_10", unit: "h", key: "ol.required_life" },
 ];
+/**
+ * The gear's own limits, checked when asked (schemas/selections/request.py, GearIn;
+ * docs/decisions/0024): a blank field is not asked and not sent.
+ */
+const GEAR_FIELDS = [
+  { name: "required_life_h", symbol: "L_h", unit: "h", key: "gear.required_life" },
+  { name: "momentary_torque_nm", symbol: "T_M", unit: "Nm", key: "gear.momentary_torque" },
+  { name: "momentary_count", symbol: "N_M", unit: "–", key: "gear.momentary_count" },
+];
+/** The holding brake's safety factor and emergency stops, sent with the brake ticked. */
+const BRAKE_FIELDS = [
+  { name: "brake_safety_factor", symbol: "S", unit: "–", key: "brake.safety_factor", placeholder: "1" },
+  { name: "emergency_stops", symbol: "N_E", unit: "–", key: "brake.emergency_stops" },
+];
+/** Options of the request's top level, each a number sent when given; ``slot``: where it stands. */
+const OPTION_FIELDS = [
+  { name: "thermal_time_constant_s", symbol: "τ_th", unit: "s", key: "options.thermal_time_constant", slot: "#thermal-slot" },
+  { name: "min_natural_frequency_hz", symbol: "f_n", unit: "Hz", key: "options.min_natural_frequency", slot: "#stiffness-slot" },
+];
 /** Table 516.1, the chapter's worked example. */
 const EXAMPLE = {
   kind: "direct",
@@ -94,6 +113,9 @@ const createSelection = (body) => api.post("/selections", body);
 
 /** GET /api/v1/selections/{id}: a stored selection. */
 const getSelection = (id) => api.get(encodePath`/selections/${id}`);
+
+/** GET /api/v1/selections/{id}/request: the load case as it was asked (the checks asked for too). */
+const getSelectionRequest = (id) => api.get(encodePath`/selections/${id}/request`);
 
 /** GET /api/v1/selections/{id}/candidates/{model}: one candidate in full, with its catalogue data. */
 const getCandidateDetail = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}`);
@@ -307,11 +329,14 @@ function readQuantity(path) {
   return el.dataset.number === "units" ? reading.decimal : null;
 }
 
-/** The fields of ``specs`` under ``prefix``: required ones always (null when blank), others when given. */
+/**
+ * The fields of ``specs`` under ``prefix`` ("" for the request's top level): required ones
+ * always (null when blank), others when given.
+ */
 function readQuantities(prefix, specs) {
   const out = {};
   for (const spec of specs) {
-    const value = readQuantity(`${prefix}.${spec.name}`);
+    const value = readQuantity(prefix ? `${prefix}.${spec.name}` : spec.name);
     if (value !== null || spec.required) out[spec.name] = value;
   }
   return out;
@@ -352,6 +377,9 @@ function readForm() {
   };
   if (input("#f-drive").checked) body.drive = true;
   if (input("#f-ol").checked) body.output_load = readQuantities("output_load", OUTPUT_LOAD_FIELDS);
+  if (input("#f-gear").checked) body.gear = readQuantities("gear", GEAR_FIELDS);
+  // blank: not asked (the API's default); the brake's fields go only with the brake ticked
+  Object.assign(body, readQuantities("", [...OPTION_FIELDS, ...BRAKE_FIELDS]));
   const models = input("#f-models")
     .value.split(/[,;\s]+/)
     .map((m) => m.trim())
@@ -367,15 +395,23 @@ function setField(path, value) {
   }
 }
 
-function setOutputLoad(on) {
-  input("#f-ol").checked = on;
-  const fs = $as("#output-load", HTMLFieldSetElement);
+/** Tick or untick ``checkbox`` and show (and send) the fieldset ``fieldset`` it opens, or not. */
+function setToggled(checkbox, fieldset, on) {
+  input(checkbox).checked = on;
+  const fs = $as(fieldset, HTMLFieldSetElement);
   fs.hidden = !on;
   fs.disabled = !on;
 }
 
-/** Refill the form from a stored selection's echo (load, mechanism, cycle, options). */
-function fillForm(sel) {
+const setOutputLoad = (on) => setToggled("#f-ol", "#output-load", on);
+const setBrake = (on) => setToggled("#f-brake", "#brake-options", on);
+const setGear = (on) => setToggled("#f-gear", "#gear-options", on);
+
+/**
+ * Refill the form from a stored selection's echo (load, mechanism, cycle, options) and
+ * its stored ``request`` where the page could read it (the checks asked for).
+ */
+function fillForm(sel, request = null) {
   const mech = sel.mechanism && typeof sel.mechanism === "object" ? sel.mechanism : null;
   const kind = mech && LOAD_KINDS.includes(mech.type) ? mech.type : LOAD_KINDS[0];
   const spec = kindSpec(kind);
@@ -402,13 +438,32 @@ function fillForm(sel) {
     setField("cycle.pause_s", sel.cycle.pause_s);
   }
   input("#f-hd").checked = Boolean(sel.high_dynamics);
-  input("#f-brake").checked = Boolean(sel.brake);
+  setBrake(Boolean(sel.brake));
   input("#f-drive").checked = Boolean(sel.drive);
   const ol = sel.output_load && typeof sel.output_load === "object" ? sel.output_load : null;
   setOutputLoad(Boolean(ol));
   if (ol) for (const field of OUTPUT_LOAD_FIELDS) setField(`output_load.${field.name}`, ol[field.name]);
+  fillAskedChecks(request);
   updateCycleSum();
   showReadings(form(), state.lang);
+}
+
+/**
+ * The checks asked for beyond the answer's echo (the gear, the stiffness, the brake's
+ * factor and stops, τ_th), from the stored ``request`` (GET …/request); without it
+ * (an older server) they are left blank. A default (S = 1) stays blank as typed.
+ */
+function fillAskedChecks(request) {
+  const asked = request && typeof request === "object" ? request : {};
+  const gear = asked.gear && typeof asked.gear === "object" ? asked.gear : null;
+  setGear(Boolean(gear));
+  for (const field of GEAR_FIELDS) setField(`gear.${field.name}`, gear?.[field.name] ?? null);
+  for (const field of [...OPTION_FIELDS, ...BRAKE_FIELDS]) {
+    const value = asked[field.name];
+    setField(field.name, typeof value === "number" && String(value) !== field.placeholder ? value : null);
+  }
+  const details = $as("#more-checks", HTMLDetailsElement);
+  if (gear || typeof asked.min_natural_frequency_hz === "number") details.open = true;
 }
 
 function fillExample() {
@@ -1041,9 +1096,10 @@ async function openPermalink(id, model, marks) {
   setBusy(true, "results.loading.permalink");
   renderResults();
   try {
-    const sel = await getSelection(id);
+    // the request refills what the answer does not echo; without it those stay blank
+    const [sel, request] = await Promise.all([getSelection(id), getSelectionRequest(id).catch(() => null)]);
     setBusy(false);
-    fillForm(sel);
+    fillForm(sel, request);
     acceptSelection(sel, model, marks);
   } catch (error) {
     setBusy(false);
@@ -1091,6 +1147,16 @@ function buildForm() {
       quantityField({ id: `f-ol-${field.name}`, path: `output_load.${field.name}`, ...field }),
     ),
   );
+  const field = (prefix, spec) =>
+    quantityField({
+      id: `f-${prefix ? `${prefix}-` : ""}${spec.name}`,
+      path: prefix ? `${prefix}.${spec.name}` : spec.name,
+      units: false, // plain numbers: the API takes these without a unit
+      ...spec,
+    });
+  $("#gear-options").append(...GEAR_FIELDS.map((spec) => field("gear", spec)));
+  $("#brake-options").append(...BRAKE_FIELDS.map((spec) => field("", spec)));
+  for (const spec of OPTION_FIELDS) $(spec.slot).append(field("", spec));
   initSegments({ onChange: onFormEdited });
 }
 
@@ -1099,6 +1165,8 @@ function init() {
   applyLang(initialLang());
   setLoadKind(loadKind());
   setCycleMode(cycleMode());
+  setBrake(input("#f-brake").checked);
+  setGear(input("#f-gear").checked);
   const f = form();
   f.addEventListener("submit", onSubmit);
   f.addEventListener("input", (event) => {
@@ -1131,6 +1199,12 @@ function init() {
       onFormEdited();
     } else if (target instanceof HTMLInputElement && target.id === "f-ol") {
       setOutputLoad(target.checked);
+      onFormEdited();
+    } else if (target instanceof HTMLInputElement && target.id === "f-brake") {
+      setBrake(target.checked);
+      onFormEdited();
+    } else if (target instanceof HTMLInputElement && target.id === "f-gear") {
+      setGear(target.checked);
       onFormEdited();
     } else if (target.matches(".transmission-toggle")) {
       onFormEdited();
