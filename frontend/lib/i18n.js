@@ -1,4 +1,4 @@
-import { PLOTLY_WORDS, WORDS } from "./messages.js";
+import { PLOTLY_WORDS, REFERENCE_PATTERN, WORDS } from "./messages.js";
 import { appendSymbols, plainSymbols } from "./symbols.js";
 
 // The page's words in German and English come from the gettext catalogue of the server
@@ -23,14 +23,13 @@ export function translate(lang, key, params = {}) {
   );
 }
 
+const REFERENCE_WORDS = new RegExp(REFERENCE_PATTERN, "g");
+
 /** The chapter's reference ("Table 515.1") in ``lang`` ("Tabelle 515.1"). */
 export function translateReference(lang, reference) {
   if (typeof reference !== "string") return "";
-  // every "Eq." of "Eq. 522.2, Eq. 522.3"; whole phrases first, then words
-  return reference
-    .replace(/with ωL·I in quadrature|catalogue brake data \(holding torque\)/g, (phrase) => refWord(lang, phrase))
-    .replace(/\b(Table|Eq\.|Fig\.|manual|ch\.|formulas|formula|p\.)(?=\s|$|,|;)/g, (word) => refWord(lang, word))
-    .replace(/\((model)\)/g, (_, word) => `(${refWord(lang, word)})`);
+  // the catalogue's reference words, one rule with the documents' (api/messages.py)
+  return reference.replace(REFERENCE_WORDS, (word) => refWord(lang, word));
 }
 
 /**

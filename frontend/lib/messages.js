@@ -1224,3 +1224,6 @@ export const PLOTLY_WORDS = {
     "Zoom out": "Verkleinern"
   }
 };
+
+/** The words of a reference the catalogue translates (a RegExp source). */
+export const REFERENCE_PATTERN = "(?<![\\w.])(?:catalogue brake data \\(holding torque\\)|with ωL·I in quadrature|formulas|formula|manual|Table|model|Fig\\.|Eq\\.|ch\\.|p\\.)(?![\\w])";

@@ -135,6 +135,33 @@ def words(language: str) -> Mapping[str, str]:
     }
 
 
+REFERENCE_KEY: Final = "ref."
+"""The keyed words of a reference (``ref.Table`` → ``Tabelle``): which words of a stored
+reference are translated is what the catalogue holds under this prefix, nothing else."""
+
+
+@functools.cache
+def reference_pattern() -> str:
+    """The regular expression (valid in Python and in JavaScript) matching each word or
+    phrase of a reference that the catalogue translates (:data:`REFERENCE_KEY`), the
+    longest first, standing alone (``p.`` in ``p. 68``, not in ``Sp. 68``).
+
+    The one rule for the page (exported to ``frontend/lib/messages.js``) and the documents.
+
+    >>> import re
+    >>> re.findall(reference_pattern(), "FHA-C manual ch. 2, formula (1); Table 515.1, p. 18")
+    ['manual', 'ch.', 'formula', 'Table', 'p.']
+    >>> re.findall(reference_pattern(), "Fig. 520.1 (model); Eq. 514.2; Tables")
+    ['Fig.', 'model', 'Eq.']
+    """
+    keys = (key for key in words(DEFAULT_LANGUAGE) if key.startswith(REFERENCE_KEY))
+    phrases = sorted((key.removeprefix(REFERENCE_KEY) for key in keys), key=lambda p: (-len(p), p))
+    # Escapes both languages read alike (Python's re.escape also escapes spaces, which
+    # JavaScript's unicode mode refuses).
+    escaped = (re.sub(r"[.*+?^${}()|[\]\\]", r"\\\g<0>", phrase) for phrase in phrases)
+    return r"(?<![\w.])(?:" + "|".join(escaped) + r")(?![\w])"
+
+
 def word(key: str, language: str) -> str:
     """The keyed word ``key`` in ``language`` (:func:`words`); KeyError where the catalog
     has none (a test holds every key the code and the page use against the catalog)."""

@@ -40,6 +40,7 @@ from actuator_selection.api.messages import (
     SOURCE_CATALOG,
     catalog,
     check_templates,
+    reference_pattern,
     translate,
     words,
 )
@@ -120,11 +121,14 @@ def module_text() -> str:
         kind = "@type {Record<string, Record<string, string>>}"
         return f"/** {doc} {kind} */\nexport const {name} = {body};\n"
 
+    pattern = json.dumps(reference_pattern(), ensure_ascii=False)
     return "\n".join(
         (
             HEADER,
             constant("WORDS", "Language → key → the page's text.", page_words()),
             constant("PLOTLY_WORDS", "Language → plotly.js's English → its text.", plotly_words()),
+            "/** The words of a reference the catalogue translates (a RegExp source). */\n"
+            f"export const REFERENCE_PATTERN = {pattern};\n",
         )
     )
 

@@ -27,7 +27,7 @@ from babel.dates import format_date
 from babel.numbers import format_currency, format_decimal
 from markupsafe import Markup
 
-from actuator_selection.api.messages import translate, word, words
+from actuator_selection.api.messages import REFERENCE_KEY, reference_pattern, translate, word, words
 from actuator_selection.core.quote_terms import LANGUAGES
 from actuator_selection.core.symbols import MINUS, symbols
 from actuator_selection.schemas.mechanism_spec import UNIT_SUFFIXES
@@ -60,8 +60,6 @@ _CYCLE_FACTS = {
     "decel_s": "decel_time",
     "pause_s": "pause_time",
 }
-
-_REFERENCE_WORD = re.compile(r"\bTable\b|\bEq\.|\bFig\.|(?<=\()model(?=\))|with ωL·I in quadrature")
 
 
 def negotiate_language(query: str | None, accept_language: str | None) -> Language:
@@ -163,8 +161,11 @@ class DocumentText:
         'Abb. 520.1 (Modell); Gl. 514.2'
         >>> DocumentText("de").reference("Eq. 521.2 with ωL·I in quadrature (560vdc bus)")
         'Gl. 521.2 mit ωL·I in Quadratur (560vdc bus)'
+        >>> DocumentText("de").reference("CHA manual 1018854 12/2015, p. 69")
+        'CHA Handbuch 1018854 12/2015, S. 69'
         """
-        return _REFERENCE_WORD.sub(lambda m: self(f"ref.{m.group(0)}"), reference)
+        words = re.compile(reference_pattern())
+        return words.sub(lambda m: self(f"{REFERENCE_KEY}{m.group(0)}"), reference)
 
     def cycle_label(self, key: str, label: str) -> str:
         """The label of a cycle fact (``schemas.quotes.cycle_facts``: its key and English
