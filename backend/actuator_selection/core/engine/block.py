@@ -386,7 +386,8 @@ def evaluate_block(
     """
     col = np.newaxis
     p = cases.pieces
-    shape = (cases.size, cat.inertia.size)
+    # cases × actuators; cases × 1 where the catalogue is a column of pairs (engine.pairs)
+    shape = (cases.size, cat.inertia.shape[-1])
     gains = _HeatingGains(cat, cases)
     energy = np.zeros(shape)
     heat = np.zeros(shape)

@@ -85,16 +85,20 @@ class Cases:
         """The cases ``start:stop``."""
         if start == 0 and stop >= self.size:
             return self
+        return self.take(slice(start, stop))
+
+    def take(self, index: slice | IndexArray) -> Cases:
+        """The cases at ``index`` (a slice, or row numbers, repeated as often as given)."""
         p, f = self.pieces, self.figures
         return Cases(
-            pieces=PieceArrays(**{x.name: getattr(p, x.name)[start:stop] for x in fields(p)}),
-            figures=CycleFigures(**{x.name: getattr(f, x.name)[start:stop] for x in fields(f)}),
-            load_inertia=self.load_inertia[start:stop],
-            high_dynamics=self.high_dynamics[start:stop],
-            output_load=self.output_load[start:stop],
-            thermal_time_constant=self.thermal_time_constant[start:stop],
-            thermal_assumed=self.thermal_assumed[start:stop],
-            requests=self.requests[start:stop],
+            pieces=PieceArrays(**{x.name: getattr(p, x.name)[index] for x in fields(p)}),
+            figures=CycleFigures(**{x.name: getattr(f, x.name)[index] for x in fields(f)}),
+            load_inertia=self.load_inertia[index],
+            high_dynamics=self.high_dynamics[index],
+            output_load=self.output_load[index],
+            thermal_time_constant=self.thermal_time_constant[index],
+            thermal_assumed=self.thermal_assumed[index],
+            requests=self.requests[index],
         )
 
 
@@ -187,15 +191,83 @@ def zone_limits(
         torques = np.array([p.torque_nm for p in zone.points], dtype=np.float64)
         last = speeds.size - 1
         i = np.searchsorted(speeds, mean_speed, side="right")  # bisect_right
-        b = np.minimum(i, last)
-        a = b - 1
-        with np.errstate(all="ignore"):  # rows outside the zone are masked below
-            share = (mean_speed - speeds[a]) / (speeds[b] - speeds[a])
-            edge = torques[a] + share * (torques[b] - torques[a])
-        edge = np.where(i > last, torques[last], edge)
-        inside = (mean_speed >= 0) & (mean_speed <= speeds[last])
-        limits[:, k] = np.where(inside, edge, math.nan)
+        limits[:, k] = _zone_edge(mean_speed, i, np.minimum(i, last), speeds, torques, last)
     return limits
+
+
+def _zone_edge(
+    mean_speed: FloatArray,
+    i: IndexArray,
+    b: IndexArray,
+    speeds: FloatArray,
+    torques: FloatArray,
+    last: Any,
+) -> FloatArray:
+    """The zone's edge at n_av, between its points ``b − 1`` and ``b`` (``i``: bisect_right
+    of n_av in the speeds, ``last`` the last point), NaN beyond the zone; ``speeds`` and
+    ``torques`` indexed by point number along their last axis."""
+
+    def at(points: Any) -> Any:
+        if speeds.ndim == 1:
+            return speeds[points], torques[points]
+        index = np.asarray(points)[:, np.newaxis]
+        return (
+            np.take_along_axis(speeds, index, axis=1)[:, 0],
+            np.take_along_axis(torques, index, axis=1)[:, 0],
+        )
+
+    (speed_a, torque_a), (speed_b, torque_b) = at(b - 1), at(b)
+    speed_last, torque_last = at(last)
+    with np.errstate(all="ignore"):  # rows outside the zone are masked below
+        share = (mean_speed - speed_a) / (speed_b - speed_a)
+        edge = torque_a + share * (torque_b - torque_a)
+    edge = np.where(i > last, torque_last, edge)
+    inside = (mean_speed >= 0) & (mean_speed <= speed_last)
+    return np.asarray(np.where(inside, edge, math.nan), dtype=np.float64)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class ZoneTable:
+    """The continuous-duty zones of a catalogue as one table, for the zone's edge of
+    given (case, actuator) pairs (:meth:`edges`): each zone's points padded to the
+    longest with speeds beyond every n_av."""
+
+    row: IndexArray
+    """Per actuator, its row of the table; −1: no zone."""
+    speeds: FloatArray
+    torques: FloatArray
+    last: IndexArray
+    """Per row, its last point."""
+
+    def edges(self, columns: IndexArray, mean_speed: FloatArray) -> FloatArray:
+        """:func:`zone_limits` of actuator ``columns[p]`` at ``mean_speed[p]``, pair by
+        pair; NaN where the actuator has no zone."""
+        rows = self.row[columns]
+        has = rows >= 0
+        out = np.full(columns.size, math.nan)
+        if not has.any() or self.speeds.size == 0:
+            return out
+        r, speed = rows[has], mean_speed[has]
+        speeds, torques, last = self.speeds[r], self.torques[r], self.last[r]
+        i = (speeds <= speed[:, np.newaxis]).sum(axis=1)  # bisect_right
+        out[has] = _zone_edge(speed, i, np.minimum(i, last), speeds, torques, last)
+        return out
+
+
+def zone_table(actuators: Sequence[Actuator]) -> ZoneTable:
+    """The zones of ``actuators`` as a :class:`ZoneTable`."""
+    zones = [(j, a.zone) for j, a in enumerate(actuators) if a.zone is not None]
+    width = max((len(z.points) for _, z in zones), default=0)
+    speeds = np.full((len(zones), width), math.inf)
+    torques = np.full((len(zones), width), math.nan)
+    row = np.full(len(actuators), -1, dtype=np.intp)
+    last = np.zeros(len(zones), dtype=np.intp)
+    for k, (j, zone) in enumerate(zones):
+        n = len(zone.points)
+        speeds[k, :n] = [p.speed_rpm for p in zone.points]
+        torques[k, :n] = [p.torque_nm for p in zone.points]
+        row[j], last[k] = k, n - 1
+    return ZoneTable(row=row, speeds=speeds, torques=torques, last=last)
 
 
 def case_operands(cases: Cases) -> dict[str, Any]:
