@@ -11,15 +11,25 @@ that value are the same flowchart on the same numbers.
 The search runs on the engine, vectorised over cases × actuators:
 
 1. a geometric grid of the range (or the standard series given) as the cases, the whole
-   catalogue as the columns, one :func:`~actuator_selection.core.engine.evaluate_batch`;
+   catalogue as the columns, block by block (:func:`~actuator_selection.core.engine.
+   block.evaluate_block`), keeping per cell only the verdict, the binding utilisation
+   and which checks fail, no check worded;
 2. every change of the verdict between neighbouring grid values, for every actuator, is
-   a bracket; all brackets are bisected together (the midpoints of all brackets as the
-   cases, the actuators that have one as the columns, each bracket's own cell read), so
-   several intervals per actuator are found where the checks are not monotonic;
+   a bracket; all brackets are bisected together, on the engine's pairs
+   (:func:`~actuator_selection.core.engine.pairs.evaluate_pairs`: each bracket's midpoint
+   on its own actuator, not every midpoint on every actuator), :data:`BISECTION_DEPTH`
+   halvings to an engine call, so several intervals per actuator are found where the
+   checks are not monotonic;
 3. the grid value of least binding utilisation (max value/limit over the checks,
    :func:`~actuator_selection.core.checks.rule.utilisation`) is refined by parabolic
    steps in log x (a passing value only, and only where it lowers the utilisation), all
-   actuators together.
+   actuators together, in the same engine calls as the bisection.
+
+The numbers are those of evaluating every value on every actuator
+(``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
+compare with this one, ``==``): only fewer cells are computed. Where the caller can build
+the load cases at many values as columns (:func:`geared_cases`: an external ratio on the
+chapter's trapezoid), no application is built per value.
 
 Analytic cross-check (H.-J. Van de Straete, J. De Schutter, R. Belmans, "An efficient procedure for
 checking performance limits in servo drive selection and optimization", IEEE/ASME Trans.
@@ -36,8 +46,9 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Generator, Sequence
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 
@@ -49,29 +60,44 @@ from actuator_selection.core.cycle import Load
 from actuator_selection.core.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
-    BatchEvaluation,
+    BoolArray,
     CatalogueArrays,
+    CodeArray,
     FloatArray,
+    IndexArray,
     catalogue_arrays,
-    evaluate_batch,
 )
+from actuator_selection.core.engine.block import Block, blocks, evaluate_block
+from actuator_selection.core.engine.cases import (
+    Cases,
+    ZoneTable,
+    cases_of,
+    zone_limits,
+    zone_table,
+)
+from actuator_selection.core.engine.evaluation import rules_of
+from actuator_selection.core.engine.pairs import evaluate_pairs
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.loads import _square
 from actuator_selection.core.mechanisms import Transmission, with_transmission
-from actuator_selection.core.motion import Motion
+from actuator_selection.core.motion import Motion, cycle_figures, trapezoid_piece_arrays
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
 BISECTION_STEPS = 12
-"""Halvings of every bracket (one engine call each): a grid step of 6.5 % narrowed to
-1.6·10⁻⁵ relative."""
+"""Halvings of every bracket: a grid step of 6.5 % narrowed to 1.6·10⁻⁵ relative."""
+BISECTION_DEPTH = 2
+"""Halvings per engine call (:func:`_bisection`): 3 values a bracket, 6 calls, the
+parabolic steps' beside them (fewer calls cost more values, each a load case built)."""
 REFINE_ROUNDS = 3
-"""Parabolic steps for the best value (two engine calls each)."""
+"""Parabolic steps for the best value (one engine call each, after the first, beside the
+bisection's)."""
 MAX_SERIES = 200
 """The most values of a standard series."""
 
 _FAIL = VERDICT_BY_CODE.index(Verdict.UNSUITABLE)
 _CHECK_FAIL = STATUS_BY_CODE.index(Status.FAIL)
+_CODE_FAIL = np.int8(_CHECK_FAIL)
 
 
 def inertia_matched_ratio(load_inertia_kgm2: float, actuator_inertia_kgm2: float) -> float:
@@ -119,6 +145,39 @@ def geared(app: Application, transmission: Transmission) -> Application:
     )
 
 
+def geared_cases(
+    app: Application, transmission_inertia_kgm2: float
+) -> Callable[[FloatArray], Cases] | None:
+    """:func:`geared` at many ratios at once, as the engine's load cases: the trapezoid's
+    speed ×i, T_L ÷i, J_L/i² + J_tr as columns (what :func:`geared` computes for each
+    ratio, the same operations), the rest of ``app``'s case repeated. None where
+    :func:`geared` leaves the chapter's shorthand (η_tr < 1, a cycle of segments)."""
+    pattern, load = app.pattern, app.load
+    if pattern is None or load is None:
+        return None
+    base = cases_of([app])
+
+    def at(ratios: FloatArray) -> Cases:
+        def repeated(value: float) -> FloatArray:
+            return np.full(ratios.size, value)
+
+        pieces = trapezoid_piece_arrays(
+            speed_rpm=pattern.speed_rpm * ratios,
+            accel_s=repeated(pattern.accel_s),
+            constant_s=repeated(pattern.constant_s),
+            decel_s=repeated(pattern.decel_s),
+            pause_s=repeated(pattern.pause_s),
+            torque_nm=load.torque_nm / ratios,
+            inertia_kgm2=transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios),
+        )
+        rest = base.take(np.zeros(ratios.size, dtype=np.intp))
+        return dataclasses.replace(
+            rest, pieces=pieces, figures=cycle_figures(pieces), load_inertia=pieces.inertia[:, 0]
+        )
+
+    return at
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Interval:
     """A range of the free value in which no check fails."""
@@ -149,43 +208,177 @@ class RatioResult:
     """The binding utilisation at each grid value (for the chart)."""
 
 
-def _utilisation(ev: BatchEvaluation) -> tuple[FloatArray, np.ndarray]:
-    """The binding utilisation (max value/limit over the checks with both) per cell, and
-    the index of its check."""
+Cells = tuple[CodeArray, FloatArray, IndexArray, BoolArray]
+"""Per cell: the verdict code, the binding utilisation (max value/limit over the checks
+with both; NaN where none has), its check's index, and which checks fail (cells ×
+checks)."""
+
+
+def _cells(block: Block) -> Cells:
+    """What the search reads of a block (run with ``detail``), its cells flattened in
+    order; the status codes and each check's value and limit, no check worded."""
+    assert block.details is not None
+    shape = block.accel_torque.shape
+    best = np.full(shape, -np.inf)
+    which = np.zeros(shape, dtype=np.intp)
     with np.errstate(divide="ignore", invalid="ignore"):
-        share = np.where(ev.limits > 0, ev.values / ev.limits, np.nan)
-    share = np.where(np.isfinite(share), share, -np.inf)
-    which = np.argmax(share, axis=-1)
-    top = np.take_along_axis(share, which[..., None], axis=-1)[..., 0]
-    return np.where(np.isfinite(top), top, np.nan), which
+        for k, d in enumerate(block.details):
+            share = np.where(d.limits > 0, d.values / d.limits, np.nan)
+            share = np.where(np.isfinite(share), share, -np.inf)
+            take = share > best  # the first check of the largest share, as argmax
+            best = np.where(take, share, best)
+            which = np.where(take, k, which)
+    util = np.where(np.isfinite(best), best, np.nan)
+    failing = np.stack(
+        [np.broadcast_to(codes == _CODE_FAIL, shape).ravel() for codes in block.statuses], axis=-1
+    )
+    return block.verdicts().ravel(), util.ravel(), which.ravel(), failing
 
 
-class _Cells:
-    """The engine on pairs (value, actuator): the distinct values as cases, the distinct
-    actuators as columns, each pair's own cell read."""
+Request = tuple[FloatArray, IndexArray]
+"""Pairs to evaluate: the free value and the actuator's column, pair by pair."""
+Search = Generator[Request, Cells, None]
+
+
+class _Pairs:
+    """The engine on pairs (value, actuator): the distinct values as the cases, each pair
+    its own cell (:func:`~actuator_selection.core.engine.pairs.evaluate_pairs`)."""
 
     def __init__(
         self,
-        actuators: Sequence[Actuator],
-        vary: Callable[[float], Application],
-        rules: Sequence[Rule] | None,
+        cat: CatalogueArrays,
+        zones: ZoneTable,
+        cases_at: Callable[[FloatArray], Cases],
+        rules: Sequence[Rule],
     ) -> None:
-        self.actuators, self.vary, self.rules = actuators, vary, rules
-        self.names: tuple[str, ...] = ()
+        self.cat, self.zones, self.cases_at, self.rules = cat, zones, cases_at, rules
 
-    def __call__(
-        self, values: FloatArray, columns: np.ndarray
-    ) -> tuple[np.ndarray, FloatArray, np.ndarray, np.ndarray]:
-        """Per pair: the verdict code, the utilisation, its check's index, the failing
-        checks (mask)."""
+    def __call__(self, values: FloatArray, columns: IndexArray) -> Cells:
         xs, rows = np.unique(values, return_inverse=True)
-        cols, at = np.unique(columns, return_inverse=True)
-        chosen = [self.actuators[int(c)] for c in cols]
-        ev = evaluate_batch(chosen, [self.vary(float(x)) for x in xs], rules=self.rules)
-        self.names = ev.check_names
-        util, which = _utilisation(ev)
-        failing = ev.statuses[rows, at] == _CHECK_FAIL
-        return ev.verdicts[rows, at], util[rows, at], which[rows, at], failing
+        cases = self.cases_at(xs)
+        block = evaluate_pairs(self.cat, self.zones, cases, rows, columns, self.rules)
+        return _cells(block)
+
+    def run(self, *searches: Search) -> None:
+        """Run ``searches`` side by side: each engine call evaluates the pairs that every
+        search still running asks for, in one block."""
+        asked: dict[int, Request] = {}
+        running = dict(enumerate(searches))
+        for n, search in list(running.items()):
+            request = next(search, None)
+            if request is None:
+                del running[n]
+            else:
+                asked[n] = request
+        while running:
+            order = list(running)
+            sizes = [asked[n][0].size for n in order]
+            answer = self(
+                np.concatenate([asked[n][0] for n in order]),
+                np.concatenate([asked[n][1] for n in order]),
+            )
+            at = 0
+            for n, size in zip(order, sizes, strict=True):
+                part = cast(Cells, tuple(a[at : at + size] for a in answer))
+                at += size
+                try:
+                    asked[n] = running[n].send(part)
+                except StopIteration:
+                    del running[n], asked[n]
+
+
+def _bisection(
+    ok_side: FloatArray, bad_side: FloatArray, columns: IndexArray, bad_fail: BoolArray
+) -> Search:
+    """:data:`BISECTION_STEPS` halvings of every bracket (ok value, failing value) in
+    log x, in rounds of :data:`BISECTION_DEPTH`: each round evaluates the midpoints of
+    every interval the round's halvings could reach (a tree of 2^depth − 1 values per
+    bracket, each the geometric mean of its interval's ends, as one halving computes
+    it) and then follows each bracket's halvings through it. The arrays are updated in
+    place: the last ok value, the first failing one, and the checks failing there."""
+    width = 2**BISECTION_DEPTH - 1
+    for _ in range(BISECTION_STEPS // BISECTION_DEPTH):
+        low = np.empty((ok_side.size, width))
+        high = np.empty((ok_side.size, width))
+        middle = np.empty((ok_side.size, width))
+        low[:, 0], high[:, 0] = ok_side, bad_side
+        for k in range(width):
+            middle[:, k] = np.sqrt(low[:, k] * high[:, k])
+            left, right = 2 * k + 1, 2 * k + 2
+            if right < width:  # left: the middle failed; right: it passed
+                low[:, left], high[:, left] = low[:, k], middle[:, k]
+                low[:, right], high[:, right] = middle[:, k], high[:, k]
+        codes, _u, _w, failing = yield middle.ravel(), np.repeat(columns, width)
+        codes = codes.reshape(middle.shape)
+        failing = failing.reshape((*middle.shape, -1))
+        node: IndexArray = np.zeros(ok_side.size, dtype=np.intp)
+        every = np.arange(ok_side.size)
+        for _step in range(BISECTION_DEPTH):
+            m = middle[every, node]
+            fails = codes[every, node] == _FAIL
+            ok_side[:] = np.where(fails, ok_side, m)
+            bad_side[:] = np.where(fails, m, bad_side)
+            bad_fail[:] = np.where(fails[:, None], failing[every, node], bad_fail)
+            node = np.where(fails, 2 * node + 1, 2 * node + 2)
+
+
+@dataclass(slots=True, kw_only=True)
+class _Best:
+    """Per actuator, the value of least binding utilisation found so far, updated in place."""
+
+    value: FloatArray
+    utilisation: FloatArray
+    code: CodeArray
+    which: IndexArray
+
+
+def _refinement(best: _Best, columns: IndexArray, grid: FloatArray) -> Search:
+    """:data:`REFINE_ROUNDS` parabolic steps in log x about each best value: a parabola
+    through the best and its neighbours, its vertex evaluated; each round about the best
+    so far, a quarter as wide.
+
+    The next round's three values are asked with the vertex, for both outcomes (about
+    the vertex, should it be better; about the best so far, should it not), so that the
+    rounds take one engine call each, not two."""
+    step = math.log(grid[1] / grid[0])
+
+    def about(centre: FloatArray, half: FloatArray) -> FloatArray:
+        values: FloatArray = np.exp(centre[:, None] + half[:, None] * np.array([-1.0, 0.0, 1.0]))
+        return values
+
+    def vertex_of(centre: FloatArray, half: FloatArray, u: FloatArray) -> FloatArray:
+        left, mid, right = u[:, 0], u[:, 1], u[:, 2]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            shift = 0.5 * half * (left - right) / (left - 2 * mid + right)
+        convex = np.isfinite(shift) & (left - 2 * mid + right > 0)
+        vertex = np.exp(centre + np.where(convex, np.clip(shift, -half, half), 0.0))
+        return np.asarray(np.clip(vertex, grid[0], grid[-1]))  # within the range searched
+
+    n = columns.size
+    centre, half = np.log(best.value[columns]), np.full(n, step)
+    points = about(centre, half)
+    u = (yield points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
+    for r in range(REFINE_ROUNDS):
+        vertex = vertex_of(centre, half, u)
+        last = r + 1 == REFINE_ROUNDS
+        values, asked = [vertex], [columns]
+        if not last:  # the next round about either centre
+            moved, stayed = about(np.log(vertex), half / 4), about(centre, half / 4)
+            values += [moved.ravel(), stayed.ravel()]
+            asked += [np.repeat(columns, 3)] * 2
+        codes, got, w, _f = yield np.concatenate(values), np.concatenate(asked)
+        at_vertex = got[:n]
+        better = (
+            (codes[:n] != _FAIL) & np.isfinite(at_vertex) & (at_vertex < best.utilisation[columns])
+        )
+        chosen = columns[better]
+        best.value[chosen] = vertex[better]
+        best.utilisation[chosen] = at_vertex[better]
+        best.code[chosen] = codes[:n][better]
+        best.which[chosen] = w[:n][better]
+        if not last:
+            u = np.where(better[:, None], got[n : 4 * n].reshape(n, 3), got[4 * n :].reshape(n, 3))
+            centre, half = np.log(best.value[columns]), half / 4
 
 
 def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatArray:
@@ -206,22 +399,45 @@ def ratio_study(
     series: Sequence[float] | None = None,
     rules: Sequence[Rule] | None = None,
     arrays: CatalogueArrays | None = None,
+    cases_at: Callable[[FloatArray], Cases] | None = None,
 ) -> list[RatioResult]:
     """Each actuator's feasible intervals of the free value in [lower, upper] and its best
     value; with ``series``, only the series' values (an interval: neighbouring series
-    values that all pass)."""
+    values that all pass). ``cases_at``: the load cases of ``vary`` at many values at
+    once, where the caller can build them as columns (:func:`geared_cases`)."""
     if not (0 < lower < upper and math.isfinite(upper)):
         raise InvalidInputError("ratio_study.min", code="study_range")
     if not actuators:
         return []
     grid = _grid(lower, upper, series)
     cat = catalogue_arrays(actuators) if arrays is None else arrays
-    ev = evaluate_batch(actuators, [vary(float(x)) for x in grid], rules=rules, arrays=cat)
-    names = ev.check_names
-    ok = ev.verdicts != _FAIL  # grid × actuators
-    util, which = _utilisation(ev)
-    cells = _Cells(actuators, vary, rules)
-    failing_grid = ev.statuses == _CHECK_FAIL
+    if cases_at is None:
+
+        def cases_at(values: FloatArray) -> Cases:
+            return cases_of([vary(float(x)) for x in values])
+
+        apps = [vary(float(x)) for x in grid]
+    else:
+        apps = [vary(float(grid[0]))]
+    rules = rules_of(apps, rules)
+    names = tuple(rule.name for rule in rules)
+    cases = cases_at(grid)
+    limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    # the grid × the catalogue, block by block; only what the search reads is kept
+    shape = (grid.size, len(actuators))
+    verdicts = np.empty(shape, dtype=np.int8)
+    util, which = np.empty(shape), np.empty(shape, dtype=np.intp)
+    failing_grid = np.empty((*shape, len(rules)), dtype=np.bool_)
+    for start, stop in blocks(actuators, grid):
+        block = evaluate_block(
+            cat, cases.rows(start, stop), limits_of_zones[start:stop], rules, detail=True
+        )
+        codes, u, w, f = _cells(block)
+        verdicts[start:stop] = codes.reshape(-1, shape[1])
+        util[start:stop] = u.reshape(-1, shape[1])
+        which[start:stop] = w.reshape(-1, shape[1])
+        failing_grid[start:stop] = f.reshape(-1, shape[1], len(rules))
+    ok = verdicts != _FAIL  # grid × actuators
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
     change_k, change_j = np.nonzero(ok[1:] != ok[:-1])
@@ -232,53 +448,34 @@ def ratio_study(
         failing_grid[change_k + 1, change_j],
         failing_grid[change_k, change_j],
     )
-    if series is None and change_k.size:
-        for _ in range(BISECTION_STEPS):
-            middle = np.sqrt(ok_side * bad_side)
-            codes, _u, _w, failing = cells(middle, change_j)
-            fails = codes == _FAIL
-            ok_side = np.where(fails, ok_side, middle)
-            bad_side = np.where(fails, middle, bad_side)
-            bad_fail = np.where(fails[:, None], failing, bad_fail)
-    ends = {
-        (int(j), int(k)): (float(o), tuple(n for n, f in zip(names, row, strict=True) if f))
-        for j, k, o, row in zip(change_j, change_k, ok_side, bad_fail, strict=True)
-    }
 
     # the best grid value per actuator among the passing ones, then a finer grid about it
     masked = np.where(ok & np.isfinite(util), util, np.inf)
     best_k = np.argmin(masked, axis=0)
     every = np.arange(len(actuators))
     has_best = np.isfinite(masked[best_k, every])
-    best = grid[best_k].astype(float)
-    best_util = masked[best_k, every]
-    best_code = ev.verdicts[best_k, every]
-    best_which = which[best_k, every]
+    best = _Best(
+        value=grid[best_k].astype(float),
+        utilisation=masked[best_k, every],
+        code=verdicts[best_k, every],
+        which=which[best_k, every],
+    )
     columns = np.nonzero(has_best)[0]
-    if series is None and columns.size:
-        # a parabola in log x through the best and its neighbours, its vertex evaluated;
-        # each round about the best so far, a quarter as wide
-        centre = np.log(best[columns])
-        half = np.full(columns.size, math.log(grid[1] / grid[0]))
-        for _ in range(REFINE_ROUNDS):
-            points = np.exp(centre[:, None] + half[:, None] * np.array([-1.0, 0.0, 1.0]))
-            u = cells(points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
-            left, mid, right = u[:, 0], u[:, 1], u[:, 2]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                shift = 0.5 * half * (left - right) / (left - 2 * mid + right)
-            convex = np.isfinite(shift) & (left - 2 * mid + right > 0)
-            vertex = np.exp(centre + np.where(convex, np.clip(shift, -half, half), 0.0))
-            vertex = np.clip(vertex, grid[0], grid[-1])  # within the range searched
-            codes, u, w, _f = cells(vertex, columns)
-            better = (codes != _FAIL) & np.isfinite(u) & (u < best_util[columns])
-            chosen = columns[better]
-            best[chosen] = vertex[better]
-            best_util[chosen] = u[better]
-            best_code[chosen] = codes[better]
-            best_which[chosen] = w[better]
-            centre, half = np.log(best[columns]), half / 4
-    verdict_at = {int(c): VERDICT_BY_CODE[int(best_code[c])] for c in columns}
-    binding_at = {int(c): names[int(best_which[c])] for c in columns}
+    if series is None:
+        searches = []
+        if change_k.size:
+            searches.append(_bisection(ok_side, bad_side, change_j, bad_fail))
+        if columns.size:
+            searches.append(_refinement(best, columns, grid))
+        _Pairs(cat, zone_table(actuators), cases_at, rules).run(*searches)
+    ends = {
+        (int(j), int(k)): (float(o), tuple(n for n, f in zip(names, row, strict=True) if f))
+        for j, k, o, row in zip(change_j, change_k, ok_side, bad_fail, strict=True)
+    }
+    verdict_at = {int(c): VERDICT_BY_CODE[int(best.code[c])] for c in columns}
+    binding_at = {int(c): names[int(best.which[c])] for c in columns}
+    grid_values = tuple(float(x) for x in grid)
+    curves = util.T.tolist()
 
     results = []
     for j, actuator in enumerate(actuators):
@@ -302,14 +499,12 @@ def ratio_study(
             RatioResult(
                 actuator=actuator,
                 intervals=tuple(intervals),
-                best=float(best[j]) if found else None,
-                best_utilisation=float(best_util[j]) if found else None,
+                best=float(best.value[j]) if found else None,
+                best_utilisation=float(best.utilisation[j]) if found else None,
                 best_binding=binding_at.get(j),
                 verdict=verdict_at.get(j),
-                grid=tuple(float(x) for x in grid),
-                utilisation=tuple(
-                    None if not np.isfinite(u) else float(u) for u in util[:, j].tolist()
-                ),
+                grid=grid_values,
+                utilisation=tuple(None if u != u else u for u in curves[j]),
             )
         )
     return results

@@ -8,9 +8,11 @@ from typing import Any
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.application import Application
+from actuator_selection.core.engine import FloatArray
+from actuator_selection.core.engine.cases import Cases
 from actuator_selection.core.errors import InvalidInputError
 from actuator_selection.core.mechanisms import Transmission
-from actuator_selection.core.ratio import RatioResult, geared, ratio_study
+from actuator_selection.core.ratio import RatioResult, geared, geared_cases, ratio_study
 from actuator_selection.schemas.ratio import (
     DEFAULT_RANGE,
     MAX_VALUE,
@@ -59,6 +61,14 @@ def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], App
     return at
 
 
+def columns_of(body: SelectionRequest, study: RatioStudyIn) -> Callable[[FloatArray], Cases] | None:
+    """:func:`varied` at many values at once as the engine's cases, where it can be built
+    as columns: an external ratio of η_tr = 1 on the chapter's trapezoid."""
+    if study.variable != "ratio" or study.transmission_efficiency != 1:
+        return None
+    return geared_cases(body.to_core(), study.transmission_inertia_kgm2)
+
+
 def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
     return RatioActuatorOut(
         model=result.actuator.model,
@@ -86,7 +96,15 @@ def study(body: RatioStudyRequest, catalogue: CatalogueSnapshot) -> RatioStudyOu
     spec: RatioStudyIn = body.ratio_study
     low, high = spec.bounds
     actuators = catalogue.actuators_of(body.models)
-    results = ratio_study(actuators, varied(body, spec), low, high, series=spec.series)
+    results = ratio_study(
+        actuators,
+        varied(body, spec),
+        low,
+        high,
+        series=spec.series,
+        arrays=catalogue.arrays(tuple(actuators)),
+        cases_at=columns_of(body, spec),
+    )
     results.sort(
         key=lambda r: (
             r.best_utilisation is None,

@@ -1,0 +1,154 @@
+"""The ratio study's search (``core/ratio.py``: the engine on pairs, the bisection in
+rounds, beside the parabolic steps) against the study as first written
+(``tests/oracle/ratio_exhaustive.py``: one engine call per halving over the product of
+values × actuators): the same intervals, ends, binding checks and best values, on the
+starter catalogue (with zones and published τ_th on some of its actuators) and on the
+vertical screw's lead; and the engine on pairs against its product, cell by cell."""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from functools import cache
+
+import numpy as np
+import pytest
+from tests.api.test_selection_binding import VERTICAL_SCREW
+from tests.core.test_continuous import catalogue
+from tests.oracle.ratio_exhaustive import exhaustive_ratio_study
+
+from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.application import Application
+from actuator_selection.core.cycle import Load, SpeedPattern
+from actuator_selection.core.engine import FloatArray, catalogue_arrays, evaluate_batch
+from actuator_selection.core.engine.cases import Cases, cases_of, zone_table
+from actuator_selection.core.engine.evaluation import rules_of
+from actuator_selection.core.engine.pairs import evaluate_pairs
+from actuator_selection.core.mechanisms import Transmission
+from actuator_selection.core.ratio import RatioResult, geared, geared_cases, ratio_study
+from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.schemas.ratio import RatioStudyRequest
+from actuator_selection.services.ratio import varied
+
+
+@cache
+def actuators() -> tuple[Actuator, ...]:
+    """The starter catalogue, every third actuator given a continuous-duty zone and every
+    fifth a published τ_th (made up for the test, not data), so that the pairs carry both."""
+    out = []
+    for j, a in enumerate(catalogue()):
+        if j % 3 == 0 and a.max_torque_nm is not None and a.max_speed_rpm is not None:
+            zone = ContinuousDutyZone(
+                points=(
+                    ZonePoint(speed_rpm=0, torque_nm=0.4 * a.max_torque_nm),
+                    ZonePoint(speed_rpm=0.5 * a.max_speed_rpm, torque_nm=0.3 * a.max_torque_nm),
+                    ZonePoint(speed_rpm=a.max_speed_rpm, torque_nm=0.1 * a.max_torque_nm),
+                )
+            )
+            a = dataclasses.replace(a, zone=zone)
+        if j % 5 == 0:
+            a = dataclasses.replace(a, thermal_time_constant_s=300.0 + j)
+        out.append(a)
+    return tuple(out)
+
+
+Study = tuple[Callable[[float], Application], Callable[[FloatArray], Cases] | None]
+
+
+def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
+    """The worked example's load behind a ratio (J_tr 10⁻⁴ kgm²); at η_tr = 1 with its
+    cases built as columns too (:func:`geared_cases`)."""
+    pattern = SpeedPattern(
+        speed_rpm=speed_rpm, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0
+    )
+    app = Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3))
+    transmission = Transmission(ratio=1, inertia_kgm2=1e-4, efficiency=efficiency)
+    columns = geared_cases(app, 1e-4) if efficiency == 1 else None
+    return lambda i: geared(app, dataclasses.replace(transmission, ratio=i)), columns
+
+
+def _screw() -> Study:
+    request = RatioStudyRequest.model_validate(
+        VERTICAL_SCREW | {"ratio_study": {"variable": "lead_mm"}}
+    )
+    return varied(request, request.ratio_study), None
+
+
+def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
+    assert [r.actuator.model for r in fast] == [r.actuator.model for r in old]
+    for a, b in zip(fast, old, strict=True):
+        assert a.intervals == b.intervals, a.actuator.model
+        assert (a.best, a.best_utilisation, a.best_binding, a.verdict) == (
+            b.best,
+            b.best_utilisation,
+            b.best_binding,
+            b.verdict,
+        ), a.actuator.model
+        assert a.grid == b.grid
+        assert a.utilisation == b.utilisation
+
+
+@pytest.mark.parametrize(
+    ("study", "low", "high"),
+    [
+        (_worked(4.0), 1.0, 20.0),
+        (_worked(4.0, 0.9), 1.0, 20.0),
+        (_worked(4.0), 0.05, 2000.0),
+        (_worked(40.0), 0.5, 5.0),
+        (_screw(), 5.0, 1000.0),
+        (_screw(), 20.0, 400.0),
+    ],
+    ids=[
+        "ratio 1-20",
+        "ratio 1-20 eta 0.9",
+        "ratio 0.05-2000",
+        "fast load, ratio 0.5-5",
+        "lead 5-1000",
+        "lead 20-400",
+    ],
+)
+def test_the_search_finds_what_the_exhaustive_study_finds(
+    study: Study, low: float, high: float
+) -> None:
+    vary, columns = study
+    found = ratio_study(actuators(), vary, low, high, cases_at=columns)
+    assert any(r.intervals for r in found)
+    assert any(r.intervals and r.intervals[0].low_binding for r in found)
+    _same(found, exhaustive_ratio_study(actuators(), vary, low, high))
+
+
+def test_a_series_as_before() -> None:
+    series = [1.0, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0, 20.0, 50.0]
+    vary, columns = _worked(4.0)
+    _same(
+        ratio_study(actuators(), vary, 1, 50, series=series, cases_at=columns),
+        exhaustive_ratio_study(actuators(), vary, 1, 50, series=series),
+    )
+
+
+def test_pairs_equal_their_cells_of_the_product() -> None:
+    chosen = actuators()
+    vary, _ = _worked(4.0, 0.9)
+    xs = np.geomspace(0.3, 30.0, 9)
+    apps = [vary(float(x)) for x in xs]
+    rules = rules_of(apps, None)
+    product = evaluate_batch(chosen, apps, rules=rules)
+    rng = np.random.default_rng(7)
+    rows = rng.integers(0, xs.size, 400)
+    columns = rng.integers(0, len(chosen), 400)
+    cat = catalogue_arrays(chosen)
+    block = evaluate_pairs(cat, zone_table(chosen), cases_of(apps), rows, columns, rules)
+    assert block.details is not None
+    np.testing.assert_array_equal(block.verdicts()[:, 0], product.verdicts[rows, columns])
+    for k, (codes, detail) in enumerate(zip(block.statuses, block.details, strict=True)):
+        shape = block.accel_torque.shape
+        np.testing.assert_array_equal(
+            np.broadcast_to(codes, shape)[:, 0], product.statuses[rows, columns, k]
+        )
+        np.testing.assert_array_equal(
+            np.broadcast_to(detail.values, shape)[:, 0], product.values[rows, columns, k]
+        )
+        np.testing.assert_array_equal(
+            np.broadcast_to(detail.limits, shape)[:, 0], product.limits[rows, columns, k]
+        )
+    np.testing.assert_array_equal(block.rms_torque[:, 0], product.rms_torque_nm[rows, columns])
