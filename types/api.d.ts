@@ -4866,6 +4866,13 @@ export interface components {
             series: number[] | null;
             /** Actuators */
             actuators: components["schemas"]["RatioActuatorOut"][];
+            /**
+             * Figure
+             * @description with `figure=true`: the chart as a plotly figure (`data` and `layout`, JSON) in the document's language: the utilisation against the free value of the actuators with a curve, their feasible intervals shaded
+             */
+            figure?: {
+                [key: string]: unknown;
+            } | null;
         };
         /**
          * RatioStudyRequest
@@ -8218,7 +8225,12 @@ export interface operations {
     };
     solve_ratio_study: {
         parameters: {
-            query?: never;
+            query?: {
+                /** @description with the chart (`figure`, `api/figures.py`), in `lang`'s language */
+                figure?: boolean;
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
             header?: never;
             path?: never;
             cookie?: never;

@@ -104,3 +104,43 @@ def test_nothing_fits_names_the_leads_that_make_an_actuator_fit(client: TestClie
         assert entry["low"] <= entry["best"] <= entry["high"]
         assert _verdict(client, entry["model"], entry["best"]) != "unsuitable"
     assert client.get(f"{API}/{answer['id']}").json()["binding"] == answer["binding"]
+
+
+def test_the_chart_draws_the_studys_curves_and_bands(client: TestClient) -> None:
+    study = {"variable": "lead_mm", "min": 5, "max": 1000, "curves": 3}
+    plain = _study(client, VERTICAL_SCREW | {"ratio_study": study})
+    assert plain["figure"] is None
+    response = client.post(
+        f"{API}/ratio-study",
+        params={"figure": "true", "lang": "de"},
+        json=VERTICAL_SCREW | {"ratio_study": study},
+    )
+    assert response.status_code == 200, response.text
+    answer = response.json()
+    figure = answer["figure"]
+    by_uid = {trace["uid"]: trace for trace in figure["data"]}
+    with_curve = [a for a in answer["actuators"] if a["curve"] is not None]
+    assert len(with_curve) == 3
+    assert answer["actuators"] == plain["actuators"]  # the same study, with its chart
+    for entry in with_curve:
+        curve = by_uid[f"ratio-curve-{entry['model']}"]
+        assert (curve["x"], curve["y"]) == (
+            entry["curve"]["values"],
+            entry["curve"]["utilisation"],
+        )
+        if entry["intervals"]:
+            band = by_uid[f"ratio-band-{entry['model']}"]
+            assert band["fill"] == "toself"
+            corners = [x for x in band["x"] if x is not None]
+            assert corners == [
+                x
+                for i in entry["intervals"]
+                for x in (i["low"], i["low"], i["high"], i["high"], i["low"])
+            ]
+            assert {y for y in band["y"] if y is not None} == {0.0, 1.0}
+            best = by_uid[f"ratio-best-{entry['model']}"]
+            assert (best["x"], best["y"]) == ([entry["best"]], [entry["best_utilisation"]])
+    assert by_uid["ratio-limit"]["y"] == [1.0, 1.0]
+    assert figure["layout"]["xaxis"]["type"] == "log"
+    assert figure["layout"]["xaxis"]["title"]["text"] == "Steigung [mm]"
+    assert figure["layout"]["separators"] == ",."

@@ -18,6 +18,12 @@ approximate zone).
 
 Trace uids name what a trace is, so that tests and readers can find it: "zone" |
 "zone-approx", "t-max", "n-max", "operating-point", "peak-accel", "peak-decel".
+
+:func:`ratio_figure` gives the ratio study's chart (``POST /selections/ratio-study`` with
+``figure=true``): for each actuator that carries its curve (the best ones), the binding
+utilisation against the free value ("ratio-curve-<model>"), its feasible intervals shaded
+("ratio-band-<model>", from 0 to the limit 1) and its best value ("ratio-best-<model>");
+the limit ("ratio-limit"). Every number is the study's.
 """
 
 from __future__ import annotations
@@ -30,6 +36,7 @@ from typing import Any
 from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.core.symbols import symbols
 from actuator_selection.schemas.quotes import StoredSelection
+from actuator_selection.schemas.ratio import RatioStudyOut
 from actuator_selection.schemas.selections import CandidateFigures
 
 COLORS = {
@@ -522,6 +529,97 @@ def cycle_figure(
                 "line": {"color": "#bbb", "width": 1, "dash": "dot"},
             }
         )
+    return {"data": data, "layout": layout}
+
+
+RATIO_COLORS = ("#1f5f99", "#b3471d", "#2e8b57", "#6b4fa0", "#7a6a00", "#c0262d", "#444")
+"""One colour per actuator of the ratio chart, in the study's order, repeated past seven."""
+
+
+def _rgba(color: str, alpha: float) -> str:
+    r, g, b = (int(color[k : k + 2], 16) for k in (1, 3, 5))
+    return f"rgba({r}, {g}, {b}, {alpha})"
+
+
+def ratio_figure(study: RatioStudyOut, t: DocumentText) -> dict[str, Any]:
+    """The ratio study's chart: the binding utilisation (max value/limit over the checks)
+    against the free value for each actuator with a curve, its feasible intervals shaded
+    up to the limit 1, its best value marked; the free value on a log axis."""
+    unit = "-" if study.unit == "-" else study.unit
+    x_title = t(f"fig.ratio.{study.variable}")
+    data: list[dict[str, Any]] = []
+    for n, entry in enumerate(a for a in study.actuators if a.curve is not None):
+        assert entry.curve is not None
+        color = RATIO_COLORS[n % len(RATIO_COLORS)]
+        group = f"ratio-{entry.model}"
+        band_x: list[float | None] = []
+        band_y: list[float | None] = []
+        for interval in entry.intervals:
+            if band_x:
+                band_x.append(None)
+                band_y.append(None)
+            band_x += [interval.low, interval.low, interval.high, interval.high, interval.low]
+            band_y += [0.0, 1.0, 1.0, 0.0, 0.0]
+        if band_x:
+            data.append(
+                {
+                    "uid": f"ratio-band-{entry.model}",
+                    "name": t("fig.ratio.band", model=entry.model),
+                    "type": "scatter",
+                    "mode": "lines",
+                    "x": band_x,
+                    "y": band_y,
+                    "fill": "toself",
+                    "fillcolor": _rgba(color, 0.14),
+                    "line": {"width": 0, "color": color},
+                    "legendgroup": group,
+                    "showlegend": False,
+                    "hoverinfo": "skip",
+                }
+            )
+        data.append(
+            {
+                "uid": f"ratio-curve-{entry.model}",
+                "name": entry.model,
+                "type": "scatter",
+                "mode": "lines",
+                "x": entry.curve.values,
+                "y": entry.curve.utilisation,
+                "line": {"color": color, "width": 2},
+                "legendgroup": group,
+                "hovertemplate": _hover(t, unit, "-"),
+            }
+        )
+        if entry.best is not None and entry.best_utilisation is not None:
+            data.append(
+                {
+                    "uid": f"ratio-best-{entry.model}",
+                    "name": t("fig.ratio.best", model=entry.model),
+                    "type": "scatter",
+                    "mode": "markers",
+                    "x": [entry.best],
+                    "y": [entry.best_utilisation],
+                    "marker": {"color": color, "size": 9, "symbol": "diamond"},
+                    "legendgroup": group,
+                    "showlegend": False,
+                    "hovertemplate": _hover(t, unit, "-"),
+                }
+            )
+    data.append(
+        {
+            "uid": "ratio-limit",
+            "name": t("fig.ratio.limit"),
+            "type": "scatter",
+            "mode": "lines",
+            "x": [study.min, study.max],
+            "y": [1.0, 1.0],
+            "line": {"color": COLORS["limit"], "width": 1.5, "dash": "dash"},
+            "hovertemplate": _hover(t, unit, "-"),
+        }
+    )
+    layout = _base_layout(t)
+    layout["xaxis"] = _axis(x_title, type="log", rangemode="normal")
+    layout["yaxis"] = _axis(t("fig.ratio.utilisation"))
     return {"data": data, "layout": layout}
 
 

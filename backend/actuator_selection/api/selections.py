@@ -20,7 +20,7 @@ from actuator_selection.api.deps import (
     write_transaction,
 )
 from actuator_selection.api.errors import RequestFieldError, language_of, service_error
-from actuator_selection.api.figures import cycle_figure, diagram_figure
+from actuator_selection.api.figures import cycle_figure, diagram_figure, ratio_figure
 from actuator_selection.api.messages import localizer
 from actuator_selection.api.quote_document import diagram_points, speed_torque_figure
 from actuator_selection.api.quote_document_text import DocumentText
@@ -165,14 +165,25 @@ def solve_selection_limits(
 )
 @reads_only
 def solve_ratio_study(
-    body: RatioStudyRequest, request: Request, session: SessionDep
+    body: RatioStudyRequest,
+    request: Request,
+    session: SessionDep,
+    language: DocumentLanguageDep,
+    figure: Annotated[
+        bool,
+        Query(description="with the chart (`figure`, `api/figures.py`), in `lang`'s language"),
+    ] = False,
 ) -> RatioStudyOut:
     """For every actuator, the interval(s) of a free transmission value (an external ratio,
     a lead, a pulley or pinion diameter) in which every check passes, the value of least
     binding utilisation and the checks that bind at each end (the engine over a grid of
     values × the catalogue, the ends bisected)."""
     (body,) = with_profiles(session, [body], [["body"]])
-    return study(body, catalogue_snapshot(request, session))
+    answer = study(body, catalogue_snapshot(request, session))
+    if figure:
+        chart = ratio_figure(answer, DocumentText(language))
+        answer = answer.model_copy(update={"figure": chart})
+    return answer
 
 
 @router.get(

@@ -3,7 +3,7 @@ value, and per actuator the values for which every check passes."""
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Any, Literal
 
 from pydantic import ConfigDict, Field, model_validator
 
@@ -148,3 +148,9 @@ class RatioStudyOut(ResponseModel):
     max: float
     series: list[float] | None
     actuators: list[RatioActuatorOut]
+    figure: dict[str, Any] | None = Field(
+        default=None,
+        description="with `figure=true`: the chart as a plotly figure (`data` and `layout`, "
+        "JSON) in the document's language: the utilisation against the free value of the "
+        "actuators with a curve, their feasible intervals shaded",
+    )

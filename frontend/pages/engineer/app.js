@@ -10,6 +10,7 @@ import { fieldRefusal, isNumberField, numberText, readField, showReading, showRe
 import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { initProfile } from "./profile.js";
+import { ratioVariables, renderRatioStudy } from "./ratio.js";
 import { NARROW_CHART_PX, WARM_FIGURE, cycleCaption, diagramCaption, fitFigure } from "./figures.js";
 import {
   LOAD_KINDS,
@@ -94,6 +95,8 @@ const state = {
   busy: false,
   /** the last thing the results area should say when there is no selection */
   message: null,
+  /** the ratio study of the request on the form: null | {status, asked, answer, error} */
+  ratio: null,
 };
 
 const form = () => $("#selection-form");
@@ -145,6 +148,9 @@ function candidateFigure(kind, sel, model, lang, flag) {
   }
   return figures.get(key);
 }
+
+/** POST /api/v1/selections/ratio-study: the free value's intervals per actuator, with its chart in ``lang``. */
+const createRatioStudy = (body, lang) => api.post(encodePath`/selections/ratio-study?figure=true&lang=${lang}`, body);
 
 /** GET …/candidates/{model}/limits: the shortest pause and t_1, the largest J_L (inverse solve). */
 const getCandidateLimits = (id, model) => api.get(encodePath`/selections/${id}/candidates/${model}/limits`);
@@ -733,8 +739,10 @@ function renderResults() {
     renderRanking(sel, chosenCandidate().model, state.filter, state.lang, rankingOptions(), { rows: "first" }),
     h("div", { id: "compare-slot" }),
     h("div", { id: "detail-slot" }),
+    h("div", { id: "ratio-slot" }),
   );
   renderComparison();
+  renderRatio();
   const drawn = renderChosen();
   updateResolved();
   // the ranking's other rows follow the charts, or come as soon as the user reaches for them
@@ -764,6 +772,46 @@ function completeRanking() {
   const candidate = chosenCandidate();
   if (!table || !candidate) return;
   drawRemainingRows(table, state.selection, candidate.model, state.filter, state.lang, rankingOptions());
+}
+
+// ---------------------------------------------------------------- ratio study
+
+/** The ratio study's section below the results, for the request on the form. */
+function renderRatio() {
+  const slot = $("#ratio-slot");
+  if (!slot) return;
+  slot.replaceChildren(renderRatioStudy(ratioVariables(readForm()), state.ratio, state.lang, runRatio));
+  if (state.ratio?.status === "ready") drawRatioChart(state.ratio.answer.figure);
+}
+
+/** Ask for the ratio study of the request on the form, then show its table and chart. */
+async function runRatio(asked) {
+  const body = { ...readForm(), ratio_study: asked };
+  state.ratio = { status: "loading", asked };
+  renderRatio();
+  try {
+    const answer = await createRatioStudy(body, state.lang);
+    state.ratio = { status: "ready", asked, answer };
+  } catch (error) {
+    state.ratio = { status: "failed", asked, error };
+  }
+  renderRatio();
+}
+
+async function drawRatioChart(figure) {
+  const div = html("#chart-ratio");
+  if (!div || !figure) return;
+  let Plotly;
+  try {
+    Plotly = await loadPlotly();
+  } catch {
+    chartUnavailable(div, t("charts.unavailable"));
+    return;
+  }
+  const narrow = { narrow: div.clientWidth > 0 && div.clientWidth < NARROW_CHART_PX };
+  const fitted = fitFigure(figure, narrow);
+  await Plotly.react(div, fitted.data, fitted.layout, { ...PLOT_CONFIG, locale: state.lang });
+  div.dataset.state = "ready";
 }
 
 // ---------------------------------------------------------------- comparison
@@ -1035,6 +1083,7 @@ function acceptSelection(sel, preferredModel, marks = []) {
     throw new ApiError({ status: 200, kind: "bad_response" });
   }
   state.selection = sel;
+  state.ratio = null; // asked of another request
   state.stale = false;
   state.filter = "all";
   // a new selection starts without marks; a permalink brings its own
