@@ -475,36 +475,34 @@ def ratio_study(
     verdict_at = {int(c): VERDICT_BY_CODE[int(best.code[c])] for c in columns}
     binding_at = {int(c): names[int(best.which[c])] for c in columns}
     grid_values = tuple(float(x) for x in grid)
-    curves = util.T.tolist()
+    shown = util.astype(object)
+    shown[np.isnan(util)] = None
+    curves = shown.T.tolist()
+    # each run of passing grid values, per actuator in order: [start, stop)
+    edges = np.diff(np.pad(ok.T.astype(np.int8), ((0, 0), (1, 1))), axis=1)
+    run_j, run_start = np.nonzero(edges == 1)
+    _j, run_stop = np.nonzero(edges == -1)
+    runs: dict[int, list[Interval]] = {}
+    for j, start, stop in zip(run_j.tolist(), run_start.tolist(), run_stop.tolist(), strict=True):
+        low, low_binding = ends[(j, start - 1)] if start > 0 else (float(grid[0]), ())
+        high, high_binding = ends[(j, stop - 1)] if stop < grid.size else (float(grid[-1]), ())
+        runs.setdefault(j, []).append(
+            Interval(low=low, high=high, low_binding=low_binding, high_binding=high_binding)
+        )
 
     results = []
     for j, actuator in enumerate(actuators):
-        intervals = []
-        k = 0
-        while k < grid.size:
-            if not ok[k, j]:
-                k += 1
-                continue
-            start = k
-            while k + 1 < grid.size and ok[k + 1, j]:
-                k += 1
-            low, low_binding = ends[(j, start - 1)] if start > 0 else (float(grid[0]), ())
-            high, high_binding = ends[(j, k)] if k + 1 < grid.size else (float(grid[-1]), ())
-            intervals.append(
-                Interval(low=low, high=high, low_binding=low_binding, high_binding=high_binding)
-            )
-            k += 1
         found = bool(has_best[j])
         results.append(
             RatioResult(
                 actuator=actuator,
-                intervals=tuple(intervals),
+                intervals=tuple(runs.get(j, ())),
                 best=float(best.value[j]) if found else None,
                 best_utilisation=float(best.utilisation[j]) if found else None,
                 best_binding=binding_at.get(j),
                 verdict=verdict_at.get(j),
                 grid=grid_values,
-                utilisation=tuple(None if u != u else u for u in curves[j]),
+                utilisation=tuple(curves[j]),
             )
         )
     return results

@@ -70,10 +70,12 @@ def columns_of(body: SelectionRequest, study: RatioStudyIn) -> Callable[[FloatAr
 
 
 def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
-    return RatioActuatorOut(
+    # built without validating again (a model per actuator of a 6,400-actuator study cost
+    # more than its search): the core's frozen results, checked by their types
+    return RatioActuatorOut.model_construct(
         model=result.actuator.model,
         intervals=[
-            IntervalOut(
+            IntervalOut.model_construct(
                 low=i.low,
                 high=i.high,
                 low_binding=list(i.low_binding),
@@ -85,7 +87,9 @@ def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
         best_utilisation=result.best_utilisation,
         best_binding=result.best_binding,
         verdict=None if result.verdict is None else result.verdict.value,
-        curve=CurveOut(values=list(result.grid), utilisation=list(result.utilisation))
+        curve=CurveOut.model_construct(
+            values=list(result.grid), utilisation=list(result.utilisation)
+        )
         if curve
         else None,
     )

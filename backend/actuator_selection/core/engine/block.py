@@ -36,6 +36,7 @@ from actuator_selection.core.engine.arrays import (
     BoolArray,
     CodeArray,
     FloatArray,
+    IndexArray,
 )
 from actuator_selection.core.engine.cases import Cases, case_operands
 from actuator_selection.core.engine.catalogue import CatalogueArrays
@@ -219,23 +220,14 @@ class _HeatingGains:
         published = cat.thermal_time_constant
         values = sorted({float(v) for v in published.tolist() if v == v})
         # Per case, gains for its own τ_th (column 0) and each published τ_th (1, 2, …).
-        taus = [cases.thermal_time_constant.tolist(), *([v] * cases.size for v in values)]
-        durations = cases.pieces.duration.tolist()
-        cycles = cases.figures.cycle_s.tolist()
-        self._pieces = np.array(
-            [
-                [_gains(row, tau) for row, tau in zip(durations, column, strict=True)]
-                for column in taus
-            ],
-            dtype=np.float64,
-        ).reshape(len(taus), cases.size, cases.pieces.duration.shape[1])
-        self._cycle = np.array(
-            [
-                [heating_gain(c, tau) for c, tau in zip(cycles, column, strict=True)]
-                for column in taus
-            ],
-            dtype=np.float64,
-        ).reshape(len(taus), cases.size)
+        taus = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
+        gains = [_case_gains(cases.pieces.duration, cases.figures.cycle_s, tau) for tau in taus]
+        self._pieces = np.array([piece for piece, _ in gains], dtype=np.float64).reshape(
+            len(taus), cases.size, cases.pieces.duration.shape[1]
+        )
+        self._cycle = np.array([cycle for _, cycle in gains], dtype=np.float64).reshape(
+            len(taus), cases.size
+        )
         lookup = {v: i + 1 for i, v in enumerate(values)}
         self._index = np.array(
             [0 if v != v else lookup[float(v)] for v in published.tolist()], dtype=np.intp
@@ -266,6 +258,40 @@ class _HeatingGains:
 
 def _gains(durations: list[float], tau: float) -> list[float]:
     return [heating_gain(t, tau) for t in durations]
+
+
+def _distinct_rows(key: FloatArray) -> tuple[FloatArray, IndexArray]:
+    """The distinct rows of ``key`` and where each row is among them: grouped by a sum of
+    the columns weighted (a sort of floats, not of rows), the grouping then checked row by
+    row; sorted as rows where two rows share a sum."""
+    with np.errstate(all="ignore"):
+        projection = np.zeros(key.shape[0])
+        for k in range(key.shape[1]):
+            projection = projection + key[:, k] * (1.0 + k / 7.0)
+    _, first, where = np.unique(projection, return_index=True, return_inverse=True)
+    distinct = key[first]
+    if np.array_equal(distinct[where], key):
+        return distinct, where.ravel()
+    rows = np.ascontiguousarray(key)
+    view = rows.view(np.dtype((np.void, rows.itemsize * rows.shape[1]))).ravel()
+    _, first, where = np.unique(view, return_index=True, return_inverse=True)
+    return rows[first], where.ravel()
+
+
+def _case_gains(
+    durations: FloatArray, cycles: FloatArray, taus: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """Per case, the gains of its pieces and of its cycle at its τ_th, each computed once
+    per distinct (pieces' durations, cycle, τ_th): cases repeat where the engine runs on
+    pairs (:mod:`~actuator_selection.core.engine.pairs`), one row per pair."""
+    key = np.column_stack([durations, cycles, taus])
+    where: IndexArray = np.zeros(key.shape[0], dtype=np.intp)
+    if key.shape[0] > 1:
+        key, where = _distinct_rows(key)
+    rows = key.tolist()
+    pieces = np.array([_gains(r[:-2], r[-1]) for r in rows], dtype=np.float64)
+    cycle = np.array([heating_gain(r[-2], r[-1]) for r in rows], dtype=np.float64)
+    return pieces.reshape(len(rows), durations.shape[1])[where], cycle[where]
 
 
 def _piece_torques(
