@@ -1517,6 +1517,33 @@ export interface components {
             next_cursor: string | null;
         };
         /**
+         * AxisControllerOut
+         * @description The axis's chosen controller and its output voltage on the project's bus.
+         */
+        AxisControllerOut: {
+            /** Source Row */
+            source_row: number;
+            /**
+             * Name
+             * @description manufacturer, type and variant
+             */
+            name: string;
+            /**
+             * Level
+             * @description the match of Table 521.1 for the actuator (unconfirmed: the actuator lacks data for a criterion)
+             * @enum {string}
+             */
+            level: "tested" | "possible" | "unconfirmed";
+            /**
+             * Bus Mark
+             * @description the controller's mark for the project's DC bus class (Table 521.1)
+             * @enum {string}
+             */
+            bus_mark: "tested" | "possible";
+            /** @description U_OUT the actuator needs at the axis's peak speed (Eq. 521.2) against what the project's DC bus class gives */
+            voltage: components["schemas"]["VoltageBrief"];
+        };
+        /**
          * AxisIn
          * @description One axis: a selection request with its name, offset and chosen actuator.
          * @example {
@@ -1596,6 +1623,11 @@ export interface components {
              * @description the chosen actuator; omitted: the first candidate of the axis's selection that publishes J_A
              */
             model?: string | null;
+            /**
+             * Controller
+             * @description the chosen servo controller: its row in Table 521.1 (`source_row`, one of the axis's `controllers` in the answer): one Table 521.1 does not exclude for the axis's actuator, with a mark for the project's DC bus class, else 422; omitted: none
+             */
+            controller?: number | null;
         };
         /**
          * AxisOut
@@ -1638,6 +1670,13 @@ export interface components {
             no_load_loss_published: boolean;
             energies: components["schemas"]["EnergiesOut"];
             power: components["schemas"]["PowerOut"];
+            /** @description the chosen controller (`controller` of the request); null: none chosen */
+            controller: components["schemas"]["AxisControllerOut"] | null;
+            /**
+             * Controllers
+             * @description the controllers the axis may take on the project's bus, best first
+             */
+            controllers: components["schemas"]["ControllerChoice"][];
         };
         /**
          * BallScrewInclineIn
@@ -2455,6 +2494,16 @@ export interface components {
             bus_class: components["schemas"]["BusClass"];
             /** Nominal Voltage V */
             nominal_voltage_v: number;
+            /**
+             * Controllers Bus Mark
+             * @description the weakest mark of the chosen controllers for the bus class (Table 521.1); null: no axis has a controller
+             */
+            controllers_bus_mark: ("tested" | "possible") | null;
+            /**
+             * Voltage Status
+             * @description the worst output-voltage check (Eq. 521.2) of the chosen controllers on the bus; null: no axis has a controller
+             */
+            voltage_status: ("pass" | "fail" | "warn" | "no_data") | null;
             power: components["schemas"]["PowerOut"];
             capacitor: components["schemas"]["CapacitorOut"];
             braking_resistor: components["schemas"]["BrakingResistorOut"];
@@ -2870,6 +2919,32 @@ export interface components {
              * @description unit of the check's value and limit
              */
             unit: string;
+        };
+        /**
+         * ControllerChoice
+         * @description A controller of Table 521.1 an axis may take: not excluded for its actuator, with a
+         *     mark for the project's DC bus class.
+         */
+        ControllerChoice: {
+            /** Source Row */
+            source_row: number;
+            /**
+             * Name
+             * @description manufacturer, type and variant
+             */
+            name: string;
+            /**
+             * Level
+             * @description the match of Table 521.1 for the actuator (unconfirmed: the actuator lacks data for a criterion)
+             * @enum {string}
+             */
+            level: "tested" | "possible" | "unconfirmed";
+            /**
+             * Bus Mark
+             * @description the controller's mark for the project's DC bus class (Table 521.1)
+             * @enum {string}
+             */
+            bus_mark: "tested" | "possible";
         };
         /**
          * ControllerItemIn

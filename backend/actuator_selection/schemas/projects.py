@@ -11,13 +11,13 @@ them, so without them the capacitor and the resistance say "no data".
 from __future__ import annotations
 
 from datetime import datetime
-from typing import Any
+from typing import Any, Literal
 
-from pydantic import ConfigDict, Field
+from pydantic import ConfigDict, Field, StrictInt
 
 from actuator_selection.core.compatibility import BusClass
 from actuator_selection.schemas.common import MAX_TIME_S, ResponseModel, StrictModel
-from actuator_selection.schemas.selections import ModelName, SelectionRequest
+from actuator_selection.schemas.selections import ModelName, SelectionRequest, VoltageBrief
 
 MAX_AXES = 16
 """Axes in one project: more than one DC bus of a machine usually feeds."""
@@ -50,6 +50,14 @@ class AxisIn(SelectionRequest):
         default=None,
         description="the chosen actuator; omitted: the first candidate of the axis's "
         "selection that publishes J_A",
+    )
+    controller: StrictInt | None = Field(
+        default=None,
+        ge=1,
+        le=1_000_000,
+        description="the chosen servo controller: its row in Table 521.1 (`source_row`, one "
+        "of the axis's `controllers` in the answer): one Table 521.1 does not exclude for the "
+        "axis's actuator, with a mark for the project's DC bus class, else 422; omitted: none",
     )
 
 
@@ -120,6 +128,30 @@ class EnergiesOut(ResponseModel):
     electrical_j: float
 
 
+class ControllerChoice(ResponseModel):
+    """A controller of Table 521.1 an axis may take: not excluded for its actuator, with a
+    mark for the project's DC bus class."""
+
+    source_row: int
+    name: str = Field(description="manufacturer, type and variant")
+    level: Literal["tested", "possible", "unconfirmed"] = Field(
+        description="the match of Table 521.1 for the actuator (unconfirmed: the actuator "
+        "lacks data for a criterion)"
+    )
+    bus_mark: Literal["tested", "possible"] = Field(
+        description="the controller's mark for the project's DC bus class (Table 521.1)"
+    )
+
+
+class AxisControllerOut(ControllerChoice):
+    """The axis's chosen controller and its output voltage on the project's bus."""
+
+    voltage: VoltageBrief = Field(
+        description="U_OUT the actuator needs at the axis's peak speed (Eq. 521.2) against "
+        "what the project's DC bus class gives"
+    )
+
+
 class AxisOut(ResponseModel):
     """One axis sized: its actuator, its selection's figures and its power."""
 
@@ -140,6 +172,12 @@ class AxisOut(ResponseModel):
     )
     energies: EnergiesOut
     power: PowerOut
+    controller: AxisControllerOut | None = Field(
+        description="the chosen controller (`controller` of the request); null: none chosen"
+    )
+    controllers: list[ControllerChoice] = Field(
+        description="the controllers the axis may take on the project's bus, best first"
+    )
 
 
 class CapacitorOut(ResponseModel):
@@ -188,6 +226,14 @@ class BusOut(ResponseModel):
 
     bus_class: BusClass
     nominal_voltage_v: float
+    controllers_bus_mark: Literal["tested", "possible"] | None = Field(
+        description="the weakest mark of the chosen controllers for the bus class (Table "
+        "521.1); null: no axis has a controller"
+    )
+    voltage_status: Literal["pass", "fail", "warn", "no_data"] | None = Field(
+        description="the worst output-voltage check (Eq. 521.2) of the chosen controllers on "
+        "the bus; null: no axis has a controller"
+    )
     power: PowerOut
     capacitor: CapacitorOut
     braking_resistor: BrakingResistorOut

@@ -157,3 +157,9 @@ CONTROLLER_RULE: Final = N_(
     "class, temperature sensor and feedback not excluded)"
 )
 """The rule a quoted controller follows (Table 521.1), in words."""
+
+PROJECT_CONTROLLER_RULE: Final = N_(
+    "the controller of an axis must be one Table 521.1 does not exclude for its actuator "
+    "(family, temperature sensor and feedback) and marks for the project's DC bus class"
+)
+"""The rule a project's axis controller follows (Table 521.1), in words."""

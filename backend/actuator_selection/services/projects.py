@@ -30,6 +30,7 @@ from actuator_selection.core.bus import (
 from actuator_selection.core.errors import DomainError, MissingDataError, NotFoundError
 from actuator_selection.db.projects import ProjectRepository, StoredProject
 from actuator_selection.schemas.projects import ProjectRequest
+from actuator_selection.services import axis_controllers
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.presenters.project import axis_body, project_answer
 from actuator_selection.services.presenters.selection import dump_json
@@ -57,7 +58,12 @@ def size_project(
     updated_at: datetime,
 ) -> JSON:
     """The project's answer (``schemas.projects.ProjectOut``) as JSON data."""
-    axes_out, powers, offsets = [], [], []
+    dc_bus = next((b for b in catalogue.buses if b.bus_class == body.bus.bus_class), None)
+    if dc_bus is None:
+        raise MissingDataError(
+            "bus.bus_class", f"no data: the catalogue has no voltage for {body.bus.bus_class}"
+        )
+    axes_out, powers, offsets, controllers = [], [], [], []
     for k, axis in enumerate(body.axes):
         try:
             app = axis.to_core()
@@ -68,18 +74,27 @@ def size_project(
             power = axis_power(app.profile, motor_of(actuator))
         except DomainError as exc:
             raise exc.moved(f"axes.{k}.{exc.field}") from None
+        listed = axis_controllers.choices(catalogue, actuator, dc_bus)
+        controller = axis_controllers.chosen(
+            row=axis.controller,
+            loc=["body", "axes", k, "controller"],
+            catalogue=catalogue,
+            actuator=actuator,
+            bus=dc_bus,
+            listed=listed,
+            speed_rpm=app.profile.peak_speed_rpm,
+        )
         powers.append(power)
         offsets.append(axis.offset_s)
-        axes_out.append(axis_body(axis, actuator, candidate, power))
-    bus = machine_bus(powers, offsets)
-    nominal = {b.bus_class: b.nominal_voltage_v for b in catalogue.buses}.get(body.bus.bus_class)
-    if nominal is None:
-        raise MissingDataError(
-            "bus.bus_class", f"no data: the catalogue has no voltage for {body.bus.bus_class}"
+        controllers.append(controller)
+        axes_out.append(
+            axis_body(axis, actuator, candidate, power)
+            | {"controller": controller, "controllers": listed}
         )
+    bus = machine_bus(powers, offsets)
     cap = capacitor(
         capacitance_f=None if body.bus.capacitance_uf is None else body.bus.capacitance_uf * 1e-6,
-        nominal_voltage_v=nominal,
+        nominal_voltage_v=dc_bus.nominal_voltage_v,
         max_voltage_v=body.bus.max_voltage_v,
         pulse_energy_j=bus.figures.regen_pulse_energy_j,
     )
@@ -93,6 +108,7 @@ def size_project(
         bus=bus,
         cap=cap,
         resistor=braking_resistor(bus.figures, cap, body.bus.chopper_voltage_v),
+        controllers=axis_controllers.bus_summary(controllers),
     )
 
 

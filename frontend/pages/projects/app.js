@@ -87,7 +87,7 @@ const EXAMPLE = {
   ],
 };
 
-const AXIS_FIELDS = new Set(["name", "offset_s", "model"]);
+const AXIS_FIELDS = new Set(["name", "offset_s", "model", "controller"]);
 
 /** An input (or select, textarea) of the page by its id. */
 const input = (id) => /** @type {HTMLInputElement} */ (byId(id));
@@ -100,7 +100,7 @@ const langButtons = () => /** @type {NodeListOf<HTMLElement>} */ (document.query
 
 // --- the form ---------------------------------------------------------------------------
 
-/** @param {{name?: string, offset_s?: number, model?: string, case?: object}} [axis] */
+/** @param {{name?: string, offset_s?: number, model?: string, controller?: number, case?: object}} [axis] */
 function axisRow(axis = { name: "", offset_s: 0, case: { load: {}, cycle: {} } }) {
   const k = byId("axes").children.length;
   const id = (what) => `axis-${k}-${what}`;
@@ -119,6 +119,17 @@ function axisRow(axis = { name: "", offset_s: 0, case: { load: {}, cycle: {} } }
     field("name", "projects.axis.name", axis.name, { maxLength: 80 }),
     field("offset_s", "projects.axis.offset", String(axis.offset_s ?? 0), { inputMode: "decimal" }),
     field("model", "projects.axis.model", axis.model ?? "", { spellcheck: false }),
+    h(
+      "p",
+      {},
+      h("label", { for: id("controller"), dataset: { i18n: "projects.axis.controller" } }, t("projects.axis.controller")),
+      h(
+        "select",
+        { id: id("controller"), dataset: { field: "controller" } },
+        h("option", { value: "" }, t("projects.axis.no_controller")),
+        ...(axis.controller ? [h("option", { value: String(axis.controller), selected: true }, t("controller.row", { n: axis.controller }))] : []),
+      ),
+    ),
     h(
       "p",
       {},
@@ -177,6 +188,8 @@ function request() {
     const axis = { ...loadCase, name: get("name").value.trim(), offset_s: numberOf(get("offset_s")) ?? 0 };
     const model = get("model").value.trim();
     if (model) axis.model = model;
+    const controller = get("controller").value;
+    if (controller) axis.controller = Number(controller);
     axes.push(axis);
   }
   return { name: input("p-name").value.trim(), bus, axes };
@@ -247,6 +260,8 @@ function summaryRows(project) {
   return [
     ["projects.sum.cycle", qty(project.cycle_time_s, "s", state.lang)],
     ["projects.sum.nominal", qty(bus.nominal_voltage_v, "V", state.lang)],
+    ["projects.sum.controllers_bus", bus.controllers_bus_mark === null ? t("projects.no_controller") : t(`controller.${bus.controllers_bus_mark}`)],
+    ["projects.sum.voltage", bus.voltage_status === null ? t("projects.no_controller") : t(`status.${bus.voltage_status}`)],
     ["projects.sum.peak", W(p.peak_w)],
     ["projects.sum.mean", W(p.mean_w)],
     ["projects.sum.mean_supply", W(p.mean_supply_w)],
@@ -278,6 +293,7 @@ function renderTables(project) {
         h("td", { translate: "no" }, a.name),
         h("td", { translate: "no" }, a.model),
         h("td", {}, t(`verdict.${a.verdict}`)),
+        h("td", {}, a.controller ? controllerText(a.controller) : t("projects.no_controller")),
         h("td", {}, W(a.power.peak_w)),
         h("td", {}, W(a.power.mean_w)),
         h("td", {}, J(a.power.regen_energy_j)),
@@ -285,6 +301,26 @@ function renderTables(project) {
       ),
     ),
   );
+}
+
+/** A controller of Table 521.1 as the page names it: its name, row and match. */
+function controllerText(c) {
+  return t("projects.controller.choice", { name: c.name, row: c.source_row, level: t(`controller.${c.level}`) });
+}
+
+/** Each axis's choice of controller: those the answer lists for it on the bus. */
+function offerControllers(project) {
+  for (const [k, row] of [...byId("axes").children].entries()) {
+    const axis = project.axes[k];
+    const select = axisField(row, "controller");
+    if (!axis || !select) continue;
+    const kept = select.value;
+    select.replaceChildren(
+      h("option", { value: "" }, t(axis.controllers.length ? "projects.axis.no_controller" : "projects.axis.none_on_bus")),
+      ...axis.controllers.map((c) => h("option", { value: String(c.source_row) }, controllerText(c))),
+    );
+    select.value = axis.controllers.some((c) => String(c.source_row) === kept) ? kept : "";
+  }
 }
 
 async function renderChart(project) {
@@ -322,6 +358,7 @@ async function render() {
   byId("results").hidden = false;
   /** @type {HTMLAnchorElement} */ (byId("permalink")).href = `/projects.html?id=${encodeURIComponent(project.id)}`;
   renderTables(project);
+  offerControllers(project);
   await renderChart(project);
 }
 

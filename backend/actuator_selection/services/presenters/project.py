@@ -69,6 +69,7 @@ def project_answer(
     bus: Bus,
     cap: Capacitor,
     resistor: BrakingResistor,
+    controllers: JSON,
 ) -> JSON:
     """The whole answer, as JSON data."""
     times, values = sample_curve(bus)
@@ -83,6 +84,7 @@ def project_answer(
         "bus": {
             "bus_class": body.bus.bus_class.value,
             "nominal_voltage_v": cap.nominal_voltage_v,
+            **controllers,
             "power": _power(bus.figures),
             "capacitor": {
                 "capacitance_uf": body.bus.capacitance_uf,
