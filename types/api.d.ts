@@ -1630,6 +1630,20 @@ export interface components {
             controller?: number | null;
         };
         /**
+         * AxisItemIn
+         * @description A machine project's axis on the quote: how many of its actuator, and its controller
+         *     line (priced by ``item_code``; its Table 521.1 row is the axis's chosen controller unless
+         *     ``source_row`` names another the project lists for the axis).
+         */
+        AxisItemIn: {
+            /**
+             * Quantity
+             * @description pieces, ≥ 1; omitted: 1
+             */
+            quantity?: number;
+            controller?: components["schemas"]["ControllerItemIn"] | null;
+        };
+        /**
          * AxisOut
          * @description One axis sized: its actuator, its selection's figures and its power.
          */
@@ -4548,8 +4562,43 @@ export interface components {
             known_below_c: number | null;
         };
         /**
+         * QuoteAxisControllerOut
+         * @description An axis's controller as quoted (Table 521.1).
+         */
+        QuoteAxisControllerOut: {
+            /** Source Row */
+            source_row: number;
+            /** Name */
+            name: string;
+            /**
+             * Level
+             * @enum {string}
+             */
+            level: "tested" | "possible" | "unconfirmed";
+        };
+        /**
+         * QuoteAxisOut
+         * @description One axis of a machine project as quoted.
+         */
+        QuoteAxisOut: {
+            /** Name */
+            name: string;
+            /** Actuator Model */
+            actuator_model: string;
+            /**
+             * Verdict
+             * @enum {string}
+             */
+            verdict: "suitable" | "unconfirmed";
+            /** Verdict Reasons */
+            verdict_reasons: string[];
+            controller: components["schemas"]["QuoteAxisControllerOut"] | null;
+        };
+        /**
          * QuoteCreate
-         * @description A quote for the selection ``selection_id``; prices come from ``price_list``.
+         * @description A quote for the selection ``selection_id`` or for the machine project ``project_id``
+         *     (a line per axis: its actuator, and its controller where one is given); prices come
+         *     from ``price_list``.
          *
          *     ``notes`` and the terms may span lines (tab, LF, CR); every other text is one line.
          *     VAT and terms left out take the server's defaults (``QUOTE_VAT_PERCENT``; the seller's
@@ -4575,10 +4624,21 @@ export interface components {
          */
         QuoteCreate: {
             /** Selection Id */
-            selection_id: string;
+            selection_id?: string | null;
+            /**
+             * Project Id
+             * @description a stored machine project instead of a selection: a line per axis with its actuator (the project's, each must not be unsuitable) and, where `axes` gives one, its controller
+             */
+            project_id?: string | null;
             customer: components["schemas"]["CustomerIn"];
-            actuator: components["schemas"]["ActuatorItemIn"];
+            /** @description the chosen candidate of the selection; with selection_id */
+            actuator?: components["schemas"]["ActuatorItemIn"] | null;
             controller?: components["schemas"]["ControllerItemIn"] | null;
+            /**
+             * Axes
+             * @description with project_id: one entry per axis of the project, in its order; omitted: one actuator per axis and no controller lines
+             */
+            axes?: components["schemas"]["AxisItemIn"][] | null;
             /** Price List */
             price_list: string;
             /**
@@ -4643,6 +4703,11 @@ export interface components {
              * @description unit_price × quantity, rounded to cents half up
              */
             line_total: string;
+            /**
+             * Axis
+             * @description the machine project's axis the line is for; null: a selection's
+             */
+            axis?: string | null;
         };
         /**
          * QuoteListOut
@@ -4687,11 +4752,19 @@ export interface components {
              */
             valid_until: string;
             customer: components["schemas"]["CustomerOut"];
-            /** Selection Id */
-            selection_id: string;
+            /**
+             * Selection Id
+             * @description null: the quote rests on a project
+             */
+            selection_id: string | null;
+            /**
+             * Project Id
+             * @description the machine project quoted; null: a selection
+             */
+            project_id: string | null;
             /**
              * Selection Catalogue Version
-             * @description catalogue version the selection used
+             * @description catalogue version the selection (or the project) used
              */
             selection_catalogue_version: number;
             /**
@@ -4699,8 +4772,16 @@ export interface components {
              * @description catalogue version when the quote was made
              */
             catalogue_version: number;
-            /** Actuator Model */
+            /**
+             * Actuator Model
+             * @description the actuator quoted (a project's: its first axis's)
+             */
             actuator_model: string;
+            /**
+             * Axes
+             * @description a project quote's axes, in the project's order; null: a selection's quote
+             */
+            axes: components["schemas"]["QuoteAxisOut"][] | null;
             /**
              * Verdict
              * @enum {string}

@@ -249,6 +249,32 @@ def item_description(kind: str, description: str, t: DocumentText) -> tuple[str,
     return description, False
 
 
+def _on_axis(axis: str | None, description: str, t: DocumentText) -> str:
+    """A line's description, after the project axis it is for (a selection's: as it is)."""
+    return description if axis is None else t("item_axis", axis=axis, description=description)
+
+
+def _axes_rows(quote: QuoteOut, t: DocumentText) -> list[dict[str, str]]:
+    """A project quote's axes for the document: each axis's actuator, its verdict in the
+    project's sizing and its controller (Table 521.1 row and match); none for a selection's."""
+    rows = []
+    for axis in quote.axes or []:
+        c = axis.controller
+        rows.append(
+            {
+                "name": axis.name,
+                "model": axis.actuator_model,
+                "verdict": t(f"verdict.{axis.verdict}"),
+                "controller": "—"
+                if c is None
+                else t(
+                    "axis_controller", name=c.name, row=c.source_row, level=t("level_" + c.level)
+                ),
+            }
+        )
+    return rows
+
+
 def quote_document_context(
     quote: QuoteOut,
     *,
@@ -346,6 +372,7 @@ def quote_document_context(
         else ""
     )
     verdict = t("verdict.suitable" if quote.verdict == "suitable" else "verdict.unconfirmed")
+    axes = _axes_rows(quote, t)
     labels = {
         f"l_{key}": t(key)
         for key in (
@@ -400,11 +427,19 @@ def quote_document_context(
             if quote.unconfirmed
             else None
         ),
+        l_axes=t("axes_heading"),
+        col_axis=t("col_axis"),
+        col_actuator=t("col_actuator"),
+        col_verdict=t("col_verdict"),
+        col_controller=t("col_controller"),
+        axes=axes,
         items=[
             {
                 "position": item.position,
                 "code": item.item_code,
-                "description": item_description(item.kind, item.description, t)[0],
+                "description": _on_axis(
+                    item.axis, item_description(item.kind, item.description, t)[0], t
+                ),
                 # a price list's words are the seller's data: not translated
                 "data": not item_description(item.kind, item.description, t)[1],
                 "quantity": t.number(item.quantity, "#,##0"),
@@ -427,9 +462,13 @@ def quote_document_context(
         notes_heading=t("notes"),
         notes=quote.notes or "",
         # the one label with markup (<em> around the chapter's title): its arguments escaped
-        justification_intro=Markup(
-            t("justification_intro", model="{model}", verdict="{verdict}")
-        ).format(model=quote.actuator_model, verdict=verdict),
+        justification_intro=(
+            Markup(t("justification_intro", model="{model}", verdict="{verdict}")).format(
+                model=quote.actuator_model, verdict=verdict
+            )
+            if quote.project_id is None
+            else Markup(t("project_intro", verdict="{verdict}")).format(verdict=verdict)
+        ),
         l_load=t("load_heading"),
         l_torques=t("torques_heading"),
         l_cycle=t("cycle_heading"),
@@ -448,12 +487,21 @@ def quote_document_context(
         catalogue_source=_with_data(
             t, "catalogue_source", source=t.reference(citation(str(actuator.get("source"))))
         ),
-        selection_footer=t(
-            "selection_footer",
-            id=quote.selection_id,
-            date=selection_date,
-            version=quote.selection_catalogue_version,
-            quote_version=quote.catalogue_version,
+        selection_footer=(
+            t(
+                "selection_footer",
+                id=quote.selection_id,
+                date=selection_date,
+                version=quote.selection_catalogue_version,
+                quote_version=quote.catalogue_version,
+            )
+            if quote.project_id is None
+            else t(
+                "project_footer",
+                id=quote.project_id,
+                version=quote.selection_catalogue_version,
+                quote_version=quote.catalogue_version,
+            )
         ),
         version_note=version_note,
         figures_fixed=t("figures_fixed"),

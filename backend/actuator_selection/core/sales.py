@@ -66,6 +66,8 @@ class QuoteItem:
     quantity: int
     unit_price: Decimal
     line_total: Decimal
+    axis: str | None = None
+    """The machine project's axis the line is for; None on a selection's quote."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -77,7 +79,8 @@ class NewQuote:
     api_key_id: int
     idempotency_key: str | None
     request_sha256: str
-    selection_id: str
+    selection_id: str | None
+    """The selection the quote rests on; None for a machine project's (``project_id``)."""
     selection_catalogue_version: int
     catalogue_version: int
     customer_name: str
@@ -107,6 +110,11 @@ class NewQuote:
     """As entered for this quote; None: the seller's standard terms."""
     seller: SellerParty | None = None
     """The seller as configured when the quote was made."""
+    project_id: str | None = None
+    """The machine project the quote rests on (migration 0016); None for a selection's."""
+    axes: tuple[Mapping[str, Any], ...] | None = None
+    """A project quote's axes as quoted: name, actuator (its catalogue entry), verdict,
+    reasons, controller; None for a selection's quote."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -474,9 +474,12 @@ def _quote_record(row: QuoteRow) -> QuoteRecord:
                 quantity=i.quantity,
                 unit_price=i.unit_price,
                 line_total=i.line_total,
+                axis=i.axis,
             )
             for i in row.items
         ),
+        project_id=row.project_id,
+        axes=tuple(row.axes) if row.axes is not None else None,
         tax=(
             TaxTotals(
                 net=row.total,
@@ -572,9 +575,11 @@ class QuoteRepository:
                             quantity=i.quantity,
                             unit_price=i.unit_price,
                             line_total=i.line_total,
+                            axis=i.axis,
                         )
                         for i in new.items
                     ],
+                    axes=[dict(a) for a in new.axes] if new.axes is not None else None,
                     **{
                         name: getattr(new, name)
                         for name in (
@@ -584,6 +589,7 @@ class QuoteRepository:
                             "idempotency_key",
                             "request_sha256",
                             "selection_id",
+                            "project_id",
                             "selection_catalogue_version",
                             "catalogue_version",
                             "customer_name",

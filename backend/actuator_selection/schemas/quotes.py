@@ -150,8 +150,26 @@ class ControllerItemIn(StrictModel):
     quantity: Quantity = 1
 
 
+class AxisItemIn(StrictModel):
+    """A machine project's axis on the quote: how many of its actuator, and its controller
+    line (priced by ``item_code``; its Table 521.1 row is the axis's chosen controller unless
+    ``source_row`` names another the project lists for the axis)."""
+
+    quantity: Quantity = 1
+    controller: ControllerItemIn | None = None
+
+
+PROJECT_OR_SELECTION = N_(
+    "give selection_id with actuator (a selection's quote), or project_id (a machine "
+    "project's, a line per axis)"
+)
+"""The rule of a quote's source, in words (error type ``quote_source``)."""
+
+
 class QuoteCreate(StrictModel):
-    """A quote for the selection ``selection_id``; prices come from ``price_list``.
+    """A quote for the selection ``selection_id`` or for the machine project ``project_id``
+    (a line per axis: its actuator, and its controller where one is given); prices come
+    from ``price_list``.
 
     ``notes`` and the terms may span lines (tab, LF, CR); every other text is one line.
     VAT and terms left out take the server's defaults (``QUOTE_VAT_PERCENT``; the seller's
@@ -179,10 +197,24 @@ class QuoteCreate(StrictModel):
 
     line_break_fields = frozenset({"notes", "payment_terms", "delivery_terms"})
 
-    selection_id: Annotated[str, Field(min_length=1, max_length=36)]
+    selection_id: Annotated[str, Field(min_length=1, max_length=36)] | None = None
+    project_id: Annotated[str, Field(min_length=1, max_length=36)] | None = Field(
+        default=None,
+        description="a stored machine project instead of a selection: a line per axis with "
+        "its actuator (the project's, each must not be unsuitable) and, where `axes` gives "
+        "one, its controller",
+    )
     customer: CustomerIn
-    actuator: ActuatorItemIn
+    actuator: ActuatorItemIn | None = Field(
+        default=None, description="the chosen candidate of the selection; with selection_id"
+    )
     controller: ControllerItemIn | None = None
+    axes: list[AxisItemIn] | None = Field(
+        default=None,
+        max_length=64,
+        description="with project_id: one entry per axis of the project, in its order; "
+        "omitted: one actuator per axis and no controller lines",
+    )
     price_list: Annotated[str, Field(min_length=1, max_length=120)]
     currency: Annotated[str, Field(pattern=r"^[A-Z]{3}$")] | None = Field(
         default=None,
@@ -212,6 +244,24 @@ class QuoteCreate(StrictModel):
     )
     notes: Annotated[Text, Field(max_length=4000)] | None = None
 
+    @model_validator(mode="after")
+    def _one_source(self) -> QuoteCreate:
+        selection = (
+            self.selection_id is not None
+            and self.actuator is not None
+            and self.project_id is None
+            and self.axes is None
+        )
+        project = (
+            self.project_id is not None
+            and self.selection_id is None
+            and self.actuator is None
+            and self.controller is None
+        )
+        if not (selection or project):
+            raise PydanticCustomError("quote_source", PROJECT_OR_SELECTION)
+        return self
+
 
 class QuoteStatusIn(StrictModel):
     """A status change: ``sent``, ``accepted`` or ``rejected`` (``expired`` happens by date)."""
@@ -239,6 +289,27 @@ class QuoteItemOut(ResponseModel):
     quantity: int
     unit_price: Decimal = Field(description="decimal string, from the price list")
     line_total: Decimal = Field(description="unit_price × quantity, rounded to cents half up")
+    axis: str | None = Field(
+        default=None, description="the machine project's axis the line is for; null: a selection's"
+    )
+
+
+class QuoteAxisControllerOut(ResponseModel):
+    """An axis's controller as quoted (Table 521.1)."""
+
+    source_row: int
+    name: str
+    level: Literal["tested", "possible", "unconfirmed"]
+
+
+class QuoteAxisOut(ResponseModel):
+    """One axis of a machine project as quoted."""
+
+    name: str
+    actuator_model: str
+    verdict: Literal["suitable", "unconfirmed"]
+    verdict_reasons: list[str]
+    controller: QuoteAxisControllerOut | None
 
 
 def _by_language(texts: Mapping[str, str]) -> dict[str, str]:
@@ -288,10 +359,16 @@ class QuoteOut(ResponseModel):
     status_changed_at: datetime
     valid_until: date
     customer: CustomerOut
-    selection_id: str
-    selection_catalogue_version: int = Field(description="catalogue version the selection used")
+    selection_id: str | None = Field(description="null: the quote rests on a project")
+    project_id: str | None = Field(description="the machine project quoted; null: a selection")
+    selection_catalogue_version: int = Field(
+        description="catalogue version the selection (or the project) used"
+    )
     catalogue_version: int = Field(description="catalogue version when the quote was made")
-    actuator_model: str
+    actuator_model: str = Field(description="the actuator quoted (a project's: its first axis's)")
+    axes: list[QuoteAxisOut] | None = Field(
+        description="a project quote's axes, in the project's order; null: a selection's quote"
+    )
     verdict: Literal["suitable", "unconfirmed"]
     unconfirmed: bool = Field(description="true: some check lacked catalogue data")
     verdict_reasons: list[str]
@@ -346,6 +423,12 @@ class QuoteOut(ResponseModel):
                 reference=record.customer_reference,
             ),
             selection_id=record.selection_id,
+            project_id=record.project_id,
+            axes=(
+                [QuoteAxisOut.model_validate(_axis_out(a)) for a in record.axes]
+                if record.axes is not None
+                else None
+            ),
             selection_catalogue_version=record.selection_catalogue_version,
             catalogue_version=record.catalogue_version,
             actuator_model=record.actuator_model,
@@ -367,6 +450,7 @@ class QuoteOut(ResponseModel):
                     quantity=i.quantity,
                     unit_price=i.unit_price,
                     line_total=i.line_total,
+                    axis=i.axis,
                 )
                 for i in record.items
             ],
@@ -384,6 +468,11 @@ class QuoteOut(ResponseModel):
             notes=record.notes,
             document_url=f"{prefix}/quotes/{record.number}/document",
         )
+
+
+def _axis_out(axis: Mapping[str, Any]) -> dict[str, Any]:
+    """A stored axis of a project quote (``NewQuote.axes``) as :class:`QuoteAxisOut` reads it."""
+    return {k: axis[k] for k in QuoteAxisOut.model_fields}
 
 
 class QuoteListOut(ResponseModel):

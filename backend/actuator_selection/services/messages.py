@@ -58,6 +58,8 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     ),
     # Stored selections (services/reports.py, services/quotes.py)
     "unknown_selection": N_("no stored selection '{selection_id}'"),
+    "unknown_project": N_("no stored machine project '{project_id}'"),
+    "project_axes": N_("the project has {axes} axes: give one entry for each, in its order"),
     # Quotes (services/quotes.py)
     "unknown_price_list": N_("no price list '{name}'"),
     "unknown_quote": N_("no quote '{number}'"),

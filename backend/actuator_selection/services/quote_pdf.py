@@ -103,6 +103,13 @@ def render_quote_pdf(context: dict[str, Any]) -> bytes:
         pdf.paragraph(c["notes"])
     pdf.heading(c["l_justification"], 13)
     pdf.paragraph(c["justification_intro"])
+    if c["axes"]:
+        pdf.heading(c["l_axes"], 10)
+        pdf.grid(
+            (c["col_axis"], c["col_actuator"], c["col_verdict"], c["col_controller"]),
+            [(a["name"], a["model"], a["verdict"], a["controller"]) for a in c["axes"]],
+            (20, 40, 28, 90),
+        )
     for title, rows in (
         (c["l_load"], c["load_rows"]),
         (c["l_torques"], c["torque_rows"]),

@@ -20,12 +20,15 @@ The use cases of ``api/quotes.py``. Rules (the README's "Quotes" section says th
 
 from __future__ import annotations
 
+import gzip
 import hashlib
 import json
 from dataclasses import dataclass
 from datetime import UTC, date, datetime
+from typing import Any
 from urllib.parse import quote as quote_path
 
+import orjson
 from sqlalchemy.orm import Session
 
 from actuator_selection.core.compatibility import match_controller
@@ -42,6 +45,7 @@ from actuator_selection.core.sales import (
 )
 from actuator_selection.db.admin import CatalogueAdminRepository
 from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.projects import ProjectRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.sales import (
     ApiKeyRepository,
@@ -53,6 +57,8 @@ from actuator_selection.db.sales import (
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.documents import DocumentLinkOut
 from actuator_selection.schemas.quotes import (
+    AxisItemIn,
+    ControllerItemIn,
     QuoteCreate,
     QuoteListOut,
     QuoteOut,
@@ -66,7 +72,11 @@ from actuator_selection.services.errors import (
     invalid_rule,
     not_found,
 )
-from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS
+from actuator_selection.services.messages import (
+    CONTROLLER_RULE,
+    PRICE_KINDS,
+    PROJECT_CONTROLLER_RULE,
+)
 from actuator_selection.services.selections import stored_answer_json
 
 API_PREFIX = "/api/v1"
@@ -97,6 +107,7 @@ def _reused(number: str) -> UseCaseError:
 
 def _candidate(body: QuoteCreate, selection: StoredSelection) -> StoredCandidate:
     """The chosen candidate; 422 when it is not one or it is unsuitable."""
+    assert body.actuator is not None
     model = body.actuator.model
     candidate = next((c for c in selection.candidates if c.model == model), None)
     loc: list[str | int] = ["body", "actuator", "model"]
@@ -224,6 +235,195 @@ def _controller_description(
     return f"Servo controller {item.type_name} ({controller.name}, Table 521.1 row {row}: {level})"
 
 
+@dataclass(frozen=True, slots=True, kw_only=True)
+class _Line:
+    """A line to price: its item, its quantity, where the request names it, and its words
+    (an actuator's: the price list's description where it has one)."""
+
+    kind: str
+    code: str
+    description: str
+    quantity: int
+    loc: list[str | int]
+    axis: str | None = None
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class _Basis:
+    """What a quote rests on: a selection's candidate or a project's axes, with its lines."""
+
+    selection_id: str | None
+    project_id: str | None
+    catalogue_version: int
+    actuator_model: str
+    verdict: str
+    reasons: tuple[str, ...]
+    snapshot: dict[str, Any]
+    lines: list[_Line]
+    axes: tuple[dict[str, Any], ...] | None = None
+
+
+def _quotable(session: Session, model: str, loc: list[str | int]) -> dict[str, Any]:
+    """The actuator's catalogue entry as the quote copies it; 422 once it is retired."""
+    state = CatalogueAdminRepository(session).state(model)
+    record = CatalogueRepository(session).actuator(model)
+    if state is None or state.retired_at is not None or record is None:
+        raise invalid(loc, "retired_not_quoted", "retired", model=model)
+    return ActuatorOut.from_record(record).model_dump(mode="json")
+
+
+def _actuator_line(
+    model: str, family: str, ratio: float, quantity: int, loc: list[str | int], axis: str | None
+) -> _Line:
+    return _Line(
+        kind="actuator",
+        code=model,
+        description=f"Servo actuator {model} ({family}, gear ratio {ratio:g})",
+        quantity=quantity,
+        loc=loc,
+        axis=axis,
+    )
+
+
+def _selection_basis(session: Session, body: QuoteCreate) -> _Basis:
+    """A selection's quote: its chosen candidate, and a controller line where given."""
+    assert body.selection_id is not None
+    assert body.actuator is not None
+    stored = stored_answer_json(session, body.selection_id)
+    if stored is None:
+        raise invalid(
+            ["body", "selection_id"], "unknown_selection", "unknown", selection_id=body.selection_id
+        )
+    selection = StoredSelection.model_validate(stored)
+    candidate = _candidate(body, selection)
+    model_loc: list[str | int] = ["body", "actuator", "model"]
+    snapshot = _quotable(session, candidate.model, model_loc)
+    lines = [
+        _actuator_line(
+            candidate.model,
+            candidate.family,
+            candidate.gear_ratio,
+            body.actuator.quantity,
+            model_loc,
+            None,
+        )
+    ]
+    if body.controller is not None:
+        lines.append(
+            _Line(
+                kind="controller",
+                code=body.controller.item_code,
+                description=_controller_description(session, body, selection, candidate.model),
+                quantity=body.controller.quantity,
+                loc=["body", "controller", "item_code"],
+            )
+        )
+    return _Basis(
+        selection_id=selection.id,
+        project_id=None,
+        catalogue_version=selection.catalogue_version,
+        actuator_model=candidate.model,
+        verdict=candidate.verdict,
+        reasons=tuple(candidate.reasons),
+        snapshot=snapshot,
+        lines=lines,
+    )
+
+
+def _axis_controller(
+    item: ControllerItemIn, axis: dict[str, Any], loc: list[str | int]
+) -> tuple[str, dict[str, Any] | None]:
+    """An axis's controller line's words, and the controller as quoted: the row the request
+    names, else the axis's chosen one; it must be one the project lists for the axis."""
+    chosen = axis.get("controller")
+    row = item.source_row if item.source_row is not None else (chosen or {}).get("source_row")
+    if row is None:
+        return f"Servo controller {item.type_name}", None
+    listed = {c["source_row"]: c for c in axis["controllers"]}
+    found = listed.get(row)
+    if found is None:
+        raise invalid(
+            [*loc, "source_row"],
+            "controller_not_listed",
+            "controller_not_compatible",
+            controller=f"row {row}",
+            row=row,
+            model=axis["model"],
+            rule=PROJECT_CONTROLLER_RULE,
+            rows=sorted(listed)[:SHOWN_ROWS],
+        )
+    quoted = {k: found[k] for k in ("source_row", "name", "level")}
+    words = (
+        f"Servo controller {item.type_name} ({found['name']}, Table 521.1 row {row}: "
+        f"{found['level']})"
+    )
+    return words, quoted
+
+
+def _project_basis(session: Session, body: QuoteCreate) -> _Basis:
+    """A machine project's quote: a line per axis for its actuator, and one for its
+    controller where ``axes`` gives one."""
+    assert body.project_id is not None
+    found = ProjectRepository(session).get(body.project_id)
+    if found is None:
+        raise invalid(
+            ["body", "project_id"], "unknown_project", "unknown", project_id=body.project_id
+        )
+    project = orjson.loads(gzip.decompress(found.answer_gzip))
+    sized = project["axes"]
+    asked = body.axes if body.axes is not None else [AxisItemIn() for _ in sized]
+    if len(asked) != len(sized):
+        raise invalid(["body", "axes"], "project_axes", axes=len(sized))
+    lines: list[_Line] = []
+    axes: list[dict[str, Any]] = []
+    for k, (axis, item) in enumerate(zip(sized, asked, strict=True)):
+        name = axis["name"] or str(k + 1)
+        loc: list[str | int] = ["body", "axes", k]
+        if axis["verdict"] == "unsuitable":
+            raise invalid(loc, "unsuitable", model=axis["model"], reasons=f"axis {name}")
+        snapshot = _quotable(session, axis["model"], loc)
+        lines.append(
+            _actuator_line(
+                axis["model"], snapshot["family"], axis["gear_ratio"], item.quantity, loc, name
+            )
+        )
+        controller = None
+        if item.controller is not None:
+            words, controller = _axis_controller(item.controller, axis, [*loc, "controller"])
+            lines.append(
+                _Line(
+                    kind="controller",
+                    code=item.controller.item_code,
+                    description=words,
+                    quantity=item.controller.quantity,
+                    loc=[*loc, "controller", "item_code"],
+                    axis=name,
+                )
+            )
+        axes.append(
+            {
+                "name": name,
+                "actuator_model": axis["model"],
+                "verdict": axis["verdict"],
+                "verdict_reasons": [],
+                "controller": controller,
+                "actuator": snapshot,
+            }
+        )
+    unconfirmed = [a for a in axes if a["verdict"] != "suitable"]
+    return _Basis(
+        selection_id=None,
+        project_id=found.id,
+        catalogue_version=found.catalogue_version,
+        actuator_model=axes[0]["actuator_model"],
+        verdict="unconfirmed" if unconfirmed else "suitable",
+        reasons=tuple(f"axis {a['name']}: {a['actuator_model']} unconfirmed" for a in unconfirmed),
+        snapshot=axes[0]["actuator"],
+        lines=lines,
+        axes=tuple(axes),
+    )
+
+
 def _new_quote(
     body: QuoteCreate,
     *,
@@ -239,67 +439,34 @@ def _new_quote(
     catalogue_version = CatalogueVersionRepository(session).pin()
     if body.valid_until < today:
         raise invalid(["body", "valid_until"], "valid_until_past", today=today.isoformat())
-    stored = stored_answer_json(session, body.selection_id)
-    if stored is None:
-        raise invalid(
-            ["body", "selection_id"], "unknown_selection", "unknown", selection_id=body.selection_id
-        )
-    selection = StoredSelection.model_validate(stored)
-    candidate = _candidate(body, selection)
-
-    model_loc: list[str | int] = ["body", "actuator", "model"]
-    state = CatalogueAdminRepository(session).state(candidate.model)
-    record = CatalogueRepository(session).actuator(candidate.model)
-    if state is None or state.retired_at is not None or record is None:
-        raise invalid(model_loc, "retired_not_quoted", "retired", model=candidate.model)
-
+    basis = (
+        _selection_basis(session, body)
+        if body.selection_id is not None
+        else _project_basis(session, body)
+    )
     prices = PriceRepository(session)
     is_example = prices.is_example(body.price_list)
     if is_example is None:
         raise invalid(["body", "price_list"], "unknown_price_list", "unknown", name=body.price_list)
-    actuator_price = _price(
-        prices,
-        body=body,
-        kind="actuator",
-        code=candidate.model,
-        on=today,
-        currency=body.currency,
-        loc=model_loc,
-    )
-    currency = actuator_price.currency
-    items = [
-        (
-            "actuator",
-            candidate.model,
-            actuator_price.description
-            or f"Servo actuator {candidate.model} ({candidate.family}, "
-            f"gear ratio {candidate.gear_ratio:g})",
-            body.actuator.quantity,
-            actuator_price,
-        )
-    ]
-    if body.controller is not None:
-        controller_price = _price(
+    currency = body.currency
+    priced: list[tuple[_Line, PriceRecord, str]] = []
+    for line in basis.lines:
+        price = _price(
             prices,
             body=body,
-            kind="controller",
-            code=body.controller.item_code,
+            kind=line.kind,
+            code=line.code,
             on=today,
             currency=currency,
-            loc=["body", "controller", "item_code"],
+            loc=line.loc,
         )
-        items.append(
-            (
-                "controller",
-                body.controller.item_code,
-                _controller_description(session, body, selection, candidate.model),
-                body.controller.quantity,
-                controller_price,
-            )
-        )
+        currency = price.currency  # every later line in the first line's currency
+        words = price.description if line.kind == "actuator" and price.description else None
+        priced.append((line, price, words or line.description))
+    assert currency is not None
     try:
         totals = quote_totals(
-            [QuoteLine(unit_price=p.unit_price, quantity=q) for _, _, _, q, p in items],
+            [QuoteLine(unit_price=p.unit_price, quantity=line.quantity) for line, p, _ in priced],
             discount_percent=body.discount_percent,
         )
         tax = tax_totals(
@@ -315,17 +482,19 @@ def _new_quote(
         api_key_id=key_id,
         idempotency_key=idempotency_key,
         request_sha256=_request_sha256(body),
-        selection_id=selection.id,
-        selection_catalogue_version=selection.catalogue_version,
+        selection_id=basis.selection_id,
+        project_id=basis.project_id,
+        axes=basis.axes,
+        selection_catalogue_version=basis.catalogue_version,
         catalogue_version=catalogue_version,
         customer_name=body.customer.name,
         customer_address=body.customer.address,
         customer_reference=body.customer.reference,
         notes=body.notes,
-        actuator_model=candidate.model,
-        verdict=candidate.verdict,
-        verdict_reasons=tuple(candidate.reasons),
-        actuator_snapshot=ActuatorOut.from_record(record).model_dump(mode="json"),
+        actuator_model=basis.actuator_model,
+        verdict=basis.verdict,
+        verdict_reasons=basis.reasons,
+        actuator_snapshot=basis.snapshot,
         price_list_name=body.price_list,
         price_list_is_example=is_example,
         price_date=today,
@@ -341,15 +510,16 @@ def _new_quote(
         items=tuple(
             QuoteItem(
                 position=position,
-                item_kind=kind,
-                item_code=code,
-                description=description,
-                quantity=quantity,
+                item_kind=line.kind,
+                item_code=line.code,
+                description=words,
+                quantity=line.quantity,
                 unit_price=price.unit_price,
-                line_total=line,
+                line_total=total,
+                axis=line.axis,
             )
-            for position, ((kind, code, description, quantity, price), line) in enumerate(
-                zip(items, totals.line_totals, strict=True), start=1
+            for position, ((line, price, words), total) in enumerate(
+                zip(priced, totals.line_totals, strict=True), start=1
             )
         ),
     )
@@ -479,6 +649,10 @@ class QuoteDocumentData:
 def quote_document(session: Session, number: str, *, today: date) -> QuoteDocumentData:
     """Everything the quote's printable document shows; 404 when unknown."""
     record = _quote(session, number)
-    stored = stored_answer_json(session, record.selection_id)
+    stored = (
+        stored_answer_json(session, record.selection_id)
+        if record.selection_id is not None
+        else None
+    )
     selection = StoredSelection.model_validate(stored) if stored is not None else None
     return QuoteDocumentData(_out(record, today), record, selection)

@@ -109,6 +109,7 @@ class QuoteRow(Base):
         CheckConstraint("status IN ('draft', 'sent', 'accepted', 'rejected')", name="status"),
         CheckConstraint("discount_percent >= 0 AND discount_percent <= 100", name="discount"),
         CheckConstraint("vat_percent >= 0 AND vat_percent <= 100", name="vat"),
+        CheckConstraint("(selection_id IS NULL) <> (project_id IS NULL)", name="source"),
     )
 
     id: Mapped[int] = mapped_column(primary_key=True)
@@ -122,7 +123,12 @@ class QuoteRow(Base):
     api_key_id: Mapped[int] = mapped_column(ForeignKey("api_keys.id"), index=True)
     idempotency_key: Mapped[str | None] = mapped_column(String(200))
     request_sha256: Mapped[str] = mapped_column(String(64))
-    selection_id: Mapped[str] = mapped_column(ForeignKey("selections.id"), index=True)
+    selection_id: Mapped[str | None] = mapped_column(ForeignKey("selections.id"), index=True)
+    project_id: Mapped[str | None] = mapped_column(ForeignKey("projects.id"), index=True)
+    """Migration 0016: a quote rests on a selection or on a machine project, one of them."""
+    axes: Mapped[list[dict[str, Any]] | None] = mapped_column(JSONDocument)
+    """A project quote's axes as quoted (actuator data, verdict, controller); NULL for a
+    selection's quote."""
     selection_catalogue_version: Mapped[int] = mapped_column(Integer)
     catalogue_version: Mapped[int] = mapped_column(Integer)
     """The catalogue's version when the quote was made (the selection's may be older)."""
@@ -179,5 +185,7 @@ class QuoteItemRow(Base):
     quantity: Mapped[int] = mapped_column(Integer)
     unit_price: Mapped[Decimal] = mapped_column(Money)
     line_total: Mapped[Decimal] = mapped_column(Money)
+    axis: Mapped[str | None] = mapped_column(String(80))
+    """The project axis the line belongs to (migration 0016); NULL on a selection's quote."""
 
     quote: Mapped[QuoteRow] = relationship(back_populates="items")
