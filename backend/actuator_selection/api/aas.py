@@ -23,6 +23,7 @@ from actuator_selection.services.aas import (
     sizing_record,
 )
 from actuator_selection.services.aas_import import request_from_record
+from actuator_selection.services.aas_project import project_record
 
 router = APIRouter(tags=["selections"])
 
@@ -96,6 +97,75 @@ def get_selection_aasx(
     """The selection as an IDTA 02021 record in an AASX package with its motion file."""
     record = _record(request, session, selection_id, query)
     name = quote(f"selection-{selection_id}.aasx", safe="")
+    return Response(
+        record_aasx(record),
+        media_type=AASX_MEDIA_TYPE,
+        headers={"Content-Disposition": f'attachment; filename="{name}"'},
+    )
+
+
+ProjectId = Annotated[str, Path(max_length=36)]
+_PROJECT_ERRORS: dict[int | str, dict[str, Any]] = {
+    404: {"description": "unknown project"},
+    409: {"description": "the catalogue has changed since the project was sized"},
+}
+
+
+def _project_record(
+    request: Request, session: SessionDep, project_id: str, client_name: str
+) -> SizingRecord:
+    return project_record(
+        session,
+        catalogue_snapshot(request, session),
+        project_id,
+        localizers={"en": localizer("en"), "de": localizer("de")},
+        link=str(request.url_for("get_project", project_id=project_id)),
+        client_name=client_name,
+    )
+
+
+ClientName = Annotated[str, Query(max_length=200, description="the client, as written")]
+
+
+@router.get(
+    "/projects/{project_id}/aas",
+    response_class=Response,
+    tags=["projects"],
+    responses={
+        200: {
+            "content": {"application/json": {"schema": {"type": "object"}}},
+            "description": "AAS JSON: a shell and one IDTA 02021 PowerDriveTrainSizing "
+            "submodel per axis (docs/aas.md)",
+        },
+        **_PROJECT_ERRORS,
+    },
+)
+def get_project_aas(
+    project_id: ProjectId, request: Request, session: SessionDep, client_name: ClientName = ""
+) -> Response:
+    """The machine project as IDTA 02021 records, one drive train per axis, AAS JSON."""
+    record = _project_record(request, session, project_id, client_name)
+    return Response(record_json(record), media_type="application/json")
+
+
+@router.get(
+    "/projects/{project_id}/aas.aasx",
+    response_class=Response,
+    tags=["projects"],
+    responses={
+        200: {
+            "content": {AASX_MEDIA_TYPE: {"schema": {"type": "string", "format": "binary"}}},
+            "description": "AASX package: the AAS, a motion file per axis and the project",
+        },
+        **_PROJECT_ERRORS,
+    },
+)
+def get_project_aasx(
+    project_id: ProjectId, request: Request, session: SessionDep, client_name: ClientName = ""
+) -> Response:
+    """The machine project as IDTA 02021 records in an AASX package with its motion files."""
+    record = _project_record(request, session, project_id, client_name)
+    name = quote(f"project-{project_id}.aasx", safe="")
     return Response(
         record_aasx(record),
         media_type=AASX_MEDIA_TYPE,

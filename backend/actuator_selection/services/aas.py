@@ -49,12 +49,12 @@ from sqlalchemy.orm import Session
 
 import actuator_selection
 from actuator_selection.core.checks import utilisation
-from actuator_selection.core.motion import Piece, pieces_of
-from actuator_selection.core.units import rpm_to_rad_per_s
+from actuator_selection.core.motion import pieces_of
 from actuator_selection.db.repositories import SelectionRepository
 from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection
 from actuator_selection.schemas.selections import SelectionRequest
+from actuator_selection.services.aas_motion import MOTION_COLUMNS, motion_csv, motion_rows
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.selections import candidate_detail, stored_answer_json
@@ -87,14 +87,6 @@ MOTION_FILE = "/aasx/files/MotionSection1.csv"
 REQUEST_FILE = "/aasx/files/selection-request.json"
 """Where the AASX holds the selection request, this tool's own project data (a
 ``SizingProjectLink``), which an import sizes again (``services.aas_import``)."""
-
-MOTION_COLUMNS = (
-    ("Time", "s"),
-    ("AngularPosition", "rad"),
-    ("AngularVelocity", "rad/s"),
-    ("AngularAcceleration", "rad/s²"),
-)
-"""The motion file's columns, idShorts of ``MetadataRotativeMotionFile`` and their units."""
 
 ACTUATOR_MANUFACTURER = "Harmonic Drive"
 """The maker of every actuator of the catalogue (its families' data sheets)."""
@@ -130,16 +122,17 @@ Localize = Callable[[str], str]
 
 @dataclass(frozen=True, slots=True)
 class SizingRecord:
-    """One selection as an Asset Administration Shell with its sizing submodel."""
+    """A selection (one drive train) or a machine project (one per axis) as an Asset
+    Administration Shell with its sizing submodels, and the files its AASX holds."""
 
     shell: model.AssetAdministrationShell
-    submodel: model.Submodel
-    motion_csv: bytes
-    request_json: bytes
+    submodels: tuple[model.Submodel, ...]
+    files: Mapping[str, tuple[bytes, str]]
+    """Path in the AASX → (content, media type): the motion files and the request."""
 
     def store(self) -> model.DictIdentifiableStore[model.Identifiable]:
-        """The shell and the submodel, as BaSyx's writers take them."""
-        return model.DictIdentifiableStore([self.shell, self.submodel])
+        """The shell and the submodels, as BaSyx's writers take them."""
+        return model.DictIdentifiableStore([self.shell, *self.submodels])
 
 
 def semantic_id(id_short: str) -> model.ExternalReference:
@@ -203,46 +196,9 @@ def _entity(
     )
 
 
-def motion_rows(pieces: Iterable[Piece]) -> list[tuple[float, float, float, float]]:
-    """(t [s], θ [rad], ω [rad/s], α [rad/s²]) at the start and end of every piece.
-
-    Within a piece the acceleration is constant or linear (``core.motion.Piece``), so
-    θ(t) = θ₀ + ω₀·t + α₀·t²/2 + (α₁ − α₀)·t²/6 is exact; where the acceleration jumps
-    between pieces the file has two rows at the same time.
-
-    The worked example (Table 516.1) turns 40 rpm·(0.1/2 + 0.1 + 0.1/2) s = 0.8378 rad:
-
-    >>> from actuator_selection.core.cycle import Load, SpeedPattern
-    >>> from actuator_selection.core.selection import Application
-    >>> pattern = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1,
-    ...                        pause_s=1.0)
-    >>> app = Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3))
-    >>> rows = motion_rows(pieces_of(app.cycle))
-    >>> [round(v, 4) for v in rows[-1]]
-    [1.3, 0.8378, 0.0, 0.0]
-    """
-    rows: list[tuple[float, float, float, float]] = []
-    time_s = angle_rad = 0.0
-    for p in pieces:
-        w0, w1 = rpm_to_rad_per_s(p.start_rpm), rpm_to_rad_per_s(p.end_rpm)
-        rows.append((time_s, angle_rad, w0, p.accel_start))
-        t = p.duration_s
-        angle_rad += w0 * t + p.accel_start * t * t / 2 + (p.accel_end - p.accel_start) * t * t / 6
-        time_s += t
-        rows.append((time_s, angle_rad, w1, p.accel_end))
-    return rows
-
-
-def motion_csv(rows: Iterable[tuple[float, ...]]) -> bytes:
-    """The motion file as IDTA 02021 §2.2.2 defines it: a heading line of ``idShort
-    [unit]``, ``;`` between columns, floats with a decimal point (Python's shortest repr,
-    so each value reads back exactly)."""
-    lines = [";".join(f"{name} [{unit}]" for name, unit in MOTION_COLUMNS)]
-    lines += [";".join(repr(float(v)) for v in row) for row in rows]
-    return ("\r\n".join(lines) + "\r\n").encode()
-
-
-def _rotative_section(stored: StoredSelection, request: SelectionRequest) -> list[Any]:
+def _rotative_section(
+    stored: StoredSelection, request: SelectionRequest, motion_file: str
+) -> list[Any]:
     load, bearing = stored.load, request.output_load
     gravity = getattr(request.load, "gravity_torque_nm", None)
     metadata = [
@@ -272,7 +228,7 @@ def _rotative_section(stored: StoredSelection, request: SelectionRequest) -> lis
         model.File(
             "MotionSectionFile",
             content_type="text/csv",
-            value=MOTION_FILE,
+            value=motion_file,
             semantic_id=semantic_id("MotionSectionFile"),
         ),
     ]
@@ -290,7 +246,7 @@ def _feed_constant_m(mechanism: Mapping[str, Any]) -> float | None:
     return None
 
 
-def _mechanism(selection_id: str, mechanism: Mapping[str, Any] | None) -> list[model.Entity]:
+def _mechanism(urn: str, mechanism: Mapping[str, Any] | None) -> list[model.Entity]:
     kind = None if mechanism is None else _MECHANISMS.get(str(mechanism.get("type")))
     if mechanism is None or kind is None:
         return []
@@ -303,7 +259,7 @@ def _mechanism(selection_id: str, mechanism: Mapping[str, Any] | None) -> list[m
         *_real("FeedConstant", _feed_constant_m(mechanism) if kind != "RotraryTable" else None),
         *_real("DiameterPinion", None if pinion is None else pinion / 1000),
     ]
-    asset = f"urn:actuator-selection:selection:{selection_id}:mechanism"
+    asset = f"{urn}:mechanism"
     return [_entity(kind, statements, global_asset_id=asset)]
 
 
@@ -323,11 +279,13 @@ def _service_life_h(checks: list[CheckOut]) -> float | None:
 
 
 @dataclass(frozen=True, slots=True)
-class _Chosen:
+class ChosenCandidate:
     """The chosen candidate in full, its check messages in each language."""
 
     checks: list[CheckOut]
     messages: Mapping[str, list[str]]
+    reasons: Mapping[str, list[str]]
+    """What keeps the verdict from "suitable", in each language."""
     detail: Any
 
 
@@ -364,9 +322,12 @@ def _utilisations(checks: Iterable[Any]) -> list[model.Property]:
     return out
 
 
-def _main_components(chosen: _Chosen, others: Iterable[StoredCandidate]) -> list[model.Entity]:
-    """The chosen actuator (01) with its controller (02), then every other suitable
-    candidate of the selection (03, …) with the utilisations its stored checks give."""
+def _main_components(
+    chosen: ChosenCandidate, others: Iterable[StoredCandidate], controller: tuple[str, str] | None
+) -> list[model.Entity]:
+    """The chosen actuator (01) with its controller (02: manufacturer and article), then
+    every other suitable candidate of the selection (03, …) with the utilisations its
+    stored checks give."""
     d = chosen.detail
     checks = chosen.checks
     actuator = _actuator(
@@ -381,16 +342,14 @@ def _main_components(chosen: _Chosen, others: Iterable[StoredCandidate]) -> list
         ],
     )
     components = [actuator]
-    controllers = [c for c in d.controllers if c.level != "excluded"]
-    if controllers:
-        c = controllers[0]
-        article = c.type if c.variant is None else f"{c.type} {c.variant}"
+    if controller is not None:
+        manufacturer, article = controller
         components.append(
             _entity(
                 "MainComponent02",
                 [
                     _text("MainComponentType", "Drive controller"),
-                    _text("ManufacturerName", c.manufacturer),
+                    _text("ManufacturerName", manufacturer),
                     _text("ManufacturerArticleNumber", article),
                     _text("ManufacturerOrderCode", article),
                 ],
@@ -437,7 +396,7 @@ def _no_data(id_short: str) -> model.Property:
     )
 
 
-def _messages(chosen: _Chosen) -> model.SubmodelElementCollection:
+def _messages(chosen: ChosenCandidate) -> model.SubmodelElementCollection:
     """Each check of the chosen candidate that failed, warned, lacked data or passed only
     approximately, its words in English and German."""
     entries = []
@@ -456,6 +415,170 @@ def _messages(chosen: _Chosen) -> model.SubmodelElementCollection:
                 semantic_id=semantic_id("Message"),
             )
             for n, (crit, text) in enumerate(entries, start=1)
+        ],
+    )
+
+
+def _best_controller(chosen: ChosenCandidate) -> tuple[str, str] | None:
+    """The first controller Table 521.1 does not exclude for the chosen candidate."""
+    controllers = [c for c in chosen.detail.controllers if c.level != "excluded"]
+    if not controllers:
+        return None
+    c = controllers[0]
+    return c.manufacturer, c.type if c.variant is None else f"{c.type} {c.variant}"
+
+
+def chosen_of(details: Mapping[str, Any]) -> ChosenCandidate:
+    first = next(iter(details.values()))
+    return ChosenCandidate(
+        checks=first.checks,
+        messages={lang: [c.message for c in d.checks] for lang, d in details.items()},
+        reasons={lang: d.reasons for lang, d in details.items()},
+        detail=first,
+    )
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class SizingProject:
+    """What SizingProjectInformation says of the sizing."""
+
+    client_name: str
+    name: str
+    description: str
+    link: str
+    request_file: str
+    created: Any
+    changed: Any
+
+
+def _information(p: SizingProject) -> model.SubmodelElementCollection:
+    return _collection(
+        "SizingProjectInformation",
+        [
+            _text("ClientName", p.client_name),
+            _text("SizingProjectName", p.name),
+            _words("SizingProjectDescription", {"en": p.description}),
+            model.File(
+                "SizingProjectLink01",
+                content_type="application/json",
+                value=p.link,
+                semantic_id=semantic_id("SizingProjectLink"),
+            ),
+            model.File(
+                "SizingProjectLink02",
+                content_type="application/json",
+                value=p.request_file,
+                semantic_id=semantic_id("SizingProjectLink"),
+            ),
+            _text("SizingToolName", SIZING_TOOL),
+            model.Property(
+                "DateCreated",
+                value_type=model.datatypes.DateTime,
+                value=p.created,
+                semantic_id=semantic_id("DateCreated"),
+            ),
+            model.Property(
+                "DateChanged",
+                value_type=model.datatypes.DateTime,
+                value=p.changed,
+                semantic_id=semantic_id("DateChanged"),
+            ),
+            _collection("ContactInformation", []),
+        ],
+    )
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class DriveTrain:
+    """One drive train to write: a load case sized, its chosen actuator and controller."""
+
+    id: str
+    project: SizingProject
+    stored: StoredSelection
+    request: SelectionRequest
+    chosen: ChosenCandidate
+    controller: tuple[str, str] | None
+    others: list[StoredCandidate]
+    motion_file: str
+    label: str
+    """What the text statement names: the model, or the axis and its model."""
+    energy_in_kwh: float | None = None
+    """Energy drawn from the DC bus per cycle (a machine project's axis); None: no data."""
+
+
+def drive_train(t: DriveTrain) -> model.Submodel:
+    """The IDTA 02021 submodel of one drive train (module docstring)."""
+    stored, request, chosen = t.stored, t.request, t.chosen
+    first = chosen.detail
+    requirements = _collection(
+        "ApplicationRequirements",
+        [
+            _collection(
+                "MotionPattern",
+                [
+                    _text(
+                        "MotionPatternName",
+                        "trapezoid" if stored.cycle.is_trapezoid else "segments",
+                    ),
+                    _collection(
+                        "MotionPatternSections",
+                        [
+                            _collection(
+                                "RotativeSection", _rotative_section(stored, request, t.motion_file)
+                            )
+                        ],
+                    ),
+                ],
+            ),
+            _collection(
+                "OverallSystemRequirements",
+                [_text("BrakePresent", "true" if request.brake else "false")],
+            ),
+        ],
+    )
+    mechanism = _mechanism(t.id.removesuffix(":sizing"), stored.mechanism)
+    no_data = [n for n in NO_DATA if not (n == "EnergyConsumtionPerCycle" and t.energy_in_kwh)]
+    overall = _entity(
+        "OverallSystem",
+        [
+            *_real("ExternalMomentOfInertia", stored.load.inertia_kgm2),
+            *_real("InternalMomentOfIntertia", first.actuator.inertia_kgm2),
+            *_real(
+                "MassInertiaRatio", getattr(_check(chosen.checks, "inertia_ratio"), "value", None)
+            ),
+            *_real("EnergyConsumtionPerCycle", t.energy_in_kwh),
+            *[_no_data(name) for name in no_data],
+        ],
+    )
+    result = _collection(
+        "SizingResult",
+        [
+            overall,
+            *_main_components(chosen, t.others, t.controller),
+            _messages(chosen),
+            _words(
+                "TextStatement",
+                {
+                    lang: f"{t.label}: {first.verdict}"
+                    + ("" if not reasons else " — " + "; ".join(reasons))
+                    for lang, reasons in chosen.reasons.items()
+                },
+            ),
+        ],
+    )
+    return model.Submodel(
+        t.id,
+        id_short="PowerDriveTrainSizing",
+        semantic_id=model.ExternalReference(
+            (model.Key(model.KeyTypes.GLOBAL_REFERENCE, SUBMODEL_SEMANTIC_ID),)
+        ),
+        administration=model.AdministrativeInformation(version="1", revision="0"),
+        kind=model.ModellingKind.INSTANCE,
+        submodel_element=[
+            _information(t.project),
+            requirements,
+            *([_collection("TransformationMechanism", mechanism)] if mechanism else []),
+            result,
         ],
     )
 
@@ -491,145 +614,53 @@ def sizing_record(
             selection_id=selection_id,
             **({"models": usable[:SHOWN_CANDIDATES]} if usable else {}),
         )
-    details = {
-        lang: candidate_detail(session, catalogue, selection_id, chosen_model, localize)
-        for lang, localize in localizers.items()
-    }
-    first = next(iter(details.values()))
-    chosen = _Chosen(
-        checks=first.checks,
-        messages={lang: [c.message for c in d.checks] for lang, d in details.items()},
-        detail=first,
+    chosen = chosen_of(
+        {
+            lang: candidate_detail(session, catalogue, selection_id, chosen_model, localize)
+            for lang, localize in localizers.items()
+        }
     )
-    rows = motion_rows(pieces_of(app.profile.motion))
-
-    created = stored.created_at
-    trapezoid = stored.cycle.is_trapezoid
-    information = _collection(
-        "SizingProjectInformation",
-        [
-            _text("ClientName", client_name),
-            _text("SizingProjectName", project_name or f"Selection {selection_id}"),
-            _words(
-                "SizingProjectDescription",
-                {
-                    "en": f"Harmonic Drive servo actuator selection {selection_id}, "
-                    f"catalogue version {stored.catalogue_version}",
-                },
-            ),
-            model.File(
-                "SizingProjectLink01",
-                content_type="application/json",
-                value=link,
-                semantic_id=semantic_id("SizingProjectLink"),
-            ),
-            model.File(
-                "SizingProjectLink02",
-                content_type="application/json",
-                value=REQUEST_FILE,
-                semantic_id=semantic_id("SizingProjectLink"),
-            ),
-            _text("SizingToolName", SIZING_TOOL),
-            model.Property(
-                "DateCreated",
-                value_type=model.datatypes.DateTime,
-                value=created,
-                semantic_id=semantic_id("DateCreated"),
-            ),
-            model.Property(
-                "DateChanged",
-                value_type=model.datatypes.DateTime,
-                value=created,
-                semantic_id=semantic_id("DateChanged"),
-            ),
-            _collection("ContactInformation", []),
-        ],
+    project = SizingProject(
+        client_name=client_name,
+        name=project_name or f"Selection {selection_id}",
+        description=f"Harmonic Drive servo actuator selection {selection_id}, "
+        f"catalogue version {stored.catalogue_version}",
+        link=link,
+        request_file=REQUEST_FILE,
+        created=stored.created_at,
+        changed=stored.created_at,
     )
-    requirements = _collection(
-        "ApplicationRequirements",
-        [
-            _collection(
-                "MotionPattern",
-                [
-                    _text("MotionPatternName", "trapezoid" if trapezoid else "segments"),
-                    _collection(
-                        "MotionPatternSections",
-                        [_collection("RotativeSection", _rotative_section(stored, request))],
-                    ),
-                ],
-            ),
-            _collection(
-                "OverallSystemRequirements",
-                [_text("BrakePresent", "true" if request.brake else "false")],
-            ),
-        ],
-    )
-    mechanism = _mechanism(selection_id, stored.mechanism)
-    actuator_inertia = first.actuator.inertia_kgm2
-    overall = _entity(
-        "OverallSystem",
-        [
-            *_real("ExternalMomentOfInertia", stored.load.inertia_kgm2),
-            *_real("InternalMomentOfIntertia", actuator_inertia),
-            *_real(
-                "MassInertiaRatio", getattr(_check(chosen.checks, "inertia_ratio"), "value", None)
-            ),
-            *[_no_data(name) for name in NO_DATA],
-        ],
-    )
-    verdicts = {lang: d.reasons for lang, d in details.items()}
-    result = _collection(
-        "SizingResult",
-        [
-            overall,
-            *_main_components(
-                chosen,
-                [
-                    c
-                    for c in stored.candidates
-                    if c.verdict == "suitable" and c.model != chosen_model
-                ],
-            ),
-            _messages(chosen),
-            _words(
-                "TextStatement",
-                {
-                    lang: f"{chosen_model}: {first.verdict}"
-                    + ("" if not reasons else " — " + "; ".join(reasons))
-                    for lang, reasons in verdicts.items()
-                },
-            ),
-        ],
-    )
-    submodel = model.Submodel(
-        f"urn:actuator-selection:selection:{selection_id}:sizing",
-        id_short="PowerDriveTrainSizing",
-        semantic_id=model.ExternalReference(
-            (model.Key(model.KeyTypes.GLOBAL_REFERENCE, SUBMODEL_SEMANTIC_ID),)
-        ),
-        administration=model.AdministrativeInformation(version="1", revision="0"),
-        kind=model.ModellingKind.INSTANCE,
-        submodel_element=[
-            information,
-            requirements,
-            *([_collection("TransformationMechanism", mechanism)] if mechanism else []),
-            result,
-        ],
-    )
-    shell = model.AssetAdministrationShell(
-        model.AssetInformation(
-            model.AssetKind.INSTANCE,
-            global_asset_id=f"urn:actuator-selection:selection:{selection_id}",
-        ),
-        f"urn:actuator-selection:selection:{selection_id}:aas",
-        id_short="SizingProject",
-        submodel={model.ModelReference.from_referable(submodel)},
+    submodel = drive_train(
+        DriveTrain(
+            id=f"urn:actuator-selection:selection:{selection_id}:sizing",
+            project=project,
+            stored=stored,
+            request=request,
+            chosen=chosen,
+            controller=_best_controller(chosen),
+            others=[
+                c for c in stored.candidates if c.verdict == "suitable" and c.model != chosen_model
+            ],
+            motion_file=MOTION_FILE,
+            label=chosen_model,
+        )
     )
     return SizingRecord(
-        shell=shell,
-        submodel=submodel,
-        motion_csv=motion_csv(rows),
-        request_json=json.dumps(stored_request[0]).encode(),
+        shell=shell_of(f"urn:actuator-selection:selection:{selection_id}", [submodel]),
+        submodels=(submodel,),
+        files={
+            MOTION_FILE: (motion_csv(motion_rows(pieces_of(app.profile.motion))), "text/csv"),
+            REQUEST_FILE: (json.dumps(stored_request[0]).encode(), "application/json"),
+        },
+    )
+
+
+def shell_of(asset: str, submodels: Iterable[model.Submodel]) -> model.AssetAdministrationShell:
+    return model.AssetAdministrationShell(
+        model.AssetInformation(model.AssetKind.INSTANCE, global_asset_id=asset),
+        f"{asset}:aas",
+        id_short="SizingProject",
+        submodel={model.ModelReference.from_referable(s) for s in submodels},
     )
 
 
@@ -651,12 +682,11 @@ def record_json(record: SizingRecord) -> bytes:
 
 
 def record_aasx(record: SizingRecord) -> bytes:
-    """The record as an AASX package, the motion file at :data:`MOTION_FILE` and the
-    request at :data:`REQUEST_FILE`; the model
+    """The record as an AASX package with its files (the motion files, the request); the model
     as XML, which BaSyx writes without the JSON encoder's empty lists."""
     files = aasx.DictSupplementaryFileContainer()  # type: ignore[no-untyped-call]
-    files.add_file(MOTION_FILE, io.BytesIO(record.motion_csv), "text/csv")
-    files.add_file(REQUEST_FILE, io.BytesIO(record.request_json), "application/json")
+    for path, (content, media_type) in record.files.items():
+        files.add_file(path, io.BytesIO(content), media_type)
     buffer = io.BytesIO()
     with aasx.AASXWriter(buffer) as writer:
         writer.write_aas(record.shell.id, record.store(), files)

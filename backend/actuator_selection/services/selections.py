@@ -355,6 +355,20 @@ def candidate_detail(
     """One candidate of a stored selection in full, computed again from its load case
     (:func:`stored_candidate`), its check messages in words by ``localize``."""
     body, actuator = stored_candidate(session, catalogue, selection_id, model, what="the detail")
+    return detail_of(session, catalogue, body, actuator, selection_id, localize)
+
+
+def detail_of(
+    session: Session,
+    catalogue: CatalogueSnapshot,
+    body: SelectionRequest,
+    actuator: Actuator,
+    selection_id: str,
+    localize: Localize = english,
+) -> CandidateDetailOut:
+    """``actuator`` in full for the load case ``body`` (a stored selection's, or a machine
+    project's axis, named ``selection_id`` in the answer)."""
+    model = actuator.model
     record = CatalogueRepository(session).actuator(model)
     if record is None:  # pragma: no cover - the snapshot and the table agree
         raise NotFoundError("model", f"no actuator {model!r}", where="path")

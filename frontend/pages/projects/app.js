@@ -3,7 +3,7 @@
 // holds: each axis's electrical power stacked over the machine cycle and the bus's
 // figures. It computes no engineering result.
 
-import { createClient, encodePath } from "../../lib/api.js";
+import { API, createClient, encodePath } from "../../lib/api.js";
 import { byId, h } from "../../lib/dom.js";
 import { qty } from "../../lib/format.js";
 import { LANGS, applyStaticTexts, initialLang, rememberLang, translate } from "../../lib/i18n.js";
@@ -357,6 +357,7 @@ async function render() {
   if (!project) return;
   byId("results").hidden = false;
   /** @type {HTMLAnchorElement} */ (byId("permalink")).href = `/projects.html?id=${encodeURIComponent(project.id)}`;
+  /** @type {HTMLAnchorElement} */ (byId("aas-link")).href = `${API}/projects/${encodeURIComponent(project.id)}/aas.aasx`;
   renderTables(project);
   offerControllers(project);
   await renderChart(project);
