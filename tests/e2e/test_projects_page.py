@@ -76,3 +76,36 @@ def test_an_unknown_actuator_is_refused_at_its_axis(page: Page) -> None:
     expect(page.locator("#status")).to_contain_text("Refused", timeout=SLOW_MS)
     expect(page.locator("#axis-1-model")).to_have_attribute("aria-invalid", "true")
     expect(page.locator("#axis-0-model")).not_to_have_attribute("aria-invalid", "true")
+
+
+def test_a_controller_is_chosen_per_axis_from_the_matching_ones(
+    page: Page, base_url: str, traffic: Traffic
+) -> None:
+    page.goto("/projects.html")
+    expect(page.locator("html[data-ready='true']")).to_have_count(1)
+    page.get_by_role("button", name="English").click()
+    page.get_by_role("button", name="Example: pick-and-place (three axes)").click()
+    page.get_by_label("Name", exact=True).fill("Cell 9")
+    page.get_by_role("button", name="Size the machine").click()
+    expect(page).to_have_url(re.compile(r"\?id=[0-9a-f-]{36}$"), timeout=SLOW_MS)
+    project_id = page.url.split("=")[-1]
+    stored = httpx.get(f"{base_url}/api/v1/projects/{project_id}").json()
+    # the choice offers exactly the controllers the answer lists for the axis
+    listed = [str(c["source_row"]) for c in stored["axes"][0]["controllers"]]
+    assert listed
+    select = page.locator("#axis-0-controller")
+    expect(select.locator("option")).to_have_count(len(listed) + 1)
+    select.select_option(listed[0])
+    page.get_by_role("button", name="Size the machine").click()
+    expect(page.locator("#status")).to_have_text("3 axis/axes sized and stored.", timeout=SLOW_MS)
+    edited = httpx.get(f"{base_url}/api/v1/projects/{project_id}").json()
+    assert edited["request"]["axes"][0]["controller"] == int(listed[0])
+    cell = page.locator("#axes-table tbody tr").nth(0).locator("td").nth(3)
+    expect(cell).to_contain_text(edited["axes"][0]["controller"]["name"])
+    expect(page.locator("#quote-link")).to_have_attribute(
+        "href", f"/sales.html?project={project_id}"
+    )
+    aasx = page.locator("#aas-link").get_attribute("href")
+    assert aasx == f"/api/v1/projects/{project_id}/aas.aasx"
+    assert httpx.get(f"{base_url}{aasx}").status_code == 200
+    assert not traffic.console_errors

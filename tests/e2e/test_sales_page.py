@@ -20,6 +20,7 @@ from tests.api._sales_fixtures import (
     EXAMPLE_PRICE_LIST,
     WORKED_EXAMPLE,
 )
+from tests.api.test_projects import PICK_AND_PLACE_CELL
 
 from .conftest import SalesSite
 
@@ -520,3 +521,36 @@ def test_a_quote_is_asked_for_only_once_the_price_lists_are_in(
     expect(page.locator("#f-price-list")).to_have_value(EXAMPLE_PRICE_LIST)
     page.click("#create-quote")
     expect(page.locator("#created")).to_contain_text("EUR", timeout=SLOW_MS)
+
+
+def test_a_machine_project_is_quoted_with_a_line_per_axis(
+    sales_page: Page, site: SalesSite
+) -> None:
+    response = httpx.post(f"{site.url}/api/v1/projects", json=PICK_AND_PLACE_CELL, timeout=60)
+    assert response.status_code == 201, response.text
+    project = response.json()
+    page = sales_page
+    page.goto(f"/sales.html?project={project['id']}")
+    sign_in(page, site.sales_key)
+    expect(page.locator("#quote-form")).to_be_visible(timeout=SLOW_MS)
+    expect(page.locator("#actuator-fields")).to_be_hidden()
+    axes = page.locator("#project-axes fieldset")
+    expect(axes).to_have_count(3)
+    page.fill("#f-customer", "Muster GmbH")
+    page.fill("#f-axis-1-ctrl-name", "SINAMICS S120, 400 V")
+    page.fill("#f-axis-1-ctrl-code", "CTRL-SINAMICS-S120")
+    page.click("#create-quote")
+    number_el = page.locator("#created .quote-number")
+    expect(number_el).to_be_visible(timeout=SLOW_MS)
+    number = number_el.inner_text()
+    quote = httpx.get(
+        f"{site.url}/api/v1/quotes/{number}",
+        headers={"Authorization": f"Bearer {site.sales_key}"},
+    ).json()
+    assert quote["project_id"] == project["id"]
+    assert [(i["axis"], i["kind"]) for i in quote["items"]] == [
+        ("Z", "actuator"),
+        ("X", "actuator"),
+        ("X", "controller"),
+        ("C", "actuator"),
+    ]

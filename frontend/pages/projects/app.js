@@ -357,6 +357,7 @@ async function render() {
   if (!project) return;
   byId("results").hidden = false;
   /** @type {HTMLAnchorElement} */ (byId("permalink")).href = `/projects.html?id=${encodeURIComponent(project.id)}`;
+  /** @type {HTMLAnchorElement} */ (byId("quote-link")).href = `/sales.html?project=${encodeURIComponent(project.id)}`;
   /** @type {HTMLAnchorElement} */ (byId("aas-link")).href = `${API}/projects/${encodeURIComponent(project.id)}/aas.aasx`;
   renderTables(project);
   offerControllers(project);

@@ -20,6 +20,8 @@ const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
 const state = {
   lang: "en",
   selection: null,
+  /** a machine project being quoted (a line per axis) instead of a selection */
+  project: null,
   idempotencyKey: newIdempotencyKey(),
   priceLists: [],
   /** the quotes listed, in the order shown */
@@ -311,8 +313,75 @@ function selectionReference(text) {
   return { id: text, model: null };
 }
 
+/** Show the quote form for a selection (one actuator and controller) or a project (a line
+ * per axis). @param {boolean} project */
+function formFor(project) {
+  byId("actuator-fields").hidden = project;
+  byId("controller-fields").hidden = project;
+  byId("project-axes").hidden = !project;
+  if (!project) byId("project-axes").replaceChildren();
+}
+
+/** One axis of a project on the quote form: its quantity and its controller line. */
+function axisFields(axis, k) {
+  const id = (what) => `f-axis-${k}-${what}`;
+  const err = (what) => `err-axis-${k}-${what}`;
+  const field = (what, label, attrs, narrow = false) =>
+    h(
+      "div",
+      { class: narrow ? "field narrow" : "field" },
+      h("label", { for: id(what) }, t(label)),
+      h("input", { id: id(what), "aria-describedby": err(what), ...attrs }),
+      h("p", { class: "field-error", id: err(what), hidden: true }),
+    );
+  const controller = axis.controller;
+  return h(
+    "fieldset",
+    { class: "project-axis", dataset: { axis: String(k) } },
+    h("legend", {}, t("sales.project.axis", { name: axis.name || String(k + 1), model: axis.model })),
+    field("qty", "sales.quantity", { type: "text", inputmode: "numeric", "data-number": true, value: "1" }, true),
+    controller ? h("p", { class: "hint" }, t("sales.project.controller", { name: controller.name, row: controller.source_row })) : null,
+    field("ctrl-name", "sales.controller.type", { maxlength: 200, value: controller ? controller.name : "" }),
+    field("ctrl-code", "sales.controller.code", { maxlength: 80, list: "controller-codes", spellcheck: "false" }),
+  );
+}
+
+/** A stored machine project to quote: a line per axis. */
+async function loadProject(id) {
+  clearErrors();
+  byId("created").hidden = true;
+  byId("selection-summary").hidden = true;
+  let project;
+  try {
+    project = await api.get(encodePath`/projects/${id}`);
+  } catch (error) {
+    showFieldError("err-selection_id", () => errorText(error));
+    return;
+  }
+  state.project = project;
+  state.selection = null;
+  const box = byId("selection-summary");
+  show(box, () => [h("h3", {}, t("sales.project.heading", { name: project.request.name, n: project.axes.length }))]);
+  box.hidden = false;
+  formFor(true);
+  byId("project-axes").replaceChildren(...project.axes.map(axisFields));
+  const form = byId("quote-form");
+  const create = byIdAs("create-quote", HTMLButtonElement);
+  form.hidden = false;
+  form.setAttribute("aria-busy", "true");
+  create.disabled = true;
+  try {
+    await loadPriceLists();
+  } finally {
+    form.removeAttribute("aria-busy");
+    create.disabled = false;
+  }
+}
+
 async function loadSelection(id, model = null) {
   clearErrors();
+  state.project = null;
+  formFor(false);
   byId("created").hidden = true;
   byId("selection-summary").hidden = true;
   byId("quote-form").hidden = true;
@@ -413,11 +482,28 @@ function text(id) {
   return el instanceof HTMLInputElement || el instanceof HTMLTextAreaElement ? el.value.trim() : "";
 }
 
+/** The project's axes as the quote request takes them: a quantity and, where a code is
+ * given, a controller line. */
+function axesBody() {
+  return state.project.axes.map((_, k) => {
+    const f = (what) => `f-axis-${k}-${what}`;
+    const axis = { quantity: numberOf(f("qty")) };
+    if (text(f("ctrl-code"))) axis.controller = { type_name: text(f("ctrl-name")), item_code: text(f("ctrl-code")) };
+    return axis;
+  });
+}
+
 function requestBody() {
+  const source = state.project
+    ? { project_id: state.project.id, axes: axesBody() }
+    : {
+        selection_id: state.selection.id,
+        actuator: { model: byIdAs("f-model", HTMLSelectElement).value, quantity: numberOf("f-qty") },
+      };
+  /** @type {Record<string, any>} */
   const body = {
-    selection_id: state.selection.id,
+    ...source,
     customer: { name: text("f-customer") },
-    actuator: { model: byIdAs("f-model", HTMLSelectElement).value, quantity: numberOf("f-qty") },
     price_list: byIdAs("f-price-list", HTMLSelectElement).value,
     // a decimal as the API reads it ("7,5" → "7.5"), kept as text: money is never a float
     discount_percent: readField(byId("f-discount")).decimal || "0",
@@ -425,7 +511,7 @@ function requestBody() {
   };
   if (text("f-address")) body.customer.address = byIdAs("f-address", HTMLTextAreaElement).value;
   if (text("f-reference")) body.customer.reference = text("f-reference");
-  if (text("f-ctrl-name") || text("f-ctrl-code")) {
+  if (!state.project && (text("f-ctrl-name") || text("f-ctrl-code"))) {
     body.controller = {
       type_name: text("f-ctrl-name"),
       item_code: text("f-ctrl-code"),
@@ -467,8 +553,9 @@ function errorId(input) {
 async function createQuote(event) {
   event.preventDefault();
   clearErrors();
-  const controller = Boolean(text("f-ctrl-name") || text("f-ctrl-code"));
-  const numbers = ["f-qty", "f-discount", ...(controller ? ["f-ctrl-qty"] : [])].map(byId);
+  const controller = !state.project && Boolean(text("f-ctrl-name") || text("f-ctrl-code"));
+  const quantities = state.project ? state.project.axes.map((_, k) => `f-axis-${k}-qty`) : ["f-qty"];
+  const numbers = [...quantities, "f-discount", ...(controller ? ["f-ctrl-qty"] : [])].map(byId);
   // every refusal is named at once; nothing is sent while one stands
   const refused = numbers.filter(refuseNumber).length > 0;
   if (!text("f-customer") || refused) {
@@ -738,7 +825,9 @@ async function start() {
 async function afterSignIn() {
   const params = new URLSearchParams(location.search);
   const selection = params.get("selection");
-  if (selection) {
+  const project = params.get("project");
+  if (project) await loadProject(project);
+  else if (selection) {
     byIdAs("selection-id", HTMLInputElement).value = selection;
     await loadSelection(selection, params.get("model"));
   }
