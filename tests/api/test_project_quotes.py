@@ -152,6 +152,9 @@ def test_refusals_name_the_field(api: SalesApi) -> None:
 
     both = _quote_body(api, project)
     both["selection_id"] = api.selection(models=["FHA-25C-50-L"])["id"]
-    response = api.post("/api/v1/quotes", json=both)
+    response = api.client.post(
+        "/api/v1/quotes", json=both, headers=api.headers("sales", **{"Accept-Language": "de"})
+    )
     assert response.status_code == 422
     assert response.json()["detail"][0]["type"] == "quote_source"
+    assert "Maschinenprojekt" in response.json()["detail"][0]["msg"]

@@ -42,7 +42,7 @@ from actuator_selection.core.messages import MESSAGES as DOMAIN_MESSAGES
 from actuator_selection.core.messages import N_, Text, listed
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
 from actuator_selection.schemas.quantities import QUANTITY_MESSAGES
-from actuator_selection.schemas.quotes import DECIMAL_TEXT_RULE
+from actuator_selection.schemas.quotes import DECIMAL_TEXT_RULE, PROJECT_OR_SELECTION
 from actuator_selection.schemas.selections import LOAD_TYPES
 from actuator_selection.services.messages import CONTROLLER_RULE, PRICE_KINDS, USE_CASE_MESSAGES
 
@@ -257,6 +257,7 @@ PYDANTIC_MESSAGES: Final[Mapping[str, str]] = {
     "mechanism_type": N_("type must be one of {expected}"),
     "cycle_form": N_("cycle must be the t_1…t_p pattern, a list of segments or a profile's id"),
     "decimal_text": DECIMAL_TEXT_RULE,
+    "quote_source": PROJECT_OR_SELECTION,
 }
 """pydantic's error types (and the schemas' own) → template over their ``ctx``."""
 

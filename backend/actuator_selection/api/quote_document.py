@@ -366,6 +366,8 @@ def quote_document_context(
         (t.words("inertia"), num(actuator.get("inertia_kgm2"), "kgm²", t)),
         (t.words("stall_torque"), num(actuator.get("stall_torque_nm"), "Nm", t)),
     ]
+    if quote.project_id is not None:  # each axis's actuator: in the axes table
+        catalogue_rows = []
     version_note = (
         t("version_note", old=quote.selection_catalogue_version, new=quote.catalogue_version)
         if quote.selection_catalogue_version != quote.catalogue_version
