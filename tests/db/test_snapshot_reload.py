@@ -6,10 +6,15 @@ from __future__ import annotations
 from collections.abc import Callable
 from datetime import UTC, datetime
 
+import numpy as np
 from sqlalchemy.orm import Session
 
+from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS, INTERFACES
+from actuator_selection.core.csvio import Record
+from actuator_selection.core.engine import catalogue_arrays
 from actuator_selection.db.admin import CatalogueAdminRepository, ZonePointIn
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+from actuator_selection.db.seed import CatalogueFiles
 from actuator_selection.services.catalogue import CatalogueSnapshot
 
 CHANGED = "FHA-25C-50-L"
@@ -19,13 +24,38 @@ def _read(session: Session, held: CatalogueSnapshot | None = None) -> CatalogueS
     return CatalogueSnapshot.read(session, CatalogueVersionRepository(session).current(), held)
 
 
+def _imported(session: Session, change: Callable[[str, dict[str, object]], None]) -> bool:
+    """Import the catalogue as exported, each row passed through ``change(file, values)``."""
+    exported = CatalogueAdminRepository(session).export()
+    for file, rows in exported.items():
+        for values in rows:
+            change(file, values)
+    files = CatalogueFiles(
+        {s.file: [Record(line=0, values=v) for v in exported[s.file]] for s in CATALOGUE_SPECS}
+    )
+    return CatalogueAdminRepository(session).import_catalogue(files, dry_run=False).changed
+
+
+def _torque_by_import(file: str, values: dict[str, object]) -> None:
+    if file == ACTUATORS.file and values["model"] == CHANGED:
+        values["max_torque_nm"] = 152.0
+
+
+def _interface_by_import(file: str, values: dict[str, object]) -> None:
+    if file == INTERFACES.file and values["actuator_model"] == CHANGED:
+        values["temperature_sensors"] = None
+
+
 def test_an_incremental_read_equals_a_full_read_after_each_change(session: Session) -> None:
     held = _read(session)
+    held.arrays(held.actuators)  # the whole catalogue's arrays, which the next read splices
     repository = CatalogueAdminRepository(session)
     record = CatalogueRepository(session).actuator(CHANGED)
     assert record is not None
     values = dict(record.values)
     changes: list[Callable[[], bool]] = [
+        lambda: _imported(session, _torque_by_import),
+        lambda: _imported(session, _interface_by_import),
         lambda: repository.save_actuator({**values, "max_torque_nm": 150.0}),
         lambda: repository.set_zone(
             CHANGED,
@@ -38,9 +68,17 @@ def test_an_incremental_read_equals_a_full_read_after_each_change(session: Sessi
     ]
     for change in changes:
         assert change()
+        read, retired = CatalogueRepository(session).engine_actuators(since=held.version)
+        assert read.keys() | retired <= {CHANGED}  # only what changed is read again
         fresh = _read(session, held)
         full = _read(session)
         assert fresh.actuators == full.actuators
+        spliced, built = fresh.arrays(fresh.actuators), catalogue_arrays(full.actuators)
+        assert spliced.operands.keys() == built.operands.keys()
+        for name, column in built.operands.items():
+            assert np.array_equal(spliced.operands[name], column, equal_nan=True), name
+        assert np.array_equal(spliced.rank_position, built.rank_position)
+        assert np.array_equal(spliced.heating_slope, built.heating_slope, equal_nan=True)
         assert fresh.controllers == full.controllers
         assert dict(fresh.interfaces) == dict(full.interfaces)
         unchanged = [a for a in held.actuators if a.model != CHANGED]

@@ -41,7 +41,7 @@ from actuator_selection.db.models import (
     SensorPointRow,
     ZonePointRow,
 )
-from actuator_selection.db.repositories import CatalogueVersionRepository
+from actuator_selection.db.repositories import CatalogueVersionRepository, mark_changed
 from actuator_selection.db.seed import CatalogueFiles, apply_catalogue, zone_problems
 from actuator_selection.db.seed_controllers import controller_name_problems
 
@@ -224,6 +224,7 @@ class CatalogueAdminRepository:
             ZonePointRow(speed_rpm=s, torque_nm=t, source=src) for s, t, src in want
         )
         self._session.flush()
+        mark_changed(self._session, [row.id])
         CatalogueVersionRepository(self._session).bump()
         return True
 
@@ -258,6 +259,7 @@ class CatalogueAdminRepository:
             changed = set_values(row, stored) or changed
         self._session.flush()
         if changed:
+            mark_changed(self._session, [actuator_id])
             CatalogueVersionRepository(self._session).bump()
         return changed
 

@@ -45,8 +45,9 @@ def sync_rows(
     changes: FileChanges,
     *,
     withdraw: Callable[[Any], bool] | None = None,
-) -> None:
-    """Upsert ``rows`` of ``model`` matched on the attributes ``key``, counting into ``changes``.
+) -> list[tuple[Any, ...]]:
+    """Upsert ``rows`` of ``model`` matched on the attributes ``key``, counting into
+    ``changes``; the keys of the rows inserted, changed or withdrawn.
 
     ``withdraw``, when given, is called with every stored row the given rows do
     not hold (the file is the whole table): it retires or deletes the row and
@@ -70,26 +71,33 @@ def sync_rows(
         existing[tuple(row[1 : 1 + width])] = (row[0], tuple(row[1 + width :]))
     inserts: list[Mapping[str, Any]] = []
     updates: list[dict[str, Any]] = []
+    touched: list[tuple[Any, ...]] = []
     for values in given:
-        stored = existing.pop(tuple(values[k] for k in key), None)
+        its = tuple(values[k] for k in key)
+        stored = existing.pop(its, None)
         if stored is None:
             inserts.append(values)
+            touched.append(its)
             changes.inserted += 1
             continue
         changed = tuple(values[n] for n in names) != stored[1]
         if changed:
             updates.append({"_row_id": stored[0], **values})
+            touched.append(its)
         changes.count(is_new=False, changed=changed)
     for batch in batches(inserts):
         session.execute(insert(table), batch)
     for batch in batches(updates):
         session.execute(update(table).where(table.c.id == bindparam("_row_id")), batch)
     if withdraw is not None and existing:
-        ids = [row_id for row_id, _ in existing.values()]
-        for batch in batches(ids):
+        keys = {row_id: its for its, (row_id, _) in existing.items()}
+        for batch in batches(list(keys)):
             for row in session.scalars(select(model).where(table.c.id.in_(batch))):
-                changes.retired += bool(withdraw(row))
+                if withdraw(row):
+                    changes.retired += 1
+                    touched.append(keys[row.id])
     session.flush()
+    return touched
 
 
 def retire_at(now: datetime) -> Callable[[Any], bool]:

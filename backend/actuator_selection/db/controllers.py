@@ -81,8 +81,11 @@ class ProtectionRepository:
         )
         return None if row is None else _controller_record(row)
 
-    def interfaces(self, models: list[str] | None = None) -> dict[str, InterfaceRecord]:
-        """Matching data by actuator model (every listed model, with None where unknown)."""
+    def interfaces(
+        self, models: list[str] | None = None, *, since: int | None = None
+    ) -> dict[str, InterfaceRecord]:
+        """Matching data by actuator model (every listed model, with None where unknown);
+        with ``since``, of the actuators changed after that catalogue version only."""
         table = ActuatorInterfaceRow
         stmt = (
             select(
@@ -100,6 +103,8 @@ class ProtectionRepository:
         )
         if models is not None:
             stmt = stmt.where(ActuatorRow.model.in_(models))
+        if since is not None:
+            stmt = stmt.where(ActuatorRow.changed_version > since)
         # A catalogue has a handful of distinct interfaces: each is built once (64,000
         # actuators are read after every catalogue change).
         built: dict[tuple[str, str | None, str | None, str | None, bool], ActuatorInterface] = {}

@@ -7,7 +7,7 @@ where its numbers came from.
 from __future__ import annotations
 
 import functools
-from collections.abc import Collection, Mapping, Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import asdict, dataclass, fields
 from datetime import UTC, datetime
 from types import MappingProxyType
@@ -20,6 +20,7 @@ from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.catalogue import ActuatorRecord, FamilyRecord
 from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS, ENGINE_FIELDS
 from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.db.changes import batches
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorRow,
@@ -70,10 +71,6 @@ def _to_record(row: ActuatorRow) -> ActuatorRecord:
     )
 
 
-EngineRow = tuple[tuple[Any, ...], tuple[tuple[float, float], ...]]
-"""An actuator's stored engine values (in the order of ``ENGINE_FIELDS``, the model first)
-and its zone's points (speed, torque): what its :class:`Actuator` is built from."""
-
 _VALUES = ActuatorRow.__table__.c
 """The catalogue values' columns, by name (generated from their declarations)."""
 
@@ -116,55 +113,51 @@ class CatalogueRepository:
             stmt = stmt.limit(query.limit)
         return [_to_record(row) for row in self._session.scalars(stmt)]
 
-    def engine_actuators(
-        self, held: Mapping[str, tuple[EngineRow, Actuator]] | None = None
-    ) -> dict[str, tuple[EngineRow, Actuator]]:
-        """Every active actuator as the engine reads it (the fields marked ``engine``, the
-        zone) with its stored values, by model in model order: two plain queries (Core,
-        no ORM rows).
+    def engine_actuators(self, since: int | None = None) -> tuple[dict[str, Actuator], set[str]]:
+        """The active actuators as the engine reads them (the fields marked ``engine``, the
+        zone), by model, and the models retired: with ``since``, only the actuators
+        changed after that catalogue version (``ActuatorRow.changed_version``), else every
+        active one. Two plain queries (Core, no ORM rows).
 
         This is the catalogue snapshot's read (``services/catalogue.py``), done by each
-        process after every catalogue change. An actuator whose stored values are those it
-        has in ``held`` (the previous read) is that object again, so a change of a few actuators
-        builds only those: building ORM rows and full records for 64,000 actuators took
-        6.7 s a process.
+        process after every catalogue change: a change of a few actuators reads those.
         """
         columns = [
             ActuatorFamilyRow.name if f.name == "family" else _VALUES[f.name] for f in ENGINE_FIELDS
         ]
-        active = ActuatorRow.retired_at.is_(None)
-        zones: dict[str, list[tuple[float, float]]] = {}
+        wanted = (
+            ActuatorRow.retired_at.is_(None)
+            if since is None
+            else ActuatorRow.changed_version > since
+        )
+        zones: dict[str, list[ZonePoint]] = {}
         connection = self._session.connection()
         points = connection.execute(
             select(ActuatorRow.model, ZonePointRow.speed_rpm, ZonePointRow.torque_nm)
             .join(ZonePointRow, ZonePointRow.actuator_id == ActuatorRow.id)
-            .where(active)
+            .where(wanted)
             .order_by(ActuatorRow.model, ZonePointRow.speed_rpm)
         ).all()  # fetchall: iterating a result fetches row by row, 3× slower here
         for model, speed, torque in points:
-            zones.setdefault(model, []).append((speed, torque))
+            zones.setdefault(model, []).append(ZonePoint(speed_rpm=speed, torque_nm=torque))
         names = [f.name for f in ENGINE_FIELDS]
         rows = connection.execute(
-            select(*columns).join(ActuatorRow.family).where(active).order_by(ActuatorRow.model)
+            select(ActuatorRow.retired_at.is_not(None), *columns)
+            .join(ActuatorRow.family)
+            .where(wanted)
+            .order_by(ActuatorRow.model)
         ).all()
-        held = held or {}
-        out: dict[str, tuple[EngineRow, Actuator]] = {}
-        for row in rows:
-            key = (tuple(row), tuple(zones.get(row[0], ())))
-            before = held.get(row[0])
-            if before is not None and before[0] == key:
-                out[row[0]] = before
+        active: dict[str, Actuator] = {}
+        retired: set[str] = set()
+        for gone, *values in rows:
+            model = values[0]
+            if gone:
+                retired.add(model)
                 continue
-            values, its = key
-            zone = (
-                ContinuousDutyZone(
-                    points=tuple(ZonePoint(speed_rpm=s, torque_nm=t) for s, t in its)
-                )
-                if its
-                else None
-            )
-            out[row[0]] = (key, Actuator(zone=zone, **dict(zip(names, values, strict=True))))
-        return out
+            its = zones.get(model)
+            zone = None if its is None else ContinuousDutyZone(points=tuple(its))
+            active[model] = Actuator(zone=zone, **dict(zip(names, values, strict=True)))
+        return active, retired
 
     def actuator(self, model: str) -> ActuatorRecord | None:
         """One actuator by its model, or None."""
@@ -231,8 +224,25 @@ class CatalogueVersionRepository:
         if updated is None:
             self._session.add(CatalogueStateRow(id=1, version=1, changed_at=now))
             self._session.flush()
-            return 1
+            updated = 1
+        # The actuators this transaction changed (ActuatorRow.changed_version NULL) now
+        # carry the version that changed them.
+        self._session.execute(
+            update(ActuatorRow)
+            .where(ActuatorRow.changed_version.is_(None))
+            .values(changed_version=updated)
+        )
         return updated
+
+
+def mark_changed(session: Session, actuator_ids: Collection[int]) -> None:
+    """Mark the actuators ``actuator_ids`` as changed by this transaction (their zone or
+    interface, which lives in other tables): the transaction's ``bump`` stamps them, so
+    every process reads them again. A change of an actuator's own row marks it by itself."""
+    for batch in batches(list(actuator_ids)):
+        session.execute(
+            update(ActuatorRow).where(ActuatorRow.id.in_(batch)).values(changed_version=None)
+        )
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

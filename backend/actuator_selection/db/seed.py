@@ -50,7 +50,7 @@ from actuator_selection.core.csvio import (
 )
 from actuator_selection.db.changes import batches, retire_at, sync_rows
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow
-from actuator_selection.db.repositories import CatalogueVersionRepository
+from actuator_selection.db.repositories import CatalogueVersionRepository, mark_changed
 from actuator_selection.db.seed_controllers import apply_protection, protection_problems
 
 
@@ -303,6 +303,7 @@ def _apply_zones(
         have.setdefault(actuator_id, []).append((speed, torque, source))
     emptied: list[int] = []
     inserts: list[dict[str, Any]] = []
+    changed: list[int] = []
     for model, given in wanted.items():
         actuator_id = ids[model]
         old = sorted(have.get(actuator_id, []))
@@ -310,6 +311,7 @@ def _apply_zones(
         if old == new:
             zon.unchanged += len(new)
             continue
+        changed.append(actuator_id)
         if old:
             emptied.append(actuator_id)
         inserts.extend(
@@ -327,6 +329,7 @@ def _apply_zones(
         session.execute(delete(points).where(points.c.actuator_id.in_(batch)))
     for batch in batches(inserts):
         session.execute(insert(points), batch)
+    mark_changed(session, changed)
     session.flush()
 
 

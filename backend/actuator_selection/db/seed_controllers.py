@@ -37,6 +37,7 @@ from actuator_selection.db.models import (
     SensorFittingRow,
     SensorPointRow,
 )
+from actuator_selection.db.repositories import mark_changed
 
 
 def controller_name_problems(
@@ -144,7 +145,9 @@ def apply_protection(
     interface for when it comes back. Without ``replace`` nothing is retired or removed.
     """
     family_ids = {f.name: f.id for f in session.scalars(select(ActuatorFamilyRow))}
-    actuator_ids = {a.model: a.id for a in session.scalars(select(ActuatorRow))}
+    actuator_ids: dict[str, int] = dict(
+        session.execute(select(ActuatorRow.model, ActuatorRow.id)).all()
+    )
 
     def stored(spec: CsvSpec, convert: Callable[[dict[str, Any]], dict[str, Any]]) -> list[Any]:
         return [convert(dict(r.values)) for r in rows[spec.file]]
@@ -189,7 +192,7 @@ def apply_protection(
             delete_in(session, keep=lambda r: r.actuator_id not in listed),
         ),
     ):
-        sync_rows(
+        touched = sync_rows(
             session,
             model,
             key,
@@ -197,3 +200,5 @@ def apply_protection(
             changes[spec.file],
             withdraw=withdraw if replace else None,
         )
+        if spec is INTERFACES:
+            mark_changed(session, [actuator_id for (actuator_id,) in touched])

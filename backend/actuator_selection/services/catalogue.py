@@ -28,11 +28,7 @@ from actuator_selection.core.drive import DriveOptions, drive_options, shared_bu
 from actuator_selection.core.electrical import DcBusClass
 from actuator_selection.core.engine import CatalogueArrays, catalogue_arrays
 from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.repositories import (
-    CatalogueRepository,
-    CatalogueVersionRepository,
-    EngineRow,
-)
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,23 +71,19 @@ class CatalogueSnapshot:
     _excluded_by_model: dict[str, int] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )
-    _rows: Mapping[str, tuple[EngineRow, Actuator]] = field(
-        default_factory=dict, repr=False, compare=False
-    )
-    """The actuators (before the bus voltage) with their stored values, by model: what
-    the next version's read reuses."""
-    _with_bus: Mapping[str, tuple[EngineRow, ActuatorInterface | None, Actuator]] = field(
-        default_factory=dict, repr=False, compare=False
-    )
-    """:attr:`actuators` with the stored values and interface they were built from, by
-    model, reused while the controllers and bus classes are the same."""
+    _by_model: Mapping[str, Actuator] = field(default_factory=dict, repr=False, compare=False)
+    """:attr:`actuators` by model, in the same order: what the next version's read reuses
+    for every actuator not changed since."""
 
     def excluded_by_model(self) -> Mapping[str, int]:
         """:meth:`excluded` of every actuator's interface, by model, built once."""
         found = self._excluded_by_model
         if not found:
-            counts = {a.model: self.excluded(self.interfaces[a.model]) for a in self.actuators}
-            found.update(counts)
+            interfaces = self.interfaces
+            # A handful of distinct interfaces, each (per read) one object.
+            distinct = {id(i): i for i in interfaces.values()}
+            by_interface = {key: self.excluded(i) for key, i in distinct.items()}
+            found.update((m, by_interface[id(interfaces[m])]) for m in self._by_model)
         return found
 
     def arrays(self, actuators: tuple[Actuator, ...]) -> CatalogueArrays:
@@ -160,61 +152,74 @@ class CatalogueSnapshot:
     ) -> CatalogueSnapshot:
         """Read the catalogue in ``session``'s transaction (pinned at ``version``).
 
-        With ``held`` (the snapshot of an earlier version) the read is incremental where it
-        costs: every row is read, but an actuator whose stored values, zone and interface
-        are unchanged is ``held``'s object again (and so is the matching, when the
-        controllers and bus classes are), so a change builds only what changed.
+        With ``held`` (the snapshot of an earlier version) the read is incremental: only
+        the actuators changed since ``held``'s version are read and built
+        (``ActuatorRow.changed_version``); every other one is ``held``'s object again (so
+        is the matching, when the controllers and bus classes are the same), and so are
+        its columns in the engine's arrays of the whole catalogue.
         """
         repo = ProtectionRepository(session)
         buses = tuple(repo.bus_classes())
-        interfaces = {model: r.interface for model, r in repo.interfaces(None).items()}
         controllers = tuple(r.controller for r in repo.controllers())
+        since = held.version if held is not None and held.version < version else None
+        interfaces = dict(held.interfaces) if held is not None and since is not None else {}
+        interfaces.update(
+            (model, r.interface) for model, r in repo.interfaces(None, since=since).items()
+        )
         same = held is not None and held.controllers == controllers and held.buses == buses
         matching: dict[ActuatorInterface, CompatibilityResult] = {}
-        for interface in interfaces.values():
+        # A catalogue has a handful of distinct interfaces, each one object.
+        for interface in {id(i): i for i in interfaces.values()}.values():
             if interface not in matching:
                 found = held._matching.get(interface) if same and held is not None else None
                 matching[interface] = found or match_controllers(
                     actuator=interface, controllers=controllers
                 )
-        rows = CatalogueRepository(session).engine_actuators(
-            held._rows if held is not None else None
-        )
-        kept = held._with_bus if same and held is not None else {}
-        with_bus: dict[str, tuple[EngineRow, ActuatorInterface | None, Actuator]] = {}
-        for model, (key, actuator) in rows.items():
+        changed, retired = CatalogueRepository(session).engine_actuators(since)
+        kept: Mapping[str, Actuator] = {}
+        if held is not None and since is not None:
+            kept = {m: a for m, a in held._by_model.items() if m not in retired}
+        by_model: dict[str, Actuator] = {}
+        for model in sorted(kept.keys() | changed.keys()):
+            actuator = changed.get(model)
+            if actuator is None:
+                actuator = kept[model]
+                if same:
+                    by_model[model] = actuator
+                    continue
+                actuator = replace(actuator, dc_bus_voltage_v=None)
             its = interfaces.get(model)
-            before = kept.get(model)
-            if before is not None and before[0] is key and before[1] == its:
-                with_bus[model] = before
-                continue
-            built = with_bus_voltage(actuator, its, buses, None if its is None else matching[its])
-            with_bus[model] = (key, its, built)
-        return cls(
+            by_model[model] = with_bus_voltage(
+                actuator, its, buses, None if its is None else matching[its]
+            )
+        fresh = cls(
             version=version,
-            actuators=tuple(a for _, _, a in with_bus.values()),
+            actuators=tuple(by_model.values()),
             controllers=controllers,
             buses=buses,
             interfaces=MappingProxyType(interfaces),
             _matching=matching,
-            _rows=rows,
-            _with_bus=with_bus,
+            _by_model=by_model,
         )
+        if held is not None and since is not None:
+            whole = held._arrays.get(tuple(held._by_model))
+            if whole is not None:  # the whole catalogue's, built from those held
+                fresh._arrays[tuple(by_model)] = catalogue_arrays(
+                    fresh.actuators, (held.actuators, whole)
+                )
+        return fresh
 
     def has_all(self, models: Iterable[str] | None) -> bool:
         """True when every one of ``models`` is an active actuator here (None: the
         whole catalogue, always true)."""
-        if models is None:
-            return True
-        held = {a.model for a in self.actuators}
-        return all(m in held for m in models)
+        return models is None or all(m in self._by_model for m in models)
 
     def actuators_of(self, models: Iterable[str] | None) -> list[Actuator]:
         """The active actuators, or those of ``models`` that exist, ordered by model."""
         if models is None:
             return list(self.actuators)
-        wanted = set(models)
-        return [a for a in self.actuators if a.model in wanted]
+        held = self._by_model
+        return [held[m] for m in sorted(set(models)) if m in held]
 
 
 def with_bus_voltage(

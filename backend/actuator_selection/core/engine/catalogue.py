@@ -82,6 +82,9 @@ class CatalogueArrays:
     """The columns of the actuators with a continuous-duty zone."""
     rank_position: npt.NDArray[np.int32]
     """Each actuator's place in the static order (T_max, J_A, model) that breaks ties."""
+    columns: dict[str, FloatArray | BoolArray] = dataclasses_field(default_factory=dict)
+    """Every column as read from the actuators (the operands and the fields they are
+    ranked and heated by), what the next catalogue's arrays copy from."""
     lacking: dict[Rule, tuple[CodeArray, BoolArray, bool]] = dataclasses_field(default_factory=dict)
     """Per rule, where the catalogue misses its requirements (``block.lacking``), filled
     when the rule is first evaluated against these actuators."""
@@ -99,37 +102,73 @@ class CatalogueArrays:
         return self.inertia.size
 
 
-def catalogue_arrays(actuators: Sequence[Actuator]) -> CatalogueArrays:
-    """The actuators as the engine reads them (:data:`CATALOGUE_OPERANDS`, by name); build
-    once per catalogue and pass to the engine to spare it per request."""
-    operands: dict[str, FloatArray | BoolArray] = {
+def _columns(actuators: Sequence[Actuator]) -> dict[str, FloatArray | BoolArray]:
+    """The columns read from the actuators one by one: the operands, ``has_zone``, and
+    τ_th and the ranking's T_max and J_A under their field names."""
+    columns: dict[str, FloatArray | BoolArray] = {
         name: optional([getattr(a, field) for a in actuators]) for name, field in PUBLISHED_OPERANDS
     }
-    operands.update(
+    columns.update(
         (name, optional([value(a) for a in actuators])) for name, value in DERIVED_OPERANDS.items()
     )
-    has_zone = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
-    operands["has_zone"] = has_zone
+    columns["has_zone"] = np.array([a.zone is not None for a in actuators], dtype=np.bool_)
+    for name in ("thermal_time_constant_s", "max_torque_nm", "inertia_kgm2"):
+        columns[f"field:{name}"] = optional([getattr(a, name) for a in actuators])
+    return columns
+
+
+Columns = dict[str, FloatArray | BoolArray]
+
+
+def _spliced(actuators: Sequence[Actuator], held: tuple[Sequence[Actuator], Columns]) -> Columns:
+    """:func:`_columns` of ``actuators``, taken from ``held`` (the columns of earlier
+    actuators) for each actuator that is the same object there, read for the others."""
+    before, columns = held
+    at = {id(a): j for j, a in enumerate(before)}
+    take = np.array([at.get(id(a), -1) for a in actuators], dtype=np.intp)
+    fresh = np.flatnonzero(take < 0)
+    kept = np.flatnonzero(take >= 0)
+    read = _columns([actuators[int(i)] for i in fresh])
+    out: dict[str, FloatArray | BoolArray] = {}
+    for name, column in columns.items():
+        joined = np.empty_like(column, shape=len(actuators))
+        joined[kept] = column[take[kept]]
+        joined[fresh] = read[name]
+        out[name] = joined
+    return out
+
+
+def catalogue_arrays(
+    actuators: Sequence[Actuator],
+    previous: tuple[Sequence[Actuator], CatalogueArrays] | None = None,
+) -> CatalogueArrays:
+    """The actuators as the engine reads them (:data:`CATALOGUE_OPERANDS`, by name); build
+    once per catalogue and pass to the engine to spare it per request.
+
+    ``previous``: the arrays of earlier actuators (the catalogue before a change); an
+    actuator that is the same object there is not read again, its values are copied.
+    """
+    if previous is None:
+        columns = _columns(actuators)
+    else:
+        columns = _spliced(actuators, (previous[0], previous[1].columns))
+    has_zone = columns["has_zone"].astype(np.bool_, copy=False)
     # ranking_key after the verdict: T_max, then J_A (unknown last), then the model name;
-    # the column index mirrors sorted()'s stability for equal keys.
-    inf = math.inf
-    order = sorted(
-        range(len(actuators)),
-        key=lambda j: (
-            inf if actuators[j].max_torque_nm is None else actuators[j].max_torque_nm,
-            inf if actuators[j].inertia_kgm2 is None else actuators[j].inertia_kgm2,
-            actuators[j].model,
-            j,
-        ),
-    )
+    # lexsort is stable, so equal keys keep their column order.
+    models = np.array([a.model for a in actuators], dtype=np.str_)
+    torque = np.nan_to_num(columns["field:max_torque_nm"], nan=math.inf)
+    inertia = np.nan_to_num(columns["field:inertia_kgm2"], nan=math.inf)
+    order = np.lexsort((models, inertia, torque))
     rank_position = np.empty(len(actuators), dtype=np.int32)
     rank_position[order] = np.arange(len(actuators), dtype=np.int32)
+    operands = {k: v for k, v in columns.items() if not k.startswith("field:")}
     slope = operands["no_load_torque_slope_nm_per_rpm"]
     on_current = ~has_zone & ~np.isnan(operands["stall_torque_nm"])
     return CatalogueArrays(
         operands=operands,
-        thermal_time_constant=optional([a.thermal_time_constant_s for a in actuators]),
+        thermal_time_constant=columns["field:thermal_time_constant_s"].astype(np.float64),
         heating_slope=np.where(on_current, slope, math.nan),
         zone_columns=np.flatnonzero(has_zone),
         rank_position=rank_position,
+        columns=columns,
     )

@@ -9,7 +9,16 @@ from __future__ import annotations
 from datetime import datetime
 from typing import TYPE_CHECKING, Any
 
-from sqlalchemy import DateTime, Float, ForeignKey, Integer, String, Text, UniqueConstraint
+from sqlalchemy import (
+    DateTime,
+    Float,
+    ForeignKey,
+    Integer,
+    String,
+    Text,
+    UniqueConstraint,
+    null,
+)
 from sqlalchemy.orm import Mapped, MappedColumn, mapped_column, relationship
 from sqlalchemy.types import TypeEngine
 
@@ -57,6 +66,15 @@ class ActuatorRow(Base):
     family_id: Mapped[int] = mapped_column(ForeignKey("actuator_families.id"), index=True)
     retired_at: Mapped[datetime | None] = mapped_column(DateTime(timezone=True))
     """Set when the actuator is withdrawn: it leaves listings and selections, stays for quotes."""
+    changed_version: Mapped[int | None] = mapped_column(
+        Integer, index=True, default=None, onupdate=null()
+    )
+    """The catalogue version that last changed the actuator, its zone or its interface, so
+    a process reads only the actuators changed since the version it holds. NULL while the
+    change's transaction has not raised the version yet: every insert and update of the
+    row sets it (``onupdate``), a change of the zone or interface sets it explicitly
+    (:func:`~actuator_selection.db.repositories.mark_changed`), and raising the version
+    stamps every NULL with the new one (``CatalogueVersionRepository.bump``)."""
 
     family: Mapped[ActuatorFamilyRow] = relationship(back_populates="actuators")
     zone_points: Mapped[list[ZonePointRow]] = relationship(
