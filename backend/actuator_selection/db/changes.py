@@ -7,6 +7,7 @@ counts are :class:`~actuator_selection.core.changes.FileChanges`.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from datetime import datetime
 from typing import Any
@@ -55,13 +56,16 @@ def sync_rows(
 
     The stored rows are compared as plain tuples and written by batched INSERTs and
     UPDATEs (no ORM object per row), so that importing 64,000 actuators holds no
-    64,000 tracked objects; only the rows withdrawn are loaded as objects. Every row of
-    ``rows`` holds the same attributes (one file's columns), which are the table's columns.
+    64,000 tracked objects; only the rows withdrawn are loaded as objects. ``rows`` is
+    consumed once, each batch written as it fills, so a generator of rows is never held
+    whole. Every row holds the same attributes (one file's columns), which are the
+    table's columns.
     """
     session.flush()
     table = model.__table__
-    given = list(rows)
-    names = list(given[0]) if given else []
+    given = iter(rows)
+    first = next(given, None)
+    names = [] if first is None else list(first)
     existing: dict[tuple[Any, ...], tuple[int, tuple[Any, ...]]] = {}
     found = session.execute(
         select(table.c.id, *(table.c[k] for k in key), *(table.c[n] for n in names))
@@ -72,23 +76,27 @@ def sync_rows(
     inserts: list[Mapping[str, Any]] = []
     updates: list[dict[str, Any]] = []
     touched: list[tuple[Any, ...]] = []
-    for values in given:
+    adding, changing = insert(table), update(table).where(table.c.id == bindparam("_row_id"))
+    for values in itertools.chain(() if first is None else (first,), given):
         its = tuple(values[k] for k in key)
         stored = existing.pop(its, None)
         if stored is None:
             inserts.append(values)
             touched.append(its)
             changes.inserted += 1
-            continue
-        changed = tuple(values[n] for n in names) != stored[1]
-        if changed:
-            updates.append({"_row_id": stored[0], **values})
-            touched.append(its)
-        changes.count(is_new=False, changed=changed)
-    for batch in batches(inserts):
-        session.execute(insert(table), batch)
-    for batch in batches(updates):
-        session.execute(update(table).where(table.c.id == bindparam("_row_id")), batch)
+        else:
+            changed = tuple(values[n] for n in names) != stored[1]
+            if changed:
+                updates.append({"_row_id": stored[0], **values})
+                touched.append(its)
+            changes.count(is_new=False, changed=changed)
+        for statement, pending in ((adding, inserts), (changing, updates)):
+            if len(pending) >= BATCH_ROWS:
+                session.execute(statement, pending)
+                pending.clear()
+    for statement, pending in ((adding, inserts), (changing, updates)):
+        if pending:
+            session.execute(statement, pending)
     if withdraw is not None and existing:
         keys = {row_id: its for its, (row_id, _) in existing.items()}
         for batch in batches(list(keys)):

@@ -245,7 +245,7 @@ def apply_catalogue(
         session,
         ActuatorFamilyRow,
         ("name",),
-        [r.values for r in files[FAMILIES]],
+        [dict(r.values) for r in files[FAMILIES]],
         changes.files[FAMILIES.file],
     )
     family_ids = {f.name: f.id for f in session.scalars(select(ActuatorFamilyRow))}
@@ -260,7 +260,7 @@ def apply_catalogue(
         session,
         ActuatorRow,
         ("model",),
-        [actuator(dict(r.values)) for r in files[ACTUATORS]],
+        (actuator(dict(r.values)) for r in files[ACTUATORS]),
         changes.files[ACTUATORS.file],
         withdraw=retire_at(now) if replace else None,
     )

@@ -8,7 +8,7 @@ controller-side files must agree on across rows and how they are stored.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 from datetime import datetime
 from typing import Any
 
@@ -149,8 +149,10 @@ def apply_protection(
         session.execute(select(ActuatorRow.model, ActuatorRow.id)).all()
     )
 
-    def stored(spec: CsvSpec, convert: Callable[[dict[str, Any]], dict[str, Any]]) -> list[Any]:
-        return [convert(dict(r.values)) for r in rows[spec.file]]
+    def stored(
+        spec: CsvSpec, convert: Callable[[dict[str, Any]], dict[str, Any]]
+    ) -> Iterator[dict[str, Any]]:
+        return (convert(dict(r.values)) for r in rows[spec.file])
 
     def controller(v: dict[str, Any]) -> dict[str, Any]:
         return {**v, "retired_at": None} if replace else v
