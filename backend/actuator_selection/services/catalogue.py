@@ -162,36 +162,36 @@ class CatalogueSnapshot:
         buses = tuple(repo.bus_classes())
         controllers = tuple(r.controller for r in repo.controllers())
         since = held.version if held is not None and held.version < version else None
-        interfaces = dict(held.interfaces) if held is not None and since is not None else {}
-        interfaces.update(
-            (model, r.interface) for model, r in repo.interfaces(None, since=since).items()
-        )
+        base = held if since is not None else None
+        changed_interfaces = {
+            model: r.interface for model, r in repo.interfaces(None, since=since).items()
+        }
+        interfaces = dict(base.interfaces) if base is not None else {}
+        interfaces.update(changed_interfaces)
         same = held is not None and held.controllers == controllers and held.buses == buses
-        matching: dict[ActuatorInterface, CompatibilityResult] = {}
-        # A catalogue has a handful of distinct interfaces, each one object.
-        for interface in {id(i): i for i in interfaces.values()}.values():
+        # A catalogue has a handful of distinct interfaces: each matched once, and kept
+        # while the controllers and bus classes are the same.
+        matching = dict(held._matching) if same and held is not None else {}
+        for interface in set((changed_interfaces if same else interfaces).values()):
             if interface not in matching:
-                found = held._matching.get(interface) if same and held is not None else None
-                matching[interface] = found or match_controllers(
-                    actuator=interface, controllers=controllers
-                )
+                matching[interface] = match_controllers(actuator=interface, controllers=controllers)
         changed, retired = CatalogueRepository(session).engine_actuators(since)
-        kept: Mapping[str, Actuator] = {}
-        if held is not None and since is not None:
-            kept = {m: a for m, a in held._by_model.items() if m not in retired}
-        by_model: dict[str, Actuator] = {}
-        for model in sorted(kept.keys() | changed.keys()):
-            actuator = changed.get(model)
-            if actuator is None:
-                actuator = kept[model]
-                if same:
-                    by_model[model] = actuator
-                    continue
-                actuator = replace(actuator, dc_bus_voltage_v=None)
+        # The held actuators (in model order), less those changed or retired since; with
+        # other controllers or bus classes each is built again from its stored values.
+        by_model = dict(base._by_model) if base is not None else {}
+        for model in retired:
+            by_model.pop(model, None)
+        if not same:
+            by_model = {m: replace(a, dc_bus_voltage_v=None) for m, a in by_model.items()}
+            changed = {**by_model, **changed}
+        for model, actuator in changed.items():
             its = interfaces.get(model)
             by_model[model] = with_bus_voltage(
                 actuator, its, buses, None if its is None else matching[its]
             )
+        if changed.keys() - (base._by_model.keys() if base is not None else set()):
+            # new models: ordered again (the held ones are in order, a run for the sort)
+            by_model = {m: by_model[m] for m in sorted(by_model)}
         fresh = cls(
             version=version,
             actuators=tuple(by_model.values()),
