@@ -19,7 +19,9 @@ reading it; the page warms plotly.js up meanwhile, ``warmCharts`` in app.js) and
 A reference load (the bare ``index.html`` with JavaScript off: HTML and CSS, to the
 ``load`` event) is timed the same way in each run, and *charts / reference* is printed
 as a ratio, so figures from different machines can be compared. Each figure is the
-median of ``--runs`` runs (after one warm-up run that also warms the server).
+median of ``--runs`` runs (after one warm-up run that also warms the server). Then the
+same runs again with the page's CPU slowed ``--slowdown`` times (4: Chrome DevTools'
+``Emulation.setCPUThrottlingRate``, a slow laptop or phone), reference included.
 
 Needs Debian's Chromium (``CHROMIUM_PATH``, else ``chromium`` on the PATH, else
 ``/usr/bin/chromium``); no browser is downloaded.
@@ -44,7 +46,7 @@ from pathlib import Path
 from typing import Any, cast
 
 import httpx
-from playwright.sync_api import Browser, sync_playwright
+from playwright.sync_api import Browser, BrowserContext, Page, sync_playwright
 
 import actuator_selection
 from actuator_selection.config import SEED_DIR
@@ -61,7 +63,7 @@ CHROMIUM_ARGS = [
     "--no-first-run",
     "--disable-quic",
 ]
-START_TIMEOUT_S = 30.0
+START_TIMEOUT_S = 120.0
 STEP_TIMEOUT_MS = 60_000
 PAUSE_MS = 1500
 """How long the second load's user reads the form before using it."""
@@ -183,11 +185,18 @@ def served(database_url: str) -> Iterator[str]:
             process.wait(10)
 
 
-def reference_load(browser: Browser, base_url: str) -> float:
+def _slowed(context: BrowserContext, page: Page, slowdown: float) -> None:
+    """Slow ``page``'s CPU ``slowdown`` times (1: as it is)."""
+    if slowdown != 1:
+        context.new_cdp_session(page).send("Emulation.setCPUThrottlingRate", {"rate": slowdown})
+
+
+def reference_load(browser: Browser, base_url: str, slowdown: float = 1) -> float:
     """The bare index.html (HTML and CSS, no script) to its ``load`` event, cold."""
     context = browser.new_context(base_url=base_url, java_script_enabled=False)
     try:
         page = context.new_page()
+        _slowed(context, page, slowdown)
         page.goto("/index.html", wait_until="load")
         # the page's scripts are off, not Playwright's evaluation
         timing = page.evaluate("() => performance.getEntriesByType('navigation')[0].loadEventEnd")
@@ -196,7 +205,9 @@ def reference_load(browser: Browser, base_url: str) -> float:
         context.close()
 
 
-def charts_load(browser: Browser, base_url: str, pause_ms: int = 0) -> dict[str, Any]:
+def charts_load(
+    browser: Browser, base_url: str, pause_ms: int = 0, slowdown: float = 1
+) -> dict[str, Any]:
     """``/`` cold, the worked example submitted (after ``pause_ms`` with the form
     untouched): the page's times in ms and what its plotly warm-up did."""
     context = browser.new_context(
@@ -206,6 +217,7 @@ def charts_load(browser: Browser, base_url: str, pause_ms: int = 0) -> dict[str,
     try:
         context.add_init_script(WATCH_PAGE)
         page = context.new_page()
+        _slowed(context, page, slowdown)
         page.goto("/", wait_until="commit")
         page.wait_for_selector("#results-body .notice", state="attached")
         if pause_ms:
@@ -225,11 +237,11 @@ def charts_load(browser: Browser, base_url: str, pause_ms: int = 0) -> dict[str,
         context.close()
 
 
-def measure(browser: Browser, base_url: str) -> Run:
+def measure(browser: Browser, base_url: str, slowdown: float = 1) -> Run:
     """One run: the reference load, the page to both charts at once, and after a pause."""
-    reference = reference_load(browser, base_url)
-    eager = charts_load(browser, base_url)
-    paused = charts_load(browser, base_url, PAUSE_MS)
+    reference = reference_load(browser, base_url, slowdown)
+    eager = charts_load(browser, base_url, slowdown=slowdown)
+    paused = charts_load(browser, base_url, PAUSE_MS, slowdown)
     return Run(
         form_ready_ms=float(eager["form"]),
         charts_ms=float(eager["charts"]),
@@ -254,6 +266,9 @@ def main() -> None:
     """Run the benchmark and print its figures."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=7, help="measured runs (median), default 7")
+    parser.add_argument(
+        "--slowdown", type=float, default=4, help="CPU slowdown of the second set, default 4"
+    )
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="bench-page-") as tmp:
         database_url = seeded_database(Path(tmp))
@@ -266,13 +281,20 @@ def main() -> None:
             try:
                 measure(browser, base_url)  # warm-up: server caches, Chromium's start
                 runs = [measure(browser, base_url) for _ in range(args.runs)]
+                slowed = [measure(browser, base_url, args.slowdown) for _ in range(args.runs)]
             finally:
                 browser.close()
+    _report(runs, "")
+    _report(slowed, f", CPU slowed {args.slowdown:g}×")
+
+
+def _report(runs: list[Run], condition: str) -> None:
+    """Print the medians of ``runs``."""
     form = statistics.median(r.form_ready_ms for r in runs)
     charts = statistics.median(r.charts_ms for r in runs)
     reference = statistics.median(r.reference_ms for r in runs)
     ratio = statistics.median(r.charts_ms / r.reference_ms for r in runs)
-    print(f"cold load, median of {len(runs)} runs (ms since navigation start):")
+    print(f"cold load{condition}, median of {len(runs)} runs (ms since navigation start):")
     print(f"  reference: bare index.html, no script, to load   {reference:8.1f} ms")
     print(f"  engineer's page: form ready                      {form:8.1f} ms")
     print(f"  engineer's page: worked example, both charts     {charts:8.1f} ms")
