@@ -2848,7 +2848,7 @@ export interface components {
              * Status
              * @enum {string}
              */
-            status: "pass" | "fail" | "warn" | "no_data";
+            status: "pass" | "fail" | "warn" | "no_data" | "not_applicable";
             /** Value */
             value: number | null;
             /** Limit */
@@ -2884,7 +2884,7 @@ export interface components {
              */
             unit: string;
             /** Status */
-            status: ("pass" | "fail" | "warn" | "no_data")[];
+            status: ("pass" | "fail" | "warn" | "no_data" | "not_applicable")[];
             /** Value */
             value: (number | null)[];
             /** Limit */
@@ -2911,7 +2911,7 @@ export interface components {
              * Status
              * @enum {string}
              */
-            status: "pass" | "fail" | "warn" | "no_data";
+            status: "pass" | "fail" | "warn" | "no_data" | "not_applicable";
             /** Value */
             value: number | null;
             /** Limit */

@@ -82,9 +82,13 @@ export function checkFinding(check, unit, lang) {
   );
 }
 
-/** The checks that did not pass, in the selection's order. */
+/** The statuses that make a check one of a candidate's reasons (neither pass nor not_applicable). */
+const OPEN = new Set(["fail", "warn", "no_data"]);
+
+/** The checks that did not pass (failed, warned or lacked data), in the selection's order;
+ * a check that does not apply is none of them. */
 export function openChecks(candidate) {
-  return (Array.isArray(candidate?.checks) ? candidate.checks : []).filter((c) => c && c.status !== "pass");
+  return (Array.isArray(candidate?.checks) ? candidate.checks : []).filter((c) => c && OPEN.has(c.status));
 }
 
 /** One line per check that did not pass, "label (status) – finding", in ``lang``. */

@@ -393,7 +393,7 @@ def _drive_messages() -> Iterator[str]:
     for output_load in (None, {**bearing}, {**bearing, "required_life_h": 1000.0}):
         value = None if output_load is None else OutputLoadIn.model_validate(output_load)
         yield output_bearing_note(value)
-    for status in ("pass", "fail"):
+    for status in ("pass", "fail", "not_applicable"):
         yield StoredCheck(name="max_speed", status=status, value=40, limit=90, unit="rpm").phrase
 
 

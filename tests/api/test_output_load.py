@@ -123,3 +123,88 @@ def test_batch_groups_cases_by_their_checks(client: TestClient) -> None:
     cases = [BODY, {**BODY, "output_load": LOAD}, {**BODY, "drive": True}]
     response = client.post("/api/v1/selections/batch", json={"cases": cases, "top": 3})
     assert response.status_code == 200, response.text
+
+
+def test_cha_bearing_forces_are_not_applicable_single_batch_and_report(
+    client: TestClient,
+) -> None:
+    """The CHA manual rates its output bearing by C, C_0, M_dyn and M_0 (1018854 12/2015,
+    Table 51.1), the FHA-C manual by allowable radial and axial loads too (§1-4-2): the
+    force checks do not apply to CHA (they passed at 0 ≤ 0 before, decision 0025), neither
+    passing nor failing the verdict, in the answer, the detail, the batch (==) and the
+    report; FHA-25C-50 is judged against its 4.9 kN and 14.7 kN."""
+    body = {**BODY, "output_load": LOAD}
+    response = post(client, body)
+    assert response.status_code == 201, response.text
+    answer = response.json()
+    lean = {c["model"]: {k["name"]: k for k in c["checks"]} for c in answer["candidates"]}
+    for name in ("bearing_radial_force", "bearing_axial_force"):
+        assert lean["CHA-25A-50"][name] == {
+            "name": name,
+            "status": "not_applicable",
+            "value": None,
+            "limit": None,
+        }
+    fha = lean["FHA-25C-50"]
+    assert (fha["bearing_radial_force"]["status"], fha["bearing_radial_force"]["limit"]) == (
+        "pass",
+        4900,
+    )
+    assert (fha["bearing_axial_force"]["value"], fha["bearing_axial_force"]["limit"]) == (
+        500,
+        14700,
+    )
+    cha = next(c for c in answer["candidates"] if c["model"] == "CHA-25A-50")
+    others = {c["status"] for c in cha["checks"]} - {"not_applicable"}
+    expected = (
+        "unsuitable" if "fail" in others else "unconfirmed" if "no_data" in others else "suitable"
+    )
+    assert cha["verdict"] == expected
+    detail_en = detail(client, answer["id"], "CHA-25A-50")
+    said = {c["name"]: c for c in detail_en["checks"]}["bearing_radial_force"]["message"]
+    assert "load ratings C and C_0" in said
+    assert said not in detail_en["reasons"]
+    german = client.get(
+        f"/api/v1/selections/{answer['id']}/candidates/CHA-25A-50",
+        headers={"Accept-Language": "de"},
+    ).json()
+    assert {c["name"]: c for c in german["checks"]}["bearing_radial_force"]["status"] == (
+        "not_applicable"
+    )
+    # the batch answers the same checks, number for number
+    batch = client.post("/api/v1/selections/batch", json={"cases": [body], "top": 3})
+    assert batch.status_code == 200, batch.text
+    (result,) = batch.json()["results"]
+    for candidate in result["candidates"]:
+        single = detail(client, answer["id"], candidate["model"])
+        assert candidate["checks"] == single["checks"]
+    report = client.get(f"/api/v1/selections/{answer['id']}/report.csv")
+    assert report.status_code == 200
+    assert "not_applicable" in report.text or "not applicable" in report.text
+    for language in ("en", "de"):
+        pdf = client.get(
+            f"/api/v1/selections/{answer['id']}/report.pdf", headers={"Accept-Language": language}
+        )
+        assert pdf.status_code == 200, pdf.text
+
+
+def test_a_stored_check_that_does_not_apply_is_no_reason_in_the_quote_document() -> None:
+    """The quote document's row says "not applicable" ("nicht anwendbar"), and the check
+    is not among the reasons a quote is unconfirmed."""
+    from actuator_selection.api.quote_document import _check_row
+    from actuator_selection.api.quote_document_text import DocumentText, Language
+    from actuator_selection.schemas.quotes import StoredCheck
+
+    check = StoredCheck(
+        name="bearing_radial_force", status="not_applicable", value=None, limit=None, unit="N"
+    )
+    assert not check.open
+    languages: tuple[tuple[Language, str], ...] = (
+        ("en", "not applicable"),
+        ("de", "nicht anwendbar"),
+    )
+    for language, word in languages:
+        row = _check_row(check, DocumentText(language), language)
+        assert row["status_label"] == word
+    failed = StoredCheck(name="max_speed", status="fail", value=100, limit=90, unit="rpm")
+    assert failed.open

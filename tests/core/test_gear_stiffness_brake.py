@@ -17,10 +17,12 @@ import pytest
 from tests.oracle.flowchart import evaluate as oracle_evaluate
 
 from actuator_selection.core.actuators import Actuator
+from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.bearing import OutputLoad
 from actuator_selection.core.checks import RULES, Check, Status
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.motion import Motion, Segment
 from actuator_selection.core.selection import Application, Verdict, evaluate
 
 # The chapter's worked example (Table 516.1) on FHA-25C-50-L (Table 516.3).
@@ -241,6 +243,10 @@ def test_fha_c_allowable_forces(radial: float, axial: float, statuses: tuple[Sta
 
 
 def test_a_bearing_rated_by_c_0_is_not_judged_by_allowable_forces() -> None:
+    """The CHA manual rates its output bearing by C, C_0, M_dyn and M_0 (1018854 12/2015,
+    Table 51.1) and defines no allowable force: the force checks' premise does not hold.
+    They are not applicable (they passed at 0 ≤ 0 before), and the verdict is what the
+    other checks make it."""
     cha = dataclasses.replace(CHA, output_bearing_static_load_rating_n=34000)
     app = Application(
         **EXAMPLE,
@@ -248,6 +254,54 @@ def test_a_bearing_rated_by_c_0_is_not_judged_by_allowable_forces() -> None:
             radial_force_n=5000, axial_force_n=0, radial_lever_m=0.01, axial_lever_m=0.0
         ),
     )
-    c = checks(cha, app)["bearing_radial_force"]
-    assert (c.status, c.value, c.limit) == (Status.PASS, 0.0, 0.0)
-    assert "load ratings C and C_0" in c.message
+    candidate = evaluate(cha, app)
+    c = checks(cha, app)
+    for name in ("bearing_radial_force", "bearing_axial_force"):
+        assert (c[name].status, c[name].value, c[name].limit) == (
+            Status.NOT_APPLICABLE,
+            None,
+            None,
+        )
+        assert "load ratings C and C_0" in c[name].message
+        assert c[name].message not in candidate.reasons  # neither a reason nor a pass
+    others = [x.status for x in candidate.checks if x.status is not Status.NOT_APPLICABLE]
+    expected = (
+        Verdict.UNSUITABLE
+        if Status.FAIL in others
+        else Verdict.UNCONFIRMED
+        if Status.NO_DATA in others
+        else Verdict.SUITABLE
+    )
+    assert candidate.verdict is expected
+
+
+def test_a_bearing_rated_by_neither_lacks_data() -> None:
+    """Neither an allowable force nor C_0 published: the check applies and the force is
+    what is missing (no data), not a premise that fails."""
+    app = Application(
+        **EXAMPLE,
+        output_load=OutputLoad(
+            radial_force_n=100, axial_force_n=0, radial_lever_m=0.01, axial_lever_m=0.0
+        ),
+    )
+    c = checks(CHA, app)["bearing_radial_force"]
+    assert c.status is Status.NO_DATA
+    assert c.missing == "allowable radial load on the output bearing"
+
+
+def test_fretting_is_not_applicable_where_the_output_does_not_move() -> None:
+    """A held weight, never moved: no oscillating motion, so the fretting warning's premise
+    does not hold (it passed with value 0 before)."""
+    held = Motion(
+        segments=(Segment(duration_s=1.0, start_rpm=0.0, end_rpm=0.0),),
+        load=AxisLoad(inertia_kgm2=J_L, friction_torque_nm=0.0, gravity_torque_nm=T_L),
+    )
+    still = Application(
+        motion=held,
+        output_load=OutputLoad(
+            radial_force_n=100, axial_force_n=0, radial_lever_m=0.01, axial_lever_m=0.0
+        ),
+    )
+    c = checks(FHA_17C, still)["bearing_fretting"]
+    assert (c.status, c.value, c.limit) == (Status.NOT_APPLICABLE, None, None)
+    assert c.message == "the output does not move: no oscillating motion"

@@ -334,6 +334,8 @@ RMS_TO_PEAK = Rule(
         Requirement(any_of=("max_torque_nm",), unless="has_zone", what="maximum torque T_max"),
     ),
     binding=lambda q, xp: xp.not_(q.high_dynamics),
+    # a premise of a case (J_L > 0) or of an actuator (T_max > 100 Nm): not_applicable else
+    applies=lambda q, xp: (q.load_inertia_kgm2 > 0.0) | (q.max_torque_nm > 100.0),
     message=lambda q, status, value, limit: f"2·T_rms = {value:.4g} Nm, limit {limit:.4g} Nm",
 )
 MEAN_SPEED = Rule(
@@ -360,7 +362,7 @@ def test_an_added_rule_runs_in_both_flowcharts(seed: int) -> None:
     ev = evaluate_batch(actuators, apps, rules=rules)
     assert ev.check_names == (*CHECK_NAMES, "rms_to_peak", "mean_speed")
     seen = {ev.status(i, j, "rms_to_peak") for i in range(len(apps)) for j in range(len(actuators))}
-    assert seen == set(Status)  # pass, fail, warn (not binding), no data: every branch ran
+    assert seen == set(Status)  # pass, fail, warn (not binding), no data, not applicable
     # The new checks change verdicts and so the ranking: the comparison above is not vacuous.
     assert (ev.verdicts != evaluate_batch(actuators, apps).verdicts).any()
 

@@ -128,6 +128,7 @@ def _check_row(c: StoredCheck, t: DocumentText, language: Language) -> dict[str,
         "name": c.name,
         "label": _label(t, "check." + c.name, c.name),
         "message": t.message(render_check(c.phrase, language)) if c.status != "pass" else None,
+        # (a check that does not apply says so in its row; it is no reason: _reasons)
         "status": c.status,
         "status_label": _label(t, "result_" + c.status, c.status),
         "approximate": t("approximate") if c.approximate else "",
@@ -166,7 +167,7 @@ def _reasons(
     return [
         _label(t, "check." + c.name, c.name) + ": " + t.message(render_check(c.phrase, language))
         for c in candidate.checks
-        if c.status != "pass"
+        if c.open
     ]
 
 

@@ -42,7 +42,7 @@ class Candidate:
         held = _CHECKS.__get__(self, Candidate)
         if isinstance(held, DeferredChecks):  # a batch's candidate, checks unread: these alone
             return tuple(dict.fromkeys(held.reasons()))
-        return tuple(dict.fromkeys(c.message for c in self.checks if c.status is not Status.PASS))
+        return tuple(dict.fromkeys(c.message for c in self.checks if c.status.open))
 
     @property
     def worst_overload(self) -> float:

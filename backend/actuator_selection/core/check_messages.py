@@ -247,6 +247,9 @@ _OTHERS: Final = {
     # check's name stands beside it wherever it is shown
     "stored.pass": N_("{value:.4g} {unit} ≤ {limit:.4g} {unit}"),
     "stored.fail": N_("{value:.4g} {unit} exceeds {limit:.4g} {unit}"),
+    "stored.not_applicable": N_(
+        "not applicable: the check's premise does not hold for this actuator or case"
+    ),
 }
 """The messages that are no rule's: of the controllers, the output bearing, the inverse
 solve and stored answers (code → English template, the gettext msgid)."""

@@ -18,6 +18,7 @@ from typing import Annotated, Any, Literal
 from pydantic import ConfigDict, Field
 
 from actuator_selection.schemas.batch import MAX_BATCH_CASES, MAX_TOP, CaseId
+from actuator_selection.schemas.checks import CheckStatus
 from actuator_selection.schemas.common import (
     MAX_INERTIA_KGM2,
     MAX_SPEED_RPM,
@@ -136,7 +137,7 @@ class CheckColumns(ResponseModel):
     name: str
     reference: str = Field(description="the chapter's equation, table or figure")
     unit: str = Field(description="unit of the check's value and limit")
-    status: list[Literal["pass", "fail", "warn", "no_data"]]
+    status: list[CheckStatus]
     value: list[float | None]
     limit: list[float | None]
     approximate: list[bool] = Field(

@@ -25,11 +25,17 @@ def message_code(message: str) -> str | None:
     return message.code if isinstance(message, Phrase) else None
 
 
+CheckStatus = Literal["pass", "fail", "warn", "no_data", "not_applicable"]
+"""A check's status (``core.checks.Status``): ``no_data`` where a catalogue value it needs
+is not published, ``not_applicable`` where its premise does not hold for the actuator or
+the case (it neither passes nor fails the verdict; docs/decisions/0025)."""
+
+
 class CheckOut(ResponseModel):
     """One step of the flowchart; ``value ≤ limit`` passes."""
 
     name: str
-    status: Literal["pass", "fail", "warn", "no_data"]
+    status: CheckStatus
     value: float | None
     limit: float | None
     unit: str

@@ -507,12 +507,20 @@ class StoredCheck(CheckBrief):
         return said if self.status == "no_data" else f"{self.name}: {said}"
 
     @property
+    def open(self) -> bool:
+        """Whether the check is a reason (it fails, warns or lacks data): neither a pass
+        nor a check that does not apply."""
+        return self.status not in ("pass", "not_applicable")
+
+    @property
     def phrase(self) -> str:
         """The check in words as a message with a code (``core/check_messages.py``), which
         the API renders in a reader's language (the check's name, which :attr:`summary` puts
         before the numbers, stands beside it where it is shown)."""
         if self.status == "no_data":
             return phrase("no_data", what=Words(self.missing or _UNNAMED_NEED))
+        if self.status == "not_applicable":
+            return phrase("stored.not_applicable")
         if self.value is None or self.limit is None:
             return self.name
         return phrase(
@@ -532,7 +540,7 @@ class StoredCandidate(CandidateFigures):
     @property
     def reasons(self) -> list[str]:
         """The checks that did not pass, in words."""
-        return [c.summary for c in self.checks if c.status != "pass"]
+        return [c.summary for c in self.checks if c.open]
 
 
 class StoredCycle(ResponseModel):

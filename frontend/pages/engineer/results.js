@@ -24,7 +24,7 @@ import { translate, translateReference, unitText } from "../../lib/i18n.js";
 import { appendSymbols } from "../../lib/symbols.js";
 
 export const VERDICTS = ["suitable", "unconfirmed", "unsuitable"];
-const STATUS_MARK = { pass: "✓", fail: "✗", warn: "!", no_data: "?" };
+const STATUS_MARK = { pass: "✓", fail: "✗", warn: "!", no_data: "?", not_applicable: "–" };
 
 export function statusBadge(status, lang) {
   return h(
@@ -206,7 +206,7 @@ function reasonList(sel, candidate, lang, { short = false } = {}) {
 /** The checks that did not pass in the server's words (the detail's), and any further reason it gives. */
 function detailReasonList(detail, lang) {
   const said = answerLanguage(detail);
-  const open = (Array.isArray(detail.checks) ? detail.checks : []).filter((c) => c && c.status !== "pass");
+  const open = openChecks(detail);
   const messages = new Set(open.map((c) => c.message));
   const further = (Array.isArray(detail.reasons) ? detail.reasons : []).filter(
     (r) => typeof r === "string" && !messages.has(r),

@@ -61,12 +61,28 @@ check_words(WORDS)
 
 
 class Status(StrEnum):
-    """Outcome of one check."""
+    """Outcome of one check.
+
+    ``no_data``: the check applies, but a catalogue value it needs is not published (the
+    verdict is "unconfirmed"). ``not_applicable``: the check's premise does not hold for
+    this actuator or case (:attr:`Rule.applies`), so there is nothing to judge; it
+    neither passes nor fails the verdict (docs/decisions/0025-not-applicable.md).
+    """
 
     PASS = "pass"
     FAIL = "fail"
     WARN = "warn"
     NO_DATA = "no_data"
+    NOT_APPLICABLE = "not_applicable"
+
+    @property
+    def open(self) -> bool:
+        """Whether the check is one of a candidate's reasons: it fails, warns or lacks
+        data (neither ``pass`` nor ``not_applicable``)."""
+        return self in _OPEN
+
+
+_OPEN: Final = frozenset((Status.FAIL, Status.WARN, Status.NO_DATA))
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -294,7 +310,8 @@ class Rule:
     A rule is equal only to itself (``eq=False``): cases are grouped by their tuple of
     rules, and hashing every field of every rule per case cost a 10,000-case batch ~60 ms.
 
-    The status: ``no_data`` where a requirement is missing (the first one names what is
+    The status: ``not_applicable`` where :attr:`applies` does not hold; else ``no_data``
+    where a requirement is missing (the first one names what is
     missing); else ``pass`` where ``value ≤ limit`` (and ``within``, if given, holds);
     else ``fail`` where ``binding`` holds (always, if not given), ``warn`` elsewhere. A
     limit that is NaN though nothing is missing (beyond a zone's last speed) fails.
@@ -327,6 +344,10 @@ class Rule:
     """Where an exceeded limit fails (elsewhere it warns); None: it always fails."""
     approximate: Formula | None = None
     """Where the limit is a simplified stand-in (reported with the check); None: never."""
+    applies: Formula | None = None
+    """Where the check's premise holds (a :data:`Truth`); elsewhere its status is
+    ``not_applicable``, decided before any data is needed, and :attr:`message` is called
+    with that status for its words (value and limit NaN). None: it always applies."""
     lower_bound: Formula | None = None
     """The least value over every J_A ≥ 0, or None. Where the catalogue lacks only the
     rule's first requirement (J_A) and even this least value fails (it exceeds the limit,
@@ -354,6 +375,8 @@ class Rule:
         when its message is first read (an answer that lists checks as numbers never
         reads them)."""
         xp = FLOAT_OPS
+        if self.applies is not None and not self.applies(q, xp):
+            return self.report(q, Status.NOT_APPLICABLE, math.nan, math.nan, False, None)
         value = self.value(q, xp)
         for index, (unless, any_of, _, _) in enumerate(self._no_data):
             if unless is not None and getattr(q, unless):
@@ -405,6 +428,9 @@ class Rule:
             return _new_check(
                 self.name, status, known, None, self.unit, self.reference, no_data, False, what
             )
+        if status is Status.NOT_APPLICABLE:
+            said = self.message(q, status, math.nan, math.nan)
+            return _new_check(self.name, status, None, None, self.unit, self.reference, said, False)
         # failed for every J_A: at its least, without J_A
         lacking = self._no_data[missing][3] if missing is not None else None
         message: Any = (

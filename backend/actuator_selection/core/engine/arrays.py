@@ -16,14 +16,15 @@ BoolArray = npt.NDArray[np.bool_]
 CodeArray = npt.NDArray[np.int8]
 IndexArray = npt.NDArray[np.intp]
 
-STATUS_BY_CODE = (Status.PASS, Status.WARN, Status.NO_DATA, Status.FAIL)
+STATUS_BY_CODE = (Status.NOT_APPLICABLE, Status.PASS, Status.WARN, Status.NO_DATA, Status.FAIL)
 """Status codes of :attr:`BatchEvaluation.statuses`, ordered so that the largest code of
-a candidate's checks decides its verdict (any fail, else any no data)."""
+a candidate's checks decides its verdict (any fail, else any no data); a check that does
+not apply is below every other, so it never decides a verdict."""
 
 VERDICT_BY_CODE = (Verdict.SUITABLE, Verdict.UNCONFIRMED, Verdict.UNSUITABLE)
 """Verdict codes of :attr:`BatchEvaluation.verdicts`, in ranking order."""
 
-PASS, WARN, NO_DATA, FAIL = (np.int8(c) for c in range(4))
+NOT_APPLICABLE, PASS, WARN, NO_DATA, FAIL = (np.int8(c) for c in range(5))
 
 
 def optional(values: Sequence[float | None]) -> FloatArray:

@@ -31,6 +31,7 @@ from actuator_selection.core.checks.rules.gear import AVERAGE_TORQUE_RULES
 from actuator_selection.core.engine.arrays import (
     FAIL,
     NO_DATA,
+    NOT_APPLICABLE,
     PASS,
     WARN,
     BoolArray,
@@ -100,7 +101,7 @@ class Block:
         worst = np.full(self.accel_torque.shape, PASS)
         for codes in self.statuses:
             np.maximum(worst, codes, out=worst)
-        # PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable.
+        # NOT_APPLICABLE/PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable.
         np.subtract(worst, WARN, out=worst)
         np.maximum(worst, 0, out=worst)
         return worst
@@ -154,6 +155,36 @@ def _status_codes(
 
     Called with numpy's floating-point errors ignored: NaN where data is missing is
     masked here."""
+    xp = ARRAY_OPS
+    codes, overload, arrays = _decided_codes(rule, q, cat, detail=detail)
+    if rule.applies is None:
+        return codes, overload, arrays
+    # Where the premise does not hold: not applicable, whatever the data (Rule.check).
+    applies = rule.applies(q, xp)
+    codes = np.where(applies, codes, NOT_APPLICABLE)
+    overload = np.where(applies, overload, 0.0)
+    if arrays is None:
+        return codes, overload, None
+    return (
+        codes,
+        overload,
+        _RuleArrays(
+            values=np.where(applies, arrays.values, math.nan),
+            limits=np.where(applies, arrays.limits, math.nan),
+            approximate=arrays.approximate & applies,
+            first_missing=np.where(applies, arrays.first_missing, np.int8(-1)),
+        ),
+    )
+
+
+def _decided_codes(
+    rule: Rule,
+    q: Operands,
+    cat: CatalogueArrays,
+    *,
+    detail: bool,
+) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
+    """:func:`_status_codes` before :attr:`~actuator_selection.core.checks.Rule.applies`."""
     xp = ARRAY_OPS
     first_missing, others_missing, everywhere = _lacking(rule, q, cat)  # per actuator
     if everywhere:  # no data in every cell: only the value, which the check reports

@@ -51,7 +51,7 @@ def detail_cells(
 
     codes = [np.broadcast_to(c, shape)[rows, columns] for c in block.statuses]
     not_passing: list[list[int]] = [[] for _ in range(rows.size)]
-    failing, cells_failing = np.nonzero(np.array(codes).reshape(len(codes), rows.size) != PASS)
+    failing, cells_failing = np.nonzero(np.array(codes).reshape(len(codes), rows.size) > PASS)
     for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
         not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
     decided = _Decided(

@@ -8,7 +8,7 @@ from typing import Any, Literal
 from pydantic import Field
 
 from actuator_selection.schemas.actuators import ActuatorOut
-from actuator_selection.schemas.checks import CheckOut
+from actuator_selection.schemas.checks import CheckOut, CheckStatus
 from actuator_selection.schemas.common import (
     ResponseModel,
 )
@@ -40,7 +40,7 @@ class CheckBrief(ResponseModel):
     """
 
     name: str
-    status: Literal["pass", "fail", "warn", "no_data"]
+    status: CheckStatus
     value: float | None
     limit: float | None
     approximate: bool = Field(

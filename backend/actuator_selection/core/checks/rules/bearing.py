@@ -288,7 +288,7 @@ the check is approximate (issue 28, item 4)."""
 
 
 def _fretting_message(q: Operands, status: Status, needed: float, swing: float) -> str:
-    if not swing > 0.0:
+    if status is Status.NOT_APPLICABLE:
         return phrase("bearing_fretting.still")
     kind = "pass" if status is Status.PASS else "warn"  # it never fails (never binding)
     return phrase(f"bearing_fretting.{kind}", value=needed, limit=swing)
@@ -298,9 +298,10 @@ BEARING_FRETTING = Rule(
     name="bearing_fretting",
     reference="CHA manual 1018854 12/2015, p. 69",
     unit="°",
-    value=lambda q, xp: xp.where(q.swing_deg > 0.0, bearing.FRETTING_SWING_DEG, 0.0),
+    value=lambda q, xp: q.swing_deg * 0.0 + bearing.FRETTING_SWING_DEG,
     limit=lambda q, xp: q.swing_deg,
     requires=(),
+    applies=lambda q, xp: q.swing_deg > 0.0,
     binding=lambda q, xp: q.swing_deg < 0.0,  # never: a warning, the verdict stands
     message=_fretting_message,
 )
@@ -308,39 +309,39 @@ BEARING_FRETTING = Rule(
 :data:`~actuator_selection.core.bearing.FRETTING_SWING_DEG` = 5°, checked as 5° ≤ the
 swing; a smaller swing warns (the CHA manual warns of fretting under oscillating motion
 below 5°, issue 28 item 4) and never fails: the manual gives no life for it. A cycle that
-does not move passes (value 0). The swing is the range of the output's angle over the
-cycle, so one small move repeated in one direction warns as well: on the safe side, as
-the chapter's cycle does not say whether it returns."""
+does not move is not applicable: there is no oscillating motion. The swing is the range
+of the output's angle over the cycle, so one small move repeated in one direction warns
+as well: on the safe side, as the chapter's cycle does not say whether it returns."""
 
 
 # --- bearing_radial_force, bearing_axial_force: F ≤ the allowable load (FHA-C) ------------
 
 
 def _force_rule(name: str, force: str, allowable: str, what: str) -> Rule:
-    """F ≤ the allowable load where the catalogue publishes one (FHA-C manual §1-4-2,
-    allowable radial and axial load); where it rates the bearing by C and C_0 instead
-    (CHA), the check passes at 0 ≤ 0 and says so: the load ratings' checks judge it."""
+    """F ≤ the allowable load, for a bearing its catalogue rates by allowable forces (FHA-C
+    manual §1-4-2, allowable radial and axial load). Where the catalogue rates it by its
+    load ratings instead (CHA manual 1018854 12/2015, output bearing Table 51.1: C, C_0,
+    M_dyn(max), M_0, and no allowable force; its §4.3 checks those), the premise does not
+    hold: not applicable (the load ratings' checks judge the forces). Read from the row:
+    an allowable force published, or no C_0 either (then the force is what is missing:
+    no data) — docs/decisions/0025-not-applicable.md."""
 
-    def rated(q: Operands, xp: Ops) -> Truth:
-        return xp.not_(xp.isnan(getattr(q, allowable)))
+    def by_forces(q: Operands, xp: Ops) -> Truth:
+        return xp.not_(xp.isnan(getattr(q, allowable))) | xp.isnan(q.bearing_static_load_rating_n)
 
     def message(q: Operands, status: Status, value: float, limit: float) -> str:
-        if math.isnan(getattr(q, allowable)):
+        if status is Status.NOT_APPLICABLE:
             return phrase("bearing_force.by_ratings")
         return phrase(f"{name}.{outcome(status)}", value=value, limit=limit)
 
     return Rule(
         name=name,
-        reference="FHA-C manual §1-4-2",
+        reference="FHA-C manual §1-4-2; CHA 1018854 12/2015 Table 51.1",
         unit="N",
-        value=lambda q, xp: xp.where(rated(q, xp), abs(getattr(q, force)), 0.0),
-        limit=lambda q, xp: xp.where(rated(q, xp), getattr(q, allowable), 0.0),
-        requires=(
-            Requirement(
-                any_of=(allowable, "bearing_static_load_rating_n"),
-                what=what,
-            ),
-        ),
+        value=lambda q, xp: abs(getattr(q, force)),
+        limit=lambda q, xp: getattr(q, allowable),
+        requires=(published(allowable, what),),
+        applies=by_forces,
         message=message,
     )
 
@@ -349,14 +350,16 @@ BEARING_RADIAL_FORCE = _force_rule(
     "bearing_radial_force",
     "radial_force_n",
     "bearing_radial_load_n",
-    N_("allowable radial load or static load rating C_0 of the output bearing"),
+    N_("allowable radial load on the output bearing"),
 )
-"""|F_r| ≤ the allowable radial load (FHA-C), issue 28 item 4."""
+"""|F_r| ≤ the allowable radial load (FHA-C), issue 28 item 4; not applicable to a
+bearing rated by C and C_0 (CHA)."""
 
 BEARING_AXIAL_FORCE = _force_rule(
     "bearing_axial_force",
     "axial_force_n",
     "bearing_axial_load_n",
-    N_("allowable axial load or static load rating C_0 of the output bearing"),
+    N_("allowable axial load on the output bearing"),
 )
-"""|F_a| ≤ the allowable axial load (FHA-C), issue 28 item 4."""
+"""|F_a| ≤ the allowable axial load (FHA-C), issue 28 item 4; not applicable to a
+bearing rated by C and C_0 (CHA)."""
