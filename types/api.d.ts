@@ -1640,7 +1640,7 @@ export interface components {
             min_natural_frequency_hz?: number | null;
             /**
              * Brake Safety Factor
-             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1, the holding torque as published: the user's choice, since no public manufacturer or standards document we read names a default (decision 0026); omitted: 1.0
              */
             brake_safety_factor?: number;
             /**
@@ -1958,7 +1958,7 @@ export interface components {
             min_natural_frequency_hz?: number | null;
             /**
              * Brake Safety Factor
-             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1, the holding torque as published: the user's choice, since no public manufacturer or standards document we read names a default (decision 0026); omitted: 1.0
              */
             brake_safety_factor?: number;
             /**
@@ -3839,7 +3839,7 @@ export interface components {
             min_natural_frequency_hz?: number | null;
             /**
              * Brake Safety Factor
-             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1, the holding torque as published: the user's choice, since no public manufacturer or standards document we read names a default (decision 0026); omitted: 1.0
              */
             brake_safety_factor?: number;
             /**
@@ -5134,7 +5134,7 @@ export interface components {
             min_natural_frequency_hz?: number | null;
             /**
              * Brake Safety Factor
-             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1, the holding torque as published: the user's choice, since no public manufacturer or standards document we read names a default (decision 0026); omitted: 1.0
              */
             brake_safety_factor?: number;
             /**
@@ -5503,7 +5503,7 @@ export interface components {
             min_natural_frequency_hz?: number | null;
             /**
              * Brake Safety Factor
-             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1: no manufacturer document read names one; omitted: 1.0
+             * @description S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); default 1, the holding torque as published: the user's choice, since no public manufacturer or standards document we read names a default (decision 0026); omitted: 1.0
              */
             brake_safety_factor?: number;
             /**

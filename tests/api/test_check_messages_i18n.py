@@ -311,6 +311,8 @@ VARIANTS: tuple[dict[str, Any], ...] = (
     {"swing_deg": 2.0},
     {"brake_safety_factor": 2.0},
     {"brake_closing_time_s": math.nan},
+    {"drop_torque_nm": 0.0},  # a horizontal axis: nothing falls
+    {"drop_torque_nm": 3.0, "travel_mm_per_rad": 1.6},  # a linear axis: the fall in mm
     {"stiffness_k2_nm_per_rad": math.nan},
     {"bearing_radial_load_n": math.nan, "bearing_axial_load_n": math.nan},
 )

@@ -153,3 +153,35 @@ def test_a_batch_takes_machine_axes_and_answers_as_single(client: TestClient) ->
         ]
         for got, want in zip(result["candidates"], single["candidates"], strict=False):
             assert got["rms_torque_nm"] == want["rms_torque_nm"]
+
+
+def test_the_brake_drop_of_the_vertical_belt_axis_is_a_distance(client: TestClient) -> None:
+    """Issue 28, item 9: how far the pick-and-place load falls while CHA-25A-50's brake
+    closes (70 ms, CHA 1018854 12/2015 Table 36.3), in mm through the belt and the
+    ratio: the weight T_G = m·g·r/i accelerates J_L + J_A, θ = ½·T_G/(J_L + J_A)·t_c², the
+    load travels θ·r/i — at most free fall ½·g·t_c² = 24.0 mm. Single and batch agree."""
+    body = PICK_AND_PLACE | {"models": ["CHA-25A-50"], "emergency_stops": 20}
+    answer = created(client, body)
+    row = client.get("/api/v1/actuators/CHA-25A-50").json()
+    j_a, t_c = row["inertia_kgm2"], row["brake_closing_time_s"]
+    r, i, m = 0.025, 1.5, 4.0
+    theta = 0.5 * (m * G * r / i) / (m * r * r / (i * i) + j_a) * t_c**2
+    drop_mm = theta * r / i * 1000
+    assert drop_mm < 0.5 * G * t_c**2 * 1000
+    detail = client.get(f"{API}/{answer['id']}/candidates/CHA-25A-50").json()
+    said = {c["name"]: c for c in detail["checks"]}["brake_emergency_stops"]["message"]
+    assert f"the load falls by up to {drop_mm:.3g} mm" in said, said
+    assert f"the output turns {math.degrees(theta):.3g}°" in said
+    assert f"free fall would be {0.5 * G * t_c**2 * 1000:.3g} mm" in said
+    holding = {c["name"]: c for c in detail["checks"]}["brake_holding"]["message"]
+    assert "safety factor S = 1" in holding  # the default, said to be the user's choice
+    german = client.get(
+        f"{API}/{answer['id']}/candidates/CHA-25A-50", headers={"Accept-Language": "de"}
+    ).json()
+    worte = {c["name"]: c for c in german["checks"]}["brake_emergency_stops"]["message"]
+    assert "fällt die Last um bis zu" in worte, worte
+    batch = client.post(f"{API}/batch", json={"cases": [body], "top": 1})
+    assert batch.status_code == 200, batch.text
+    (result,) = batch.json()["results"]
+    (candidate,) = result["candidates"]
+    assert candidate["checks"] == detail["checks"]

@@ -570,7 +570,9 @@ def test_a_brake_adds_its_holding_check(client: TestClient) -> None:
     detail = client.get(f"/api/v1/selections/{selection['id']}/candidates/CHA-25A-50").json()
     (full,) = [c for c in detail["checks"] if c["name"] == "brake_holding"]
     assert full["message"] == (
-        "load torque at standstill T_L = 5 Nm ≤ the brake's holding torque = 90 Nm"
+        "load torque at standstill T_L = 5 Nm ≤ the brake's holding torque = 90 Nm (safety "
+        "factor S = 1: no published document we read names a default for a holding brake; set "
+        "brake_safety_factor from your own risk assessment)"
     )
     without = post(client, {**body, "brake": False}).json()
     assert all(c["name"] != "brake_holding" for c in without["check_rules"])

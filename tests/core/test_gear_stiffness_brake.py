@@ -22,6 +22,12 @@ from actuator_selection.core.bearing import OutputLoad
 from actuator_selection.core.checks import RULES, Check, Status
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
+from actuator_selection.core.mechanisms import (
+    Hoist,
+    InclinedBallScrew,
+    hoist_axis,
+    inclined_ball_screw_axis,
+)
 from actuator_selection.core.motion import Motion, Segment
 from actuator_selection.core.selection import Application, Verdict, evaluate
 
@@ -189,6 +195,90 @@ def test_emergency_stops_and_the_drop(stops: float, status: Status) -> None:
     # θ = ½·T_L/(J_L + J_A)·t_c²: 30 Nm on 2.7 kgm² for 70 ms
     theta = 0.5 * 30 / (1.5 + 1.2) * 0.07**2
     assert f"{math.degrees(theta):.3g}°" in c.message
+
+
+def _lift(axis: AxisLoad) -> Application:
+    """A short lift and lower of ``axis`` with the brake and 10 emergency stops."""
+    up = (
+        Segment(duration_s=0.2, start_rpm=0.0, end_rpm=10.0),
+        Segment(duration_s=0.2, start_rpm=10.0, end_rpm=0.0),
+        Segment(duration_s=1.0, start_rpm=0.0, end_rpm=0.0),
+    )
+    return Application(motion=Motion(segments=up, load=axis), brake=True, emergency_stops=10)
+
+
+def _drop_mm(message: str) -> float:
+    return float(message.split("falls by up to ")[1].split(" mm")[0])
+
+
+@pytest.mark.parametrize("j_a", [0.0, 1.2])
+def test_the_drop_of_a_hoist_is_free_fall_at_most(j_a: float) -> None:
+    """A 200 kg hook on a 0.2 m drum (r = 0.1 m, no drum inertia, η = 1): while the brake
+    closes (70 ms) the weight m·g·r accelerates m·r² + J_A; the hook falls
+    s = r·θ = ½·g·t²·m·r²/(m·r² + J_A) — free fall ½·g·t² = 24.0 mm where J_A = 0, less
+    with the actuator's inertia (first principles, s = ½·a·t²)."""
+    m, r, t_c, g = 200.0, 0.1, 0.07, 9.81
+    axis = hoist_axis(Hoist(load_mass_kg=m, drum_diameter_m=2 * r, efficiency=1.0))
+    actuator = dataclasses.replace(BRAKED, inertia_kgm2=j_a)
+    c = checks(actuator, _lift(axis))["brake_emergency_stops"]
+    free_fall_mm = 0.5 * g * t_c**2 * 1000
+    expected = free_fall_mm * m * r**2 / (m * r**2 + j_a)
+    assert _drop_mm(c.message) == pytest.approx(expected, rel=5e-3)  # printed to 3 digits
+    assert f"free fall would be {free_fall_mm:.3g} mm" in c.message
+    if j_a == 0.0:
+        assert f"falls by up to {free_fall_mm:.3g} mm" in c.message
+    else:
+        assert _drop_mm(c.message) < free_fall_mm
+
+
+def test_the_drop_of_a_counterweighted_hoist_is_atwoods() -> None:
+    """100 kg against a 60 kg counterweight: a = g·(m − m_c)/(m + m_c), s = ½·a·t²."""
+    axis = hoist_axis(
+        Hoist(load_mass_kg=100, drum_diameter_m=0.2, efficiency=0.9, counterweight_kg=60)
+    )
+    actuator = dataclasses.replace(BRAKED, inertia_kgm2=0.0)
+    c = checks(actuator, _lift(axis))["brake_emergency_stops"]
+    expected = 0.5 * 9.81 * 40 / 160 * 0.07**2 * 1000  # 6.01 mm
+    assert _drop_mm(c.message) == pytest.approx(expected, rel=5e-3)
+
+
+def test_the_drop_of_a_vertical_ball_screw_in_mm() -> None:
+    """20 kg on a vertical 10 mm lead screw (r = P/2π) with the CHA-25A's J_A = 1.2 kgm²:
+    the screw's reflected inertia m·r² is tiny beside J_A, so the slide falls by
+    s = ½·g·t²·m·r²/(m·r² + J_A) — microns, not the 24 mm of free fall."""
+    screw = InclinedBallScrew(
+        mass_kg=20, lead_m=0.01, friction_coefficient=0.0, efficiency=1.0, incline_deg=90
+    )
+    c = checks(BRAKED, _lift(inclined_ball_screw_axis(screw)))["brake_emergency_stops"]
+    r = 0.01 / (2 * math.pi)
+    theta = 0.5 * (20 * 9.81 * r) / (20 * r**2 + 1.2) * 0.07**2
+    assert _drop_mm(c.message) == pytest.approx(theta * r * 1000, rel=5e-3)
+    assert f"the output turns {math.degrees(theta):.3g}°" in c.message
+
+
+def test_a_horizontal_axis_does_not_fall() -> None:
+    belt = inclined_ball_screw_axis(
+        InclinedBallScrew(mass_kg=20, lead_m=0.01, friction_coefficient=0.1, efficiency=0.9)
+    )
+    c = checks(BRAKED, _lift(belt))["brake_emergency_stops"]
+    assert "does not fall" in c.message
+
+
+@pytest.mark.parametrize(("torque", "status"), [(90.0, Status.PASS), (90.5, Status.FAIL)])
+def test_the_default_safety_factor_is_said_to_be_the_users_choice(
+    torque: float, status: Status
+) -> None:
+    """S defaults to 1 (the holding torque as published, T_L ≤ T_Br = 90 Nm): no public
+    document read names a default, so the answer says S is the user's to set."""
+    app = Application(
+        pattern=SpeedPattern(speed_rpm=20, accel_s=0.2, constant_s=0.5, decel_s=0.2, pause_s=1),
+        load=Load(torque_nm=torque, inertia_kgm2=1.5),
+        brake=True,
+    )
+    c = checks(BRAKED, app)["brake_holding"]
+    assert (c.status, c.value, c.limit) == (status, torque, 90)
+    assert "safety factor S = 1" in c.message
+    assert "set brake_safety_factor from your own risk assessment" in c.message
 
 
 @pytest.mark.parametrize(("factor", "status"), [(3.0, Status.PASS), (3.01, Status.FAIL)])

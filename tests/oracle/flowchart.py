@@ -176,6 +176,12 @@ def _gear_stiffness_brake(
         _value(app.min_natural_frequency_hz),
         app.brake_safety_factor,
         _value(app.emergency_stops),
+        # the brake's drop: the axis's weight |T_G| (the shorthand: NaN, its T_L), and the
+        # travel per output radian of a linear axis, 60/(2π·k) with k rpm per mm/s
+        nan if app.motion is None else abs(app.motion.load.gravity_torque_nm),
+        nan
+        if app.motion is None or app.motion.load.speed_unit != "mm/s"
+        else 60.0 / (2.0 * math.pi * app.motion.load.speed_rpm_per_unit),
         _value(a.limit_torque_t1_nm),
         _value(a.limit_torque_t2_nm),
         _value(a.torsional_stiffness_k1_nm_per_rad),

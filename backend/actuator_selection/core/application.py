@@ -154,6 +154,24 @@ class Application:
     an assumption (the check then says approximate)."""
 
     @property
+    def drop_torque_nm(self) -> float | None:
+        """The torque that turns the output while the brake closes, the motor without
+        torque [Nm]: a motion's |T_G| (a weight; friction, which holds back, and the
+        losses of a load driving back counted zero: the safe side); None for the
+        chapter's shorthand, whose T_L may be a weight (taken as one, as the holding check
+        does: ``load_torque_nm``)."""
+        if self.motion is None:
+            return None
+        return abs(self.motion.load.gravity_torque_nm)
+
+    @property
+    def travel_mm_per_rad(self) -> float | None:
+        """The load's travel per radian of the output [mm/rad] for a linear axis
+        (:attr:`~actuator_selection.core.axis.AxisLoad.travel_mm_per_rad`); None for a
+        rotary load, or the chapter's shorthand (a rotary load)."""
+        return None if self.motion is None else self.motion.load.travel_mm_per_rad
+
+    @property
     def rules(self) -> tuple[Rule, ...]:
         """The checks this application needs: the flowchart's, the brake's if fitted, the
         output bearing's if an output load is given (its life if a life is required)."""

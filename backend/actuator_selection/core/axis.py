@@ -96,3 +96,23 @@ class AxisLoad:
             raise InvalidInputError("speed_rpm_per_unit", code="positive")
         if self.torque_nm_per_force_unit <= 0:
             raise InvalidInputError("torque_nm_per_force_unit", code="positive")
+
+    @property
+    def travel_mm_per_rad(self) -> float | None:
+        """How far a linear axis's load moves per radian the actuator output turns [mm/rad],
+        from the mechanism's one kinematic ratio (``speed_rpm_per_unit`` output rpm per
+        mm/s: n = k·v, so θ = k·v·t·2π/60 and the travel v·t = θ·60/(2π·k)); None for a
+        rotary load (speed in rpm), whose output angle is the answer.
+
+        A 10 mm lead advances 10 mm per turn, 10/2π = 1.5915 mm per radian:
+
+        >>> from actuator_selection.core.mechanisms import (
+        ...     InclinedBallScrew, inclined_ball_screw_axis)
+        >>> screw = InclinedBallScrew(mass_kg=20, lead_m=0.01, friction_coefficient=0,
+        ...     efficiency=1, incline_deg=90)
+        >>> round(inclined_ball_screw_axis(screw).travel_mm_per_rad, 4)
+        1.5915
+        """
+        if self.speed_unit != "mm/s":
+            return None
+        return 60.0 / (2.0 * math.pi * self.speed_rpm_per_unit)

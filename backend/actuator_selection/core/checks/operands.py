@@ -166,6 +166,12 @@ class Operands(NamedTuple):
     """S of the brake's holding check [-]."""
     emergency_stops: Real
     """Emergency stops expected over the life [-]; NaN where not asked."""
+    drop_torque_nm: Real
+    """The torque that turns the output while the brake closes [Nm]: the axis's |T_G|;
+    NaN for the chapter's shorthand (then :attr:`load_torque_nm`, its T_L)."""
+    travel_mm_per_rad: Real
+    """The load's travel per radian of the output [mm/rad] of a linear axis; NaN for a
+    rotary load."""
     limit_torque_t1_nm: Real
     """T_1 of the torsional stiffness curve [Nm]; NaN where not published."""
     limit_torque_t2_nm: Real

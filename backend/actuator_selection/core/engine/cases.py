@@ -43,9 +43,11 @@ REQUEST_FIELDS = (
     "min_natural_frequency_hz",
     "brake_safety_factor",
     "emergency_stops",
+    "drop_torque_nm",
+    "travel_mm_per_rad",
 )
-"""The request's further inputs (gear, stiffness, brake), as :class:`Operands` and
-``Application`` name them; NaN where not given."""
+"""The request's further inputs (gear, stiffness, brake) and what the brake's drop reads
+of the axis, as :class:`Operands` and ``Application`` name them; NaN where not given."""
 
 
 def default_requests(size: int) -> FloatArray:

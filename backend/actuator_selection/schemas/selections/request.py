@@ -101,7 +101,8 @@ class SelectionRequest(StrictModel):
         ge=1,
         le=100,
         description="S of the brake's holding check S·T_L ≤ T_Br (check `brake_holding`); "
-        "default 1: no manufacturer document read names one",
+        "default 1, the holding torque as published: the user's choice, since no public "
+        "manufacturer or standards document we read names a default (decision 0026)",
     )
     emergency_stops: float | None = Field(
         default=None,

@@ -8,25 +8,32 @@ from __future__ import annotations
 import math
 from typing import Final
 
-from actuator_selection.core.check_messages import check_words, phrase
+from actuator_selection.core.check_messages import Phrase, check_words, phrase
 from actuator_selection.core.checks.rule import Operands, Rule, Status, outcome, published
+from actuator_selection.core.loads import STANDARD_GRAVITY_M_PER_S2
 from actuator_selection.core.messages import N_
 
 DEFAULT_BRAKE_SAFETY_FACTOR: Final = 1.0
 """S of :data:`BRAKE_HOLDING` where the application sets none: 1, the catalogue's holding
-torque as published. No public manufacturer document read for the catalogue's actuators
-(CHA 1018854 12/2015 brake tables; FHA-C manual §4-2) names a safety factor for holding;
-the application sets its own (docs/decisions/0024-gear-checks-when-asked.md)."""
+torque as published, and the answer says that S is the user's choice. No public document
+read names a default: the manufacturer's brake tables give the holding torque, the
+allowable emergency stops and the closing time (CHA 1018854 12/2015, e.g. Table 36.3;
+FHA-C manual §4-2) but no factor, and a search of public standards notes and guidance on
+gravity-loaded axes (DGUV/FB HM information on vertical axes, EN 60204-1, ISO 13849)
+found no citable text stating one; a factor found in a secondary source only is not a
+citation (docs/decisions/0026-brake-drop-and-holding-factor.md)."""
 
 WORDS: Final = {
     # brake_holding
     "brake_holding.pass": N_(
         "load torque at standstill T_L = {value:.4g} Nm ≤ the brake's holding torque = "
-        "{limit:.4g} Nm"
+        "{limit:.4g} Nm (safety factor S = 1: no published document we read names a default "
+        "for a holding brake; set brake_safety_factor from your own risk assessment)"
     ),
     "brake_holding.fail": N_(
         "load torque at standstill T_L = {value:.4g} Nm exceeds the brake's holding torque = "
-        "{limit:.4g} Nm"
+        "{limit:.4g} Nm (safety factor S = 1: no published document we read names a default "
+        "for a holding brake; set brake_safety_factor from your own risk assessment)"
     ),
     "brake_holding.pass_factor": N_(
         "S·T_L = {factor:.3g} × {torque:.4g} Nm = {value:.4g} Nm ≤ the brake's holding torque "
@@ -46,6 +53,13 @@ WORDS: Final = {
     "brake_drop": N_(
         "while the brake closes ({closing:.3g} ms) a load that falls turns the output by "
         "up to {angle:.3g}°"
+    ),
+    "brake_drop_linear": N_(
+        "while the brake closes ({closing:.3g} ms) the load falls by up to {travel:.3g} mm "
+        "(the output turns {angle:.3g}°; free fall would be {free_fall:.3g} mm)"
+    ),
+    "brake_drop_none": N_(
+        "no weight acts on the axis (T_G = 0): the load does not fall while the brake closes"
     ),
     "brake_drop_no_data": N_(
         "the drop while the brake closes: no data (closing time or J_A not published)"
@@ -88,27 +102,54 @@ safe side. The load is multiplied by the safety factor S the application sets (d
 no public manufacturer document read names one; docs/decisions/0024)."""
 
 
+def drop_torque_nm(q: Operands) -> float:
+    """The torque that turns the output while the brake closes (floats): the axis's |T_G|,
+    or the chapter's T_L where the load is the shorthand (its nature unknown: taken as a
+    weight, as :data:`BRAKE_HOLDING` does) [Nm]."""
+    torque = q.drop_torque_nm
+    return float(q.load_torque_nm if math.isnan(torque) else torque)
+
+
 def drop_angle_rad(q: Operands) -> float:
     """How far the output turns while the brake closes (floats, one cell's words):
-    θ = ½·α·t_c², α = T_L/(J_L + J_A) — the held load T_L accelerating the load and the
-    actuator's inertia from rest, the motor without torque and nothing else braking
-    (friction counted in T_L as driving: on the safe side) [rad]; NaN without t_c or J_A."""
+    θ = ½·α·t_c², α = T/(J_L + J_A) with T of :func:`drop_torque_nm` — the weight
+    accelerating the load and the actuator's inertia from rest, the motor without torque,
+    nothing else braking and no losses (the safe side) [rad]; NaN without t_c or J_A.
+
+    On a linear axis of lever r (travel r·θ, J_L = J_rot + m·r², T = m_eff·g·r) this is
+    s = ½·g·t_c²·m_eff·r²/(J_rot + m·r² + J_A): never more than free fall ½·g·t_c², equal
+    to it where the falling mass is all the inertia (J_rot = J_A = 0, no counterweight)."""
     inertia = q.load_inertia_kgm2 + q.inertia_kgm2
     if not inertia > 0:
         return math.nan
     closing = q.brake_closing_time_s
-    return float(0.5 * (q.load_torque_nm / inertia) * closing * closing)
+    return float(0.5 * (drop_torque_nm(q) / inertia) * closing * closing)
+
+
+def _drop_words(q: Operands) -> Phrase:
+    """The drop while the brake closes, in words: the load's fall in mm on a linear axis
+    (through the mechanism's travel per output radian), else the output's angle."""
+    if drop_torque_nm(q) == 0.0:
+        return phrase("brake_drop_none")
+    angle = drop_angle_rad(q)
+    if math.isnan(angle):
+        return phrase("brake_drop_no_data")
+    closing = q.brake_closing_time_s
+    if math.isnan(q.travel_mm_per_rad):
+        return phrase("brake_drop", closing=closing * 1000.0, angle=math.degrees(angle))
+    return phrase(
+        "brake_drop_linear",
+        closing=closing * 1000.0,
+        travel=angle * q.travel_mm_per_rad,
+        angle=math.degrees(angle),
+        free_fall=0.5 * STANDARD_GRAVITY_M_PER_S2 * closing * closing * 1000.0,
+    )
 
 
 def _emergency_message(q: Operands, status: Status, value: float, limit: float) -> str:
-    angle = drop_angle_rad(q)
-    if math.isnan(angle):
-        drop = phrase("brake_drop_no_data")
-    else:
-        drop = phrase(
-            "brake_drop", closing=q.brake_closing_time_s * 1000.0, angle=math.degrees(angle)
-        )
-    return phrase(f"brake_emergency_stops.{outcome(status)}", value=value, limit=limit, drop=drop)
+    return phrase(
+        f"brake_emergency_stops.{outcome(status)}", value=value, limit=limit, drop=_drop_words(q)
+    )
 
 
 BRAKE_EMERGENCY_STOPS = Rule(
