@@ -96,3 +96,38 @@ def test_the_cha_20a_bearing_life_takes_exponent_3_on_the_page(page: Page) -> No
     row = page.locator('#checks-table tr[data-check="bearing_life"]')
     expect(row).to_have_attribute("data-status", "fail")
     expect(row).to_contain_text("four-point contact ball bearing: B = 3")
+
+
+def test_a_check_that_does_not_apply_says_so_on_the_page(page: Page) -> None:
+    """Decision 0025 on the page: the CHA manual rates its output bearing by C and C_0
+    (Table 51.1), so CHA-25A-50's allowable-force checks are "not applicable" — shown as
+    such in the checks table, and no reason in the ranking."""
+    page.goto("/")
+    page.get_by_role("button", name="English").click()
+    fill_worked_example(page)
+    page.locator("#f-models").fill("CHA-25A-50")
+    page.locator("#f-ol").check()
+    for name, value in (
+        ("radial_force_n", "500"),
+        ("axial_force_n", "0"),
+        ("radial_lever_m", "0.02"),
+        ("axial_lever_m", "0"),
+    ):
+        page.locator(f"#f-ol-{name}").fill(value)
+    status, body = post_selection(page)
+    assert status == 201, body
+    (candidate,) = body["candidates"]
+    force = next(c for c in candidate["checks"] if c["name"] == "bearing_radial_force")
+    assert force == {
+        "name": "bearing_radial_force",
+        "status": "not_applicable",
+        "value": None,
+        "limit": None,
+    }
+    page.wait_for_selector('#detail[data-detail="ready"]')
+    row = page.locator('#checks-table tr[data-check="bearing_radial_force"]')
+    expect(row).to_have_attribute("data-status", "not_applicable")
+    expect(row).to_contain_text("not applicable")
+    expect(row).to_contain_text("by its load ratings C and C0")  # C₀ drawn as C<sub>0</sub>
+    ranking = page.locator('#ranking-table tr[data-model="CHA-25A-50"]')
+    expect(ranking.locator('.reasons li[data-check="bearing_radial_force"]')).to_have_count(0)
