@@ -534,3 +534,22 @@ def test_the_motion_file_of_a_segment_cycle_turns_as_its_segments(client: TestCl
         template=str(TEMPLATE),
     )
     assert [f for f in report.findings if not _allowed_deviation(f)] == []
+
+
+def test_a_check_that_does_not_apply_is_no_message(client: TestClient) -> None:
+    """Decision 0025: CHA-25A-50's allowable-force checks do not apply (its bearing is
+    rated by C and C_0), so the record carries no message for them; every other check
+    that did not pass, or passed approximately, has one."""
+    load = {"radial_force_n": 500, "axial_force_n": 0, "radial_lever_m": 0.02, "axial_lever_m": 0}
+    answer = _selection(client, models=["CHA-25A-50"], output_load=load)
+    (chosen,) = answer["candidates"]
+    statuses = {c["name"]: c["status"] for c in chosen["checks"]}
+    assert statuses["bearing_radial_force"] == statuses["bearing_axial_force"] == "not_applicable"
+    e = _by_path(_read_json(client, answer["id"]))
+    flagged = [
+        c
+        for c in chosen["checks"]
+        if c["status"] not in ("pass", "not_applicable") or c.get("approximate")
+    ]
+    messages = [p for p in e if re.fullmatch(r"/SizingResult/Messages/Message\d{2}", p)]
+    assert len(messages) == len(flagged)

@@ -398,10 +398,11 @@ def _no_data(id_short: str) -> model.Property:
 
 def _messages(chosen: ChosenCandidate) -> model.SubmodelElementCollection:
     """Each check of the chosen candidate that failed, warned, lacked data or passed only
-    approximately, its words in English and German."""
+    approximately, its words in English and German (a check that does not apply is no
+    message: decision 0025)."""
     entries = []
     for i, check in enumerate(chosen.checks):
-        if check.status == "pass" and not check.approximate:
+        if check.status == "not_applicable" or (check.status == "pass" and not check.approximate):
             continue
         criticality = "error" if check.status == "fail" else "warning"
         text = {lang: words[i] for lang, words in chosen.messages.items()}
