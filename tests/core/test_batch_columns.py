@@ -26,7 +26,7 @@ from tests.oracle.test_engine_parity import (
 )
 
 from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import BRAKE_RULES, RULES, Rule
+from actuator_selection.core.checks import BRAKE_HOLDING, RULES, Rule
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.engine import (
     STATUS_BY_CODE,
@@ -140,7 +140,7 @@ def test_the_worked_example_and_the_brake_rules() -> None:
     table = rank_columns([fha], columns_of([worked_example.APPLICATION]), top=1)
     assert round(table.accel_torque_nm[0], 2) == 95.48
     braked = [dataclasses.replace(worked_example.APPLICATION, brake=True)]
-    assert_table_like_select_batch([fha], braked, top=1, rules=BRAKE_RULES)
+    assert_table_like_select_batch([fha], braked, top=1, rules=(*RULES, BRAKE_HOLDING))
 
 
 def test_an_empty_catalogue_gives_figures_and_no_candidates() -> None:

@@ -17,11 +17,29 @@ import pytest
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.bearing import OutputLoad, l10_life_h, oscillating_life_h
-from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, RULES, Status
+from actuator_selection.core.checks import (
+    BEARING_AXIAL_FORCE,
+    BEARING_FRETTING,
+    BEARING_LIFE,
+    BEARING_MOMENT,
+    BEARING_RADIAL_FORCE,
+    BEARING_STATIC,
+    RULES,
+    Status,
+)
 from actuator_selection.core.cycle import Load, SpeedPattern, mean_speed_rpm
 from actuator_selection.core.engine import evaluate_batch
 from actuator_selection.core.motion import Motion, Segment
 from actuator_selection.core.selection import Application, evaluate
+
+BEARING_RULES = (
+    BEARING_MOMENT,
+    BEARING_STATIC,
+    BEARING_RADIAL_FORCE,
+    BEARING_AXIAL_FORCE,
+    BEARING_FRETTING,
+)
+"""The output bearing's checks where an output load is given, in the answers' order."""
 
 FHA_14C_50 = Actuator(
     model="FHA-14C-50",

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 import pytest
 from tests import worked_example
-from tests.oracle.flowchart import operands
+from tests.oracle.flowchart import ORDER, operands
 
 from actuator_selection.core import checks, selection
 from actuator_selection.core.actuators import Actuator
@@ -154,7 +154,8 @@ def test_operands_name_each_value() -> None:
     )
     q = operands(actuator, app, torques, profile)
     # The drive's and the output bearing's operands: tests/core/test_drive_current.py.
-    assert dict(list(q._asdict().items())[: Operands._fields.index("decel_s")]) == {
+    named = q._asdict()
+    assert {k: named[k] for k in ORDER[: ORDER.index("decel_s")]} == {
         "speed_rpm": 21,
         "load_inertia_kgm2": 22,
         "high_dynamics": False,
@@ -179,11 +180,10 @@ def test_operands_name_each_value() -> None:
         "brake_holding_torque_nm": 18,
     }
     bare = operands(Actuator(model="B", family="F", gear_ratio=50), app, None, profile)
-    first_new = Operands._fields.index("decel_s")  # later ones: test_drive_current.py
+    first_new = ORDER.index("decel_s")  # later ones: test_drive_current.py
+    values = bare._asdict()
     unpublished = [
-        name
-        for name, v in list(bare._asdict().items())[:first_new]
-        if isinstance(v, float) and math.isnan(v)
+        name for name in ORDER[:first_new] if isinstance(v := values[name], float) and math.isnan(v)
     ]
     assert unpublished == [
         "accel_torque_nm",

@@ -13,12 +13,11 @@ import math
 from collections.abc import Sequence
 
 import pytest
-from tests.oracle.flowchart import operands
+from tests.oracle.flowchart import ORDER, operands
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.checks import (
     DRIVE_CURRENT,
-    DRIVE_RULES,
     DRIVE_VOLTAGE,
     RULES,
     Operands,
@@ -121,7 +120,7 @@ def test_drive_checks_join_only_when_asked() -> None:
         load=Load(torque_nm=5, inertia_kgm2=1.3),
     )
     assert plain.rules == RULES
-    assert app(40, 5, 1.3).rules == (*RULES, *DRIVE_RULES)
+    assert app(40, 5, 1.3).rules == (*RULES, DRIVE_CURRENT)
 
 
 @pytest.mark.parametrize(
@@ -259,9 +258,8 @@ def test_new_operands_land_in_their_fields() -> None:
     assert math.isnan(q.required_life_h)
     # The output bearing's operands end here; the thermal ones follow
     # (tests/core/test_thermal_validity.py).
-    assert Operands._fields[Operands._fields.index("cycle_s") - 1] == (
-        "bearing_dynamic_tilting_moment_nm"
-    )
+    assert ORDER[ORDER.index("cycle_s") - 1] == "bearing_dynamic_tilting_moment_nm"
+    assert sorted(ORDER) == sorted(Operands._fields)
 
 
 def assert_batch_equals_scalar(

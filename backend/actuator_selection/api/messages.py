@@ -37,7 +37,7 @@ from werkzeug.http import parse_accept_header
 
 from actuator_selection.core import check_messages
 from actuator_selection.core.check_messages import CHECK_MESSAGES, CHECK_WORDS
-from actuator_selection.core.checks import BEARING_LIFE, BEARING_RULES, BRAKE_RULES, DRIVE_RULES
+from actuator_selection.core.checks import ALL_RULES
 from actuator_selection.core.messages import MESSAGES as DOMAIN_MESSAGES
 from actuator_selection.core.messages import N_, Text, listed
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
@@ -460,7 +460,7 @@ def check_templates() -> dict[str, str]:
     :func:`render_check` follows."""
     templates = {f"check:{c}": t for c, t in CHECK_MESSAGES.items()}
     templates |= {f"check_word:{w}": w for w in CHECK_WORDS}
-    for rule in (*BRAKE_RULES, *DRIVE_RULES, *BEARING_RULES, BEARING_LIFE):
+    for rule in ALL_RULES:
         templates |= {f"check_word:{need.what}": need.what for need in rule.requires}
     return templates
 

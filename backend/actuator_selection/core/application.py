@@ -5,23 +5,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 from actuator_selection.core.axis import AxisLoad
 from actuator_selection.core.bearing import OutputLoad
-from actuator_selection.core.checks import (
-    BEARING_LIFE,
-    BEARING_RULES,
-    BRAKE_EMERGENCY_STOPS,
-    BRAKE_RULES,
-    DRIVE_RULES,
-    GEAR_LIFE,
-    GEAR_MOMENTARY_PEAK,
-    GEAR_RULES,
-    NATURAL_FREQUENCY,
-    RULES,
-    Rule,
-)
+from actuator_selection.core.checks import Rule, rules_for
 from actuator_selection.core.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.core.cycle import Load, SpeedPattern
 from actuator_selection.core.errors import InvalidInputError
@@ -124,14 +111,14 @@ class Application:
 
     drive: bool = False
     """Whether the drive's current is sized too
-    (:data:`~actuator_selection.core.checks.DRIVE_RULES`); the output voltage is checked
+    (:data:`~actuator_selection.core.checks.DRIVE_CURRENT`); the output voltage is checked
     either way (:data:`~actuator_selection.core.checks.DRIVE_VOLTAGE`)."""
     output_load: OutputLoad | None = None
     """An external load on the output flange, or None: the output bearing is not checked
-    (:data:`~actuator_selection.core.checks.BEARING_RULES`)."""
+    (the rules of :mod:`~actuator_selection.core.checks.rules.bearing`)."""
     gear: bool = False
     """Whether the strain wave gear's own limits are checked
-    (:data:`~actuator_selection.core.checks.GEAR_RULES`; docs/decisions/0024)."""
+    (the rules of :mod:`~actuator_selection.core.checks.rules.gear`; docs/decisions/0024)."""
     gear_required_life_h: float | None = None
     """The wave generator life the application needs [h]; None: not checked."""
     momentary_torque_nm: float | None = None
@@ -175,48 +162,4 @@ class Application:
     def rules(self) -> tuple[Rule, ...]:
         """The checks this application needs: the flowchart's, the brake's if fitted, the
         output bearing's if an output load is given (its life if a life is required)."""
-        load = self.output_load
-        return _rule_set(
-            self.brake,
-            self.drive,
-            load is not None,
-            load is not None and load.required_life_h is not None,
-            self.gear,
-            self.gear and self.gear_required_life_h is not None,
-            self.gear and self.momentary_torque_nm is not None,
-            self.min_natural_frequency_hz is not None,
-            self.brake and self.emergency_stops is not None,
-        )
-
-
-@lru_cache(maxsize=16)
-def _rule_set(
-    brake: bool,
-    drive: bool,
-    bearing: bool,
-    life: bool,
-    gear: bool = False,
-    gear_life: bool = False,
-    momentary: bool = False,
-    frequency: bool = False,
-    emergency: bool = False,
-) -> tuple[Rule, ...]:
-    """One tuple per combination, so that cases group by their rules cheaply."""
-    rules = BRAKE_RULES if brake else RULES
-    if emergency:
-        rules = (*rules, BRAKE_EMERGENCY_STOPS)
-    if gear:
-        rules = (*rules, *GEAR_RULES)
-    if momentary:
-        rules = (*rules, GEAR_MOMENTARY_PEAK)
-    if gear_life:
-        rules = (*rules, GEAR_LIFE)
-    if frequency:
-        rules = (*rules, NATURAL_FREQUENCY)
-    if drive:
-        rules = (*rules, *DRIVE_RULES)
-    if bearing:
-        rules = (*rules, *BEARING_RULES)
-    if life:
-        rules = (*rules, BEARING_LIFE)
-    return rules
+        return rules_for(self)

@@ -10,13 +10,14 @@ family to a file, each with its words.
   ``bearing`` (output bearing), ``brake`` (holding brake, emergency stops), ``gear`` (the
   strain wave gear's own limits), ``stiffness`` (natural frequency, deflection).
 
-The engine (:mod:`actuator_selection.core.engine`) runs the rule sets below on arrays of
-load cases × actuators; the rules' order is the order of a candidate's checks.
+The rules are found in their family's file (:data:`ALL_RULES`; a rule's ``when`` says which
+load cases it checks, :func:`rules_for`); the engine (:mod:`actuator_selection.core.engine`)
+runs them on arrays of load cases × actuators, in the order of a candidate's checks.
 
 Each check compares one quantity, and reports it with its own value, limit and unit.
 
 **Adding a check is adding one rule** (its formulas and its words) to the file of its
-family and to a rule set below; the engine, the verdicts and the ranking follow. Here
+family; the engine, the verdicts and the ranking follow. Here
 n_av ≤ n_max (Eq. 514.3) as a further check, with the chapter's worked example
 (Table 516.1, FHA-25C-50-L of Table 516.3):
 
@@ -61,6 +62,7 @@ from actuator_selection.core.checks.rule import (
     published,
     utilisation,
 )
+from actuator_selection.core.checks.rules import ALL_RULES, FAMILIES, RULES, rules_for
 from actuator_selection.core.checks.rules.bearing import (
     BEARING_AXIAL_FORCE,
     BEARING_FRETTING,
@@ -81,7 +83,6 @@ from actuator_selection.core.checks.rules.gear import (
     GEAR_LIFE,
     GEAR_MOMENTARY_PEAK,
     GEAR_REPEATED_PEAK,
-    GEAR_RULES,
 )
 from actuator_selection.core.checks.rules.motion import (
     DECEL_TORQUE,
@@ -98,29 +99,27 @@ from actuator_selection.core.checks.rules.thermal import (
 )
 
 __all__ = [
+    "ALL_RULES",
     "BEARING_AXIAL_FORCE",
     "BEARING_FRETTING",
     "BEARING_LIFE",
     "BEARING_MOMENT",
     "BEARING_RADIAL_FORCE",
-    "BEARING_RULES",
     "BEARING_STATIC",
     "BRAKE_EMERGENCY_STOPS",
     "BRAKE_HOLDING",
-    "BRAKE_RULES",
     "CONTINUOUS_DUTY",
     "CONTINUOUS_SPEED",
     "DECEL_TORQUE",
     "DRIVE_CURRENT",
-    "DRIVE_RULES",
     "DRIVE_VOLTAGE",
+    "FAMILIES",
     "FLOAT_OPS",
     "GEAR_AVERAGE_TORQUE",
     "GEAR_INPUT_SPEED",
     "GEAR_LIFE",
     "GEAR_MOMENTARY_PEAK",
     "GEAR_REPEATED_PEAK",
-    "GEAR_RULES",
     "INERTIA_RATIO",
     "INERTIA_RATIO_LIMIT",
     "MAX_SPEED",
@@ -143,43 +142,6 @@ __all__ = [
     "overload",
     "published",
     "regenerative_energy_j",
+    "rules_for",
     "utilisation",
 ]
-
-BEARING_RULES: tuple[Rule, ...] = (
-    BEARING_MOMENT,
-    BEARING_STATIC,
-    BEARING_RADIAL_FORCE,
-    BEARING_AXIAL_FORCE,
-    BEARING_FRETTING,
-)
-"""The output bearing's checks where an output load is given (``Application.output_load``);
-:data:`BEARING_LIFE` joins them where a required life is given."""
-
-RULES: tuple[Rule, ...] = (
-    MAX_SPEED,
-    INERTIA_RATIO,
-    PEAK_TORQUE,
-    DECEL_TORQUE,
-    CONTINUOUS_DUTY,
-    THERMAL_PEAK,
-    CONTINUOUS_SPEED,
-    DRIVE_VOLTAGE,
-)
-"""The flowchart's checks in the manufacturer's order (chapter p. 514–517), then whether
-T_rms stands for the cycle's length (:data:`THERMAL_PEAK`, Fig. 520.1's model), then the
-continuous speed by the same model (:data:`CONTINUOUS_SPEED`), then whether a controller
-listed for the actuator (Table 521.1) delivers the voltage the axis needs
-(:data:`DRIVE_VOLTAGE`): an actuator that no listed controller can drive at n_2 is not
-suitable, whether or not the drive is sized (issue 28, item 1). Where the catalogue lacks
-the winding's constants (K_E in V_rms, L, p) or lists no controller on a bus class the
-actuator runs on, that check lacks data and the verdict is unconfirmed."""
-
-DRIVE_RULES: tuple[Rule, ...] = (DRIVE_CURRENT,)
-"""The drive's further check, where asked for (``Application.drive``): peak current
-(Eq. 522.2, 522.3), with the energy braking returns. The output voltage
-(:data:`DRIVE_VOLTAGE`) is in :data:`RULES`, checked for every selection."""
-
-BRAKE_RULES: tuple[Rule, ...] = (*RULES, BRAKE_HOLDING)
-"""The checks of an actuator fitted with its holding brake: the flowchart's, then the
-brake's (:data:`BRAKE_HOLDING`)."""

@@ -1,14 +1,32 @@
 """What the rules compute from: :class:`Operands`, one name per quantity.
 
+Two kinds of operand, each declared in one home:
+
+- the catalogue's **published** values: a field of the registry
+  (:mod:`actuator_selection.core.catalogue_fields`) with an ``operand`` is an operand under
+  :attr:`~actuator_selection.core.catalogue_fields.CatalogueField.operand_name`
+  (:data:`PUBLISHED`), NaN where not published: adding one is its declaration, this module
+  does not change (docs/decisions/0027-operands-from-the-registry.md);
+- what is **worked out**: the load case's and the cycle's quantities, the cycle's torques on
+  each actuator, and the catalogue values derived from others, typed below
+  (:class:`Computed`) beside their meaning.
+
 The engine (:mod:`actuator_selection.core.engine`) builds them in one place
-(:func:`~actuator_selection.core.engine.block.operands_of`), by name: the catalogue's
-values from :func:`~actuator_selection.core.engine.catalogue.catalogue_arrays` (one
-function, field by field), the case's and the cycle's from the load cases.
+(:func:`~actuator_selection.core.engine.block.operands_of`), by name.
+
+mypy sees :class:`Computed`'s fields typed; a published value (``q.max_speed_rpm``) is read
+through ``__getattr__`` as :data:`Real`: its name is checked when the rule runs (every rule
+runs in the tests) and against the registry by ``tests/core/test_operands.py``.
+
+>>> "max_speed_rpm" in Operands._fields and "mean_speed_rpm" in Operands._fields
+True
 """
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, Final, NamedTuple
+
+from actuator_selection.core.catalogue_fields import OPERAND_FIELDS
 
 Real = Any
 """A float64 array of the engine's (a float where one cell is worded)."""
@@ -16,15 +34,13 @@ Truth = Any
 """A bool array of the engine's (a bool where one cell is worded)."""
 
 
-class Operands(NamedTuple):
-    """What the rules compute from: the load case, the cycle, the actuator.
+class Computed(NamedTuple):
+    """The operands worked out: the load case, the cycle, the cycle's torques on each
+    actuator, and the catalogue values derived from others.
 
     In the engine, case quantities are columns (cases × 1), catalogue values rows
     (actuators), cycle torques cases × actuators; one cell's are floats (the words of
     its checks). Unpublished catalogue values are NaN.
-
-    Immutable like the frozen dataclasses of the core; a named tuple, so that one
-    cell's operands are cut from the arrays by position (:meth:`_make`).
     """
 
     speed_rpm: Real
@@ -41,16 +57,6 @@ class Operands(NamedTuple):
     """Deceleration torque T_3 [Nm] (Eq. 514.1), negative while braking; NaN without J_A."""
     rms_torque_nm: Real
     """RMS torque T_rms [Nm] (Eq. 514.2); NaN without J_A."""
-    max_torque_nm: Real
-    """Repeated peak torque T_max [Nm]."""
-    max_speed_rpm: Real
-    """Maximum output speed n_max [rpm]."""
-    inertia_kgm2: Real
-    """Actuator moment of inertia J_A at the output [kgm²]."""
-    stall_torque_nm: Real
-    """Continuous stall torque T_0 [Nm]."""
-    continuous_torque_nm: Real
-    """Allowable continuous torque, where a catalogue gives that instead of T_0 [Nm]."""
     has_zone: Truth
     """Whether a continuous-duty zone is published (Fig. 517.1)."""
     zone_torque_nm: Real
@@ -64,36 +70,13 @@ class Operands(NamedTuple):
     """The least |T_3| over every J_A ≥ 0 [Nm]."""
     rms_torque_floor_nm: Real
     """The least T_rms over every J_A ≥ 0 [Nm]."""
-    continuous_speed_rpm: Real
-    """Allowable continuous output speed [rpm] (FHA-C); NaN where not published."""
-    rated_speed_rpm: Real
-    """Rated output speed [rpm] (CHA: rated motor speed / i); NaN where not published."""
     load_torque_nm: Real
     """The torque held at standstill [Nm]: |T_G| + T_F of the axis (for the chapter's load,
     T_L, taken as acting at standstill for the brake)."""
-    brake_holding_torque_nm: Real
-    """The holding brake's holding torque at the output [Nm]; NaN where not published."""
     decel_s: Real
     """Deceleration time t_3 [s] (Table 516.1), for the energy braking returns."""
-    gear_ratio: Real
-    """Gear ratio i [-]."""
-    torque_constant_nm_per_a: Real
-    """Torque constant at the output k_T [Nm/A] (CHA k_Tout); NaN where not published."""
-    max_current_a: Real
-    """Maximum current I_max [A]; NaN where not published."""
-    no_load_starting_current_a: Real
-    """No-load starting current I_NLS [A] (Eq. 522.2); NaN where not published."""
-    no_load_current_constant_a_per_rpm: Real
-    """No-load running current constant K_INL at 30 °C [A/rpm] (Eq. 522.2); NaN where not
-    published (the cold value: the larger, so the safe side)."""
-    motor_voltage_constant_v_per_krpm: Real
-    """Motor voltage constant K_E [V_rms line-to-line per 1000 rpm] (CHA k_EM)."""
-    resistance_line_ohm: Real
-    """Winding resistance line-to-line R [Ω]."""
     inductance_line_h: Real
     """Winding inductance line-to-line L [H]."""
-    pole_pairs: Real
-    """The motor's number of pole pairs p; NaN where not published."""
     dc_bus_voltage_v: Real
     """The highest nominal DC bus voltage the actuator runs on (its Table 521.1 bus
     classes) [V]; NaN where no bus class is published."""
@@ -114,22 +97,10 @@ class Operands(NamedTuple):
     swing_deg: Real
     """The cycle's swing [°] (:func:`~actuator_selection.core.bearing.swing_deg`); NaN
     without an output load (the output bearing is not checked)."""
-    bearing_pitch_diameter_m: Real
-    """Output bearing pitch circle diameter d_p [m]; NaN where not published."""
-    bearing_offset_m: Real
-    """Output bearing offset R [m]; NaN where not published."""
-    bearing_dynamic_load_rating_n: Real
-    """Output bearing basic dynamic load rating C [N]; NaN where not published."""
-    bearing_static_load_rating_n: Real
-    """Output bearing basic static load rating C_0 [N]; NaN where not published."""
     bearing_life_exponent: Real
     """Life exponent B of the output bearing's type: 3 for a ball, 10/3 for a roller
     bearing (:func:`~actuator_selection.core.bearing.life_exponent`); NaN where the type is
     not published."""
-    bearing_moment_load_nm: Real
-    """Allowable moment load on the output bearing [Nm] (FHA-C, FHA-C mini)."""
-    bearing_dynamic_tilting_moment_nm: Real
-    """Allowable dynamic tilting moment M_dyn(max) [Nm] (CHA)."""
     cycle_s: Real
     """Cycle time t_0 [s] (Table 516.1: t_1 + t_2 + t_3 + t_p)."""
     thermal_time_constant_s: Real
@@ -172,37 +143,32 @@ class Operands(NamedTuple):
     travel_mm_per_rad: Real
     """The load's travel per radian of the output [mm/rad] of a linear axis; NaN for a
     rotary load."""
-    limit_torque_t1_nm: Real
-    """T_1 of the torsional stiffness curve [Nm]; NaN where not published."""
-    limit_torque_t2_nm: Real
-    """T_2 of the torsional stiffness curve [Nm]; NaN where not published."""
-    stiffness_k1_nm_per_rad: Real
-    """K_1 [Nm/rad]; NaN where not published."""
-    stiffness_k2_nm_per_rad: Real
-    """K_2 [Nm/rad]; NaN where not published."""
-    stiffness_k3_nm_per_rad: Real
-    """K_3 [Nm/rad]; NaN where not published."""
-    brake_emergency_stop_count: Real
-    """The brake's allowable emergency stops [-]; NaN where not published."""
-    brake_closing_time_s: Real
-    """The brake's closing time [s]; NaN where not published."""
-    gear_average_torque_limit_nm: Real
-    """The gear's limit for average torque T_A [Nm]; NaN where not published."""
-    gear_repeated_peak_torque_nm: Real
-    """The gear's limit for repeated peak torque T_R [Nm]; NaN where not published."""
-    gear_momentary_peak_torque_nm: Real
-    """The gear's limit for momentary peak torque T_M [Nm]; NaN where not published."""
-    gear_momentary_peak_count: Real
-    """The count of momentary peaks the gear allows [-]; NaN where not published."""
-    gear_average_input_speed_limit_rpm: Real
-    """The gear's allowable average input speed [rpm]; NaN where not published."""
-    gear_rated_torque_nm: Real
-    """T_N at n_N = 2000 rpm [Nm]; NaN where not published."""
-    gear_rated_life_h: Real
-    """L_n [h]; NaN where not published."""
     gear_life_basis: Real
     """10 where L_n is an L_10, 50 where an L_50; NaN where not published."""
-    bearing_radial_load_n: Real
-    """Allowable radial load on the output bearing [N] (FHA-C); NaN where not published."""
-    bearing_axial_load_n: Real
-    """Allowable axial load on the output bearing [N] (FHA-C); NaN where not published."""
+
+
+PUBLISHED: Final = tuple(name for f in OPERAND_FIELDS if (name := f.operand_name) is not None)
+"""The catalogue's values the rules read as published, by operand name (the registry's
+fields with an ``operand``, in the registry's order)."""
+
+if TYPE_CHECKING:
+
+    class Operands(Computed):
+        """What the rules compute from (:class:`Computed`, then :data:`PUBLISHED`)."""
+
+        def __getattr__(self, name: str) -> Real:
+            """A published catalogue value by its operand name (:data:`PUBLISHED`)."""
+
+        def _replace(self, **changes: Real) -> Operands:
+            """A copy with ``changes``, by name (published values too)."""
+
+else:
+    Operands = NamedTuple(
+        "Operands", [*((name, Any) for name in Computed._fields), *((n, Any) for n in PUBLISHED)]
+    )
+    Operands.__doc__ = """What the rules compute from: the worked-out operands
+    (:class:`Computed`), then the catalogue's published values (:data:`PUBLISHED`).
+
+    Immutable like the frozen dataclasses of the core; a named tuple, so that one
+    cell's operands are cut from the arrays by position (:meth:`_make`)."""
+    Operands.__module__ = __name__

@@ -22,12 +22,15 @@ import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import Any, Final
+from typing import TYPE_CHECKING, Any, Final
 
 from actuator_selection.core.check_messages import Phrase, check_words, phrase
 from actuator_selection.core.checks.operands import Operands, Real, Truth
 from actuator_selection.core.deferred import Deferred, defer_field
 from actuator_selection.core.messages import N_
+
+if TYPE_CHECKING:
+    from actuator_selection.core.application import Application
 
 __all__ = [
     "FLOAT_OPS",
@@ -338,6 +341,12 @@ class Rule:
     """Catalogue values without which the check says ``no_data``, in the order they are named."""
     message: Message
     """The check in words, for pass, fail and warn (``no_data`` has one message for all)."""
+    when: Callable[[Application], bool] | None = None
+    """Which load cases it checks (the brake's where one is fitted, the output bearing's
+    where an output load is given, …); None: every one. The rules are found in their
+    family's file (:data:`~actuator_selection.core.checks.rules.ALL_RULES`) and each case
+    runs those whose ``when`` holds (:attr:`~actuator_selection.core.application.
+    Application.rules`): a rule sharing a condition with others names the same function."""
     within: Formula | None = None
     """A further condition for passing, or None."""
     binding: Formula | None = None

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import math
-from typing import Final
+from typing import TYPE_CHECKING, Final
 
 from actuator_selection.core import bearing
 from actuator_selection.core.check_messages import check_words, phrase
@@ -22,6 +22,9 @@ from actuator_selection.core.checks.rule import (
     published,
 )
 from actuator_selection.core.messages import N_
+
+if TYPE_CHECKING:
+    from actuator_selection.core.application import Application
 
 _DYNAMIC_TILTING = N_("the allowable dynamic tilting moment M_dyn")
 _MOMENT_LOAD = N_("the allowable moment load")
@@ -134,8 +137,20 @@ def _moment_message(q: Operands, status: Status, moment: float, limit: float) ->
     )
 
 
+def loaded(app: Application) -> bool:
+    """Whether an output load is given: the output bearing is checked."""
+    return app.output_load is not None
+
+
+def life_asked(app: Application) -> bool:
+    """Whether the output bearing's life is checked."""
+    load = app.output_load
+    return load is not None and load.required_life_h is not None
+
+
 BEARING_MOMENT = Rule(
     name="bearing_moment",
+    when=loaded,
     reference="CHA §4.3; FHA-C manual ch. 2, formula (1)",
     unit="Nm",
     value=lambda q, xp: _moment(q),
@@ -178,6 +193,7 @@ def _static_message(q: Operands, status: Status, needed: float, c_0: float) -> s
 
 BEARING_STATIC = Rule(
     name="bearing_static_safety",
+    when=loaded,
     reference="CHA §4.3; FHA-C manual ch. 2, formulas (9), (10)",
     unit="N",
     value=lambda q, xp: q.static_safety_min * _static_load(q),
@@ -262,28 +278,6 @@ def _life_message(q: Operands, status: Status, needed: float, c: float) -> str:
     )
 
 
-BEARING_LIFE = Rule(
-    name="bearing_life",
-    reference="CHA §4.3, Table 69.3, Table 70.4; FHA-C manual ch. 2, formulas (5)–(7); ISO 281",
-    unit="N",
-    value=_required_rating,
-    limit=lambda q, xp: q.bearing_dynamic_load_rating_n,
-    requires=(
-        published("bearing_pitch_diameter_m", N_("output bearing pitch circle diameter d_p")),
-        published("bearing_offset_m", N_("output bearing offset R")),
-        published("bearing_dynamic_load_rating_n", N_("output bearing dynamic load rating C")),
-    ),
-    approximate=lambda q, xp: xp.isnan(q.bearing_life_exponent),
-    message=_life_message,
-)
-"""L_10 at the cycle's mean speed n_av ≥ the required life, checked as the dynamic load
-rating that life needs, f_w·P_c·(L_h·60·n_av/10⁶)^(1/B), against C [N]; the message
-gives L_10 in hours. B is the bearing type's life exponent (ISO 281: 3 for ball, 10/3 for
-roller bearings; CHA manual 1018854 12/2015, p. 69, Table 69.3): 3 for the four-point
-contact ball bearings of the CHA-14A, -17A and -20A, 10/3 for the cross roller bearings.
-Where the catalogue gives no type, the stricter of the two (the larger C needed), and
-the check is approximate (issue 28, item 4)."""
-
 # --- output bearing: fretting under oscillating motion (CHA manual, p. 69) ------------------
 
 
@@ -292,26 +286,6 @@ def _fretting_message(q: Operands, status: Status, needed: float, swing: float) 
         return phrase("bearing_fretting.still")
     kind = "pass" if status is Status.PASS else "warn"  # it never fails (never binding)
     return phrase(f"bearing_fretting.{kind}", value=needed, limit=swing)
-
-
-BEARING_FRETTING = Rule(
-    name="bearing_fretting",
-    reference="CHA manual 1018854 12/2015, p. 69",
-    unit="°",
-    value=lambda q, xp: q.swing_deg * 0.0 + bearing.FRETTING_SWING_DEG,
-    limit=lambda q, xp: q.swing_deg,
-    requires=(),
-    applies=lambda q, xp: q.swing_deg > 0.0,
-    binding=lambda q, xp: q.swing_deg < 0.0,  # never: a warning, the verdict stands
-    message=_fretting_message,
-)
-"""The cycle's swing (:func:`~actuator_selection.core.bearing.swing_deg`) of at least
-:data:`~actuator_selection.core.bearing.FRETTING_SWING_DEG` = 5°, checked as 5° ≤ the
-swing; a smaller swing warns (the CHA manual warns of fretting under oscillating motion
-below 5°, issue 28 item 4) and never fails: the manual gives no life for it. A cycle that
-does not move is not applicable: there is no oscillating motion. The swing is the range
-of the output's angle over the cycle, so one small move repeated in one direction warns
-as well: on the safe side, as the chapter's cycle does not say whether it returns."""
 
 
 # --- bearing_radial_force, bearing_axial_force: F ≤ the allowable load (FHA-C) ------------
@@ -336,6 +310,7 @@ def _force_rule(name: str, force: str, allowable: str, what: str) -> Rule:
 
     return Rule(
         name=name,
+        when=loaded,
         reference="FHA-C manual §1-4-2; CHA 1018854 12/2015 Table 51.1",
         unit="N",
         value=lambda q, xp: abs(getattr(q, force)),
@@ -363,3 +338,48 @@ BEARING_AXIAL_FORCE = _force_rule(
 )
 """|F_a| ≤ the allowable axial load (FHA-C), issue 28 item 4; not applicable to a
 bearing rated by C and C_0 (CHA)."""
+
+
+BEARING_FRETTING = Rule(
+    name="bearing_fretting",
+    when=loaded,
+    reference="CHA manual 1018854 12/2015, p. 69",
+    unit="°",
+    value=lambda q, xp: q.swing_deg * 0.0 + bearing.FRETTING_SWING_DEG,
+    limit=lambda q, xp: q.swing_deg,
+    requires=(),
+    applies=lambda q, xp: q.swing_deg > 0.0,
+    binding=lambda q, xp: q.swing_deg < 0.0,  # never: a warning, the verdict stands
+    message=_fretting_message,
+)
+"""The cycle's swing (:func:`~actuator_selection.core.bearing.swing_deg`) of at least
+:data:`~actuator_selection.core.bearing.FRETTING_SWING_DEG` = 5°, checked as 5° ≤ the
+swing; a smaller swing warns (the CHA manual warns of fretting under oscillating motion
+below 5°, issue 28 item 4) and never fails: the manual gives no life for it. A cycle that
+does not move is not applicable: there is no oscillating motion. The swing is the range
+of the output's angle over the cycle, so one small move repeated in one direction warns
+as well: on the safe side, as the chapter's cycle does not say whether it returns."""
+
+
+BEARING_LIFE = Rule(
+    name="bearing_life",
+    when=life_asked,
+    reference="CHA §4.3, Table 69.3, Table 70.4; FHA-C manual ch. 2, formulas (5)–(7); ISO 281",
+    unit="N",
+    value=_required_rating,
+    limit=lambda q, xp: q.bearing_dynamic_load_rating_n,
+    requires=(
+        published("bearing_pitch_diameter_m", N_("output bearing pitch circle diameter d_p")),
+        published("bearing_offset_m", N_("output bearing offset R")),
+        published("bearing_dynamic_load_rating_n", N_("output bearing dynamic load rating C")),
+    ),
+    approximate=lambda q, xp: xp.isnan(q.bearing_life_exponent),
+    message=_life_message,
+)
+"""L_10 at the cycle's mean speed n_av ≥ the required life, checked as the dynamic load
+rating that life needs, f_w·P_c·(L_h·60·n_av/10⁶)^(1/B), against C [N]; the message
+gives L_10 in hours. B is the bearing type's life exponent (ISO 281: 3 for ball, 10/3 for
+roller bearings; CHA manual 1018854 12/2015, p. 69, Table 69.3): 3 for the four-point
+contact ball bearings of the CHA-14A, -17A and -20A, 10/3 for the cross roller bearings.
+Where the catalogue gives no type, the stricter of the two (the larger C needed), and
+the check is approximate (issue 28, item 4)."""

@@ -6,12 +6,15 @@ allowable number with how far the load drops while the brake closes (issue 28, i
 from __future__ import annotations
 
 import math
-from typing import Final
+from typing import TYPE_CHECKING, Final
 
 from actuator_selection.core.check_messages import Phrase, check_words, phrase
 from actuator_selection.core.checks.rule import Operands, Rule, Status, outcome, published
 from actuator_selection.core.loads import STANDARD_GRAVITY_M_PER_S2
 from actuator_selection.core.messages import N_
+
+if TYPE_CHECKING:
+    from actuator_selection.core.application import Application
 
 DEFAULT_BRAKE_SAFETY_FACTOR: Final = 1.0
 """S of :data:`BRAKE_HOLDING` where the application sets none: 1, the catalogue's holding
@@ -85,8 +88,19 @@ def _brake_message(q: Operands, status: Status, t_l: float, holding: float) -> s
     )
 
 
+def braked(app: Application) -> bool:
+    """Whether the actuator is fitted with its holding brake."""
+    return app.brake
+
+
+def emergency_stops_asked(app: Application) -> bool:
+    """Whether the brake's emergency stops are checked."""
+    return app.brake and app.emergency_stops is not None
+
+
 BRAKE_HOLDING = Rule(
     name="brake_holding",
+    when=braked,
     reference="catalogue brake data (holding torque)",
     unit="Nm",
     value=lambda q, xp: q.brake_safety_factor * q.load_torque_nm,
@@ -154,6 +168,7 @@ def _emergency_message(q: Operands, status: Status, value: float, limit: float) 
 
 BRAKE_EMERGENCY_STOPS = Rule(
     name="brake_emergency_stops",
+    when=emergency_stops_asked,
     reference="CHA 1018854 12/2015 Table 36.3, Table 38.3, Table 40.3",
     unit="",
     value=lambda q, xp: q.emergency_stops,

@@ -4,7 +4,7 @@ output voltage at the load speed (Eq. 521.2 with the inductive drop)."""
 from __future__ import annotations
 
 import math
-from typing import Final
+from typing import TYPE_CHECKING, Final
 
 from actuator_selection.core import electrical
 from actuator_selection.core.check_messages import check_words, phrase
@@ -21,6 +21,9 @@ from actuator_selection.core.checks.rule import (
 )
 from actuator_selection.core.messages import N_
 from actuator_selection.core.units import RAD_PER_S_PER_RPM
+
+if TYPE_CHECKING:
+    from actuator_selection.core.application import Application
 
 WORDS: Final = {
     # drive_current
@@ -130,8 +133,14 @@ def _current_message(q: Operands, status: Status, current: float, i_max: float) 
     )
 
 
+def drive_asked(app: Application) -> bool:
+    """Whether the drive's current is sized (the voltage is checked either way)."""
+    return app.drive
+
+
 DRIVE_CURRENT = Rule(
     name="drive_current",
+    when=drive_asked,
     reference="Eq. 522.2, Eq. 522.3",
     unit="A",
     value=_peak_current,

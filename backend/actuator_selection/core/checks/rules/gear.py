@@ -23,7 +23,7 @@ published for the starter catalogue's actuators, so there these checks say no da
 from __future__ import annotations
 
 import math
-from typing import Final
+from typing import TYPE_CHECKING, Final
 
 from actuator_selection.core.check_messages import check_words, phrase
 from actuator_selection.core.checks.operands import Operands, Real
@@ -37,6 +37,9 @@ from actuator_selection.core.checks.rule import (
     published,
 )
 from actuator_selection.core.messages import N_
+
+if TYPE_CHECKING:
+    from actuator_selection.core.application import Application
 
 RATED_INPUT_SPEED_RPM: Final = 2000.0
 """n_N: the input speed at which T_N and L_n are rated (CSD-2A 1019659 11/2014, p. 18)."""
@@ -139,8 +142,24 @@ def _simple(name: str):  # type: ignore[no-untyped-def]
     return message
 
 
+def gear_asked(app: Application) -> bool:
+    """Whether the gear's own limits are checked (docs/decisions/0024)."""
+    return app.gear
+
+
+def momentary_asked(app: Application) -> bool:
+    """Whether a momentary peak is checked against the gear's T_M."""
+    return app.gear and app.momentary_torque_nm is not None
+
+
+def gear_life_asked(app: Application) -> bool:
+    """Whether the wave generator's life is checked."""
+    return app.gear and app.gear_required_life_h is not None
+
+
 GEAR_AVERAGE_TORQUE = Rule(
     name="gear_average_torque",
+    when=gear_asked,
     reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="Nm",
     value=average_torque_nm,
@@ -155,6 +174,7 @@ GEAR_AVERAGE_TORQUE = Rule(
 
 GEAR_REPEATED_PEAK = Rule(
     name="gear_repeated_peak",
+    when=gear_asked,
     reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="Nm",
     value=lambda q, xp: larger(abs(q.accel_torque_nm), abs(q.decel_torque_nm), xp),
@@ -178,8 +198,26 @@ def _momentary_message(q: Operands, status: Status, value: float, limit: float) 
     )
 
 
+GEAR_INPUT_SPEED = Rule(
+    name="gear_input_speed",
+    when=gear_asked,
+    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
+    unit="rpm",
+    value=input_speed_rpm,
+    limit=lambda q, xp: q.gear_average_input_speed_limit_rpm,
+    requires=(
+        published(
+            "gear_average_input_speed_limit_rpm", N_("allowable average input speed of the gear")
+        ),
+    ),
+    message=_simple("gear_input_speed"),
+)
+"""i·n_av ≤ the allowable average input speed."""
+
+
 GEAR_MOMENTARY_PEAK = Rule(
     name="gear_momentary_peak",
+    when=momentary_asked,
     reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
     unit="Nm",
     value=lambda q, xp: q.momentary_torque_nm,
@@ -197,21 +235,6 @@ GEAR_MOMENTARY_PEAK = Rule(
 )
 """The momentary peak the application names ≤ T_M, as often as N_M allows at most."""
 
-GEAR_INPUT_SPEED = Rule(
-    name="gear_input_speed",
-    reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18",
-    unit="rpm",
-    value=input_speed_rpm,
-    limit=lambda q, xp: q.gear_average_input_speed_limit_rpm,
-    requires=(
-        published(
-            "gear_average_input_speed_limit_rpm", N_("allowable average input speed of the gear")
-        ),
-    ),
-    message=_simple("gear_input_speed"),
-)
-"""i·n_av ≤ the allowable average input speed."""
-
 
 def _life_message(q: Operands, status: Status, value: float, limit: float) -> str:
     return phrase(
@@ -226,6 +249,7 @@ def _life_message(q: Operands, status: Status, value: float, limit: float) -> st
 
 GEAR_LIFE = Rule(
     name="gear_life",
+    when=gear_life_asked,
     reference="CSD-2A 1019659 11/2014 §4.1.1, p. 18; Table 20.1",
     unit="h",
     value=needed_rated_life_h,
@@ -243,7 +267,3 @@ GEAR_LIFE = Rule(
 
 AVERAGE_TORQUE_RULES: Final = frozenset({"gear_average_torque", "gear_life"})
 """The checks that read T_av: the engine sums Σ|n_i|·t_i·|T_i|³ only for a rule set with one."""
-
-GEAR_RULES: tuple[Rule, ...] = (GEAR_AVERAGE_TORQUE, GEAR_REPEATED_PEAK, GEAR_INPUT_SPEED)
-"""The gear's checks when asked; :data:`GEAR_MOMENTARY_PEAK` joins them with a momentary
-peak, :data:`GEAR_LIFE` with a required life."""

@@ -14,12 +14,15 @@ with the torsional deflection under the load torque and under T_1.
 from __future__ import annotations
 
 import math
-from typing import Final
+from typing import TYPE_CHECKING, Final
 
 from actuator_selection.core.check_messages import check_words, phrase
 from actuator_selection.core.checks.operands import Operands, Real
 from actuator_selection.core.checks.rule import Ops, Rule, Status, outcome, published
 from actuator_selection.core.messages import N_
+
+if TYPE_CHECKING:
+    from actuator_selection.core.application import Application
 
 ARCMIN_PER_RAD: Final = 180.0 * 60.0 / math.pi
 
@@ -81,8 +84,14 @@ def _message(q: Operands, status: Status, value: float, limit: float) -> str:
     )
 
 
+def frequency_asked(app: Application) -> bool:
+    """Whether a least natural frequency is asked."""
+    return app.min_natural_frequency_hz is not None
+
+
 NATURAL_FREQUENCY = Rule(
     name="natural_frequency",
+    when=frequency_asked,
     reference="CHA 1018854 12/2015 §3.3.5 p. 50, Eq. 68.1–68.4 p. 68",
     unit="Hz",
     value=lambda q, xp: q.min_natural_frequency_hz,

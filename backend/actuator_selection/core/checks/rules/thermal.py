@@ -273,42 +273,6 @@ def _speed_message(q: Operands, status: Status, n_th: float, limit: float) -> st
 _ASSUMED = phrase("thermal_peak.assumed")
 """The clause "assumed" of the thermal model (no params: one for every message)."""
 
-CONTINUOUS_SPEED = Rule(
-    name="continuous_speed",
-    reference="Eq. 514.3; Fig. 520.1 (model)",
-    unit="rpm",
-    value=lambda q, xp: q.thermal_speed_rpm,
-    limit=_speed_limit,
-    requires=(
-        Requirement(
-            any_of=("continuous_speed_rpm", "rated_speed_rpm"),
-            unless="has_zone",
-            what=N_("continuous-duty zone or allowable continuous or rated speed"),
-        ),
-    ),
-    approximate=lambda q, xp: q.thermal_time_constant_assumed,
-    message=_speed_message,
-)
-"""n_th ≤ the continuous speed: the speed side of the operating point (issue "A verdict an
-application engineer signs", items 3 and 5).
-
-The chapter checks the cycle's mean speed n_av (Eq. 514.3), which stands only for a
-cycle short against the winding's thermal time constant τ_th: CHA-25A-50 running at
-105 rpm (1.5 × its rated 70 rpm) for 30 minutes, then pausing an hour, has n_av =
-35 rpm, yet the winding heats for half an hour as at 105 rpm. n_th follows |n| through
-the repeating cycle with the first-order model of :data:`THERMAL_PEAK`
-(:meth:`~actuator_selection.core.motion.Profile.thermal_speed_rpm`): n_av for a short
-cycle, a segment's own speed where the segment is long against τ_th; a run at k times
-the limit from standstill crosses it after τ_th·ln(k/(k − 1)), 1.1·τ_th at k = 1.5.
-The example peaks at 100 rpm with the assumed τ_th = 600 s and fails.
-
-The limit: the zone's last speed; without a zone the allowable continuous speed
-(FHA-C), else the rated speed (CHA), never n_max, a peak. τ_th as in
-:data:`THERMAL_PEAK`: the catalogue's, else the application's, else an assumed 600 s,
-short, so strict (:data:`~actuator_selection.core.thermal.
-DEFAULT_THERMAL_TIME_CONSTANT_S`), and then the check is approximate.
-"""
-
 # --- 6. thermal_peak: the cycle's heating peak ≤ the continuous limit (Fig. 520.1 model) ------
 
 
@@ -408,4 +372,41 @@ out). τ_th is the
 catalogue's where published, else the application's, else an assumed default
 (:data:`~actuator_selection.core.thermal.DEFAULT_THERMAL_TIME_CONSTANT_S`, reported as
 approximate); the limit is approximate without a zone, as in ``continuous_duty``.
+"""
+
+
+CONTINUOUS_SPEED = Rule(
+    name="continuous_speed",
+    reference="Eq. 514.3; Fig. 520.1 (model)",
+    unit="rpm",
+    value=lambda q, xp: q.thermal_speed_rpm,
+    limit=_speed_limit,
+    requires=(
+        Requirement(
+            any_of=("continuous_speed_rpm", "rated_speed_rpm"),
+            unless="has_zone",
+            what=N_("continuous-duty zone or allowable continuous or rated speed"),
+        ),
+    ),
+    approximate=lambda q, xp: q.thermal_time_constant_assumed,
+    message=_speed_message,
+)
+"""n_th ≤ the continuous speed: the speed side of the operating point (issue "A verdict an
+application engineer signs", items 3 and 5).
+
+The chapter checks the cycle's mean speed n_av (Eq. 514.3), which stands only for a
+cycle short against the winding's thermal time constant τ_th: CHA-25A-50 running at
+105 rpm (1.5 × its rated 70 rpm) for 30 minutes, then pausing an hour, has n_av =
+35 rpm, yet the winding heats for half an hour as at 105 rpm. n_th follows |n| through
+the repeating cycle with the first-order model of :data:`THERMAL_PEAK`
+(:meth:`~actuator_selection.core.motion.Profile.thermal_speed_rpm`): n_av for a short
+cycle, a segment's own speed where the segment is long against τ_th; a run at k times
+the limit from standstill crosses it after τ_th·ln(k/(k − 1)), 1.1·τ_th at k = 1.5.
+The example peaks at 100 rpm with the assumed τ_th = 600 s and fails.
+
+The limit: the zone's last speed; without a zone the allowable continuous speed
+(FHA-C), else the rated speed (CHA), never n_max, a peak. τ_th as in
+:data:`THERMAL_PEAK`: the catalogue's, else the application's, else an assumed 600 s,
+short, so strict (:data:`~actuator_selection.core.thermal.
+DEFAULT_THERMAL_TIME_CONSTANT_S`), and then the check is approximate.
 """
