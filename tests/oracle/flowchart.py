@@ -22,6 +22,7 @@ from actuator_selection.core.candidates import (
     Verdict,
     ranking_key,
 )
+from actuator_selection.core.catalogue_fields import OPERAND_FIELDS
 from actuator_selection.core.checks import Check, Operands, Rule, Status
 from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.core.motion import CycleTorques, Profile
@@ -94,7 +95,13 @@ def operands(
         *_thermal(actuator, app, torques, profile, {} if heating is None else heating),
         *_gear_stiffness_brake(actuator, app, profile),
     )
-    return Operands(**dict(zip(ORDER, values, strict=True)))
+    # A published value the oracle does not read itself above is read as published.
+    published = {
+        name: _value(getattr(actuator, f.name))
+        for f in OPERAND_FIELDS
+        if (name := f.operand_name) is not None and name not in ORDER
+    }
+    return Operands(**dict(zip(ORDER, values, strict=True)), **published)
 
 
 ORDER = (
@@ -177,8 +184,8 @@ ORDER = (
     "bearing_radial_load_n",
     "bearing_axial_load_n",
 )
-"""The operands in the order :func:`operands` reads them (every field of :class:`Operands`,
-a test checks: its helpers return theirs in this order)."""
+"""The operands :func:`operands` reads itself, in its order (its helpers return theirs in
+this order); a catalogue value declared since is read as published, from the registry."""
 
 
 Heating = tuple[tuple[tuple[float, ...], float], float]
