@@ -71,6 +71,7 @@ pytest: install
 ## charts in headless Chromium (not part of the tests).
 bench: install
 	$(BIN)/python -m bench.selection
+	$(BIN)/python -m bench.fixed_cost
 	$(BIN)/python -m bench.batch
 	$(BIN)/python -m bench.ratio
 	$(BIN)/python -m bench.catalogue

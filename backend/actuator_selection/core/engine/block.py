@@ -107,13 +107,15 @@ class Block:
         return worst
 
 
-def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, BoolArray, bool]:
+def _lacking(
+    rule: Rule, q: Operands, cat: CatalogueArrays
+) -> tuple[CodeArray, BoolArray, bool, bool]:
     """Per actuator, the index of the first of ``rule``'s requirements the catalogue does
-    not meet (−1: none), and whether any requirement after the first is unmet; and
-    whether the rule lacks data for every actuator (and cannot fail on its
+    not meet (−1: none), and whether any requirement after the first is unmet; whether
+    the rule lacks data for every actuator (and cannot fail on its
     :attr:`~actuator_selection.core.checks.Rule.lower_bound`): then its status is
     ``no_data`` in every cell, decided without comparing (a one-model selection's checks
-    are often so).
+    are often so); and whether it lacks data for none: then nothing is masked.
 
     A requirement names catalogue values only (:class:`~actuator_selection.core.checks.
     Requirement`), so this is a fact about the actuators, computed once per catalogue
@@ -134,7 +136,8 @@ def _lacking(rule: Rule, q: Operands, cat: CatalogueArrays) -> tuple[CodeArray, 
     everywhere = bool((first_missing >= 0).all()) and (
         rule.lower_bound is None or not bool(((first_missing == 0) & ~others_missing).any())
     )
-    found = cat.lacking[rule] = (first_missing, others_missing, everywhere)
+    nowhere = not bool((first_missing >= 0).any())
+    found = cat.lacking[rule] = (first_missing, others_missing, everywhere, nowhere)
     return found
 
 
@@ -186,7 +189,7 @@ def _decided_codes(
 ) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """:func:`_status_codes` before :attr:`~actuator_selection.core.checks.Rule.applies`."""
     xp = ARRAY_OPS
-    first_missing, others_missing, everywhere = _lacking(rule, q, cat)  # per actuator
+    first_missing, others_missing, everywhere, nowhere = _lacking(rule, q, cat)  # per actuator
     if everywhere:  # no data in every cell: only the value, which the check reports
         codes = np.full(first_missing.shape, NO_DATA)
         overload = np.zeros(first_missing.shape)
@@ -199,6 +202,8 @@ def _decided_codes(
             first_missing=first_missing,
         )
         return codes, overload, arrays
+    if nowhere:  # every actuator has the data: nothing to mask, no floor to apply
+        return _complete_codes(rule, q, first_missing, detail=detail)
     value, limit = rule.value(q, xp), rule.limit(q, xp)
     # numpy's True, not Python's: ~True is −2, which would make the masks integers.
     within = np.True_ if rule.within is None else rule.within(q, xp)
@@ -230,6 +235,41 @@ def _decided_codes(
         _RuleArrays(
             values=value,
             limits=np.where(missing, math.nan, limit),
+            approximate=approximate,
+            first_missing=first_missing,
+        ),
+    )
+
+
+def _complete_codes(
+    rule: Rule, q: Operands, first_missing: CodeArray, *, detail: bool
+) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
+    """:func:`_status_codes` where no actuator lacks the rule's data (the usual case): the
+    same codes, values and limits with no mask (``missing`` is False everywhere, so the
+    lower bound, which applies only where J_A is missing, changes nothing)."""
+    xp = ARRAY_OPS
+    value, limit = rule.value(q, xp), rule.limit(q, xp)
+    within = np.True_ if rule.within is None else rule.within(q, xp)
+    ok = value <= limit if rule.within is None else (value <= limit) & within
+    fail = FAIL if rule.binding is None else np.where(rule.binding(q, xp), FAIL, WARN)
+    # Of the block's shape, as the masked path's codes are (first_missing is a row).
+    codes = np.where(ok & (first_missing < 0), PASS, fail)
+    failing = codes == FAIL
+    if failing.any():
+        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+        overload = np.where(failing, over, 0.0)
+    else:
+        overload = np.zeros(np.shape(codes))
+    if not detail:
+        return codes, overload, None
+    approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp)
+    return (
+        codes,
+        overload,
+        _RuleArrays(
+            values=value,
+            limits=limit,
             approximate=approximate,
             first_missing=first_missing,
         ),
@@ -347,19 +387,27 @@ def _piece_torques(
     return (t0, t1), square
 
 
-def _heating_square(cat: CatalogueArrays, p: PieceArrays, k: int, square: FloatArray) -> FloatArray:
+def _piece_speeds(p: PieceArrays) -> list[FloatArray]:
+    """Each piece's mean |n| (a column of cases), computed once per block for the
+    heating (:func:`_heating_square`) and the heating's speed (:func:`_thermal_speed`)."""
+    col = np.newaxis
+    return [
+        mean_abs_speed_rpm(
+            p.duration[:, k, col],
+            p.start_rpm[:, k, col],
+            p.end_rpm[:, k, col],
+            p.accel_start[:, k, col],
+            p.accel_end[:, k, col],
+        )
+        for k in range(p.duration.shape[1])
+    ]
+
+
+def _heating_square(cat: CatalogueArrays, speed: FloatArray, square: FloatArray) -> FloatArray:
     """The mean T² of piece ``k`` as the winding's heating counts it
     (:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm` with its
     ``no_load_slope``): (√m + k_T·K_INL·|n̄|)² where :attr:`CatalogueArrays.heating_slope`
-    is published, else m."""
-    col = np.newaxis
-    speed = mean_abs_speed_rpm(
-        p.duration[:, k, col],
-        p.start_rpm[:, k, col],
-        p.end_rpm[:, k, col],
-        p.accel_start[:, k, col],
-        p.accel_end[:, k, col],
-    )
+    is published, else m; ``speed`` the piece's mean |n| (:func:`_piece_speeds`)."""
     torque = np.sqrt(square) + cat.heating_slope * speed
     return np.where(np.isnan(cat.heating_slope), square, torque * torque)
 
@@ -371,6 +419,7 @@ def _thermal_torque(
     heat: FloatArray,
     energy: FloatArray,
     squares: list[FloatArray] | None,
+    speeds: list[FloatArray],
 ) -> FloatArray:
     """:meth:`~actuator_selection.core.motion.Profile.thermal_torque_nm` on arrays: the
     periodic start x_0 = B/(1 − A) from the first pass's ``heat`` (B), then the peak of x
@@ -388,7 +437,7 @@ def _thermal_torque(
         if squares is None:
             square = _piece_torques(cat, p, k)[1]
             if on_current:
-                square = _heating_square(cat, p, k, square)
+                square = _heating_square(cat, speeds[k], square)
         else:
             square = squares[k]
         heat = heat + (square - heat) * gains.piece(k)
@@ -396,24 +445,12 @@ def _thermal_torque(
     return np.sqrt(peak)
 
 
-def _thermal_speed(cases: Cases, gains: _HeatingGains) -> FloatArray:
+def _thermal_speed(cases: Cases, gains: _HeatingGains, speeds: list[FloatArray]) -> FloatArray:
     """:meth:`~actuator_selection.core.motion.Profile.thermal_speed_rpm` on arrays: each
     piece's mean |n| (a column of cases), the periodic start y_0 = B/(1 − A), the peak of
     y over the pieces' ends, never below n_av; cases × actuators (or cases × 1 where no
     actuator publishes τ_th)."""
-    col = np.newaxis
-    p = cases.pieces
-    mean = cases.figures.mean_speed_rpm[:, col]
-    speeds = [
-        mean_abs_speed_rpm(
-            p.duration[:, k, col],
-            p.start_rpm[:, k, col],
-            p.end_rpm[:, k, col],
-            p.accel_start[:, k, col],
-            p.accel_end[:, k, col],
-        )
-        for k in range(p.duration.shape[1])
-    ]
+    mean = cases.figures.mean_speed_rpm[:, np.newaxis]
     heat: FloatArray = np.zeros_like(mean)
     for k, speed in enumerate(speeds):
         heat = heat + (speed - heat) * gains.piece(k)
@@ -461,12 +498,13 @@ def evaluate_block(
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
     cube, weight = np.zeros(shape), np.zeros(cases.size)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
+        speeds = _piece_speeds(p)  # each piece's mean |n|, for the heating
         for k in range(p.duration.shape[1]):
             torques, square = _piece_torques(cat, p, k)
             # ∫T² dt of the piece: its mean T² times its duration, in the pieces' order.
             energy = energy + square * p.duration[:, k, col]
             if on_current:
-                square = _heating_square(cat, p, k, square)
+                square = _heating_square(cat, speeds[k], square)
                 heat_energy = heat_energy + square * p.duration[:, k, col]
             else:
                 heat_energy = energy
@@ -501,15 +539,17 @@ def evaluate_block(
                     constant_abs = np.where(take, magnitude, constant_abs)
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
         gear_cube = cube / weight[:, col]
-        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares)
-        thermal_speed = _thermal_speed(cases, gains)
+        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares, speeds)
+        thermal_speed = _thermal_speed(cases, gains, speeds)
     unknown = np.isnan(cat.inertia)  # no J_A: no torques (the candidate's None)
-    accel_torque = np.where(unknown, math.nan, accel)
-    decel_torque = np.where(unknown, math.nan, decel)
-    rms_torque = np.where(unknown, math.nan, rms_torque)
-    thermal_torque = np.where(unknown, math.nan, thermal_torque)
-    constant_torque = np.where(unknown, math.nan, constant)
-    gear_cube = np.where(unknown, math.nan, gear_cube)
+    accel_torque, decel_torque, constant_torque = accel, decel, constant
+    if unknown.any():  # each array is of the block's shape: unchanged where J_A is known
+        accel_torque = np.where(unknown, math.nan, accel)
+        decel_torque = np.where(unknown, math.nan, decel)
+        rms_torque = np.where(unknown, math.nan, rms_torque)
+        thermal_torque = np.where(unknown, math.nan, thermal_torque)
+        constant_torque = np.where(unknown, math.nan, constant)
+        gear_cube = np.where(unknown, math.nan, gear_cube)
     zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
     if cat.zone_columns.size:
         zone_torque = np.full(shape, math.nan)

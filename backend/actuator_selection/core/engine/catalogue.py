@@ -85,7 +85,9 @@ class CatalogueArrays:
     columns: dict[str, FloatArray | BoolArray] = dataclasses_field(default_factory=dict)
     """Every column as read from the actuators (the operands and the fields they are
     ranked and heated by), what the next catalogue's arrays copy from."""
-    lacking: dict[Rule, tuple[CodeArray, BoolArray, bool]] = dataclasses_field(default_factory=dict)
+    lacking: dict[Rule, tuple[CodeArray, BoolArray, bool, bool]] = dataclasses_field(
+        default_factory=dict
+    )
     """Per rule, where the catalogue misses its requirements (``block.lacking``), filled
     when the rule is first evaluated against these actuators."""
 

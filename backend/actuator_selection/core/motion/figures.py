@@ -97,24 +97,33 @@ def trapezoid_piece_arrays(
         decel = -speed_rpm * RAD_PER_S_PER_RPM / decel_s
 
     def columns(*values: FloatArray) -> FloatArray:
-        return np.stack(values, axis=1)
+        # The pieces as columns: a transposed array of rows (np.stack cost a one-case
+        # selection ~7 % of its time; the values are the same).
+        stacked: FloatArray = np.array(values, dtype=np.float64).T
+        return stacked
 
-    pattern = np.array([[False, True, False, False]])
-    inertia = columns(inertia_kgm2, inertia_kgm2, inertia_kgm2, inertia_kgm2)
+    accel_columns = columns(accel, zero, decel, zero)
     return PieceArrays(
         duration=columns(accel_s, constant_s, decel_s, pause_s),
         start_rpm=columns(zero, speed_rpm, speed_rpm, zero),
         end_rpm=columns(speed_rpm, speed_rpm, zero, zero),
-        accel_start=columns(accel, zero, decel, zero),
-        accel_end=columns(accel, zero, decel, zero),
+        accel_start=accel_columns,
+        accel_end=accel_columns.copy(),
         static=columns(torque_nm, torque_nm, torque_nm, zero),
-        inertia=inertia,
-        braking=np.repeat(np.array([[False, False, True, False]]), rows, axis=0),
-        constant_speed=np.repeat(pattern, rows, axis=0),
-        moving=np.repeat(np.array([[True, True, True, False]]), rows, axis=0),
-        direction=np.repeat(np.array([[1.0, 1.0, 1.0, 0.0]]), rows, axis=0),
+        inertia=columns(inertia_kgm2, inertia_kgm2, inertia_kgm2, inertia_kgm2),
+        braking=_TRAPEZOID_BRAKING.repeat(rows, axis=0),
+        constant_speed=_TRAPEZOID_CONSTANT.repeat(rows, axis=0),
+        moving=_TRAPEZOID_MOVING.repeat(rows, axis=0),
+        direction=_TRAPEZOID_DIRECTION.repeat(rows, axis=0),
         holding=torque_nm.copy(),
     )
+
+
+# The trapezoid's pieces (accelerate, run, brake, pause), one row to repeat per case.
+_TRAPEZOID_BRAKING = np.array([[False, False, True, False]])
+_TRAPEZOID_CONSTANT = np.array([[False, True, False, False]])
+_TRAPEZOID_MOVING = np.array([[True, True, True, False]])
+_TRAPEZOID_DIRECTION = np.array([[1.0, 1.0, 1.0, 0.0]])
 
 
 @dataclass(frozen=True, slots=True, eq=False)
