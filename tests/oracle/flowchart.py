@@ -166,6 +166,8 @@ ORDER = (
     "min_natural_frequency_hz",
     "brake_safety_factor",
     "emergency_stops",
+    "drop_torque_nm",
+    "travel_mm_per_rad",
     "limit_torque_t1_nm",
     "limit_torque_t2_nm",
     "stiffness_k1_nm_per_rad",
