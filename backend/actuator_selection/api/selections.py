@@ -6,11 +6,13 @@ import gzip
 from collections.abc import Callable
 from datetime import UTC, datetime
 from functools import partial
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 from urllib.parse import quote
 
 from fastapi import APIRouter, Path, Query, Request, Response
+from fastapi.responses import StreamingResponse
 
+from actuator_selection.api.actuators import Cursor
 from actuator_selection.api.deps import (
     DocumentLanguageDep,
     SessionDep,
@@ -25,17 +27,20 @@ from actuator_selection.api.messages import localizer
 from actuator_selection.api.quote_document import diagram_points, speed_torque_figure
 from actuator_selection.api.quote_document_text import DocumentText
 from actuator_selection.core.errors import ConflictError, NotFoundError
+from actuator_selection.schemas.jobs import NDJSON
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.ratio import RatioStudyOut, RatioStudyRequest
 from actuator_selection.schemas.selections import (
     RANKING_RULE,
     CandidateDetailOut,
+    CandidatePageOut,
     ProfileCycleIn,
     SelectionOut,
     SelectionRequest,
 )
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
+from actuator_selection.services.presenters.selection import DEFAULT_TOP, TOP_MAX, dump_json
 from actuator_selection.services.profiles import with_profiles
 from actuator_selection.services.ratio import study
 from actuator_selection.services.reports import (
@@ -46,6 +51,7 @@ from actuator_selection.services.reports import (
 )
 from actuator_selection.services.selections import (
     candidate_detail,
+    read_ranking,
     segment_torques,
     stored_answer,
     stored_request,
@@ -100,7 +106,19 @@ def refuse_unknown_models(models: list[str] | None, catalogue: CatalogueSnapshot
     f"stores the result. Ranking: {RANKING_RULE}.",
 )
 @reads_only  # no request transaction: it writes in its own (services.selections)
-def create_selection(body: SelectionRequest, request: Request) -> Response:
+def create_selection(
+    body: SelectionRequest,
+    request: Request,
+    top: Annotated[
+        int,
+        Query(
+            ge=1,
+            le=TOP_MAX,
+            description="how many of the ranking's candidates the answer lists; the rest "
+            "are read by its `next_cursor`",
+        ),
+    ] = DEFAULT_TOP,
+) -> Response:
     """Size the load case against the catalogue and store the selection."""
     if isinstance(body.cycle, ProfileCycleIn):
         with read_transaction(request) as session:
@@ -112,6 +130,7 @@ def create_selection(body: SelectionRequest, request: Request) -> Response:
         writer=partial(write_transaction, request),
         now=datetime.now(UTC),
         check=partial(refuse_unknown_models, body.models),
+        top=top,
     )
     # The answer is JSON already (see services.selections); returning a model would
     # have FastAPI validate and encode it again.
@@ -213,6 +232,46 @@ def get_selection_request(
     their defaults stated (what the page refills its form from, the checks asked for
     among them)."""
     return stored_request(session, selection_id)
+
+
+@router.get(
+    "/selections/{selection_id}/candidates",
+    response_model=CandidatePageOut,
+    responses={
+        200: {
+            "content": {
+                NDJSON: {
+                    "schema": {"type": "string"},
+                    "example": '{"model":"CHA-25A-50","verdict":"suitable",…}\n',
+                }
+            },
+            "description": "a page of the ranking (JSON), or with `format=jsonl` every "
+            "candidate from the cursor on, one `CandidateOut` a line, streamed",
+        },
+        404: {"description": "unknown selection"},
+        422: {"description": "a cursor that is not one of this selection's"},
+    },
+)
+def get_candidates(
+    selection_id: Annotated[str, Path(max_length=36)],
+    session: SessionDep,
+    cursor: Cursor = None,
+    limit: Annotated[
+        int, Query(ge=1, le=TOP_MAX, description="the most candidates a page lists")
+    ] = DEFAULT_TOP,
+    format: Annotated[
+        Literal["json", "jsonl"],
+        Query(description="`jsonl`: the whole ranking from the cursor on, a line a candidate"),
+    ] = "json",
+) -> Response:
+    """A stored selection's ranking, page by page from the answer's `next_cursor`, or
+    whole as JSON lines. The ranking is stored with the selection as it was sized, so a
+    cursor reads the same candidates after a catalogue change (that selection's
+    catalogue version; a candidate's detail then answers 409)."""
+    ranking = read_ranking(session, selection_id, cursor)
+    if format == "jsonl":
+        return StreamingResponse(ranking.lines(), media_type=NDJSON)
+    return Response(dump_json(ranking.page(limit)), media_type="application/json")
 
 
 @router.get(

@@ -256,6 +256,7 @@ class NewSelection:
     request: dict[str, Any]
     answer_gzip: bytes
     answer_version: int
+    ranking_zstd: bytes | None = None
 
 
 _NEW_SELECTION_FIELDS = tuple(f.name for f in fields(NewSelection))
@@ -302,15 +303,16 @@ class SelectionRepository:
         """The stored answer of a selection (gzip-compressed JSON), or None."""
         return self._session.scalar(select(SelectionRow.answer_gzip).where(SelectionRow.id == id))
 
-    def answer(self, id: str) -> tuple[bytes, int] | None:
-        """The stored answer of a selection (gzip-compressed JSON) and the version of its
-        shape, or None."""
+    def ranking(self, id: str) -> tuple[bytes, int, bytes | None] | None:
+        """The stored answer of a selection (gzip-compressed JSON), the version of its
+        shape and the rest of its ranking (zstd-compressed; None: the answer lists it
+        whole), or None."""
         row = self._session.execute(
-            select(SelectionRow.answer_gzip, SelectionRow.answer_version).where(
-                SelectionRow.id == id
-            )
+            select(
+                SelectionRow.answer_gzip, SelectionRow.answer_version, SelectionRow.ranking_zstd
+            ).where(SelectionRow.id == id)
         ).one_or_none()
-        return None if row is None else (row.answer_gzip, row.answer_version)
+        return None if row is None else (row.answer_gzip, row.answer_version, row.ranking_zstd)
 
     def request(self, id: str) -> tuple[dict[str, Any], int] | None:
         """The stored request of a selection and its catalogue version, or None."""

@@ -52,7 +52,7 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     "controller_exists": N_(
         "controller row {row} exists (retired ones too); PUT /controllers/{row} replaces it"
     ),
-    # Paged lists (api/actuators.py)
+    # Paged lists (api/actuators.py, services/selections.py)
     "invalid_cursor": N_(
         "not a cursor this list answered (next_cursor): ask for the first page without one"
     ),

@@ -13,13 +13,13 @@ with the version of the answer's shape (:data:`~.presenters.selection.ANSWER_VER
 
 from __future__ import annotations
 
+import base64
 import gzip
 import uuid
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import AbstractContextManager
 from dataclasses import dataclass
 from datetime import datetime
-from typing import Any
 
 import numpy as np
 import orjson
@@ -28,6 +28,7 @@ from sqlalchemy.orm import Session
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.engine import (
     VERDICT_BY_CODE,
+    FloatArray,
     evaluate_batch,
 )
 from actuator_selection.core.errors import ConflictError, NotFoundError
@@ -42,15 +43,13 @@ from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.selections import CandidateDetailOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot, DriveContext
+from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.presenters import selection as presenter
 from actuator_selection.services.presenters.detail import (
     candidate_detail as candidate_detail_answer,
 )
 from actuator_selection.services.presenters.selection import (
-    CHECKS_AS_DICTS_UP_TO,
     JSON,
-    checks_as_dicts,
-    checks_of,
     dump_json,
     or_none,
 )
@@ -77,6 +76,9 @@ class SizedSelection:
     """The answer's JSON."""
     answer_gzip: bytes
     """The same, gzip-compressed: stored, and sent to clients that accept gzip."""
+    ranking: bytes | None = None
+    """The ranking beyond the answer's candidates (:func:`presenter.ranking_rest`), or
+    None when the answer lists every candidate."""
 
     @property
     def row(self) -> NewSelection:
@@ -88,22 +90,28 @@ class SizedSelection:
             request=self.request,
             answer_gzip=self.answer_gzip,
             answer_version=presenter.ANSWER_VERSION,
+            ranking_zstd=self.ranking,
         )
 
 
 @dataclass(frozen=True, slots=True)
 class _Ranked:
-    """The candidates of one case, best first, as the answer lists them."""
+    """The candidates of one case, best first, as the engine ranked them."""
 
     actuators: list[Actuator]
     verdicts: list[Verdict]
-    torques: list[tuple[float | None, float | None, float | None, float | None]]
-    """T_1, T_2, T_3, T_rms; None without J_A (T_2 also where the cycle never runs
-    steadily)."""
-    checks: list[Any]
-    """Per candidate, its checks: a list of dicts, or their JSON (``orjson.Fragment``)."""
-    check_dicts: Callable[[], list[list[JSON]]]
-    """Per candidate, its checks as dicts (made when asked: :func:`presenter.binding`)."""
+    torques: tuple[FloatArray, FloatArray, FloatArray, FloatArray]
+    """T_1, T_2, T_3, T_rms in the ranking's order; NaN without J_A (T_2 also where the
+    cycle never runs steadily)."""
+    checks: presenter.RankedChecks
+
+    def torques_of(self, start: int, stop: int) -> list[presenter.Torques]:
+        """The torques of the candidates ranked ``start`` to ``stop``, None for NaN."""
+        return list(zip(*(or_none(t[start:stop]) for t in self.torques), strict=True))
+
+    def check_dicts(self) -> list[list[JSON]]:
+        """Every candidate's checks as dicts (:func:`presenter.binding` asks them)."""
+        return self.checks.dicts(0, len(self.actuators))
 
 
 def _ranked(
@@ -118,28 +126,30 @@ def _ranked(
         # input (422).
         select(actuators, app)
     order = np.array(ev.ranking(0), dtype=np.intp)
-    checks = checks_of(ev)
-    places = order.tolist()
-
-    def check_dicts() -> list[list[JSON]]:
-        rows = checks if len(checks) <= CHECKS_AS_DICTS_UP_TO else checks_as_dicts(ev)
-        return [rows[j] for j in places]
-
     return _Ranked(
-        actuators=[actuators[j] for j in places],
+        actuators=[actuators[j] for j in order.tolist()],
         verdicts=[VERDICT_BY_CODE[v] for v in ev.verdicts[0][order].tolist()],
-        torques=list(
-            zip(
-                or_none(ev.accel_torque_nm[0][order]),
-                or_none(ev.constant_torque_nm[0][order]),
-                or_none(ev.decel_torque_nm[0][order]),
-                or_none(ev.rms_torque_nm[0][order]),
-                strict=True,
-            )
+        torques=(
+            ev.accel_torque_nm[0][order],
+            ev.constant_torque_nm[0][order],
+            ev.decel_torque_nm[0][order],
+            ev.rms_torque_nm[0][order],
         ),
-        checks=[checks[j] for j in places],
-        check_dicts=check_dicts,
+        checks=presenter.RankedChecks.of(ev, order),
     )
+
+
+@dataclass(frozen=True, slots=True)
+class _Answered:
+    """The candidates an answer lists, the rest of the ranking stored, and the binding."""
+
+    candidates: list[JSON]
+    total: int
+    counts: dict[str, int]
+    rest: bytes | None
+    """:func:`presenter.ranking_rest` from the first candidate not listed; None when every
+    candidate is listed."""
+    binding: JSON | None
 
 
 def _candidates(
@@ -147,22 +157,42 @@ def _candidates(
     app: Application,
     catalogue: CatalogueSnapshot,
     groups: presenter.DriveOptionGroups,
-) -> tuple[list[JSON], JSON | None]:
+    top: int,
+) -> _Answered:
     """Every actuator's candidate for ``app``, ranked (``core.candidates.ranking_key``)
-    by the engine; a candidate's detail is the engine's 1 × 1 view, with the checks in
-    words."""
+    by the engine: the first ``top`` as the answer lists them, the rest as stored; a
+    candidate's detail is the engine's 1 × 1 view, with the checks in words."""
     speed = app.profile.peak_speed_rpm  # computed first: the engine takes its figures
     ranked = _ranked(actuators, app, catalogue)
+    total = len(ranked.actuators)
+    shown = min(top, total)
     candidates = presenter.candidates(
-        ranked.actuators,
-        ranked.verdicts,
-        ranked.torques,
-        ranked.checks,
+        ranked.actuators[:shown],
+        ranked.verdicts[:shown],
+        ranked.torques_of(0, shown),
+        ranked.checks.dicts(0, shown),
         catalogue=catalogue,
         groups=groups,
         speed_rpm=speed,
     )
-    return candidates, presenter.binding(ranked.actuators, ranked.verdicts, ranked.check_dicts, app)
+    rest = None
+    if shown < total:
+        excluded = catalogue.excluded_by_model()
+        rest = presenter.ranking_rest(
+            start=shown,
+            actuators=ranked.actuators,
+            verdicts=ranked.verdicts,
+            torques=ranked.torques,
+            checks=ranked.checks,
+            excluded=[excluded[a.model] for a in ranked.actuators[shown:]],
+        )
+    return _Answered(
+        candidates=candidates,
+        total=total,
+        counts=presenter.verdict_counts(ranked.verdicts),
+        rest=rest,
+        binding=presenter.binding(ranked.actuators, ranked.verdicts, ranked.check_dicts, app),
+    )
 
 
 def size_selection(
@@ -173,18 +203,23 @@ def size_selection(
     created_at: datetime,
     *,
     guide: bool = False,
+    top: int = presenter.DEFAULT_TOP,
 ) -> SizedSelection:
-    """The whole ranking of ``app`` over ``actuators`` as POST /selections answers it;
-    ``guide``: where nothing fits, with the ratio study's leads or diameters that make an
-    actuator fit (``binding.transmissions``; a batch's cases go without)."""
+    """The ranking of ``app`` over ``actuators`` as POST /selections answers it: its first
+    ``top`` candidates, the rest stored to be paged (:func:`candidate_page`); ``guide``:
+    where nothing fits, with the ratio study's leads or diameters that make an actuator
+    fit (``binding.transmissions``; a batch's cases go without)."""
     groups = presenter.DriveOptionGroups(catalogue)
-    candidates, binding = _candidates(actuators, app, catalogue, groups)
+    answered = _candidates(actuators, app, catalogue, groups, top)
+    binding = answered.binding
     if binding is not None and guide:  # nothing fits: where the load's own lead or
         binding["transmissions"] = guidance(body, actuators)  # diameter would
     # The selection request's fields alone (a batch case's ``case_id`` is the batch's).
     request = body.model_dump(mode="json", include=set(SelectionRequest.model_fields))
+    id_ = str(uuid.uuid4())
+    listed = len(answered.candidates)
     answer = presenter.selection_answer(
-        id=str(uuid.uuid4()),
+        id=id_,
         created_at=created_at,
         catalogue_version=catalogue.version,
         body=body,
@@ -192,17 +227,21 @@ def size_selection(
         profile=app.profile,
         rules=app.rules,
         controllers=groups.refs(),
-        candidates=candidates,
+        candidates=answered.candidates,
+        total=answered.total,
+        counts=answered.counts,
+        next_cursor=cursor(id_, listed) if listed < answered.total else None,
         binding=binding,
     )
     encoded = dump_json(answer)
     return SizedSelection(
-        id=answer["id"],
+        id=id_,
         created_at=created_at,
         catalogue_version=catalogue.version,
         request=request,
         answer=encoded,
         answer_gzip=gzip.compress(encoded, compresslevel=STORE_COMPRESSION, mtime=0),
+        ranking=answered.rest,
     )
 
 
@@ -226,8 +265,10 @@ def create_selection(
     writer: Writer,
     now: datetime,
     check: Callable[[CatalogueSnapshot], None],
+    top: int = presenter.DEFAULT_TOP,
 ) -> SizedSelection:
-    """Size ``body`` against the catalogue and store it; returns what was committed.
+    """Size ``body`` against the catalogue and store it, its answer listing the first
+    ``top`` candidates; returns what was committed.
 
     The catalogue is the one this process holds in memory: no read precedes the sizing.
     Its version is checked where it matters, in the statement that stores the selection
@@ -246,11 +287,11 @@ def create_selection(
     held = catalogue.latest(reader)
     if not held.has_all(body.models):
         held = catalogue.refresh(reader)
-    sized = _sized(body, held, now, check)
+    sized = _sized(body, held, now, check, top)
     with writer() as session:
         repository = SelectionRepository(session)
         if not repository.add_at_version(sized.row):
-            sized = _sized(body, catalogue.pinned(session), now, check)
+            sized = _sized(body, catalogue.pinned(session), now, check, top)
             stored = repository.add_at_version(sized.row)
             assert stored, "the version is pinned by this transaction"
     return sized
@@ -261,10 +302,17 @@ def _sized(
     catalogue: CatalogueSnapshot,
     now: datetime,
     check: Callable[[CatalogueSnapshot], None],
+    top: int,
 ) -> SizedSelection:
     check(catalogue)
     return size_selection(
-        body, body.to_core(), catalogue.actuators_of(body.models), catalogue, now, guide=True
+        body,
+        body.to_core(),
+        catalogue.actuators_of(body.models),
+        catalogue,
+        now,
+        guide=True,
+        top=top,
     )
 
 
@@ -285,13 +333,28 @@ def stored_request(session: Session, selection_id: str) -> JSON:
 
 
 def stored_answer_json(session: Session, selection_id: str) -> JSON | None:
-    """The stored answer of a selection as JSON data, or None; an answer of an older
-    shape than :data:`~.presenters.selection.ANSWER_VERSION` (its upgrade, a migration,
-    not run) is an error."""
-    stored = SelectionRepository(session).answer(selection_id)
+    """The stored answer of a selection as JSON data with the whole ranking in
+    ``candidates`` (those the answer listed, then the rest as stored, without drive
+    options), or None; an answer of an older shape than
+    :data:`~.presenters.selection.ANSWER_VERSION` (its upgrade, a migration, not run) is
+    an error."""
+    stored = _stored_ranking(session, selection_id)
     if stored is None:
         return None
-    answer, version = stored
+    answer, rest = stored
+    listed: list[JSON] = answer["candidates"]
+    if rest is not None:
+        listed.extend(presenter.ranked_candidates(rest, len(listed), answer["total_candidates"]))
+    return answer
+
+
+def _stored_ranking(session: Session, selection_id: str) -> tuple[JSON, bytes | None] | None:
+    """The stored answer of a selection as JSON data and the rest of its ranking as stored
+    (:func:`presenter.ranking_rest`; None: the answer lists it whole), or None."""
+    stored = SelectionRepository(session).ranking(selection_id)
+    if stored is None:
+        return None
+    answer, version, rest = stored
     if version != presenter.ANSWER_VERSION:
         raise RuntimeError(
             f"selection {selection_id!r} holds an answer of version {version}, not "
@@ -299,7 +362,82 @@ def stored_answer_json(session: Session, selection_id: str) -> JSON | None:
             "(python -m actuator_selection migrate)"
         )
     data: JSON = orjson.loads(gzip.decompress(answer))
-    return data
+    return data, rest
+
+
+def cursor(selection_id: str, place: int) -> str:
+    """The cursor that reads a stored selection's ranking from ``place`` on (0: the best
+    candidate): opaque to clients, tied to the selection."""
+    return base64.urlsafe_b64encode(f"{place}:{selection_id}".encode()).rstrip(b"=").decode()
+
+
+def _place(token: str, selection_id: str, total: int) -> int:
+    """The place a :func:`cursor` of ``selection_id`` reads from; 422 for anything else."""
+    try:
+        text = base64.urlsafe_b64decode(token + "=" * (-len(token) % 4)).decode("ascii")
+    except ValueError:
+        text = ""
+    place, _, of = text.partition(":")
+    if not (place.isascii() and place.isdigit()) or of != selection_id or int(place) >= total:
+        raise invalid(["query", "cursor"], "invalid_cursor")
+    return int(place)
+
+
+@dataclass(frozen=True, slots=True)
+class RankingRead:
+    """A stored selection's ranking read from a cursor on: :meth:`page`, :meth:`lines`."""
+
+    selection_id: str
+    answer: JSON
+    rest: bytes | None
+    start: int
+
+    @property
+    def total(self) -> int:
+        """How many candidates the ranking holds."""
+        total: int = self.answer["total_candidates"]
+        return total
+
+    def candidates(self, start: int, stop: int) -> list[JSON]:
+        """The candidates ranked ``start`` to ``stop`` (exclusive)."""
+        listed: list[JSON] = self.answer["candidates"]
+        out = listed[start:stop]
+        if stop > len(listed) and self.rest is not None:
+            out += presenter.ranked_candidates(self.rest, max(start, len(listed)), stop)
+        return out
+
+    def page(self, limit: int) -> JSON:
+        """``CandidatePageOut``: up to ``limit`` candidates from the cursor on."""
+        stop = min(self.start + limit, self.total)
+        return {
+            "selection_id": self.selection_id,
+            "start": self.start,
+            "total_candidates": self.total,
+            "candidates": self.candidates(self.start, stop),
+            "next_cursor": cursor(self.selection_id, stop) if stop < self.total else None,
+        }
+
+    def lines(self, block: int = 500) -> Iterator[bytes]:
+        """Every candidate from the cursor on as a line of JSON (``CandidateOut``), in
+        blocks of ``block`` candidates."""
+        for start in range(self.start, self.total, block):
+            rows = self.candidates(start, min(start + block, self.total))
+            yield b"".join(dump_json(row) + b"\n" for row in rows)
+
+
+def read_ranking(session: Session, selection_id: str, token: str | None) -> RankingRead:
+    """A stored selection's ranking from the cursor ``token`` on (None: from the best
+    candidate); 404 for an unknown selection, 422 for a cursor that is not one of its.
+
+    A stored selection keeps its whole ranking as it was sized (the answer's candidates
+    and the rest beside it), so a cursor reads the same candidates after any catalogue
+    change: the ranking of the catalogue version the selection names."""
+    stored = _stored_ranking(session, selection_id)
+    if stored is None:
+        raise not_found(["path", "selection_id"], "unknown_selection", selection_id=selection_id)
+    answer, rest = stored
+    start = 0 if token is None else _place(token, selection_id, answer["total_candidates"])
+    return RankingRead(selection_id, answer, rest, start)
 
 
 def stored_candidate(

@@ -28,3 +28,6 @@ class SelectionRow(Base):
     answer_version: Mapped[int] = mapped_column(Integer)
     """The shape of the answer (``services.presenters.selection.ANSWER_VERSION``): the
     answers of older shapes were upgraded to the current one by a migration, once."""
+    ranking_zstd: Mapped[bytes | None] = mapped_column(LargeBinary, nullable=True)
+    """The ranking beyond the answer's candidates, as columns (JSON, zstd-compressed:
+    ``services.presenters.selection.ranking_rest``); null when the answer lists it whole."""

@@ -14,6 +14,7 @@ from actuator_selection.schemas.selections.answer import (
     CandidateDetailOut,
     CandidateFigures,
     CandidateOut,
+    CandidatePageOut,
     CheckBrief,
     CheckRuleOut,
     ControllerRef,
@@ -22,6 +23,7 @@ from actuator_selection.schemas.selections.answer import (
     SegmentOut,
     SegmentTorqueOut,
     SelectionOut,
+    VerdictCounts,
     VoltageBrief,
 )
 from actuator_selection.schemas.selections.cycles import (
@@ -62,6 +64,7 @@ __all__ = [
     "CandidateDetailOut",
     "CandidateFigures",
     "CandidateOut",
+    "CandidatePageOut",
     "CheckBrief",
     "CheckRuleOut",
     "ControllerRef",
@@ -84,5 +87,6 @@ __all__ = [
     "SelectionOut",
     "SelectionRequest",
     "SpeedRpm",
+    "VerdictCounts",
     "VoltageBrief",
 ]

@@ -238,6 +238,27 @@ class BindingOut(ResponseModel):
     )
 
 
+class VerdictCounts(ResponseModel):
+    """How many candidates of a whole ranking have each verdict."""
+
+    suitable: int
+    unconfirmed: int
+    unsuitable: int
+
+
+class CandidatePageOut(ResponseModel):
+    """A page of a stored selection's ranking (GET /selections/{id}/candidates)."""
+
+    selection_id: str
+    start: int = Field(description="the place of the first candidate in the ranking (0: the best)")
+    total_candidates: int = Field(description="how many candidates the whole ranking holds")
+    candidates: list[CandidateOut] = Field(
+        description="best first; drive options are listed only for candidates that the "
+        "selection's own answer lists (elsewhere null: the candidate's detail lists them)"
+    )
+    next_cursor: str | None = Field(description="reads on after this page; null: the last page")
+
+
 class SelectionOut(ResponseModel):
     """A stored selection: the load case, cycle figures and the ranked candidates."""
 
@@ -281,7 +302,17 @@ class SelectionOut(ResponseModel):
     controllers: list[ControllerRef] = Field(
         description="the rows of Table 521.1 that the candidates' drive options refer to"
     )
-    candidates: list[CandidateOut]
+    candidates: list[CandidateOut] = Field(
+        description="the ranking's first candidates, best first: as many as `top` asked "
+        "(POST /selections?top=, default 100), or all where fewer; the rest are read by "
+        "`next_cursor` (GET /selections/{id}/candidates)"
+    )
+    total_candidates: int = Field(description="how many candidates the whole ranking holds")
+    verdict_counts: VerdictCounts = Field(description="the whole ranking's candidates by verdict")
+    next_cursor: str | None = Field(
+        description="reads the ranking on after `candidates` (GET /selections/{id}/candidates"
+        "?cursor=); null: `candidates` is the whole ranking"
+    )
     binding: BindingOut | None = Field(
         default=None,
         description="what binds across the catalogue when every candidate is unsuitable; "

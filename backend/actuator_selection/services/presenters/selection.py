@@ -11,12 +11,14 @@ selection cost more than the engineering.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 import orjson
+import zstandard
 
 from actuator_selection.core.actuators import Actuator
 from actuator_selection.core.checks import Check, Rule
@@ -38,13 +40,25 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 
 JSON = dict[str, Any]
 
-ANSWER_VERSION = 2
+ANSWER_VERSION = 3
 """The version of the answer this presenter writes, stored with each selection
 (``selections.answer_version``). 0: the answer before the lean one (every check with
 its words, every candidate with its controllers, up to 2026-11-23); 1: the lean answer
-as first stored (2026-11-23, later fields absent); 2: today's ``SelectionOut``, every
-field present. The migration ``0010`` upgraded 0 and 1 to 2; readers take 2 only.
+as first stored (2026-11-23, later fields absent); 2: every candidate listed, every
+field present; 3: today's ``SelectionOut``, the ranking's first ``top`` candidates with
+``total_candidates``, ``verdict_counts`` and ``next_cursor``, the rest stored beside it
+(``selections.ranking_zstd``, :func:`ranking_rest`). The migration ``0010`` upgraded 0
+and 1 to 2, ``0016`` 2 to 3; readers take 3 only.
 Change the answer's shape: raise this, and add a migration that upgrades the rows."""
+
+DEFAULT_TOP = 100
+"""Candidates an answer lists unless the request asks for another number (``top``): the
+page's first screen shows 12 rows and its "show more" reads the rest by the answer's
+``next_cursor``; the starter catalogue's 64 candidates all fit. A catalogue of 6,400
+answered whole wrote 5 MB (and spent most of a request's time on it)."""
+
+TOP_MAX = 1000
+"""The most candidates an answer (``top``) or a page (``limit``) lists."""
 
 DRIVE_OPTIONS_LISTED = 100
 """Drive options are listed for the first this many candidates of a ranking (and never for
@@ -93,22 +107,57 @@ the whole selection over 6,400 actuators 60 → 37 ms, measured in turn)."""
 
 def checks_as_dicts(ev: BatchEvaluation) -> list[list[JSON]]:
     """The checks as dicts (NaN → None in numpy), the actuators' lists at once."""
-    names = ev.check_names
-    statuses = _STATUS_NAMES[ev.statuses[0]].tolist()
-    values, limits = or_none(ev.values[0]), or_none(ev.limits[0])
-    rows: list[list[JSON]] = [
-        [
-            {"name": name, "status": st, "value": v, "limit": li}
-            for name, st, v, li in zip(names, status, value, limit, strict=True)
+    return RankedChecks.of(ev, np.arange(ev.statuses.shape[1])).dicts(0, ev.statuses.shape[1])
+
+
+@dataclass(frozen=True, slots=True)
+class RankedChecks:
+    """The checks of one case's candidates as the engine's arrays, one row per candidate in
+    the ranking's order: what the answer lists (:meth:`dicts`) and what is stored of the
+    ranking beyond it (:func:`ranking_columns`)."""
+
+    names: Sequence[str]
+    missing_what: Sequence[Sequence[str]]
+    """Per check, the words of each requirement (``missing`` indexes them)."""
+    statuses: npt.NDArray[np.integer[Any]]
+    values: FloatArray
+    limits: FloatArray
+    approximate: npt.NDArray[np.bool_]
+    first_missing: npt.NDArray[np.integer[Any]]
+    """Per check, the index into ``missing_what`` of what is missing; −1: nothing."""
+
+    @classmethod
+    def of(cls, ev: BatchEvaluation, order: npt.NDArray[np.intp]) -> RankedChecks:
+        """The (single) case of ``ev``, its actuators in ``order``."""
+        return cls(
+            names=ev.check_names,
+            missing_what=ev.missing_what,
+            statuses=ev.statuses[0][order],
+            values=ev.values[0][order],
+            limits=ev.limits[0][order],
+            approximate=ev.approximate[0][order],
+            first_missing=ev.first_missing[0][order],
+        )
+
+    def dicts(self, start: int, stop: int) -> list[list[JSON]]:
+        """The checks of the candidates ranked ``start`` to ``stop`` (exclusive) as the
+        answer lists them (NaN → None in numpy), the candidates' lists at once."""
+        names = self.names
+        statuses = _STATUS_NAMES[self.statuses[start:stop]].tolist()
+        values, limits = or_none(self.values[start:stop]), or_none(self.limits[start:stop])
+        rows: list[list[JSON]] = [
+            [
+                {"name": name, "status": st, "value": v, "limit": li}
+                for name, st, v, li in zip(names, status, value, limit, strict=True)
+            ]
+            for status, value, limit in zip(statuses, values, limits, strict=True)
         ]
-        for status, value, limit in zip(statuses, values, limits, strict=True)
-    ]
-    for j, k in zip(*np.nonzero(ev.approximate[0]), strict=True):
-        rows[j][k]["approximate"] = True
-    missing = ev.first_missing[0]
-    for j, k in zip(*np.nonzero(missing >= 0), strict=True):
-        rows[j][k]["missing"] = ev.missing_what[k][missing[j, k]]
-    return rows
+        for j, k in zip(*np.nonzero(self.approximate[start:stop]), strict=True):
+            rows[j][k]["approximate"] = True
+        missing = self.first_missing[start:stop]
+        for j, k in zip(*np.nonzero(missing >= 0), strict=True):
+            rows[j][k]["missing"] = self.missing_what[k][missing[j, k]]
+        return rows
 
 
 def checks_as_json(ev: BatchEvaluation) -> list[orjson.Fragment]:
@@ -379,11 +428,15 @@ def selection_answer(
     rules: Sequence[Rule],
     controllers: list[JSON],
     candidates: list[JSON],
+    total: int,
+    counts: dict[str, int],
+    next_cursor: str | None,
     binding: JSON | None,
 ) -> JSON:
     """The whole answer (``SelectionOut``) of the load case ``body`` (``request``: its
-    fields as stored) over the cycle ``profile``, from the :func:`candidates` ranked,
-    the ``controllers`` they refer to (:meth:`DriveOptionGroups.refs`) and the
+    fields as stored) over the cycle ``profile``, from the first :func:`candidates` of
+    the ranking (of ``total``, ``counts`` by verdict; ``next_cursor`` reads on), the
+    ``controllers`` they refer to (:meth:`DriveOptionGroups.refs`) and the
     :func:`binding`."""
     bearing = output_bearing_note(body.output_load)
     return {
@@ -408,5 +461,109 @@ def selection_answer(
         "check_rules": check_rules(rules),
         "controllers": controllers,
         "candidates": candidates,
+        "total_candidates": total,
+        "verdict_counts": counts,
+        "next_cursor": next_cursor,
         "binding": binding,
     }
+
+
+VERDICT_NAMES = ("suitable", "unconfirmed", "unsuitable")
+"""The verdicts in the ranking's order, as ``verdict_counts`` lists them."""
+
+
+def verdict_counts(verdicts: Sequence[Verdict]) -> dict[str, int]:
+    """``verdict_counts``: how many candidates of the whole ranking have each verdict."""
+    counts = dict.fromkeys(VERDICT_NAMES, 0)
+    for v in verdicts:
+        counts[VALUE_OF[v]] += 1
+    return counts
+
+
+RANKING_COMPRESSION = 1
+"""zstd level of the stored rest of a ranking (:func:`ranking_rest`): 6,400 candidates'
+columns in a few ms."""
+
+
+def ranking_rest(
+    *,
+    start: int,
+    actuators: Sequence[Actuator],
+    verdicts: Sequence[Verdict],
+    torques: Sequence[FloatArray],
+    checks: RankedChecks,
+    excluded: Sequence[int],
+) -> bytes:
+    """The ranking from place ``start`` on, as stored to be paged later
+    (:func:`ranked_candidates`): the candidates' figures and checks as columns (orjson
+    writes numpy's arrays as they are, NaN as null), zstd-compressed. ``actuators``,
+    ``verdicts``, ``torques`` (T_1, T_2, T_3, T_rms) and ``checks`` are the whole
+    ranking's, in its order; ``excluded`` (controllers excluded) the stored candidates'."""
+    rest = actuators[start:]
+    data = {
+        "start": start,
+        "statuses": _STATUS_NAMES.tolist(),
+        "checks": list(checks.names),
+        "missing_what": [list(w) for w in checks.missing_what],
+        "model": [a.model for a in rest],
+        "family": [a.family for a in rest],
+        "gear_ratio": [a.gear_ratio for a in rest],
+        "verdict": [VALUE_OF[v] for v in verdicts[start:]],
+        "torques": [np.ascontiguousarray(t[start:]) for t in torques],
+        "controllers_excluded": list(excluded),
+        "status": np.ascontiguousarray(checks.statuses[start:]),
+        "value": np.ascontiguousarray(checks.values[start:]),
+        "limit": np.ascontiguousarray(checks.limits[start:]),
+        "approximate": np.ascontiguousarray(checks.approximate[start:]),
+        "missing": np.ascontiguousarray(checks.first_missing[start:]),
+    }
+    written = orjson.dumps(data, option=orjson.OPT_SERIALIZE_NUMPY)
+    return zstandard.ZstdCompressor(level=RANKING_COMPRESSION).compress(written)
+
+
+_TORQUES = ("accel_torque_nm", "constant_torque_nm", "decel_torque_nm", "rms_torque_nm")
+
+
+def ranked_candidates(stored: bytes, start: int, stop: int) -> list[JSON]:
+    """The candidates ranked ``start`` to ``stop`` (exclusive) of a stored rest of a
+    ranking (:func:`ranking_rest`), as ``CandidateOut`` (no drive options: the
+    candidate's detail lists them). A rest upgraded from an answer that listed every
+    candidate (migration 0016) holds them as they were (``rows``)."""
+    data = orjson.loads(zstandard.ZstdDecompressor().decompress(stored))
+    first = data["start"]
+    lo, hi = max(start - first, 0), max(stop - first, 0)
+    if "rows" in data:
+        rows: list[JSON] = data["rows"][lo:hi]
+        return rows
+    names, what, statuses = data["checks"], data["missing_what"], data["statuses"]
+    out = []
+    for j in range(lo, min(hi, len(data["model"]))):
+        checks = []
+        for k, name in enumerate(names):
+            check: JSON = {
+                "name": name,
+                "status": statuses[data["status"][j][k]],
+                "value": data["value"][j][k],
+                "limit": data["limit"][j][k],
+            }
+            if data["approximate"][j][k]:
+                check["approximate"] = True
+            missing = data["missing"][j][k]
+            if missing >= 0:
+                check["missing"] = what[k][missing]
+            checks.append(check)
+        candidate: JSON = {
+            "model": data["model"][j],
+            "family": data["family"][j],
+            "gear_ratio": data["gear_ratio"][j],
+            "verdict": data["verdict"][j],
+        }
+        for name, column in zip(_TORQUES, data["torques"], strict=True):
+            candidate[name] = column[j]
+        candidate |= {
+            "checks": checks,
+            "controllers_excluded": data["controllers_excluded"][j],
+            "drive_options": None,
+        }
+        out.append(candidate)
+    return out
