@@ -472,6 +472,29 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
+    "/api/v1/selections/{selection_id}/candidates": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Candidates
+         * @description A stored selection's ranking, page by page from the answer's `next_cursor`, or
+         *     whole as JSON lines. The ranking is stored with the selection as it was sized, so a
+         *     cursor reads the same candidates after a catalogue change (that selection's
+         *     catalogue version; a candidate's detail then answers 409).
+         */
+        get: operations["get_candidates"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
     "/api/v1/selections/{selection_id}/candidates/{model}": {
         parameters: {
             query?: never;
@@ -2751,6 +2774,34 @@ export interface components {
              * @description controllers of Table 521.1 not excluded for this actuator, best first, grouped by match and voltage check; null for an unsuitable candidate (its detail lists them)
              */
             drive_options: components["schemas"]["DriveOptionGroup"][] | null;
+        };
+        /**
+         * CandidatePageOut
+         * @description A page of a stored selection's ranking (GET /selections/{id}/candidates).
+         */
+        CandidatePageOut: {
+            /** Selection Id */
+            selection_id: string;
+            /**
+             * Start
+             * @description the place of the first candidate in the ranking (0: the best)
+             */
+            start: number;
+            /**
+             * Total Candidates
+             * @description how many candidates the whole ranking holds
+             */
+            total_candidates: number;
+            /**
+             * Candidates
+             * @description best first; drive options are listed only for candidates that the selection's own answer lists (elsewhere null: the candidate's detail lists them)
+             */
+            candidates: components["schemas"]["CandidateOut"][];
+            /**
+             * Next Cursor
+             * @description reads on after this page; null: the last page
+             */
+            next_cursor: string | null;
         };
         /**
          * CapacitorOut
@@ -5443,8 +5494,23 @@ export interface components {
              * @description the rows of Table 521.1 that the candidates' drive options refer to
              */
             controllers: components["schemas"]["ControllerRef"][];
-            /** Candidates */
+            /**
+             * Candidates
+             * @description the ranking's first candidates, best first: as many as `top` asked (POST /selections?top=, default 100), or all where fewer; the rest are read by `next_cursor` (GET /selections/{id}/candidates)
+             */
             candidates: components["schemas"]["CandidateOut"][];
+            /**
+             * Total Candidates
+             * @description how many candidates the whole ranking holds
+             */
+            total_candidates: number;
+            /** @description the whole ranking's candidates by verdict */
+            verdict_counts: components["schemas"]["VerdictCounts"];
+            /**
+             * Next Cursor
+             * @description reads the ranking on after `candidates` (GET /selections/{id}/candidates?cursor=); null: `candidates` is the whole ranking
+             */
+            next_cursor: string | null;
             /** @description what binds across the catalogue when every candidate is unsuitable; null otherwise (and in answers stored before it existed) */
             binding?: components["schemas"]["BindingOut"] | null;
         };
@@ -5630,6 +5696,18 @@ export interface components {
              * @description η_tr [-]; omitted: 1.0
              */
             efficiency?: number;
+        };
+        /**
+         * VerdictCounts
+         * @description How many candidates of a whole ranking have each verdict.
+         */
+        VerdictCounts: {
+            /** Suitable */
+            suitable: number;
+            /** Unconfirmed */
+            unconfirmed: number;
+            /** Unsuitable */
+            unsuitable: number;
         };
         /**
          * VoltageBrief
@@ -8202,7 +8280,10 @@ export interface operations {
     };
     create_selection: {
         parameters: {
-            query?: never;
+            query?: {
+                /** @description how many of the ranking's candidates the answer lists; the rest are read by its `next_cursor` */
+                top?: number;
+            };
             header?: never;
             path?: never;
             cookie?: never;
@@ -8655,6 +8736,88 @@ export interface operations {
                 };
             };
             /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidates: {
+        parameters: {
+            query?: {
+                /** @description the `next_cursor` of the page before; omitted: the first page */
+                cursor?: string | null;
+                /** @description the most candidates a page lists */
+                limit?: number;
+                /** @description `jsonl`: the whole ranking from the cursor on, a line a candidate */
+                format?: "json" | "jsonl";
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description a page of the ranking (JSON), or with `format=jsonl` every candidate from the cursor on, one `CandidateOut` a line, streamed */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["CandidatePageOut"];
+                    /** @example {"model":"CHA-25A-50","verdict":"suitable",…} */
+                    "application/x-ndjson": string;
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a cursor that is not one of this selection's */
             422: {
                 headers: {
                     [name: string]: unknown;
