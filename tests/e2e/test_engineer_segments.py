@@ -20,6 +20,7 @@ from .test_engineer_page import (
     EXPECTED_T3,
     EXPECTED_TRMS,
     FHA,
+    SELECTIONS_URL,
     assert_no_leaked_values,
     choose,
     fill_worked_example,
@@ -94,7 +95,7 @@ def test_a_vertical_pick_and_place_belt_axis_is_sized_through_the_form(
     expect(page.locator("#seg-0-process_load + .unit")).to_have_text("N")
     expect(page.locator("#segment-list > li")).to_have_count(8)
 
-    with page.expect_request("**/api/v1/selections") as sent:
+    with page.expect_request(SELECTIONS_URL) as sent:
         status, body = post_selection(page)
     assert status == 201, body
     request = cast(dict[str, Any], sent.value.post_data_json)
@@ -232,7 +233,7 @@ def test_segments_reorder_and_switching_back_gives_the_worked_example(page: Page
     page.get_by_label("t1 … tp (Fig. 516.2)").check()
     expect(page.locator("#f-speed")).to_be_visible()
     expect(page.locator("#f-t1")).to_have_value("0.1")
-    with page.expect_request("**/api/v1/selections") as sent:
+    with page.expect_request(SELECTIONS_URL) as sent:
         status, body = post_selection(page)
     assert status == 201
     assert cast(dict[str, Any], sent.value.post_data_json)["cycle"] == {
@@ -290,7 +291,7 @@ def test_a_bad_segment_value_shows_the_apis_message_at_its_field(page: Page) -> 
     page.locator("#f-belt-pulley_diameter_mm").fill("5 kg")
     page.locator("#f-belt-friction_coefficient").fill("0,1")  # the decimal comma reads
     page.locator("#f-belt-efficiency").fill("0.9")
-    with page.expect_request("**/api/v1/selections") as sent:
+    with page.expect_request(SELECTIONS_URL) as sent:
         status, body = post_selection(page)
     assert status == 422
     sent_load = cast(dict[str, Any], sent.value.post_data_json)["load"]

@@ -20,6 +20,7 @@ from playwright.sync_api import Browser, Locator, Page, Request, expect
 from actuator_selection.schemas.mechanism_spec import mechanism_spec
 
 from .conftest import DESKTOP, SalesSite
+from .test_engineer_page import SELECTIONS_URL
 from .test_sales_page import selection_id, sign_in
 
 pytestmark = pytest.mark.browser
@@ -60,7 +61,7 @@ def type_in(field: Locator, text: str) -> None:
 
 
 def is_selection_post(request: Request) -> bool:
-    return request.url.endswith("/api/v1/selections") and request.method == "POST"
+    return SELECTIONS_URL.search(request.url) is not None and request.method == "POST"
 
 
 def submit(page: Page) -> dict[str, Any]:

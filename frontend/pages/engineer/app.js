@@ -22,6 +22,8 @@ import {
 } from "./mechanisms.js";
 import {
   drawRemainingRows,
+  MORE_ROWS,
+  updateMoreRow,
   renderBinding,
   fillDetail,
   renderDetail,
@@ -111,8 +113,16 @@ const t = (key, params) => translate(state.lang, key, params);
 // The page's language travels as Accept-Language: the server's error messages come in it.
 const api = createClient({ headers: () => ({ "Accept-Language": state.lang }) });
 
-/** POST /api/v1/selections: run and store a selection. */
-const createSelection = (body) => api.post("/selections", body);
+/** POST /api/v1/selections: run and store a selection; the answer lists the ranking's first
+ * ``PAGE_TOP`` candidates, "show more" reads the rest page by page. */
+const createSelection = (body) => api.post(`/selections?top=${PAGE_TOP}`, body);
+
+/** Candidates the page asks a selection's answer to list: two screens of the ranking. */
+const PAGE_TOP = 25;
+
+/** GET /api/v1/selections/{id}/candidates: a page of a stored selection's ranking. */
+const getCandidatePage = (id, cursor, limit) =>
+  api.get(encodePath`/selections/${id}/candidates?cursor=${cursor}&limit=${String(limit)}`);
 
 /** GET /api/v1/selections/{id}: a stored selection. */
 const getSelection = (id) => api.get(encodePath`/selections/${id}`);
@@ -763,7 +773,47 @@ function rankingOptions() {
     },
     compareCell: (model) => compareToggle(model, state.compare.includes(model), state.lang, toggleCompare),
     compareStatus: compareStatusText(state.compare, state.lang, state.compareRefused),
+    onMore: showMore,
   };
+}
+
+/** "Show more": the ranking's next page added to the selection and drawn below its rows. */
+async function showMore() {
+  const sel = state.selection;
+  const button = $as("#ranking-more-button", HTMLButtonElement);
+  if (!sel?.next_cursor) return;
+  if (button) button.disabled = true;
+  try {
+    await readMore(sel, MORE_ROWS);
+  } catch (error) {
+    if (button) button.disabled = false;
+    announce(describeFailure(error));
+    return;
+  }
+  if (state.selection !== sel) return;
+  completeRanking();
+  const table = $("#ranking-table");
+  const candidate = chosenCandidate();
+  if (table && candidate) {
+    drawRemainingRows(table, sel, candidate.model, state.filter, state.lang, rankingOptions(), { more: true });
+  }
+  updateMoreRow(sel, state.lang, showMore);
+  $as("#ranking-more-button", HTMLButtonElement)?.focus();
+}
+
+/**
+ * The next ``limit`` candidates of ``sel``'s ranking (all of them: ``Infinity``) added to
+ * ``sel.candidates``, by its ``next_cursor``.
+ * @param {import("../../lib/api.js").SelectionOut} sel
+ */
+async function readMore(sel, limit) {
+  let wanted = limit;
+  while (sel.next_cursor && wanted > 0) {
+    const page = await getCandidatePage(sel.id, sel.next_cursor, Math.min(wanted, 1000));
+    sel.candidates.push(...page.candidates);
+    sel.next_cursor = page.next_cursor;
+    wanted -= page.candidates.length;
+  }
 }
 
 /** The rows a ranking drawn with its first rows still lacks, drawn as things stand now. */
@@ -1147,6 +1197,11 @@ async function openPermalink(id, model, marks) {
   try {
     // the request refills what the answer does not echo; without it those stay blank
     const [sel, request] = await Promise.all([getSelection(id), getSelectionRequest(id).catch(() => null)]);
+    // a permalink's actuator or marks beyond the candidates listed: read the ranking whole
+    const listed = new Set((sel?.candidates ?? []).map((c) => c.model));
+    if (sel?.next_cursor && [model, ...marks].some((m) => m && !listed.has(m))) {
+      await readMore(sel, Infinity);
+    }
     setBusy(false);
     fillForm(sel, request);
     acceptSelection(sel, model, marks);

@@ -162,11 +162,20 @@ export function renderPermalink(url, lang, onCopy) {
   );
 }
 
-function countVerdicts(candidates) {
+/**
+ * The whole ranking's candidates by verdict: the answer's ``verdict_counts`` (it lists only
+ * the ranking's first candidates), else counted from the candidates listed.
+ * @param {import("../../lib/api.js").SelectionOut} sel
+ */
+function countVerdicts(sel) {
+  if (sel.verdict_counts) return { ...sel.verdict_counts };
   const counts = { suitable: 0, unconfirmed: 0, unsuitable: 0 };
-  for (const c of candidates) if (Object.hasOwn(counts, c.verdict)) counts[c.verdict] += 1;
+  for (const c of sel.candidates) if (Object.hasOwn(counts, c.verdict)) counts[c.verdict] += 1;
   return counts;
 }
+
+/** How many candidates the whole ranking holds (the answer lists its first ones). */
+const totalCandidates = (sel) => sel.total_candidates ?? sel.candidates.length;
 
 /** One check that did not pass: status, label, approximation mark, then what was found. */
 function reasonItem(check, lang, label, separator, finding) {
@@ -333,7 +342,7 @@ function firstRows(candidates, filter) {
 export function renderRanking(sel, chosenModel, filter, lang, options, { rows = "all" } = {}) {
   const { onFilter, compareCell, compareStatus } = options;
   const t = (k, p) => translate(lang, k, p);
-  const counts = countVerdicts(sel.candidates);
+  const counts = countVerdicts(sel);
   const filters = h(
     "div",
     { class: "filter", role: "group", "aria-label": t("filter.label") },
@@ -350,7 +359,7 @@ export function renderRanking(sel, chosenModel, filter, lang, options, { rows = 
         },
         v === "all" ? t("filter.all") : t(`verdict.${v}`),
         " ",
-        h("span", { class: "count" }, `(${v === "all" ? sel.candidates.length : counts[v]})`),
+        h("span", { class: "count" }, `(${v === "all" ? totalCandidates(sel) : counts[v]})`),
       ),
     ),
   );
@@ -418,7 +427,39 @@ export function renderRanking(sel, chosenModel, filter, lang, options, { rows = 
       { class: "table-scroll", tabindex: "0", role: "region", "aria-label": t("table.caption") },
       table,
     ),
+    moreRow(sel, lang, options.onMore),
   );
+}
+
+/**
+ * Below the ranking while the answer has not listed it whole: how many rows of the whole
+ * ranking are listed, and a button that reads the next page (``onMore``, by the answer's
+ * ``next_cursor``). Redrawn by ``updateMoreRow`` when a page has come.
+ * @param {import("../../lib/api.js").SelectionOut} sel
+ */
+function moreRow(sel, lang, onMore) {
+  const t = (k, p) => translate(lang, k, p);
+  const total = totalCandidates(sel);
+  const shown = sel.candidates.length;
+  if (!sel.next_cursor || !onMore) return h("p", { id: "ranking-more", class: "hint", hidden: true });
+  return h(
+    "p",
+    { id: "ranking-more", class: "ranking-more hint", "data-shown": String(shown), "data-total": String(total) },
+    h("span", { role: "status", "aria-live": "polite" }, t("ranking.shown", { shown, total }), " "),
+    h(
+      "button",
+      { type: "button", class: "secondary", id: "ranking-more-button", onclick: onMore },
+      t("ranking.more", { count: Math.min(MORE_ROWS, total - shown) }),
+    ),
+  );
+}
+
+/** Candidates read per "show more" (GET …/candidates?limit=). */
+export const MORE_ROWS = 25;
+
+/** The "show more" row of the ranking as ``sel`` stands now (after a page came). */
+export function updateMoreRow(sel, lang, onMore) {
+  document.querySelector("#ranking-more")?.replaceWith(moreRow(sel, lang, onMore));
 }
 
 /**
@@ -484,9 +525,13 @@ export function renderBinding(sel, lang) {
   );
 }
 
-/** The rest of ``sel``'s ranking drawn with its first rows, as chosen, filtered and marked now. */
-export function drawRemainingRows(table, sel, chosenModel, filter, lang, options) {
-  if (table.dataset.rows !== "partial" || table.dataset.selection !== String(sel.id)) return;
+/**
+ * The rest of ``sel``'s listed candidates drawn after the table's rows, as chosen, filtered
+ * and marked now: the rows a table drawn with its first rows lacks, or (``more``) the
+ * candidates a page of the ranking has added.
+ */
+export function drawRemainingRows(table, sel, chosenModel, filter, lang, options, { more = false } = {}) {
+  if ((table.dataset.rows !== "partial" && !more) || table.dataset.selection !== String(sel.id)) return;
   const body = table.tBodies[0];
   const start = body.rows.length;
   body.append(
@@ -1051,6 +1096,6 @@ export function renderDetail(sel, candidate, view, lang) {
 
 /** The summary sentence announced to screen readers after a result arrives. */
 export function resultSentence(sel, chosenModel, lang) {
-  const counts = countVerdicts(sel.candidates);
+  const counts = countVerdicts(sel);
   return translate(lang, "results.done", { ...counts, model: chosenModel ?? "–" });
 }

@@ -388,6 +388,14 @@ async function loadSelection(id, model = null) {
   let selection;
   try {
     selection = await api.get(encodePath`/selections/${id}`);
+    // any candidate may be quoted: the ranking whole, page by page after the answer's own
+    while (selection.next_cursor) {
+      const page = await api.get(
+        encodePath`/selections/${id}/candidates?cursor=${selection.next_cursor}&limit=${"1000"}`,
+      );
+      selection.candidates.push(...page.candidates);
+      selection.next_cursor = page.next_cursor;
+    }
   } catch (error) {
     showFieldError("err-selection_id", () =>
       error.status === 404 ? t("sales.selection.missing", { id }) : errorText(error),
