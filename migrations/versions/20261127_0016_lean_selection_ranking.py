@@ -86,7 +86,13 @@ def _rewrite(before: int, after: int, change: Any) -> None:
         for row in rows:
             answer = json.loads(gzip.decompress(row.answer_gzip))
             rest = None if row.ranking_zstd is None else _unpacked(row.ranking_zstd)
-            answer, rest = change(row.id, answer, rest)
+            changed = change(row.id, answer, rest)
+            if changed is None:  # in the shape already: only the version is recorded
+                connection.execute(
+                    table.update().where(table.c.id == row.id).values(answer_version=after)
+                )
+                continue
+            answer, rest = changed
             connection.execute(
                 table.update()
                 .where(table.c.id == row.id)
@@ -116,8 +122,12 @@ def _cursor(selection_id: str, place: int) -> str:
     return base64.urlsafe_b64encode(f"{place}:{selection_id}".encode()).rstrip(b"=").decode()
 
 
-def _lean(selection_id: str, answer: JSON, rest: JSON | None) -> tuple[JSON, JSON | None]:
-    """A version-2 answer as version 3, and the rest of its ranking to store (or None)."""
+def _lean(selection_id: str, answer: JSON, rest: JSON | None) -> tuple[JSON, JSON | None] | None:
+    """A version-2 answer as version 3, and the rest of its ranking to store (or None);
+    None for an answer written in version 3's shape already (by the code of this
+    revision into a database not yet upgraded), left byte for byte."""
+    if "total_candidates" in answer:
+        return None
     candidates = answer["candidates"]
     counts = dict.fromkeys(_VERDICTS, 0)
     for c in candidates:

@@ -38,7 +38,12 @@ from actuator_selection.schemas.quotes import StoredSelection
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.presenters.selection import ANSWER_VERSION
-from actuator_selection.services.selections import size_selection
+from actuator_selection.services.selections import (
+    cursor,
+    read_ranking,
+    size_selection,
+    stored_answer_json,
+)
 
 DATA = Path(__file__).parent / "data"
 OLD: dict[int, dict[str, Any]] = {
@@ -277,3 +282,72 @@ def test_quotes_from_old_selections_render(upgraded: tuple[Engine, bytes]) -> No
                     assert pdf.content.startswith(b"%PDF")
     finally:
         app.state.engine.dispose()
+
+
+def _whole_answer_of_version_2(session: Session, copies: int) -> dict[str, Any]:
+    """A version-2 answer (every candidate listed) of ``copies`` × the starter catalogue's
+    ranking, the copies renamed (``~k``): an answer longer than version 3 lists."""
+    request = SelectionRequest.model_validate(worked_example.request())
+    catalogue = CatalogueCache().snapshot(session)
+    sized = size_selection(
+        request, request.to_core(), catalogue.actuators_of(None), catalogue, datetime.now(UTC),
+        top=1000,
+    )  # fmt: skip
+    answer: dict[str, Any] = orjson.loads(sized.answer)
+    for key in ("total_candidates", "verdict_counts", "next_cursor"):
+        del answer[key]
+    first = answer["candidates"]
+    answer["candidates"] = [
+        {**c, "model": f"{c['model']}~{k}", "drive_options": c["drive_options"] if k == 0 else None}
+        for k in range(copies)
+        for c in first
+    ]
+    answer["id"] = "whole-v2"
+    return answer
+
+
+def test_a_long_version_2_answer_is_split_and_paged_as_it_was(
+    backend: str, new_database: Callable[[str], str]
+) -> None:
+    url = new_database(backend)
+    config = alembic_config(url=url)
+    command.upgrade(config, "0015")
+    engine = make_engine(url)
+    try:
+        with make_session_factory(engine).begin() as session:
+            load_seed(session, SEED_DIR)
+            old = _whole_answer_of_version_2(session, copies=3)
+            session.execute(
+                text(
+                    "INSERT INTO selections (id, created_at, catalogue_version, request, "
+                    "answer_gzip, answer_version) VALUES (:id, :at, 1, :request, :answer, 2)"
+                ),
+                {
+                    "id": old["id"],
+                    "at": datetime.now(UTC),
+                    "request": json.dumps(worked_example.request()),
+                    "answer": gzip.compress(json.dumps(old).encode(), mtime=0),
+                },
+            )
+        total = len(old["candidates"])
+        assert total > 100
+        command.upgrade(config, "head")
+        lean = _answer(engine, old["id"])
+        SelectionOut.model_validate(lean)
+        assert lean["candidates"] == old["candidates"][:100]
+        assert lean["total_candidates"] == total
+        counts = dict.fromkeys(("suitable", "unconfirmed", "unsuitable"), 0)
+        for c in old["candidates"]:
+            counts[c["verdict"]] += 1
+        assert lean["verdict_counts"] == counts
+        assert lean["next_cursor"] == cursor(old["id"], 100)
+        with make_session_factory(engine)() as session:
+            ranking = read_ranking(session, old["id"], lean["next_cursor"])
+            assert ranking.page(1000)["candidates"] == old["candidates"][100:]
+            assert stored_answer_json(session, old["id"])["candidates"] == old["candidates"]
+        command.downgrade(config, "0015")
+        stored, version = _stored(engine, old["id"])
+        assert version == 2
+        assert orjson.loads(gzip.decompress(stored)) == old
+    finally:
+        engine.dispose()
