@@ -25,9 +25,11 @@ from __future__ import annotations
 import base64
 import gzip
 import json
+import math
 from collections.abc import Sequence
 from typing import Any
 
+import numpy as np
 import sqlalchemy as sa
 import zstandard
 from alembic import op
@@ -113,8 +115,20 @@ def _packed(data: JSON) -> bytes:
 
 
 def _unpacked(stored: bytes) -> JSON:
-    data: JSON = json.loads(zstandard.ZstdDecompressor().decompress(stored))
-    return data
+    """A stored rest of a ranking: JSON (``rows``), or columns (``RNK1``: a JSON header,
+    then the arrays' bytes, as ``ranking_rest`` writes them as of this revision)."""
+    raw = zstandard.ZstdDecompressor().decompress(stored)
+    if not raw.startswith(b"RNK1"):
+        data: JSON = json.loads(raw)
+        return data
+    size = int.from_bytes(raw[4:8], "little")
+    header: JSON = json.loads(raw[8 : 8 + size])
+    offset = 8 + size
+    for name, dtype, shape in header["arrays"]:
+        array = np.frombuffer(raw, dtype=dtype, count=int(np.prod(shape)), offset=offset)
+        offset += array.nbytes
+        header[name] = array.reshape(shape).tolist()  # NaN stays NaN: None below
+    return header
 
 
 def _cursor(selection_id: str, place: int) -> str:
@@ -169,15 +183,15 @@ def _rows(rest: JSON) -> list[JSON]:
             check: JSON = {
                 "name": name,
                 "status": statuses[rest["status"][j][k]],
-                "value": rest["value"][j][k],
-                "limit": rest["limit"][j][k],
+                "value": _number(rest["value"][j][k]),
+                "limit": _number(rest["limit"][j][k]),
             }
             if rest["approximate"][j][k]:
                 check["approximate"] = True
             if rest["missing"][j][k] >= 0:
                 check["missing"] = what[k][rest["missing"][j][k]]
             checks.append(check)
-        torques = [column[j] for column in rest["torques"]]
+        torques = [_number(column[j]) for column in rest["torques"]]
         out.append(
             {
                 "model": model,
@@ -194,3 +208,8 @@ def _rows(rest: JSON) -> list[JSON]:
             }
         )
     return out
+
+
+def _number(value: Any) -> Any:
+    """A stored float as the answer writes it: NaN (unknown) as None."""
+    return None if isinstance(value, float) and math.isnan(value) else value

@@ -29,9 +29,10 @@ def _whole_ranking(base_url: str, selection_id: str) -> list[str]:
 
 
 def _table_models(page: Page) -> list[str]:
-    return page.locator("#ranking-table tbody tr").evaluate_all(
+    models: list[str] = page.locator("#ranking-table tbody tr").evaluate_all(
         "rows => rows.map(r => r.dataset.model)"
     )
+    return models
 
 
 def test_the_page_shows_the_first_candidates_and_loads_more(page: Page, base_url: str) -> None:

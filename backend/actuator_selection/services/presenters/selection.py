@@ -481,8 +481,11 @@ def verdict_counts(verdicts: Sequence[Verdict]) -> dict[str, int]:
 
 
 RANKING_COMPRESSION = 1
-"""zstd level of the stored rest of a ranking (:func:`ranking_rest`): 6,400 candidates'
-columns in a few ms."""
+"""zstd level of the stored rest of a ranking (:func:`ranking_rest`)."""
+
+RANKING_MAGIC = b"RNK1"
+"""The first bytes of a stored rest of a ranking in columns (:func:`ranking_rest`); a rest
+upgraded from an answer that listed every candidate (migration 0016) is JSON."""
 
 
 def ranking_rest(
@@ -495,12 +498,24 @@ def ranking_rest(
     excluded: Sequence[int],
 ) -> bytes:
     """The ranking from place ``start`` on, as stored to be paged later
-    (:func:`ranked_candidates`): the candidates' figures and checks as columns (orjson
-    writes numpy's arrays as they are, NaN as null), zstd-compressed. ``actuators``,
-    ``verdicts``, ``torques`` (T_1, T_2, T_3, T_rms) and ``checks`` are the whole
-    ranking's, in its order; ``excluded`` (controllers excluded) the stored candidates'."""
+    (:func:`ranked_candidates`), zstd-compressed: :data:`RANKING_MAGIC`, the length of a
+    JSON header (4 bytes, little-endian), the header (the words: models, families,
+    verdicts, check names, what checks miss, the status names by code; each array's name,
+    dtype and shape), then the arrays' bytes (T_1, T_2, T_3, T_rms; each check's status,
+    value, limit, approximate and missing), so that no float is written as text: 6,400
+    candidates' floats as JSON text took longer than the whole ranking. ``actuators``,
+    ``verdicts``, ``torques`` and ``checks`` are the whole ranking's, in its order;
+    ``excluded`` (controllers excluded) the stored candidates'."""
     rest = actuators[start:]
-    data = {
+    arrays = {
+        "torques": np.stack([t[start:] for t in torques]),
+        "status": checks.statuses[start:],
+        "value": checks.values[start:],
+        "limit": checks.limits[start:],
+        "approximate": checks.approximate[start:],
+        "missing": checks.first_missing[start:],
+    }
+    header = {
         "start": start,
         "statuses": _STATUS_NAMES.tolist(),
         "checks": list(checks.names),
@@ -509,61 +524,62 @@ def ranking_rest(
         "family": [a.family for a in rest],
         "gear_ratio": [a.gear_ratio for a in rest],
         "verdict": [VALUE_OF[v] for v in verdicts[start:]],
-        "torques": [np.ascontiguousarray(t[start:]) for t in torques],
         "controllers_excluded": list(excluded),
-        "status": np.ascontiguousarray(checks.statuses[start:]),
-        "value": np.ascontiguousarray(checks.values[start:]),
-        "limit": np.ascontiguousarray(checks.limits[start:]),
-        "approximate": np.ascontiguousarray(checks.approximate[start:]),
-        "missing": np.ascontiguousarray(checks.first_missing[start:]),
+        "arrays": [[name, a.dtype.str, list(a.shape)] for name, a in arrays.items()],
     }
-    written = orjson.dumps(data, option=orjson.OPT_SERIALIZE_NUMPY)
-    return zstandard.ZstdCompressor(level=RANKING_COMPRESSION).compress(written)
-
-
-_TORQUES = ("accel_torque_nm", "constant_torque_nm", "decel_torque_nm", "rms_torque_nm")
+    written = orjson.dumps(header)
+    parts = [RANKING_MAGIC, len(written).to_bytes(4, "little"), written]
+    parts += [np.ascontiguousarray(a).tobytes() for a in arrays.values()]
+    return zstandard.ZstdCompressor(level=RANKING_COMPRESSION).compress(b"".join(parts))
 
 
 def ranked_candidates(stored: bytes, start: int, stop: int) -> list[JSON]:
     """The candidates ranked ``start`` to ``stop`` (exclusive) of a stored rest of a
     ranking (:func:`ranking_rest`), as ``CandidateOut`` (no drive options: the
     candidate's detail lists them). A rest upgraded from an answer that listed every
-    candidate (migration 0016) holds them as they were (``rows``)."""
-    data = orjson.loads(zstandard.ZstdDecompressor().decompress(stored))
-    first = data["start"]
-    lo, hi = max(start - first, 0), max(stop - first, 0)
-    if "rows" in data:
-        rows: list[JSON] = data["rows"][lo:hi]
+    candidate (migration 0016) holds them as they were (JSON, ``rows``)."""
+    raw = zstandard.ZstdDecompressor().decompress(stored)
+    if not raw.startswith(RANKING_MAGIC):
+        data = orjson.loads(raw)
+        first = data["start"]
+        rows: list[JSON] = data["rows"][max(start - first, 0) : max(stop - first, 0)]
         return rows
-    names, what, statuses = data["checks"], data["missing_what"], data["statuses"]
-    out = []
-    for j in range(lo, min(hi, len(data["model"]))):
-        checks = []
-        for k, name in enumerate(names):
-            check: JSON = {
-                "name": name,
-                "status": statuses[data["status"][j][k]],
-                "value": data["value"][j][k],
-                "limit": data["limit"][j][k],
-            }
-            if data["approximate"][j][k]:
-                check["approximate"] = True
-            missing = data["missing"][j][k]
-            if missing >= 0:
-                check["missing"] = what[k][missing]
-            checks.append(check)
-        candidate: JSON = {
-            "model": data["model"][j],
-            "family": data["family"][j],
-            "gear_ratio": data["gear_ratio"][j],
-            "verdict": data["verdict"][j],
-        }
-        for name, column in zip(_TORQUES, data["torques"], strict=True):
-            candidate[name] = column[j]
-        candidate |= {
-            "checks": checks,
-            "controllers_excluded": data["controllers_excluded"][j],
+    size = int.from_bytes(raw[4:8], "little")
+    header = orjson.loads(raw[8 : 8 + size])
+    arrays: dict[str, Any] = {}
+    offset = 8 + size
+    for name, dtype, shape in header["arrays"]:
+        count = int(np.prod(shape))
+        arrays[name] = np.frombuffer(raw, dtype=dtype, count=count, offset=offset).reshape(shape)
+        offset += arrays[name].nbytes
+    status_now = _STATUS_NAMES.tolist()
+    recoded = np.array([status_now.index(s) for s in header["statuses"]], dtype=np.intp)
+    checks = RankedChecks(
+        names=header["checks"],
+        missing_what=header["missing_what"],
+        statuses=recoded[arrays["status"]],
+        values=arrays["value"],
+        limits=arrays["limit"],
+        approximate=arrays["approximate"],
+        first_missing=arrays["missing"],
+    )
+    first = header["start"]
+    lo, hi = max(start - first, 0), min(max(stop - first, 0), len(header["model"]))
+    listed = checks.dicts(lo, hi)
+    torques = [or_none(t[lo:hi]) for t in arrays["torques"]]
+    return [
+        {
+            "model": header["model"][j],
+            "family": header["family"][j],
+            "gear_ratio": header["gear_ratio"][j],
+            "verdict": header["verdict"][j],
+            "accel_torque_nm": torques[0][i],
+            "constant_torque_nm": torques[1][i],
+            "decel_torque_nm": torques[2][i],
+            "rms_torque_nm": torques[3][i],
+            "checks": listed[i],
+            "controllers_excluded": header["controllers_excluded"][j],
             "drive_options": None,
         }
-        out.append(candidate)
-    return out
+        for i, j in enumerate(range(lo, hi))
+    ]
