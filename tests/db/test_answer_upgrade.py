@@ -42,6 +42,7 @@ from actuator_selection.services.selections import (
     cursor,
     read_ranking,
     size_selection,
+    store_selections,
     stored_answer_json,
 )
 
@@ -347,9 +348,25 @@ def test_a_long_version_2_answer_is_split_and_paged_as_it_was(
             whole = stored_answer_json(session, old["id"])
             assert whole is not None
             assert whole["candidates"] == old["candidates"]
+            # and one stored today, its rest as arrays: the downgrade lists it whole again
+            request = SelectionRequest.model_validate(worked_example.request())
+            catalogue = CatalogueCache().snapshot(session)
+            now = datetime.now(UTC)
+            sized = [
+                size_selection(request, request.to_core(), catalogue.actuators_of(None),
+                               catalogue, now, top=top)
+                for top in (5, 1000)
+            ]  # fmt: skip
+            store_selections(make_session_factory(engine).begin, sized[:1])
         command.downgrade(config, "0015")
         stored, version = _stored(engine, old["id"])
         assert version == 2
         assert orjson.loads(gzip.decompress(stored)) == old
+        stored, version = _stored(engine, sized[0].id)
+        assert version == 2
+        whole = orjson.loads(sized[1].answer)["candidates"]
+        listed = orjson.loads(gzip.decompress(stored))["candidates"]
+        assert listed[:5] == whole[:5]
+        assert listed[5:] == [{**c, "drive_options": None} for c in whole[5:]]
     finally:
         engine.dispose()
