@@ -21,12 +21,18 @@ def _number(x: float | None) -> float | None:
     return None if x is None else float(x)
 
 
-def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
+def check_body(
+    check: Check, localize: Localize = english, worded: dict[int, str] | None = None
+) -> dict[str, Any]:
     """A check in full (``CheckOut``), its message in words by ``localize``: what
     ``CheckOut.from_core(check, localize).model_dump(mode="json")`` gives, without building
-    the model."""
+    the model. ``worded`` collects the words by the message's identity, for the
+    candidate's reasons (the same messages) to be worded once."""
     value, limit, message = check.value, check.limit, check.message
     margin, utilisation = check.margin_percent, check.utilisation
+    words = localize(message)
+    if worded is not None:
+        worded[id(message)] = words
     return {
         "name": check.name,
         "status": VALUE_OF[check.status],
@@ -34,7 +40,7 @@ def check_body(check: Check, localize: Localize = english) -> dict[str, Any]:
         "limit": None if limit is None else float(limit),
         "unit": check.unit,
         "reference": check.reference,
-        "message": localize(message),
+        "message": words,
         "message_code": message_code(message),
         "message_params": jsonable_params(message),
         "approximate": check.approximate,
@@ -56,8 +62,10 @@ def candidate_body(
     given; ``controllers_summary`` from :func:`controllers_summary`."""
     t = candidate.torques
     a = candidate.actuator
-    # The checks first: a batch candidate's reasons then come from the checks built.
-    checks = [check_body(c, localize) for c in candidate.checks] if include_checks else None
+    # The checks first: a batch candidate's reasons then come from the checks built, and
+    # their words from the checks' (a reason is a check's message, worded once).
+    worded: dict[int, str] = {}
+    checks = [check_body(c, localize, worded) for c in candidate.checks] if include_checks else None
     body: dict[str, Any] = {
         "model": a.model,
         "family": a.family,
@@ -67,7 +75,7 @@ def candidate_body(
         "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
         "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
         "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
-        "reasons": [localize(r) for r in candidate.reasons],
+        "reasons": [worded.get(id(r)) or localize(r) for r in candidate.reasons],
     }
     if checks is not None:
         body["checks"] = checks
