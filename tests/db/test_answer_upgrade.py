@@ -312,7 +312,7 @@ def test_a_long_version_2_answer_is_split_and_paged_as_it_was(
 ) -> None:
     url = new_database(backend)
     config = alembic_config(url=url)
-    command.upgrade(config, "0015")
+    command.upgrade(config, "0017")
     engine = make_engine(url)
     try:
         with make_session_factory(engine).begin() as session:
@@ -358,7 +358,7 @@ def test_a_long_version_2_answer_is_split_and_paged_as_it_was(
                 for top in (5, 1000)
             ]  # fmt: skip
             store_selections(make_session_factory(engine).begin, sized[:1])
-        command.downgrade(config, "0015")
+        command.downgrade(config, "0017")
         stored, version = _stored(engine, old["id"])
         assert version == 2
         assert orjson.loads(gzip.decompress(stored)) == old

@@ -485,7 +485,7 @@ RANKING_COMPRESSION = 1
 
 RANKING_MAGIC = b"RNK1"
 """The first bytes of a stored rest of a ranking in columns (:func:`ranking_rest`); a rest
-upgraded from an answer that listed every candidate (migration 0016) is JSON."""
+upgraded from an answer that listed every candidate (migration 0018) is JSON."""
 
 
 def ranking_rest(
@@ -537,7 +537,7 @@ def ranked_candidates(stored: bytes, start: int, stop: int) -> list[JSON]:
     """The candidates ranked ``start`` to ``stop`` (exclusive) of a stored rest of a
     ranking (:func:`ranking_rest`), as ``CandidateOut`` (no drive options: the
     candidate's detail lists them). A rest upgraded from an answer that listed every
-    candidate (migration 0016) holds them as they were (JSON, ``rows``)."""
+    candidate (migration 0018) holds them as they were (JSON, ``rows``)."""
     raw = zstandard.ZstdDecompressor().decompress(stored)
     if not raw.startswith(RANKING_MAGIC):
         data = orjson.loads(raw)

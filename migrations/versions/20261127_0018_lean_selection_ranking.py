@@ -15,8 +15,8 @@ added. Every figure stays as it was. The downgrade puts the rest back into the a
 The code is this migration's own (a migration must not change when the application
 does); ``tests/db/test_answer_upgrade.py`` runs it on answers as the old code wrote them.
 
-Revision ID: 0016
-Revises: 0015
+Revision ID: 0018
+Revises: 0017
 Create Date: 2026-11-27
 """
 
@@ -34,8 +34,8 @@ import sqlalchemy as sa
 import zstandard
 from alembic import op
 
-revision: str = "0016"
-down_revision: str | None = "0015"
+revision: str = "0018"
+down_revision: str | None = "0017"
 branch_labels: str | Sequence[str] | None = None
 depends_on: str | Sequence[str] | None = None
 
