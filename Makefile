@@ -46,7 +46,7 @@ test: install lint typecheck jslint pytest
 ## and type checks, and the tests that need neither a browser, a real server nor PostgreSQL
 ## (the core's unit tests and doctests, the database and the API on SQLite).
 ## `make test` stays the whole suite, and CI's.
-FAST_TESTS := tests/test_purity.py tests/core tests/db tests/api backend/actuator_selection/core
+FAST_TESTS := tests/test_purity.py tests/core tests/db tests/api backend/actuator_selection/sizing backend/actuator_selection/catalogue backend/actuator_selection/sales backend/actuator_selection/i18n backend/actuator_selection/errors.py backend/actuator_selection/text.py backend/actuator_selection/documents/symbols.py
 
 check: install lint typecheck jslint
 	$(BIN)/python -m pytest -n auto -q -k "not postgresql" $(FAST_TESTS)
@@ -99,18 +99,18 @@ lock: install
 
 ## The catalogue of words (docs/i18n.md): re-extract the server's messages (N_ in the code),
 ## keep the keyed words declared in the catalogue (msgctxt: the page's keys, document.*),
-## merge both into backend/actuator_selection/locale/*/LC_MESSAGES/messages.po, and export
+## merge both into backend/actuator_selection/i18n/locale/*/LC_MESSAGES/messages.po, and export
 ## the page's words to frontend/lib/messages.js (checked in; a test fails when it is stale).
 ## Then translate every new or fuzzy entry. The catalogs are read as .po at run time.
 messages: install
 	mkdir -p var
 	$(BIN)/pybabel extract -F babel.cfg -k N_ --no-default-keywords --sort-output \
 		--no-location --width 100 --project actuator-selection -o var/messages.pot backend
-	$(BIN)/python -m actuator_selection.api.page_words template var/messages.pot
+	$(BIN)/python -m actuator_selection.i18n.page_words template var/messages.pot
 	@# The template has no locations (extract --no-location), so neither has the catalog.
-	$(BIN)/pybabel update -i var/messages.pot -d backend/actuator_selection/locale -D messages \
+	$(BIN)/pybabel update -i var/messages.pot -d backend/actuator_selection/i18n/locale -D messages \
 		--ignore-obsolete --width 100
-	$(BIN)/python -m actuator_selection.api.page_words export
+	$(BIN)/python -m actuator_selection.i18n.page_words export
 
 ## The page's types of the API's requests and answers (types/api.d.ts), generated from
 ## /openapi.json by openapi-typescript (package-lock.json); run after changing a schema:

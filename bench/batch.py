@@ -1,7 +1,7 @@
 """Throughput of batch selection: the scalar flowchart per case against the vectorised batch.
 
-Prints cases per second of ``core.selection.select`` run case by case and of
-``core.engine.select_batch`` (best 3 per case) on the starter catalogue and on a
+Prints cases per second of ``sizing.selection.select`` run case by case and of
+``sizing.engine.select_batch`` (best 3 per case) on the starter catalogue and on a
 synthetic catalogue of 1,000 actuators, their ratio, and the end-to-end time of
 POST /api/v1/selections/batch for 10,000 cases with and without checks (JSON both
 ways included). Runs on a throw-away SQLite database seeded with the starter catalogue.
@@ -23,12 +23,12 @@ from pathlib import Path
 
 from fastapi.testclient import TestClient
 
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.config import Settings
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.engine import evaluate_batch, rank_batch, select_batch
-from actuator_selection.core.selection import select
-from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
-from actuator_selection.main import API_PREFIX, create_app, tune_gc
+from actuator_selection.http.app import API_PREFIX, create_app, tune_gc
+from actuator_selection.sizing.engine import evaluate_batch, rank_batch, select_batch
+from actuator_selection.sizing.selection import select
+from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 from bench.selection import http_case, random_cases, starter_catalogue
 
 TOP = 3

@@ -34,15 +34,10 @@ import httpx
 import numpy as np
 from sqlalchemy.engine import make_url
 
+from actuator_selection.catalogue.csvio import write
+from actuator_selection.catalogue.fields import ACTUATOR_FIELDS, ENGINE_FIELDS, Kind
+from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS, FAMILIES, ZONE_POINTS
 from actuator_selection.config import REPO_ROOT
-from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS, ENGINE_FIELDS, Kind
-from actuator_selection.core.catalogue_files import (
-    ACTUATORS,
-    CATALOGUE_SPECS,
-    FAMILIES,
-    ZONE_POINTS,
-)
-from actuator_selection.core.csvio import write
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.sales import ApiKeyRepository
 from bench.batch import synthetic_catalogue

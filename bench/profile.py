@@ -20,7 +20,7 @@ from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app
+from actuator_selection.http.app import create_app
 
 SAMPLES = 100_000
 

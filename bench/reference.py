@@ -23,11 +23,11 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.selection import Application
-from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.sizing.selection import Application
+from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
 FloatArray = npt.NDArray[np.float64]
 

@@ -18,19 +18,19 @@ from typing import Any
 
 from fastapi.testclient import TestClient
 
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.config import SEED_DIR, Settings
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.selection import Application, select
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app, tune_gc
+from actuator_selection.http.app import create_app, tune_gc
 from actuator_selection.schemas.selections import SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 from actuator_selection.services.presenters.selection import DEFAULT_TOP
 from actuator_selection.services.selections import size_selection
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.selection import Application, select
 from bench.reference import numpy_reference
 
 

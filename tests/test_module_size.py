@@ -1,7 +1,7 @@
 """Each backend module holds one idea: none grows past :data:`MAX_LINES` lines (issue 27).
 
 A module that outgrows it is split by idea into a package whose ``__init__`` re-exports
-what callers import (as ``core/motion``, ``core/thermal``, ``core/mechanisms`` and
+what callers import (as ``sizing/motion``, ``sizing/thermal``, ``sizing/mechanisms`` and
 ``schemas/selections`` were)."""
 
 from __future__ import annotations

@@ -23,7 +23,7 @@ def _modules_after_importing(package: str) -> set[str]:
 
 def test_core_imports_only_the_standard_library() -> None:
     modules = _modules_after_importing("actuator_selection.core")
-    assert "actuator_selection.core.selection" in modules  # the walk did import the core
+    assert "actuator_selection.sizing.selection" in modules  # the walk did import the core
     for forbidden in ("fastapi", "sqlalchemy", "pydantic", "starlette", "plotly"):
         assert forbidden not in modules, f"the core imported {forbidden}"
 
@@ -37,8 +37,8 @@ def test_schemas_import_no_database_layer() -> None:
 
 
 def test_the_core_imports_no_layer_above_it() -> None:
-    """Imports point one way: the core (its packages too, ``core.motion``,
-    ``core.thermal``, ``core.mechanisms``) never reaches the schemas, the database,
+    """Imports point one way: the core (its packages too, ``sizing.motion``,
+    ``sizing.thermal``, ``sizing.mechanisms``) never reaches the schemas, the database,
     the services or the HTTP layer."""
     modules = _modules_after_importing("actuator_selection.core")
     for split in ("motion.segments", "thermal.overload", "mechanisms.hoist"):

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.selection import Application
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.selection import Application
 
 PATTERN = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0)
 LOAD = Load(torque_nm=5, inertia_kgm2=1.3)

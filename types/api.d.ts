@@ -527,7 +527,7 @@ export interface paths {
          * Get Candidate Diagram
          * @description The candidate's speed/torque diagram (Fig. 517.1) as a plotly figure (`data` and
          *     `layout`, JSON), in the document's language: the figure the quote and the report
-         *     print, from the same definition (`api/figures.py`). The page draws it with plotly.js.
+         *     print, from the same definition (`documents/figures.py`). The page draws it with plotly.js.
          */
         get: operations["get_candidate_diagram"];
         put?: never;
@@ -549,7 +549,7 @@ export interface paths {
          * Get Candidate Cycle
          * @description The candidate's cycle chart (Fig. 516.2: speed and torque over one period) as a
          *     plotly figure (`data` and `layout`, JSON), in the document's language: the figure the
-         *     report prints, from the same definition (`api/figures.py`). The page draws it with
+         *     report prints, from the same definition (`documents/figures.py`). The page draws it with
          *     plotly.js.
          */
         get: operations["get_candidate_cycle"];
@@ -1757,7 +1757,7 @@ export interface components {
         };
         /**
          * BallScrewInclineIn
-         * @description A ball screw at any incline, vertical included (``core.mechanisms``: r = P/2π).
+         * @description A ball screw at any incline, vertical included (``sizing.mechanisms``: r = P/2π).
          */
         BallScrewInclineIn: {
             /** @description a ratio between the actuator output and the mechanism */
@@ -4219,7 +4219,7 @@ export interface components {
         };
         /**
          * PowerOut
-         * @description Figures of one electrical power over the machine cycle (core/bus.py).
+         * @description Figures of one electrical power over the machine cycle (sizing/bus.py).
          */
         PowerOut: {
             /**
@@ -8503,7 +8503,7 @@ export interface operations {
     solve_ratio_study: {
         parameters: {
             query?: {
-                /** @description with the chart (`figure`, `api/figures.py`), in `lang`'s language */
+                /** @description with the chart (`figure`, `documents/figures.py`), in `lang`'s language */
                 figure?: boolean;
                 /** @description the document's language; left out: from Accept-Language, else en */
                 lang?: ("de" | "en") | null;

@@ -53,7 +53,7 @@ def _example_prices(session: Session) -> dict[str, int]:
 
 
 def _seed(args: argparse.Namespace) -> int:
-    from actuator_selection.core.csvio import CatalogueFileError
+    from actuator_selection.catalogue.csvio import CatalogueFileError
     from actuator_selection.db.engine import begin_write, make_engine, make_session_factory
     from actuator_selection.db.repositories import CatalogueVersionRepository
     from actuator_selection.db.seed import load_seed
@@ -112,7 +112,7 @@ def _serve(args: argparse.Namespace) -> int:
         )
     get_settings.cache_clear()
     uvicorn.run(
-        "actuator_selection.main:serve_app",
+        "actuator_selection.http.app:serve_app",
         factory=True,
         host=args.host,
         port=args.port,
@@ -127,8 +127,8 @@ def _worker(args: argparse.Namespace) -> int:
 
     from sqlalchemy.engine import make_url
 
-    from actuator_selection.api.messages import localizer
     from actuator_selection.db.engine import make_engine, make_session_factory
+    from actuator_selection.i18n.localize import localizer
     from actuator_selection.job_queue import run_worker
 
     if make_url(args.database_url).get_backend_name() != "postgresql":

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.csvio import CatalogueFileError
+from actuator_selection.catalogue.csvio import CatalogueFileError
 from actuator_selection.db.engine import begin_write, make_engine, make_session_factory
 from actuator_selection.db.sales import ROLES, ApiKeyRepository, PriceRepository, parse_prices
 

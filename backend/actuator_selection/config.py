@@ -10,8 +10,8 @@ from pathlib import Path
 from pydantic import Field, SecretStr
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
-from actuator_selection.core.quote_terms import QuoteDefaults, SellerParty
 from actuator_selection.db.engine import EngineLimits
+from actuator_selection.sales.quote_terms import QuoteDefaults, SellerParty
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 """The checkout this package lives in: ``backend/actuator_selection`` → repository root."""
@@ -43,13 +43,13 @@ class Settings(BaseSettings):
     selections are open and only admin and sales operations need one."""
     max_key_failures: int = Field(default=10, ge=1)
     """Wrong API keys a client address may send in a burst; then 429 with Retry-After
-    for any request with a key until the allowance refills (``api/throttle.py``)."""
+    for any request with a key until the allowance refills (``http/throttle.py``)."""
     key_failure_window_s: float = Field(default=60.0, gt=0)
     """The time [s] in which the allowance of wrong keys refills completely."""
     cors_allow_origins: str = ""
     """Origins whose pages may call the API from a browser (CORS), comma-separated
     (``https://tools.example.com,https://erp.example.com``) or ``*``; empty: none, the
-    service's own pages need no CORS (``api/methods.py``)."""
+    service's own pages need no CORS (``http/methods.py``)."""
 
     data_dir: Path = REPO_ROOT / "var"
     """Files the service keeps beside the database: the document links' signing secret

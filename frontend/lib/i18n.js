@@ -2,7 +2,7 @@ import { PLOTLY_WORDS, REFERENCE_PATTERN, WORDS } from "./messages.js";
 import { appendSymbols, plainSymbols } from "./symbols.js";
 
 // The page's words in German and English come from the gettext catalogue of the server
-// (backend/actuator_selection/locale), exported by `make messages` to ./messages.js
+// (backend/actuator_selection/i18n/locale), exported by `make messages` to ./messages.js
 // (docs/i18n.md): add or change a word there, never here. API messages come in the
 // language the page asks for (Accept-Language).
 
@@ -28,7 +28,7 @@ const REFERENCE_WORDS = new RegExp(REFERENCE_PATTERN, "g");
 /** The chapter's reference ("Table 515.1") in ``lang`` ("Tabelle 515.1"). */
 export function translateReference(lang, reference) {
   if (typeof reference !== "string") return "";
-  // the catalogue's reference words, one rule with the documents' (api/messages.py)
+  // the catalogue's reference words, one rule with the documents' (i18n/localize.py)
   return reference.replace(REFERENCE_WORDS, (word) => refWord(lang, word));
 }
 

@@ -1,5 +1,5 @@
 // The page's words in German and English, exported by `make messages` from the gettext
-// catalogue (backend/actuator_selection/locale/de/LC_MESSAGES/messages.po: msgctxt = key,
+// catalogue (backend/actuator_selection/i18n/locale/de/LC_MESSAGES/messages.po: msgctxt = key,
 // msgid = English, msgstr = German). Do not edit: change the catalogue and run
 // `make messages` (docs/i18n.md); tests/api/test_page_words.py fails when this is stale.
 

@@ -66,10 +66,10 @@ _CHUNK = 200
 JSON = dict[str, Any]
 
 _NO_DATA = re.compile(r"no data: the catalogue gives no (.+) for this actuator")
-"""A version-0 no-data check's words (``core/checks.py`` then): they name what it misses."""
+"""A version-0 no-data check's words (``sizing/checks`` then): they name what it misses."""
 
 _NOT_CHECKED = "not checked: no output_load given"
-"""``output_bearing`` of an answer without an output load (``core/check_messages.py``)."""
+"""``output_bearing`` of an answer without an output load (``i18n/check_messages.py``)."""
 
 
 def upgrade() -> None:
@@ -166,7 +166,7 @@ def upgraded_answer(answer: JSON) -> JSON:
 
 def _segments(answer: JSON) -> list[JSON]:
     """The chapter's cycle (Fig. 516.2) as the answer's four segments at the output: 0 →
-    n_2 in t_1, n_2 for t_2, n_2 → 0 in t_3, standstill for t_p (``core/motion.py``)."""
+    n_2 in t_1, n_2 for t_2, n_2 → 0 in t_3, standstill for t_p (``sizing/motion``)."""
     cycle, n_2 = answer["cycle"], answer["load"]["speed_rpm"]
     speeds = ((0.0, n_2), (n_2, n_2), (n_2, 0.0), (0.0, 0.0))
     durations = (cycle["accel_s"], cycle["constant_s"], cycle["decel_s"], cycle["pause_s"])

@@ -1,4 +1,4 @@
-"""The API's actuator is derived from the declared catalogue values (core/catalogue_fields.py):
+"""The API's actuator is derived from the declared catalogue values (catalogue/fields.py):
 a property per value, described by its symbol, words and unit, showing the stored value;
 the words of every value are in both languages."""
 
@@ -9,11 +9,11 @@ from pathlib import Path
 import pytest
 from fastapi.testclient import TestClient
 
-from actuator_selection.api.messages import translations
-from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS, CatalogueField
-from actuator_selection.core.catalogue_files import ACTUATORS
-from actuator_selection.core.csvio import read
-from actuator_selection.core.messages import Text
+from actuator_selection.catalogue.csvio import read
+from actuator_selection.catalogue.fields import ACTUATOR_FIELDS, CatalogueField
+from actuator_selection.catalogue.files import ACTUATORS
+from actuator_selection.i18n.localize import translations
+from actuator_selection.i18n.messages import Text
 
 SEED = Path(__file__).resolve().parents[2] / "seed_data"
 BESIDES = ["continuous_duty_zone", "continuous_duty_zone_source", "output_turns_opposite_to_motor"]

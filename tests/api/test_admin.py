@@ -11,9 +11,9 @@ from typing import Any
 import pytest
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
+from actuator_selection.catalogue.csvio import parse
+from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS
 from actuator_selection.config import SEED_DIR
-from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS
-from actuator_selection.core.csvio import parse
 
 __all__ = ["api", "sales_api_with"]
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 from bench.selection import random_cases
 from sqlalchemy.orm import Session
 
-from actuator_selection.api.messages import localizer
-from actuator_selection.core.engine import select_batch
+from actuator_selection.i18n.localize import localizer
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.presenters.batch import candidate_body
+from actuator_selection.sizing.engine import select_batch
 
 
 def test_reasons_take_the_words_of_the_checks(session: Session) -> None:

@@ -16,17 +16,11 @@ from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.oracle.flowchart import operands
 
-from actuator_selection.api.messages import catalog_path, check_templates, render_check
-from actuator_selection.core.check_messages import CHECK_MESSAGES, Phrase
-from actuator_selection.core.checks import (
-    ALL_RULES,
-    BEARING_STATIC,
-    RULES,
-    Operands,
-    Status,
-)
-from actuator_selection.core.checks.rule import _floor_message
-from actuator_selection.core.selection import evaluate
+from actuator_selection.i18n.check_messages import CHECK_MESSAGES, Phrase
+from actuator_selection.i18n.localize import catalog_path, check_templates, render_check
+from actuator_selection.sizing.checks import ALL_RULES, BEARING_STATIC, RULES, Operands, Status
+from actuator_selection.sizing.checks.rule import _floor_message
+from actuator_selection.sizing.selection import evaluate
 
 SELECTIONS = "/api/v1/selections"
 EXAMPLE_REQUEST: dict[str, Any] = {
@@ -322,7 +316,10 @@ def _drive_messages() -> Iterator[str]:
     stored lean check written from its numbers."""
     from tests.core.test_drive import BUSES, CHA, CHA_INTERFACE, CONTROLLERS
 
-    from actuator_selection.core.compatibility import (
+    from actuator_selection.schemas.controllers import controllers_note
+    from actuator_selection.schemas.output_load import OutputLoadIn, output_bearing_note
+    from actuator_selection.schemas.quotes import StoredCheck
+    from actuator_selection.sizing.compatibility import (
         BusClass,
         Controller,
         FeedbackSystem,
@@ -330,10 +327,7 @@ def _drive_messages() -> Iterator[str]:
         SupportLevel,
         match_controllers,
     )
-    from actuator_selection.core.drive import DriveOptions, drive_options, shared_voltage_check
-    from actuator_selection.schemas.controllers import controllers_note
-    from actuator_selection.schemas.output_load import OutputLoadIn, output_bearing_note
-    from actuator_selection.schemas.quotes import StoredCheck
+    from actuator_selection.sizing.drive import DriveOptions, drive_options, shared_voltage_check
 
     possible = Controller(
         manufacturer="Test",
@@ -403,7 +397,7 @@ DRIVE_MESSAGE_GROUPS = (
 
 
 def _ops() -> Any:
-    from actuator_selection.core.checks import FLOAT_OPS
+    from actuator_selection.sizing.checks import FLOAT_OPS
 
     return FLOAT_OPS
 
@@ -461,13 +455,13 @@ def test_german_numbers_use_a_decimal_comma_and_infinity_a_sign() -> None:
 
 
 def test_every_reason_a_limit_has_no_value_has_a_german_text() -> None:
-    """The inverse solve's reasons (core/inverse.py), each from a real solve: a speed above
+    """The inverse solve's reasons (sizing/inverse.py), each from a real solve: a speed above
     n_max at any pause or t_1, an inertia ratio failed already at J_L = 0 with J_A's 3×
     beyond reach, and a cycle that does not start with a ramp."""
-    from actuator_selection.core.cycle import Load
-    from actuator_selection.core.inverse import largest_load_inertia, shortest_accel
-    from actuator_selection.core.motion import Motion, Segment
-    from actuator_selection.core.selection import Application
+    from actuator_selection.sizing.cycle import Load
+    from actuator_selection.sizing.inverse import largest_load_inertia, shortest_accel
+    from actuator_selection.sizing.motion import Motion, Segment
+    from actuator_selection.sizing.selection import Application
 
     fha = worked_example.FHA_25C_50_L
     app = worked_example.APPLICATION

@@ -16,9 +16,7 @@ from tests.oracle.test_engine_parity import (
     random_case,
 )
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.engine import evaluate_batch
-from actuator_selection.core.selection import Application
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.services.presenters.selection import (
     CHECKS_AS_DICTS_UP_TO,
     checks_as_dicts,
@@ -26,6 +24,8 @@ from actuator_selection.services.presenters.selection import (
     checks_of,
     dump_json,
 )
+from actuator_selection.sizing.engine import evaluate_batch
+from actuator_selection.sizing.selection import Application
 
 
 def assert_same_text(actuators: list[Actuator], app: Application) -> None:

@@ -20,9 +20,9 @@ from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.api.messages import words
-from actuator_selection.api.quote_document_text import DOCUMENT, DocumentText, Language
-from actuator_selection.services.pdf import DocumentPdf, unicode_font
+from actuator_selection.documents.pdf import DocumentPdf, unicode_font
+from actuator_selection.documents.quote_document_text import DOCUMENT, DocumentText, Language
+from actuator_selection.i18n.localize import words
 
 __all__ = ["api", "sales_api_with"]
 
@@ -125,7 +125,7 @@ def test_the_report_details_the_candidates_asked_for(client: TestClient) -> None
 
 
 def test_the_csv_is_one_tidy_table(client: TestClient) -> None:
-    from actuator_selection.services.reports import COLUMNS
+    from actuator_selection.documents.reports import COLUMNS
 
     answer = _selection(client)
     response = client.get(f"/api/v1/selections/{answer['id']}/report.csv")

@@ -10,7 +10,7 @@ from fastapi.testclient import TestClient
 from pydantic import BaseModel, Field, ValidationError
 from sqlalchemy.exc import IntegrityError
 
-from actuator_selection.api import errors
+from actuator_selection.http import errors
 
 
 def test_a_write_conflict_is_409_and_says_to_retry() -> None:

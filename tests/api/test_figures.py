@@ -1,4 +1,4 @@
-"""The speed/torque diagram, defined once (``api/figures.py``) for the page, the quote and
+"""The speed/torque diagram, defined once (``documents/figures.py``) for the page, the quote and
 the report: the zone cases and the gaps (moved here from the page's figures.js test), and
 the page's figure is the quote's, served by ``GET …/candidates/{model}/diagram``."""
 
@@ -9,8 +9,8 @@ from typing import Any
 
 from fastapi.testclient import TestClient
 
-from actuator_selection.api.figures import DiagramPoints, diagram_figure
-from actuator_selection.api.quote_document_text import DocumentText
+from actuator_selection.documents.figures import DiagramPoints, diagram_figure
+from actuator_selection.documents.quote_document_text import DocumentText
 
 EN, DE = DocumentText("en"), DocumentText("de")
 POINTS = DiagramPoints(
@@ -91,7 +91,7 @@ def test_no_zone_says_no_data_and_no_catalogue_draws_no_limits() -> None:
 def test_the_page_gets_the_figure_the_quote_prints(client: TestClient) -> None:
     """The page's diagram and the quote's are one definition: the API's figure for a
     candidate has the same traces, in the same order, as the printed one."""
-    from actuator_selection.api.quote_document import speed_torque_figure
+    from actuator_selection.documents.quote_document import speed_torque_figure
     from actuator_selection.schemas.quotes import StoredSelection
 
     body = {
@@ -138,7 +138,7 @@ def test_the_cycle_is_the_chapters_trapezoid_with_the_answers_torques(
 ) -> None:
     """Fig. 516.2 from the stored answer: n(t) through t_1…t_p at n_2; T(t) the steps
     T_1, T_2, T_3 of the answer, T_rms a line; two panels on one time axis."""
-    from actuator_selection.api.figures import cycle_figure
+    from actuator_selection.documents.figures import cycle_figure
 
     _, stored = _stored(client, WORKED)
     candidate = stored.candidates[0]
@@ -188,7 +188,7 @@ def test_the_served_cycle_carries_the_torque_along_each_segment(client: TestClie
     """``GET …/cycle``: the torque along each segment as the candidate's detail gives it
     (its points joined), or the stored steps with ``torques=false``; in the document's
     language; 404 for a model that is no candidate."""
-    from actuator_selection.api.figures import cycle_figure
+    from actuator_selection.documents.figures import cycle_figure
 
     ident, stored = _stored(client, WORKED)
     url = f"/api/v1/selections/{ident}/candidates/FHA-25C-50-L/cycle"

@@ -22,7 +22,7 @@ from typing import Any
 import pytest
 
 from actuator_selection.config import REPO_ROOT, Settings
-from actuator_selection.main import create_app
+from actuator_selection.http.app import create_app
 
 pytestmark = pytest.mark.node
 

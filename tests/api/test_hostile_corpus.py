@@ -32,8 +32,8 @@ from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 from tests.api.test_admin import NEW, ZONE, admin, export_zip, import_, unchanged, version, zipped
 
 from actuator_selection.api.uploads import MAX_LINE_CHARS
-from actuator_selection.core.catalogue_files import FAMILIES
-from actuator_selection.core.csvio import MAX_ROWS
+from actuator_selection.catalogue.csvio import MAX_ROWS
+from actuator_selection.catalogue.files import FAMILIES
 from actuator_selection.schemas.mechanisms import MechanismIn, TransmissionIn
 from actuator_selection.schemas.quantities import MAX_QUANTITY_TEXT, InUnit
 

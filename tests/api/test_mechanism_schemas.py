@@ -16,15 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from pydantic import TypeAdapter, ValidationError
 
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.mechanisms import (
-    BeltDrive,
-    Hoist,
-    Transmission,
-    belt_axis,
-    hoist_axis,
-    with_transmission,
-)
+from actuator_selection.errors import InvalidInputError
 from actuator_selection.schemas.common import StrictModel
 from actuator_selection.schemas.mechanisms import (
     MECHANISM_TYPES,
@@ -32,6 +24,14 @@ from actuator_selection.schemas.mechanisms import (
     LiftIn,
     MechanismIn,
     TransmissionIn,
+)
+from actuator_selection.sizing.mechanisms import (
+    BeltDrive,
+    Hoist,
+    Transmission,
+    belt_axis,
+    hoist_axis,
+    with_transmission,
 )
 
 INCH_MM = 25.4

@@ -10,8 +10,8 @@ import pytest
 from fastapi.testclient import TestClient
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.api.openapi import ERROR_SCHEMA
 from actuator_selection.config import SEED_DIR
+from actuator_selection.http.openapi import ERROR_SCHEMA
 from actuator_selection.schemas.tools import SensorTemperatureRequest
 
 __all__ = ["api", "sales_api_with"]

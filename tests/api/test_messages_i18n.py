@@ -13,10 +13,10 @@ from babel.messages.extract import extract_from_dir
 from babel.messages.pofile import read_po
 from fastapi.testclient import TestClient
 
-from actuator_selection.api import messages
-from actuator_selection.api.messages import all_templates, catalog_path, negotiate
-from actuator_selection.core.errors import DomainError, InvalidInputError
-from actuator_selection.core.mechanisms import BeltDrive
+from actuator_selection.errors import DomainError, InvalidInputError
+from actuator_selection.i18n import localize as messages
+from actuator_selection.i18n.localize import all_templates, catalog_path, negotiate
+from actuator_selection.sizing.mechanisms import BeltDrive
 
 SELECTIONS = "/api/v1/selections"
 BACKEND = Path(messages.__file__).resolve().parents[2]
@@ -141,7 +141,7 @@ def test_the_answer_follows_the_negotiated_language(client: TestClient) -> None:
 
 
 def test_a_segment_cycle_error_in_german(client: TestClient) -> None:
-    """A domain error from core/motion.py: its code and params, its text translated."""
+    """A domain error from sizing/motion: its code and params, its text translated."""
     body = {
         "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
         "cycle": {"segments": [{"speed": 40, "duration_s": 0.1}, {"duration_s": 0.5}]},

@@ -1,4 +1,4 @@
-"""The OpenAPI document is one a client generator can code against (``api/openapi.py``).
+"""The OpenAPI document is one a client generator can code against (``http/openapi.py``).
 
 Checked on the document itself: readable unique operationIds, one error schema for
 every error answer, the bearer security scheme where keys are read, an example for
@@ -19,9 +19,9 @@ import jsonschema_rs
 import pytest
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.api.openapi import ERROR_SCHEMA, SECURITY_SCHEME
 from actuator_selection.config import Settings
-from actuator_selection.main import create_app
+from actuator_selection.http.app import create_app
+from actuator_selection.http.openapi import ERROR_SCHEMA, SECURITY_SCHEME
 
 __all__ = ["api", "sales_api_with"]  # fixtures
 

@@ -191,8 +191,8 @@ def test_cha_bearing_forces_are_not_applicable_single_batch_and_report(
 def test_a_stored_check_that_does_not_apply_is_no_reason_in_the_quote_document() -> None:
     """The quote document's row says "not applicable" ("nicht anwendbar"), and the check
     is not among the reasons a quote is unconfirmed."""
-    from actuator_selection.api.quote_document import _check_row
-    from actuator_selection.api.quote_document_text import DocumentText, Language
+    from actuator_selection.documents.quote_document import _check_row
+    from actuator_selection.documents.quote_document_text import DocumentText, Language
     from actuator_selection.schemas.quotes import StoredCheck
 
     check = StoredCheck(

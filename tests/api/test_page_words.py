@@ -12,16 +12,16 @@ from pathlib import Path
 
 import pytest
 
-from actuator_selection.api import page_words
-from actuator_selection.api.messages import (
+from actuator_selection.i18n import page_words
+from actuator_selection.i18n.localize import (
     catalog,
     catalog_path,
     check_templates,
     translate,
     words,
 )
-from actuator_selection.api.page_words import PAGE_MODULE, module_text
-from actuator_selection.api.page_words import page_words as exported
+from actuator_selection.i18n.page_words import PAGE_MODULE, module_text
+from actuator_selection.i18n.page_words import page_words as exported
 
 ROOT = Path(__file__).resolve().parents[2]
 FRONTEND = ROOT / "frontend"

@@ -18,8 +18,6 @@ import pytest
 from sqlalchemy.orm import Session
 from tests import worked_example
 
-from actuator_selection.core.inverse import limits
-from actuator_selection.core.selection import evaluate, select
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.batch import BatchResultOut
@@ -36,6 +34,8 @@ from actuator_selection.services.presenters.detail import candidate_detail
 from actuator_selection.services.presenters.limits import limits_answer
 from actuator_selection.services.presenters.selection import ANSWER_VERSION, dump_json
 from actuator_selection.services.selections import size_selection
+from actuator_selection.sizing.inverse import limits
+from actuator_selection.sizing.selection import evaluate, select
 
 CASES: dict[str, dict[str, Any]] = {
     "worked_example": {**worked_example.request(), "models": ["FHA-25C-50-L"]},
@@ -168,7 +168,7 @@ def test_detail_and_batch_presenters_agree_with_the_ranking(
 
 
 def test_limits_presenter_writes_its_model(catalogue: CatalogueSnapshot) -> None:
-    """The limits of the worked example on its own actuator (``core/inverse.py``)."""
+    """The limits of the worked example on its own actuator (``sizing/inverse.py``)."""
     app = _request("worked_example").to_core()
     (actuator,) = catalogue.actuators_of(["FHA-25C-50-L"])
     answer = limits_answer(

@@ -7,7 +7,7 @@ from sqlalchemy import Connection, select
 from sqlalchemy.orm import Session
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.core.citations import mirror_addresses
+from actuator_selection.catalogue.citations import mirror_addresses
 from actuator_selection.db.models.sales import QuoteRow
 
 __all__ = ["api", "sales_api_with"]

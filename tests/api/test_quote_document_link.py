@@ -16,9 +16,9 @@ from sqlalchemy.orm import Session
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
 from actuator_selection.api.quotes import DOCUMENT_LINK_MAX_TTL_S, DOCUMENT_LINK_TTL_S
-from actuator_selection.core.sales import ApiKeyRecord
 from actuator_selection.db.models.sales import ApiKeyRow
 from actuator_selection.db.sales import ApiKeyRepository
+from actuator_selection.sales.records import ApiKeyRecord
 from actuator_selection.services.quotes import document_resource
 
 __all__ = ["api", "sales_api_with"]

@@ -14,7 +14,7 @@ from babel.numbers import format_decimal
 from pypdf import PdfReader
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.services.pdf import unicode_font
+from actuator_selection.documents.pdf import unicode_font
 
 __all__ = ["api", "sales_api_with"]
 

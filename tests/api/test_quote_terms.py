@@ -14,9 +14,9 @@ from sqlalchemy import update
 from sqlalchemy.orm import Session
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
-from actuator_selection.api.messages import words
-from actuator_selection.api.quote_document_text import DOCUMENT
 from actuator_selection.db.models.sales import QuoteRow
+from actuator_selection.documents.quote_document_text import DOCUMENT
+from actuator_selection.i18n.localize import words
 
 __all__ = ["api", "sales_api_with"]
 

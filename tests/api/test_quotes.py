@@ -19,8 +19,8 @@ from tests.api._sales_fixtures import (
     today_plus,
 )
 
-from actuator_selection.api.static import PLOTLY_URL
 from actuator_selection.db.sales import ApiKeyRepository
+from actuator_selection.http.static import PLOTLY_URL
 
 __all__ = ["api", "sales_api_with"]
 

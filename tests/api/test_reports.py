@@ -16,10 +16,10 @@ from fastapi.testclient import TestClient
 from markupsafe import Markup
 from tests import worked_example
 
-from actuator_selection.api.quote_document_text import DocumentText, Language
-from actuator_selection.core.symbols import symbols
-from actuator_selection.services.pdf import DocumentPdf, unmarked
-from actuator_selection.services.reports import COLUMNS
+from actuator_selection.documents.pdf import DocumentPdf, unmarked
+from actuator_selection.documents.quote_document_text import DocumentText, Language
+from actuator_selection.documents.reports import COLUMNS
+from actuator_selection.documents.symbols import symbols
 
 
 def _selection(client: TestClient, **changes: Any) -> dict[str, Any]:
@@ -130,7 +130,7 @@ def _pdf_text(content: bytes) -> tuple[str, int]:
 @cache
 def _printed(text: str | Markup) -> str:
     """``text`` as the PDF writes it: as it is in DejaVu Sans, in ASCII for the chapter's
-    symbols where the system lacks that font (services/pdf.py)."""
+    symbols where the system lacks that font (documents/pdf.py)."""
     return " ".join(unmarked(_document().words(text)).split())
 
 
@@ -274,7 +274,7 @@ def test_the_pdfs_inputs_list_the_output_load(client: TestClient, language: Lang
     """The inputs in words name the external load on the output flange when one was sent
     (issue 29 item 4): forces, levers, f_w, f_s and the required life, with their units;
     and the first page draws both figures, the cycle with its speed and torque panels."""
-    from actuator_selection.services.report_pdf import OUTPUT_LOAD_ROWS, number
+    from actuator_selection.documents.report_pdf import OUTPUT_LOAD_ROWS, number
 
     answer = _selection(client, output_load=OUTPUT_LOAD)
     url = f"/api/v1/selections/{answer['id']}/report.pdf"

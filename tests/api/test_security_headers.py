@@ -1,4 +1,4 @@
-"""Security headers (``api/security_headers.py``) on every kind of response.
+"""Security headers (``http/security_headers.py``) on every kind of response.
 
 The app is built here with ``create_app`` and the middleware installed by
 ``security_headers.install``, which does nothing a second time, so these tests
@@ -20,11 +20,11 @@ from sqlalchemy import Connection, Engine
 from sqlalchemy.orm import Session, sessionmaker
 from tests.api._sales_fixtures import FakeClock, SalesApi, create_keys, load_example_prices
 
-from actuator_selection.api import security_headers
 from actuator_selection.api.quotes import get_clock
-from actuator_selection.api.security_headers import PAGE_CSP, inline_script_hashes
 from actuator_selection.config import FRONTEND_DIR, Settings
-from actuator_selection.main import create_app
+from actuator_selection.http import security_headers
+from actuator_selection.http.app import create_app
+from actuator_selection.http.security_headers import PAGE_CSP, inline_script_hashes
 
 EVERY_RESPONSE = {
     "x-content-type-options": "nosniff",

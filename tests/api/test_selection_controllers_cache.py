@@ -12,8 +12,8 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 
-from actuator_selection.core.compatibility import CompatibilityResult, match_controllers
 from actuator_selection.services import catalogue as drive
+from actuator_selection.sizing.compatibility import CompatibilityResult, match_controllers
 
 
 def _interface(model_controllers: dict[str, Any]) -> str:

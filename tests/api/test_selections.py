@@ -16,7 +16,7 @@ from tests import worked_example
 from tests.oracle.flowchart import select
 
 from actuator_selection.db.repositories import CatalogueRepository
-from actuator_selection.main import GC_THRESHOLDS, tune_gc
+from actuator_selection.http.app import GC_THRESHOLDS, tune_gc
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
 

@@ -12,7 +12,7 @@ from sqlalchemy import Connection, func, select
 from tests import worked_example
 
 from actuator_selection.db.models import SelectionRow
-from actuator_selection.main import API_PREFIX
+from actuator_selection.http.app import API_PREFIX
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_BATCH_CASES,
@@ -184,7 +184,7 @@ def test_openapi_documents_the_batch_contract(batch_client: TestClient) -> None:
     assert "201" in operation["responses"]
     request = spec["components"]["schemas"]["BatchSelectionRequest"]
     assert request["properties"]["cases"]["maxItems"] == MAX_BATCH_CASES
-    # optional, its default in words (a `default` would read as "always sent", api/openapi.py)
+    # optional, its default in words (a `default` would read as "always sent", http/openapi.py)
     assert "top" not in request["required"]
     assert request["properties"]["top"]["description"].endswith("omitted: 3")
 

@@ -1,4 +1,4 @@
-"""The page's static files: plotly.js as ``api/static.py`` serves it, and how the pages load it."""
+"""The page's static files: plotly.js as ``http/static.py`` serves it, and how the pages load it."""
 
 from __future__ import annotations
 
@@ -14,8 +14,8 @@ import pytest
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
-from actuator_selection.api import static
 from actuator_selection.config import FRONTEND_DIR, REPO_ROOT
+from actuator_selection.http import static
 
 
 @pytest.fixture

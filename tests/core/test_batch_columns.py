@@ -25,18 +25,18 @@ from tests.oracle.test_engine_parity import (
     random_case,
 )
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import BRAKE_HOLDING, RULES, Rule
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.engine import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.checks import BRAKE_HOLDING, RULES, Rule
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
     TrapezoidColumns,
     rank_columns,
     select_batch,
 )
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.selection import Application
+from actuator_selection.sizing.selection import Application
 
 
 def columns_of(apps: Sequence[Application], tau: float | None = None) -> TrapezoidColumns:

@@ -14,10 +14,10 @@ import math
 
 import pytest
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.bearing import OutputLoad, l10_life_h, oscillating_life_h
-from actuator_selection.core.checks import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.bearing import OutputLoad, l10_life_h, oscillating_life_h
+from actuator_selection.sizing.checks import (
     BEARING_AXIAL_FORCE,
     BEARING_FRETTING,
     BEARING_LIFE,
@@ -27,10 +27,10 @@ from actuator_selection.core.checks import (
     RULES,
     Status,
 )
-from actuator_selection.core.cycle import Load, SpeedPattern, mean_speed_rpm
-from actuator_selection.core.engine import evaluate_batch
-from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.selection import Application, evaluate
+from actuator_selection.sizing.cycle import Load, SpeedPattern, mean_speed_rpm
+from actuator_selection.sizing.engine import evaluate_batch
+from actuator_selection.sizing.motion import Motion, Segment
+from actuator_selection.sizing.selection import Application, evaluate
 
 BEARING_RULES = (
     BEARING_MOMENT,

@@ -1,4 +1,4 @@
-"""Several axes on one DC bus (core/bus.py): analytic cases, opposition, conservation."""
+"""Several axes on one DC bus (sizing/bus.py): analytic cases, opposition, conservation."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.bus import (
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.bus import (
     COPPER_LOSS_FACTOR,
     AxisPower,
     Motor,
@@ -18,7 +18,7 @@ from actuator_selection.core.bus import (
     capacitor,
     machine_bus,
 )
-from actuator_selection.core.motion import Motion, Segment, profile_of, trapezoid
+from actuator_selection.sizing.motion import Motion, Segment, profile_of, trapezoid
 
 TWO_PI = 2.0 * math.pi
 
@@ -230,9 +230,9 @@ def test_random_phasing_worst_case_bounds_every_alignment_and_is_reached() -> No
 
 def test_motor_of_a_catalogue_actuator() -> None:
     """R per phase becomes 2·R_ph line-to-line (star); K_INL at 80 °C where published."""
-    from actuator_selection.core.actuators import Actuator
-    from actuator_selection.core.bus import motor_of
-    from actuator_selection.core.errors import MissingDataError
+    from actuator_selection.catalogue.actuators import Actuator
+    from actuator_selection.errors import MissingDataError
+    from actuator_selection.sizing.bus import motor_of
 
     a = Actuator(
         model="X-1",

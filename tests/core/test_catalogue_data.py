@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
+from actuator_selection.catalogue.csvio import read
+from actuator_selection.catalogue.files import ACTUATORS
 from actuator_selection.config import SEED_DIR
-from actuator_selection.core.catalogue_files import ACTUATORS
-from actuator_selection.core.csvio import read
 
 DATA = Path(__file__).resolve().parents[2] / "docs" / "catalogue-data"
 PER_MODEL = ("stiffness.csv", "brake.csv")

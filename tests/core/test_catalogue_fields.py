@@ -1,5 +1,5 @@
 """The catalogue's values are declared once: the engine's record, the file's columns and
-the seed's derivations agree with the declarations (core/catalogue_fields.py)."""
+the seed's derivations agree with the declarations (catalogue/fields.py)."""
 
 from __future__ import annotations
 
@@ -10,8 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.catalogue_fields import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.csvio import read
+from actuator_selection.catalogue.fields import (
     ACTUATOR_FIELDS,
     DERIVED_ACTUATOR_ATTRIBUTES,
     ENGINE_FIELDS,
@@ -20,10 +21,9 @@ from actuator_selection.core.catalogue_fields import (
     Kind,
     Source,
 )
-from actuator_selection.core.catalogue_files import ACTUATORS
-from actuator_selection.core.checks import Operands
-from actuator_selection.core.csvio import read
-from actuator_selection.core.engine.catalogue import CATALOGUE_OPERANDS
+from actuator_selection.catalogue.files import ACTUATORS
+from actuator_selection.sizing.checks import Operands
+from actuator_selection.sizing.engine.catalogue import CATALOGUE_OPERANDS
 
 SEED = Path(__file__).resolve().parents[2] / "seed_data"
 

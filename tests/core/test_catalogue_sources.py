@@ -15,10 +15,10 @@ from pathlib import Path
 
 import pytest
 
+from actuator_selection.catalogue.citations import citation, mirror_addresses
+from actuator_selection.catalogue.csvio import parse, read
+from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS
 from actuator_selection.config import SEED_DIR
-from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS
-from actuator_selection.core.citations import citation, mirror_addresses
-from actuator_selection.core.csvio import parse, read
 
 CATALOGUE_DATA = Path(__file__).resolve().parents[2] / "docs" / "catalogue-data"
 

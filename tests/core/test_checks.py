@@ -1,4 +1,4 @@
-"""The rules (core/checks/): one definition of each check, run by the engine and the oracle."""
+"""The rules (sizing/checks/): one definition of each check, run by the engine and the oracle."""
 
 from __future__ import annotations
 
@@ -11,22 +11,15 @@ import pytest
 from tests import worked_example
 from tests.oracle.flowchart import ORDER, operands
 
-from actuator_selection.core import checks, selection
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import (
-    FLOAT_OPS,
-    RULES,
-    Check,
-    Operands,
-    Requirement,
-    Status,
-)
-from actuator_selection.core.checks.rule import _new_check
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.engine import ARRAY_OPS, CHECK_NAMES
-from actuator_selection.core.motion import CycleTorques
-from actuator_selection.core.selection import Application, evaluate
-from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing import checks, selection
+from actuator_selection.sizing.checks import FLOAT_OPS, RULES, Check, Operands, Requirement, Status
+from actuator_selection.sizing.checks.rule import _new_check
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.engine import ARRAY_OPS, CHECK_NAMES
+from actuator_selection.sizing.motion import CycleTorques
+from actuator_selection.sizing.selection import Application, evaluate
+from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 EXAMPLE = worked_example.APPLICATION
 FHA = worked_example.FHA_25C_50_L

@@ -8,7 +8,8 @@ from types import MappingProxyType
 
 import pytest
 
-from actuator_selection.core.compatibility import (
+from actuator_selection.errors import InvalidInputError, NotFoundError
+from actuator_selection.sizing.compatibility import (
     MARK_COLUMNS,
     ActuatorInterface,
     BusClass,
@@ -25,8 +26,7 @@ from actuator_selection.core.compatibility import (
     parse_support_level,
     product_family,
 )
-from actuator_selection.core.errors import InvalidInputError, NotFoundError
-from actuator_selection.core.thermal import TemperatureSensor
+from actuator_selection.sizing.thermal import TemperatureSensor
 
 SEED = Path(__file__).parents[2] / "seed_data"
 KTY = TemperatureSensor.KTY84_130

@@ -20,15 +20,15 @@ import pytest
 from tests import worked_example
 from tests.oracle.test_engine_parity import assert_matches_scalar
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.catalogue_files import ACTUATORS
-from actuator_selection.core.checks import Check, Status
-from actuator_selection.core.engine import evaluate_batch, select_batch
-from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.selection import Application, Verdict, evaluate, select
-from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.files import ACTUATORS
 from actuator_selection.db.seed import read_catalogue
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.checks import Check, Status
+from actuator_selection.sizing.engine import evaluate_batch, select_batch
+from actuator_selection.sizing.motion import Motion, Segment
+from actuator_selection.sizing.selection import Application, Verdict, evaluate, select
+from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
 SEED = Path(__file__).parents[2] / "seed_data"
 TAU = DEFAULT_THERMAL_TIME_CONSTANT_S

@@ -1,5 +1,5 @@
 """The catalogue CSV dialect: line endings, quoted line breaks, formula neutralisation, the
-text rule and the csv module's cell limit (``core/csvio.py``), without a database."""
+text rule and the csv module's cell limit (``catalogue/csvio.py``), without a database."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import doctest
 
 import pytest
 
-from actuator_selection.core import csvio
-from actuator_selection.core.csvio import (
+from actuator_selection.catalogue import csvio
+from actuator_selection.catalogue.csvio import (
     Column,
     CsvSpec,
     Rule,
@@ -17,7 +17,7 @@ from actuator_selection.core.csvio import (
     restored,
     write,
 )
-from actuator_selection.core.text import NUL_RULE, text_problem
+from actuator_selection.text import NUL_RULE, text_problem
 
 SPEC = CsvSpec(
     file="t.csv",

@@ -6,7 +6,8 @@ import math
 
 import pytest
 
-from actuator_selection.core.cycle import (
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.cycle import (
     Load,
     SpeedPattern,
     acceleration_torque_nm,
@@ -14,7 +15,6 @@ from actuator_selection.core.cycle import (
     duty_cycle_percent,
     mean_speed_rpm,
 )
-from actuator_selection.core.errors import InvalidInputError
 
 # Table 516.1 and Table 516.3 (FHA-25C-50-L).
 EXAMPLE = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0)

@@ -6,8 +6,8 @@ import math
 
 import pytest
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.compatibility import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.compatibility import (
     ActuatorInterface,
     BusClass,
     Controller,
@@ -17,10 +17,10 @@ from actuator_selection.core.compatibility import (
     SupportLevel,
     match_controllers,
 )
-from actuator_selection.core.drive import DriveOptions, drive_options, voltage_check
-from actuator_selection.core.electrical import DcBusClass
-from actuator_selection.core.selection import Status
-from actuator_selection.core.thermal import TemperatureSensor
+from actuator_selection.sizing.drive import DriveOptions, drive_options, voltage_check
+from actuator_selection.sizing.electrical import DcBusClass
+from actuator_selection.sizing.selection import Status
+from actuator_selection.sizing.thermal import TemperatureSensor
 
 TESTED = SupportLevel.TESTED
 BUSES = (

@@ -15,8 +15,8 @@ from collections.abc import Sequence
 import pytest
 from tests.oracle.flowchart import ORDER, operands
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.checks import (
     DRIVE_CURRENT,
     DRIVE_VOLTAGE,
     RULES,
@@ -25,10 +25,10 @@ from actuator_selection.core.checks import (
     Status,
     regenerative_energy_j,
 )
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.electrical import controller_output_voltage
-from actuator_selection.core.engine import evaluate_batch
-from actuator_selection.core.selection import Application, evaluate
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.electrical import controller_output_voltage
+from actuator_selection.sizing.engine import evaluate_batch
+from actuator_selection.sizing.selection import Application, evaluate
 
 TWO_PI_OVER_60 = 2 * math.pi / 60
 
@@ -142,7 +142,7 @@ def test_peak_current_against_a_hand_derived_value(
 def test_peak_current_inverts_the_torque_from_current_of_eq_522() -> None:
     """Eq. 522.3 forward (electrical.output_torque_from_current) at the current the check
     reports gives back the peak torque: the check is that equation solved for I."""
-    from actuator_selection.core.electrical import output_torque_from_current
+    from actuator_selection.sizing.electrical import output_torque_from_current
 
     application = app(100, 5.0, 0.2)
     c = check(CHA_25A_50, application, "drive_current")

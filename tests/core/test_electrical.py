@@ -9,8 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from actuator_selection.core.compatibility import BusClass
-from actuator_selection.core.electrical import (
+from actuator_selection.errors import InvalidInputError, MissingDataError, OutOfRangeError
+from actuator_selection.sizing.compatibility import BusClass
+from actuator_selection.sizing.electrical import (
     OUTPUT_TURNS_OPPOSITE_TO_MOTOR,
     DcBusClass,
     Modulation,
@@ -27,7 +28,6 @@ from actuator_selection.core.electrical import (
     output_torque_from_current,
     output_voltage_constant_v_per_rpm,
 )
-from actuator_selection.core.errors import InvalidInputError, MissingDataError, OutOfRangeError
 
 SEED = Path(__file__).parents[2] / "seed_data"
 

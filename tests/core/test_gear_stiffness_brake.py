@@ -16,20 +16,20 @@ from typing import Any
 import pytest
 from tests.oracle.flowchart import evaluate as oracle_evaluate
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.bearing import OutputLoad
-from actuator_selection.core.checks import RULES, Check, Status
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.mechanisms import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.bearing import OutputLoad
+from actuator_selection.sizing.checks import RULES, Check, Status
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.mechanisms import (
     Hoist,
     InclinedBallScrew,
     hoist_axis,
     inclined_ball_screw_axis,
 )
-from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.selection import Application, Verdict, evaluate
+from actuator_selection.sizing.motion import Motion, Segment
+from actuator_selection.sizing.selection import Application, Verdict, evaluate
 
 # The chapter's worked example (Table 516.1) on FHA-25C-50-L (Table 516.3).
 N, T1, T2, T3, TP, T_L, J_L, J_A, RATIO = 40.0, 0.1, 0.1, 0.1, 1.0, 5.0, 1.3, 0.86, 50.0

@@ -7,13 +7,13 @@ import dataclasses
 
 from tests import worked_example
 
-from actuator_selection.core.inverse import (
+from actuator_selection.sizing.inverse import (
     MAX_LOAD_INERTIA_KGM2,
     largest_load_inertia,
     shortest_accel,
     shortest_pause,
 )
-from actuator_selection.core.selection import Verdict, evaluate
+from actuator_selection.sizing.selection import Verdict, evaluate
 
 FHA = worked_example.FHA_25C_50_L
 EXAMPLE = worked_example.APPLICATION

@@ -6,8 +6,8 @@ import math
 
 import pytest
 
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.loads import (
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.loads import (
     BallScrew,
     RotaryTable,
     ball_screw_load,

@@ -12,16 +12,16 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.loads import (
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.loads import (
     STANDARD_GRAVITY_M_PER_S2,
     BallScrew,
     RotaryTable,
     ball_screw_load,
     rotary_table_load,
 )
-from actuator_selection.core.mechanisms import (
+from actuator_selection.sizing.mechanisms import (
     BeltDrive,
     Conveyor,
     Hoist,
@@ -46,7 +46,7 @@ def _rpm(omega_rad_per_s: float) -> float:
     return omega_rad_per_s * 60 / (2 * math.pi)
 
 
-# --- the chapter's mechanisms: exactly core/loads.py -------------------------------------
+# --- the chapter's mechanisms: exactly sizing/loads.py -------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -244,7 +244,7 @@ def test_transmissions_in_series_are_one_transmission() -> None:
 
 
 def _actuator_torque(axis: AxisLoad, *, direction: int) -> float:
-    """The torque at constant speed as core/axis.py's docstring defines it (no process force)."""
+    """The torque at constant speed as sizing/axis.py's docstring defines it (no process force)."""
     load = axis.gravity_torque_nm + direction * axis.friction_torque_nm
     return load / axis.efficiency if load * direction > 0 else load * axis.efficiency
 

@@ -6,8 +6,8 @@ from decimal import Decimal
 
 import pytest
 
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.money import (
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sales.money import (
     MAX_AMOUNT,
     QuoteLine,
     check_currency,

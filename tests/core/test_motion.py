@@ -13,10 +13,10 @@ import pytest
 from tests import worked_example
 from tests.oracle.test_engine_parity import random_motion_case
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.cycle import cycle_torques, duty_cycle_percent, mean_speed_rpm
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.motion import (
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.cycle import cycle_torques, duty_cycle_percent, mean_speed_rpm
+from actuator_selection.sizing.motion import (
     Motion,
     Segment,
     cycle_figures,
@@ -25,7 +25,7 @@ from actuator_selection.core.motion import (
     profile_of,
     trapezoid,
 )
-from actuator_selection.core.selection import Application
+from actuator_selection.sizing.selection import Application
 
 G = 9.81
 OMEGA = 2 * math.pi / 60  # rad/s per rpm

@@ -1,5 +1,5 @@
 """The rules' operands come from two homes (docs/decisions/0025): the registry's published
-values and the worked-out ones typed in ``core/checks/operands.py``; the rules are found
+values and the worked-out ones typed in ``sizing/checks/operands.py``; the rules are found
 in their family's file, in the answers' order."""
 
 from __future__ import annotations
@@ -8,10 +8,10 @@ import ast
 import inspect
 import pkgutil
 
-from actuator_selection.core.catalogue_fields import OPERAND_FIELDS
-from actuator_selection.core.checks import ALL_RULES, FAMILIES, RULES, Operands, rules
-from actuator_selection.core.checks.operands import PUBLISHED, Computed
-from actuator_selection.core.engine.catalogue import CATALOGUE_OPERANDS
+from actuator_selection.catalogue.fields import OPERAND_FIELDS
+from actuator_selection.sizing.checks import ALL_RULES, FAMILIES, RULES, Operands, rules
+from actuator_selection.sizing.checks.operands import PUBLISHED, Computed
+from actuator_selection.sizing.engine.catalogue import CATALOGUE_OPERANDS
 
 ANSWER_ORDER = (
     "max_speed",

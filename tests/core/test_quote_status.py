@@ -6,7 +6,7 @@ from datetime import date, timedelta
 
 import pytest
 
-from actuator_selection.core.quote_status import (
+from actuator_selection.sales.quote_status import (
     STORED_STATUSES,
     IllegalTransitionError,
     QuoteStatus,

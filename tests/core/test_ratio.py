@@ -8,13 +8,13 @@ import math
 
 import pytest
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.application import Application
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.engine import evaluate
-from actuator_selection.core.mechanisms import Transmission
-from actuator_selection.core.ratio import geared, inertia_matched_ratio, ratio_study
-from actuator_selection.core.selection import Verdict
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.engine import evaluate
+from actuator_selection.sizing.mechanisms import Transmission
+from actuator_selection.sizing.ratio import geared, inertia_matched_ratio, ratio_study
+from actuator_selection.sizing.selection import Verdict
 
 RPM = 2 * math.pi / 60
 

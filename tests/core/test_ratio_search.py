@@ -1,4 +1,4 @@
-"""The ratio study's search (``core/ratio.py``: the engine on pairs, the bisection in
+"""The ratio study's search (``sizing/ratio.py``: the engine on pairs, the bisection in
 rounds, beside the parabolic steps) against the study as first written
 (``tests/oracle/ratio_exhaustive.py``: one engine call per halving over the product of
 values × actuators): the same intervals, ends, binding checks and best values, on the
@@ -17,18 +17,18 @@ from tests.api.test_selection_binding import VERTICAL_SCREW
 from tests.core.test_continuous import catalogue
 from tests.oracle.ratio_exhaustive import exhaustive_ratio_study
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.application import Application
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.engine import FloatArray, catalogue_arrays, evaluate_batch
-from actuator_selection.core.engine.cases import Cases, cases_of, zone_table
-from actuator_selection.core.engine.evaluation import rules_of
-from actuator_selection.core.engine.pairs import evaluate_pairs
-from actuator_selection.core.mechanisms import Transmission
-from actuator_selection.core.ratio import RatioResult, geared, geared_cases, ratio_study
-from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.schemas.ratio import RatioStudyRequest
 from actuator_selection.services.ratio import varied
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.engine import FloatArray, catalogue_arrays, evaluate_batch
+from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_table
+from actuator_selection.sizing.engine.evaluation import rules_of
+from actuator_selection.sizing.engine.pairs import evaluate_pairs
+from actuator_selection.sizing.mechanisms import Transmission
+from actuator_selection.sizing.ratio import RatioResult, geared, geared_cases, ratio_study
+from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 
 @cache

@@ -1,4 +1,4 @@
-"""Samples to segments (core/sampled.py): exact where ramps fit, reversals through 0,
+"""Samples to segments (sizing/sampled.py): exact where ramps fit, reversals through 0,
 loads as segment means, noise capped at the segment bound with its deviation stated."""
 
 from __future__ import annotations
@@ -6,10 +6,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.sampled import fit_segments, sample_figures, speeds_from_positions
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.motion import Motion, Segment
+from actuator_selection.sizing.sampled import fit_segments, sample_figures, speeds_from_positions
 
 
 def test_a_reversal_becomes_two_segments_through_standstill() -> None:

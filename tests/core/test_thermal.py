@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from actuator_selection.core.errors import InvalidInputError, OutOfRangeError
-from actuator_selection.core.thermal import (
+from actuator_selection.errors import InvalidInputError, OutOfRangeError
+from actuator_selection.sizing.thermal import (
     DIN_44081,
     KtyCharacteristic,
     PtcZone,

@@ -4,7 +4,7 @@ for a cycle short against the winding's thermal time constant (check ``thermal_p
 Reference values come from the first-order model in closed form, not from the code
 under test: a cycle of constant-torque pieces has an exact periodic solution, and a step
 from a settled state crosses the limit after Fig. 520.1's overload duration
-τ_th·ln((k² − p²)/(k² − 1)) (core/thermal.py, public-catalogue-data.md "Overload
+τ_th·ln((k² − p²)/(k² − 1)) (sizing/thermal, public-catalogue-data.md "Overload
 duration").
 """
 
@@ -19,19 +19,16 @@ import numpy as np
 import pytest
 from tests.oracle.flowchart import operands
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.checks import Check, Operands, Status
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.engine import evaluate_batch
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.motion import Motion, Segment
-from actuator_selection.core.selection import Application, Verdict, evaluate
-from actuator_selection.core.thermal import (
-    DEFAULT_THERMAL_TIME_CONSTANT_S,
-    overload_duration_s,
-)
-from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.checks import Check, Operands, Status
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.engine import evaluate_batch
+from actuator_selection.sizing.motion import Motion, Segment
+from actuator_selection.sizing.selection import Application, Verdict, evaluate
+from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S, overload_duration_s
+from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 # CHA-25A-50 (CHA Engineering Data 1018854 12/2015, CHA-25A table, ratio 50): T_max 98 Nm,
 # n_max 112 rpm, J_out 0.97 kgm², T_0 55 Nm; rated motor speed 3500 rpm / 50 = 70 rpm.

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 
 def zone(*points: tuple[float, float]) -> ContinuousDutyZone:

@@ -33,7 +33,7 @@ from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import alembic_config
 from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app
+from actuator_selection.http.app import create_app
 from actuator_selection.schemas.quotes import StoredSelection
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache

@@ -18,7 +18,6 @@ import pytest
 from sqlalchemy import Engine, create_engine, func, select
 from sqlalchemy.orm import Session, sessionmaker
 
-from actuator_selection.core.sales import NewQuote, QuoteItem, QuoteRecord
 from actuator_selection.db.engine import make_engine, normalise_url
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.models import SelectionRow
@@ -28,6 +27,7 @@ from actuator_selection.db.sales import (
     IdempotencyKeyReusedError,
     QuoteRepository,
 )
+from actuator_selection.sales.records import NewQuote, QuoteItem, QuoteRecord
 
 THREADS = 20
 NOW = datetime(2026, 11, 21, 12, 0, tzinfo=UTC)

@@ -12,10 +12,10 @@ import pytest
 from sqlalchemy import Engine, func, select
 from sqlalchemy.orm import Session
 
+from actuator_selection.catalogue.csvio import CatalogueFileError, check_values, parse, read, write
+from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS, FAMILIES
 from actuator_selection.cli import main
 from actuator_selection.config import SEED_DIR
-from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS, FAMILIES
-from actuator_selection.core.csvio import CatalogueFileError, check_values, parse, read, write
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.models import (

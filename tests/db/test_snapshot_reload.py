@@ -9,13 +9,13 @@ from datetime import UTC, datetime
 import numpy as np
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.catalogue_files import ACTUATORS, CATALOGUE_SPECS, INTERFACES
-from actuator_selection.core.csvio import Record
-from actuator_selection.core.engine import catalogue_arrays
+from actuator_selection.catalogue.csvio import Record
+from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS, INTERFACES
 from actuator_selection.db.admin import CatalogueAdminRepository, ZonePointIn
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.db.seed import CatalogueFiles
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.sizing.engine import catalogue_arrays
 
 CHANGED = "FHA-25C-50-L"
 

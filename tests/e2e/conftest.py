@@ -41,7 +41,7 @@ from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.sales import ApiKeyRepository
 from actuator_selection.db.seed import load_seed
-from actuator_selection.main import create_app
+from actuator_selection.http.app import create_app
 
 CHROMIUM_ARGS = [
     "--no-sandbox",

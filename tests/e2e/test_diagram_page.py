@@ -1,6 +1,6 @@
 """The speed/torque diagram and the cycle chart on the page are the figures the documents
 print: the page draws the API's figures (``GET …/candidates/{model}/diagram`` and
-``…/cycle``, from ``api/figures.py``, the definitions the quote's HTML and the PDFs draw)
+``…/cycle``, from ``documents/figures.py``, the definitions the quote's HTML and the PDFs draw)
 and keeps plotly.js's interactivity."""
 
 from __future__ import annotations

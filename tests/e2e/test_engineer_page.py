@@ -307,7 +307,7 @@ def test_best_candidate_is_chosen_and_its_approximate_zone_drawn(page: Page) -> 
     assert max(zone["x"]) == pytest.approx(edge)
     # where k_T and K_INL are published, the edge falls with speed as the winding current
     # does: T_0 − k_T·K_INL(80 °C)·n at the speed limit (_continuous_limit of
-    # core/checks/rules/thermal.py)
+    # sizing/checks/rules/thermal.py)
     k_t = catalogue["torque_constant_nm_per_a"]
     k_inl = catalogue["no_load_current_constant_80c_a_per_rpm"]
     falls = catalogue["stall_torque_nm"] and k_t and k_inl
@@ -913,7 +913,7 @@ def test_no_request_leaves_the_origin(page: Page, base_url: str, traffic: Traffi
 
 def test_figures_module_words_the_api_diagram_and_says_no_data(page: Page) -> None:
     """figures.js is pure: the diagram is the API's (its zone cases are tested with
-    api/figures.py), fitted to a narrow chart and captioned from its ``layout.meta``."""
+    documents/figures.py), fitted to a narrow chart and captioned from its ``layout.meta``."""
     page.goto("/")
     result = cast(
         dict[str, Any],

@@ -25,7 +25,7 @@ from babel.messages.pofile import read_po
 from playwright.sync_api import Browser, Locator, Page, expect
 from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST
 
-from actuator_selection.api.messages import catalog_path
+from actuator_selection.i18n.localize import catalog_path
 
 from .conftest import SalesSite
 from .test_engineer_page import SELECTIONS_URL, fill_worked_example, wait_for_charts

@@ -1,6 +1,6 @@
 """The ratio study on the engineer's page (issue 31 part 1): asked for the request on the
 form, its table of intervals shown and its chart drawn as the API defines it (the
-answer's ``figure``, ``api/figures.py: ratio_figure``): the same traces, points and names."""
+answer's ``figure``, ``documents/figures.py: ratio_figure``): the same traces, points and names."""
 
 from __future__ import annotations
 

@@ -19,7 +19,7 @@ import pytest
 from playwright.sync_api import Browser, BrowserContext, ConsoleMessage, Page, expect
 from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST, WORKED_EXAMPLE
 
-from actuator_selection.api.security_headers import PAGE_CSP
+from actuator_selection.http.security_headers import PAGE_CSP
 
 from .conftest import DESKTOP, SalesSite
 

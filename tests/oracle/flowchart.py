@@ -1,10 +1,10 @@
 """The flowchart on plain floats, one actuator at a time: the test oracle of the engine.
 
-The service runs one engine (:mod:`actuator_selection.core.engine`), on arrays, for one
+The service runs one engine (:mod:`actuator_selection.sizing.engine`), on arrays, for one
 actuator and for 64,000. This is the flowchart written out again on Python floats, as the
 chapter reads (p. 514–517): for each actuator the torques of its cycle
-(:meth:`~actuator_selection.core.motion.Profile.torques`), the operands by name, and each
-rule's :meth:`~actuator_selection.core.checks.Rule.check`. The parity tests compare the
+(:meth:`~actuator_selection.sizing.motion.Profile.torques`), the operands by name, and each
+rule's :meth:`~actuator_selection.sizing.checks.Rule.check`. The parity tests compare the
 engine with it cell by cell, with ``==``.
 """
 
@@ -13,20 +13,15 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Sequence
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.application import Application
-from actuator_selection.core.bearing import life_exponent, swing_deg
-from actuator_selection.core.candidates import (
-    Candidate,
-    Selection,
-    Verdict,
-    ranking_key,
-)
-from actuator_selection.core.catalogue_fields import OPERAND_FIELDS
-from actuator_selection.core.checks import Check, Operands, Rule, Status
-from actuator_selection.core.electrical import no_load_torque_slope_nm_per_rpm
-from actuator_selection.core.motion import CycleTorques, Profile
-from actuator_selection.core.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.fields import OPERAND_FIELDS
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.bearing import life_exponent, swing_deg
+from actuator_selection.sizing.candidates import Candidate, Selection, Verdict, ranking_key
+from actuator_selection.sizing.checks import Check, Operands, Rule, Status
+from actuator_selection.sizing.electrical import no_load_torque_slope_nm_per_rpm
+from actuator_selection.sizing.motion import CycleTorques, Profile
+from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
 
 
 def _verdict(checks: Iterable[Check]) -> Verdict:
@@ -191,8 +186,8 @@ this order); a catalogue value declared since is read as published, from the reg
 
 
 Heating = tuple[tuple[tuple[float, ...], float], float]
-"""A cycle's heating gains (:meth:`~actuator_selection.core.motion.Profile.heating_gains`)
-and its n_th (:meth:`~actuator_selection.core.motion.Profile.thermal_speed_rpm`) for one
+"""A cycle's heating gains (:meth:`~actuator_selection.sizing.motion.Profile.heating_gains`)
+and its n_th (:meth:`~actuator_selection.sizing.motion.Profile.thermal_speed_rpm`) for one
 τ_th: the same for every actuator without a published τ_th, so computed once per τ_th."""
 
 

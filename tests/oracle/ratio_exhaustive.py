@@ -1,7 +1,7 @@
 """The ratio study as it was first written: the grid, then every bracket bisected one
 engine call at a time over the product of its values × actuators (``_Cells``), then
 the parabolic steps one call each. Kept as the oracle of the fast search in
-:mod:`actuator_selection.core.ratio`, which must find the same intervals and best values."""
+:mod:`actuator_selection.sizing.ratio`, which must find the same intervals and best values."""
 
 from __future__ import annotations
 
@@ -10,10 +10,11 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.application import Application
-from actuator_selection.core.checks import Rule
-from actuator_selection.core.engine import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.checks import Rule
+from actuator_selection.sizing.engine import (
     VERDICT_BY_CODE,
     BatchEvaluation,
     CatalogueArrays,
@@ -21,8 +22,7 @@ from actuator_selection.core.engine import (
     catalogue_arrays,
     evaluate_batch,
 )
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.ratio import (
+from actuator_selection.sizing.ratio import (
     _CHECK_FAIL,
     _FAIL,
     BISECTION_STEPS,

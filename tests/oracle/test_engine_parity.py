@@ -1,7 +1,7 @@
 """The vectorised flowchart equals the scalar one exactly: numbers, statuses, verdicts, ranking.
 
 Every comparison is ``==``: the batch path promises the same IEEE results as
-``core/cycle.py`` and ``core/selection.py``, not results within a tolerance.
+``sizing/cycle.py`` and ``sizing/selection.py``, not results within a tolerance.
 """
 
 from __future__ import annotations
@@ -18,13 +18,14 @@ from hypothesis import strategies as st
 from tests import worked_example
 from tests.oracle.flowchart import evaluate, select
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.bearing import OutputLoad
-from actuator_selection.core.check_messages import jsonable_params, renderer
-from actuator_selection.core.checks import RULES, Requirement, Rule, published
-from actuator_selection.core.cycle import Load, SpeedPattern
-from actuator_selection.core.engine import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.i18n.check_messages import jsonable_params, renderer
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.bearing import OutputLoad
+from actuator_selection.sizing.checks import RULES, Requirement, Rule, published
+from actuator_selection.sizing.cycle import Load, SpeedPattern
+from actuator_selection.sizing.engine import (
     CHECK_NAMES,
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -34,10 +35,9 @@ from actuator_selection.core.engine import (
     rank_batch,
     select_batch,
 )
-from actuator_selection.core.engine.cases import cases_of
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.motion import Motion, Segment, piece_arrays
-from actuator_selection.core.selection import (
+from actuator_selection.sizing.engine.cases import cases_of
+from actuator_selection.sizing.motion import Motion, Segment, piece_arrays
+from actuator_selection.sizing.selection import (
     Application,
     Candidate,
     Selection,
@@ -45,7 +45,7 @@ from actuator_selection.core.selection import (
     Verdict,
     ranking_key,
 )
-from actuator_selection.core.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 EXAMPLE = worked_example.APPLICATION
 FHA = worked_example.FHA_25C_50_L

@@ -19,7 +19,7 @@ import pytest
 import yaml
 from tests.server.conftest import StartServer, free_port
 
-from actuator_selection.services.pdf import UNICODE_FONTS
+from actuator_selection.documents.pdf import UNICODE_FONTS
 
 ROOT = Path(__file__).resolve().parents[2]
 DOCKERFILE = (ROOT / "Dockerfile").read_text()

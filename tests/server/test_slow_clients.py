@@ -1,6 +1,6 @@
 """Clients that send their request body slowly hold no place of admission control.
 
-A body is received whole before the request is admitted (``api.admission``), within
+A body is received whole before the request is admitted (``http.admission``), within
 ``BODY_TIMEOUT_S``; a client that takes longer is answered 408 and its connection closed.
 """
 

@@ -10,9 +10,9 @@ from fastapi.exceptions import RequestValidationError
 from pydantic import ValidationError
 from starlette.concurrency import run_in_threadpool
 
-from actuator_selection.api.deps import SessionDep, catalogue_snapshot, reads_only
-from actuator_selection.api.messages import localizer
 from actuator_selection.api.selections import create_selection
+from actuator_selection.http.deps import SessionDep, catalogue_snapshot, reads_only
+from actuator_selection.i18n.localize import localizer
 from actuator_selection.schemas.aas import AasRecordQuery
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.aas import (

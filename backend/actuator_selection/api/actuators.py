@@ -7,17 +7,13 @@ from typing import Annotated
 
 from fastapi import APIRouter, Query
 
-from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import (
-    RequestFieldError,
-    ResourceNotFoundError,
-    service_error,
-)
 from actuator_selection.db.repositories import (
     ActuatorFilter,
     CatalogueRepository,
     CatalogueVersionRepository,
 )
+from actuator_selection.http.deps import SessionDep
+from actuator_selection.http.errors import RequestFieldError, ResourceNotFoundError, service_error
 from actuator_selection.schemas.actuators import ActuatorOut, ActuatorPageOut, FamilyOut
 
 router = APIRouter(tags=["catalogue"])

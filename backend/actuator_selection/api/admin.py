@@ -2,7 +2,7 @@
 
 The use cases live in ``services/catalogue_admin.py``; each endpoint calls one.
 
-Writes are validated by the seed files' rules (``core/catalogue_files.py``), so
+Writes are validated by the seed files' rules (``catalogue/files.py``), so
 an actuator or controller the API accepts is one the seed loader accepts and
 vice versa. Every change raises the catalogue version. Retiring is a soft
 delete: a retired actuator leaves listings and selections and stays for the
@@ -30,7 +30,6 @@ from urllib.parse import quote
 from fastapi import APIRouter, Body, Depends, Path, Query, Response
 
 from actuator_selection.api.auth import AdminDep
-from actuator_selection.api.deps import SessionDep
 from actuator_selection.api.uploads import (
     SpooledUpload,
     file_errors,
@@ -40,19 +39,15 @@ from actuator_selection.api.uploads import (
     unsupported,
     unzip_csv,
 )
-from actuator_selection.core.catalogue_files import (
-    ACTUATORS,
-    CATALOGUE_SPECS,
-    CONTROLLERS,
-    INTERFACES,
-)
-from actuator_selection.core.csvio import (
+from actuator_selection.catalogue.csvio import (
     WHOLE_NUMBER_MAX,
     CatalogueFileError,
     Problem,
     TooManyRowsError,
 )
+from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS, CONTROLLERS, INTERFACES
 from actuator_selection.db.seed import CatalogueFiles, catalogue_from_json, parse_catalogue
+from actuator_selection.http.deps import SessionDep
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, write_json_schema
 from actuator_selection.schemas.controllers import ControllerOut, InterfaceOut

@@ -21,12 +21,12 @@ from typing import Annotated, Literal, cast
 from fastapi import APIRouter, Depends, Request
 from starlette.concurrency import run_in_threadpool
 
-from actuator_selection.api.deps import read_transaction
-from actuator_selection.api.errors import ForbiddenError, UnauthorizedError, service_error
-from actuator_selection.api.throttle import KeyFailureThrottle
 from actuator_selection.config import Settings, get_settings
-from actuator_selection.core.sales import ApiKeyRecord
 from actuator_selection.db.sales import ApiKeyRepository
+from actuator_selection.http.deps import read_transaction
+from actuator_selection.http.errors import ForbiddenError, UnauthorizedError, service_error
+from actuator_selection.http.throttle import KeyFailureThrottle
+from actuator_selection.sales.records import ApiKeyRecord
 from actuator_selection.schemas.auth import PrincipalOut
 
 router = APIRouter(tags=["auth"])
@@ -49,7 +49,7 @@ def request_settings(request: Request) -> Settings:
 
 async def get_principal(request: Request) -> ApiKeyRecord | None:
     """The caller's API key; None without an Authorization header; 401 for a bad key,
-    429 after too many from the client's address (``api/throttle.py``).
+    429 after too many from the client's address (``http/throttle.py``).
 
     Asynchronous, so that a request without a key costs no trip through the thread pool;
     a key is looked up in a short read transaction of its own, in the pool.
@@ -105,7 +105,7 @@ def authorize(principal: ApiKeyRecord | None, *roles: str) -> ApiKeyRecord:
 
 
 ROLES_ATTRIBUTE = "__api_key_roles__"
-"""Set on each :func:`require_role` dependency: the roles it admits (read by ``api/openapi.py``)."""
+"""Set on each :func:`require_role` dependency: the roles it admits (read by ``http/openapi.py``)."""
 
 
 def require_role(*roles: str) -> Callable[..., Awaitable[ApiKeyRecord]]:

@@ -17,25 +17,20 @@ from fastapi import APIRouter, Request, Response
 from fastapi.responses import StreamingResponse
 from fastapi.routing import APIRoute
 
-from actuator_selection.api.deps import (
-    SessionDep,
-    catalogue_snapshot,
-    reads_only,
-    write_transaction,
-)
-from actuator_selection.api.errors import (
-    RequestFieldError,
-    domain_entry,
-    language_of,
-)
-from actuator_selection.api.messages import localizer
 from actuator_selection.api.selections import (
     refuse_unknown_models,
     selection_location,
     unknown_models,
 )
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.selection import Application
+from actuator_selection.errors import DomainError
+from actuator_selection.http.deps import (
+    SessionDep,
+    catalogue_snapshot,
+    reads_only,
+    write_transaction,
+)
+from actuator_selection.http.errors import RequestFieldError, domain_entry, language_of
+from actuator_selection.i18n.localize import localizer
 from actuator_selection.schemas.batch import BatchSelectionOut, BatchSelectionRequest
 from actuator_selection.schemas.batch_columns import BatchColumnsOut, BatchColumnsRequest
 from actuator_selection.schemas.selections import RANKING_RULE
@@ -46,6 +41,7 @@ from actuator_selection.services.batch import (
     size_columns,
 )
 from actuator_selection.services.profiles import with_profiles
+from actuator_selection.sizing.selection import Application
 
 
 class _BulkRequest(Request):

@@ -6,14 +6,24 @@ from typing import Annotated, Literal
 
 from fastapi import APIRouter, Path, Query
 
-from actuator_selection.api.deps import SessionDep
-from actuator_selection.api.errors import (
+from actuator_selection.catalogue.csvio import WHOLE_NUMBER_MAX
+from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.errors import NotFoundError
+from actuator_selection.http.deps import SessionDep
+from actuator_selection.http.errors import (
     RequestFieldError,
     ResourceNotFoundError,
     field_error,
     service_error,
 )
-from actuator_selection.core.compatibility import (
+from actuator_selection.schemas.controllers import (
+    ActuatorControllersOut,
+    ControllerMatchOut,
+    ControllerOut,
+    InterfaceOut,
+)
+from actuator_selection.sizing.compatibility import (
     BusClass,
     FeedbackSystem,
     Option,
@@ -21,17 +31,7 @@ from actuator_selection.core.compatibility import (
     match_controllers,
     product_family,
 )
-from actuator_selection.core.csvio import WHOLE_NUMBER_MAX
-from actuator_selection.core.errors import NotFoundError
-from actuator_selection.core.thermal import TemperatureSensor
-from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.repositories import CatalogueRepository
-from actuator_selection.schemas.controllers import (
-    ActuatorControllersOut,
-    ControllerMatchOut,
-    ControllerOut,
-    InterfaceOut,
-)
+from actuator_selection.sizing.thermal import TemperatureSensor
 
 router = APIRouter(tags=["controllers"])
 

@@ -13,7 +13,7 @@ from typing import Any
 from fastapi import APIRouter
 from sqlalchemy import text
 
-from actuator_selection.api.deps import SessionDep
+from actuator_selection.http.deps import SessionDep
 from actuator_selection.schemas.health import HealthOut, ReadyOut
 
 router = APIRouter(tags=["health"])

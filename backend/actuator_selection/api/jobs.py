@@ -18,12 +18,12 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse, StreamingResponse
 from pydantic import ValidationError
 
-from actuator_selection.api.deps import SessionDep, read_transaction
-from actuator_selection.api.errors import RequestFieldError, domain_entry, language_of
-from actuator_selection.api.media_types import unsupported_media_type
 from actuator_selection.api.selections import unknown_models
-from actuator_selection.core.errors import DomainError
 from actuator_selection.db.engine import begin_write
+from actuator_selection.errors import DomainError
+from actuator_selection.http.deps import SessionDep, read_transaction
+from actuator_selection.http.errors import RequestFieldError, domain_entry, language_of
+from actuator_selection.http.media_types import unsupported_media_type
 from actuator_selection.schemas.batch import MAX_TOP, BatchCaseIn
 from actuator_selection.schemas.jobs import JOB_MEDIA_TYPES, NDJSON, BatchJobOut
 from actuator_selection.services import jobs

@@ -9,15 +9,15 @@ from fastapi import APIRouter, Path, Query, Request
 from fastapi.responses import JSONResponse
 from starlette.concurrency import run_in_threadpool
 
-from actuator_selection.api.deps import (
+from actuator_selection.http.deps import (
     catalogue_snapshot,
     read_transaction,
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.errors import language_of
-from actuator_selection.api.media_types import unsupported_media_type
-from actuator_selection.api.messages import localized
+from actuator_selection.http.errors import language_of
+from actuator_selection.http.media_types import unsupported_media_type
+from actuator_selection.i18n.localize import localized
 from actuator_selection.schemas.profiles import ProfileOut, ProfileQuery
 from actuator_selection.services.errors import not_found
 from actuator_selection.services.profile_csv import MAX_PROFILE_BYTES, ColumnUnits

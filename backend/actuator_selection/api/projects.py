@@ -10,9 +10,9 @@ from typing import Annotated
 
 from fastapi import APIRouter, Path, Query, Request, Response
 
-from actuator_selection.api.deps import SessionDep, read_transaction, reads_only, write_transaction
-from actuator_selection.api.errors import RequestFieldError, service_error
 from actuator_selection.api.selections import unknown_models
+from actuator_selection.http.deps import SessionDep, read_transaction, reads_only, write_transaction
+from actuator_selection.http.errors import RequestFieldError, service_error
 from actuator_selection.schemas.projects import ProjectOut, ProjectPageOut, ProjectRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.projects import (

@@ -16,24 +16,19 @@ from fastapi.responses import HTMLResponse
 from sqlalchemy.orm import Session
 
 from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
-from actuator_selection.api.deps import (
-    DocumentLanguageDep,
-    SessionDep,
-    SettingsDep,
-    reads_only,
-)
-from actuator_selection.api.errors import RequestFieldError, UnauthorizedError, field_error
-from actuator_selection.api.quote_document import (
+from actuator_selection.config import PLACEHOLDER_SELLER_NAME, Settings
+from actuator_selection.db.sales import ApiKeyRepository, QuoteSearch
+from actuator_selection.documents.quote_document import (
     DOCUMENT_SCRIPT,
     DOCUMENT_SCRIPT_PATH,
     quote_document_context,
     render_quote_document,
 )
-from actuator_selection.api.quote_document_text import Language
-from actuator_selection.config import PLACEHOLDER_SELLER_NAME, Settings
-from actuator_selection.core.quote_status import QuoteStatus
-from actuator_selection.core.sales import ApiKeyRecord
-from actuator_selection.db.sales import ApiKeyRepository, QuoteSearch
+from actuator_selection.documents.quote_document_text import Language
+from actuator_selection.http.deps import DocumentLanguageDep, SessionDep, SettingsDep, reads_only
+from actuator_selection.http.errors import RequestFieldError, UnauthorizedError, field_error
+from actuator_selection.sales.quote_status import QuoteStatus
+from actuator_selection.sales.records import ApiKeyRecord
 from actuator_selection.schemas.documents import DocumentLinkOut
 from actuator_selection.schemas.quotes import QuoteCreate, QuoteListOut, QuoteOut, QuoteStatusIn
 from actuator_selection.services import quotes
@@ -339,7 +334,7 @@ def quote_document_pdf(
     ] = None,
 ) -> Response:
     """The quote document as a PDF download (A4), in German or English."""
-    from actuator_selection.services.quote_pdf import render_quote_pdf  # fpdf2: on first use
+    from actuator_selection.documents.quote_pdf import render_quote_pdf  # fpdf2: on first use
 
     _document_reader(
         principal, access, number=number, session=session, now=clock.now(), secret=secret

@@ -13,7 +13,17 @@ from fastapi import APIRouter, Path, Query, Request, Response
 from fastapi.responses import StreamingResponse
 
 from actuator_selection.api.actuators import Cursor
-from actuator_selection.api.deps import (
+from actuator_selection.documents.figures import cycle_figure, diagram_figure, ratio_figure
+from actuator_selection.documents.quote_document import diagram_points, speed_torque_figure
+from actuator_selection.documents.quote_document_text import DocumentText
+from actuator_selection.documents.reports import (
+    COLUMNS,
+    candidate_diagram,
+    report_csv,
+    selection_report,
+)
+from actuator_selection.errors import ConflictError, NotFoundError
+from actuator_selection.http.deps import (
     DocumentLanguageDep,
     SessionDep,
     catalogue_snapshot,
@@ -21,12 +31,8 @@ from actuator_selection.api.deps import (
     reads_only,
     write_transaction,
 )
-from actuator_selection.api.errors import RequestFieldError, language_of, service_error
-from actuator_selection.api.figures import cycle_figure, diagram_figure, ratio_figure
-from actuator_selection.api.messages import localizer
-from actuator_selection.api.quote_document import diagram_points, speed_torque_figure
-from actuator_selection.api.quote_document_text import DocumentText
-from actuator_selection.core.errors import ConflictError, NotFoundError
+from actuator_selection.http.errors import RequestFieldError, language_of, service_error
+from actuator_selection.i18n.localize import localizer
 from actuator_selection.schemas.jobs import NDJSON
 from actuator_selection.schemas.limits import LimitsOut, LimitsRequest
 from actuator_selection.schemas.ratio import RatioStudyOut, RatioStudyRequest
@@ -43,12 +49,6 @@ from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.presenters.selection import DEFAULT_TOP, TOP_MAX, dump_json
 from actuator_selection.services.profiles import with_profiles
 from actuator_selection.services.ratio import study
-from actuator_selection.services.reports import (
-    COLUMNS,
-    candidate_diagram,
-    report_csv,
-    selection_report,
-)
 from actuator_selection.services.selections import (
     candidate_detail,
     read_ranking,
@@ -190,7 +190,9 @@ def solve_ratio_study(
     language: DocumentLanguageDep,
     figure: Annotated[
         bool,
-        Query(description="with the chart (`figure`, `api/figures.py`), in `lang`'s language"),
+        Query(
+            description="with the chart (`figure`, `documents/figures.py`), in `lang`'s language"
+        ),
     ] = False,
 ) -> RatioStudyOut:
     """For every actuator, the interval(s) of a free transmission value (an external ratio,
@@ -318,7 +320,7 @@ def get_candidate_diagram(
 ) -> dict[str, Any]:
     """The candidate's speed/torque diagram (Fig. 517.1) as a plotly figure (`data` and
     `layout`, JSON), in the document's language: the figure the quote and the report
-    print, from the same definition (`api/figures.py`). The page draws it with plotly.js."""
+    print, from the same definition (`documents/figures.py`). The page draws it with plotly.js."""
     found = candidate_diagram(session, selection_id, model, catalogue=catalogue)
     response.headers["Content-Language"] = language
     response.headers["Vary"] = "Accept-Language"
@@ -352,7 +354,7 @@ def get_candidate_cycle(
 ) -> dict[str, Any]:
     """The candidate's cycle chart (Fig. 516.2: speed and torque over one period) as a
     plotly figure (`data` and `layout`, JSON), in the document's language: the figure the
-    report prints, from the same definition (`api/figures.py`). The page draws it with
+    report prints, from the same definition (`documents/figures.py`). The page draws it with
     plotly.js."""
     found = candidate_diagram(session, selection_id, model, catalogue=False)
     along = (
@@ -451,7 +453,7 @@ def get_selection_report_pdf(
     """The selection's engineering report as PDF: a first page with the inputs, the cycle and
     speed/torque diagrams, the first-ranked candidate's checks and the top five; then the
     checks of the ``candidates`` asked for."""
-    from actuator_selection.services.report_pdf import render_pdf  # fpdf2: on first use
+    from actuator_selection.documents.report_pdf import render_pdf  # fpdf2: on first use
 
     report = selection_report(session, selection_id, candidates)
     t = DocumentText(language)

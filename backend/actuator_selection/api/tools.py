@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from actuator_selection.api.deps import SessionDep, reads_only
+from actuator_selection.http.deps import SessionDep, reads_only
 from actuator_selection.schemas.tools import (
     ControllerVoltageOut,
     ControllerVoltageRequest,

@@ -22,19 +22,19 @@ from typing import IO
 
 from fastapi import Request
 
-from actuator_selection.api.errors import (
-    PayloadTooLargeError,
-    RequestFieldError,
-    UnsupportedMediaTypeError,
-)
-from actuator_selection.api.media_types import unsupported_media_type
-from actuator_selection.core.catalogue_files import CATALOGUE_SPECS
-from actuator_selection.core.csvio import (
+from actuator_selection.catalogue.csvio import (
     MAX_CELL_CHARS,
     CatalogueFileError,
     Problem,
     TooManyRowsError,
 )
+from actuator_selection.catalogue.files import CATALOGUE_SPECS
+from actuator_selection.http.errors import (
+    PayloadTooLargeError,
+    RequestFieldError,
+    UnsupportedMediaTypeError,
+)
+from actuator_selection.http.media_types import unsupported_media_type
 from actuator_selection.services.errors import problem_entry
 
 MAX_UPLOAD_BYTES = 20 * 1024 * 1024
@@ -98,7 +98,7 @@ SPOOL_IN_MEMORY_BYTES = 1 << 20
 MAX_UNPACKED_BYTES = 1 << 30
 """Most bytes a ZIP member may unpack to: a bound for the disk and the clock only (a
 catalogue of 64,000 actuators unpacks to about 20–90 MB); the rules an import states are
-rows per file (:data:`~actuator_selection.core.csvio.MAX_ROWS`) and characters per cell."""
+rows per file (:data:`~actuator_selection.catalogue.csvio.MAX_ROWS`) and characters per cell."""
 
 
 async def spooled_upload(request: Request) -> AsyncIterator[SpooledUpload]:

@@ -1,8 +1,8 @@
 """Catalogue writes for administrators: actuators, their zones, controllers, import/export.
 
 Every write is validated by the rules of the seed files (the ``CsvSpec``s of
-``core/catalogue_files.py`` through
-:func:`~actuator_selection.core.csvio.check_values`), so the API and the seed
+``catalogue/files.py`` through
+:func:`~actuator_selection.catalogue.csvio.check_values`), so the API and the seed
 loader cannot disagree on what a valid actuator or controller is. Every change
 raises the catalogue version; repositories flush, the request commits.
 """
@@ -17,7 +17,15 @@ from typing import Any
 from sqlalchemy import func, select
 from sqlalchemy.orm import Session, selectinload
 
-from actuator_selection.core.catalogue_files import (
+from actuator_selection.catalogue.changes import CatalogueChanges
+from actuator_selection.catalogue.csvio import (
+    CatalogueFileError,
+    CsvSpec,
+    Problem,
+    Record,
+    check_values,
+)
+from actuator_selection.catalogue.files import (
     ACTUATORS,
     BUS_CLASSES,
     CONTROLLERS,
@@ -27,9 +35,6 @@ from actuator_selection.core.catalogue_files import (
     SENSOR_FITTINGS,
     ZONE_POINTS,
 )
-from actuator_selection.core.changes import CatalogueChanges
-from actuator_selection.core.csvio import CatalogueFileError, CsvSpec, Problem, Record, check_values
-from actuator_selection.core.thermal import TemperatureSensor
 from actuator_selection.db.changes import set_values
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -44,6 +49,7 @@ from actuator_selection.db.models import (
 from actuator_selection.db.repositories import CatalogueVersionRepository, mark_changed
 from actuator_selection.db.seed import CatalogueFiles, apply_catalogue, zone_problems
 from actuator_selection.db.seed_controllers import controller_name_problems
+from actuator_selection.sizing.thermal import TemperatureSensor
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

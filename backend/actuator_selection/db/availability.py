@@ -2,7 +2,7 @@
 
 A database that cannot be reached (PostgreSQL refusing or dropping connections, a
 SQLite file whose folder is gone) is an outage of a dependency, not a fault of the
-request: the API answers 503 with ``Retry-After`` (``api.errors``), and the service
+request: the API answers 503 with ``Retry-After`` (``http.errors``), and the service
 recovers by itself when the database is back, since every request tries again (a
 pooled PostgreSQL connection is pinged before use; a pooled SQLite connection is
 checked against the file at its path, ``db.engine``).

@@ -2,7 +2,7 @@
 
 Shared by every catalogue file (``db/seed.py``, ``db/seed_controllers.py``), so
 seeding, importing and the admin API count and apply changes the same way; the
-counts are :class:`~actuator_selection.core.changes.FileChanges`.
+counts are :class:`~actuator_selection.catalogue.changes.FileChanges`.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from typing import Any
 from sqlalchemy import bindparam, insert, select, update
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.changes import FileChanges
+from actuator_selection.catalogue.changes import FileChanges
 
 
 def set_values(row: Any, values: Mapping[str, Any]) -> bool:

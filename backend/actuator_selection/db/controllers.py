@@ -7,23 +7,7 @@ from typing import TypeVar
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.catalogue import ControllerRecord, InterfaceRecord
-from actuator_selection.core.compatibility import (
-    MARK_COLUMNS,
-    ActuatorInterface,
-    BusClass,
-    FeedbackSystem,
-    controller_from_record,
-    product_family,
-)
-from actuator_selection.core.electrical import DcBusClass
-from actuator_selection.core.errors import NotFoundError
-from actuator_selection.core.thermal import (
-    KtyCharacteristic,
-    SensorFitting,
-    TemperatureLimits,
-    TemperatureSensor,
-)
+from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
     ActuatorInterfaceRow,
@@ -32,6 +16,22 @@ from actuator_selection.db.models import (
     DcBusClassRow,
     SensorFittingRow,
     SensorPointRow,
+)
+from actuator_selection.errors import NotFoundError
+from actuator_selection.sizing.compatibility import (
+    MARK_COLUMNS,
+    ActuatorInterface,
+    BusClass,
+    FeedbackSystem,
+    controller_from_record,
+    product_family,
+)
+from actuator_selection.sizing.electrical import DcBusClass
+from actuator_selection.sizing.thermal import (
+    KtyCharacteristic,
+    SensorFitting,
+    TemperatureLimits,
+    TemperatureSensor,
 )
 
 _Option = TypeVar("_Option", BusClass, TemperatureSensor, FeedbackSystem)

@@ -11,7 +11,7 @@ Both are set up for concurrent clients (the README's "Durability and concurrency
   between, whatever the timeout.
 - **PostgreSQL** gets a statement timeout, a lock timeout and an idle-in-transaction
   timeout on every connection, and a pool as large as the requests the service
-  admits at once (``api.admission``), so no thread ever waits long for a connection.
+  admits at once (``http.admission``), so no thread ever waits long for a connection.
 """
 
 from __future__ import annotations

@@ -27,8 +27,8 @@ from sqlalchemy.dialects.sqlite import insert as sqlite_insert
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, selectinload
 
-from actuator_selection.core.changes import FileChanges
-from actuator_selection.core.csvio import (
+from actuator_selection.catalogue.changes import FileChanges
+from actuator_selection.catalogue.csvio import (
     CatalogueFileError,
     Column,
     CsvSpec,
@@ -41,16 +41,6 @@ from actuator_selection.core.csvio import (
     one_of,
     parse,
 )
-from actuator_selection.core.quote_status import QuoteStatus
-from actuator_selection.core.quote_terms import SellerParty, TaxTotals
-from actuator_selection.core.sales import (
-    ApiKeyRecord,
-    NewQuote,
-    PriceListRecord,
-    PriceRecord,
-    QuoteItem,
-    QuoteRecord,
-)
 from actuator_selection.db.models import ActuatorRow
 from actuator_selection.db.models.sales import (
     ApiKeyRow,
@@ -59,6 +49,16 @@ from actuator_selection.db.models.sales import (
     QuoteCounterRow,
     QuoteItemRow,
     QuoteRow,
+)
+from actuator_selection.sales.quote_status import QuoteStatus
+from actuator_selection.sales.quote_terms import SellerParty, TaxTotals
+from actuator_selection.sales.records import (
+    ApiKeyRecord,
+    NewQuote,
+    PriceListRecord,
+    PriceRecord,
+    QuoteItem,
+    QuoteRecord,
 )
 
 # --- API keys -------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 """Loading the whole catalogue idempotently and atomically.
 
 The catalogue is the files of
-:data:`~actuator_selection.core.catalogue_files.CATALOGUE_SPECS`: families, actuators and
+:data:`~actuator_selection.catalogue.files.CATALOGUE_SPECS`: families, actuators and
 their zones (this module), and Table 521.1's controllers, sensor data, bus
 classes and actuator interfaces (:mod:`actuator_selection.db.seed_controllers`).
 Every file is validated before anything is written; one bad cell loads nothing
@@ -11,7 +11,7 @@ controller row, ...) and updated only where a value differs. The catalogue
 version rises once per load that changed anything.
 
 Two modes share one code path and one rulebook (the ``CsvSpec`` of each file,
-:mod:`actuator_selection.core.catalogue_files`):
+:mod:`actuator_selection.catalogue.files`):
 
 - **seed** (:func:`load_seed`, the ``seed`` command): adds and updates, never
   retires, so seeding again keeps what an administrator added or retired;
@@ -31,15 +31,8 @@ from typing import Any, cast
 from sqlalchemy import Table, delete, insert, select
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.catalogue_files import (
-    ACTUATORS,
-    CATALOGUE_SPECS,
-    FAMILIES,
-    JSON_KEYS,
-    ZONE_POINTS,
-)
-from actuator_selection.core.changes import CatalogueChanges, FileChanges
-from actuator_selection.core.csvio import (
+from actuator_selection.catalogue.changes import CatalogueChanges, FileChanges
+from actuator_selection.catalogue.csvio import (
     CatalogueFileError,
     CsvSpec,
     Problem,
@@ -47,6 +40,13 @@ from actuator_selection.core.csvio import (
     parse,
     parse_rows,
     read,
+)
+from actuator_selection.catalogue.files import (
+    ACTUATORS,
+    CATALOGUE_SPECS,
+    FAMILIES,
+    JSON_KEYS,
+    ZONE_POINTS,
 )
 from actuator_selection.db.changes import batches, retire_at, sync_rows
 from actuator_selection.db.models import ActuatorFamilyRow, ActuatorRow, ZonePointRow

@@ -1,6 +1,6 @@
 """The controller files of the catalogue: Table 521.1, sensors (Tables 518.1, 519.2), interfaces.
 
-Their rules (``CsvSpec``) are in :mod:`actuator_selection.core.catalogue_files`
+Their rules (``CsvSpec``) are in :mod:`actuator_selection.catalogue.files`
 with the actuator files' rules; :mod:`actuator_selection.db.seed` reads, checks
 and writes all catalogue files together, this module knows what the
 controller-side files must agree on across rows and how they are stored.
@@ -15,18 +15,15 @@ from typing import Any
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.catalogue_files import (
+from actuator_selection.catalogue.changes import FileChanges
+from actuator_selection.catalogue.csvio import CsvSpec, Problem, Record
+from actuator_selection.catalogue.files import (
     BUS_CLASSES,
     CONTROLLERS,
     INTERFACES,
     KTY_POINTS,
     SENSOR_FITTINGS,
 )
-from actuator_selection.core.changes import FileChanges
-from actuator_selection.core.compatibility import BusClass
-from actuator_selection.core.csvio import CsvSpec, Problem, Record
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.thermal import KtyCharacteristic, TemperatureSensor
 from actuator_selection.db.changes import delete_in, retire_at, sync_rows
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -38,6 +35,9 @@ from actuator_selection.db.models import (
     SensorPointRow,
 )
 from actuator_selection.db.repositories import mark_changed
+from actuator_selection.errors import DomainError
+from actuator_selection.sizing.compatibility import BusClass
+from actuator_selection.sizing.thermal import KtyCharacteristic, TemperatureSensor
 
 
 def controller_name_problems(
@@ -68,7 +68,7 @@ def controller_name_problems(
 
 def _whole_file_problems(rows: Mapping[str, Sequence[Record]]) -> list[Problem]:
     """Rules on a file as a whole: the KTY table as the runtime reads it (at least two
-    points, rising strictly: :class:`~actuator_selection.core.thermal.KtyCharacteristic`
+    points, rising strictly: :class:`~actuator_selection.sizing.thermal.KtyCharacteristic`
     checks it), and a nominal voltage for every bus class Table 521.1 marks."""
     problems: list[Problem] = []
     kty = rows[KTY_POINTS.file]

@@ -6,10 +6,10 @@ from typing import TYPE_CHECKING, Any, Self
 
 from pydantic import Field, create_model
 
-from actuator_selection.core.catalogue import ActuatorRecord, FamilyRecord
-from actuator_selection.core.catalogue_fields import ACTUATOR_FIELDS, CatalogueField, Kind
-from actuator_selection.core.electrical import OUTPUT_TURNS_OPPOSITE_TO_MOTOR
+from actuator_selection.catalogue.fields import ACTUATOR_FIELDS, CatalogueField, Kind
+from actuator_selection.catalogue.records import ActuatorRecord, FamilyRecord
 from actuator_selection.schemas.common import ResponseModel
+from actuator_selection.sizing.electrical import OUTPUT_TURNS_OPPOSITE_TO_MOTOR
 
 
 class ZonePointOut(ResponseModel):

@@ -13,9 +13,9 @@ from typing import Any
 
 from pydantic import ConfigDict, Field
 
-from actuator_selection.core.catalogue_files import OPTION_COLUMNS, mark
-from actuator_selection.core.changes import CatalogueChanges
-from actuator_selection.core.csvio import WHOLE_NUMBER_MAX, CsvSpec, whole_number
+from actuator_selection.catalogue.changes import CatalogueChanges
+from actuator_selection.catalogue.csvio import WHOLE_NUMBER_MAX, CsvSpec, whole_number
+from actuator_selection.catalogue.files import OPTION_COLUMNS, mark
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.prices import ChangesOut
 

@@ -7,12 +7,12 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from actuator_selection.core.check_messages import Phrase, jsonable_params
-from actuator_selection.core.selection import Check
+from actuator_selection.i18n.check_messages import Phrase, jsonable_params
 from actuator_selection.schemas.common import ResponseModel
+from actuator_selection.sizing.selection import Check
 
 Localize = Callable[[str], str]
-"""A check's message in the answer's language (``api.messages.render_check``)."""
+"""A check's message in the answer's language (``i18n.localize.render_check``)."""
 
 
 def english(message: str) -> str:
@@ -26,7 +26,7 @@ def message_code(message: str) -> str | None:
 
 
 CheckStatus = Literal["pass", "fail", "warn", "no_data", "not_applicable"]
-"""A check's status (``core.checks.Status``): ``no_data`` where a catalogue value it needs
+"""A check's status (``sizing.checks.Status``): ``no_data`` where a catalogue value it needs
 is not published, ``not_applicable`` where its premise does not hold for the actuator or
 the case (it neither passes nor fails the verdict; docs/decisions/0025)."""
 

@@ -15,7 +15,7 @@ from typing import Annotated, Any, ClassVar, Literal, Union, get_args, get_origi
 from pydantic import BaseModel, ConfigDict, ValidationInfo, field_validator
 from pydantic.config import JsonDict
 
-from actuator_selection.core.text import text_problem
+from actuator_selection.text import text_problem
 
 MAX_SPEED_RPM = 100_000.0
 """n_2 bound [rpm]: ten times the fastest servo motor shaft."""
@@ -53,7 +53,7 @@ def shown(symbol: str, label: str) -> JsonDict:
 
 
 def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:
-    """The text rule (``core.text.text_problem``) broken by ``value``: text, or lists and
+    """The text rule (``text.text_problem``) broken by ``value``: text, or lists and
     objects of it (keys too); None when every text in it is clean."""
     if isinstance(value, str):
         return text_problem(value, line_breaks=line_breaks)
@@ -71,7 +71,7 @@ def text_rule_broken(value: object, *, line_breaks: bool = False) -> str | None:
 
 class StrictModel(BaseModel):
     """Unknown fields are errors (a typo must not silently drop a value); no NaN or ±∞;
-    text obeys the one text rule (``core.text.text_problem``): no U+0000 (PostgreSQL cannot
+    text obeys the one text rule (``text.text_problem``): no U+0000 (PostgreSQL cannot
     store it), no control characters or bidirectional overrides, and line breaks and tabs
     only in the fields named in ``line_break_fields`` (e.g. an address).
 

@@ -7,9 +7,11 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from actuator_selection.core.catalogue import ControllerRecord, InterfaceRecord
-from actuator_selection.core.check_messages import Phrase, jsonable_params, phrase
-from actuator_selection.core.compatibility import (
+from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
+from actuator_selection.i18n.check_messages import Phrase, jsonable_params, phrase
+from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
+from actuator_selection.schemas.common import ResponseModel
+from actuator_selection.sizing.compatibility import (
     LABELS,
     MARK_COLUMNS,
     ActuatorInterface,
@@ -17,10 +19,8 @@ from actuator_selection.core.compatibility import (
     ControllerMatch,
     CriterionResult,
 )
-from actuator_selection.core.drive import DriveOption, DriveOptions
-from actuator_selection.core.selection import Check
-from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
-from actuator_selection.schemas.common import ResponseModel
+from actuator_selection.sizing.drive import DriveOption, DriveOptions
+from actuator_selection.sizing.selection import Check
 
 Level = Literal["tested", "possible"]
 

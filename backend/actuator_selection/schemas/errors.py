@@ -1,4 +1,4 @@
-"""The one error shape of every error answer (see ``api/errors.py``), for the OpenAPI document."""
+"""The one error shape of every error answer (see ``http/errors.py``), for the OpenAPI document."""
 
 from __future__ import annotations
 

@@ -6,7 +6,7 @@ Lengths are in millimetres, linear speeds in mm/s, masses in kg, inertias in kgm
 in degrees and forces in N as numbers; any of them may also be text with a unit
 (``"0.5 in"``, ``"12 in/s"``, ``"22 lb"``, ``"3 lb*in^2"``; ``schemas.quantities``).
 :meth:`~_MechanismIn.to_axis` converts to SI once and resolves the mechanism in the core
-(``core.mechanisms``); a core error names the request's field under the path given.
+(``sizing.mechanisms``); a core error names the request's field under the path given.
 """
 
 from __future__ import annotations
@@ -15,25 +15,7 @@ from typing import Annotated, Any, Literal, get_args
 
 from pydantic import Discriminator, Field, Tag
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.mechanisms import (
-    MAX_INCLINE_DEG,
-    MM_PER_M,
-    BeltDrive,
-    Conveyor,
-    Hoist,
-    InclinedBallScrew,
-    RackPinion,
-    Transmission,
-    belt_axis,
-    conveyor_axis,
-    hoist_axis,
-    inclined_ball_screw_axis,
-    mm_to_m,
-    rack_pinion_axis,
-    with_transmission,
-)
+from actuator_selection.errors import DomainError
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
     MAX_INERTIA_KGM2,
@@ -56,6 +38,24 @@ from actuator_selection.schemas.quantities import (
     ROTARY_SPEED_RPM,
     TORQUE_NM,
     InUnit,
+)
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.mechanisms import (
+    MAX_INCLINE_DEG,
+    MM_PER_M,
+    BeltDrive,
+    Conveyor,
+    Hoist,
+    InclinedBallScrew,
+    RackPinion,
+    Transmission,
+    belt_axis,
+    conveyor_axis,
+    hoist_axis,
+    inclined_ball_screw_axis,
+    mm_to_m,
+    rack_pinion_axis,
+    with_transmission,
 )
 
 MIN_LENGTH_MM = MIN_LENGTH_M * MM_PER_M
@@ -158,7 +158,7 @@ class _MechanismIn(StrictModel):
 
 
 class BallScrewInclineIn(_MechanismIn):
-    """A ball screw at any incline, vertical included (``core.mechanisms``: r = P/2π)."""
+    """A ball screw at any incline, vertical included (``sizing.mechanisms``: r = P/2π)."""
 
     type: Literal["ball_screw_incline"]
     speed: LinearSpeed | None = Field(default=None, description=_LINEAR_SPEED)

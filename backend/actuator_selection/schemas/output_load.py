@@ -7,13 +7,9 @@ from typing import Any
 
 from pydantic import Field
 
-from actuator_selection.core.bearing import (
-    NORMAL_LOAD_FACTOR,
-    NORMAL_STATIC_SAFETY,
-    OutputLoad,
-)
-from actuator_selection.core.check_messages import Phrase, phrase
+from actuator_selection.i18n.check_messages import Phrase, phrase
 from actuator_selection.schemas.common import StrictModel
+from actuator_selection.sizing.bearing import NORMAL_LOAD_FACTOR, NORMAL_STATIC_SAFETY, OutputLoad
 
 MAX_FORCE_N = 1e7
 """Larger than any output bearing of the catalogue carries (C_0 ≤ 171 kN)."""

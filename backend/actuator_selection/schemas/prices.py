@@ -10,8 +10,8 @@ from decimal import Decimal
 
 from pydantic import Field
 
-from actuator_selection.core.changes import FileChanges
-from actuator_selection.core.sales import PriceListRecord, PriceRecord
+from actuator_selection.catalogue.changes import FileChanges
+from actuator_selection.sales.records import PriceListRecord, PriceRecord
 from actuator_selection.schemas.common import ResponseModel
 
 

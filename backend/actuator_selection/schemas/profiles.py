@@ -6,9 +6,9 @@ from typing import Literal
 
 from pydantic import Field
 
-from actuator_selection.core.sampled import DEFAULT_TOLERANCE
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.selections import SegmentsCycleIn
+from actuator_selection.sizing.sampled import DEFAULT_TOLERANCE
 
 UnitText = str | None
 

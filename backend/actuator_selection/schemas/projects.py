@@ -15,9 +15,9 @@ from typing import Any, Literal
 
 from pydantic import ConfigDict, Field, StrictInt
 
-from actuator_selection.core.compatibility import BusClass
 from actuator_selection.schemas.common import MAX_TIME_S, ResponseModel, StrictModel
 from actuator_selection.schemas.selections import ModelName, SelectionRequest, VoltageBrief
+from actuator_selection.sizing.compatibility import BusClass
 
 MAX_AXES = 16
 """Axes in one project: more than one DC bus of a machine usually feeds."""
@@ -103,7 +103,7 @@ class ProjectRequest(StrictModel):
 
 
 class PowerOut(ResponseModel):
-    """Figures of one electrical power over the machine cycle (core/bus.py)."""
+    """Figures of one electrical power over the machine cycle (sizing/bus.py)."""
 
     peak_w: float = Field(description="the largest power drawn [W]")
     least_w: float = Field(description="the least power [W], negative where it regenerates")

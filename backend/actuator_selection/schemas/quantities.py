@@ -35,7 +35,7 @@ from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler, ValidationError
 from pydantic.json_schema import JsonSchemaValue
 from pydantic_core import CoreSchema, PydanticCustomError, core_schema
 
-from actuator_selection.core.messages import N_, Text
+from actuator_selection.i18n.messages import N_, Text
 
 if TYPE_CHECKING:
     import pint
@@ -60,7 +60,7 @@ QUANTITY_MESSAGES: dict[tuple[str, str], str] = {
     ("finite_number", "overflow"): N_("Input should be a finite number: '{text}' in {unit}"),
 }
 """The errors of quantity text by ``type`` and ``ctx["rule"]``: English templates over the
-error's ``ctx`` (``api/messages.py`` renders them in the request's language)."""
+error's ``ctx`` (``i18n/localize.py`` renders them in the request's language)."""
 
 
 def _error(type_: str, rule: str, kind: QuantityKind, **ctx: Any) -> PydanticCustomError:

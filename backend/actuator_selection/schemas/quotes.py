@@ -25,18 +25,13 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
-from actuator_selection.core.check_messages import phrase
-from actuator_selection.core.checks import margin_percent
-from actuator_selection.core.messages import N_
-from actuator_selection.core.messages import Text as Words
-from actuator_selection.core.money import MAX_QUANTITY, PLAIN_DECIMAL, ROUNDING_RULE
-from actuator_selection.core.quote_status import (
-    QuoteStatus,
-    allowed_transitions,
-    effective_status,
-)
-from actuator_selection.core.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, SellerParty
-from actuator_selection.core.sales import QuoteRecord
+from actuator_selection.i18n.check_messages import phrase
+from actuator_selection.i18n.messages import N_
+from actuator_selection.i18n.messages import Text as Words
+from actuator_selection.sales.money import MAX_QUANTITY, PLAIN_DECIMAL, ROUNDING_RULE
+from actuator_selection.sales.quote_status import QuoteStatus, allowed_transitions, effective_status
+from actuator_selection.sales.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, SellerParty
+from actuator_selection.sales.records import QuoteRecord
 from actuator_selection.schemas.common import ResponseModel, StrictModel
 from actuator_selection.schemas.output_load import OutputLoadIn
 from actuator_selection.schemas.selections import (
@@ -49,11 +44,12 @@ from actuator_selection.schemas.selections import (
     SegmentOut,
     SelectionOut,
 )
+from actuator_selection.sizing.checks import margin_percent
 
 DECIMAL_TEXT_RULE = N_(
     'must be a decimal number written with the digits 0–9 and perhaps a point, e.g. "7.5"'
 )
-"""The rule of a decimal given as text (:data:`~actuator_selection.core.money.PLAIN_DECIMAL`,
+"""The rule of a decimal given as text (:data:`~actuator_selection.sales.money.PLAIN_DECIMAL`,
 error type ``decimal_text``)."""
 
 
@@ -514,7 +510,7 @@ class StoredCheck(CheckBrief):
 
     @property
     def phrase(self) -> str:
-        """The check in words as a message with a code (``core/check_messages.py``), which
+        """The check in words as a message with a code (``i18n/check_messages.py``), which
         the API renders in a reader's language (the check's name, which :attr:`summary` puts
         before the numbers, stands beside it where it is shown)."""
         if self.status == "no_data":

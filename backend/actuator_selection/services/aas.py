@@ -48,8 +48,6 @@ from basyx.aas.adapter.json import json_serialization
 from sqlalchemy.orm import Session
 
 import actuator_selection
-from actuator_selection.core.checks import utilisation
-from actuator_selection.core.motion import pieces_of
 from actuator_selection.db.repositories import SelectionRepository
 from actuator_selection.schemas.checks import CheckOut
 from actuator_selection.schemas.quotes import StoredCandidate, StoredSelection
@@ -58,6 +56,8 @@ from actuator_selection.services.aas_motion import MOTION_COLUMNS, motion_csv, m
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.selections import candidate_detail, stored_answer_json
+from actuator_selection.sizing.checks import utilisation
+from actuator_selection.sizing.motion import pieces_of
 
 SUBMODEL_SEMANTIC_ID = "https://admin-shell.io/idta/PowerDriveTrainSizing/1/0"
 """IDTA 02021 version 1.0, the submodel's semanticId."""

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from actuator_selection.core.motion import Piece
-from actuator_selection.core.units import rpm_to_rad_per_s
+from actuator_selection.sizing.motion import Piece
+from actuator_selection.sizing.units import rpm_to_rad_per_s
 
 MOTION_COLUMNS = (
     ("Time", "s"),
@@ -20,15 +20,15 @@ MOTION_COLUMNS = (
 def motion_rows(pieces: Iterable[Piece]) -> list[tuple[float, float, float, float]]:
     """(t [s], θ [rad], ω [rad/s], α [rad/s²]) at the start and end of every piece.
 
-    Within a piece the acceleration is constant or linear (``core.motion.Piece``), so
+    Within a piece the acceleration is constant or linear (``sizing.motion.Piece``), so
     θ(t) = θ₀ + ω₀·t + α₀·t²/2 + (α₁ − α₀)·t²/6 is exact; where the acceleration jumps
     between pieces the file has two rows at the same time.
 
     The worked example (Table 516.1) turns 40 rpm·(0.1/2 + 0.1 + 0.1/2) s = 0.8378 rad:
 
-    >>> from actuator_selection.core.cycle import Load, SpeedPattern
-    >>> from actuator_selection.core.motion import pieces_of
-    >>> from actuator_selection.core.selection import Application
+    >>> from actuator_selection.sizing.cycle import Load, SpeedPattern
+    >>> from actuator_selection.sizing.motion import pieces_of
+    >>> from actuator_selection.sizing.selection import Application
     >>> pattern = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1,
     ...                        pause_s=1.0)
     >>> app = Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3))

@@ -18,9 +18,8 @@ import orjson
 from basyx.aas import model
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.errors import ConflictError
-from actuator_selection.core.motion import pieces_of
 from actuator_selection.db.projects import ProjectRepository
+from actuator_selection.errors import ConflictError
 from actuator_selection.schemas.projects import ProjectRequest
 from actuator_selection.schemas.quotes import StoredSelection
 from actuator_selection.services.aas import (
@@ -36,6 +35,7 @@ from actuator_selection.services.aas_motion import motion_csv, motion_rows
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.errors import not_found
 from actuator_selection.services.selections import detail_of, size_selection
+from actuator_selection.sizing.motion import pieces_of
 
 PROJECT_REQUEST_FILE = "/aasx/files/project-request.json"
 """Where a machine project's AASX holds the project request (a ``SizingProjectLink``)."""

@@ -13,13 +13,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.compatibility import ControllerMatch, MatchVerdict, match_controller
-from actuator_selection.core.drive import shared_voltage_check
-from actuator_selection.core.electrical import DcBusClass
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.errors import invalid
 from actuator_selection.services.messages import PROJECT_CONTROLLER_RULE
+from actuator_selection.sizing.compatibility import ControllerMatch, MatchVerdict, match_controller
+from actuator_selection.sizing.drive import shared_voltage_check
+from actuator_selection.sizing.electrical import DcBusClass
 
 JSON = dict[str, Any]
 

@@ -1,6 +1,6 @@
 """Batch selection: the flowchart for thousands of load cases in one request (ERP).
 
-The cases are ranked by the engine (``core.engine``), which details the
+The cases are ranked by the engine (``sizing.engine``), which details the
 best ``top`` of each from the same arrays; the answer is written as JSON slice by slice
 (:data:`STREAM_CASES` cases at a time) while it is sent, so memory stays flat in the
 number of cases. Cases asked to be stored are sized as POST /selections sizes them and
@@ -17,18 +17,7 @@ from typing import Any, NamedTuple
 import numpy as np
 import pydantic_core
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import Rule
-from actuator_selection.core.engine import (
-    STATUS_BY_CODE,
-    VERDICT_BY_CODE,
-    CheckTable,
-    RankedTable,
-    TrapezoidColumns,
-    rank_columns,
-    select_batch,
-)
-from actuator_selection.core.selection import Application, Selection
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_CANDIDATES_WITH_CONTROLLERS,
@@ -52,6 +41,17 @@ from actuator_selection.services.selections import (
     size_selection,
     store_selections,
 )
+from actuator_selection.sizing.checks import Rule
+from actuator_selection.sizing.engine import (
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    CheckTable,
+    RankedTable,
+    TrapezoidColumns,
+    rank_columns,
+    select_batch,
+)
+from actuator_selection.sizing.selection import Application, Selection
 
 
 def _too_many_candidates(cases: int, top: int) -> list[dict[str, Any]]:
@@ -325,7 +325,7 @@ def size_columns(
     body: BatchColumnsRequest, *, catalogue: CatalogueSnapshot, localize: Localize
 ) -> Iterator[bytes]:
     """The answer to ``body`` (within :func:`check_columns`) as JSON, piece by piece: the
-    engine's table (``core.engine.rank_columns``) written as it is, each
+    engine's table (``sizing.engine.rank_columns``) written as it is, each
     array at once as a JSON array, with words only in each model's controller note.
 
     The table is computed before this returns, so that an error in it is still an error

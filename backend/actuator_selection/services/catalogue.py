@@ -16,19 +16,19 @@ from types import MappingProxyType
 
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.compatibility import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.db.controllers import ProtectionRepository
+from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+from actuator_selection.sizing.compatibility import (
     ActuatorInterface,
     CompatibilityResult,
     Controller,
     MatchVerdict,
     match_controllers,
 )
-from actuator_selection.core.drive import DriveOptions, drive_options, shared_bus_classes
-from actuator_selection.core.electrical import DcBusClass
-from actuator_selection.core.engine import CatalogueArrays, catalogue_arrays
-from actuator_selection.db.controllers import ProtectionRepository
-from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
+from actuator_selection.sizing.drive import DriveOptions, drive_options, shared_bus_classes
+from actuator_selection.sizing.electrical import DcBusClass
+from actuator_selection.sizing.engine import CatalogueArrays, catalogue_arrays
 
 
 @dataclass(frozen=True, slots=True)
@@ -87,7 +87,7 @@ class CatalogueSnapshot:
         return found
 
     def arrays(self, actuators: tuple[Actuator, ...]) -> CatalogueArrays:
-        """:func:`~actuator_selection.core.engine.catalogue_arrays` of ``actuators`` (the
+        """:func:`~actuator_selection.sizing.engine.catalogue_arrays` of ``actuators`` (the
         whole catalogue or a ``models`` subset of it), built once per version."""
         key = tuple(a.model for a in actuators)
         found = self._arrays.get(key)
@@ -234,7 +234,7 @@ def with_bus_voltage(
 
     So the selection's ``drive_voltage`` check compares the voltage the axis needs with
     the best output voltage any listed controller delivers: it fails exactly when every
-    listed controller's own voltage check (:mod:`actuator_selection.core.drive`, the same
+    listed controller's own voltage check (:mod:`actuator_selection.sizing.drive`, the same
     formula, the best bus each shares) fails, and lacks data where no controller is
     listed on a bus class the actuator runs on.
     """

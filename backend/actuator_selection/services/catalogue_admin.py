@@ -1,6 +1,6 @@
 """Catalogue administration: actuators, zones, interfaces, controllers, import and export.
 
-Writes are validated by the seed files' rules (``core/catalogue_files.py``), so
+Writes are validated by the seed files' rules (``catalogue/files.py``), so
 an actuator or controller this accepts is one the seed loader accepts and vice
 versa. Every change raises the catalogue version (the repositories do). Retiring is
 a soft delete: a retired actuator leaves listings and selections and stays for the
@@ -24,8 +24,8 @@ from typing import Any, Literal
 
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.catalogue_files import CATALOGUE_SPECS, JSON_KEYS
-from actuator_selection.core.csvio import CatalogueFileError, to_json_values, write
+from actuator_selection.catalogue.csvio import CatalogueFileError, to_json_values, write
+from actuator_selection.catalogue.files import CATALOGUE_SPECS, JSON_KEYS
 from actuator_selection.db.admin import CatalogueAdminRepository
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository

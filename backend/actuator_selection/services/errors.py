@@ -6,7 +6,7 @@ entry names its place (``loc``: ``["body", "actuator", "model"]``, ``["path",
 programs (``type``); where the rule is the service's own, also its code and params
 (``services/messages.py``), so that the API words it in the request's language. Like
 the core's domain errors (a :class:`DomainError` subclass, so the one handler of
-``api/errors.py`` answers it), it carries its status: 422 for a request that breaks a
+``http/errors.py`` answers it), it carries its status: 422 for a request that breaks a
 rule, 404 for an unknown resource, 409 for a state that does not allow the request.
 """
 
@@ -15,9 +15,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from actuator_selection.core.csvio import CatalogueFileError, Problem
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.messages import english
+from actuator_selection.catalogue.csvio import CatalogueFileError, Problem
+from actuator_selection.errors import DomainError
+from actuator_selection.i18n.messages import english
 from actuator_selection.services.messages import USE_CASE_MESSAGES
 
 Loc = list[str | int]

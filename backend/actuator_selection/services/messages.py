@@ -2,9 +2,9 @@
 
 An error a use case raises (:mod:`services.errors`) names its rule by code and the values
 the rule's message names as params; the API renders the template in the request's
-language from the gettext catalogs under ``locale/`` (``api/messages.py``), where the
+language from the gettext catalogs under ``locale/`` (``i18n/localize.py``), where the
 templates are the msgids, and answers the code and params beside the text. Words among
-the params (the kind of price) are :class:`~actuator_selection.core.messages.Text`, so
+the params (the kind of price) are :class:`~actuator_selection.i18n.messages.Text`, so
 they are translated too. Codes are part of the API contract: add new ones, never rename
 or reuse one.
 """
@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Final
 
-from actuator_selection.core.messages import N_, Text
+from actuator_selection.i18n.messages import N_, Text
 
 USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     # Batches (services/batch.py)
@@ -56,7 +56,7 @@ USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     "invalid_cursor": N_(
         "not a cursor this list answered (next_cursor): ask for the first page without one"
     ),
-    # Stored selections (services/reports.py, services/quotes.py)
+    # Stored selections (documents/reports.py, services/quotes.py)
     "unknown_selection": N_("no stored selection '{selection_id}'"),
     "unknown_project": N_("no stored machine project '{project_id}'"),
     "project_axes": N_("the project has {axes} axes: give one entry for each, in its order"),

@@ -1,7 +1,7 @@
 """Measured motion profiles: read a file, fit the segments, store them, size by reference.
 
 ``POST /profiles`` reads the file (``services/profile_csv.py``), turns its samples into
-the segments the flowchart sizes (``core/sampled.py``), stores the answer and returns it:
+the segments the flowchart sizes (``sizing/sampled.py``), stores the answer and returns it:
 the cycle as ``POST /selections`` takes it, the figures of the samples beside those of the
 segments, how far the segments lie from the samples, a preview of the samples for the
 cycle chart, and notes (a rotary profile faster than every actuator's n_max). A selection
@@ -23,14 +23,8 @@ import numpy as np
 from pydantic import ValidationError
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.sampled import (
-    DEFAULT_TOLERANCE,
-    SampledFigures,
-    fit_segments,
-    speeds_from_positions,
-)
 from actuator_selection.db.repositories import ProfileRepository
+from actuator_selection.errors import DomainError
 from actuator_selection.schemas.mechanisms import RotaryIn
 from actuator_selection.schemas.selections import (
     ProfileCycleIn,
@@ -40,6 +34,12 @@ from actuator_selection.schemas.selections import (
 from actuator_selection.schemas.selections.loads import _LoadIn
 from actuator_selection.services.errors import UseCaseError, entry, invalid, invalid_rule
 from actuator_selection.services.profile_csv import ColumnUnits, read_profile
+from actuator_selection.sizing.sampled import (
+    DEFAULT_TOLERANCE,
+    SampledFigures,
+    fit_segments,
+    speeds_from_positions,
+)
 
 PREVIEW_POINTS = 2000
 """Samples shown in the cycle chart's preview at most (each the extreme of its stretch)."""

@@ -5,7 +5,7 @@ Each axis is sized by the selection service (:func:`services.selections.size_sel
 the same ranking and figures as ``POST /selections`` for its load case); its actuator is
 the one the engineer chose or the first candidate that publishes J_A (a suitable one
 where there is one, as the ranking puts them first). Its power over the cycle and the
-bus's come from :mod:`actuator_selection.core.bus`.
+bus's come from :mod:`actuator_selection.sizing.bus`.
 """
 
 from __future__ import annotations
@@ -20,21 +20,21 @@ from typing import Any
 import orjson
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.bus import (
-    axis_power,
-    braking_resistor,
-    capacitor,
-    machine_bus,
-    motor_of,
-)
-from actuator_selection.core.errors import DomainError, MissingDataError, NotFoundError
 from actuator_selection.db.projects import ProjectRepository, StoredProject
+from actuator_selection.errors import DomainError, MissingDataError, NotFoundError
 from actuator_selection.schemas.projects import ProjectRequest
 from actuator_selection.services import axis_controllers
 from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.presenters.project import axis_body, project_answer
 from actuator_selection.services.presenters.selection import dump_json
 from actuator_selection.services.selections import STORE_COMPRESSION, size_selection
+from actuator_selection.sizing.bus import (
+    axis_power,
+    braking_resistor,
+    capacitor,
+    machine_bus,
+    motor_of,
+)
 
 JSON = dict[str, Any]
 Writer = Callable[[], AbstractContextManager[Session]]

@@ -7,8 +7,8 @@ The use cases of ``api/quotes.py``. Rules (the README's "Quotes" section says th
   quote and its document with the checks that lack data.
 - Prices come from the named price list, valid on the day the quote is made.
   All lines share one currency (422 otherwise). Figures follow
-  ``core.money.ROUNDING_RULE``; the VAT (the request's rate, else ``QUOTE_VAT_PERCENT``)
-  is applied once to the net total (``core.quote_terms.VAT_ROUNDING_RULE``).
+  ``sales.money.ROUNDING_RULE``; the VAT (the request's rate, else ``QUOTE_VAT_PERCENT``)
+  is applied once to the net total (``sales.quote_terms.VAT_ROUNDING_RULE``).
 - The seller block (settings) is copied into the quote, so a later change of the
   settings does not alter a quote already made; terms the request leaves out are the
   seller's standard terms, shown in the document's language.
@@ -31,18 +31,6 @@ from urllib.parse import quote as quote_path
 import orjson
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.compatibility import match_controller
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.money import QuoteLine, quote_totals
-from actuator_selection.core.quote_status import IllegalTransitionError, QuoteStatus, transition
-from actuator_selection.core.quote_terms import QuoteDefaults, tax_totals
-from actuator_selection.core.sales import (
-    ApiKeyRecord,
-    NewQuote,
-    PriceRecord,
-    QuoteItem,
-    QuoteRecord,
-)
 from actuator_selection.db.admin import CatalogueAdminRepository
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.projects import ProjectRepository
@@ -53,6 +41,17 @@ from actuator_selection.db.sales import (
     PriceRepository,
     QuoteRepository,
     QuoteSearch,
+)
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sales.money import QuoteLine, quote_totals
+from actuator_selection.sales.quote_status import IllegalTransitionError, QuoteStatus, transition
+from actuator_selection.sales.quote_terms import QuoteDefaults, tax_totals
+from actuator_selection.sales.records import (
+    ApiKeyRecord,
+    NewQuote,
+    PriceRecord,
+    QuoteItem,
+    QuoteRecord,
 )
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.documents import DocumentLinkOut
@@ -78,6 +77,7 @@ from actuator_selection.services.messages import (
     PROJECT_CONTROLLER_RULE,
 )
 from actuator_selection.services.selections import stored_answer_json
+from actuator_selection.sizing.compatibility import match_controller
 
 API_PREFIX = "/api/v1"
 DOCUMENT_LINK_TTL_S = 300

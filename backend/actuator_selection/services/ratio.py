@@ -1,18 +1,13 @@
 """The ratio study as a use case: a load case's free transmission value over the
-catalogue (``core/ratio.py``)."""
+catalogue (``sizing/ratio.py``)."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.application import Application
-from actuator_selection.core.engine import FloatArray
-from actuator_selection.core.engine.cases import Cases
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.mechanisms import Transmission
-from actuator_selection.core.ratio import RatioResult, geared, geared_cases, ratio_study
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
 from actuator_selection.schemas.ratio import (
     DEFAULT_RANGE,
     MAX_VALUE,
@@ -26,6 +21,11 @@ from actuator_selection.schemas.ratio import (
 )
 from actuator_selection.schemas.selections import BallScrewLoad, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.engine import FloatArray
+from actuator_selection.sizing.engine.cases import Cases
+from actuator_selection.sizing.mechanisms import Transmission
+from actuator_selection.sizing.ratio import RatioResult, geared, geared_cases, ratio_study
 
 
 def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], Application]:

@@ -25,20 +25,13 @@ import numpy as np
 import orjson
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.engine import (
-    VERDICT_BY_CODE,
-    FloatArray,
-    evaluate_batch,
-)
-from actuator_selection.core.errors import ConflictError, NotFoundError
-from actuator_selection.core.motion import SegmentTorque
-from actuator_selection.core.selection import Application, Verdict, evaluate, select
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.db.repositories import (
     CatalogueRepository,
     NewSelection,
     SelectionRepository,
 )
+from actuator_selection.errors import ConflictError, NotFoundError
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.selections import CandidateDetailOut, SelectionRequest
@@ -54,6 +47,9 @@ from actuator_selection.services.presenters.selection import (
     or_none,
 )
 from actuator_selection.services.ratio import guidance
+from actuator_selection.sizing.engine import VERDICT_BY_CODE, FloatArray, evaluate_batch
+from actuator_selection.sizing.motion import SegmentTorque
+from actuator_selection.sizing.selection import Application, Verdict, evaluate, select
 
 STORE_COMPRESSION = 1
 """gzip level of stored answers, compressed once for the row and for the answer to a
@@ -159,7 +155,7 @@ def _candidates(
     groups: presenter.DriveOptionGroups,
     top: int,
 ) -> _Answered:
-    """Every actuator's candidate for ``app``, ranked (``core.candidates.ranking_key``)
+    """Every actuator's candidate for ``app``, ranked (``sizing.candidates.ranking_key``)
     by the engine: the first ``top`` as the answer lists them, the rest as stored; a
     candidate's detail is the engine's 1 × 1 view, with the checks in words."""
     speed = app.profile.peak_speed_rpm  # computed first: the engine takes its figures

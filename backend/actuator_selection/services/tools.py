@@ -5,23 +5,10 @@ from __future__ import annotations
 
 from sqlalchemy.orm import Session
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.electrical import (
-    check_output_voltage,
-    controller_output_voltage,
-    motor_speed_rpm,
-    output_torque_from_current,
-)
-from actuator_selection.core.errors import InvalidInputError, MissingDataError, NotFoundError
-from actuator_selection.core.thermal import (
-    TemperatureSensor,
-    classify_kty_reading,
-    classify_ptc_reading,
-    finite_overload_duration_s,
-    overload_curve,
-)
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository
+from actuator_selection.errors import InvalidInputError, MissingDataError, NotFoundError
 from actuator_selection.schemas.tools import (
     BusVoltageOut,
     ControllerVoltageOut,
@@ -34,6 +21,19 @@ from actuator_selection.schemas.tools import (
     PtcOut,
     SensorTemperatureOut,
     SensorTemperatureRequest,
+)
+from actuator_selection.sizing.electrical import (
+    check_output_voltage,
+    controller_output_voltage,
+    motor_speed_rpm,
+    output_torque_from_current,
+)
+from actuator_selection.sizing.thermal import (
+    TemperatureSensor,
+    classify_kty_reading,
+    classify_ptc_reading,
+    finite_overload_duration_s,
+    overload_curve,
 )
 
 

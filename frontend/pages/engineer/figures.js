@@ -1,4 +1,4 @@
-// The page's charts are the API's figures (api/figures.py: the cycle chart and the
+// The page's charts are the API's figures (documents/figures.py: the cycle chart and the
 // speed/torque diagram, the figures the quote and the report print), fitted here to the
 // chart's width, and their text alternatives. Pure functions: nothing engineering is
 // computed or drawn here.
@@ -58,7 +58,7 @@ function isTrapezoid(selection) {
 
 /**
  * A figure as the API defines it (``GET …/candidates/{model}/cycle`` and ``…/diagram``, the
- * figures the quote and the report print, from ``api/figures.py``), fitted to the chart's
+ * figures the quote and the report print, from ``documents/figures.py``), fitted to the chart's
  * width: a narrow chart lists its legend one entry a line below the plot, names broken
  * into lines. ``figure`` is left unchanged.
  */

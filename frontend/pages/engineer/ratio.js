@@ -1,6 +1,6 @@
 // The ratio study of the request on the form (POST /selections/ratio-study, issue 31 part
 // 1): the free value and its range asked, the answer's intervals as a table and its chart
-// as the API defines it (api/figures.py: ratio_figure), drawn with plotly.js. Nothing
+// as the API defines it (documents/figures.py: ratio_figure), drawn with plotly.js. Nothing
 // engineering is computed here.
 
 import { h, notice } from "../../lib/dom.js";

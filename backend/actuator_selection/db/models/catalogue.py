@@ -22,7 +22,7 @@ from sqlalchemy import (
 from sqlalchemy.orm import Mapped, MappedColumn, mapped_column, relationship
 from sqlalchemy.types import TypeEngine
 
-from actuator_selection.core.catalogue_fields import (
+from actuator_selection.catalogue.fields import (
     ACTUATOR_FIELDS,
     FAMILY_LENGTH,
     MODEL_LENGTH,
@@ -56,7 +56,7 @@ class ActuatorRow(Base):
     """One catalogue actuator (one size and gear ratio), values at the output shaft.
 
     Besides its key, its family and its retirement, a column per catalogue value of
-    :data:`~actuator_selection.core.catalogue_fields.ACTUATOR_FIELDS`, added below the class.
+    :data:`~actuator_selection.catalogue.fields.ACTUATOR_FIELDS`, added below the class.
     """
 
     __tablename__ = "actuators"

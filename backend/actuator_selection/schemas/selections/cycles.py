@@ -8,9 +8,7 @@ from typing import Annotated, Any
 
 from pydantic import Discriminator, Field, Tag
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.errors import DomainError, InvalidInputError
-from actuator_selection.core.motion import MAX_SEGMENTS, Motion, Segment, trapezoid
+from actuator_selection.errors import DomainError, InvalidInputError
 from actuator_selection.schemas.common import (
     MAX_SPEED_RPM,
     MAX_TIME_S,
@@ -19,6 +17,8 @@ from actuator_selection.schemas.common import (
     StrictModel,
 )
 from actuator_selection.schemas.selections.loads import _renamed
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.motion import MAX_SEGMENTS, Motion, Segment, trapezoid
 
 
 class CycleIn(StrictModel):

@@ -8,10 +8,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Discriminator, Field, Tag
 
-from actuator_selection.core.axis import AxisLoad
-from actuator_selection.core.cycle import Load
-from actuator_selection.core.errors import DomainError
-from actuator_selection.core.loads import BallScrew, RotaryTable, ball_screw_load, rotary_table_load
+from actuator_selection.errors import DomainError
 from actuator_selection.schemas.common import (
     MAX_FRICTION_COEFFICIENT,
     MAX_INERTIA_KGM2,
@@ -25,6 +22,14 @@ from actuator_selection.schemas.common import (
     shown,
 )
 from actuator_selection.schemas.mechanisms import Mechanisms, _MechanismIn, union_tags
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.cycle import Load
+from actuator_selection.sizing.loads import (
+    BallScrew,
+    RotaryTable,
+    ball_screw_load,
+    rotary_table_load,
+)
 
 SpeedRpm = Annotated[
     float,
@@ -61,7 +66,7 @@ class _LoadIn(StrictModel):
             raise _renamed(exc, "load") from None
 
     def to_axis(self) -> AxisLoad:
-        """The load at the output with its friction, weight and losses (``core/axis.py``)."""
+        """The load at the output with its friction, weight and losses (``sizing/axis.py``)."""
         load = self.to_core()
         return AxisLoad(inertia_kgm2=load.inertia_kgm2, friction_torque_nm=load.torque_nm)
 

@@ -6,10 +6,7 @@ from typing import Annotated, Any
 
 from pydantic import ConfigDict, Field
 
-from actuator_selection.core.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
-from actuator_selection.core.cycle import SpeedPattern
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.selection import Application
+from actuator_selection.errors import InvalidInputError
 from actuator_selection.schemas.common import (
     MAX_TIME_S,
     StrictModel,
@@ -22,6 +19,9 @@ from actuator_selection.schemas.output_load import (
 )
 from actuator_selection.schemas.selections.cycles import AnyCycleIn, CycleIn
 from actuator_selection.schemas.selections.loads import LoadIn, _load_speed, _LoadIn
+from actuator_selection.sizing.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
+from actuator_selection.sizing.cycle import SpeedPattern
+from actuator_selection.sizing.selection import Application
 
 ModelName = Annotated[str, Field(min_length=1, max_length=60)]
 

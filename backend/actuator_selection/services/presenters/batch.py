@@ -10,10 +10,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from actuator_selection.core.check_messages import jsonable_params
-from actuator_selection.core.selection import VALUE_OF, Candidate, Check, Selection
+from actuator_selection.i18n.check_messages import jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.selection import resolved_load
+from actuator_selection.sizing.selection import VALUE_OF, Candidate, Check, Selection
 
 
 def _number(x: float | None) -> float | None:

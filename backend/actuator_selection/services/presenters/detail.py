@@ -8,14 +8,14 @@ everything included; the detail adds what the stored selection gives.
 
 from __future__ import annotations
 
-from actuator_selection.core.drive import DriveOptions
-from actuator_selection.core.motion import Profile
-from actuator_selection.core.selection import Candidate
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.controllers import DriveOptionBodies, controllers_note
 from actuator_selection.schemas.selections import CandidateDetailOut
 from actuator_selection.services.presenters.batch import candidate_body, controllers_summary
+from actuator_selection.sizing.drive import DriveOptions
+from actuator_selection.sizing.motion import Profile
+from actuator_selection.sizing.selection import Candidate
 
 
 def candidate_detail(

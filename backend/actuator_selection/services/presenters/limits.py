@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from actuator_selection.core.check_messages import jsonable_params
-from actuator_selection.core.inverse import Limit
-from actuator_selection.core.selection import Application
+from actuator_selection.i18n.check_messages import jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.schemas.limits import LimitsOut
+from actuator_selection.sizing.inverse import Limit
+from actuator_selection.sizing.selection import Application
 
 
 def limits_answer(

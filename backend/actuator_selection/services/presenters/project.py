@@ -7,8 +7,9 @@ from dataclasses import asdict
 from datetime import datetime
 from typing import Any
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.bus import (
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.schemas.projects import AxisIn, ProjectRequest
+from actuator_selection.sizing.bus import (
     SIGMAS,
     AxisPower,
     BrakingResistor,
@@ -17,7 +18,6 @@ from actuator_selection.core.bus import (
     PowerFigures,
     sample_curve,
 )
-from actuator_selection.schemas.projects import AxisIn, ProjectRequest
 
 JSON = dict[str, Any]
 

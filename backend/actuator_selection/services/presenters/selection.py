@@ -20,15 +20,8 @@ import numpy.typing as npt
 import orjson
 import zstandard
 
-from actuator_selection.core.actuators import Actuator
-from actuator_selection.core.checks import Check, Rule
-from actuator_selection.core.drive import shared_voltage_check
-from actuator_selection.core.electrical import DcBusClass
-from actuator_selection.core.engine import STATUS_BY_CODE, BatchEvaluation, FloatArray
-from actuator_selection.core.errors import InvalidInputError
-from actuator_selection.core.inverse import shortest_accel, shortest_pause
-from actuator_selection.core.motion import Profile
-from actuator_selection.core.selection import VALUE_OF, Application, Verdict
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
 from actuator_selection.schemas.checks import message_code
 from actuator_selection.schemas.output_load import output_bearing_note
 from actuator_selection.schemas.selections import (
@@ -37,6 +30,13 @@ from actuator_selection.schemas.selections import (
     SelectionRequest,
 )
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.sizing.checks import Check, Rule
+from actuator_selection.sizing.drive import shared_voltage_check
+from actuator_selection.sizing.electrical import DcBusClass
+from actuator_selection.sizing.engine import STATUS_BY_CODE, BatchEvaluation, FloatArray
+from actuator_selection.sizing.inverse import shortest_accel, shortest_pause
+from actuator_selection.sizing.motion import Profile
+from actuator_selection.sizing.selection import VALUE_OF, Application, Verdict
 
 JSON = dict[str, Any]
 
@@ -88,7 +88,7 @@ def or_none(column: FloatArray) -> Any:
 
 def checks_of(ev: BatchEvaluation) -> list[Any]:
     """Each actuator's checks of the (single) case in ``ev``, as the answer lists them:
-    what :meth:`~actuator_selection.core.checks.Rule.check` reports, less its words. As
+    what :meth:`~actuator_selection.sizing.checks.Rule.check` reports, less its words. As
     dicts up to :data:`CHECKS_AS_DICTS_UP_TO` actuators, beyond as their JSON; the text
     that :func:`dump_json` writes is the same (the tests compare the two)."""
     if ev.statuses.shape[1] <= CHECKS_AS_DICTS_UP_TO:
@@ -190,7 +190,7 @@ def _json_items(column: FloatArray) -> npt.NDArray[np.bytes_]:
 
 
 _STATUS_NAMES = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
-"""The API's status names by status code (:data:`~actuator_selection.core.engine.
+"""The API's status names by status code (:data:`~actuator_selection.sizing.engine.
 STATUS_BY_CODE`)."""
 _STATUS_JSON = np.array([orjson.dumps(s.value) for s in STATUS_BY_CODE], dtype=np.bytes_)
 """The API's status names as JSON strings, by status code."""
@@ -340,7 +340,7 @@ def binding(
     Per check that fails anywhere: how many candidates fail it, and its nearest miss, the
     failing candidate with the smallest value/limit (for the speed: n_2 against the
     largest n_max), from the candidates' own checks (``check_dicts()``, in the ranking's
-    order). Then what the inverse solve (``core/inverse.py``) says of a longer pause and
+    order). Then what the inverse solve (``sizing/inverse.py``) says of a longer pause and
     a longer t_1 for the nearest miss of all, the first candidate: the shortest value with
     which no check fails, or none (and the checks that fail at every value). The range of
     the load's own lead or diameter is added by the service (``services/ratio.guidance``)."""

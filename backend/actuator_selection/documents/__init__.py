@@ -1,0 +1,3 @@
+"""The documents: the quote and the report, as HTML and as PDF, their figures
+and the symbols they print.
+"""

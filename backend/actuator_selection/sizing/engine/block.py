@@ -1,0 +1,603 @@
+"""One block of the engine: the flowchart for cases × actuators as arrays.
+
+The cycle's torques on every actuator (:meth:`~actuator_selection.sizing.motion.Profile.
+torques` on arrays: T = c + (J_A + J)·α piece by piece, ∫T² dt summed in order), the
+winding's heating over the repeating cycle, the operands by name (:func:`operands_of`),
+and each rule's status codes (:func:`status_codes`): no data where a requirement is
+missing, else pass, fail or warn, and the overload that ranks what does not fit.
+
+The rules are not written here: those of :mod:`actuator_selection.sizing.checks` compute
+their values and limits on the arrays of :class:`~actuator_selection.sizing.checks.Operands`
+with numpy's operations (:data:`ARRAY_OPS`); this module turns each rule's comparison
+into codes. Every expression performs the same IEEE operations in the same order as the
+plain-float flowchart that the tests keep as the oracle (``tests/oracle``; numpy adds no
+fused multiply-add, squares are ``x * x``), so both agree bit for bit, which the tests
+check with ``==``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence, Sized
+from dataclasses import dataclass
+from itertools import repeat
+from typing import Any
+
+import numpy as np
+
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.checks import RULES, Operands, Ops, Rule
+from actuator_selection.sizing.checks.rules.gear import AVERAGE_TORQUE_RULES
+from actuator_selection.sizing.engine.arrays import (
+    FAIL,
+    NO_DATA,
+    NOT_APPLICABLE,
+    PASS,
+    WARN,
+    BoolArray,
+    CodeArray,
+    FloatArray,
+    IndexArray,
+)
+from actuator_selection.sizing.engine.cases import Cases, case_operands
+from actuator_selection.sizing.engine.catalogue import CatalogueArrays
+from actuator_selection.sizing.motion import PieceArrays, heating_gain, mean_abs_speed_rpm
+
+CHECK_NAMES = tuple(rule.name for rule in RULES)
+"""The chapter's checks in flowchart order (:data:`~actuator_selection.sizing.checks.RULES`)."""
+
+
+def _python_pow(x: Any, exponent: float) -> Any:
+    """``math.pow`` element by element: bit for bit what Python's floats compute
+    (numpy's power differs in the last bit for some inputs). The rules raise only case
+    quantities to a power, so the arrays are one column of cases."""
+    base = np.asarray(x, dtype=np.float64)
+    flat = base.ravel().tolist()
+    powers = np.fromiter(map(math.pow, flat, repeat(exponent)), np.float64, len(flat))
+    return powers.reshape(base.shape)
+
+
+ARRAY_OPS = Ops(where=np.where, isnan=np.isnan, not_=np.logical_not, sqrt=np.sqrt, pow=_python_pow)
+"""The rules' operations on numpy arrays (one cell's words use
+:data:`~actuator_selection.sizing.checks.FLOAT_OPS`)."""
+
+_KEPT_PIECES = 16
+"""Cycles of up to this many pieces keep each piece's mean T² between the heating check's
+two passes (16 arrays of a block: 8 MiB); longer ones recompute it."""
+
+_BLOCK_CELLS = 1 << 16
+"""Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
+and memory stays bounded whatever the number of cases."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class _RuleArrays:
+    """What :meth:`~actuator_selection.sizing.checks.Rule.check` reports, for a block: each
+    array broadcasts to the block's shape (cases × actuators)."""
+
+    values: FloatArray
+    """The value checked; NaN where unknown (the check reports None)."""
+    limits: FloatArray
+    """The limit; NaN where there is none (no data, or beyond a zone's last speed)."""
+    approximate: BoolArray | np.bool_
+    first_missing: CodeArray
+    """Index into the rule's requirements of the first one missing; −1 where none is."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Block:
+    accel_torque: FloatArray
+    constant_torque: FloatArray
+    decel_torque: FloatArray
+    rms_torque: FloatArray
+    statuses: tuple[CodeArray, ...]
+    overload: FloatArray
+    """The largest :func:`~actuator_selection.sizing.checks.overload` of the checks."""
+    details: tuple[_RuleArrays, ...] | None = None
+    operands: Operands | None = None
+    """With ``detail``: what the rules computed from (for the words of their checks)."""
+
+    def verdicts(self) -> CodeArray:
+        worst = np.full(self.accel_torque.shape, PASS)
+        for codes in self.statuses:
+            np.maximum(worst, codes, out=worst)
+        # NOT_APPLICABLE/PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable.
+        np.subtract(worst, WARN, out=worst)
+        np.maximum(worst, 0, out=worst)
+        return worst
+
+
+def _lacking(
+    rule: Rule, q: Operands, cat: CatalogueArrays
+) -> tuple[CodeArray, BoolArray, bool, bool]:
+    """Per actuator, the index of the first of ``rule``'s requirements the catalogue does
+    not meet (−1: none), and whether any requirement after the first is unmet; whether
+    the rule lacks data for every actuator (and cannot fail on its
+    :attr:`~actuator_selection.sizing.checks.Rule.lower_bound`): then its status is
+    ``no_data`` in every cell, decided without comparing (a one-model selection's checks
+    are often so); and whether it lacks data for none: then nothing is masked.
+
+    A requirement names catalogue values only (:class:`~actuator_selection.sizing.checks.
+    Requirement`), so this is a fact about the actuators, computed once per catalogue
+    and rule: six rules' requirements were a fifth of a whole-catalogue selection's
+    engine."""
+    found = cat.lacking.get(rule)
+    if found is not None:
+        return found
+    n = cat.inertia.shape
+    first_missing: CodeArray = np.full(n, -1, dtype=np.int8)
+    others_missing: BoolArray = np.zeros(n, dtype=np.bool_)
+    for k, need in enumerate(rule.requires):
+        lacking = need.missing(q, ARRAY_OPS)
+        assert np.shape(lacking) == n, f"{rule.name}: a requirement names a case's value"
+        first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
+        if k:
+            others_missing = others_missing | lacking
+    everywhere = bool((first_missing >= 0).all()) and (
+        rule.lower_bound is None or not bool(((first_missing == 0) & ~others_missing).any())
+    )
+    nowhere = not bool((first_missing >= 0).any())
+    found = cat.lacking[rule] = (first_missing, others_missing, everywhere, nowhere)
+    return found
+
+
+def _status_codes(
+    rule: Rule,
+    q: Operands,
+    cat: CatalogueArrays,
+    *,
+    detail: bool = False,
+) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
+    """The codes of one rule for the block (:meth:`~actuator_selection.sizing.checks.Rule.check`
+    on arrays): no data where a requirement is missing, else pass, fail or warn; the
+    overload (:func:`~actuator_selection.sizing.checks.overload`); with ``detail``, also the
+    value, limit, approximation and missing requirement it reports. Each array is of the
+    block's shape or broadcasts to it (a column of cases, a row of actuators, a
+    scalar): its readers broadcast, and a whole-catalogue selection spared ~25
+    ``np.broadcast_to`` calls.
+
+    Called with numpy's floating-point errors ignored: NaN where data is missing is
+    masked here."""
+    xp = ARRAY_OPS
+    codes, overload, arrays = _decided_codes(rule, q, cat, detail=detail)
+    if rule.applies is None:
+        return codes, overload, arrays
+    # Where the premise does not hold: not applicable, whatever the data (Rule.check).
+    applies = rule.applies(q, xp)
+    codes = np.where(applies, codes, NOT_APPLICABLE)
+    overload = np.where(applies, overload, 0.0)
+    if arrays is None:
+        return codes, overload, None
+    return (
+        codes,
+        overload,
+        _RuleArrays(
+            values=np.where(applies, arrays.values, math.nan),
+            limits=np.where(applies, arrays.limits, math.nan),
+            approximate=arrays.approximate & applies,
+            first_missing=np.where(applies, arrays.first_missing, np.int8(-1)),
+        ),
+    )
+
+
+def _decided_codes(
+    rule: Rule,
+    q: Operands,
+    cat: CatalogueArrays,
+    *,
+    detail: bool,
+) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
+    """:func:`_status_codes` before :attr:`~actuator_selection.sizing.checks.Rule.applies`."""
+    xp = ARRAY_OPS
+    first_missing, others_missing, everywhere, nowhere = _lacking(rule, q, cat)  # per actuator
+    if everywhere:  # no data in every cell: only the value, which the check reports
+        codes = np.full(first_missing.shape, NO_DATA)
+        overload = np.zeros(first_missing.shape)
+        if not detail:
+            return codes, overload, None
+        arrays = _RuleArrays(
+            values=rule.value(q, xp),
+            limits=np.full(first_missing.shape, math.nan),
+            approximate=np.False_,
+            first_missing=first_missing,
+        )
+        return codes, overload, arrays
+    if nowhere:  # every actuator has the data: nothing to mask, no floor to apply
+        return _complete_codes(rule, q, first_missing, detail=detail)
+    value, limit = rule.value(q, xp), rule.limit(q, xp)
+    # numpy's True, not Python's: ~True is −2, which would make the masks integers.
+    within = np.True_ if rule.within is None else rule.within(q, xp)
+    ok = value <= limit if rule.within is None else (value <= limit) & within
+    binding = np.True_ if rule.binding is None else rule.binding(q, xp)
+    missing = first_missing >= 0
+    if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
+        floor = rule.lower_bound(q, xp)
+        floor_fails = (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
+        value = np.where(floor_fails, floor, value)
+        missing = missing & ~floor_fails
+    fail = FAIL if rule.binding is None else np.where(binding, FAIL, WARN)
+    codes = np.where(missing, NO_DATA, np.where(ok, PASS, fail))  # cases × actuators
+    if rule.lower_bound is not None:
+        codes = np.where(floor_fails, FAIL, codes)
+    failing = codes == FAIL
+    if failing.any():
+        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+        overload = np.where(failing, over, 0.0)
+    else:  # nothing fails: no overload (most cells of a selection)
+        overload = np.zeros(np.shape(codes))
+    if not detail:
+        return codes, overload, None
+    approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing
+    return (
+        codes,
+        overload,
+        _RuleArrays(
+            values=value,
+            limits=np.where(missing, math.nan, limit),
+            approximate=approximate,
+            first_missing=first_missing,
+        ),
+    )
+
+
+def _complete_codes(
+    rule: Rule, q: Operands, first_missing: CodeArray, *, detail: bool
+) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
+    """:func:`_status_codes` where no actuator lacks the rule's data (the usual case): the
+    same codes, values and limits with no mask (``missing`` is False everywhere, so the
+    lower bound, which applies only where J_A is missing, changes nothing)."""
+    xp = ARRAY_OPS
+    value, limit = rule.value(q, xp), rule.limit(q, xp)
+    within = np.True_ if rule.within is None else rule.within(q, xp)
+    ok = value <= limit if rule.within is None else (value <= limit) & within
+    fail = FAIL if rule.binding is None else np.where(rule.binding(q, xp), FAIL, WARN)
+    # Of the block's shape, as the masked path's codes are (first_missing is a row).
+    codes = np.where(ok & (first_missing < 0), PASS, fail)
+    failing = codes == FAIL
+    if failing.any():
+        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+        overload = np.where(failing, over, 0.0)
+    else:
+        overload = np.zeros(np.shape(codes))
+    if not detail:
+        return codes, overload, None
+    approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp)
+    return (
+        codes,
+        overload,
+        _RuleArrays(
+            values=value,
+            limits=limit,
+            approximate=approximate,
+            first_missing=first_missing,
+        ),
+    )
+
+
+class _HeatingGains:
+    """g = 1 − e^(−t/τ_th) of each piece and of the whole cycle for a block, case ×
+    actuator (:meth:`~actuator_selection.sizing.motion.Profile.heating_gains`).
+
+    τ_th is the actuator's catalogue value where published, else the case's (given or
+    assumed). The gains are computed with ``math.expm1`` on Python floats
+    (:func:`~actuator_selection.sizing.motion.heating_gain`), as Python's floats
+    compute them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
+    the distinct τ_th values are computed: the case's, and each published one.
+    """
+
+    def __init__(self, cat: CatalogueArrays, cases: Cases) -> None:
+        published = cat.thermal_time_constant
+        values = sorted({float(v) for v in published.tolist() if v == v})
+        # Per case, gains for its own τ_th (column 0) and each published τ_th (1, 2, …).
+        taus = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
+        gains = [_case_gains(cases.pieces.duration, cases.figures.cycle_s, tau) for tau in taus]
+        self._pieces = np.array([piece for piece, _ in gains], dtype=np.float64).reshape(
+            len(taus), cases.size, cases.pieces.duration.shape[1]
+        )
+        self._cycle = np.array([cycle for _, cycle in gains], dtype=np.float64).reshape(
+            len(taus), cases.size
+        )
+        lookup = {v: i + 1 for i, v in enumerate(values)}
+        self._index = np.array(
+            [0 if v != v else lookup[float(v)] for v in published.tolist()], dtype=np.intp
+        )
+        self._mixed = bool(values)
+        shape = (cases.size, published.size)
+        case_tau = cases.thermal_time_constant[:, np.newaxis]
+        self.time_constant: FloatArray = np.where(np.isnan(published), case_tau, published)
+        self.assumed: BoolArray = np.isnan(published) & cases.thermal_assumed[:, np.newaxis]
+        self._shape = shape
+
+    def _pick(self, table: FloatArray) -> FloatArray:
+        """Cases × actuators from a (τ_th columns × cases) table; where no actuator
+        publishes τ_th, cases × 1 (broadcast by the arithmetic that uses it)."""
+        if not self._mixed:
+            column: FloatArray = table[0][:, np.newaxis]
+            return column
+        return table[self._index].T
+
+    def piece(self, k: int) -> FloatArray:
+        """The gains of piece ``k``, cases × actuators."""
+        return self._pick(self._pieces[:, :, k])
+
+    def cycle(self) -> FloatArray:
+        """The gains of the whole cycle, cases × actuators."""
+        return self._pick(self._cycle)
+
+
+def _gains(durations: list[float], tau: float) -> list[float]:
+    return [heating_gain(t, tau) for t in durations]
+
+
+def _distinct_rows(key: FloatArray) -> tuple[FloatArray, IndexArray]:
+    """The distinct rows of ``key`` and where each row is among them: grouped by a sum of
+    the columns weighted (a sort of floats, not of rows), the grouping then checked row by
+    row; sorted as rows where two rows share a sum."""
+    with np.errstate(all="ignore"):
+        projection = np.zeros(key.shape[0])
+        for k in range(key.shape[1]):
+            projection = projection + key[:, k] * (1.0 + k / 7.0)
+    _, first, where = np.unique(projection, return_index=True, return_inverse=True)
+    distinct = key[first]
+    if np.array_equal(distinct[where], key):
+        return distinct, where.ravel()
+    rows = np.ascontiguousarray(key)
+    view = rows.view(np.dtype((np.void, rows.itemsize * rows.shape[1]))).ravel()
+    _, first, where = np.unique(view, return_index=True, return_inverse=True)
+    return rows[first], where.ravel()
+
+
+def _case_gains(
+    durations: FloatArray, cycles: FloatArray, taus: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """Per case, the gains of its pieces and of its cycle at its τ_th, each computed once
+    per distinct (pieces' durations, cycle, τ_th): cases repeat where the engine runs on
+    pairs (:mod:`~actuator_selection.sizing.engine.pairs`), one row per pair."""
+    key = np.column_stack([durations, cycles, taus])
+    where: IndexArray = np.zeros(key.shape[0], dtype=np.intp)
+    if key.shape[0] > 1:
+        key, where = _distinct_rows(key)
+    rows = key.tolist()
+    pieces = np.array([_gains(r[:-2], r[-1]) for r in rows], dtype=np.float64)
+    cycle = np.array([heating_gain(r[-2], r[-1]) for r in rows], dtype=np.float64)
+    return pieces.reshape(len(rows), durations.shape[1])[where], cycle[where]
+
+
+def _piece_torques(
+    cat: CatalogueArrays, p: PieceArrays, k: int
+) -> tuple[tuple[FloatArray, ...], FloatArray]:
+    """The torques at the ends of piece ``k``, T = c + (J_A + J)·α (one array where the
+    acceleration is constant along the piece in every case: a trapezoid's pieces), and
+    the mean of T² over the piece (:meth:`~actuator_selection.sizing.motion.Profile.
+    thermal_torque_nm`): T_a² where the torque is constant, else (T_a² + T_a·T_b + T_b²)/3.
+
+    Where α is constant the end torque equals the start torque (at most the sign of a
+    zero differs), so it is not computed: it could not be of larger magnitude."""
+    col = np.newaxis
+    inertia = cat.inertia + p.inertia[:, k, col]
+    static = p.static[:, k, col]
+    t0 = static + inertia * p.accel_start[:, k, col]
+    constant = p.accel_start[:, k] == p.accel_end[:, k]
+    if constant.all():
+        return (t0,), t0 * t0
+    t1 = static + inertia * p.accel_end[:, k, col]
+    square = np.where(constant[:, col], t0 * t0, (t0 * t0 + t0 * t1 + t1 * t1) / 3.0)
+    return (t0, t1), square
+
+
+def _piece_speeds(p: PieceArrays) -> list[FloatArray]:
+    """Each piece's mean |n| (a column of cases), computed once per block for the
+    heating (:func:`_heating_square`) and the heating's speed (:func:`_thermal_speed`)."""
+    col = np.newaxis
+    return [
+        mean_abs_speed_rpm(
+            p.duration[:, k, col],
+            p.start_rpm[:, k, col],
+            p.end_rpm[:, k, col],
+            p.accel_start[:, k, col],
+            p.accel_end[:, k, col],
+        )
+        for k in range(p.duration.shape[1])
+    ]
+
+
+def _heating_square(cat: CatalogueArrays, speed: FloatArray, square: FloatArray) -> FloatArray:
+    """The mean T² of piece ``k`` as the winding's heating counts it
+    (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm` with its
+    ``no_load_slope``): (√m + k_T·K_INL·|n̄|)² where :attr:`CatalogueArrays.heating_slope`
+    is published, else m; ``speed`` the piece's mean |n| (:func:`_piece_speeds`)."""
+    torque = np.sqrt(square) + cat.heating_slope * speed
+    return np.where(np.isnan(cat.heating_slope), square, torque * torque)
+
+
+def _thermal_torque(
+    cat: CatalogueArrays,
+    cases: Cases,
+    gains: _HeatingGains,
+    heat: FloatArray,
+    energy: FloatArray,
+    squares: list[FloatArray] | None,
+    speeds: list[FloatArray],
+) -> FloatArray:
+    """:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm` on arrays: the
+    periodic start x_0 = B/(1 − A) from the first pass's ``heat`` (B), then the peak of x
+    over the pieces' ends, the torques recomputed piece by piece as in the first pass."""
+    col = np.newaxis
+    p = cases.pieces
+    cycle_gain = gains.cycle()
+    cycle_s = cases.figures.cycle_s[:, col]
+    start = np.where(
+        cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), energy / cycle_s
+    )
+    peak = heat = start
+    on_current = bool(np.any(~np.isnan(cat.heating_slope)))
+    for k in range(p.duration.shape[1]):
+        if squares is None:
+            square = _piece_torques(cat, p, k)[1]
+            if on_current:
+                square = _heating_square(cat, speeds[k], square)
+        else:
+            square = squares[k]
+        heat = heat + (square - heat) * gains.piece(k)
+        peak = np.where(heat > peak, heat, peak)
+    return np.sqrt(peak)
+
+
+def _thermal_speed(cases: Cases, gains: _HeatingGains, speeds: list[FloatArray]) -> FloatArray:
+    """:meth:`~actuator_selection.sizing.motion.Profile.thermal_speed_rpm` on arrays: each
+    piece's mean |n| (a column of cases), the periodic start y_0 = B/(1 − A), the peak of
+    y over the pieces' ends, never below n_av; cases × actuators (or cases × 1 where no
+    actuator publishes τ_th)."""
+    mean = cases.figures.mean_speed_rpm[:, np.newaxis]
+    heat: FloatArray = np.zeros_like(mean)
+    for k, speed in enumerate(speeds):
+        heat = heat + (speed - heat) * gains.piece(k)
+    cycle_gain = gains.cycle()
+    start = np.where(cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), mean)
+    peak = heat = start
+    for k, speed in enumerate(speeds):
+        heat = heat + (speed - heat) * gains.piece(k)
+        peak = np.where(heat > peak, heat, peak)
+    return np.where(peak > mean, peak, mean)
+
+
+def evaluate_block(
+    cat: CatalogueArrays,
+    cases: Cases,
+    zone_limits: FloatArray,
+    rules: Sequence[Rule],
+    *,
+    detail: bool = False,
+) -> Block:
+    """The flowchart for ``cases`` × every actuator (rows × columns); ``detail``: the
+    checks' values and limits too.
+
+    The torques are :meth:`~actuator_selection.sizing.motion.Profile.torques` on arrays,
+    piece by piece: T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in
+    order, T_1, T_2, T_3 the signed torques of largest magnitude (the first one on a tie).
+    """
+    col = np.newaxis
+    p = cases.pieces
+    # cases × actuators; cases × 1 where the catalogue is a column of pairs (engine.pairs)
+    shape = (cases.size, cat.inertia.shape[-1])
+    gains = _HeatingGains(cat, cases)
+    energy = np.zeros(shape)
+    heat = np.zeros(shape)
+    # The heating counts the winding current where the catalogue allows (_heating_square).
+    on_current = bool(np.any(~np.isnan(cat.heating_slope)))
+    heat_energy = np.zeros(shape) if on_current else energy
+    # Each piece's mean T², kept for the second pass where the cycle has few pieces (else
+    # recomputed there, so that memory stays bounded).
+    squares: list[FloatArray] | None = [] if p.duration.shape[1] <= _KEPT_PIECES else None
+    accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
+    decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
+    constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
+    # The gear's T_av (rules.gear), summed only where a rule reads it.
+    averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
+    cube, weight = np.zeros(shape), np.zeros(cases.size)
+    with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
+        speeds = _piece_speeds(p)  # each piece's mean |n|, for the heating
+        for k in range(p.duration.shape[1]):
+            torques, square = _piece_torques(cat, p, k)
+            # ∫T² dt of the piece: its mean T² times its duration, in the pieces' order.
+            energy = energy + square * p.duration[:, k, col]
+            if on_current:
+                square = _heating_square(cat, speeds[k], square)
+                heat_energy = heat_energy + square * p.duration[:, k, col]
+            else:
+                heat_energy = energy
+            heat = heat + (square - heat) * gains.piece(k)
+            if squares is not None:
+                squares.append(square)
+            braking = p.braking[:, k, col]
+            steady = p.constant_speed[:, k, col]
+            # Which extremes the piece can change (a piece brakes, or not, in every case
+            # of a trapezoid): an update where no case takes part changes nothing.
+            brakes, drives, runs = braking.any(), not braking.all(), steady.any()
+            if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
+                w = (np.abs(p.start_rpm[:, k]) + np.abs(p.end_rpm[:, k])) / 2.0 * p.duration[:, k]
+                largest = np.abs(torques[0])
+                if len(torques) > 1:
+                    largest = np.maximum(largest, np.abs(torques[1]))
+                cube = cube + w[:, col] * (largest * largest * largest)
+                weight = weight + w
+            for torque in torques:
+                magnitude = np.abs(torque)
+                if brakes:
+                    take = braking & (magnitude > decel_abs)
+                    decel = np.where(take, torque, decel)
+                    decel_abs = np.where(take, magnitude, decel_abs)
+                if drives:
+                    take = ~braking & (magnitude > accel_abs)
+                    accel = np.where(take, torque, accel)
+                    accel_abs = np.where(take, magnitude, accel_abs)
+                if runs:
+                    take = steady & (magnitude > constant_abs)
+                    constant = np.where(take, torque, constant)
+                    constant_abs = np.where(take, magnitude, constant_abs)
+        rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
+        gear_cube = cube / weight[:, col]
+        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares, speeds)
+        thermal_speed = _thermal_speed(cases, gains, speeds)
+    unknown = np.isnan(cat.inertia)  # no J_A: no torques (the candidate's None)
+    accel_torque, decel_torque, constant_torque = accel, decel, constant
+    if unknown.any():  # each array is of the block's shape: unchanged where J_A is known
+        accel_torque = np.where(unknown, math.nan, accel)
+        decel_torque = np.where(unknown, math.nan, decel)
+        rms_torque = np.where(unknown, math.nan, rms_torque)
+        thermal_torque = np.where(unknown, math.nan, thermal_torque)
+        constant_torque = np.where(unknown, math.nan, constant)
+        gear_cube = np.where(unknown, math.nan, gear_cube)
+    zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
+    if cat.zone_columns.size:
+        zone_torque = np.full(shape, math.nan)
+        zone_torque[:, cat.zone_columns] = zone_limits
+    q = operands_of(
+        case_operands(cases),
+        cat.operands,
+        {
+            "accel_torque_nm": accel_torque,
+            "decel_torque_nm": decel_torque,
+            "rms_torque_nm": rms_torque,
+            "zone_torque_nm": zone_torque,
+            "thermal_time_constant_s": gains.time_constant,
+            "thermal_time_constant_assumed": gains.assumed,
+            "thermal_torque_nm": thermal_torque,
+            "thermal_speed_rpm": thermal_speed,
+            "gear_torque_cube_nm3": gear_cube,
+        },
+    )
+    with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes
+        results = [_status_codes(r, q, cat, detail=detail) for r in rules]
+    details = [d for _, _, d in results if d is not None]
+    overload = np.zeros(shape)
+    for _, over, _ in results:
+        np.maximum(overload, over, out=overload)
+    return Block(
+        accel_torque=accel_torque,
+        constant_torque=constant_torque,
+        decel_torque=decel_torque,
+        rms_torque=rms_torque,
+        statuses=tuple(codes for codes, _, _ in results),
+        overload=overload,
+        details=tuple(details) if detail else None,
+        operands=q if detail else None,
+    )
+
+
+def operands_of(
+    case: Mapping[str, Any], catalogue: Mapping[str, Any], cell: Mapping[str, Any]
+) -> Operands:
+    """The rules' operands, built by name in this one place: the case's
+    (:func:`~actuator_selection.sizing.engine.cases.case_operands`, columns of cases), the
+    catalogue's (:data:`~actuator_selection.sizing.engine.catalogue.CATALOGUE_OPERANDS`,
+    rows of actuators) and the cell's (cases × actuators: the cycle's torques on each
+    actuator, the zone's edge, the heating). A name given twice, or one missing, raises."""
+    return Operands(**case, **catalogue, **cell)
+
+
+def blocks(actuators: Sequence[Actuator], apps: Sized) -> list[tuple[int, int]]:
+    rows = max(1, _BLOCK_CELLS // max(1, len(actuators)))
+    return [(start, min(start + rows, len(apps))) for start in range(0, len(apps), rows)]

@@ -1,0 +1,295 @@
+"""The load cases as the engine reads them: rows of their cycles' pieces and figures,
+output loads and τ_th, and each case's operands by name (:func:`case_operands`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.bearing import swing_deg
+from actuator_selection.sizing.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
+from actuator_selection.sizing.engine.arrays import BoolArray, FloatArray, IndexArray
+from actuator_selection.sizing.motion import (
+    CycleFigures,
+    PieceArrays,
+    cycle_figures,
+    figures_of,
+    piece_arrays,
+    trapezoid_piece_arrays,
+)
+from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
+
+OUTPUT_LOAD_FIELDS = (
+    "radial_force_n",
+    "axial_force_n",
+    "radial_lever_m",
+    "axial_lever_m",
+    "load_factor",
+    "static_safety_min",
+    "required_life_h",
+)
+"""The output load's fields, as :class:`Operands` and ``OutputLoad`` name them."""
+
+REQUEST_FIELDS = (
+    "gear_required_life_h",
+    "momentary_torque_nm",
+    "momentary_count",
+    "min_natural_frequency_hz",
+    "brake_safety_factor",
+    "emergency_stops",
+    "drop_torque_nm",
+    "travel_mm_per_rad",
+)
+"""The request's further inputs (gear, stiffness, brake) and what the brake's drop reads
+of the axis, as :class:`Operands` and ``Application`` name them; NaN where not given."""
+
+
+def default_requests(size: int) -> FloatArray:
+    """:data:`REQUEST_FIELDS` of ``size`` cases that name none: NaN, the brake's safety
+    factor its default (``Application.brake_safety_factor``)."""
+    requests = np.full((size, len(REQUEST_FIELDS)), math.nan)
+    requests[:, REQUEST_FIELDS.index("brake_safety_factor")] = DEFAULT_BRAKE_SAFETY_FACTOR
+    return requests
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Cases:
+    """The load cases as rows: their cycles' pieces and figures."""
+
+    pieces: PieceArrays
+    figures: CycleFigures
+    load_inertia: FloatArray
+    high_dynamics: BoolArray
+    output_load: FloatArray
+    """The output load per case (cases × :data:`OUTPUT_LOAD_FIELDS`); NaN where none."""
+    thermal_time_constant: FloatArray
+    """τ_th per case where the catalogue gives none: the case's, else the default."""
+    thermal_assumed: BoolArray
+    """Whether that τ_th is the assumed default."""
+    requests: FloatArray
+    """The further inputs per case (cases × :data:`REQUEST_FIELDS`); NaN where not given."""
+
+    @property
+    def size(self) -> int:
+        return self.load_inertia.size
+
+    @property
+    def mean_speed(self) -> FloatArray:
+        return self.figures.mean_speed_rpm
+
+    def rows(self, start: int, stop: int) -> Cases:
+        """The cases ``start:stop``."""
+        if start == 0 and stop >= self.size:
+            return self
+        return self.take(slice(start, stop))
+
+    def take(self, index: slice | IndexArray) -> Cases:
+        """The cases at ``index`` (a slice, or row numbers, repeated as often as given)."""
+        p, f = self.pieces, self.figures
+        return Cases(
+            pieces=PieceArrays(**{x.name: getattr(p, x.name)[index] for x in fields(p)}),
+            figures=CycleFigures(**{x.name: getattr(f, x.name)[index] for x in fields(f)}),
+            load_inertia=self.load_inertia[index],
+            high_dynamics=self.high_dynamics[index],
+            output_load=self.output_load[index],
+            thermal_time_constant=self.thermal_time_constant[index],
+            thermal_assumed=self.thermal_assumed[index],
+            requests=self.requests[index],
+        )
+
+
+def cases_of(apps: Sequence[Application]) -> Cases:
+    shorthand = [(a.pattern, a.load) for a in apps if a.pattern is not None and a.load]
+    if len(shorthand) == len(apps):  # the chapter's trapezoids only: as columns
+
+        def column(values: list[float]) -> FloatArray:
+            return np.array(values, dtype=np.float64)
+
+        inertia = column([load.inertia_kgm2 for _, load in shorthand])
+        pieces = trapezoid_piece_arrays(
+            speed_rpm=column([p.speed_rpm for p, _ in shorthand]),
+            accel_s=column([p.accel_s for p, _ in shorthand]),
+            constant_s=column([p.constant_s for p, _ in shorthand]),
+            decel_s=column([p.decel_s for p, _ in shorthand]),
+            pause_s=column([p.pause_s for p, _ in shorthand]),
+            torque_nm=column([load.torque_nm for _, load in shorthand]),
+            inertia_kgm2=inertia,
+        )
+    else:
+        motions = [a.cycle for a in apps]
+        pieces = piece_arrays(motions)
+        inertia = np.array([m.load.inertia_kgm2 for m in motions], dtype=np.float64)
+    # A profile already computed holds its cycle's figures (a single selection's).
+    profiles = [p for p in (a.known_profile for a in apps) if p is not None]
+    figures = figures_of(profiles) if len(profiles) == len(apps) else cycle_figures(pieces)
+    return Cases(
+        pieces=pieces,
+        figures=figures,
+        load_inertia=inertia,
+        high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
+        output_load=_output_loads(apps),
+        thermal_time_constant=np.array(
+            [
+                DEFAULT_THERMAL_TIME_CONSTANT_S if tau is None else tau
+                for tau in (a.thermal_time_constant_s for a in apps)
+            ],
+            dtype=np.float64,
+        ),
+        thermal_assumed=np.array([a.thermal_time_constant_s is None for a in apps], dtype=np.bool_),
+        requests=np.array(
+            [
+                [math.nan if v is None else v for v in (getattr(a, n) for n in REQUEST_FIELDS)]
+                for a in apps
+            ],
+            dtype=np.float64,
+        ).reshape(len(apps), len(REQUEST_FIELDS)),
+    )
+
+
+def swing_of(cases: Cases) -> FloatArray:
+    """Each case's swing (:func:`~actuator_selection.sizing.bearing.swing_deg`) where it has
+    an output load, NaN elsewhere, as the rules read it."""
+    loaded = ~np.isnan(cases.output_load[:, 0])
+    if not loaded.any():
+        return np.full(cases.size, math.nan)
+    p = cases.pieces
+    columns = zip(
+        p.duration.T, p.start_rpm.T, p.end_rpm.T, p.accel_start.T, p.accel_end.T, strict=True
+    )
+    with np.errstate(all="ignore"):
+        swing = swing_deg(columns, np.where)
+    return np.asarray(np.where(loaded, swing, math.nan), dtype=np.float64)
+
+
+def _output_loads(apps: Sequence[Application]) -> FloatArray:
+    nan = math.nan
+    rows = [
+        [nan] * len(OUTPUT_LOAD_FIELDS)
+        if a.output_load is None
+        else [
+            nan if v is None else v
+            for v in (getattr(a.output_load, name) for name in OUTPUT_LOAD_FIELDS)
+        ]
+        for a in apps
+    ]
+    return np.array(rows, dtype=np.float64).reshape(len(apps), len(OUTPUT_LOAD_FIELDS))
+
+
+def zone_limits(
+    actuators: Sequence[Actuator], columns: IndexArray, mean_speed: FloatArray
+) -> FloatArray:
+    """ContinuousDutyZone.torque_limit_nm(n_av) per case × zone column; NaN beyond the zone."""
+    limits = np.full((mean_speed.size, columns.size), math.nan)
+    for k, j in enumerate(columns.tolist()):
+        zone = actuators[j].zone
+        assert zone is not None
+        speeds = np.array([p.speed_rpm for p in zone.points], dtype=np.float64)
+        torques = np.array([p.torque_nm for p in zone.points], dtype=np.float64)
+        last = speeds.size - 1
+        i = np.searchsorted(speeds, mean_speed, side="right")  # bisect_right
+        limits[:, k] = _zone_edge(mean_speed, i, np.minimum(i, last), speeds, torques, last)
+    return limits
+
+
+def _zone_edge(
+    mean_speed: FloatArray,
+    i: IndexArray,
+    b: IndexArray,
+    speeds: FloatArray,
+    torques: FloatArray,
+    last: Any,
+) -> FloatArray:
+    """The zone's edge at n_av, between its points ``b − 1`` and ``b`` (``i``: bisect_right
+    of n_av in the speeds, ``last`` the last point), NaN beyond the zone; ``speeds`` and
+    ``torques`` indexed by point number along their last axis."""
+
+    def at(points: Any) -> Any:
+        if speeds.ndim == 1:
+            return speeds[points], torques[points]
+        index = np.asarray(points)[:, np.newaxis]
+        return (
+            np.take_along_axis(speeds, index, axis=1)[:, 0],
+            np.take_along_axis(torques, index, axis=1)[:, 0],
+        )
+
+    (speed_a, torque_a), (speed_b, torque_b) = at(b - 1), at(b)
+    speed_last, torque_last = at(last)
+    with np.errstate(all="ignore"):  # rows outside the zone are masked below
+        share = (mean_speed - speed_a) / (speed_b - speed_a)
+        edge = torque_a + share * (torque_b - torque_a)
+    edge = np.where(i > last, torque_last, edge)
+    inside = (mean_speed >= 0) & (mean_speed <= speed_last)
+    return np.asarray(np.where(inside, edge, math.nan), dtype=np.float64)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class ZoneTable:
+    """The continuous-duty zones of a catalogue as one table, for the zone's edge of
+    given (case, actuator) pairs (:meth:`edges`): each zone's points padded to the
+    longest with speeds beyond every n_av."""
+
+    row: IndexArray
+    """Per actuator, its row of the table; −1: no zone."""
+    speeds: FloatArray
+    torques: FloatArray
+    last: IndexArray
+    """Per row, its last point."""
+
+    def edges(self, columns: IndexArray, mean_speed: FloatArray) -> FloatArray:
+        """:func:`zone_limits` of actuator ``columns[p]`` at ``mean_speed[p]``, pair by
+        pair; NaN where the actuator has no zone."""
+        rows = self.row[columns]
+        has = rows >= 0
+        out = np.full(columns.size, math.nan)
+        if not has.any() or self.speeds.size == 0:
+            return out
+        r, speed = rows[has], mean_speed[has]
+        speeds, torques, last = self.speeds[r], self.torques[r], self.last[r]
+        i = (speeds <= speed[:, np.newaxis]).sum(axis=1)  # bisect_right
+        out[has] = _zone_edge(speed, i, np.minimum(i, last), speeds, torques, last)
+        return out
+
+
+def zone_table(actuators: Sequence[Actuator]) -> ZoneTable:
+    """The zones of ``actuators`` as a :class:`ZoneTable`."""
+    zones = [(j, a.zone) for j, a in enumerate(actuators) if a.zone is not None]
+    width = max((len(z.points) for _, z in zones), default=0)
+    speeds = np.full((len(zones), width), math.inf)
+    torques = np.full((len(zones), width), math.nan)
+    row = np.full(len(actuators), -1, dtype=np.intp)
+    last = np.zeros(len(zones), dtype=np.intp)
+    for k, (j, zone) in enumerate(zones):
+        n = len(zone.points)
+        speeds[k, :n] = [p.speed_rpm for p in zone.points]
+        torques[k, :n] = [p.torque_nm for p in zone.points]
+        row[j], last[k] = k, n - 1
+    return ZoneTable(row=row, speeds=speeds, torques=torques, last=last)
+
+
+def case_operands(cases: Cases) -> dict[str, Any]:
+    """The operands of each case by name, as columns (cases × 1): its speed, load and
+    cycle figures, the output load and the swing (:func:`~actuator_selection.sizing.engine.
+    block.operands_of`)."""
+    col = np.newaxis
+    f = cases.figures
+    return {
+        "speed_rpm": f.peak_speed_rpm[:, col],
+        "load_inertia_kgm2": cases.load_inertia[:, col],
+        "high_dynamics": cases.high_dynamics[:, col],
+        "mean_speed_rpm": f.mean_speed_rpm[:, col],
+        "accel_torque_floor_nm": f.accel_floor_nm[:, col],
+        "decel_torque_floor_nm": f.decel_floor_nm[:, col],
+        "rms_torque_floor_nm": f.rms_floor_nm[:, col],
+        "load_torque_nm": cases.pieces.holding[:, col],
+        "decel_s": f.braking_s[:, col],
+        **{name: cases.output_load[:, k, col] for k, name in enumerate(OUTPUT_LOAD_FIELDS)},
+        "swing_deg": swing_of(cases)[:, col],
+        "cycle_s": f.cycle_s[:, col],
+        **{name: cases.requests[:, k, col] for k, name in enumerate(REQUEST_FIELDS)},
+    }

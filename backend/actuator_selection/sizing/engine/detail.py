@@ -1,0 +1,234 @@
+"""A candidate's detail: the engine's decisions for chosen cells, as
+:class:`~actuator_selection.sizing.candidates.Candidate` objects whose checks are each
+rule's :meth:`~actuator_selection.sizing.checks.Rule.report` of the arrays' decision, value
+and limit, built, with their words, when first read."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.candidates import Candidate
+from actuator_selection.sizing.checks import Check, DeferredChecks, Operands, Rule
+from actuator_selection.sizing.deferred import Deferred
+from actuator_selection.sizing.engine.arrays import (
+    PASS,
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    CodeArray,
+    IndexArray,
+)
+from actuator_selection.sizing.engine.block import Block
+from actuator_selection.sizing.motion import CycleTorques, Motion, Profile
+
+
+def detail_cells(
+    actuators: Sequence[Actuator],
+    rules: Sequence[Rule],
+    block: Block,
+    verdicts: CodeArray,
+    rows: IndexArray,
+    columns: IndexArray,
+    profiles: Sequence[Profile],
+) -> list[Candidate]:
+    """The candidates of the cells (``rows``, ``columns``) of a block evaluated with
+    ``detail``: their torques, and each rule's check in words
+    (:meth:`~actuator_selection.sizing.checks.Rule.report`) from the decisions, values and
+    limits of the arrays and the operands of the cell, as floats. Equal to
+    :func:`~actuator_selection.sizing.selection.evaluate` of the cell (the tests compare
+    them with ``==``); the checks are built, and their words written, when first read."""
+    assert block.details is not None
+    assert block.operands is not None
+    shape = block.accel_torque.shape
+
+    def cells(array: Any) -> list[Any]:
+        return _picked(array, shape, rows, columns)
+
+    codes = [np.broadcast_to(c, shape)[rows, columns] for c in block.statuses]
+    not_passing: list[list[int]] = [[] for _ in range(rows.size)]
+    failing, cells_failing = np.nonzero(np.array(codes).reshape(len(codes), rows.size) > PASS)
+    for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
+        not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
+    decided = _Decided(
+        rules,
+        [
+            (
+                rule_codes.tolist(),
+                cells(d.values),
+                cells(d.limits),
+                cells(d.approximate),
+                cells(d.first_missing),
+            )
+            for rule_codes, d in zip(codes, block.details, strict=True)
+        ],
+        not_passing,
+        block.operands,
+        cells,
+    )
+    torques = zip(
+        cells(block.accel_torque),
+        cells(block.constant_torque),
+        cells(block.decel_torque),
+        cells(block.rms_torque),
+        strict=True,
+    )
+    cell_verdicts = cells(verdicts)
+    out = []
+    for cell, (row, column, verdict, cell_torques) in enumerate(
+        zip(rows.tolist(), columns.tolist(), cell_verdicts, torques, strict=True)
+    ):
+        actuator = actuators[column]
+        out.append(
+            Candidate(
+                actuator=actuator,
+                verdict=VERDICT_BY_CODE[verdict],
+                torques=_cycle_torques(actuator, profiles[row], *cell_torques),
+                checks=_DecidedChecks(decided, cell),  # type: ignore[arg-type]
+            )
+        )
+    return out
+
+
+class CycleOf(Deferred):
+    """A case's motion (:attr:`~actuator_selection.sizing.selection.Application.cycle`), built
+    when its profile's motion or pieces are first read, once for both."""
+
+    __slots__ = ("_app", "_motion")
+
+    def __init__(self, app: Application) -> None:
+        self._app = app
+        self._motion: Motion | None = None
+
+    def resolve(self) -> Motion:
+        if self._motion is None:
+            self._motion = self._app.cycle
+        return self._motion
+
+
+Column = tuple[list[int], list[float], list[float], list[bool], list[int]]
+"""One rule's decisions for the cells detailed: status codes, values, limits,
+approximations and first missing requirements (−1: none)."""
+
+
+def _picked(array: Any, shape: tuple[int, ...], rows: IndexArray, columns: IndexArray) -> list[Any]:
+    """The cells (``rows``, ``columns``) of ``array`` broadcast to ``shape`` (cases ×
+    actuators), as Python values: a column of cases, a row of actuators and a scalar
+    are indexed as they are, without broadcasting them first."""
+    a = np.asarray(array)
+    if a.size == 1:  # a scalar, or one cell (a 1 × 1 view's arrays): the same everywhere
+        picked: list[Any] = [a.item()] * rows.size
+    elif a.ndim == 2 and a.shape[1] == 1:  # a column of cases
+        picked = a[rows, 0].tolist()
+    elif a.ndim == 1 and a.shape[0] == shape[1]:  # a row of actuators
+        picked = a[columns].tolist()
+    elif a.shape == shape:
+        picked = a[rows, columns].tolist()
+    else:
+        picked = np.broadcast_to(a, shape)[rows, columns].tolist()
+    return picked
+
+
+class _Decided:
+    """The rules' decisions for the cells of a block that are detailed."""
+
+    __slots__ = ("_cells", "_operands", "_source", "columns", "not_passing", "rules")
+
+    def __init__(
+        self,
+        rules: Sequence[Rule],
+        columns: list[Column],
+        not_passing: list[list[int]],
+        source: Operands,
+        cells: Callable[[Any], list[Any]],
+    ) -> None:
+        self.rules, self.columns, self.not_passing = rules, columns, not_passing
+        self._source, self._cells = source, cells
+        self._operands: list[list[Any]] | None = None
+
+    def operands_of(self, cell: int) -> Operands:
+        """What the rules computed from for ``cell``: needed only to word a check, so
+        built only for a candidate whose checks or reasons are read (each of
+        :class:`Operands`' fields for every cell detailed, as floats, on the first)."""
+        if self._operands is None:
+            self._operands = [self._cells(operand) for operand in self._source]
+        return Operands._make([field[cell] for field in self._operands])
+
+    def check(self, k: int, q: Operands, cell: int) -> Check:
+        """Rule ``k``'s check of ``cell`` (its operands ``q``), with its words: a batch
+        candidate's checks are built only to be listed in words (``include_checks``)."""
+        codes, values, limits, approximate, missing = self.columns[k]
+        first = missing[cell]
+        return self.rules[k].report(
+            q,
+            STATUS_BY_CODE[codes[cell]],
+            values[cell],
+            limits[cell],
+            approximate[cell],
+            None if first < 0 else first,
+        )
+
+    def reasons(self, q: Operands, cell: int) -> list[str]:
+        """The words of the rules that do not pass for ``cell`` (its operands ``q``)."""
+        out = []
+        for k in self.not_passing[cell]:
+            codes, values, limits, _, missing = self.columns[k]
+            first = missing[cell]
+            out.append(
+                self.rules[k].words(
+                    q,
+                    STATUS_BY_CODE[codes[cell]],
+                    values[cell],
+                    limits[cell],
+                    None if first < 0 else first,
+                )
+            )
+        return out
+
+
+class _DecidedChecks(DeferredChecks):
+    """One candidate's checks as the arrays decided them, each built by the rule's
+    :meth:`~actuator_selection.sizing.checks.Rule.report` when first read."""
+
+    __slots__ = ("_cell", "_decided")
+
+    def __init__(self, decided: _Decided, cell: int) -> None:
+        self._decided, self._cell = decided, cell
+
+    def resolve(self) -> tuple[Check, ...]:
+        d, cell = self._decided, self._cell
+        q = d.operands_of(cell)
+        return tuple([d.check(k, q, cell) for k in range(len(d.rules))])
+
+    def reasons(self) -> list[str]:
+        d, cell = self._decided, self._cell
+        if not d.not_passing[cell]:
+            return []
+        return d.reasons(d.operands_of(cell), cell)
+
+
+def _cycle_torques(
+    actuator: Actuator,
+    profile: Profile,
+    accel: float,
+    constant: float,
+    decel: float,
+    rms: float,
+) -> CycleTorques | None:
+    """:meth:`~actuator_selection.sizing.motion.Profile.torques` from the arrays' values:
+    None without J_A; where a finite input overflowed a torque, the profile's own
+    computation raises the error that names the input."""
+    if actuator.inertia_kgm2 is None:
+        return None
+    if not (math.isfinite(accel) and math.isfinite(decel) and math.isfinite(rms)):
+        return profile.torques(actuator.inertia_kgm2)
+    return CycleTorques(
+        accel_torque_nm=accel,
+        constant_torque_nm=None if constant != constant else constant,
+        decel_torque_nm=decel,
+        rms_torque_nm=rms,
+    )

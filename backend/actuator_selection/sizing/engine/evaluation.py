@@ -1,0 +1,512 @@
+"""The engine: the flowchart for every load case × actuator, as arrays, block by block.
+
+:func:`evaluate_batch` keeps every array; :func:`rank_batch` ranks; :func:`select_batch`
+ranks and details the best of each case (:mod:`~actuator_selection.sizing.engine.detail`).
+One selection is the engine's 1 × N view (:func:`select`), one actuator's candidate its
+1 × 1 view (:func:`evaluate`): the same arrays, the same rules, whatever the size.
+
+Worked example (Table 516.1 against the FHA-25C-50-L of Table 516.3), two cases:
+
+>>> from actuator_selection.catalogue.actuators import Actuator
+>>> from actuator_selection.sizing.cycle import Load, SpeedPattern
+>>> fha = Actuator(model="FHA-25C-50-L", family="FHA-C", gear_ratio=50,
+...                max_torque_nm=151, max_speed_rpm=90, inertia_kgm2=0.86)
+>>> pattern = SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1)
+>>> apps = [Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3)),
+...         Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=3.0))]
+>>> ev = evaluate_batch([fha], apps)
+>>> [round(t, 2) for t in ev.accel_torque_nm[:, 0].tolist()]
+[95.48, 166.69]
+>>> [ev.verdict(i, 0).value for i in range(2)]
+['unconfirmed', 'unsuitable']
+>>> [s.candidates[0].verdict.value for s in select_batch([fha], apps, top=1)]
+['unconfirmed', 'unsuitable']
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Collection, Iterator, Sequence
+from dataclasses import dataclass
+from dataclasses import field as dataclasses_field
+
+import numpy as np
+import numpy.typing as npt
+
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.candidates import Candidate, Selection, Verdict
+from actuator_selection.sizing.checks import RULES, Rule, Status
+from actuator_selection.sizing.engine.arrays import (
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    BoolArray,
+    CodeArray,
+    FloatArray,
+    IndexArray,
+)
+from actuator_selection.sizing.engine.block import CHECK_NAMES, Block, blocks, evaluate_block
+from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
+from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
+from actuator_selection.sizing.engine.detail import CycleOf, detail_cells
+from actuator_selection.sizing.motion import figure_rows, profile_from
+
+
+@dataclass(frozen=True, slots=True, eq=False, kw_only=True)
+class BatchEvaluation:
+    """The flowchart for every case (rows) × actuator (columns), as arrays.
+
+    Torques are NaN where the actuator has no J_A (a candidate's ``torques`` is None).
+    Every number equals, bit for bit, what the plain-float oracle of the tests gives.
+    """
+
+    mean_speed_rpm: FloatArray
+    """n_av per case (Eq. 514.3) [rpm]."""
+    duty_cycle_percent: FloatArray
+    """ED per case (Eq. 514.4) [%]."""
+    cycle_time_s: FloatArray
+    """t_0 per case [s]."""
+    accel_torque_nm: FloatArray
+    """T_1 per case × actuator (Eq. 514.1) [Nm]."""
+    constant_torque_nm: FloatArray
+    """T_2 per case × actuator [Nm]; NaN where the cycle never runs at constant speed."""
+    decel_torque_nm: FloatArray
+    """T_3 per case × actuator [Nm]."""
+    rms_torque_nm: FloatArray
+    """T_rms per case × actuator (Eq. 514.2) [Nm]."""
+    statuses: CodeArray
+    """Status codes (:data:`STATUS_BY_CODE`), case × actuator × check (:attr:`check_names`)."""
+    verdicts: CodeArray
+    """Verdict codes (:data:`VERDICT_BY_CODE`), case × actuator."""
+    values: FloatArray
+    """Each check's value, case × actuator × check; NaN where unknown."""
+    limits: FloatArray
+    """Each check's limit, case × actuator × check; NaN where it has none."""
+    approximate: BoolArray
+    """Where a check's limit is a simplified stand-in, case × actuator × check."""
+    first_missing: CodeArray
+    """Per case × actuator × check, the index of the first requirement of the rule that
+    the catalogue does not meet (its ``what`` in :attr:`missing_what`); −1: none."""
+    worst_overload: FloatArray
+    """Per case × actuator, the largest overload of its checks
+    (:attr:`~actuator_selection.sizing.selection.Candidate.worst_overload`)."""
+    missing_what: tuple[tuple[str, ...], ...] = ()
+    """Per check, its requirements' ``what`` (:class:`~actuator_selection.sizing.checks.
+    Requirement`), in order."""
+    check_names: tuple[str, ...] = CHECK_NAMES
+    """The checks (the rules' names) along the last axis of :attr:`statuses`."""
+    rank_position: npt.NDArray[np.int32] = dataclasses_field(
+        default_factory=lambda: np.empty(0, dtype=np.int32)
+    )
+    """Each actuator's place in the static order (T_max, J_A, model) that breaks ties."""
+
+    def status(self, case: int, actuator: int, check: str) -> Status:
+        """The status of one check of one case and actuator."""
+        return STATUS_BY_CODE[int(self.statuses[case, actuator, self.check_names.index(check)])]
+
+    def missing(self, case: int, actuator: int, check: str) -> str | None:
+        """What the catalogue lacks for one check (``Check.missing``), or None."""
+        k = self.check_names.index(check)
+        index = int(self.first_missing[case, actuator, k])
+        return None if index < 0 else self.missing_what[k][index]
+
+    def verdict(self, case: int, actuator: int) -> Verdict:
+        """The verdict of one case and actuator."""
+        return VERDICT_BY_CODE[int(self.verdicts[case, actuator])]
+
+    def ranking(self, case: int) -> list[int]:
+        """The actuators of one case, best first
+        (:func:`~actuator_selection.sizing.selection.ranking_key`: verdict, worst overload,
+        then T_max, J_A and model)."""
+        order = np.lexsort((self.rank_position, self.worst_overload[case], self.verdicts[case]))
+        ranked: list[int] = order.tolist()
+        return ranked
+
+
+def evaluate_batch(
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> BatchEvaluation:
+    """Run the flowchart for every case × actuator and keep every array.
+
+    Parameters
+    ----------
+    actuators
+        The catalogue, columns in this order.
+    apps
+        The load cases, rows in this order.
+    rules
+        The checks (:data:`~actuator_selection.sizing.checks.RULES`: the chapter's).
+    arrays
+        ``catalogue_arrays(actuators)``, where the caller keeps it.
+
+    Memory grows with cases × actuators (about 40 bytes a cell); for ranking alone
+    use :func:`select_batch`, which keeps only the best of each case.
+    """
+    rules = rules_of(apps, rules)
+    cat = catalogue_arrays(actuators) if arrays is None else arrays
+    cases = cases_of(apps)
+    limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    shape = (len(apps), len(actuators))
+    accel, constant, decel, rms = (np.empty(shape) for _ in range(4))
+    checks = (*shape, len(rules))
+    statuses = np.empty(checks, dtype=np.int8)
+    values, limits = np.empty(checks), np.empty(checks)
+    approximate = np.empty(checks, dtype=np.bool_)
+    first_missing = np.empty(checks, dtype=np.int8)
+    verdicts = np.empty(shape, dtype=np.int8)
+    worst_overload = np.empty(shape)
+    for start, stop in blocks(actuators, apps):
+        rows = cases.rows(start, stop)
+        block = evaluate_block(cat, rows, limits_of_zones[start:stop], rules, detail=True)
+        assert block.details is not None
+        accel[start:stop] = block.accel_torque
+        constant[start:stop] = block.constant_torque
+        decel[start:stop] = block.decel_torque
+        rms[start:stop] = block.rms_torque
+        for k, (codes, detail) in enumerate(zip(block.statuses, block.details, strict=True)):
+            statuses[start:stop, :, k] = codes
+            values[start:stop, :, k] = detail.values
+            limits[start:stop, :, k] = detail.limits
+            approximate[start:stop, :, k] = detail.approximate
+            first_missing[start:stop, :, k] = detail.first_missing
+        verdicts[start:stop] = block.verdicts()
+        worst_overload[start:stop] = block.overload
+    return BatchEvaluation(
+        mean_speed_rpm=cases.figures.mean_speed_rpm,
+        duty_cycle_percent=cases.figures.duty_cycle_percent,
+        cycle_time_s=cases.figures.cycle_s,
+        accel_torque_nm=accel,
+        constant_torque_nm=constant,
+        decel_torque_nm=decel,
+        rms_torque_nm=rms,
+        statuses=statuses,
+        verdicts=verdicts,
+        values=values,
+        limits=limits,
+        approximate=approximate,
+        first_missing=first_missing,
+        worst_overload=worst_overload,
+        missing_what=tuple(tuple(need.what for need in rule.requires) for rule in rules),
+        check_names=tuple(rule.name for rule in rules),
+        rank_position=cat.rank_position,
+    )
+
+
+def _allowed_columns(
+    actuators: Sequence[Actuator], models: Sequence[Collection[str] | None]
+) -> list[BoolArray | None]:
+    """Per case, the columns its ``models`` list allows (None: every one)."""
+    column_of: dict[str, list[int]] = {}
+    for j, a in enumerate(actuators):
+        column_of.setdefault(a.model, []).append(j)
+    masks: dict[frozenset[str], BoolArray] = {}
+    allowed: list[BoolArray | None] = []
+    for names in models:
+        if names is None:
+            allowed.append(None)
+            continue
+        key = frozenset(names)
+        if key not in masks:
+            mask = np.zeros(len(actuators), dtype=np.bool_)
+            mask[[j for name in key for j in column_of.get(name, ())]] = True
+            masks[key] = mask
+        allowed.append(masks[key])
+    return allowed
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class RankedBlock:
+    """A block of cases ranked: its cases (from row ``start``), the flowchart's arrays, and
+    each row's best ``top`` columns with where they are kept (False past the actuators a
+    case's ``models`` allows)."""
+
+    start: int
+    cases: Cases
+    block: Block
+    verdicts: CodeArray
+    """The block's verdict codes (:data:`VERDICT_BY_CODE`), beyond them where a case's
+    ``models`` leave an actuator out."""
+    order: IndexArray
+    kept: BoolArray
+
+
+def ranked_blocks(
+    actuators: Sequence[Actuator],
+    cases: Cases,
+    *,
+    top: int,
+    models: Sequence[Collection[str] | None] | None,
+    rules: Sequence[Rule],
+    detail: bool,
+    arrays: CatalogueArrays | None = None,
+) -> Iterator[RankedBlock]:
+    """The cases ranked block by block (:func:`~actuator_selection.sizing.selection.
+    ranking_key`); ``detail``: with each check's values for the candidates' detail. The
+    arguments as :func:`select_batch` has checked them, ``rules`` resolved."""
+    cat = catalogue_arrays(actuators) if arrays is None else arrays
+    limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    allowed = _allowed_columns(actuators, models) if models is not None else None
+    excluded = np.int8(len(VERDICT_BY_CODE))  # a verdict code beyond every verdict
+    keep = min(top, len(actuators))
+    for start, stop in blocks(actuators, range(cases.size)):
+        rows = cases.rows(start, stop)
+        block = evaluate_block(cat, rows, limits_of_zones[start:stop], rules, detail=detail)
+        # ranking_key: verdict, the worst overload (0 unless unsuitable), then the
+        # actuator's place in the static order (T_max, J_A, model).
+        verdicts = block.verdicts()
+        if allowed is not None:
+            for row, mask in enumerate(allowed[start:stop]):
+                if mask is not None:
+                    verdicts[row, ~mask] = excluded
+        position = np.broadcast_to(cat.rank_position, verdicts.shape)
+        order = np.lexsort((position, block.overload, verdicts), axis=-1)[:, :keep]
+        kept = np.take_along_axis(verdicts, order, axis=1) < excluded
+        yield RankedBlock(
+            start=start, cases=rows, block=block, verdicts=verdicts, order=order, kept=kept
+        )
+
+
+def rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequence[Rule]:
+    """``rules``, or the rules the cases need (:attr:`Application.rules`), one set for all."""
+    if rules is not None:
+        return rules
+    needed = {app.rules for app in apps}
+    if len(needed) > 1:
+        raise InvalidInputError(
+            "brake",
+            "cases with different checks (with and without a brake or an output load) "
+            "need separate runs",
+        )
+    return needed.pop() if needed else RULES
+
+
+def check_arguments(cases: int, top: int, models: Sequence[Collection[str] | None] | None) -> None:
+    if top < 1:
+        raise InvalidInputError("top", "must be ≥ 1: the number of candidates kept per case")
+    if models is not None and len(models) != cases:
+        raise InvalidInputError("models", "needs one entry (or None) per load case")
+
+
+def rank_batch(
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    top: int = 3,
+    models: Sequence[Collection[str] | None] | None = None,
+    rules: Sequence[Rule] | None = None,
+) -> list[list[int]]:
+    """Per case, the indexes into ``actuators`` of its best ``top``, best first.
+
+    The ranking of :func:`select` (:func:`~actuator_selection.sizing.selection.ranking_key`)
+    without building the candidates; arguments as for :func:`select_batch`.
+    """
+    check_arguments(len(apps), top, models)
+    rules = rules_of(apps, rules)
+    chosen: list[list[int]] = []
+    for ranked in ranked_blocks(
+        actuators, cases_of(apps), top=top, models=models, rules=rules, detail=False
+    ):
+        chosen.extend(
+            [j for j, k in zip(row, row_kept, strict=True) if k]
+            for row, row_kept in zip(ranked.order.tolist(), ranked.kept.tolist(), strict=True)
+        )
+    return chosen
+
+
+def select_batch(
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    top: int = 3,
+    models: Sequence[Collection[str] | None] | None = None,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> list[Selection]:
+    """The best ``top`` candidates of every load case, ranked as :func:`select` ranks them.
+
+    Equal to ``select(actuators, app)`` with its candidates cut to ``top``, case by case
+    (and to ``select`` over the actuators named in ``models[i]``, where given): the
+    arrays rank and detail the chosen few (:func:`_detail`).
+
+    Parameters
+    ----------
+    actuators
+        The catalogue.
+    apps
+        The load cases.
+    top
+        Candidates kept per case, ≥ 1.
+    models
+        Per case, the model names it may use (None: the whole catalogue); names not in
+        ``actuators`` are ignored. None: every case uses the whole catalogue.
+    rules
+        The checks (:data:`~actuator_selection.sizing.checks.RULES`: the chapter's), for the
+        arrays and for the candidates alike.
+    """
+    check_arguments(len(apps), top, models)
+    rules = rules_of(apps, rules)
+    selections = []
+    ranked_cases = ranked_blocks(
+        actuators,
+        cases_of(apps),
+        top=top,
+        models=models,
+        rules=rules,
+        detail=True,
+        arrays=arrays,
+    )
+    for ranked in ranked_cases:
+        order, kept, figures, holding = (
+            ranked.order,
+            ranked.kept,
+            ranked.cases.figures,
+            ranked.cases.pieces.holding,
+        )
+        rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
+        cases = apps[ranked.start : ranked.start + order.shape[0]]
+        profiles = [
+            profile_from(CycleOf(app), app.axis_load, row_figures, row_holding)
+            for app, row_figures, row_holding in zip(
+                cases, figure_rows(figures), holding.tolist(), strict=True
+            )
+        ]
+        detailed = iter(
+            detail_cells(
+                actuators, rules, ranked.block, ranked.verdicts, rows, order[kept], profiles
+            )
+        )
+        for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):
+            selections.append(
+                Selection(
+                    mean_speed_rpm=profile.mean_speed_rpm,
+                    duty_cycle_percent=profile.duty_cycle_percent,
+                    cycle_time_s=profile.cycle_s,
+                    candidates=tuple(itertools.islice(detailed, count)),
+                    profile=profile,
+                )
+            )
+    return selections
+
+
+def evaluate_each(
+    actuators: Sequence[Actuator],
+    app: Application,
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> list[Candidate]:
+    """The candidate of each of ``actuators`` for ``app``, in their order: the engine's
+    1 × N view, each candidate detailed from the arrays (``rules``: by default
+    :attr:`~actuator_selection.sizing.application.Application.rules`)."""
+    rules = rules_of([app], rules)
+    if not actuators:
+        return []
+    app.profile  # noqa: B018 - computed first: the engine takes the profile's figures
+    cat = catalogue_arrays(actuators) if arrays is None else arrays
+    cases = cases_of([app])
+    block = evaluate_block(
+        cat,
+        cases,
+        zone_limits(actuators, cat.zone_columns, cases.mean_speed),
+        rules,
+        detail=True,
+    )
+    columns = np.arange(len(actuators), dtype=np.intp)
+    return detail_cells(
+        actuators,
+        rules,
+        block,
+        block.verdicts(),
+        np.zeros_like(columns),
+        columns,
+        [app.profile],
+    )
+
+
+def evaluate(
+    actuator: Actuator,
+    app: Application,
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> Candidate:
+    """The candidate of one actuator for ``app``: the engine's 1 × 1 view."""
+    (candidate,) = evaluate_each((actuator,), app, rules=rules, arrays=arrays)
+    return candidate
+
+
+def select(
+    actuators: Sequence[Actuator],
+    app: Application,
+    *,
+    rules: Sequence[Rule] | None = None,
+) -> Selection:
+    """Every actuator's candidate for ``app``, ranked
+    (:func:`~actuator_selection.sizing.candidates.ranking_key`): the engine's 1 × N view."""
+    if not actuators:
+        profile = app.profile
+        return Selection(
+            mean_speed_rpm=profile.mean_speed_rpm,
+            duty_cycle_percent=profile.duty_cycle_percent,
+            cycle_time_s=profile.cycle_s,
+            candidates=(),
+            profile=profile,
+        )
+    app.profile  # noqa: B018 - computed first: the engine takes the profile's figures
+    (selection,) = select_batch(actuators, [app], top=len(actuators), rules=rules)
+    return selection
+
+
+def evaluate_cases(
+    actuator: Actuator,
+    apps: Sequence[Application],
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> list[Candidate]:
+    """The candidate of one actuator for each of ``apps``: the engine's M × 1 view (the
+    inverse solve's probes, a batch of them at once)."""
+    if not apps:
+        return []
+    chosen = select_batch((actuator,), apps, top=1, rules=rules, arrays=arrays)
+    return [selection.candidates[0] for selection in chosen]
+
+
+def case_verdicts(
+    actuator: Actuator,
+    apps: Sequence[Application],
+    *,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> list[Verdict | None]:
+    """The verdict of one actuator for each of ``apps``: :func:`evaluate_cases`'
+    verdicts from the status codes alone, no candidate built and no check worded (the
+    inverse solve's probes, which decide on the verdict). None where a finite input
+    overflowed a torque: the candidate (:func:`evaluate_cases`) names the input."""
+    if not apps:
+        return []
+    rules = rules_of(apps, rules)
+    cat = catalogue_arrays((actuator,)) if arrays is None else arrays
+    cases = cases_of(apps)
+    limits_of_zones = zone_limits((actuator,), cat.zone_columns, cases.mean_speed)
+    known = actuator.inertia_kgm2 is not None
+    out: list[Verdict | None] = []
+    for start, stop in blocks((actuator,), apps):
+        block = evaluate_block(
+            cat, cases.rows(start, stop), limits_of_zones[start:stop], rules, detail=False
+        )
+        finite = (
+            np.isfinite(block.accel_torque[:, 0])
+            & np.isfinite(block.decel_torque[:, 0])
+            & np.isfinite(block.rms_torque[:, 0])
+        )
+        out.extend(
+            VERDICT_BY_CODE[code] if ok or not known else None
+            for code, ok in zip(block.verdicts()[:, 0].tolist(), finite.tolist(), strict=True)
+        )
+    return out

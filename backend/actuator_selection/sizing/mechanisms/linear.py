@@ -1,0 +1,115 @@
+"""What every linear axis shares: mm/s and N at the output, the checks of its inputs, the
+reflected mass, force and weight on an incline (first principles, see the package).
+"""
+
+from __future__ import annotations
+
+import math
+
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.sizing.axis import AxisLoad
+from actuator_selection.sizing.loads import _check, _check_result, _square
+from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
+
+MM_PER_M = 1000.0
+"""Millimetres in a metre: linear axes take their load speed in mm/s."""
+
+MAX_INCLINE_DEG = 90.0
+"""|θ| bound [°]: vertical. Beyond it the axis is the same one with its direction reversed."""
+
+
+def mm_to_m(length_mm: float) -> float:
+    """A length given in millimetres [mm] in metres [m].
+
+    >>> mm_to_m(10.0)
+    0.01
+    """
+    return length_mm / MM_PER_M
+
+
+def rpm_per_mm_per_s(radius_m: float) -> float:
+    """Shaft speed [rpm] per mm/s of a load moving at v = r·ω.
+
+    n = v/r · 60/2π with v in m/s: 1/(1000·r·2π/60) rpm per mm/s.
+
+    A 50 mm pulley (r = 25 mm) turns 60/(2π·25) rpm per mm/s:
+
+    >>> round(rpm_per_mm_per_s(0.025), 6), round(60 / (2 * math.pi * 25), 6)
+    (0.381972, 0.381972)
+    """
+    return 1.0 / (MM_PER_M * radius_m * RAD_PER_S_PER_RPM)
+
+
+def _speed_factor(radius_m: float, field: str) -> float:
+    """:func:`rpm_per_mm_per_s`, or an error naming ``field`` where r is too small for it."""
+    denominator = MM_PER_M * radius_m * RAD_PER_S_PER_RPM
+    if denominator == 0 or radius_m * radius_m == 0:
+        raise InvalidInputError(field, code="radius_vanishes")
+    speed = 1.0 / denominator
+    _check_result(field, speed, what=N_("n per mm/s = 1/(1000·r·2π/60)"))
+    return speed
+
+
+def _check_efficiency(field: str, value: float, *, what: Text) -> None:
+    if not math.isfinite(value):
+        raise InvalidInputError(field, code="not_finite", params={"value": value})
+    if value <= 0:
+        raise InvalidInputError(field, code="efficiency_positive", params={"what": what})
+    if value > 1:
+        raise InvalidInputError(field, code="efficiency_above_one", params={"what": what})
+
+
+def _check_incline(field: str, value: float) -> None:
+    if not math.isfinite(value):
+        raise InvalidInputError(field, code="not_finite", params={"value": value})
+    if abs(value) > MAX_INCLINE_DEG:
+        raise InvalidInputError(field, code="incline_range")
+
+
+def _sin_cos(incline_deg: float) -> tuple[float, float]:
+    """sin θ and cos θ, exact at 0° and ±90° (a vertical axis has no guide friction at all,
+    not μ·m·g·6·10⁻¹⁷)."""
+    if incline_deg == 0:
+        return 0.0, 1.0
+    if abs(incline_deg) == MAX_INCLINE_DEG:
+        return math.copysign(1.0, incline_deg), 0.0
+    theta = math.radians(incline_deg)
+    return math.sin(theta), math.cos(theta)
+
+
+def _nonnegative(field: str, value: float, rule: Text) -> None:
+    _check(field, value, positive=False, rule=rule)
+
+
+def _linear_axis(
+    *,
+    radius_m: float,
+    radius_field: str,
+    rotating_inertia_kgm2: float,
+    moving_mass_kg: float,
+    gravity_force_n: float,
+    friction_force_n: float,
+    efficiency: float,
+) -> AxisLoad:
+    """The :class:`AxisLoad` of a linear axis with v = r·ω (first principles, module doc).
+
+    J_L = J_rot + m_moving·r²,  T_G = F_G·r,  T_F = F_F·r.
+    """
+    speed = _speed_factor(radius_m, radius_field)
+    inertia = rotating_inertia_kgm2 + moving_mass_kg * _square(radius_m)
+    gravity = gravity_force_n * radius_m
+    friction = friction_force_n * radius_m
+    _check_result(radius_field, inertia, what=N_("J_L = J + m·r²"))
+    _check_result(radius_field, gravity, what=N_("T_G = F_G·r"))
+    _check_result(radius_field, friction, what=N_("T_F = F_F·r"))
+    return AxisLoad(
+        inertia_kgm2=inertia,
+        friction_torque_nm=friction,
+        gravity_torque_nm=gravity,
+        efficiency=efficiency,
+        speed_rpm_per_unit=speed,
+        torque_nm_per_force_unit=radius_m,
+        speed_unit="mm/s",
+        force_unit="N",
+    )

@@ -1,0 +1,508 @@
+"""The ratio study (issue 31 part 1): for every actuator of the catalogue, the interval(s)
+of a free transmission value (an external gear ratio i, a screw lead, a pulley or pinion
+diameter) for which no check fails, and the value that minimises the binding utilisation.
+
+The free value enters as the load case does today: ``vary(x)`` builds the application at
+``x`` through the mechanisms' own reflection (:func:`~actuator_selection.sizing.mechanisms.
+with_transmission` for a ratio: speed ×i, torque ÷i, inertia ÷i² plus J_tr, η by the power
+flow; the mechanism's own lead or diameter otherwise), so the study and a selection at
+that value are the same flowchart on the same numbers.
+
+The search runs on the engine, vectorised over cases × actuators:
+
+1. a geometric grid of the range (or the standard series given) as the cases, the whole
+   catalogue as the columns, block by block (:func:`~actuator_selection.sizing.engine.
+   block.evaluate_block`), keeping per cell only the verdict, the binding utilisation
+   and which checks fail, no check worded;
+2. every change of the verdict between neighbouring grid values, for every actuator, is
+   a bracket; all brackets are bisected together, on the engine's pairs
+   (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`: each bracket's midpoint
+   on its own actuator, not every midpoint on every actuator), :data:`BISECTION_DEPTH`
+   halvings to an engine call, so several intervals per actuator are found where the
+   checks are not monotonic;
+3. the grid value of least binding utilisation (max value/limit over the checks,
+   :func:`~actuator_selection.sizing.checks.rule.utilisation`) is refined by parabolic
+   steps in log x (a passing value only, and only where it lowers the utilisation), all
+   actuators together, in the same engine calls as the bisection.
+
+The numbers are those of evaluating every value on every actuator
+(``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
+compare with this one, ``==``): only fewer cells are computed. Where the caller can build
+the load cases at many values as columns (:func:`geared_cases`: an external ratio on the
+chapter's trapezoid), no application is built per value.
+
+Analytic cross-check (H.-J. Van de Straete, J. De Schutter, R. Belmans, "An efficient procedure for
+checking performance limits in servo drive selection and optimization", IEEE/ASME Trans.
+Mechatronics 4(4), 1999, pp. 378–386; Giberti, Cinquemani, Legnani, "A practical approach
+to the selection of the motor-reducer unit in electric drive systems", Mech. Based Des.
+Struct. Mach. 39(3), 2011, pp. 303–319): for a pure inertia load J_L driven at the load
+acceleration ε_L through a ratio i, the motor-side torque is T(i) = (J_A·i + J_L/i)·ε_L,
+minimal at i* = √(J_L/J_A) (Giberti's "optimal transmission ratio"); the peak-torque
+condition T(i) ≤ T_max bounds i to the roots of J_A·ε_L·i² − T_max·i + J_L·ε_L = 0.
+:func:`inertia_matched_ratio` gives i*; the tests check the numeric search against both.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Generator, Sequence
+from dataclasses import dataclass
+from typing import cast
+
+import numpy as np
+
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.candidates import Verdict
+from actuator_selection.sizing.checks import Rule, Status
+from actuator_selection.sizing.cycle import Load
+from actuator_selection.sizing.engine import (
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    BoolArray,
+    CatalogueArrays,
+    CodeArray,
+    FloatArray,
+    IndexArray,
+    catalogue_arrays,
+)
+from actuator_selection.sizing.engine.block import Block, blocks, evaluate_block
+from actuator_selection.sizing.engine.cases import (
+    Cases,
+    ZoneTable,
+    cases_of,
+    zone_limits,
+    zone_table,
+)
+from actuator_selection.sizing.engine.evaluation import rules_of
+from actuator_selection.sizing.engine.pairs import evaluate_pairs
+from actuator_selection.sizing.loads import _square
+from actuator_selection.sizing.mechanisms import Transmission, with_transmission
+from actuator_selection.sizing.motion import Motion, cycle_figures, trapezoid_piece_arrays
+
+GRID_POINTS = 48
+"""Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
+BISECTION_STEPS = 12
+"""Halvings of every bracket: a grid step of 6.5 % narrowed to 1.6·10⁻⁵ relative."""
+BISECTION_DEPTH = 2
+"""Halvings per engine call (:func:`_bisection`): 3 values a bracket, 6 calls, the
+parabolic steps' beside them (fewer calls cost more values, each a load case built)."""
+REFINE_ROUNDS = 3
+"""Parabolic steps for the best value (one engine call each, after the first, beside the
+bisection's)."""
+MAX_SERIES = 200
+"""The most values of a standard series."""
+
+_FAIL = VERDICT_BY_CODE.index(Verdict.UNSUITABLE)
+_CHECK_FAIL = STATUS_BY_CODE.index(Status.FAIL)
+_CODE_FAIL = np.int8(_CHECK_FAIL)
+
+
+def inertia_matched_ratio(load_inertia_kgm2: float, actuator_inertia_kgm2: float) -> float:
+    """i* = √(J_L/J_A): the ratio of least peak torque for a pure inertia load, the inertia
+    match (Giberti et al. 2011; Van de Straete et al. 1999).
+
+    >>> inertia_matched_ratio(0.5, 0.02)
+    5.0
+    """
+    return math.sqrt(load_inertia_kgm2 / actuator_inertia_kgm2)
+
+
+def geared(app: Application, transmission: Transmission) -> Application:
+    """``app`` behind an external ratio i (between the actuator output and the load, in
+    series with any the mechanism has): the cycle's speeds ×i and process torques ÷i, the
+    load through :func:`~actuator_selection.sizing.mechanisms.with_transmission` (J_L/i² +
+    J_tr, T/i, η_tr·η by the power flow). At i = 1 with J_tr = 0 and η = 1 it is ``app``'s
+    own load case."""
+    i = transmission.ratio
+    if app.pattern is not None and app.load is not None and transmission.efficiency == 1:
+        # the chapter's shorthand stays one (T_L as friction, η = 1): the numbers of
+        # with_transmission, and the engine's trapezoid columns
+        pattern, load = app.pattern, app.load
+        return dataclasses.replace(
+            app,
+            pattern=dataclasses.replace(pattern, speed_rpm=pattern.speed_rpm * i),
+            load=Load(
+                torque_nm=load.torque_nm / i,
+                inertia_kgm2=transmission.inertia_kgm2 + load.inertia_kgm2 / _square(i),
+            ),
+        )
+    motion = app.cycle
+    segments = tuple(
+        dataclasses.replace(
+            s,
+            start_rpm=s.start_rpm * transmission.ratio,
+            end_rpm=s.end_rpm * transmission.ratio,
+            process_torque_nm=s.process_torque_nm / transmission.ratio,
+        )
+        for s in motion.segments
+    )
+    axis = with_transmission(motion.load, transmission)
+    return dataclasses.replace(
+        app, pattern=None, load=None, motion=Motion(segments=segments, load=axis)
+    )
+
+
+def geared_cases(
+    app: Application, transmission_inertia_kgm2: float
+) -> Callable[[FloatArray], Cases] | None:
+    """:func:`geared` at many ratios at once, as the engine's load cases: the trapezoid's
+    speed ×i, T_L ÷i, J_L/i² + J_tr as columns (what :func:`geared` computes for each
+    ratio, the same operations), the rest of ``app``'s case repeated. None where
+    :func:`geared` leaves the chapter's shorthand (η_tr < 1, a cycle of segments)."""
+    pattern, load = app.pattern, app.load
+    if pattern is None or load is None:
+        return None
+    base = cases_of([app])
+
+    def at(ratios: FloatArray) -> Cases:
+        def repeated(value: float) -> FloatArray:
+            return np.full(ratios.size, value)
+
+        pieces = trapezoid_piece_arrays(
+            speed_rpm=pattern.speed_rpm * ratios,
+            accel_s=repeated(pattern.accel_s),
+            constant_s=repeated(pattern.constant_s),
+            decel_s=repeated(pattern.decel_s),
+            pause_s=repeated(pattern.pause_s),
+            torque_nm=load.torque_nm / ratios,
+            inertia_kgm2=transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios),
+        )
+        rest = base.take(np.zeros(ratios.size, dtype=np.intp))
+        return dataclasses.replace(
+            rest, pieces=pieces, figures=cycle_figures(pieces), load_inertia=pieces.inertia[:, 0]
+        )
+
+    return at
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Interval:
+    """A range of the free value in which no check fails."""
+
+    low: float
+    high: float
+    low_binding: tuple[str, ...]
+    """The checks that fail just below ``low``; empty where ``low`` is the range's end."""
+    high_binding: tuple[str, ...]
+    """The checks that fail just above ``high``; empty where ``high`` is the range's end."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class RatioResult:
+    """One actuator's answer."""
+
+    actuator: Actuator
+    intervals: tuple[Interval, ...]
+    best: float | None
+    """The value of least binding utilisation where no check fails; None: no interval."""
+    best_utilisation: float | None
+    best_binding: str | None
+    """The check whose utilisation is the largest at ``best``."""
+    verdict: Verdict | None
+    """The flowchart's verdict at ``best`` (``unconfirmed``: a check lacks data)."""
+    grid: tuple[float, ...]
+    utilisation: tuple[float | None, ...]
+    """The binding utilisation at each grid value (for the chart)."""
+
+
+Cells = tuple[CodeArray, FloatArray, IndexArray, BoolArray]
+"""Per cell: the verdict code, the binding utilisation (max value/limit over the checks
+with both; NaN where none has), its check's index, and which checks fail (cells ×
+checks)."""
+
+
+def _cells(block: Block) -> Cells:
+    """What the search reads of a block (run with ``detail``), its cells flattened in
+    order; the status codes and each check's value and limit, no check worded."""
+    assert block.details is not None
+    shape = block.accel_torque.shape
+    best = np.full(shape, -np.inf)
+    which = np.zeros(shape, dtype=np.intp)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for k, d in enumerate(block.details):
+            share = np.where(d.limits > 0, d.values / d.limits, np.nan)
+            share = np.where(np.isfinite(share), share, -np.inf)
+            take = share > best  # the first check of the largest share, as argmax
+            best = np.where(take, share, best)
+            which = np.where(take, k, which)
+    util = np.where(np.isfinite(best), best, np.nan)
+    failing = np.stack(
+        [np.broadcast_to(codes == _CODE_FAIL, shape).ravel() for codes in block.statuses], axis=-1
+    )
+    return block.verdicts().ravel(), util.ravel(), which.ravel(), failing
+
+
+Request = tuple[FloatArray, IndexArray]
+"""Pairs to evaluate: the free value and the actuator's column, pair by pair."""
+Search = Generator[Request, Cells, None]
+
+
+class _Pairs:
+    """The engine on pairs (value, actuator): the distinct values as the cases, each pair
+    its own cell (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`)."""
+
+    def __init__(
+        self,
+        cat: CatalogueArrays,
+        zones: ZoneTable,
+        cases_at: Callable[[FloatArray], Cases],
+        rules: Sequence[Rule],
+    ) -> None:
+        self.cat, self.zones, self.cases_at, self.rules = cat, zones, cases_at, rules
+
+    def __call__(self, values: FloatArray, columns: IndexArray) -> Cells:
+        xs, rows = np.unique(values, return_inverse=True)
+        cases = self.cases_at(xs)
+        block = evaluate_pairs(self.cat, self.zones, cases, rows, columns, self.rules)
+        return _cells(block)
+
+    def run(self, *searches: Search) -> None:
+        """Run ``searches`` side by side: each engine call evaluates the pairs that every
+        search still running asks for, in one block."""
+        asked: dict[int, Request] = {}
+        running = dict(enumerate(searches))
+        for n, search in list(running.items()):
+            request = next(search, None)
+            if request is None:
+                del running[n]
+            else:
+                asked[n] = request
+        while running:
+            order = list(running)
+            sizes = [asked[n][0].size for n in order]
+            answer = self(
+                np.concatenate([asked[n][0] for n in order]),
+                np.concatenate([asked[n][1] for n in order]),
+            )
+            at = 0
+            for n, size in zip(order, sizes, strict=True):
+                part = cast(Cells, tuple(a[at : at + size] for a in answer))
+                at += size
+                try:
+                    asked[n] = running[n].send(part)
+                except StopIteration:
+                    del running[n], asked[n]
+
+
+def _bisection(
+    ok_side: FloatArray, bad_side: FloatArray, columns: IndexArray, bad_fail: BoolArray
+) -> Search:
+    """:data:`BISECTION_STEPS` halvings of every bracket (ok value, failing value) in
+    log x, in rounds of :data:`BISECTION_DEPTH`: each round evaluates the midpoints of
+    every interval the round's halvings could reach (a tree of 2^depth − 1 values per
+    bracket, each the geometric mean of its interval's ends, as one halving computes
+    it) and then follows each bracket's halvings through it. The arrays are updated in
+    place: the last ok value, the first failing one, and the checks failing there."""
+    width = 2**BISECTION_DEPTH - 1
+    for _ in range(BISECTION_STEPS // BISECTION_DEPTH):
+        low = np.empty((ok_side.size, width))
+        high = np.empty((ok_side.size, width))
+        middle = np.empty((ok_side.size, width))
+        low[:, 0], high[:, 0] = ok_side, bad_side
+        for k in range(width):
+            middle[:, k] = np.sqrt(low[:, k] * high[:, k])
+            left, right = 2 * k + 1, 2 * k + 2
+            if right < width:  # left: the middle failed; right: it passed
+                low[:, left], high[:, left] = low[:, k], middle[:, k]
+                low[:, right], high[:, right] = middle[:, k], high[:, k]
+        codes, _u, _w, failing = yield middle.ravel(), np.repeat(columns, width)
+        codes = codes.reshape(middle.shape)
+        failing = failing.reshape((*middle.shape, -1))
+        node: IndexArray = np.zeros(ok_side.size, dtype=np.intp)
+        every = np.arange(ok_side.size)
+        for _step in range(BISECTION_DEPTH):
+            m = middle[every, node]
+            fails = codes[every, node] == _FAIL
+            ok_side[:] = np.where(fails, ok_side, m)
+            bad_side[:] = np.where(fails, m, bad_side)
+            bad_fail[:] = np.where(fails[:, None], failing[every, node], bad_fail)
+            node = np.where(fails, 2 * node + 1, 2 * node + 2)
+
+
+@dataclass(slots=True, kw_only=True)
+class _Best:
+    """Per actuator, the value of least binding utilisation found so far, updated in place."""
+
+    value: FloatArray
+    utilisation: FloatArray
+    code: CodeArray
+    which: IndexArray
+
+
+def _refinement(best: _Best, columns: IndexArray, grid: FloatArray) -> Search:
+    """:data:`REFINE_ROUNDS` parabolic steps in log x about each best value: a parabola
+    through the best and its neighbours, its vertex evaluated; each round about the best
+    so far, a quarter as wide.
+
+    The next round's three values are asked with the vertex, for both outcomes (about
+    the vertex, should it be better; about the best so far, should it not), so that the
+    rounds take one engine call each, not two."""
+    step = math.log(grid[1] / grid[0])
+
+    def about(centre: FloatArray, half: FloatArray) -> FloatArray:
+        values: FloatArray = np.exp(centre[:, None] + half[:, None] * np.array([-1.0, 0.0, 1.0]))
+        return values
+
+    def vertex_of(centre: FloatArray, half: FloatArray, u: FloatArray) -> FloatArray:
+        left, mid, right = u[:, 0], u[:, 1], u[:, 2]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            shift = 0.5 * half * (left - right) / (left - 2 * mid + right)
+        convex = np.isfinite(shift) & (left - 2 * mid + right > 0)
+        vertex = np.exp(centre + np.where(convex, np.clip(shift, -half, half), 0.0))
+        return np.asarray(np.clip(vertex, grid[0], grid[-1]))  # within the range searched
+
+    n = columns.size
+    centre, half = np.log(best.value[columns]), np.full(n, step)
+    points = about(centre, half)
+    u = (yield points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
+    for r in range(REFINE_ROUNDS):
+        vertex = vertex_of(centre, half, u)
+        last = r + 1 == REFINE_ROUNDS
+        values, asked = [vertex], [columns]
+        if not last:  # the next round about either centre
+            moved, stayed = about(np.log(vertex), half / 4), about(centre, half / 4)
+            values += [moved.ravel(), stayed.ravel()]
+            asked += [np.repeat(columns, 3)] * 2
+        codes, got, w, _f = yield np.concatenate(values), np.concatenate(asked)
+        at_vertex = got[:n]
+        better = (
+            (codes[:n] != _FAIL) & np.isfinite(at_vertex) & (at_vertex < best.utilisation[columns])
+        )
+        chosen = columns[better]
+        best.value[chosen] = vertex[better]
+        best.utilisation[chosen] = at_vertex[better]
+        best.code[chosen] = codes[:n][better]
+        best.which[chosen] = w[:n][better]
+        if not last:
+            u = np.where(better[:, None], got[n : 4 * n].reshape(n, 3), got[4 * n :].reshape(n, 3))
+            centre, half = np.log(best.value[columns]), half / 4
+
+
+def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatArray:
+    if series is not None:
+        values = np.unique(np.asarray([s for s in series if lower <= s <= upper], dtype=float))
+        if values.size == 0:
+            raise InvalidInputError("ratio_study.series", code="study_series_out_of_range")
+        return values
+    return np.geomspace(lower, upper, GRID_POINTS)
+
+
+def ratio_study(
+    actuators: Sequence[Actuator],
+    vary: Callable[[float], Application],
+    lower: float,
+    upper: float,
+    *,
+    series: Sequence[float] | None = None,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+    cases_at: Callable[[FloatArray], Cases] | None = None,
+) -> list[RatioResult]:
+    """Each actuator's feasible intervals of the free value in [lower, upper] and its best
+    value; with ``series``, only the series' values (an interval: neighbouring series
+    values that all pass). ``cases_at``: the load cases of ``vary`` at many values at
+    once, where the caller can build them as columns (:func:`geared_cases`)."""
+    if not (0 < lower < upper and math.isfinite(upper)):
+        raise InvalidInputError("ratio_study.min", code="study_range")
+    if not actuators:
+        return []
+    grid = _grid(lower, upper, series)
+    cat = catalogue_arrays(actuators) if arrays is None else arrays
+    if cases_at is None:
+
+        def cases_at(values: FloatArray) -> Cases:
+            return cases_of([vary(float(x)) for x in values])
+
+        apps = [vary(float(x)) for x in grid]
+    else:
+        apps = [vary(float(grid[0]))]
+    rules = rules_of(apps, rules)
+    names = tuple(rule.name for rule in rules)
+    cases = cases_at(grid)
+    limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
+    # the grid × the catalogue, block by block; only what the search reads is kept
+    shape = (grid.size, len(actuators))
+    verdicts = np.empty(shape, dtype=np.int8)
+    util, which = np.empty(shape), np.empty(shape, dtype=np.intp)
+    failing_grid = np.empty((*shape, len(rules)), dtype=np.bool_)
+    for start, stop in blocks(actuators, grid):
+        block = evaluate_block(
+            cat, cases.rows(start, stop), limits_of_zones[start:stop], rules, detail=True
+        )
+        codes, u, w, f = _cells(block)
+        verdicts[start:stop] = codes.reshape(-1, shape[1])
+        util[start:stop] = u.reshape(-1, shape[1])
+        which[start:stop] = w.reshape(-1, shape[1])
+        failing_grid[start:stop] = f.reshape(-1, shape[1], len(rules))
+    ok = verdicts != _FAIL  # grid × actuators
+
+    # brackets: (actuator, ok value, bad value) at each change of the verdict
+    change_k, change_j = np.nonzero(ok[1:] != ok[:-1])
+    ok_side = np.where(ok[change_k, change_j], grid[change_k], grid[change_k + 1])
+    bad_side = np.where(ok[change_k, change_j], grid[change_k + 1], grid[change_k])
+    bad_fail = np.where(
+        ok[change_k, change_j][:, None],
+        failing_grid[change_k + 1, change_j],
+        failing_grid[change_k, change_j],
+    )
+
+    # the best grid value per actuator among the passing ones, then a finer grid about it
+    masked = np.where(ok & np.isfinite(util), util, np.inf)
+    best_k = np.argmin(masked, axis=0)
+    every = np.arange(len(actuators))
+    has_best = np.isfinite(masked[best_k, every])
+    best = _Best(
+        value=grid[best_k].astype(float),
+        utilisation=masked[best_k, every],
+        code=verdicts[best_k, every],
+        which=which[best_k, every],
+    )
+    columns = np.nonzero(has_best)[0]
+    if series is None:
+        searches = []
+        if change_k.size:
+            searches.append(_bisection(ok_side, bad_side, change_j, bad_fail))
+        if columns.size:
+            searches.append(_refinement(best, columns, grid))
+        _Pairs(cat, zone_table(actuators), cases_at, rules).run(*searches)
+    ends = {
+        (int(j), int(k)): (float(o), tuple(n for n, f in zip(names, row, strict=True) if f))
+        for j, k, o, row in zip(change_j, change_k, ok_side, bad_fail, strict=True)
+    }
+    verdict_at = {int(c): VERDICT_BY_CODE[int(best.code[c])] for c in columns}
+    binding_at = {int(c): names[int(best.which[c])] for c in columns}
+    grid_values = tuple(float(x) for x in grid)
+    shown = util.astype(object)
+    shown[np.isnan(util)] = None
+    curves = shown.T.tolist()
+    # each run of passing grid values, per actuator in order: [start, stop)
+    edges = np.diff(np.pad(ok.T.astype(np.int8), ((0, 0), (1, 1))), axis=1)
+    run_j, run_start = np.nonzero(edges == 1)
+    _j, run_stop = np.nonzero(edges == -1)
+    runs: dict[int, list[Interval]] = {}
+    for j, start, stop in zip(run_j.tolist(), run_start.tolist(), run_stop.tolist(), strict=True):
+        low, low_binding = ends[(j, start - 1)] if start > 0 else (float(grid[0]), ())
+        high, high_binding = ends[(j, stop - 1)] if stop < grid.size else (float(grid[-1]), ())
+        runs.setdefault(j, []).append(
+            Interval(low=low, high=high, low_binding=low_binding, high_binding=high_binding)
+        )
+
+    results = []
+    for j, actuator in enumerate(actuators):
+        found = bool(has_best[j])
+        results.append(
+            RatioResult(
+                actuator=actuator,
+                intervals=tuple(runs.get(j, ())),
+                best=float(best.value[j]) if found else None,
+                best_utilisation=float(best.utilisation[j]) if found else None,
+                best_binding=binding_at.get(j),
+                verdict=verdict_at.get(j),
+                grid=grid_values,
+                utilisation=tuple(curves[j]),
+            )
+        )
+    return results
