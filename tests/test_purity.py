@@ -1,18 +1,144 @@
-"""The core imports no web framework, ORM or validation library; the schemas no database."""
+"""Imports point one way, from the edge inwards: edge → use cases → domain.
+
+- **domain** (``sizing``, ``catalogue``, ``sales``, ``errors``, ``text`` and the words'
+  codes ``i18n.messages``, ``i18n.check_messages``): pure functions over frozen
+  dataclasses; the standard library only, and numpy for the engine.
+- **use cases** (``services``, ``documents``, ``db``, ``schemas``, the rest of ``i18n``,
+  ``job_queue``, ``config``, ``supervision``): they compute with the domain, read and
+  write the database, render the words and the documents; nothing here knows a route.
+- **edge** (``api`` the routers, ``http`` the application and what routes share, ``cli``).
+
+A module imports only its own layer and the layers inside it. The rule is read from each
+module's source (every ``import``, lazy ones in functions too), so a new module is held
+by it without being listed here.
+"""
 
 from __future__ import annotations
 
+import ast
 import json
 import subprocess
 import sys
+from pathlib import Path
+
+PACKAGE = Path(__file__).resolve().parents[1] / "backend" / "actuator_selection"
+NAME = "actuator_selection"
+
+DOMAIN = ("sizing", "catalogue", "sales", "errors", "text", "i18n.messages", "i18n.check_messages")
+EDGE = ("api", "http", "cli", "cli_keys", "__main__")
+LAYERS = ("domain", "use cases", "edge")
+
+EXCEPTIONS = {
+    ("documents.quote_document", "http.static"): "the quote links the plotly bundle where "
+    "http/static.py serves it (PLOTLY_URL, from the locked version)",
+}
+"""Known edges against the direction, each with its reason; none is added lightly."""
 
 
-def _modules_after_importing(package: str) -> set[str]:
-    """``sys.modules`` of a fresh interpreter that imported every module of ``package``."""
+def _within(name: str, prefixes: tuple[str, ...]) -> bool:
+    return any(name == p or name.startswith(p + ".") for p in prefixes)
+
+
+def layer(module: str) -> int:
+    """0 domain, 1 use cases, 2 edge, for a module named relative to the package."""
+    if _within(module, DOMAIN):
+        return 0
+    if _within(module, EDGE):
+        return 2
+    return 1
+
+
+def modules() -> dict[str, Path]:
+    """Every module of the package by its name relative to the package (``sizing.cycle``)."""
+    out = {}
+    for path in sorted(PACKAGE.rglob("*.py")):
+        parts = list(path.relative_to(PACKAGE).with_suffix("").parts)
+        if parts[-1] == "__init__":
+            parts.pop()
+        if parts:
+            out[".".join(parts)] = path
+    return out
+
+
+def imports(module: str, path: Path) -> set[str]:
+    """The absolute module names ``module``'s source imports (relative imports resolved)."""
+    found: set[str] = set()
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            found.update(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                parts = [NAME, *(package.split(".") if package else [])]
+                base = ".".join(parts[: len(parts) + 1 - node.level])
+                source = f"{base}.{node.module}" if node.module else base
+            else:
+                source = node.module or ""
+            found.add(source)
+            found.update(f"{source}.{alias.name}" for alias in node.names)
+    return found
+
+
+def house_edges() -> list[tuple[str, str]]:
+    """(importer, imported) within the package, names relative to the package."""
+    known = modules()
+    edges = []
+    for module, path in known.items():
+        for name in imports(module, path):
+            if name.startswith(NAME + "."):
+                target = name[len(NAME) + 1 :]
+                while target and target not in known:
+                    target = target.rpartition(".")[0]
+                if target and target != module:
+                    edges.append((module, target))
+    return sorted(set(edges))
+
+
+def test_imports_point_from_the_edge_inwards() -> None:
+    wrong = [
+        f"{a} ({LAYERS[layer(a)]}) imports {b} ({LAYERS[layer(b)]})"
+        for a, b in house_edges()
+        if layer(b) > layer(a) and (a, b) not in EXCEPTIONS
+    ]
+    assert wrong == []
+
+
+def test_the_exceptions_are_still_needed() -> None:
+    assert set(EXCEPTIONS) <= set(house_edges())
+
+
+def test_the_rule_sees_every_layer() -> None:
+    """The walk found the packages, and a lazy import inside a function counts."""
+    edges = house_edges()
+    assert ("http.app", "api.selections") in edges
+    assert ("services.selections", "sizing.selection") in edges
+    assert ("cli", "db.engine") in edges  # imported inside a function
+    assert {layer(m) for m in modules()} == {0, 1, 2}
+    examples = ("sizing.checks.rules.gear", "documents.pdf", "api.quotes")
+    assert [layer(m) for m in examples] == [0, 1, 2]
+
+
+def test_the_domain_imports_only_the_standard_library_and_numpy() -> None:
+    """Read from the source: every import of a domain module, lazy ones too."""
+    allowed = set(sys.stdlib_module_names) | {"numpy", NAME}
+    wrong = sorted(
+        f"{module} imports {name}"
+        for module, path in modules().items()
+        if layer(module) == 0
+        for name in imports(module, path)
+        if name.split(".")[0] not in allowed
+    )
+    assert wrong == []
+
+
+def _modules_after_importing(*packages: str) -> set[str]:
+    """``sys.modules`` of a fresh interpreter that imported every module of ``packages``."""
     code = (
-        f"import json, sys, pkgutil, importlib, {package} as package\n"
-        f"for m in pkgutil.walk_packages(package.__path__, '{package}.'):\n"
-        "    importlib.import_module(m.name)\n"
+        "import json, sys, pkgutil, importlib\n"
+        f"for name in {list(packages)!r}:\n"
+        "    package = importlib.import_module(name)\n"
+        "    for m in pkgutil.walk_packages(getattr(package, '__path__', []), name + '.'):\n"
+        "        importlib.import_module(m.name)\n"
         "print(json.dumps(sorted(sys.modules)))"
     )
     out = subprocess.run(
@@ -21,33 +147,22 @@ def _modules_after_importing(package: str) -> set[str]:
     return set(json.loads(out))
 
 
-def test_core_imports_only_the_standard_library() -> None:
-    modules = _modules_after_importing("actuator_selection.core")
-    assert "actuator_selection.sizing.selection" in modules  # the walk did import the core
-    for forbidden in ("fastapi", "sqlalchemy", "pydantic", "starlette", "plotly"):
-        assert forbidden not in modules, f"the core imported {forbidden}"
+def test_the_domain_loads_no_framework_when_run() -> None:
+    """What importing the domain loads: no web framework, ORM, validation library or
+    plotly, and no module of the layers above."""
+    modules = _modules_after_importing(*(f"{NAME}.{d}" for d in DOMAIN))
+    for split in ("sizing.motion.segments", "sizing.thermal.overload", "catalogue.fields"):
+        assert f"{NAME}.{split}" in modules  # the walk entered the packages
+    for forbidden in ("fastapi", "sqlalchemy", "pydantic", "starlette", "plotly", "babel"):
+        assert forbidden not in modules, f"the domain imported {forbidden}"
+    above = sorted(m for m in modules if m.startswith(NAME + ".") and layer(m[len(NAME) + 1 :]) > 0)
+    assert above == [NAME + ".i18n"], f"the domain imported {above}"  # the package's docstring
 
 
 def test_schemas_import_no_database_layer() -> None:
-    modules = _modules_after_importing("actuator_selection.schemas")
-    assert "actuator_selection.schemas.admin" in modules  # the walk did import the schemas
-    assert "actuator_selection.schemas.prices" in modules
-    for forbidden in ("actuator_selection.db", "sqlalchemy"):
+    modules = _modules_after_importing(f"{NAME}.schemas")
+    assert f"{NAME}.schemas.admin" in modules  # the walk did import the schemas
+    assert f"{NAME}.schemas.prices" in modules
+    assert f"{NAME}.schemas.selections.answer" in modules  # and its packages
+    for forbidden in (f"{NAME}.db", "sqlalchemy"):
         assert forbidden not in modules, f"the schemas imported {forbidden}"
-
-
-def test_the_core_imports_no_layer_above_it() -> None:
-    """Imports point one way: the core (its packages too, ``sizing.motion``,
-    ``sizing.thermal``, ``sizing.mechanisms``) never reaches the schemas, the database,
-    the services or the HTTP layer."""
-    modules = _modules_after_importing("actuator_selection.core")
-    for split in ("motion.segments", "thermal.overload", "mechanisms.hoist"):
-        assert f"actuator_selection.core.{split}" in modules  # the walk entered the packages
-    layers = ("schemas", "db", "services", "api")
-    above = sorted(m for m in modules if m.split(".")[1:2] and m.split(".")[1] in layers)
-    assert above == [], f"the core imported {above}"
-
-
-def test_the_schemas_packages_are_walked() -> None:
-    modules = _modules_after_importing("actuator_selection.schemas")
-    assert "actuator_selection.schemas.selections.answer" in modules

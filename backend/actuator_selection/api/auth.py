@@ -105,7 +105,8 @@ def authorize(principal: ApiKeyRecord | None, *roles: str) -> ApiKeyRecord:
 
 
 ROLES_ATTRIBUTE = "__api_key_roles__"
-"""Set on each :func:`require_role` dependency: the roles it admits (read by ``http/openapi.py``)."""
+"""Set on each :func:`require_role` dependency: the roles it admits (read by
+``http/openapi.py``)."""
 
 
 def require_role(*roles: str) -> Callable[..., Awaitable[ApiKeyRecord]]:

@@ -19,7 +19,7 @@ unit of their own: ``"2 rad/s"`` or ``"40 rpm"`` is a rotary speed, ``"1 Hz"`` o
 The converted value then meets the field's bounds in the field's unit; the message of a
 bound broken by a converted value shows the value after conversion.
 
-pint stays here, out of ``core/`` (the core imports the standard library and numpy only).
+pint stays here, out of the domain (it imports the standard library and numpy only).
 """
 
 from __future__ import annotations
