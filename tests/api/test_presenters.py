@@ -101,7 +101,7 @@ def test_selection_presenter_writes_its_model(name: str, catalogue: CatalogueSna
     parsed = SelectionOut.model_validate_json(answer)
     assert parsed.model_dump(mode="json", exclude_unset=True) == orjson.loads(answer)
     assert set(orjson.loads(answer)) == set(SelectionOut.model_fields)
-    assert ANSWER_VERSION == 2
+    assert ANSWER_VERSION == 3
     if name == "nothing_fits":
         assert parsed.binding is not None
         assert all(c.verdict == "unsuitable" for c in parsed.candidates)
