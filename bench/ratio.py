@@ -16,7 +16,6 @@ import argparse
 import tempfile
 import time
 from collections.abc import Callable
-from dataclasses import replace
 from datetime import UTC, datetime
 from functools import partial
 from pathlib import Path
@@ -26,10 +25,10 @@ from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.http.app import tune_gc
 from actuator_selection.schemas.ratio import RatioStudyRequest
 from actuator_selection.schemas.selections import SelectionRequest
-from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
+from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.ratio import study
 from actuator_selection.services.selections import size_selection
-from bench.selection import starter_catalogue
+from bench.selection import copied_catalogue, starter_catalogue
 
 CASES: dict[str, dict[str, Any]] = {
     "vertical screw, lead 5–1000 mm": {
@@ -75,20 +74,6 @@ def _cpu(run: Callable[[], object]) -> float:
     return time.process_time() - started
 
 
-def _copies(starter: CatalogueSnapshot, copies: int) -> CatalogueSnapshot:
-    if copies == 1:
-        return starter
-    actuators = tuple(
-        replace(a, model=f"{a.model}~{k:03d}") for k in range(copies) for a in starter.actuators
-    )
-    interfaces = {
-        f"{model}~{k:03d}": interface
-        for k in range(copies)
-        for model, interface in starter.interfaces.items()
-    }
-    return replace(starter, actuators=actuators, interfaces=interfaces)
-
-
 def main() -> None:
     """Run the benchmark and print its table."""
     parser = argparse.ArgumentParser(description=__doc__)
@@ -102,7 +87,7 @@ def main() -> None:
             starter = CatalogueCache().snapshot(session)
     tune_gc()
     for copies in args.copies:
-        catalogue = _copies(starter, copies)
+        catalogue = copied_catalogue(starter, copies)
         actuators = catalogue.actuators
         for name, body in CASES.items():
             request = RatioStudyRequest.model_validate(body)

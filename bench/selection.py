@@ -145,14 +145,11 @@ def main() -> None:
     large_catalogue(starter, copies=100)
 
 
-def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
-    """One whole-catalogue selection over ``copies`` × the starter catalogue, server side.
-
-    The copies are the starter's actuators renamed (``CHA-25A-50~017``): a catalogue of
-    that size to measure with, not data. Timed is what the server computes for POST
-    /selections after reading the request: the flowchart, the answer's JSON and its
-    gzip (the database insert and HTTP come on top; see bench/http.py).
-    """
+def copied_catalogue(starter: CatalogueSnapshot, copies: int) -> CatalogueSnapshot:
+    """``starter`` with its actuators ``copies`` times, renamed (``CHA-25A-50~017``): a
+    catalogue of that size to measure with, not data; ``starter`` itself for 1."""
+    if copies == 1:
+        return starter
     actuators = tuple(
         replace(a, model=f"{a.model}~{k:03d}") for k in range(copies) for a in starter.actuators
     )
@@ -161,7 +158,20 @@ def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
         for k in range(copies)
         for model, interface in starter.interfaces.items()
     }
-    catalogue = replace(starter, actuators=actuators, interfaces=interfaces)
+    by_model = {a.model: a for a in actuators}
+    return replace(starter, actuators=actuators, interfaces=interfaces, _by_model=by_model)
+
+
+def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
+    """One whole-catalogue selection over ``copies`` × the starter catalogue, server side.
+
+    The copies are the starter's actuators renamed (``CHA-25A-50~017``): a catalogue of
+    that size to measure with, not data. Timed is what the server computes for POST
+    /selections after reading the request: the flowchart, the answer's JSON and its
+    gzip (the database insert and HTTP come on top; see bench/http.py).
+    """
+    catalogue = copied_catalogue(starter, copies)
+    actuators = catalogue.actuators
     tune_gc()  # as served (main.serve_app)
     body = SelectionRequest.model_validate(http_case(random_cases(1, seed=3)[0]))
     app = body.to_core()
