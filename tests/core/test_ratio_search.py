@@ -56,14 +56,14 @@ Study = tuple[Callable[[float], Application], Callable[[FloatArray], Cases] | No
 
 
 def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
-    """The worked example's load behind a ratio (J_tr 10⁻⁴ kgm²); at η_tr = 1 with its
-    cases built as columns too (:func:`geared_cases`)."""
+    """The worked example's load behind a ratio (J_tr 10⁻⁴ kgm²), its cases built as
+    columns too (:func:`geared_cases`)."""
     pattern = SpeedPattern(
         speed_rpm=speed_rpm, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0
     )
     app = Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3))
     transmission = Transmission(ratio=1, inertia_kgm2=1e-4, efficiency=efficiency)
-    columns = geared_cases(app, 1e-4) if efficiency == 1 else None
+    columns = geared_cases(app, 1e-4, efficiency)
     return lambda i: geared(app, dataclasses.replace(transmission, ratio=i)), columns
 
 

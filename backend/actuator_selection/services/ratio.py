@@ -63,10 +63,12 @@ def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], App
 
 def columns_of(body: SelectionRequest, study: RatioStudyIn) -> Callable[[FloatArray], Cases] | None:
     """:func:`varied` at many values at once as the engine's cases, where it can be built
-    as columns: an external ratio of η_tr = 1 on the chapter's trapezoid."""
-    if study.variable != "ratio" or study.transmission_efficiency != 1:
+    as columns: an external ratio on the chapter's trapezoid."""
+    if study.variable != "ratio":
         return None
-    return geared_cases(body.to_core(), study.transmission_inertia_kgm2)
+    return geared_cases(
+        body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
+    )
 
 
 def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:

@@ -29,7 +29,7 @@ The numbers are those of evaluating every value on every actuator
 (``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
 compare with this one, ``==``): only fewer cells are computed. Where the caller can build
 the load cases at many values as columns (:func:`geared_cases`: an external ratio on the
-chapter's trapezoid), no application is built per value.
+chapter's trapezoid, any η_tr), no application is built per value.
 
 Analytic cross-check (H.-J. Van de Straete, J. De Schutter, R. Belmans, "An efficient procedure for
 checking performance limits in servo drive selection and optimization", IEEE/ASME Trans.
@@ -80,7 +80,12 @@ from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.loads import _square
 from actuator_selection.sizing.mechanisms import Transmission, with_transmission
-from actuator_selection.sizing.motion import Motion, cycle_figures, trapezoid_piece_arrays
+from actuator_selection.sizing.motion import (
+    Motion,
+    PieceArrays,
+    cycle_figures,
+    trapezoid_piece_arrays,
+)
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
@@ -146,12 +151,13 @@ def geared(app: Application, transmission: Transmission) -> Application:
 
 
 def geared_cases(
-    app: Application, transmission_inertia_kgm2: float
+    app: Application, transmission_inertia_kgm2: float, efficiency: float = 1.0
 ) -> Callable[[FloatArray], Cases] | None:
     """:func:`geared` at many ratios at once, as the engine's load cases: the trapezoid's
     speed ×i, T_L ÷i, J_L/i² + J_tr as columns (what :func:`geared` computes for each
-    ratio, the same operations), the rest of ``app``'s case repeated. None where
-    :func:`geared` leaves the chapter's shorthand (η_tr < 1, a cycle of segments)."""
+    ratio, the same operations), η_tr by the power flow as :func:`~actuator_selection.
+    core.motion.segments.pieces_of` puts it (:func:`_by_power_flow`), the rest of
+    ``app``'s case repeated. None where ``app`` is a cycle of segments."""
     pattern, load = app.pattern, app.load
     if pattern is None or load is None:
         return None
@@ -161,6 +167,7 @@ def geared_cases(
         def repeated(value: float) -> FloatArray:
             return np.full(ratios.size, value)
 
+        inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
         pieces = trapezoid_piece_arrays(
             speed_rpm=pattern.speed_rpm * ratios,
             accel_s=repeated(pattern.accel_s),
@@ -168,14 +175,35 @@ def geared_cases(
             decel_s=repeated(pattern.decel_s),
             pause_s=repeated(pattern.pause_s),
             torque_nm=load.torque_nm / ratios,
-            inertia_kgm2=transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios),
+            inertia_kgm2=inertia,
         )
+        if efficiency != 1:
+            pieces = _by_power_flow(pieces, efficiency)
         rest = base.take(np.zeros(ratios.size, dtype=np.intp))
         return dataclasses.replace(
-            rest, pieces=pieces, figures=cycle_figures(pieces), load_inertia=pieces.inertia[:, 0]
+            rest, pieces=pieces, figures=cycle_figures(pieces), load_inertia=inertia
         )
 
     return at
+
+
+def _by_power_flow(pieces: PieceArrays, efficiency: float) -> PieceArrays:
+    """The trapezoid's pieces with the chain's η (η_tr·1) by the power flow, as
+    :func:`~actuator_selection.core.motion.segments.pieces_of` applies it to the
+    segments :func:`geared` builds: c and J × 1/η where the load side's torque
+    c + J·α acts in the direction of motion (the actuator drives), × η where it does
+    not (the load drives back), × 1 at standstill. Each of the trapezoid's pieces
+    accelerates uniformly, so none is split."""
+    with np.errstate(all="ignore"):
+        load_side = pieces.static + pieces.inertia * pieces.accel_start
+    factor = np.where(
+        pieces.direction == 0,
+        1.0,
+        np.where(load_side * pieces.direction > 0, 1.0 / efficiency, efficiency),
+    )
+    return dataclasses.replace(
+        pieces, static=pieces.static * factor, inertia=pieces.inertia * factor
+    )
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
