@@ -1,9 +1,10 @@
 """The ratio study's search (``sizing/ratio.py``: the engine on pairs, the bisection in
 rounds, beside the parabolic steps) against the study as first written
 (``tests/oracle/ratio_exhaustive.py``: one engine call per halving over the product of
-values × actuators): the same intervals, ends, binding checks and best values, on the
-starter catalogue (with zones and published τ_th on some of its actuators) and on the
-vertical screw's lead; and the engine on pairs against its product, cell by cell."""
+values × actuators): the same intervals, ends, binding checks and best values, with
+few engine calls and with few pairs (``MANY_PAIRS``), on the starter catalogue (with
+zones and published τ_th on some of its actuators) and on the vertical screw's lead;
+and the engine on pairs against its product, cell by cell."""
 
 from __future__ import annotations
 
@@ -20,6 +21,7 @@ from tests.oracle.ratio_exhaustive import exhaustive_ratio_study
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.schemas.ratio import RatioStudyRequest
 from actuator_selection.services.ratio import varied
+from actuator_selection.sizing import ratio
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import FloatArray, catalogue_arrays, evaluate_batch
@@ -107,9 +109,11 @@ def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
         "lead 20-400",
     ],
 )
+@pytest.mark.parametrize("many_pairs", [ratio.MANY_PAIRS, 0], ids=["few calls", "few pairs"])
 def test_the_search_finds_what_the_exhaustive_study_finds(
-    study: Study, low: float, high: float
+    study: Study, low: float, high: float, many_pairs: int, monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
     vary, columns = study
     found = ratio_study(actuators(), vary, low, high, cases_at=columns)
     assert any(r.intervals for r in found)

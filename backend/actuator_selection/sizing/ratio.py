@@ -92,8 +92,13 @@ GRID_POINTS = 48
 BISECTION_STEPS = 12
 """Halvings of every bracket: a grid step of 6.5 % narrowed to 1.6·10⁻⁵ relative."""
 BISECTION_DEPTH = 2
-"""Halvings per engine call (:func:`_bisection`): 3 values a bracket, 6 calls, the
-parabolic steps' beside them (fewer calls cost more values, each a load case built)."""
+"""Halvings per engine call (:func:`_bisection`) where the pairs are few: 3 values a
+bracket, 6 calls, the parabolic steps' beside them, each asked ahead for both outcomes
+(:func:`_refinement`); fewer calls, each paying the engine's fixed cost once."""
+MANY_PAIRS = 20_000
+"""From how many pairs saved one halving per call (12 calls, 1 value a bracket) and the
+parabolic steps not asked ahead (3 values a step fewer) cost less than the 6 calls more:
+a call's fixed cost is that of some thousand pairs (``python -m bench.ratio``)."""
 REFINE_ROUNDS = 3
 """Parabolic steps for the best value (one engine call each, after the first, beside the
 bisection's)."""
@@ -316,16 +321,20 @@ class _Pairs:
 
 
 def _bisection(
-    ok_side: FloatArray, bad_side: FloatArray, columns: IndexArray, bad_fail: BoolArray
+    ok_side: FloatArray,
+    bad_side: FloatArray,
+    columns: IndexArray,
+    bad_fail: BoolArray,
+    depth: int,
 ) -> Search:
     """:data:`BISECTION_STEPS` halvings of every bracket (ok value, failing value) in
-    log x, in rounds of :data:`BISECTION_DEPTH`: each round evaluates the midpoints of
+    log x, in rounds of ``depth``: each round evaluates the midpoints of
     every interval the round's halvings could reach (a tree of 2^depth − 1 values per
     bracket, each the geometric mean of its interval's ends, as one halving computes
     it) and then follows each bracket's halvings through it. The arrays are updated in
     place: the last ok value, the first failing one, and the checks failing there."""
-    width = 2**BISECTION_DEPTH - 1
-    for _ in range(BISECTION_STEPS // BISECTION_DEPTH):
+    width = 2**depth - 1
+    for _ in range(BISECTION_STEPS // depth):
         low = np.empty((ok_side.size, width))
         high = np.empty((ok_side.size, width))
         middle = np.empty((ok_side.size, width))
@@ -341,7 +350,7 @@ def _bisection(
         failing = failing.reshape((*middle.shape, -1))
         node: IndexArray = np.zeros(ok_side.size, dtype=np.intp)
         every = np.arange(ok_side.size)
-        for _step in range(BISECTION_DEPTH):
+        for _step in range(depth):
             m = middle[every, node]
             fails = codes[every, node] == _FAIL
             ok_side[:] = np.where(fails, ok_side, m)
@@ -360,14 +369,14 @@ class _Best:
     which: IndexArray
 
 
-def _refinement(best: _Best, columns: IndexArray, grid: FloatArray) -> Search:
+def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool) -> Search:
     """:data:`REFINE_ROUNDS` parabolic steps in log x about each best value: a parabola
     through the best and its neighbours, its vertex evaluated; each round about the best
     so far, a quarter as wide.
 
-    The next round's three values are asked with the vertex, for both outcomes (about
-    the vertex, should it be better; about the best so far, should it not), so that the
-    rounds take one engine call each, not two."""
+    ``ahead``: the next round's three values are asked with the vertex, for both outcomes
+    (about the vertex, should it be better; about the best so far, should it not), so
+    that the rounds take one engine call each, not two, for twice the values."""
     step = math.log(grid[1] / grid[0])
 
     def about(centre: FloatArray, half: FloatArray) -> FloatArray:
@@ -390,7 +399,7 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray) -> Search:
         vertex = vertex_of(centre, half, u)
         last = r + 1 == REFINE_ROUNDS
         values, asked = [vertex], [columns]
-        if not last:  # the next round about either centre
+        if not last and ahead:  # the next round about either centre
             moved, stayed = about(np.log(vertex), half / 4), about(centre, half / 4)
             values += [moved.ravel(), stayed.ravel()]
             asked += [np.repeat(columns, 3)] * 2
@@ -404,9 +413,14 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray) -> Search:
         best.utilisation[chosen] = at_vertex[better]
         best.code[chosen] = codes[:n][better]
         best.which[chosen] = w[:n][better]
-        if not last:
+        if last:
+            break
+        if ahead:
             u = np.where(better[:, None], got[n : 4 * n].reshape(n, 3), got[4 * n :].reshape(n, 3))
-            centre, half = np.log(best.value[columns]), half / 4
+        centre, half = np.log(best.value[columns]), half / 4
+        if not ahead:
+            points = about(centre, half)
+            u = (yield points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
 
 
 def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatArray:
@@ -490,11 +504,14 @@ def ratio_study(
     )
     columns = np.nonzero(has_best)[0]
     if series is None:
+        # few pairs: fewer engine calls; many: fewer pairs
+        many = 6 * change_k.size + 12 * columns.size >= MANY_PAIRS
+        depth = 1 if many else BISECTION_DEPTH
         searches = []
         if change_k.size:
-            searches.append(_bisection(ok_side, bad_side, change_j, bad_fail))
+            searches.append(_bisection(ok_side, bad_side, change_j, bad_fail, depth))
         if columns.size:
-            searches.append(_refinement(best, columns, grid))
+            searches.append(_refinement(best, columns, grid, ahead=not many))
         _Pairs(cat, zone_table(actuators), cases_at, rules).run(*searches)
     ends = {
         (int(j), int(k)): (float(o), tuple(n for n, f in zip(names, row, strict=True) if f))
