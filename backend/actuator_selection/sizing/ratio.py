@@ -513,12 +513,24 @@ def ratio_study(
         if columns.size:
             searches.append(_refinement(best, columns, grid, ahead=not many))
         _Pairs(cat, zone_table(actuators), cases_at, rules).run(*searches)
-    ends = {
-        (int(j), int(k)): (float(o), tuple(n for n, f in zip(names, row, strict=True) if f))
-        for j, k, o, row in zip(change_j, change_k, ok_side, bad_fail, strict=True)
-    }
-    verdict_at = {int(c): VERDICT_BY_CODE[int(best.code[c])] for c in columns}
-    binding_at = {int(c): names[int(best.which[c])] for c in columns}
+    # the failing checks' names once per distinct set of them (a handful)
+    sets, set_of = np.unique(bad_fail.reshape(-1, len(names)), axis=0, return_inverse=True)
+    named = [tuple(n for n, f in zip(names, row, strict=True) if f) for row in sets.tolist()]
+    ends = dict(
+        zip(
+            zip(change_j.tolist(), change_k.tolist(), strict=True),
+            zip(ok_side.tolist(), [named[s] for s in set_of.ravel().tolist()], strict=True),
+            strict=True,
+        )
+    )
+    verdict_at = dict(
+        zip(
+            columns.tolist(), (VERDICT_BY_CODE[c] for c in best.code[columns].tolist()), strict=True
+        )
+    )
+    binding_at = dict(
+        zip(columns.tolist(), (names[w] for w in best.which[columns].tolist()), strict=True)
+    )
     grid_values = tuple(float(x) for x in grid)
     shown = util.astype(object)
     shown[np.isnan(util)] = None
@@ -535,19 +547,25 @@ def ratio_study(
             Interval(low=low, high=high, low_binding=low_binding, high_binding=high_binding)
         )
 
-    results = []
-    for j, actuator in enumerate(actuators):
-        found = bool(has_best[j])
-        results.append(
-            RatioResult(
-                actuator=actuator,
-                intervals=tuple(runs.get(j, ())),
-                best=float(best.value[j]) if found else None,
-                best_utilisation=float(best.utilisation[j]) if found else None,
-                best_binding=binding_at.get(j),
-                verdict=verdict_at.get(j),
-                grid=grid_values,
-                utilisation=tuple(curves[j]),
+    return [
+        RatioResult(
+            actuator=actuator,
+            intervals=tuple(runs.get(j, ())),
+            best=value if found else None,
+            best_utilisation=u if found else None,
+            best_binding=binding_at.get(j),
+            verdict=verdict_at.get(j),
+            grid=grid_values,
+            utilisation=tuple(curve),
+        )
+        for j, (actuator, found, value, u, curve) in enumerate(
+            zip(
+                actuators,
+                has_best.tolist(),
+                best.value.tolist(),
+                best.utilisation.tolist(),
+                curves,
+                strict=True,
             )
         )
-    return results
+    ]
