@@ -184,9 +184,16 @@ def geared_cases(
         )
         if efficiency != 1:
             pieces = _by_power_flow(pieces, efficiency)
-        rest = base.take(np.zeros(ratios.size, dtype=np.intp))
-        return dataclasses.replace(
-            rest, pieces=pieces, figures=cycle_figures(pieces), load_inertia=inertia
+        first = np.zeros(ratios.size, dtype=np.intp)
+        return Cases(
+            pieces=pieces,
+            figures=cycle_figures(pieces),
+            load_inertia=inertia,
+            high_dynamics=base.high_dynamics[first],
+            output_load=base.output_load[first],
+            thermal_time_constant=base.thermal_time_constant[first],
+            thermal_assumed=base.thermal_assumed[first],
+            requests=base.requests[first],
         )
 
     return at
