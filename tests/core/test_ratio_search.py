@@ -2,9 +2,9 @@
 rounds, beside the parabolic steps) against the study as first written
 (``tests/oracle/ratio_exhaustive.py``: one engine call per halving over the product of
 values × actuators): the same intervals, ends, binding checks and best values, with
-few engine calls and with few pairs (``MANY_PAIRS``), on the starter catalogue (with
-zones and published τ_th on some of its actuators) and on the vertical screw's lead;
-and the engine on pairs against its product, cell by cell."""
+3, 2 and 1 halvings to an engine call (``FEW_PAIRS``, ``MANY_PAIRS``), on the starter
+catalogue (with zones and published τ_th on some of its actuators) and on the vertical
+screw's lead; and the engine on pairs against its product, cell by cell."""
 
 from __future__ import annotations
 
@@ -109,11 +109,21 @@ def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
         "lead 20-400",
     ],
 )
-@pytest.mark.parametrize("many_pairs", [ratio.MANY_PAIRS, 0], ids=["few calls", "few pairs"])
+@pytest.mark.parametrize(
+    ("many_pairs", "few_pairs"),
+    [(ratio.MANY_PAIRS, ratio.FEW_PAIRS), (ratio.MANY_PAIRS, 0), (0, 0)],
+    ids=["as chosen", "2 halvings a call", "1 halving a call"],
+)
 def test_the_search_finds_what_the_exhaustive_study_finds(
-    study: Study, low: float, high: float, many_pairs: int, monkeypatch: pytest.MonkeyPatch
+    study: Study,
+    low: float,
+    high: float,
+    many_pairs: int,
+    few_pairs: int,
+    monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
+    monkeypatch.setattr(ratio, "FEW_PAIRS", few_pairs)
     vary, columns = study
     found = ratio_study(actuators(), vary, low, high, cases_at=columns)
     assert any(r.intervals for r in found)

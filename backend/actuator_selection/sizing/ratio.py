@@ -17,9 +17,9 @@ The search runs on the engine, vectorised over cases × actuators:
 2. every change of the verdict between neighbouring grid values, for every actuator, is
    a bracket; all brackets are bisected together, on the engine's pairs
    (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`: each bracket's midpoint
-   on its own actuator, not every midpoint on every actuator), :data:`BISECTION_DEPTH`
-   halvings to an engine call, so several intervals per actuator are found where the
-   checks are not monotonic;
+   on its own actuator, not every midpoint on every actuator), several halvings to an
+   engine call where the pairs are few, one where they are many (:data:`MANY_PAIRS`),
+   so several intervals per actuator are found where the checks are not monotonic;
 3. the grid value of least binding utilisation (max value/limit over the checks,
    :func:`~actuator_selection.sizing.checks.rule.utilisation`) is refined by parabolic
    steps in log x (a passing value only, and only where it lowers the utilisation), all
@@ -95,6 +95,11 @@ BISECTION_DEPTH = 2
 """Halvings per engine call (:func:`_bisection`) where the pairs are few: 3 values a
 bracket, 6 calls, the parabolic steps' beside them, each asked ahead for both outcomes
 (:func:`_refinement`); fewer calls, each paying the engine's fixed cost once."""
+FEWEST_DEPTH = 3
+"""Halvings per engine call where the pairs are fewer than :data:`FEW_PAIRS` and the
+load cases come as columns (no application built per value): 7 values a bracket, 4
+calls."""
+FEW_PAIRS = 2_000
 MANY_PAIRS = 20_000
 """From how many pairs saved one halving per call (12 calls, 1 value a bracket) and the
 parabolic steps not asked ahead (3 values a step fewer) cost less than the 6 calls more:
@@ -460,6 +465,7 @@ def ratio_study(
         return []
     grid = _grid(lower, upper, series)
     cat = catalogue_arrays(actuators) if arrays is None else arrays
+    as_columns = cases_at is not None
     if cases_at is None:
 
         def cases_at(values: FloatArray) -> Cases:
@@ -512,8 +518,10 @@ def ratio_study(
     columns = np.nonzero(has_best)[0]
     if series is None:
         # few pairs: fewer engine calls; many: fewer pairs
-        many = 6 * change_k.size + 12 * columns.size >= MANY_PAIRS
-        depth = 1 if many else BISECTION_DEPTH
+        pairs = 6 * change_k.size + 12 * columns.size
+        many = pairs >= MANY_PAIRS
+        fewest = as_columns and pairs < FEW_PAIRS
+        depth = 1 if many else FEWEST_DEPTH if fewest else BISECTION_DEPTH
         searches = []
         if change_k.size:
             searches.append(_bisection(ok_side, bad_side, change_j, bad_fail, depth))
