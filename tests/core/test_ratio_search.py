@@ -166,3 +166,33 @@ def test_pairs_equal_their_cells_of_the_product() -> None:
             np.broadcast_to(detail.limits, shape)[:, 0], product.limits[rows, columns, k]
         )
     np.testing.assert_array_equal(block.rms_torque[:, 0], product.rms_torque_nm[rows, columns])
+
+
+@pytest.mark.parametrize("efficiency", [1.0, 0.9, 0.5])
+@pytest.mark.parametrize("torque_nm", [5.0, 0.0])
+def test_geared_cases_are_the_geared_applications_cases(
+    efficiency: float, torque_nm: float
+) -> None:
+    """The columns equal the applications' cases bit for bit, η_tr's factor on each piece
+    too: 1/η driving, η where the load drives back (the fast deceleration), 1 at rest."""
+    pattern = SpeedPattern(speed_rpm=4.0, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1.0)
+    app = Application(pattern=pattern, load=Load(torque_nm=torque_nm, inertia_kgm2=1.3))
+    columns = geared_cases(app, 1e-4, efficiency)
+    assert columns is not None
+    xs = np.geomspace(0.05, 2000.0, 40)
+    built = columns(xs)
+    transmission = Transmission(ratio=1, inertia_kgm2=1e-4, efficiency=efficiency)
+    apps = [geared(app, dataclasses.replace(transmission, ratio=float(x))) for x in xs]
+    expected = cases_of(apps)
+    for part in ("pieces", "figures"):
+        for field in dataclasses.fields(getattr(expected, part)):
+            np.testing.assert_array_equal(
+                getattr(getattr(built, part), field.name),
+                getattr(getattr(expected, part), field.name),
+                err_msg=f"{part}.{field.name}",
+            )
+    for field in dataclasses.fields(expected):
+        if field.name not in ("pieces", "figures"):
+            np.testing.assert_array_equal(
+                getattr(built, field.name), getattr(expected, field.name), err_msg=field.name
+            )
