@@ -206,7 +206,7 @@ def geared_cases(
 
 def _by_power_flow(pieces: PieceArrays, efficiency: float) -> PieceArrays:
     """The trapezoid's pieces with the chain's η (η_tr·1) by the power flow, as
-    :func:`~actuator_selection.core.motion.segments.pieces_of` applies it to the
+    :func:`~actuator_selection.sizing.motion.segments.pieces_of` applies it to the
     segments :func:`geared` builds: c and J × 1/η where the load side's torque
     c + J·α acts in the direction of motion (the actuator drives), × η where it does
     not (the load drives back), × 1 at standstill. Each of the trapezoid's pieces
