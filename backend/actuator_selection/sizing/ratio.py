@@ -172,6 +172,10 @@ def geared_cases(
     if pattern is None or load is None:
         return None
     base = cases_of([app])
+    # With η_tr < 1, geared() writes the shorthand as a cycle of segments: what the
+    # brake's drop reads of the axis (its weight, none here) is that axis's, not T_L.
+    chain = Transmission(ratio=1.0, inertia_kgm2=transmission_inertia_kgm2, efficiency=efficiency)
+    requests = base.requests if efficiency == 1 else cases_of([geared(app, chain)]).requests
 
     def at(ratios: FloatArray) -> Cases:
         def repeated(value: float) -> FloatArray:
@@ -198,7 +202,7 @@ def geared_cases(
             output_load=base.output_load[first],
             thermal_time_constant=base.thermal_time_constant[first],
             thermal_assumed=base.thermal_assumed[first],
-            requests=base.requests[first],
+            requests=requests[first],
         )
 
     return at
