@@ -1,4 +1,4 @@
-"""The rules' operands come from two homes (docs/decisions/0025): the registry's published
+"""The rules' operands come from two homes (docs/decisions/0027): the registry's published
 values and the worked-out ones typed in ``sizing/checks/operands.py``; the rules are found
 in their family's file, in the answers' order."""
 
