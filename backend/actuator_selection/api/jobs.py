@@ -21,7 +21,7 @@ from pydantic import ValidationError
 from actuator_selection.api.selections import unknown_models
 from actuator_selection.db.engine import begin_write
 from actuator_selection.errors import DomainError
-from actuator_selection.http.deps import SessionDep, read_transaction
+from actuator_selection.http.deps import SessionDep, read_transaction, route_path
 from actuator_selection.http.errors import RequestFieldError, domain_entry, language_of
 from actuator_selection.http.media_types import unsupported_media_type
 from actuator_selection.schemas.batch import MAX_TOP, BatchCaseIn
@@ -168,7 +168,7 @@ async def create_batch_job(
             return jobs.job_body(session, jobs.get_job(session, job_id))
 
     body = await anyio.to_thread.run_sync(store)
-    location = str(request.app.url_path_for("get_batch_job", job_id=body["id"]))
+    location = route_path(request, "get_batch_job", job_id=body["id"])
     return JSONResponse(
         BatchJobOut.model_validate(body).model_dump(mode="json"),
         status_code=202,

@@ -13,6 +13,7 @@ from actuator_selection.http.deps import (
     catalogue_snapshot,
     read_transaction,
     reads_only,
+    route_path,
     write_transaction,
 )
 from actuator_selection.http.errors import language_of
@@ -68,7 +69,7 @@ async def create_profile(request: Request, query: Annotated[ProfileQuery, Query(
         raise unsupported_media_type(media_type, MEDIA_TYPES)
     chunks = await _chunks(request)
     stored = await run_in_threadpool(_read_and_store, request, chunks, query)
-    location = str(request.app.url_path_for("get_profile", profile_id=stored["id"]))
+    location = route_path(request, "get_profile", profile_id=stored["id"])
     return JSONResponse(stored, status_code=201, headers={"Location": location})
 
 

@@ -11,7 +11,13 @@ from typing import Annotated
 from fastapi import APIRouter, Path, Query, Request, Response
 
 from actuator_selection.api.selections import unknown_models
-from actuator_selection.http.deps import SessionDep, read_transaction, reads_only, write_transaction
+from actuator_selection.http.deps import (
+    SessionDep,
+    read_transaction,
+    reads_only,
+    route_path,
+    write_transaction,
+)
 from actuator_selection.http.errors import RequestFieldError, service_error
 from actuator_selection.schemas.projects import ProjectOut, ProjectPageOut, ProjectRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
@@ -93,7 +99,7 @@ def create_project(body: ProjectRequest, request: Request) -> Response:
 
 def project_location(request: Request, project_id: str) -> str:
     """The path of a stored project: a 201's ``Location``."""
-    return str(request.app.url_path_for("get_project", project_id=project_id))
+    return route_path(request, "get_project", project_id=project_id)
 
 
 @router.get(

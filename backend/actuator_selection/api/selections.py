@@ -29,6 +29,7 @@ from actuator_selection.http.deps import (
     catalogue_snapshot,
     read_transaction,
     reads_only,
+    route_path,
     write_transaction,
 )
 from actuator_selection.http.errors import RequestFieldError, language_of, service_error
@@ -140,7 +141,7 @@ def create_selection(
 
 def selection_location(request: Request, selection_id: str) -> str:
     """The path of a stored selection (``GET /selections/{id}``): a 201's ``Location``."""
-    return str(request.app.url_path_for("get_selection", selection_id=selection_id))
+    return route_path(request, "get_selection", selection_id=selection_id)
 
 
 def _accepts_gzip(request: Request) -> bool:

@@ -7,6 +7,7 @@ from contextlib import contextmanager
 from typing import Annotated, Any, Literal, TypeVar
 
 from fastapi import Depends, Header, Query, Request
+from fastapi.routing import RouteContext, iter_route_contexts
 from sqlalchemy.orm import Session, sessionmaker
 
 from actuator_selection.config import Settings
@@ -122,3 +123,17 @@ def catalogue_snapshot(request: Request, session: Session) -> CatalogueSnapshot:
     snapshot = cache.snapshot(session)
     session.commit()
     return snapshot
+
+
+def route_path(request: Request, name: str, **params: str) -> str:
+    """The path of the route called ``name`` with ``params`` (a 201's ``Location``), as
+    ``app.url_path_for`` builds it; the route is found once per application, not by asking
+    every route at each call (which cost as much as a small request's own work)."""
+    named: dict[str, RouteContext] | None = getattr(request.app.state, "named_routes", None)
+    if named is None:
+        named = {}
+        for route in iter_route_contexts(request.app.router.routes):
+            if route.name is not None:
+                named.setdefault(route.name, route)
+        request.app.state.named_routes = named
+    return str(named[name].url_path_for(name, **params))

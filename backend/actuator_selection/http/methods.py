@@ -51,6 +51,9 @@ CORS_EXPOSED_HEADERS = (
 """The answer headers a listed origin's page may read besides the CORS-safelisted ones."""
 CORS_MAX_AGE_S = 600
 """How long a browser may keep a preflight answer [s]."""
+KNOWN_PATHS = 4096
+"""How many paths' allowed methods :class:`AllowedMethods` keeps (then it starts over):
+matching a path against every route costs about as much as the rest of a small request."""
 
 
 def allowed_methods(routes: Sequence[RouteContext], scope: Scope) -> set[str]:
@@ -93,12 +96,24 @@ class AllowedMethods:
         self.router = router
         self.api_prefix = api_prefix.rstrip("/") + "/"
         self.routes: list[RouteContext] | None = None  # read once, at the first request
+        # A path's methods depend on the path alone (the routes are fixed once served).
+        self.known: dict[tuple[str, str], frozenset[str]] = {}
+
+    def methods_of(self, scope: Scope) -> frozenset[str]:
+        """:func:`allowed_methods` for ``scope``'s path, matched once per path."""
+        key = (scope.get("root_path", ""), scope["path"])
+        found = self.known.get(key)
+        if found is None:
+            if self.routes is None:
+                self.routes = method_routes(self.router)
+            if len(self.known) >= KNOWN_PATHS:  # bounded: paths with ids are many
+                self.known.clear()
+            found = self.known[key] = frozenset(allowed_methods(self.routes, scope))
+        return found
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] == "http":
-            if self.routes is None:
-                self.routes = method_routes(self.router)
-            own = allowed_methods(self.routes, scope)
+            own = self.methods_of(scope)
             methods = own | {"HEAD"} if "GET" in own else own
             method = scope["method"]
             if method == "HEAD" and "HEAD" not in own and "GET" in own:
