@@ -24,12 +24,13 @@ from actuator_selection.services.presenters.selection import (
     checks_of,
     dump_json,
 )
+from actuator_selection.sizing.checks import rules_for
 from actuator_selection.sizing.engine import evaluate_batch
 from actuator_selection.sizing.selection import Application
 
 
 def assert_same_text(actuators: list[Actuator], app: Application) -> None:
-    ev = evaluate_batch(actuators, [app], rules=app.rules)
+    ev = evaluate_batch(actuators, [app], rules=rules_for(app))
     as_dicts = dump_json(checks_as_dicts(ev))
     assert dump_json(checks_as_json(ev)) == as_dicts
     assert dump_json(checks_of(ev)) == as_dicts

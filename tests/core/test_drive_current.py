@@ -24,6 +24,7 @@ from actuator_selection.sizing.checks import (
     Rule,
     Status,
     regenerative_energy_j,
+    rules_for,
 )
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.electrical import controller_output_voltage
@@ -119,8 +120,8 @@ def test_drive_checks_join_only_when_asked() -> None:
         pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0.1, decel_s=0.1, pause_s=1),
         load=Load(torque_nm=5, inertia_kgm2=1.3),
     )
-    assert plain.rules == RULES
-    assert app(40, 5, 1.3).rules == (*RULES, DRIVE_CURRENT)
+    assert rules_for(plain) == RULES
+    assert rules_for(app(40, 5, 1.3)) == (*RULES, DRIVE_CURRENT)
 
 
 @pytest.mark.parametrize(
@@ -292,5 +293,5 @@ def test_batch_equals_single_for_the_drive_checks() -> None:
     ]
     rules = (*RULES, DRIVE_CURRENT)
     assert DRIVE_VOLTAGE in RULES
-    assert all(a.rules == rules for a in apps)
+    assert all(rules_for(a) == rules for a in apps)
     assert_batch_equals_scalar(actuators, apps, rules)

@@ -18,7 +18,7 @@ from actuator_selection.catalogue.fields import OPERAND_FIELDS
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.bearing import life_exponent, swing_deg
 from actuator_selection.sizing.candidates import Candidate, Selection, Verdict, ranking_key
-from actuator_selection.sizing.checks import Check, Operands, Rule, Status
+from actuator_selection.sizing.checks import Check, Operands, Rule, Status, rules_for
 from actuator_selection.sizing.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.sizing.motion import CycleTorques, Profile
 from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
@@ -351,7 +351,7 @@ def _drive_and_bearing(actuator: Actuator, app: Application, profile: Profile) -
 def evaluate(
     actuator: Actuator, app: Application, *, rules: Sequence[Rule] | None = None
 ) -> Candidate:
-    """Run the flowchart's checks (``rules``, by default :attr:`Application.rules`: the
+    """Run the flowchart's checks (``rules``, by default :func:`rules_for`: the
     chapter's, and the brake's where fitted) for one actuator."""
     (candidate,) = evaluate_each((actuator,), app, rules=rules)
     return candidate
@@ -365,7 +365,7 @@ def evaluate_each(
 ) -> list[Candidate]:
     """:func:`evaluate` for each of ``actuators`` in turn, the cycle prepared once."""
     if rules is None:
-        rules = app.rules
+        rules = rules_for(app)
     profile = app.profile
     heating: dict[float, Heating] = {}  # per τ_th, for every actuator
     candidates = []

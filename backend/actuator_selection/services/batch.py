@@ -41,7 +41,7 @@ from actuator_selection.services.selections import (
     size_selection,
     store_selections,
 )
-from actuator_selection.sizing.checks import Rule
+from actuator_selection.sizing.checks import Rule, rules_for
 from actuator_selection.sizing.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -251,7 +251,7 @@ def _select(
     checks run on its own cases, the selections back in the order of the cases."""
     groups: dict[tuple[Rule, ...], list[int]] = {}
     for i, app in enumerate(apps):
-        groups.setdefault(app.rules, []).append(i)
+        groups.setdefault(rules_for(app), []).append(i)
     out: list[Selection | None] = [None] * len(apps)
     for rules, indexes in groups.items():
         chosen = select_batch(

@@ -47,6 +47,7 @@ from actuator_selection.services.presenters.selection import (
     or_none,
 )
 from actuator_selection.services.ratio import guidance
+from actuator_selection.sizing.checks import rules_for
 from actuator_selection.sizing.engine import VERDICT_BY_CODE, FloatArray, evaluate_batch
 from actuator_selection.sizing.motion import SegmentTorque
 from actuator_selection.sizing.selection import Application, Verdict, evaluate, select
@@ -221,7 +222,7 @@ def size_selection(
         body=body,
         request=request,
         profile=app.profile,
-        rules=app.rules,
+        rules=rules_for(app),
         controllers=groups.refs(),
         candidates=answered.candidates,
         total=answered.total,

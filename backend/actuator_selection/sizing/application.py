@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Final
 
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.bearing import OutputLoad
-from actuator_selection.sizing.checks import Rule, rules_for
-from actuator_selection.sizing.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.motion import Motion, Profile, profile_of, trapezoid
 
@@ -23,6 +22,18 @@ def require_time_constant(tau: float | None) -> None:
             "thermal_time_constant_s",
             f"must be a finite number > 0: τ_th divides the time in the thermal model, got {tau!r}",
         )
+
+
+DEFAULT_BRAKE_SAFETY_FACTOR: Final = 1.0
+"""S of the brake's holding check (:data:`~actuator_selection.sizing.checks.BRAKE_HOLDING`)
+where the application sets none: 1, the catalogue's holding torque as published, and the
+answer says that S is the user's choice. No public document read names a default: the
+manufacturer's brake tables give the holding torque, the allowable emergency stops and the
+closing time (CHA 1018854 12/2015, e.g. Table 36.3;
+FHA-C manual §4-2) but no factor, and a search of public standards notes and guidance on
+gravity-loaded axes (DGUV/FB HM information on vertical axes, EN 60204-1, ISO 13849)
+found no citable text stating one; a factor found in a secondary source only is not a
+citation (docs/decisions/0026-brake-drop-and-holding-factor.md)."""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -157,9 +168,3 @@ class Application:
         (:attr:`~actuator_selection.sizing.axis.AxisLoad.travel_mm_per_rad`); None for a
         rotary load, or the chapter's shorthand (a rotary load)."""
         return None if self.motion is None else self.motion.load.travel_mm_per_rad
-
-    @property
-    def rules(self) -> tuple[Rule, ...]:
-        """The checks this application needs: the flowchart's, the brake's if fitted, the
-        output bearing's if an output load is given (its life if a life is required)."""
-        return rules_for(self)

@@ -19,7 +19,7 @@ from actuator_selection.schemas.output_load import (
 )
 from actuator_selection.schemas.selections.cycles import AnyCycleIn, CycleIn
 from actuator_selection.schemas.selections.loads import LoadIn, _load_speed, _LoadIn
-from actuator_selection.sizing.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
+from actuator_selection.sizing.application import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.sizing.cycle import SpeedPattern
 from actuator_selection.sizing.selection import Application
 

@@ -7,6 +7,7 @@ from typing import Any
 from actuator_selection.i18n.check_messages import jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.schemas.limits import LimitsOut
+from actuator_selection.sizing.checks import rules_for
 from actuator_selection.sizing.inverse import Limit
 from actuator_selection.sizing.selection import Application
 
@@ -21,7 +22,7 @@ def limits_answer(
 ) -> LimitsOut:
     """The answer from the core's limits; references from the application's rules;
     messages in words by ``localize``."""
-    reference = {rule.name: rule.reference for rule in app.rules}
+    reference = {rule.name: rule.reference for rule in rules_for(app)}
     out: list[dict[str, Any]] = [
         {
             "quantity": limit.quantity,

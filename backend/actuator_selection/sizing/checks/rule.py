@@ -346,7 +346,7 @@ class Rule:
     where an output load is given, …); None: every one. The rules are found in their
     family's file (:data:`~actuator_selection.sizing.checks.rules.ALL_RULES`) and each case
     runs those whose ``when`` holds (:attr:`~actuator_selection.sizing.application.
-    Application.rules`): a rule sharing a condition with others names the same function."""
+    rules_for`): a rule sharing a condition with others names the same function."""
     within: Formula | None = None
     """A further condition for passing, or None."""
     binding: Formula | None = None

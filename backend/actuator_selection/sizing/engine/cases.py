@@ -11,9 +11,8 @@ from typing import Any
 import numpy as np
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.application import DEFAULT_BRAKE_SAFETY_FACTOR, Application
 from actuator_selection.sizing.bearing import swing_deg
-from actuator_selection.sizing.checks.rules.brake import DEFAULT_BRAKE_SAFETY_FACTOR
 from actuator_selection.sizing.engine.arrays import BoolArray, FloatArray, IndexArray
 from actuator_selection.sizing.motion import (
     CycleFigures,

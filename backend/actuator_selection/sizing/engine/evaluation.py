@@ -37,7 +37,7 @@ from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.candidates import Candidate, Selection, Verdict
-from actuator_selection.sizing.checks import RULES, Rule, Status
+from actuator_selection.sizing.checks import RULES, Rule, Status, rules_for
 from actuator_selection.sizing.engine.arrays import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -272,10 +272,11 @@ def ranked_blocks(
 
 
 def rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequence[Rule]:
-    """``rules``, or the rules the cases need (:attr:`Application.rules`), one set for all."""
+    """``rules``, or the rules the cases need
+    (:func:`~actuator_selection.sizing.checks.rules_for`), one set for all."""
     if rules is not None:
         return rules
-    needed = {app.rules for app in apps}
+    needed = {rules_for(app) for app in apps}
     if len(needed) > 1:
         raise InvalidInputError(
             "brake",
@@ -402,7 +403,7 @@ def evaluate_each(
 ) -> list[Candidate]:
     """The candidate of each of ``actuators`` for ``app``, in their order: the engine's
     1 × N view, each candidate detailed from the arrays (``rules``: by default
-    :attr:`~actuator_selection.sizing.application.Application.rules`)."""
+    :func:`~actuator_selection.sizing.checks.rules_for`)."""
     rules = rules_of([app], rules)
     if not actuators:
         return []

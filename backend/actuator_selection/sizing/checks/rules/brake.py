@@ -16,16 +16,6 @@ from actuator_selection.sizing.loads import STANDARD_GRAVITY_M_PER_S2
 if TYPE_CHECKING:
     from actuator_selection.sizing.application import Application
 
-DEFAULT_BRAKE_SAFETY_FACTOR: Final = 1.0
-"""S of :data:`BRAKE_HOLDING` where the application sets none: 1, the catalogue's holding
-torque as published, and the answer says that S is the user's choice. No public document
-read names a default: the manufacturer's brake tables give the holding torque, the
-allowable emergency stops and the closing time (CHA 1018854 12/2015, e.g. Table 36.3;
-FHA-C manual §4-2) but no factor, and a search of public standards notes and guidance on
-gravity-loaded axes (DGUV/FB HM information on vertical axes, EN 60204-1, ISO 13849)
-found no citable text stating one; a factor found in a secondary source only is not a
-citation (docs/decisions/0026-brake-drop-and-holding-factor.md)."""
-
 WORDS: Final = {
     # brake_holding
     "brake_holding.pass": N_(
