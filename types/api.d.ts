@@ -1580,6 +1580,45 @@ export interface components {
             next_cursor: string | null;
         };
         /**
+         * AxisCheckOut
+         * @description A check of the axis's actuator as its selection's answer lists it, with its rule's
+         *     unit and reference (which a selection's answer lists once, in ``check_rules``).
+         */
+        AxisCheckOut: {
+            /** Name */
+            name: string;
+            /**
+             * Status
+             * @enum {string}
+             */
+            status: "pass" | "fail" | "warn" | "no_data" | "not_applicable";
+            /** Value */
+            value: number | null;
+            /** Limit */
+            limit: number | null;
+            /**
+             * Approximate
+             * @description true when a simplified limit stood in for the zone; omitted when false
+             * @default false
+             */
+            approximate: boolean;
+            /**
+             * Missing
+             * @description the catalogue value that is missing: for no_data, what the check needs; for a fail, the value is its least over every value of what is missing (it fails whatever that value is); omitted otherwise
+             */
+            missing?: string | null;
+            /**
+             * Unit
+             * @description unit of the check's value and limit
+             */
+            unit: string;
+            /**
+             * Reference
+             * @description the chapter's equation, table or figure
+             */
+            reference: string;
+        };
+        /**
          * AxisControllerOut
          * @description The axis's chosen controller and its output voltage on the project's bus.
          */
@@ -1727,6 +1766,11 @@ export interface components {
              * @description the actuator's verdict in the axis's selection
              */
             verdict: string;
+            /**
+             * Checks
+             * @description the checks that verdict rests on, as the axis's selection lists them for the actuator; null: a project stored before they were (size it again)
+             */
+            checks?: components["schemas"]["AxisCheckOut"][] | null;
             /** Gear Ratio */
             gear_ratio: number;
             /** Accel Torque Nm */

@@ -16,7 +16,12 @@ from typing import Any, Literal
 from pydantic import ConfigDict, Field, StrictInt
 
 from actuator_selection.schemas.common import MAX_TIME_S, ResponseModel, StrictModel
-from actuator_selection.schemas.selections import ModelName, SelectionRequest, VoltageBrief
+from actuator_selection.schemas.selections import (
+    CheckBrief,
+    ModelName,
+    SelectionRequest,
+    VoltageBrief,
+)
 from actuator_selection.sizing.compatibility import BusClass
 
 MAX_AXES = 16
@@ -152,6 +157,14 @@ class AxisControllerOut(ControllerChoice):
     )
 
 
+class AxisCheckOut(CheckBrief):
+    """A check of the axis's actuator as its selection's answer lists it, with its rule's
+    unit and reference (which a selection's answer lists once, in ``check_rules``)."""
+
+    unit: str = Field(description="unit of the check's value and limit")
+    reference: str = Field(description="the chapter's equation, table or figure")
+
+
 class AxisOut(ResponseModel):
     """One axis sized: its actuator, its selection's figures and its power."""
 
@@ -160,6 +173,11 @@ class AxisOut(ResponseModel):
     model: str
     chosen: bool = Field(description="the engineer chose the model (else: best candidate)")
     verdict: str = Field(description="the actuator's verdict in the axis's selection")
+    checks: list[AxisCheckOut] | None = Field(
+        default=None,
+        description="the checks that verdict rests on, as the axis's selection lists them for "
+        "the actuator; null: a project stored before they were (size it again)",
+    )
     gear_ratio: float
     accel_torque_nm: float | None
     decel_torque_nm: float | None

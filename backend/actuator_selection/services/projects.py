@@ -69,7 +69,8 @@ def size_project(
             app = axis.to_core()
             models = [axis.model] if axis.model is not None else axis.models
             sized = size_selection(axis, app, catalogue.actuators_of(models), catalogue, updated_at)
-            candidate = _pick(orjson.loads(sized.answer)["candidates"], catalogue)
+            selection = orjson.loads(sized.answer)
+            candidate = _pick(selection["candidates"], catalogue)
             actuator = catalogue.actuators_of([candidate["model"]])[0]
             power = axis_power(app.profile, motor_of(actuator))
         except DomainError as exc:
@@ -88,7 +89,7 @@ def size_project(
         offsets.append(axis.offset_s)
         controllers.append(controller)
         axes_out.append(
-            axis_body(axis, actuator, candidate, power)
+            axis_body(axis, actuator, candidate, selection["check_rules"], power)
             | {"controller": controller, "controllers": listed}
         )
     bus = machine_bus(powers, offsets)

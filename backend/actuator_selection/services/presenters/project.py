@@ -39,14 +39,37 @@ def _power(f: PowerFigures) -> JSON:
     return out
 
 
-def axis_body(axis: AxisIn, actuator: Actuator, candidate: JSON, power: AxisPower) -> JSON:
-    """One axis: its actuator, its selection's candidate figures and its power."""
+def _checks(candidate: JSON, rules: list[JSON]) -> list[JSON]:
+    """The candidate's checks, each whole (``AxisCheckOut``) with its rule's unit and
+    reference."""
+    by_name = {r["name"]: r for r in rules}
+    return [
+        {
+            "name": c["name"],
+            "status": c["status"],
+            "value": c["value"],
+            "limit": c["limit"],
+            "approximate": c.get("approximate", False),
+            "missing": c.get("missing"),
+            "unit": by_name[c["name"]]["unit"],
+            "reference": by_name[c["name"]]["reference"],
+        }
+        for c in candidate["checks"]
+    ]
+
+
+def axis_body(
+    axis: AxisIn, actuator: Actuator, candidate: JSON, rules: list[JSON], power: AxisPower
+) -> JSON:
+    """One axis: its actuator, its selection's candidate figures and checks (``rules``: the
+    selection's ``check_rules``), and its power."""
     return {
         "name": axis.name,
         "offset_s": axis.offset_s,
         "model": actuator.model,
         "chosen": axis.model is not None,
         "verdict": candidate["verdict"],
+        "checks": _checks(candidate, rules),
         "gear_ratio": actuator.gear_ratio,
         "accel_torque_nm": candidate["accel_torque_nm"],
         "decel_torque_nm": candidate["decel_torque_nm"],
