@@ -5,13 +5,21 @@ document (HTML and PDF, the PDF read back with pypdf) shows every axis."""
 from __future__ import annotations
 
 import copy
+import gzip
 import io
 import re
+import unicodedata
+from dataclasses import replace
+from html import unescape
 from typing import Any
 
+import orjson
 from pypdf import PdfReader
-from tests.api._sales_fixtures import SalesApi, api, sales_api_with
+from sqlalchemy.orm import Session
+from tests.api._sales_fixtures import WORKED_EXAMPLE, SalesApi, api, sales_api_with
 from tests.api.test_projects import PICK_AND_PLACE_CELL
+
+from actuator_selection.db.projects import ProjectRepository
 
 __all__ = ["api", "sales_api_with"]
 
@@ -158,3 +166,92 @@ def test_refusals_name_the_field(api: SalesApi) -> None:
     assert response.status_code == 422
     assert response.json()["detail"][0]["type"] == "quote_source"
     assert "Maschinenprojekt" in response.json()["detail"][0]["msg"]
+
+
+UNCONFIRMED_AXIS: dict[str, Any] = {
+    "name": "W",
+    "offset_s": 0.0,
+    **WORKED_EXAMPLE,
+    "cycle": {**WORKED_EXAMPLE["cycle"], "pause_s": 2.1},  # the cell's 2.4 s machine cycle
+    "model": "FHA-25C-50-L",
+}
+"""The chapter's worked example as an axis of the cell, on its FHA-25C-50-L: unconfirmed,
+the entry publishes no continuous-duty data (tests/api/test_quotes.py)."""
+
+
+def _banner(html: str) -> list[str]:
+    """The reasons the document's unconfirmed banner lists, as text."""
+    found = re.search(r'data-field="unconfirmed">.*?<ul>(.*?)</ul>', html, re.S)
+    assert found is not None, html
+    items = re.findall(r"<li>(.*?)</li>", found.group(1), re.S)
+    return [unescape(re.sub(r"<[^>]+>", "", item)) for item in items]
+
+
+def _document(api: SalesApi, number: str, language: str, pdf: bool = False) -> Any:
+    response = api.client.get(
+        f"/api/v1/quotes/{number}/document{'.pdf' if pdf else ''}",
+        headers=api.headers("sales", **{"Accept-Language": language}),
+    )
+    assert response.status_code == 200, response.text
+    return response
+
+
+def test_an_unconfirmed_axis_is_quoted_with_its_checks_as_a_selection_is(api: SalesApi) -> None:
+    """Each axis that is not confirmed suitable carries the checks that did not pass, in the
+    answer and in the document (HTML and PDF, English and German), worded as the quote of a
+    selection of the same load case words them."""
+    cell = {**PICK_AND_PLACE_CELL, "axes": [*PICK_AND_PLACE_CELL["axes"], UNCONFIRMED_AXIS]}
+    project = api.client.post("/api/v1/projects", json=cell).json()
+    assert [a["verdict"] for a in project["axes"]] == ["suitable"] * 3 + ["unconfirmed"]
+    quote = _created(api, project)
+    assert quote["verdict"] == "unconfirmed"
+    *confirmed, axis = quote["axes"]
+    assert [a["verdict_reasons"] for a in confirmed] == [[], [], []]
+    # the same load case as a selection, quoted on the same actuator
+    selection = api.selection(models=["FHA-25C-50-L"], cycle=UNCONFIRMED_AXIS["cycle"])
+    alone = api.post("/api/v1/quotes", json=api.quote_body(selection["id"])).json()
+    assert alone["verdict_reasons"]
+    assert axis["verdict_reasons"] == alone["verdict_reasons"]
+    assert quote["verdict_reasons"] == [f"axis W: {r}" for r in alone["verdict_reasons"]]
+    for language, on_axis in (("en", "Axis W: "), ("de", "Achse W: ")):
+        reasons = _banner(_document(api, alone["number"], language).text)
+        assert reasons
+        assert _banner(_document(api, quote["number"], language).text) == [
+            on_axis + r for r in reasons
+        ]
+        text = _pdf_text(_document(api, quote["number"], language, pdf=True).content)
+        for reason in reasons:
+            # the PDF writes subscripts as such (nₐᵥ): compared in their compatibility form
+            flat = re.sub(r"\s+", "", unicodedata.normalize("NFKC", text))
+            assert re.sub(r"\s+", "", on_axis + reason) in flat, (language, reason, text)
+
+
+def test_a_project_stored_before_it_kept_its_checks_is_quoted_as_before(
+    api: SalesApi, session: Session
+) -> None:
+    """A project stored before its axes' checks were (``checks`` absent): quoted, the
+    unconfirmed axis named as it was; sized again, with its checks."""
+    cell = {**PICK_AND_PLACE_CELL, "axes": [*PICK_AND_PLACE_CELL["axes"], UNCONFIRMED_AXIS]}
+    project = api.client.post("/api/v1/projects", json=cell).json()
+    repository = ProjectRepository(session)
+    stored = repository.get(project["id"])
+    assert stored is not None
+    answer = orjson.loads(gzip.decompress(stored.answer_gzip))
+    for axis in answer["axes"]:
+        del axis["checks"]
+    assert repository.replace(replace(stored, answer_gzip=gzip.compress(orjson.dumps(answer))))
+    session.commit()
+    assert (
+        api.client.get(f"/api/v1/projects/{project['id']}").json()["axes"][3].get("checks") is None
+    )
+    quote = _created(api, project)
+    assert quote["verdict"] == "unconfirmed"
+    assert [a["verdict_reasons"] for a in quote["axes"]] == [[], [], [], []]
+    assert quote["verdict_reasons"] == ["axis W: FHA-25C-50-L unconfirmed"]
+    for language in ("en", "de"):
+        assert _banner(_document(api, quote["number"], language).text) == [
+            "axis W: FHA-25C-50-L unconfirmed"
+        ]
+        _document(api, quote["number"], language, pdf=True)
+    assert api.client.post(f"/api/v1/projects/{project['id']}/size").status_code == 200
+    assert _created(api, project)["axes"][3]["verdict_reasons"]

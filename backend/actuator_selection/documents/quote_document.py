@@ -155,20 +155,39 @@ def _with_data(t: DocumentText, key: str, **params: str) -> Markup:
     return text
 
 
-def _reasons(
-    quote: QuoteOut, candidate: StoredCandidate | None, language: Language
-) -> list[Markup]:
-    """Why the quote is unconfirmed, in ``language``: the quoted candidate's checks that did
-    not pass, as the stored selection holds them (the quote's stored English reasons where
-    the selection is gone)."""
-    t = DocumentText(language)
-    if candidate is None:
-        return [t.message(reason) for reason in quote.verdict_reasons]
+def _open_checks(checks: Iterable[StoredCheck], t: DocumentText) -> list[Markup]:
+    """The checks that did not pass, each its name and its message in ``t``'s language."""
     return [
-        _label(t, "check." + c.name, c.name) + ": " + t.message(render_check(c.phrase, language))
-        for c in candidate.checks
+        _label(t, "check." + c.name, c.name) + ": " + t.message(render_check(c.phrase, t.language))
+        for c in checks
         if c.open
     ]
+
+
+def _on_axis_markup(axis: str, text: Markup, t: DocumentText) -> Markup:
+    """``text`` after the project axis it is for (``Axis Z: …``), the axis's name escaped."""
+    slot = "\x00"
+    return Markup(Markup.escape(t("item_axis", axis=axis, description=slot)).replace(slot, text))
+
+
+def _reasons(
+    quote: QuoteOut, candidate: StoredCandidate | None, record: QuoteRecord, language: Language
+) -> list[Markup]:
+    """Why the quote is unconfirmed, in ``language``: the quoted candidate's checks that did
+    not pass, as the stored selection holds them; a project quote's, each axis's as the
+    quote stored them, after the axis (the quote's stored English reasons where the
+    selection is gone, or the project was stored before it kept its axes' checks)."""
+    t = DocumentText(language)
+    if candidate is not None:
+        return _open_checks(candidate.checks, t)
+    axes = record.axes or ()
+    if axes and all("checks" in a for a in axes):
+        return [
+            _on_axis_markup(a["name"], reason, t)
+            for a in axes
+            for reason in _open_checks((StoredCheck.model_validate(c) for c in a["checks"]), t)
+        ]
+    return [t.message(reason) for reason in quote.verdict_reasons]
 
 
 def _check(checks: Iterable[StoredCheck], name: str) -> StoredCheck | None:
@@ -426,7 +445,10 @@ def quote_document_context(
             else ""
         ),
         unconfirmed=(
-            {"text": t("unconfirmed_banner"), "reasons": _reasons(quote, candidate, language)}
+            {
+                "text": t("unconfirmed_banner"),
+                "reasons": _reasons(quote, candidate, record, language),
+            }
             if quote.unconfirmed
             else None
         ),

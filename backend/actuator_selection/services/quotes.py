@@ -62,6 +62,7 @@ from actuator_selection.schemas.quotes import (
     QuoteListOut,
     QuoteOut,
     StoredCandidate,
+    StoredCheck,
     StoredSelection,
 )
 from actuator_selection.services.errors import (
@@ -360,6 +361,20 @@ def _axis_controller(
     return words, quoted
 
 
+def _axis_reasons(axis: dict[str, Any]) -> dict[str, Any]:
+    """An axis's reasons as a selection's quote has them (the checks that did not pass, in
+    words) and, for its document, those checks as stored: from the project's checks of the
+    axis's actuator; none (and no ``checks``) for a project stored before it kept them."""
+    if axis.get("checks") is None:
+        return {"verdict_reasons": []}
+    checks = [StoredCheck.model_validate(c) for c in axis["checks"]]
+    held = [c for c in checks if c.open]
+    return {
+        "verdict_reasons": [str(c.summary) for c in held],
+        "checks": [c.model_dump(mode="json") for c in held],
+    }
+
+
 def _project_basis(session: Session, body: QuoteCreate) -> _Basis:
     """A machine project's quote: a line per axis for its actuator, and one for its
     controller where ``axes`` gives one."""
@@ -405,19 +420,24 @@ def _project_basis(session: Session, body: QuoteCreate) -> _Basis:
                 "name": name,
                 "actuator_model": axis["model"],
                 "verdict": axis["verdict"],
-                "verdict_reasons": [],
+                **_axis_reasons(axis),
                 "controller": controller,
                 "actuator": snapshot,
             }
         )
-    unconfirmed = [a for a in axes if a["verdict"] != "suitable"]
+    reasons = [
+        f"axis {a['name']}: {reason}"
+        for a in axes
+        for reason in a["verdict_reasons"]
+        or ([f"{a['actuator_model']} unconfirmed"] if a["verdict"] != "suitable" else [])
+    ]
     return _Basis(
         selection_id=None,
         project_id=found.id,
         catalogue_version=found.catalogue_version,
         actuator_model=axes[0]["actuator_model"],
-        verdict="unconfirmed" if unconfirmed else "suitable",
-        reasons=tuple(f"axis {a['name']}: {a['actuator_model']} unconfirmed" for a in unconfirmed),
+        verdict="suitable" if all(a["verdict"] == "suitable" for a in axes) else "unconfirmed",
+        reasons=tuple(reasons),
         snapshot=axes[0]["actuator"],
         lines=lines,
         axes=tuple(axes),
