@@ -4909,9 +4909,9 @@ export interface components {
             catalogue_version: number;
             /**
              * Actuator Model
-             * @description the actuator quoted (a project's: its first axis's)
+             * @description the actuator quoted; null on a machine project's quote, which quotes one per axis: read `axes[].actuator_model` and the `items` of kind `actuator`
              */
-            actuator_model: string;
+            actuator_model: string | null;
             /**
              * Axes
              * @description a project quote's axes, in the project's order; null: a selection's quote

@@ -226,6 +226,26 @@ def test_an_unconfirmed_axis_is_quoted_with_its_checks_as_a_selection_is(api: Sa
             assert re.sub(r"\s+", "", on_axis + reason) in flat, (language, reason, text)
 
 
+def test_a_project_quote_names_no_actuator_of_its_own(api: SalesApi) -> None:
+    """A project's quote quotes an actuator per axis: ``actuator_model`` is null (not the
+    first axis's), the models are the axes' and the lines'; as stored, listed and read back
+    (a quote stored before this rule holds the first axis's in its row: read the same)."""
+    project = _project(api)
+    quote = _created(api, project)
+    assert quote["actuator_model"] is None
+    models = [a["model"] for a in project["axes"]]
+    assert [a["actuator_model"] for a in quote["axes"]] == models
+    assert [i["item_code"] for i in quote["items"] if i["kind"] == "actuator"] == models
+    assert api.get(f"/api/v1/quotes/{quote['number']}").json()["actuator_model"] is None
+    listed = api.get("/api/v1/quotes", params={"q": quote["number"]}).json()["quotes"]
+    assert [q["actuator_model"] for q in listed] == [None]
+    selection = api.selection(models=["FHA-25C-50-L"])
+    alone = api.post("/api/v1/quotes", json=api.quote_body(selection["id"])).json()
+    assert alone["actuator_model"] == "FHA-25C-50-L"
+    schema = api.client.get("/openapi.json").json()["components"]["schemas"]["QuoteOut"]
+    assert {"type": "null"} in schema["properties"]["actuator_model"]["anyOf"]
+
+
 def test_a_project_stored_before_it_kept_its_checks_is_quoted_as_before(
     api: SalesApi, session: Session
 ) -> None:

@@ -554,3 +554,8 @@ def test_a_machine_project_is_quoted_with_a_line_per_axis(
         ("X", "controller"),
         ("C", "actuator"),
     ]
+    # the list names each axis's actuator (the quote has none of its own)
+    row = page.locator(f'tr[data-number="{number}"]')
+    models = ", ".join(a["model"] for a in project["axes"])
+    expect(row).to_contain_text(models, timeout=SLOW_MS)
+    expect(row).not_to_contain_text("null")

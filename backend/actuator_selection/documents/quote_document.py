@@ -500,7 +500,11 @@ def quote_document_context(
         l_catalogue=t("catalogue_heading"),
         l_checks=t("checks_heading"),
         l_diagram=t("diagram_heading"),
-        diagram_label=t("diagram_label", model=quote.actuator_model),
+        diagram_label=(
+            t("diagram_label", model=quote.actuator_model)
+            if quote.actuator_model is not None
+            else ""
+        ),
         load_rows=load_facts,
         cycle_rows=cycle_rows,
         torque_rows=torque_rows,

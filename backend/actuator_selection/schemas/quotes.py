@@ -361,7 +361,10 @@ class QuoteOut(ResponseModel):
         description="catalogue version the selection (or the project) used"
     )
     catalogue_version: int = Field(description="catalogue version when the quote was made")
-    actuator_model: str = Field(description="the actuator quoted (a project's: its first axis's)")
+    actuator_model: str | None = Field(
+        description="the actuator quoted; null on a machine project's quote, which quotes one "
+        "per axis: read `axes[].actuator_model` and the `items` of kind `actuator`"
+    )
     axes: list[QuoteAxisOut] | None = Field(
         description="a project quote's axes, in the project's order; null: a selection's quote"
     )
@@ -427,7 +430,9 @@ class QuoteOut(ResponseModel):
             ),
             selection_catalogue_version=record.selection_catalogue_version,
             catalogue_version=record.catalogue_version,
-            actuator_model=record.actuator_model,
+            # a project's quote quotes an actuator per axis, none as the quote's (its
+            # stored column holds the first axis's, as quotes made before this rule do)
+            actuator_model=record.actuator_model if record.project_id is None else None,
             verdict="suitable" if record.verdict == "suitable" else "unconfirmed",
             unconfirmed=record.verdict == "unconfirmed",
             verdict_reasons=list(record.verdict_reasons),

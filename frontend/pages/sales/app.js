@@ -715,7 +715,14 @@ function row(quote) {
     { dataset: { number: quote.number } },
     h("td", { class: "mono" }, quote.number),
     h("td", {}, quote.customer.name, reference ? h("div", { class: "hint" }, reference) : null),
-    h("td", {}, quote.actuator_model, " ", ...flags),
+    // a project's quote has an actuator per axis, none of its own (actuator_model null)
+    h(
+      "td",
+      {},
+      quote.actuator_model ?? quote.axes.map((a) => a.actuator_model).join(", "),
+      " ",
+      ...flags,
+    ),
     h("td", { class: "num" }, money(quote.net_total, quote.currency)),
     h(
       "td",
