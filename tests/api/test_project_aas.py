@@ -15,8 +15,11 @@ from basyx.aas import model
 from basyx.aas.adapter import aasx
 from basyx.aas.adapter.json import object_store_to_json, read_aas_json_file
 from fastapi.testclient import TestClient
+from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 from tests.api.test_aas import SUBMODEL_SEMANTIC_ID, TEMPLATE, _allowed_deviation, _by_path
 from tests.api.test_projects import API, PICK_AND_PLACE_CELL, created
+
+__all__ = ["api", "sales_api_with"]
 
 
 def _project(client: TestClient) -> dict[str, Any]:
@@ -128,3 +131,34 @@ def test_the_aasx_holds_the_same_records_and_a_motion_file_per_axis(client: Test
 def test_unknown_project_is_404(client: TestClient) -> None:
     assert client.get(f"{API}/no-such/aas").status_code == 404
     assert client.get(f"{API}/no-such/aas.aasx").status_code == 404
+
+
+def test_after_a_catalogue_change_the_record_is_a_conflict_until_sized_again(
+    api: SalesApi,
+) -> None:
+    """As a selection's record (its candidate's detail, computed again, answers 409 after a
+    catalogue change): the project's record is computed again from the stored load cases,
+    so only with the catalogue the project was sized with; sized again, it is the record."""
+    project = _project(api.client)
+    model_name = project["axes"][0]["model"]
+    exported = api.get("/api/v1/catalogue/export", role="admin", params={"format": "json"})
+    (row,) = [r for r in exported.json()["actuators"] if r["model"] == model_name]
+    changed = api.client.put(
+        f"/api/v1/actuators/{model_name}",
+        json={**row, "max_torque_nm": row["max_torque_nm"] * 0.9},
+        headers=api.headers("admin"),
+    )
+    assert changed.status_code == 200, changed.text
+    for path in ("aas", "aas.aasx"):
+        response = api.client.get(f"{API}/{project['id']}/{path}")
+        assert response.status_code == 409, (path, response.text)
+        (error,) = response.json()["detail"]
+        assert error["loc"] == ["path", "project_id"]
+        assert "size it again" in error["msg"]
+    # the stored project stays as it was sized
+    assert api.client.get(f"{API}/{project['id']}").json() == project
+    sized = api.client.post(f"{API}/{project['id']}/size")
+    assert sized.status_code == 200, sized.text
+    assert sized.json()["catalogue_version"] > project["catalogue_version"]
+    for path in ("aas", "aas.aasx"):
+        assert api.client.get(f"{API}/{project['id']}/{path}").status_code == 200, path
