@@ -275,3 +275,21 @@ def test_a_project_stored_before_it_kept_its_checks_is_quoted_as_before(
         _document(api, quote["number"], language, pdf=True)
     assert api.client.post(f"/api/v1/projects/{project['id']}/size").status_code == 200
     assert _created(api, project)["axes"][3]["verdict_reasons"]
+
+
+def test_an_unsuitable_axis_is_refused_naming_its_failing_checks(api: SalesApi) -> None:
+    """As a selection's unsuitable candidate is refused: 422 at the axis, naming the checks
+    that fail."""
+    axis = {**UNCONFIRMED_AXIS, "model": "CHA-14A-E-30"}
+    cell = {**PICK_AND_PLACE_CELL, "axes": [*PICK_AND_PLACE_CELL["axes"], axis]}
+    project = api.client.post("/api/v1/projects", json=cell).json()
+    assert project["axes"][3]["verdict"] == "unsuitable"
+    response = api.post("/api/v1/quotes", json=_quote_body(api, project))
+    assert response.status_code == 422, response.text
+    (error,) = response.json()["detail"]
+    assert (error["loc"], error["type"]) == (["body", "axes", 3], "unsuitable")
+    failing = [c["name"] for c in project["axes"][3]["checks"] if c["status"] == "fail"]
+    assert failing
+    assert error["msg"].startswith("CHA-14A-E-30 is unsuitable")
+    for name in failing:
+        assert f"{name}: " in error["msg"], (name, error["msg"])

@@ -394,8 +394,12 @@ def _project_basis(session: Session, body: QuoteCreate) -> _Basis:
     for k, (axis, item) in enumerate(zip(sized, asked, strict=True)):
         name = axis["name"] or str(k + 1)
         loc: list[str | int] = ["body", "axes", k]
+        said = _axis_reasons(axis)
         if axis["verdict"] == "unsuitable":
-            raise invalid(loc, "unsuitable", model=axis["model"], reasons=f"axis {name}")
+            # the checks that fail, as a selection's refusal names them (where stored)
+            failing = "; ".join(said["verdict_reasons"])
+            refused = f"axis {name}: {failing}" if failing else f"axis {name}"
+            raise invalid(loc, "unsuitable", model=axis["model"], reasons=refused)
         snapshot = _quotable(session, axis["model"], loc)
         lines.append(
             _actuator_line(
@@ -420,7 +424,7 @@ def _project_basis(session: Session, body: QuoteCreate) -> _Basis:
                 "name": name,
                 "actuator_model": axis["model"],
                 "verdict": axis["verdict"],
-                **_axis_reasons(axis),
+                **said,
                 "controller": controller,
                 "actuator": snapshot,
             }
