@@ -166,3 +166,48 @@ def test_schemas_import_no_database_layer() -> None:
     assert f"{NAME}.schemas.selections.answer" in modules  # and its packages
     for forbidden in (f"{NAME}.db", "sqlalchemy"):
         assert forbidden not in modules, f"the schemas imported {forbidden}"
+
+
+def circles(edges: list[tuple[str, str]]) -> list[list[str]]:
+    """The circles of ``edges``: each set of two or more modules that import one another,
+    directly or through others (Tarjan's strongly connected components)."""
+    graph: dict[str, list[str]] = {}
+    for a, b in edges:
+        graph.setdefault(a, []).append(b)
+        graph.setdefault(b, [])
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[list[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in graph[v]:
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = stack[stack.index(v) :]
+            del stack[stack.index(v) :]
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def test_no_modules_import_one_another() -> None:
+    """A module that imports another which imports it back (directly or through others)
+    splits one idea over both: neither can be read, tested or moved alone. Imports
+    needed for types only count too: the reader follows them all the same."""
+    assert circles(house_edges()) == []
+
+
+def test_circles_finds_a_circle() -> None:
+    edges = [("a", "b"), ("b", "c"), ("c", "a"), ("c", "d")]
+    assert circles(edges) == [["a", "b", "c"]]
