@@ -13,7 +13,10 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from contextlib import AbstractContextManager
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
+from typing import Any
 
+import numpy as np
+import numpy.typing as npt
 from sqlalchemy.orm import Session
 
 from actuator_selection.catalogue.actuators import Actuator
@@ -44,6 +47,27 @@ class MatchGroup:
     :attr:`CatalogueSnapshot.controllers`, best first."""
 
 
+@dataclass(frozen=True, slots=True)
+class ActuatorColumns:
+    """A list of actuators as columns, each indexed by a ranking's order at once: what an
+    answer and a stored ranking name of each actuator (the record, its model, family and
+    gear ratio, and how many controllers Table 521.1 excludes for it). Reading 64,000
+    attributes one by one cost more than the engine's whole evaluation."""
+
+    actuator: npt.NDArray[np.object_]
+    model: npt.NDArray[np.object_]
+    family: npt.NDArray[np.object_]
+    gear_ratio: npt.NDArray[np.object_]
+    excluded: npt.NDArray[np.int64]
+
+
+def _objects(values: Sequence[Any]) -> npt.NDArray[np.object_]:
+    """``values`` as a one-dimensional object array (numpy would unpack tuples)."""
+    out = np.empty(len(values), dtype=object)
+    out[:] = values
+    return out
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class CatalogueSnapshot:
     """Everything a selection reads from the catalogue, at one catalogue version."""
@@ -68,6 +92,10 @@ class CatalogueSnapshot:
         default_factory=dict, init=False, repr=False, compare=False
     )
     """The engine's catalogue arrays, per list of models asked for."""
+    _columns: dict[tuple[str, ...], ActuatorColumns] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+    """:meth:`columns`, per list of models asked for."""
     _excluded_by_model: dict[str, int] = field(
         default_factory=dict, init=False, repr=False, compare=False
     )
@@ -86,15 +114,43 @@ class CatalogueSnapshot:
             found.update((m, by_interface[id(interfaces[m])]) for m in self._by_model)
         return found
 
+    def _key(self, actuators: Sequence[Actuator]) -> tuple[str, ...]:
+        """The models of ``actuators``: the key of what is built once per list of them
+        (the whole catalogue's read from the index, not from 64,000 records)."""
+        if actuators is self.actuators:
+            return tuple(self._by_model)
+        return tuple([a.model for a in actuators])
+
     def arrays(self, actuators: tuple[Actuator, ...]) -> CatalogueArrays:
         """:func:`~actuator_selection.sizing.engine.catalogue_arrays` of ``actuators`` (the
         whole catalogue or a ``models`` subset of it), built once per version."""
-        key = tuple(a.model for a in actuators)
+        key = self._key(actuators)
         found = self._arrays.get(key)
         if found is None:
             if len(self._arrays) > 256:  # subsets named by requests: keep it bounded
                 self._arrays.clear()
             found = self._arrays.setdefault(key, catalogue_arrays(actuators))
+        return found
+
+    def columns(self, actuators: tuple[Actuator, ...]) -> ActuatorColumns:
+        """:class:`ActuatorColumns` of ``actuators`` (the whole catalogue or a ``models``
+        subset of it), built once per version."""
+        key = self._key(actuators)
+        found = self._columns.get(key)
+        if found is None:
+            if len(self._columns) > 256:  # subsets named by requests: keep it bounded
+                self._columns.clear()
+            excluded = self.excluded_by_model()
+            found = self._columns.setdefault(
+                key,
+                ActuatorColumns(
+                    actuator=_objects(actuators),
+                    model=_objects(key),
+                    family=_objects([a.family for a in actuators]),
+                    gear_ratio=_objects([a.gear_ratio for a in actuators]),
+                    excluded=np.array([excluded[m] for m in key], dtype=np.int64),
+                ),
+            )
         return found
 
     def match_groups(self, interface: ActuatorInterface) -> tuple[MatchGroup, ...]:

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from datetime import datetime
 
 import numpy as np
+import numpy.typing as npt
 import orjson
 from sqlalchemy.orm import Session
 
@@ -35,7 +36,12 @@ from actuator_selection.errors import ConflictError, NotFoundError
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.checks import Localize, english
 from actuator_selection.schemas.selections import CandidateDetailOut, SelectionRequest
-from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot, DriveContext
+from actuator_selection.services.catalogue import (
+    ActuatorColumns,
+    CatalogueCache,
+    CatalogueSnapshot,
+    DriveContext,
+)
 from actuator_selection.services.errors import invalid, not_found
 from actuator_selection.services.presenters import selection as presenter
 from actuator_selection.services.presenters.detail import (
@@ -97,6 +103,12 @@ class _Ranked:
 
     actuators: list[Actuator]
     verdicts: list[Verdict]
+    verdict_codes: npt.NDArray[np.int8]
+    """The verdicts as the engine's codes (:data:`VERDICT_BY_CODE`), in the ranking's order."""
+    columns: ActuatorColumns
+    """The actuators' columns as asked (:meth:`CatalogueSnapshot.columns`)."""
+    order: npt.NDArray[np.intp]
+    """Where each place of the ranking stands in :attr:`columns`."""
     torques: tuple[FloatArray, FloatArray, FloatArray, FloatArray]
     """T_1, T_2, T_3, T_rms in the ranking's order; NaN without J_A (T_2 also where the
     cycle never runs steadily)."""
@@ -110,22 +122,49 @@ class _Ranked:
         """Every candidate's checks as dicts (:func:`presenter.binding` asks them)."""
         return self.checks.dicts(0, len(self.actuators))
 
+    def rest(self, start: int) -> bytes:
+        """:func:`presenter.ranking_rest` from place ``start`` on, its names read from
+        :attr:`columns` in the ranking's order at once."""
+        at, c = self.order[start:], self.columns
+        return presenter.ranking_rest(
+            start=start,
+            model=c.model[at].tolist(),
+            family=c.family[at].tolist(),
+            gear_ratio=c.gear_ratio[at].tolist(),
+            verdict=_VERDICT_VALUES[self.verdict_codes[start:]].tolist(),
+            excluded=c.excluded[at].tolist(),
+            torques=self.torques,
+            checks=self.checks,
+        )
+
+
+_VERDICTS = np.array(VERDICT_BY_CODE, dtype=object)
+"""The verdicts by the engine's code, to index with an array of codes."""
+_VERDICT_VALUES = np.array([v.value for v in VERDICT_BY_CODE], dtype=object)
+"""Their values as answers write them, likewise."""
+
 
 def _ranked(
     actuators: Sequence[Actuator], app: Application, catalogue: CatalogueSnapshot
 ) -> _Ranked:
     """The candidates of ``app`` over ``actuators``, ranked: the engine's 1 × N view of one
     case, whatever the number of actuators."""
-    ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(tuple(actuators)))
+    asked = tuple(actuators)
+    ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(asked))
     torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
     if any(np.isinf(t).any() for t in torques):
         # Finite inputs that overflow a torque: the ranked candidates' torques name the
         # input (422).
         select(actuators, app)
     order = np.array(ev.ranking(0), dtype=np.intp)
+    columns = catalogue.columns(asked)
+    codes = ev.verdicts[0][order]
     return _Ranked(
-        actuators=[actuators[j] for j in order.tolist()],
-        verdicts=[VERDICT_BY_CODE[v] for v in ev.verdicts[0][order].tolist()],
+        actuators=columns.actuator[order].tolist(),
+        verdicts=_VERDICTS[codes].tolist(),
+        verdict_codes=codes,
+        columns=columns,
+        order=order,
         torques=(
             ev.accel_torque_nm[0][order],
             ev.constant_torque_nm[0][order],
@@ -172,22 +211,11 @@ def _candidates(
         groups=groups,
         speed_rpm=speed,
     )
-    rest = None
-    if shown < total:
-        excluded = catalogue.excluded_by_model()
-        rest = presenter.ranking_rest(
-            start=shown,
-            actuators=ranked.actuators,
-            verdicts=ranked.verdicts,
-            torques=ranked.torques,
-            checks=ranked.checks,
-            excluded=[excluded[a.model] for a in ranked.actuators[shown:]],
-        )
     return _Answered(
         candidates=candidates,
         total=total,
-        counts=presenter.verdict_counts(ranked.verdicts),
-        rest=rest,
+        counts=presenter.verdict_counts(ranked.verdict_codes),
+        rest=ranked.rest(shown) if shown < total else None,
         binding=presenter.binding(ranked.actuators, ranked.verdicts, ranked.check_dicts, app),
     )
 

@@ -33,7 +33,12 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.sizing.checks import Check, Rule
 from actuator_selection.sizing.drive import shared_voltage_check
 from actuator_selection.sizing.electrical import DcBusClass
-from actuator_selection.sizing.engine import STATUS_BY_CODE, BatchEvaluation, FloatArray
+from actuator_selection.sizing.engine import (
+    STATUS_BY_CODE,
+    VERDICT_BY_CODE,
+    BatchEvaluation,
+    FloatArray,
+)
 from actuator_selection.sizing.inverse import shortest_accel, shortest_pause
 from actuator_selection.sizing.motion import Profile
 from actuator_selection.sizing.selection import VALUE_OF, Application, Verdict
@@ -472,11 +477,13 @@ VERDICT_NAMES = ("suitable", "unconfirmed", "unsuitable")
 """The verdicts in the ranking's order, as ``verdict_counts`` lists them."""
 
 
-def verdict_counts(verdicts: Sequence[Verdict]) -> dict[str, int]:
-    """``verdict_counts``: how many candidates of the whole ranking have each verdict."""
+def verdict_counts(codes: npt.NDArray[np.integer[Any]]) -> dict[str, int]:
+    """``verdict_counts``: how many candidates of the whole ranking have each verdict, from
+    the engine's verdict codes (:data:`~actuator_selection.sizing.engine.VERDICT_BY_CODE`)."""
     counts = dict.fromkeys(VERDICT_NAMES, 0)
-    for v in verdicts:
-        counts[VALUE_OF[v]] += 1
+    tally = np.bincount(codes, minlength=len(VERDICT_BY_CODE)).tolist()
+    for verdict, n in zip(VERDICT_BY_CODE, tally, strict=True):
+        counts[VALUE_OF[verdict]] += n
     return counts
 
 
@@ -491,11 +498,13 @@ upgraded from an answer that listed every candidate (migration 0018) is JSON."""
 def ranking_rest(
     *,
     start: int,
-    actuators: Sequence[Actuator],
-    verdicts: Sequence[Verdict],
+    model: list[str],
+    family: list[str],
+    gear_ratio: list[float | None],
+    verdict: list[str],
+    excluded: list[int],
     torques: Sequence[FloatArray],
     checks: RankedChecks,
-    excluded: Sequence[int],
 ) -> bytes:
     """The ranking from place ``start`` on, as stored to be paged later
     (:func:`ranked_candidates`), zstd-compressed: :data:`RANKING_MAGIC`, the length of a
@@ -503,10 +512,10 @@ def ranking_rest(
     verdicts, check names, what checks miss, the status names by code; each array's name,
     dtype and shape), then the arrays' bytes (T_1, T_2, T_3, T_rms; each check's status,
     value, limit, approximate and missing), so that no float is written as text: 6,400
-    candidates' floats as JSON text took longer than the whole ranking. ``actuators``,
-    ``verdicts``, ``torques`` and ``checks`` are the whole ranking's, in its order;
-    ``excluded`` (controllers excluded) the stored candidates'."""
-    rest = actuators[start:]
+    candidates' floats as JSON text took longer than the whole ranking. ``torques`` and
+    ``checks`` are the whole ranking's, in its order; the stored candidates' ``model``,
+    ``family``, ``gear_ratio``, ``verdict`` (as answers write it) and ``excluded``
+    (controllers Table 521.1 excludes) are theirs alone, in the same order."""
     arrays = {
         "torques": np.stack([t[start:] for t in torques]),
         "status": checks.statuses[start:],
@@ -520,11 +529,11 @@ def ranking_rest(
         "statuses": _STATUS_NAMES.tolist(),
         "checks": list(checks.names),
         "missing_what": [list(w) for w in checks.missing_what],
-        "model": [a.model for a in rest],
-        "family": [a.family for a in rest],
-        "gear_ratio": [a.gear_ratio for a in rest],
-        "verdict": [VALUE_OF[v] for v in verdicts[start:]],
-        "controllers_excluded": list(excluded),
+        "model": model,
+        "family": family,
+        "gear_ratio": gear_ratio,
+        "verdict": verdict,
+        "controllers_excluded": excluded,
         "arrays": [[name, a.dtype.str, list(a.shape)] for name, a in arrays.items()],
     }
     written = orjson.dumps(header)
