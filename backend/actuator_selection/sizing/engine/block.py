@@ -289,7 +289,11 @@ class _HeatingGains:
 
     def __init__(self, cat: CatalogueArrays, cases: Cases) -> None:
         published = cat.thermal_time_constant
-        values = sorted({float(v) for v in published.tolist() if v == v})
+        known = ~np.isnan(published)
+        # The distinct published τ_th, sorted, and each actuator's place among them (at
+        # once: one Python step per actuator cost more than the heating at 64,000).
+        distinct, where = np.unique(published[known], return_inverse=True)
+        values = distinct.tolist()
         # Per case, gains for its own τ_th (column 0) and each published τ_th (1, 2, …).
         taus = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
         gains = [_case_gains(cases.pieces.duration, cases.figures.cycle_s, tau) for tau in taus]
@@ -299,10 +303,8 @@ class _HeatingGains:
         self._cycle = np.array([cycle for _, cycle in gains], dtype=np.float64).reshape(
             len(taus), cases.size
         )
-        lookup = {v: i + 1 for i, v in enumerate(values)}
-        self._index = np.array(
-            [0 if v != v else lookup[float(v)] for v in published.tolist()], dtype=np.intp
-        )
+        self._index = np.zeros(published.shape, dtype=np.intp)
+        self._index[known] = where.ravel() + 1
         self._mixed = bool(values)
         shape = (cases.size, published.size)
         case_tau = cases.thermal_time_constant[:, np.newaxis]
