@@ -41,8 +41,6 @@ from enum import Enum
 from pathlib import Path
 from typing import Any
 
-from actuator_selection.errors import InvalidInputError
-from actuator_selection.sales.money import check_currency, parse_amount
 from actuator_selection.text import text_problem
 
 
@@ -74,8 +72,8 @@ class Column:
     ``max_length`` bounds a text cell (the column's width in the database); ``pattern``
     restricts the characters of a name that identifies a row (a model, a family).
     ``convert`` turns a non-empty text cell into its value (a date, a decimal
-    amount, a choice, ...) and raises ``ValueError("must be ...")`` naming the
-    rule; see :func:`iso_date`, :func:`amount`, :func:`one_of`. A header may leave out
+    a choice, ...) and raises ``ValueError("must be ...")`` naming the
+    rule; see :func:`iso_date`, :func:`one_of`. A header may leave out
     an ``optional`` column (one added after files were written without it): its cells
     are then empty.
     """
@@ -183,24 +181,6 @@ def iso_date(text: str) -> date:
         return date.fromisoformat(text)
     except ValueError:
         raise ValueError("must be a date written YYYY-MM-DD") from None
-
-
-def amount(text: str) -> Decimal:
-    """A money amount: a decimal number ≥ 0 with at most two decimal places."""
-    try:
-        return parse_amount(text)
-    except InvalidInputError as exc:
-        raise ValueError(
-            f"{exc.message} (a decimal amount ≥ 0 with at most 2 decimal places)"
-        ) from None
-
-
-def currency(text: str) -> str:
-    """An ISO 4217 code of three capital letters."""
-    try:
-        return check_currency(text)
-    except InvalidInputError:
-        raise ValueError("must be an ISO 4217 code of three capital letters such as EUR") from None
 
 
 def boolean(text: str) -> bool:

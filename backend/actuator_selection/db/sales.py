@@ -34,9 +34,7 @@ from actuator_selection.catalogue.csvio import (
     CsvSpec,
     Problem,
     Record,
-    amount,
     boolean,
-    currency,
     iso_date,
     one_of,
     parse,
@@ -50,6 +48,7 @@ from actuator_selection.db.models.sales import (
     QuoteItemRow,
     QuoteRow,
 )
+from actuator_selection.sales.money import amount_cell, currency_cell
 from actuator_selection.sales.quote_status import QuoteStatus
 from actuator_selection.sales.quote_terms import SellerParty, TaxTotals
 from actuator_selection.sales.records import (
@@ -201,8 +200,8 @@ PRICES = CsvSpec(
         Column(name="item_kind", required=True, convert=one_of(*ITEM_KINDS)),
         Column(name="item_code", required=True, max_length=80),
         Column(name="description"),
-        Column(name="unit_price", required=True, convert=amount),
-        Column(name="currency", required=True, convert=currency),
+        Column(name="unit_price", required=True, convert=amount_cell),
+        Column(name="currency", required=True, convert=currency_cell),
         Column(name="valid_from", required=True, convert=iso_date),
         Column(name="valid_to", convert=iso_date),
         Column(name="source", required=True),

@@ -132,6 +132,26 @@ def check_currency(code: str, *, field: str = "currency") -> str:
     return code
 
 
+def amount_cell(text: str) -> Decimal:
+    """A price list cell's money amount (:class:`~actuator_selection.catalogue.csvio.Column`
+    ``convert``): a decimal number ≥ 0 with at most two decimal places."""
+    try:
+        return parse_amount(text)
+    except InvalidInputError as exc:
+        raise ValueError(
+            f"{exc.message} (a decimal amount ≥ 0 with at most 2 decimal places)"
+        ) from None
+
+
+def currency_cell(text: str) -> str:
+    """A price list cell's currency (a ``convert`` likewise): an ISO 4217 code of three
+    capital letters."""
+    try:
+        return check_currency(text)
+    except InvalidInputError:
+        raise ValueError("must be an ISO 4217 code of three capital letters such as EUR") from None
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class QuoteLine:
     """One priced line: unit price [currency, whole cents] and quantity [pieces, ≥ 1]."""
