@@ -29,7 +29,13 @@ from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_table
 from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.mechanisms import Transmission
-from actuator_selection.sizing.ratio import RatioResult, geared, geared_cases, ratio_study
+from actuator_selection.sizing.ratio import (
+    RatioResult,
+    geared,
+    geared_cases,
+    ranked_ratio_study,
+    ratio_study,
+)
 from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 
@@ -129,6 +135,48 @@ def test_the_search_finds_what_the_exhaustive_study_finds(
     assert any(r.intervals for r in found)
     assert any(r.intervals and r.intervals[0].low_binding for r in found)
     _same(found, exhaustive_ratio_study(actuators(), vary, low, high))
+
+
+def _ranking(results: list[RatioResult]) -> list[RatioResult]:
+    """The answer's order, as the service sorted the whole study before (best value
+    first, by best utilisation, then model)."""
+    return sorted(
+        results,
+        key=lambda r: (
+            r.best_utilisation is None,
+            r.best_utilisation if r.best_utilisation is not None else 0.0,
+            r.actuator.model,
+        ),
+    )
+
+
+@pytest.mark.parametrize(
+    ("study", "low", "high"),
+    [(_worked(4.0), 1.0, 20.0), (_worked(4.0, 0.9), 0.05, 2000.0), (_screw(), 5.0, 1000.0)],
+    ids=["ratio 1-20", "ratio 0.05-2000 eta 0.9", "lead 5-1000"],
+)
+@pytest.mark.parametrize("top", [1, 7, 1000])
+@pytest.mark.parametrize("many_pairs", [ratio.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
+def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
+    study: Study,
+    low: float,
+    high: float,
+    top: int,
+    many_pairs: int,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Only the listed actuators' ends bisected: the first ``top`` of the ranking, each
+    equal to its result of the exhaustive study, and the counts of the whole."""
+    monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
+    vary, columns = study
+    ranked = ranked_ratio_study(actuators(), vary, low, high, top=top, cases_at=columns)
+    whole = exhaustive_ratio_study(actuators(), vary, low, high)
+    expected = _ranking(whole)[:top]
+    assert len(ranked.results) == min(top, len(whole))
+    assert any(r.intervals for r in ranked.results)
+    _same(ranked.results, expected)
+    assert ranked.total == len(whole)
+    assert ranked.fitting == sum(1 for r in whole if r.intervals)
 
 
 def test_a_series_as_before() -> None:

@@ -49,6 +49,7 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.services.limits import solve_limits, stored_limits
 from actuator_selection.services.presenters.selection import DEFAULT_TOP, TOP_MAX, dump_json
 from actuator_selection.services.profiles import with_profiles
+from actuator_selection.services.ratio import DEFAULT_TOP as RATIO_TOP
 from actuator_selection.services.ratio import study
 from actuator_selection.services.selections import (
     candidate_detail,
@@ -195,13 +196,23 @@ def solve_ratio_study(
             description="with the chart (`figure`, `documents/figures.py`), in `lang`'s language"
         ),
     ] = False,
+    top: Annotated[
+        int,
+        Query(
+            ge=1,
+            le=TOP_MAX,
+            description="how many of the ranking's actuators the answer lists (their "
+            "interval ends alone are bisected; every actuator's best value is searched)",
+        ),
+    ] = RATIO_TOP,
 ) -> RatioStudyOut:
-    """For every actuator, the interval(s) of a free transmission value (an external ratio,
-    a lead, a pulley or pinion diameter) in which every check passes, the value of least
-    binding utilisation and the checks that bind at each end (the engine over a grid of
-    values × the catalogue, the ends bisected)."""
+    """For the ranking's first `top` actuators, the interval(s) of a free transmission value
+    (an external ratio, a lead, a pulley or pinion diameter) in which every check passes,
+    the value of least binding utilisation and the checks that bind at each end (the engine
+    over a grid of values × the catalogue, the best values refined, the listed actuators'
+    ends bisected); those that fit first, by their best utilisation."""
     (body,) = with_profiles(session, [body], [["body"]])
-    answer = study(body, catalogue_snapshot(request, session))
+    answer = study(body, catalogue_snapshot(request, session), top)
     if figure:
         chart = ratio_figure(answer, DocumentText(language))
         answer = answer.model_copy(update={"figure": chart})

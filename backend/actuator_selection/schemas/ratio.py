@@ -147,7 +147,14 @@ class RatioStudyOut(ResponseModel):
     min: float
     max: float
     series: list[float] | None
-    actuators: list[RatioActuatorOut]
+    total_actuators: int = Field(description="the actuators studied")
+    fitting_actuators: int = Field(
+        description="those that fit at some value of the range (or the series)"
+    )
+    actuators: list[RatioActuatorOut] = Field(
+        description="the ranking's first `top` (query): those with a best value first, by "
+        "their best utilisation, then by model"
+    )
     figure: dict[str, Any] | None = Field(
         default=None,
         description="with `figure=true`: the chart as a plotly figure (`data` and `layout`, "

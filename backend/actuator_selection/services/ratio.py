@@ -25,7 +25,12 @@ from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases
 from actuator_selection.sizing.mechanisms import Transmission
-from actuator_selection.sizing.ratio import RatioResult, geared, geared_cases, ratio_study
+from actuator_selection.sizing.ratio import (
+    RatioResult,
+    geared,
+    geared_cases,
+    ranked_ratio_study,
+)
 
 
 def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], Application]:
@@ -97,26 +102,28 @@ def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
     )
 
 
-def study(body: RatioStudyRequest, catalogue: CatalogueSnapshot) -> RatioStudyOut:
-    """Every actuator's feasible intervals and best value, those that fit first."""
+DEFAULT_TOP = 100
+"""Actuators a study's answer lists unless the request asks for another number (``top``),
+as a selection's (``presenters.selection.DEFAULT_TOP``)."""
+
+
+def study(
+    body: RatioStudyRequest, catalogue: CatalogueSnapshot, top: int = DEFAULT_TOP
+) -> RatioStudyOut:
+    """The ranking's first ``top`` actuators, those that fit first: each one's feasible
+    intervals and best value."""
     spec: RatioStudyIn = body.ratio_study
     low, high = spec.bounds
     actuators = catalogue.actuators_of(body.models)
-    results = ratio_study(
+    found = ranked_ratio_study(
         actuators,
         varied(body, spec),
         low,
         high,
+        top=top,
         series=spec.series,
         arrays=catalogue.arrays(tuple(actuators)),
         cases_at=columns_of(body, spec),
-    )
-    results.sort(
-        key=lambda r: (
-            r.best_utilisation is None,
-            r.best_utilisation if r.best_utilisation is not None else 0.0,
-            r.actuator.model,
-        )
     )
     return RatioStudyOut(
         catalogue_version=catalogue.version,
@@ -125,7 +132,9 @@ def study(body: RatioStudyRequest, catalogue: CatalogueSnapshot) -> RatioStudyOu
         min=low,
         max=high,
         series=spec.series,
-        actuators=[_out(r, n < spec.curves) for n, r in enumerate(results)],
+        total_actuators=found.total,
+        fitting_actuators=found.fitting,
+        actuators=[_out(r, n < spec.curves) for n, r in enumerate(found.results)],
     )
 
 
@@ -152,13 +161,9 @@ def guidance(body: SelectionRequest, actuators: Sequence[Actuator]) -> list[dict
             max=min(high * GUIDANCE_WIDENING, MAX_VALUE),
         )
         lower, upper = spec.bounds
-        results = [
-            r
-            for r in ratio_study(actuators, varied(body, spec), lower, upper)
-            if r.best is not None and r.best_utilisation is not None
-        ]
-        results.sort(key=lambda r: (r.best_utilisation, r.actuator.model))
-        for result in results[:GUIDED]:
+        ranked = ranked_ratio_study(actuators, varied(body, spec), lower, upper, top=GUIDED)
+        results = [r for r in ranked.results if r.best is not None]
+        for result in results:
             assert result.best is not None
             best = result.best
             interval = next(

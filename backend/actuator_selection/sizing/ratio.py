@@ -460,13 +460,71 @@ def ratio_study(
     cases_at: Callable[[FloatArray], Cases] | None = None,
 ) -> list[RatioResult]:
     """Each actuator's feasible intervals of the free value in [lower, upper] and its best
-    value; with ``series``, only the series' values (an interval: neighbouring series
-    values that all pass). ``cases_at``: the load cases of ``vary`` at many values at
-    once, where the caller can build them as columns (:func:`geared_cases`)."""
+    value, in the catalogue's order; with ``series``, only the series' values (an
+    interval: neighbouring series values that all pass). ``cases_at``: the load cases of
+    ``vary`` at many values at once, where the caller can build them as columns
+    (:func:`geared_cases`)."""
+    found = _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, None)
+    return found.results
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class RankedStudy:
+    """The ranking's first actuators (:func:`ranked_ratio_study`) and how many there were."""
+
+    results: list[RatioResult]
+    """In the ranking's order: those with a best value first, by their best utilisation,
+    then by model."""
+    total: int
+    """The actuators studied."""
+    fitting: int
+    """Those with an interval."""
+
+
+def ranked_ratio_study(
+    actuators: Sequence[Actuator],
+    vary: Callable[[float], Application],
+    lower: float,
+    upper: float,
+    *,
+    top: int,
+    series: Sequence[float] | None = None,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+    cases_at: Callable[[FloatArray], Cases] | None = None,
+) -> RankedStudy:
+    """:func:`ratio_study`'s first ``top`` results in the ranking's order (best value
+    first, by best utilisation, then by model; those without a best value last, by model),
+    each equal to its result of the whole study: every actuator's best value is searched
+    (the ranking reads it), only the listed actuators' interval ends are bisected."""
+    return _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, top)
+
+
+def _ranking(actuators: Sequence[Actuator], has_best: BoolArray, best: _Best) -> IndexArray:
+    """The columns in the ranking's order (:func:`ranked_ratio_study`)."""
+    _names, model_rank = np.unique([a.model for a in actuators], return_inverse=True)
+    utilisation = np.where(has_best, best.utilisation, 0.0)
+    order: IndexArray = np.lexsort((model_rank, utilisation, ~has_best))
+    return order
+
+
+def _study(
+    actuators: Sequence[Actuator],
+    vary: Callable[[float], Application],
+    lower: float,
+    upper: float,
+    series: Sequence[float] | None,
+    rules: Sequence[Rule] | None,
+    arrays: CatalogueArrays | None,
+    cases_at: Callable[[FloatArray], Cases] | None,
+    top: int | None,
+) -> RankedStudy:
+    """The study; ``top`` None: every actuator in the catalogue's order, else the
+    ranking's first ``top``."""
     if not (0 < lower < upper and math.isfinite(upper)):
         raise InvalidInputError("ratio_study.min", code="study_range")
     if not actuators:
-        return []
+        return RankedStudy(results=[], total=0, fitting=0)
     grid = _grid(lower, upper, series)
     cat = catalogue_arrays(actuators) if arrays is None else arrays
     as_columns = cases_at is not None
@@ -500,13 +558,6 @@ def ratio_study(
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
     change_k, change_j = np.nonzero(ok[1:] != ok[:-1])
-    ok_side = np.where(ok[change_k, change_j], grid[change_k], grid[change_k + 1])
-    bad_side = np.where(ok[change_k, change_j], grid[change_k + 1], grid[change_k])
-    bad_fail = np.where(
-        ok[change_k, change_j][:, None],
-        failing_grid[change_k + 1, change_j],
-        failing_grid[change_k, change_j],
-    )
 
     # the best grid value per actuator among the passing ones, then a finer grid about it
     masked = np.where(ok & np.isfinite(util), util, np.inf)
@@ -520,18 +571,39 @@ def ratio_study(
         which=which[best_k, every],
     )
     columns = np.nonzero(has_best)[0]
+    search = _Pairs(cat, zone_table(actuators), cases_at, rules)
+    refine = series is None and columns.size > 0
+    if top is None:
+        chosen = every
+    else:  # every best value first (the ranking reads them), then the listed ones' ends
+        if refine:
+            many = 12 * columns.size >= MANY_PAIRS
+            search.run(_refinement(best, columns, grid, ahead=not many))
+            refine = False
+        chosen = _ranking(actuators, has_best, best)[:top]
+        listed = np.zeros(len(actuators), dtype=np.bool_)
+        listed[chosen] = True
+        keep = listed[change_j]
+        change_k, change_j = change_k[keep], change_j[keep]
+    ok_side = np.where(ok[change_k, change_j], grid[change_k], grid[change_k + 1])
+    bad_side = np.where(ok[change_k, change_j], grid[change_k + 1], grid[change_k])
+    bad_fail = np.where(
+        ok[change_k, change_j][:, None],
+        failing_grid[change_k + 1, change_j],
+        failing_grid[change_k, change_j],
+    )
     if series is None:
         # few pairs: fewer engine calls; many: fewer pairs
-        pairs = 6 * change_k.size + 12 * columns.size
+        pairs = 6 * change_k.size + (12 * columns.size if refine else 0)
         many = pairs >= MANY_PAIRS
         fewest = as_columns and pairs < FEW_PAIRS
         depth = 1 if many else FEWEST_DEPTH if fewest else BISECTION_DEPTH
         searches = []
         if change_k.size:
             searches.append(_bisection(ok_side, bad_side, change_j, bad_fail, depth))
-        if columns.size:
+        if refine:
             searches.append(_refinement(best, columns, grid, ahead=not many))
-        _Pairs(cat, zone_table(actuators), cases_at, rules).run(*searches)
+        search.run(*searches)
     # the failing checks' names once per distinct set of them (a handful)
     sets, set_of = np.unique(bad_fail.reshape(-1, len(names)), axis=0, return_inverse=True)
     named = [tuple(n for n, f in zip(names, row, strict=True) if f) for row in sets.tolist()]
@@ -542,49 +614,61 @@ def ratio_study(
             strict=True,
         )
     )
-    verdict_at = dict(
-        zip(
-            columns.tolist(), (VERDICT_BY_CODE[c] for c in best.code[columns].tolist()), strict=True
-        )
-    )
-    binding_at = dict(
-        zip(columns.tolist(), (names[w] for w in best.which[columns].tolist()), strict=True)
-    )
+    results = _results(actuators, chosen, grid, ok, util, ends, has_best, best, names)
+    fitting = int(ok.any(axis=0).sum())
+    return RankedStudy(results=results, total=len(actuators), fitting=fitting)
+
+
+def _results(
+    actuators: Sequence[Actuator],
+    chosen: IndexArray,
+    grid: FloatArray,
+    ok: BoolArray,
+    util: FloatArray,
+    ends: dict[tuple[int, int], tuple[float, tuple[str, ...]]],
+    has_best: BoolArray,
+    best: _Best,
+    names: tuple[str, ...],
+) -> list[RatioResult]:
+    """The results of the actuators ``chosen``, in that order: their intervals (each run
+    of passing grid values, its ends bisected), best values and curves."""
+    picked = chosen.tolist()
     grid_values = tuple(float(x) for x in grid)
-    shown = util.astype(object)
-    shown[np.isnan(util)] = None
+    shown = util[:, chosen].astype(object)
+    shown[np.isnan(util[:, chosen])] = None
     curves = shown.T.tolist()
     # each run of passing grid values, per actuator in order: [start, stop)
-    edges = np.diff(np.pad(ok.T.astype(np.int8), ((0, 0), (1, 1))), axis=1)
-    run_j, run_start = np.nonzero(edges == 1)
-    _j, run_stop = np.nonzero(edges == -1)
+    edges = np.diff(np.pad(ok[:, chosen].T.astype(np.int8), ((0, 0), (1, 1))), axis=1)
+    run_n, run_start = np.nonzero(edges == 1)
+    _n, run_stop = np.nonzero(edges == -1)
     runs: dict[int, list[Interval]] = {}
-    for j, start, stop in zip(run_j.tolist(), run_start.tolist(), run_stop.tolist(), strict=True):
+    for n, start, stop in zip(run_n.tolist(), run_start.tolist(), run_stop.tolist(), strict=True):
+        j = picked[n]
         low, low_binding = ends[(j, start - 1)] if start > 0 else (float(grid[0]), ())
         high, high_binding = ends[(j, stop - 1)] if stop < grid.size else (float(grid[-1]), ())
         runs.setdefault(j, []).append(
             Interval(low=low, high=high, low_binding=low_binding, high_binding=high_binding)
         )
-
+    found = has_best[chosen].tolist()
     return [
         RatioResult(
-            actuator=actuator,
+            actuator=actuators[j],
             intervals=tuple(runs.get(j, ())),
-            best=value if found else None,
-            best_utilisation=u if found else None,
-            best_binding=binding_at.get(j),
-            verdict=verdict_at.get(j),
+            best=value if fits else None,
+            best_utilisation=u if fits else None,
+            best_binding=names[w] if fits else None,
+            verdict=VERDICT_BY_CODE[c] if fits else None,
             grid=grid_values,
             utilisation=tuple(curve),
         )
-        for j, (actuator, found, value, u, curve) in enumerate(
-            zip(
-                actuators,
-                has_best.tolist(),
-                best.value.tolist(),
-                best.utilisation.tolist(),
-                curves,
-                strict=True,
-            )
+        for j, fits, value, u, w, c, curve in zip(
+            picked,
+            found,
+            best.value[chosen].tolist(),
+            best.utilisation[chosen].tolist(),
+            best.which[chosen].tolist(),
+            best.code[chosen].tolist(),
+            curves,
+            strict=True,
         )
     ]
