@@ -270,18 +270,22 @@ def _cells(block: Block) -> Cells:
     shape = block.accel_torque.shape
     best = np.full(shape, -np.inf)
     which = np.zeros(shape, dtype=np.intp)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for k, d in enumerate(block.details):
-            share = np.where(d.limits > 0, d.values / d.limits, np.nan)
-            share = np.where(np.isfinite(share), share, -np.inf)
-            take = share > best  # the first check of the largest share, as argmax
-            best = np.where(take, share, best)
-            which = np.where(take, k, which)
+            share = d.values / d.limits  # a share where the limit is positive and it finite
+            take = (d.limits > 0) & np.isfinite(share) & (share > best)
+            np.copyto(best, share, where=take)  # the first check of the largest, as argmax
+            which[take] = k
     util = np.where(np.isfinite(best), best, np.nan)
-    failing = np.stack(
-        [np.broadcast_to(codes == _CODE_FAIL, shape).ravel() for codes in block.statuses], axis=-1
+    failing = np.empty((*shape, len(block.statuses)), dtype=np.bool_)
+    for k, codes in enumerate(block.statuses):
+        np.equal(codes, _CODE_FAIL, out=failing[..., k])
+    return (
+        block.verdicts().ravel(),
+        util.ravel(),
+        which.ravel(),
+        failing.reshape(-1, len(block.statuses)),
     )
-    return block.verdicts().ravel(), util.ravel(), which.ravel(), failing
 
 
 Request = tuple[FloatArray, IndexArray]
