@@ -418,10 +418,11 @@ export interface paths {
         put?: never;
         /**
          * Solve Ratio Study
-         * @description For every actuator, the interval(s) of a free transmission value (an external ratio,
-         *     a lead, a pulley or pinion diameter) in which every check passes, the value of least
-         *     binding utilisation and the checks that bind at each end (the engine over a grid of
-         *     values × the catalogue, the ends bisected).
+         * @description For the ranking's first `top` actuators, the interval(s) of a free transmission value
+         *     (an external ratio, a lead, a pulley or pinion diameter) in which every check passes,
+         *     the value of least binding utilisation and the checks that bind at each end (the engine
+         *     over a grid of values × the catalogue, the best values refined, the listed actuators'
+         *     ends bisected); those that fit first, by their best utilisation.
          */
         post: operations["solve_ratio_study"];
         delete?: never;
@@ -5155,7 +5156,20 @@ export interface components {
             max: number;
             /** Series */
             series: number[] | null;
-            /** Actuators */
+            /**
+             * Total Actuators
+             * @description the actuators studied
+             */
+            total_actuators: number;
+            /**
+             * Fitting Actuators
+             * @description those that fit at some value of the range (or the series)
+             */
+            fitting_actuators: number;
+            /**
+             * Actuators
+             * @description the ranking's first `top` (query): those with a best value first, by their best utilisation, then by model
+             */
             actuators: components["schemas"]["RatioActuatorOut"][];
             /**
              * Figure
@@ -8549,6 +8563,8 @@ export interface operations {
             query?: {
                 /** @description with the chart (`figure`, `documents/figures.py`), in `lang`'s language */
                 figure?: boolean;
+                /** @description how many of the ranking's actuators the answer lists (their interval ends alone are bisected; every actuator's best value is searched) */
+                top?: number;
                 /** @description the document's language; left out: from Accept-Language, else en */
                 lang?: ("de" | "en") | null;
             };

@@ -144,3 +144,25 @@ def test_the_chart_draws_the_studys_curves_and_bands(client: TestClient) -> None
     assert figure["layout"]["xaxis"]["type"] == "log"
     assert figure["layout"]["xaxis"]["title"]["text"] == "Steigung [mm]"
     assert figure["layout"]["separators"] == ",."
+
+
+def test_the_answer_lists_the_rankings_first_top_and_counts_the_rest(
+    client: TestClient,
+) -> None:
+    """`top` as a selection's: the first of the ranking, each as the whole study lists it
+    (only theirs ends bisected), and how many were studied and fit."""
+    body = VERTICAL_SCREW | {"ratio_study": {"variable": "lead_mm", "min": 5, "max": 1000}}
+    whole = client.post(f"{API}/ratio-study", params={"top": 1000}, json=body).json()
+    assert whole["total_actuators"] == len(whole["actuators"]) == 64
+    assert whole["fitting_actuators"] == sum(1 for a in whole["actuators"] if a["intervals"])
+    assert 3 < whole["fitting_actuators"] < 64
+    first = client.post(f"{API}/ratio-study", params={"top": 3}, json=body).json()
+    assert first["actuators"] == whole["actuators"][:3]
+    assert (first["total_actuators"], first["fitting_actuators"]) == (
+        whole["total_actuators"],
+        whole["fitting_actuators"],
+    )
+    for top in (0, 1001):
+        response = client.post(f"{API}/ratio-study", params={"top": top}, json=body)
+        assert response.status_code == 422, response.text
+        assert response.json()["detail"][0]["loc"] == ["query", "top"]
