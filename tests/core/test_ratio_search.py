@@ -25,7 +25,8 @@ from actuator_selection.sizing import ratio
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import FloatArray, catalogue_arrays, evaluate_batch
-from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_table
+from actuator_selection.sizing.engine.block import evaluate_block
+from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits, zone_table
 from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.mechanisms import Transmission
@@ -244,3 +245,27 @@ def test_geared_cases_are_the_geared_applications_cases(
             np.testing.assert_array_equal(
                 getattr(built, field.name), getattr(expected, field.name), err_msg=field.name
             )
+
+
+def test_a_block_without_its_overload_has_the_same_checks() -> None:
+    """``overload=False`` (what the search asks) leaves out the overload alone: the same
+    codes, values and limits, on a grid where checks fail."""
+    vary, columns = _worked(4.0, 0.9)
+    assert columns is not None
+    chosen = actuators()
+    cat = catalogue_arrays(chosen)
+    cases = columns(np.geomspace(0.05, 2000.0, 20))
+    rules = rules_of([vary(1.0)], None)
+    zones = zone_limits(chosen, cat.zone_columns, cases.mean_speed)
+    full = evaluate_block(cat, cases, zones, rules, detail=True)
+    lean = evaluate_block(cat, cases, zones, rules, detail=True, overload=False)
+    assert full.details is not None
+    assert lean.details is not None
+    assert (full.overload > 1).any()
+    assert not np.asarray(lean.overload).any()
+    np.testing.assert_array_equal(lean.verdicts(), full.verdicts())
+    for a, b in zip(lean.statuses, full.statuses, strict=True):
+        np.testing.assert_array_equal(a, b)
+    for a, b in zip(lean.details, full.details, strict=True):
+        np.testing.assert_array_equal(a.values, b.values)
+        np.testing.assert_array_equal(a.limits, b.limits)

@@ -309,7 +309,9 @@ class _Pairs:
     def __call__(self, values: FloatArray, columns: IndexArray) -> Cells:
         xs, rows = np.unique(values, return_inverse=True)
         cases = self.cases_at(xs)
-        block = evaluate_pairs(self.cat, self.zones, cases, rows, columns, self.rules)
+        block = evaluate_pairs(
+            self.cat, self.zones, cases, rows, columns, self.rules, overload=False
+        )
         return _cells(block)
 
     def run(self, *searches: Search) -> None:
@@ -551,7 +553,12 @@ def _study(
     failing_grid = np.empty((*shape, len(rules)), dtype=np.bool_)
     for start, stop in blocks(actuators, grid):
         block = evaluate_block(
-            cat, cases.rows(start, stop), limits_of_zones[start:stop], rules, detail=True
+            cat,
+            cases.rows(start, stop),
+            limits_of_zones[start:stop],
+            rules,
+            detail=True,
+            overload=False,
         )
         codes, u, w, f = _cells(block)
         verdicts[start:stop] = codes.reshape(-1, shape[1])

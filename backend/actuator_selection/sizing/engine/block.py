@@ -147,6 +147,7 @@ def _status_codes(
     cat: CatalogueArrays,
     *,
     detail: bool = False,
+    overload: bool = True,
 ) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """The codes of one rule for the block (:meth:`~actuator_selection.sizing.checks.Rule.check`
     on arrays): no data where a requirement is missing, else pass, fail or warn; the
@@ -157,20 +158,22 @@ def _status_codes(
     ``np.broadcast_to`` calls.
 
     Called with numpy's floating-point errors ignored: NaN where data is missing is
-    masked here."""
+    masked here. Without ``overload``, the overload is not computed (:data:`_NO_OVERLOAD`).
+    """
     xp = ARRAY_OPS
-    codes, overload, arrays = _decided_codes(rule, q, cat, detail=detail)
+    codes, over, arrays = _decided_codes(rule, q, cat, detail=detail, overload=overload)
     if rule.applies is None:
-        return codes, overload, arrays
+        return codes, over, arrays
     # Where the premise does not hold: not applicable, whatever the data (Rule.check).
     applies = rule.applies(q, xp)
     codes = np.where(applies, codes, NOT_APPLICABLE)
-    overload = np.where(applies, overload, 0.0)
+    if overload:
+        over = np.where(applies, over, 0.0)
     if arrays is None:
-        return codes, overload, None
+        return codes, over, None
     return (
         codes,
-        overload,
+        over,
         _RuleArrays(
             values=np.where(applies, arrays.values, math.nan),
             limits=np.where(applies, arrays.limits, math.nan),
@@ -186,24 +189,25 @@ def _decided_codes(
     cat: CatalogueArrays,
     *,
     detail: bool,
+    overload: bool,
 ) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """:func:`_status_codes` before :attr:`~actuator_selection.sizing.checks.Rule.applies`."""
     xp = ARRAY_OPS
     first_missing, others_missing, everywhere, nowhere = _lacking(rule, q, cat)  # per actuator
     if everywhere:  # no data in every cell: only the value, which the check reports
         codes = np.full(first_missing.shape, NO_DATA)
-        overload = np.zeros(first_missing.shape)
+        none = np.zeros(first_missing.shape)
         if not detail:
-            return codes, overload, None
+            return codes, none, None
         arrays = _RuleArrays(
             values=rule.value(q, xp),
             limits=np.full(first_missing.shape, math.nan),
             approximate=np.False_,
             first_missing=first_missing,
         )
-        return codes, overload, arrays
+        return codes, none, arrays
     if nowhere:  # every actuator has the data: nothing to mask, no floor to apply
-        return _complete_codes(rule, q, first_missing, detail=detail)
+        return _complete_codes(rule, q, first_missing, detail=detail, overload=overload)
     value, limit = rule.value(q, xp), rule.limit(q, xp)
     # numpy's True, not Python's: ~True is −2, which would make the masks integers.
     within = np.True_ if rule.within is None else rule.within(q, xp)
@@ -219,19 +223,13 @@ def _decided_codes(
     codes = np.where(missing, NO_DATA, np.where(ok, PASS, fail))  # cases × actuators
     if rule.lower_bound is not None:
         codes = np.where(floor_fails, FAIL, codes)
-    failing = codes == FAIL
-    if failing.any():
-        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
-        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
-        overload = np.where(failing, over, 0.0)
-    else:  # nothing fails: no overload (most cells of a selection)
-        overload = np.zeros(np.shape(codes))
+    over = _overload(codes, value, limit) if overload else _NO_OVERLOAD
     if not detail:
-        return codes, overload, None
+        return codes, over, None
     approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing
     return (
         codes,
-        overload,
+        over,
         _RuleArrays(
             values=value,
             limits=np.where(missing, math.nan, limit),
@@ -242,7 +240,7 @@ def _decided_codes(
 
 
 def _complete_codes(
-    rule: Rule, q: Operands, first_missing: CodeArray, *, detail: bool
+    rule: Rule, q: Operands, first_missing: CodeArray, *, detail: bool, overload: bool
 ) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
     """:func:`_status_codes` where no actuator lacks the rule's data (the usual case): the
     same codes, values and limits with no mask (``missing`` is False everywhere, so the
@@ -254,19 +252,13 @@ def _complete_codes(
     fail = FAIL if rule.binding is None else np.where(rule.binding(q, xp), FAIL, WARN)
     # Of the block's shape, as the masked path's codes are (first_missing is a row).
     codes = np.where(ok & (first_missing < 0), PASS, fail)
-    failing = codes == FAIL
-    if failing.any():
-        no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
-        over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
-        overload = np.where(failing, over, 0.0)
-    else:
-        overload = np.zeros(np.shape(codes))
+    over = _overload(codes, value, limit) if overload else _NO_OVERLOAD
     if not detail:
-        return codes, overload, None
+        return codes, over, None
     approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp)
     return (
         codes,
-        overload,
+        over,
         _RuleArrays(
             values=value,
             limits=limit,
@@ -274,6 +266,22 @@ def _complete_codes(
             first_missing=first_missing,
         ),
     )
+
+
+_NO_OVERLOAD: FloatArray = np.zeros(())
+"""The overload where it is not asked for (:func:`evaluate_block`'s ``overload``): 0,
+broadcasting to any cells."""
+
+
+def _overload(codes: CodeArray, value: FloatArray, limit: FloatArray) -> FloatArray:
+    """:func:`~actuator_selection.sizing.checks.overload` where the codes fail, else 0."""
+    failing = codes == FAIL
+    if not failing.any():  # nothing fails: no overload (most cells of a selection)
+        return np.zeros(np.shape(codes))
+    no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
+    over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
+    out: FloatArray = np.where(failing, over, 0.0)
+    return out
 
 
 class _HeatingGains:
@@ -472,9 +480,11 @@ def evaluate_block(
     rules: Sequence[Rule],
     *,
     detail: bool = False,
+    overload: bool = True,
 ) -> Block:
     """The flowchart for ``cases`` × every actuator (rows × columns); ``detail``: the
-    checks' values and limits too.
+    checks' values and limits too; without ``overload``, the block's overload is 0 (not
+    computed: a search that reads verdicts and utilisations only).
 
     The torques are :meth:`~actuator_selection.sizing.motion.Profile.torques` on arrays,
     piece by piece: T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in
@@ -572,18 +582,18 @@ def evaluate_block(
         },
     )
     with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes
-        results = [_status_codes(r, q, cat, detail=detail) for r in rules]
+        results = [_status_codes(r, q, cat, detail=detail, overload=overload) for r in rules]
     details = [d for _, _, d in results if d is not None]
-    overload = np.zeros(shape)
-    for _, over, _ in results:
-        np.maximum(overload, over, out=overload)
+    worst = np.zeros(shape) if overload else _NO_OVERLOAD
+    for _, over, _ in results if overload else ():
+        np.maximum(worst, over, out=worst)
     return Block(
         accel_torque=accel_torque,
         constant_torque=constant_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
         statuses=tuple(codes for codes, _, _ in results),
-        overload=overload,
+        overload=worst,
         details=tuple(details) if detail else None,
         operands=q if detail else None,
     )

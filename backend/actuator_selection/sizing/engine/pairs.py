@@ -68,15 +68,17 @@ def evaluate_pairs(
     rules: Sequence[Rule],
     *,
     detail: bool = True,
+    overload: bool = True,
 ) -> Block:
     """The flowchart for case ``rows[p]`` on actuator ``columns[p]``, pair by pair: a
     :class:`~actuator_selection.sizing.engine.block.Block` of P × 1 cells.
 
     ``cat`` and ``zones`` are the whole catalogue's (``catalogue_arrays``,
-    ``zone_table`` of the same actuators), ``cases`` the distinct cases."""
+    ``zone_table`` of the same actuators), ``cases`` the distinct cases; ``detail`` and
+    ``overload`` as :func:`~actuator_selection.sizing.engine.block.evaluate_block`'s."""
     rows, columns = np.asarray(rows, dtype=np.intp), np.asarray(columns, dtype=np.intp)
     paired = paired_catalogue(cat, columns)
     pairs = paired_cases(cases, rows, cat, columns)
     edges = zones.edges(columns, pairs.mean_speed)[:, np.newaxis]
     zone = edges if paired.zone_columns.size else np.empty((rows.size, 0))
-    return evaluate_block(paired, pairs, zone, rules, detail=detail)
+    return evaluate_block(paired, pairs, zone, rules, detail=detail, overload=overload)
