@@ -268,14 +268,17 @@ def _cells(block: Block) -> Cells:
     order; the status codes and each check's value and limit, no check worded."""
     assert block.details is not None
     shape = block.accel_torque.shape
-    best = np.full(shape, -np.inf)
-    which = np.zeros(shape, dtype=np.intp)
+    shares = np.empty((len(block.details), *shape))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for k, d in enumerate(block.details):
-            share = d.values / d.limits  # a share where the limit is positive and it finite
-            take = (d.limits > 0) & np.isfinite(share) & (share > best)
-            np.copyto(best, share, where=take)  # the first check of the largest, as argmax
-            which[take] = k
+            np.divide(d.values, d.limits, out=shares[k])
+            # a share where the limit is positive and the share finite
+            shares[k][~((d.limits > 0) & np.isfinite(shares[k]))] = -np.inf
+    if len(block.details):  # the first check of the largest share
+        which = np.argmax(shares, axis=0)
+        best = np.take_along_axis(shares, which[np.newaxis], axis=0)[0]
+    else:
+        which, best = np.zeros(shape, dtype=np.intp), np.full(shape, -np.inf)
     util = np.where(np.isfinite(best), best, np.nan)
     failing = np.empty((*shape, len(block.statuses)), dtype=np.bool_)
     for k, codes in enumerate(block.statuses):
@@ -295,7 +298,9 @@ Search = Generator[Request, Cells, None]
 
 class _Pairs:
     """The engine on pairs (value, actuator): the distinct values as the cases, each pair
-    its own cell (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`)."""
+    its own cell (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`); a pair
+    whose value is a grid value (a parabolic step's about the best grid value, its
+    neighbours) read from the grid's cells, the same numbers."""
 
     def __init__(
         self,
@@ -303,10 +308,31 @@ class _Pairs:
         zones: ZoneTable,
         cases_at: Callable[[FloatArray], Cases],
         rules: Sequence[Rule],
+        grid: FloatArray,
+        cells: Cells,
     ) -> None:
         self.cat, self.zones, self.cases_at, self.rules = cat, zones, cases_at, rules
+        self.grid, self.cells = grid, cells  # the grid's, grid × actuators (cells raveled)
 
     def __call__(self, values: FloatArray, columns: IndexArray) -> Cells:
+        k = np.minimum(np.searchsorted(self.grid, values), self.grid.size - 1)
+        on_grid = self.grid[k] == values
+        if not on_grid.any():
+            return self._evaluated(values, columns)
+        width = self.cells[0].size // self.grid.size
+        at = k[on_grid] * width + columns[on_grid]
+        off = ~on_grid
+        found = self._evaluated(values[off], columns[off]) if off.any() else None
+        out = []
+        for n, grid_part in enumerate(self.cells):
+            part = np.empty((values.size, *grid_part.shape[1:]), dtype=grid_part.dtype)
+            part[on_grid] = grid_part[at]
+            if found is not None:
+                part[off] = found[n]
+            out.append(part)
+        return cast(Cells, tuple(out))
+
+    def _evaluated(self, values: FloatArray, columns: IndexArray) -> Cells:
         xs, rows = np.unique(values, return_inverse=True)
         cases = self.cases_at(xs)
         block = evaluate_pairs(
@@ -391,6 +417,24 @@ class _Best:
     which: IndexArray
 
 
+def _asked(
+    best: _Best, values: FloatArray, columns: IndexArray
+) -> Generator[Request, Cells, Cells]:
+    """The cells of the pairs (``values``, ``columns``), those at an actuator's best value
+    so far (the middle of a step about it, a vertex that does not move) taken from the
+    best's, the same numbers, the rest asked; the failing checks are not read (False)."""
+    known = values == best.value[columns]
+    if not known.any():
+        return (yield values, columns)
+    codes, utilisation = best.code[columns], best.utilisation[columns]
+    which, failing = best.which[columns], np.zeros((values.size, 0), dtype=np.bool_)
+    ask = ~known
+    if ask.any():
+        asked = yield values[ask], columns[ask]
+        codes[ask], utilisation[ask], which[ask] = asked[0], asked[1], asked[2]
+    return codes, utilisation, which, failing
+
+
 def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool) -> Search:
     """:data:`REFINE_ROUNDS` parabolic steps in log x about each best value: a parabola
     through the best and its neighbours, its vertex evaluated; each round about the best
@@ -416,7 +460,7 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool)
     n = columns.size
     centre, half = np.log(best.value[columns]), np.full(n, step)
     points = about(centre, half)
-    u = (yield points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
+    u = (yield from _asked(best, points.ravel(), np.repeat(columns, 3)))[1].reshape(points.shape)
     for r in range(REFINE_ROUNDS):
         vertex = vertex_of(centre, half, u)
         last = r + 1 == REFINE_ROUNDS
@@ -425,7 +469,7 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool)
             moved, stayed = about(np.log(vertex), half / 4), about(centre, half / 4)
             values += [moved.ravel(), stayed.ravel()]
             asked += [np.repeat(columns, 3)] * 2
-        codes, got, w, _f = yield np.concatenate(values), np.concatenate(asked)
+        codes, got, w, _f = yield from _asked(best, np.concatenate(values), np.concatenate(asked))
         at_vertex = got[:n]
         better = (
             (codes[:n] != _FAIL) & np.isfinite(at_vertex) & (at_vertex < best.utilisation[columns])
@@ -442,7 +486,9 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool)
         centre, half = np.log(best.value[columns]), half / 4
         if not ahead:
             points = about(centre, half)
-            u = (yield points.ravel(), np.repeat(columns, 3))[1].reshape(points.shape)
+            u = (yield from _asked(best, points.ravel(), np.repeat(columns, 3)))[1].reshape(
+                points.shape
+            )
 
 
 def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatArray:
@@ -551,6 +597,12 @@ def _study(
     verdicts = np.empty(shape, dtype=np.int8)
     util, which = np.empty(shape), np.empty(shape, dtype=np.intp)
     failing_grid = np.empty((*shape, len(rules)), dtype=np.bool_)
+    grid_cells = (
+        verdicts.reshape(-1),
+        util.reshape(-1),
+        which.reshape(-1),
+        failing_grid.reshape(-1, len(rules)),
+    )
     for start, stop in blocks(actuators, grid):
         block = evaluate_block(
             cat,
@@ -582,7 +634,7 @@ def _study(
         which=which[best_k, every],
     )
     columns = np.nonzero(has_best)[0]
-    search = _Pairs(cat, zone_table(actuators), cases_at, rules)
+    search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
     refine = series is None and columns.size > 0
     if top is None:
         chosen = every
