@@ -13,7 +13,8 @@ from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import evaluate
 from actuator_selection.sizing.mechanisms import Transmission
-from actuator_selection.sizing.ratio import geared, inertia_matched_ratio, ratio_study
+from actuator_selection.sizing.ratio import inertia_matched_ratio, ratio_study
+from actuator_selection.sizing.ratio_cases import geared
 from actuator_selection.sizing.selection import Verdict
 
 RPM = 2 * math.pi / 60

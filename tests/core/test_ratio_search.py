@@ -30,13 +30,8 @@ from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits,
 from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.mechanisms import Transmission
-from actuator_selection.sizing.ratio import (
-    RatioResult,
-    geared,
-    geared_cases,
-    ranked_ratio_study,
-    ratio_study,
-)
+from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study, ratio_study
+from actuator_selection.sizing.ratio_cases import geared, geared_cases
 from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 
@@ -264,8 +259,8 @@ def test_a_block_without_its_overload_has_the_same_checks() -> None:
     assert (full.overload > 1).any()
     assert not np.asarray(lean.overload).any()
     np.testing.assert_array_equal(lean.verdicts(), full.verdicts())
-    for a, b in zip(lean.statuses, full.statuses, strict=True):
-        np.testing.assert_array_equal(a, b)
-    for a, b in zip(lean.details, full.details, strict=True):
-        np.testing.assert_array_equal(a.values, b.values)
-        np.testing.assert_array_equal(a.limits, b.limits)
+    for lean_codes, codes in zip(lean.statuses, full.statuses, strict=True):
+        np.testing.assert_array_equal(lean_codes, codes)
+    for lean_detail, detail in zip(lean.details, full.details, strict=True):
+        np.testing.assert_array_equal(lean_detail.values, detail.values)
+        np.testing.assert_array_equal(lean_detail.limits, detail.limits)

@@ -25,12 +25,8 @@ from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases
 from actuator_selection.sizing.mechanisms import Transmission
-from actuator_selection.sizing.ratio import (
-    RatioResult,
-    geared,
-    geared_cases,
-    ranked_ratio_study,
-)
+from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study
+from actuator_selection.sizing.ratio_cases import geared, geared_cases
 
 
 def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], Application]:

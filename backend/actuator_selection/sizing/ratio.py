@@ -25,11 +25,17 @@ The search runs on the engine, vectorised over cases × actuators:
    steps in log x (a passing value only, and only where it lowers the utilisation), all
    actuators together, in the same engine calls as the bisection.
 
+A pair whose value is a grid value or the actuator's best value so far is read from
+that cell, not asked again. :func:`ranked_ratio_study` (the API's answer) refines every
+actuator's best value, which its ranking reads, and bisects only the listed actuators'
+brackets.
+
 The numbers are those of evaluating every value on every actuator
 (``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
 compare with this one, ``==``): only fewer cells are computed. Where the caller can build
-the load cases at many values as columns (:func:`geared_cases`: an external ratio on the
-chapter's trapezoid, any η_tr), no application is built per value.
+the load cases at many values as columns (:func:`~actuator_selection.sizing.ratio_cases.
+geared_cases`: an external ratio on the chapter's trapezoid, any η_tr), no application is
+built per value.
 
 Analytic cross-check (H.-J. Van de Straete, J. De Schutter, R. Belmans, "An efficient procedure for
 checking performance limits in servo drive selection and optimization", IEEE/ASME Trans.
@@ -44,7 +50,6 @@ condition T(i) ≤ T_max bounds i to the roots of J_A·ε_L·i² − T_max·i + 
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Callable, Generator, Sequence
 from dataclasses import dataclass
@@ -57,7 +62,6 @@ from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.candidates import Verdict
 from actuator_selection.sizing.checks import Rule, Status
-from actuator_selection.sizing.cycle import Load
 from actuator_selection.sizing.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -78,14 +82,6 @@ from actuator_selection.sizing.engine.cases import (
 )
 from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
-from actuator_selection.sizing.loads import _square
-from actuator_selection.sizing.mechanisms import Transmission, with_transmission
-from actuator_selection.sizing.motion import (
-    Motion,
-    PieceArrays,
-    cycle_figures,
-    trapezoid_piece_arrays,
-)
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
@@ -123,108 +119,6 @@ def inertia_matched_ratio(load_inertia_kgm2: float, actuator_inertia_kgm2: float
     5.0
     """
     return math.sqrt(load_inertia_kgm2 / actuator_inertia_kgm2)
-
-
-def geared(app: Application, transmission: Transmission) -> Application:
-    """``app`` behind an external ratio i (between the actuator output and the load, in
-    series with any the mechanism has): the cycle's speeds ×i and process torques ÷i, the
-    load through :func:`~actuator_selection.sizing.mechanisms.with_transmission` (J_L/i² +
-    J_tr, T/i, η_tr·η by the power flow). At i = 1 with J_tr = 0 and η = 1 it is ``app``'s
-    own load case."""
-    i = transmission.ratio
-    if app.pattern is not None and app.load is not None and transmission.efficiency == 1:
-        # the chapter's shorthand stays one (T_L as friction, η = 1): the numbers of
-        # with_transmission, and the engine's trapezoid columns
-        pattern, load = app.pattern, app.load
-        return dataclasses.replace(
-            app,
-            pattern=dataclasses.replace(pattern, speed_rpm=pattern.speed_rpm * i),
-            load=Load(
-                torque_nm=load.torque_nm / i,
-                inertia_kgm2=transmission.inertia_kgm2 + load.inertia_kgm2 / _square(i),
-            ),
-        )
-    motion = app.cycle
-    segments = tuple(
-        dataclasses.replace(
-            s,
-            start_rpm=s.start_rpm * transmission.ratio,
-            end_rpm=s.end_rpm * transmission.ratio,
-            process_torque_nm=s.process_torque_nm / transmission.ratio,
-        )
-        for s in motion.segments
-    )
-    axis = with_transmission(motion.load, transmission)
-    return dataclasses.replace(
-        app, pattern=None, load=None, motion=Motion(segments=segments, load=axis)
-    )
-
-
-def geared_cases(
-    app: Application, transmission_inertia_kgm2: float, efficiency: float = 1.0
-) -> Callable[[FloatArray], Cases] | None:
-    """:func:`geared` at many ratios at once, as the engine's load cases: the trapezoid's
-    speed ×i, T_L ÷i, J_L/i² + J_tr as columns (what :func:`geared` computes for each
-    ratio, the same operations), η_tr by the power flow as :func:`~actuator_selection.
-    core.motion.segments.pieces_of` puts it (:func:`_by_power_flow`), the rest of
-    ``app``'s case repeated. None where ``app`` is a cycle of segments."""
-    pattern, load = app.pattern, app.load
-    if pattern is None or load is None:
-        return None
-    base = cases_of([app])
-    # With η_tr < 1, geared() writes the shorthand as a cycle of segments: what the
-    # brake's drop reads of the axis (its weight, none here) is that axis's, not T_L.
-    chain = Transmission(ratio=1.0, inertia_kgm2=transmission_inertia_kgm2, efficiency=efficiency)
-    requests = base.requests if efficiency == 1 else cases_of([geared(app, chain)]).requests
-
-    def at(ratios: FloatArray) -> Cases:
-        def repeated(value: float) -> FloatArray:
-            return np.full(ratios.size, value)
-
-        inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
-        pieces = trapezoid_piece_arrays(
-            speed_rpm=pattern.speed_rpm * ratios,
-            accel_s=repeated(pattern.accel_s),
-            constant_s=repeated(pattern.constant_s),
-            decel_s=repeated(pattern.decel_s),
-            pause_s=repeated(pattern.pause_s),
-            torque_nm=load.torque_nm / ratios,
-            inertia_kgm2=inertia,
-        )
-        if efficiency != 1:
-            pieces = _by_power_flow(pieces, efficiency)
-        first = np.zeros(ratios.size, dtype=np.intp)
-        return Cases(
-            pieces=pieces,
-            figures=cycle_figures(pieces),
-            load_inertia=inertia,
-            high_dynamics=base.high_dynamics[first],
-            output_load=base.output_load[first],
-            thermal_time_constant=base.thermal_time_constant[first],
-            thermal_assumed=base.thermal_assumed[first],
-            requests=requests[first],
-        )
-
-    return at
-
-
-def _by_power_flow(pieces: PieceArrays, efficiency: float) -> PieceArrays:
-    """The trapezoid's pieces with the chain's η (η_tr·1) by the power flow, as
-    :func:`~actuator_selection.sizing.motion.segments.pieces_of` applies it to the
-    segments :func:`geared` builds: c and J × 1/η where the load side's torque
-    c + J·α acts in the direction of motion (the actuator drives), × η where it does
-    not (the load drives back), × 1 at standstill. Each of the trapezoid's pieces
-    accelerates uniformly, so none is split."""
-    with np.errstate(all="ignore"):
-        load_side = pieces.static + pieces.inertia * pieces.accel_start
-    factor = np.where(
-        pieces.direction == 0,
-        1.0,
-        np.where(load_side * pieces.direction > 0, 1.0 / efficiency, efficiency),
-    )
-    return dataclasses.replace(
-        pieces, static=pieces.static * factor, inertia=pieces.inertia * factor
-    )
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -324,7 +218,8 @@ class _Pairs:
         off = ~on_grid
         found = self._evaluated(values[off], columns[off]) if off.any() else None
         out = []
-        for n, grid_part in enumerate(self.cells):
+        grid_parts: tuple[np.ndarray, ...] = self.cells
+        for n, grid_part in enumerate(grid_parts):
             part = np.empty((values.size, *grid_part.shape[1:]), dtype=grid_part.dtype)
             part[on_grid] = grid_part[at]
             if found is not None:
@@ -515,7 +410,7 @@ def ratio_study(
     value, in the catalogue's order; with ``series``, only the series' values (an
     interval: neighbouring series values that all pass). ``cases_at``: the load cases of
     ``vary`` at many values at once, where the caller can build them as columns
-    (:func:`geared_cases`)."""
+    (:func:`~actuator_selection.sizing.ratio_cases.geared_cases`)."""
     found = _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, None)
     return found.results
 

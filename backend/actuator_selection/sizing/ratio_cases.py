@@ -1,0 +1,126 @@
+"""The ratio study's load cases at many values of an external ratio i (issue 31 part 1,
+:mod:`actuator_selection.sizing.ratio`): :func:`geared`, a load case behind the ratio as
+a selection builds it, and :func:`geared_cases`, the same at many ratios at once as the
+engine's columns, no application built per value."""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+
+import numpy as np
+
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.cycle import Load
+from actuator_selection.sizing.engine import FloatArray
+from actuator_selection.sizing.engine.cases import Cases, cases_of
+from actuator_selection.sizing.loads import _square
+from actuator_selection.sizing.mechanisms import Transmission, with_transmission
+from actuator_selection.sizing.motion import (
+    Motion,
+    PieceArrays,
+    cycle_figures,
+    trapezoid_piece_arrays,
+)
+
+
+def geared(app: Application, transmission: Transmission) -> Application:
+    """``app`` behind an external ratio i (between the actuator output and the load, in
+    series with any the mechanism has): the cycle's speeds ×i and process torques ÷i, the
+    load through :func:`~actuator_selection.sizing.mechanisms.with_transmission` (J_L/i² +
+    J_tr, T/i, η_tr·η by the power flow). At i = 1 with J_tr = 0 and η = 1 it is ``app``'s
+    own load case."""
+    i = transmission.ratio
+    if app.pattern is not None and app.load is not None and transmission.efficiency == 1:
+        # the chapter's shorthand stays one (T_L as friction, η = 1): the numbers of
+        # with_transmission, and the engine's trapezoid columns
+        pattern, load = app.pattern, app.load
+        return dataclasses.replace(
+            app,
+            pattern=dataclasses.replace(pattern, speed_rpm=pattern.speed_rpm * i),
+            load=Load(
+                torque_nm=load.torque_nm / i,
+                inertia_kgm2=transmission.inertia_kgm2 + load.inertia_kgm2 / _square(i),
+            ),
+        )
+    motion = app.cycle
+    segments = tuple(
+        dataclasses.replace(
+            s,
+            start_rpm=s.start_rpm * transmission.ratio,
+            end_rpm=s.end_rpm * transmission.ratio,
+            process_torque_nm=s.process_torque_nm / transmission.ratio,
+        )
+        for s in motion.segments
+    )
+    axis = with_transmission(motion.load, transmission)
+    return dataclasses.replace(
+        app, pattern=None, load=None, motion=Motion(segments=segments, load=axis)
+    )
+
+
+def geared_cases(
+    app: Application, transmission_inertia_kgm2: float, efficiency: float = 1.0
+) -> Callable[[FloatArray], Cases] | None:
+    """:func:`geared` at many ratios at once, as the engine's load cases: the trapezoid's
+    speed ×i, T_L ÷i, J_L/i² + J_tr as columns (what :func:`geared` computes for each
+    ratio, the same operations), η_tr by the power flow as :func:`~actuator_selection.
+    core.motion.segments.pieces_of` puts it (:func:`_by_power_flow`), the rest of
+    ``app``'s case repeated. None where ``app`` is a cycle of segments."""
+    pattern, load = app.pattern, app.load
+    if pattern is None or load is None:
+        return None
+    base = cases_of([app])
+    # With η_tr < 1, geared() writes the shorthand as a cycle of segments: what the
+    # brake's drop reads of the axis (its weight, none here) is that axis's, not T_L.
+    chain = Transmission(ratio=1.0, inertia_kgm2=transmission_inertia_kgm2, efficiency=efficiency)
+    requests = base.requests if efficiency == 1 else cases_of([geared(app, chain)]).requests
+
+    def at(ratios: FloatArray) -> Cases:
+        def repeated(value: float) -> FloatArray:
+            return np.full(ratios.size, value)
+
+        inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
+        pieces = trapezoid_piece_arrays(
+            speed_rpm=pattern.speed_rpm * ratios,
+            accel_s=repeated(pattern.accel_s),
+            constant_s=repeated(pattern.constant_s),
+            decel_s=repeated(pattern.decel_s),
+            pause_s=repeated(pattern.pause_s),
+            torque_nm=load.torque_nm / ratios,
+            inertia_kgm2=inertia,
+        )
+        if efficiency != 1:
+            pieces = _by_power_flow(pieces, efficiency)
+        first = np.zeros(ratios.size, dtype=np.intp)
+        return Cases(
+            pieces=pieces,
+            figures=cycle_figures(pieces),
+            load_inertia=inertia,
+            high_dynamics=base.high_dynamics[first],
+            output_load=base.output_load[first],
+            thermal_time_constant=base.thermal_time_constant[first],
+            thermal_assumed=base.thermal_assumed[first],
+            requests=requests[first],
+        )
+
+    return at
+
+
+def _by_power_flow(pieces: PieceArrays, efficiency: float) -> PieceArrays:
+    """The trapezoid's pieces with the chain's η (η_tr·1) by the power flow, as
+    :func:`~actuator_selection.sizing.motion.segments.pieces_of` applies it to the
+    segments :func:`geared` builds: c and J × 1/η where the load side's torque
+    c + J·α acts in the direction of motion (the actuator drives), × η where it does
+    not (the load drives back), × 1 at standstill. Each of the trapezoid's pieces
+    accelerates uniformly, so none is split."""
+    with np.errstate(all="ignore"):
+        load_side = pieces.static + pieces.inertia * pieces.accel_start
+    factor = np.where(
+        pieces.direction == 0,
+        1.0,
+        np.where(load_side * pieces.direction > 0, 1.0 / efficiency, efficiency),
+    )
+    return dataclasses.replace(
+        pieces, static=pieces.static * factor, inertia=pieces.inertia * factor
+    )
