@@ -162,17 +162,14 @@ def _cells(block: Block) -> Cells:
     order; the status codes and each check's value and limit, no check worded."""
     assert block.details is not None
     shape = block.accel_torque.shape
-    shares = np.empty((len(block.details), *shape))
+    best = np.full(shape, -np.inf)
+    which = np.zeros(shape, dtype=np.intp)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for k, d in enumerate(block.details):
-            np.divide(d.values, d.limits, out=shares[k])
-            # a share where the limit is positive and the share finite
-            shares[k][~((d.limits > 0) & np.isfinite(shares[k]))] = -np.inf
-    if len(block.details):  # the first check of the largest share
-        which = np.argmax(shares, axis=0)
-        best = np.take_along_axis(shares, which[np.newaxis], axis=0)[0]
-    else:
-        which, best = np.zeros(shape, dtype=np.intp), np.full(shape, -np.inf)
+            share = d.values / d.limits  # a share where the limit is positive and it finite
+            take = (d.limits > 0) & np.isfinite(share) & (share > best)
+            np.copyto(best, share, where=take)  # the first check of the largest, as argmax
+            np.copyto(which, k, where=take)
     util = np.where(np.isfinite(best), best, np.nan)
     failing = np.empty((*shape, len(block.statuses)), dtype=np.bool_)
     for k, codes in enumerate(block.statuses):
