@@ -153,17 +153,21 @@ def _ranking(results: list[RatioResult]) -> list[RatioResult]:
 )
 @pytest.mark.parametrize("top", [1, 7, 1000])
 @pytest.mark.parametrize("many_pairs", [ratio.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
+@pytest.mark.parametrize("guessed", [ratio.GUESSED, 0], ids=["guessed", "bisected after"])
 def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     study: Study,
     low: float,
     high: float,
     top: int,
     many_pairs: int,
+    guessed: int,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    """Only the listed actuators' ends bisected: the first ``top`` of the ranking, each
-    equal to its result of the exhaustive study, and the counts of the whole."""
+    """Only the listed actuators' ends bisected (those the grid ranks first beside the
+    parabolic steps, the rest after; or all after): the first ``top`` of the ranking,
+    each equal to its result of the exhaustive study, and the counts of the whole."""
     monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
+    monkeypatch.setattr(ratio, "GUESSED", guessed)
     vary, columns = study
     ranked = ranked_ratio_study(actuators(), vary, low, high, top=top, cases_at=columns)
     whole = exhaustive_ratio_study(actuators(), vary, low, high)

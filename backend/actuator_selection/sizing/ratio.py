@@ -383,6 +383,45 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool)
             )
 
 
+GUESSED = 2
+"""A ranked study bisects, beside the parabolic steps, the ends of the first
+``GUESSED × top`` actuators by their best grid value; the listed ones the steps move up
+from further down are bisected after."""
+
+
+def _depth(pairs: int, as_columns: bool) -> int:
+    """Halvings per engine call for a search of about ``pairs`` pairs: few pairs, fewer
+    calls; many, fewer pairs."""
+    if pairs >= MANY_PAIRS:
+        return 1
+    return FEWEST_DEPTH if as_columns and pairs < FEW_PAIRS else BISECTION_DEPTH
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class _Brackets:
+    """Brackets of the verdict's changes: grid index ``k`` (between k and k + 1) and
+    actuator ``j``, each bracket's ends and the checks failing at its bad end (bisected
+    in place)."""
+
+    k: IndexArray
+    j: IndexArray
+    ok_side: FloatArray
+    bad_side: FloatArray
+    bad_fail: BoolArray
+
+    def bisection(self, depth: int) -> Search:
+        return _bisection(self.ok_side, self.bad_side, self.j, self.bad_fail, depth)
+
+    def joined(self, other: _Brackets) -> _Brackets:
+        return _Brackets(
+            k=np.concatenate([self.k, other.k]),
+            j=np.concatenate([self.j, other.j]),
+            ok_side=np.concatenate([self.ok_side, other.ok_side]),
+            bad_side=np.concatenate([self.bad_side, other.bad_side]),
+            bad_fail=np.concatenate([self.bad_fail, other.bad_fail]),
+        )
+
+
 def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatArray:
     if series is not None:
         values = np.unique(np.asarray([s for s in series if lower <= s <= upper], dtype=float))
@@ -528,37 +567,58 @@ def _study(
     columns = np.nonzero(has_best)[0]
     search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
     refine = series is None and columns.size > 0
+
+    def brackets(of: BoolArray | None) -> _Brackets:
+        """The brackets of the actuators ``of`` (None: all): (actuator, ok value, bad
+        value) at each change of the verdict, and the checks failing at the bad one."""
+        k, j = (
+            (change_k, change_j) if of is None else (change_k[of[change_j]], change_j[of[change_j]])
+        )
+        passes = ok[k, j]
+        return _Brackets(
+            k=k,
+            j=j,
+            ok_side=np.where(passes, grid[k], grid[k + 1]),
+            bad_side=np.where(passes, grid[k + 1], grid[k]),
+            bad_fail=np.where(passes[:, None], failing_grid[k + 1, j], failing_grid[k, j]),
+        )
+
+    def listed(which: IndexArray) -> BoolArray:
+        out = np.zeros(len(actuators), dtype=np.bool_)
+        out[which] = True
+        return out
+
     if top is None:
         chosen = every
-    else:  # every best value first (the ranking reads them), then the listed ones' ends
-        if refine:
-            many = 12 * columns.size >= MANY_PAIRS
-            search.run(_refinement(best, columns, grid, ahead=not many))
-            refine = False
+        found = brackets(None)
+        if series is None:
+            # few pairs: fewer engine calls; many: fewer pairs
+            pairs = 6 * found.k.size + (12 * columns.size if refine else 0)
+            searches = [found.bisection(_depth(pairs, as_columns))] if found.k.size else []
+            if refine:
+                ahead = pairs < MANY_PAIRS
+                searches.append(_refinement(best, columns, grid, ahead=ahead))
+            search.run(*searches)
+    else:
+        # every best value refined (the ranking reads them); beside it, the ends of the
+        # actuators the grid ranks first (:data:`GUESSED` × top), then any other listed
+        guess = listed(_ranking(actuators, has_best, best)[: GUESSED * top])
+        found = brackets(guess)
+        if series is None:
+            searches = []
+            if found.k.size:
+                searches.append(found.bisection(_depth(6 * found.k.size, as_columns)))
+            if refine:
+                ahead = 12 * columns.size < MANY_PAIRS
+                searches.append(_refinement(best, columns, grid, ahead=ahead))
+            search.run(*searches)
         chosen = _ranking(actuators, has_best, best)[:top]
-        listed = np.zeros(len(actuators), dtype=np.bool_)
-        listed[chosen] = True
-        keep = listed[change_j]
-        change_k, change_j = change_k[keep], change_j[keep]
-    ok_side = np.where(ok[change_k, change_j], grid[change_k], grid[change_k + 1])
-    bad_side = np.where(ok[change_k, change_j], grid[change_k + 1], grid[change_k])
-    bad_fail = np.where(
-        ok[change_k, change_j][:, None],
-        failing_grid[change_k + 1, change_j],
-        failing_grid[change_k, change_j],
-    )
-    if series is None:
-        # few pairs: fewer engine calls; many: fewer pairs
-        pairs = 6 * change_k.size + (12 * columns.size if refine else 0)
-        many = pairs >= MANY_PAIRS
-        fewest = as_columns and pairs < FEW_PAIRS
-        depth = 1 if many else FEWEST_DEPTH if fewest else BISECTION_DEPTH
-        searches = []
-        if change_k.size:
-            searches.append(_bisection(ok_side, bad_side, change_j, bad_fail, depth))
-        if refine:
-            searches.append(_refinement(best, columns, grid, ahead=not many))
-        search.run(*searches)
+        late = brackets(listed(chosen) & ~guess)
+        if late.k.size and series is None:
+            search.run(late.bisection(_depth(6 * late.k.size, as_columns)))
+        found = found.joined(late)
+    change_k, change_j = found.k, found.j
+    ok_side, bad_fail = found.ok_side, found.bad_fail
     # the failing checks' names once per distinct set of them (a handful)
     sets, set_of = np.unique(bad_fail.reshape(-1, len(names)), axis=0, return_inverse=True)
     named = [tuple(n for n, f in zip(names, row, strict=True) if f) for row in sets.tolist()]
