@@ -483,9 +483,15 @@ def ranked_ratio_study(
     return _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, top)
 
 
-def _ranking(actuators: Sequence[Actuator], has_best: BoolArray, best: _Best) -> IndexArray:
+def _model_rank(actuators: Sequence[Actuator]) -> IndexArray:
+    """Each actuator's place in the order of the models' names."""
+    _names, rank = np.unique([a.model for a in actuators], return_inverse=True)
+    model_rank: IndexArray = rank.reshape(-1)
+    return model_rank
+
+
+def _ranking(model_rank: IndexArray, has_best: BoolArray, best: _Best) -> IndexArray:
     """The columns in the ranking's order (:func:`ranked_ratio_study`)."""
-    _names, model_rank = np.unique([a.model for a in actuators], return_inverse=True)
     utilisation = np.where(has_best, best.utilisation, 0.0)
     order: IndexArray = np.lexsort((model_rank, utilisation, ~has_best))
     return order
@@ -602,7 +608,8 @@ def _study(
     else:
         # every best value refined (the ranking reads them); beside it, the ends of the
         # actuators the grid ranks first (:data:`GUESSED` × top), then any other listed
-        guess = listed(_ranking(actuators, has_best, best)[: GUESSED * top])
+        model_rank = _model_rank(actuators)
+        guess = listed(_ranking(model_rank, has_best, best)[: GUESSED * top])
         found = brackets(guess)
         if series is None:
             searches = []
@@ -612,7 +619,7 @@ def _study(
                 ahead = 12 * columns.size < MANY_PAIRS
                 searches.append(_refinement(best, columns, grid, ahead=ahead))
             search.run(*searches)
-        chosen = _ranking(actuators, has_best, best)[:top]
+        chosen = _ranking(model_rank, has_best, best)[:top]
         late = brackets(listed(chosen) & ~guess)
         if late.k.size and series is None:
             search.run(late.bisection(_depth(6 * late.k.size, as_columns)))
