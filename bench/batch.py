@@ -3,8 +3,10 @@
 Prints cases per second of ``sizing.selection.select`` run case by case and of
 ``sizing.engine.select_batch`` (best 3 per case) on the starter catalogue and on a
 synthetic catalogue of 1,000 actuators, their ratio, and the end-to-end time of
-POST /api/v1/selections/batch for 10,000 cases with and without checks (JSON both
-ways included). Runs on a throw-away SQLite database seeded with the starter catalogue.
+POST /api/v1/selections/batch for 10,000 cases without checks, with checks and with
+checks in words (JSON both ways included), each as a ratio to the numpy reference
+(``bench/reference.py``) timed in the same run, with the count of cases whose best three
+differ from it. Runs on a throw-away SQLite database seeded with the starter catalogue.
 
 The synthetic actuators are made up (model names ``SYN-…``): plausible magnitudes
 only, so that the scaling with catalogue size can be measured. They are not data.
@@ -12,10 +14,12 @@ only, so that the scaling with catalogue size can be measured. They are not data
 
 from __future__ import annotations
 
+import argparse
 import gc
 import json
 import math
 import random
+import statistics
 import tempfile
 import time
 from collections.abc import Callable
@@ -29,6 +33,7 @@ from actuator_selection.http.app import API_PREFIX, create_app, tune_gc
 from actuator_selection.sizing.engine import evaluate_batch, rank_batch, select_batch
 from actuator_selection.sizing.selection import select
 from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
+from bench.reference import disagreements, numpy_reference, snapshot_actuators
 from bench.selection import http_case, random_cases, starter_catalogue
 
 TOP = 3
@@ -130,41 +135,79 @@ def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
     )
 
 
+HTTP_ROUNDS = 3
+"""Rounds of the per-case batch against the numpy reference, each variant in turn."""
+
+HTTP_VARIANTS: tuple[tuple[str, dict[str, bool]], ...] = (
+    ("checks no ", {"include_checks": False}),
+    ("checks yes", {"include_checks": True}),
+    ("checks yes, messages yes", {"include_checks": True, "include_messages": True}),
+)
+"""The per-case batch's options timed against the reference: without checks, with
+checks (their messages as codes and parameters), and with checks and their words."""
+
+
 def http(url: str) -> None:
-    """POST /selections/batch with 10,000 cases, end to end through the ASGI app."""
+    """POST /selections/batch with 10,000 cases, end to end through the ASGI app, each
+    variant of :data:`HTTP_VARIANTS` in each of :data:`HTTP_ROUNDS` rounds, against the
+    numpy reference (``bench/reference.py``) timed right after it (the best of three):
+    the ratio, and the cases whose best three differ from the service's (a count)."""
     print(
-        f"HTTP POST {API_PREFIX}/selections/batch, {BATCH_CASES} cases, top {TOP} "
-        "(TestClient: JSON out and back in included; 'gzip' adds the app's compression, gzip)"
+        f"HTTP POST {API_PREFIX}/selections/batch, {BATCH_CASES} cases, top {TOP}, "
+        f"{HTTP_ROUNDS} rounds (TestClient: the request's JSON and the answer's bytes "
+        "included, not the client's parsing of them; no compression), "
+        "each against the numpy reference for the same cases (bench/reference.py)"
     )
-    payload = [http_case(a) for a in random_cases(BATCH_CASES, seed=8)]
+    apps = random_cases(BATCH_CASES, seed=8)
+    payload = [http_case(a) for a in apps]
+    actuators = snapshot_actuators(url)
+    ratios: dict[str, list[float]] = {}
     with TestClient(create_app(Settings(database_url=url))) as client:
-        for include_checks in (False, True):
-            for encoding in ("identity", "gzip"):
-                body = json.dumps(
-                    {"cases": payload, "top": TOP, "include_checks": include_checks}
-                ).encode()
+        for _ in range(HTTP_ROUNDS):
+            for name, options in HTTP_VARIANTS:
+                body = json.dumps({"cases": payload, "top": TOP, **options}).encode()
                 start = time.perf_counter()
                 response = client.post(
                     f"{API_PREFIX}/selections/batch",
                     content=body,
-                    headers={"content-type": "application/json", "accept-encoding": encoding},
+                    headers={"content-type": "application/json", "accept-encoding": "identity"},
                 )
+                if response.status_code == 422:  # a service without the option
+                    print(f"  {name}: refused (422), skipped")
+                    continue
+                seconds = time.perf_counter() - start  # the answer received, not yet parsed
                 response.raise_for_status()
                 results = response.json()["results"]
-                seconds = time.perf_counter() - start
                 assert len(results) == BATCH_CASES
-                label = (
-                    f"checks {'yes' if include_checks else 'no ':<3} {encoding:<8} "
-                    f"{len(body) / 1e6:3.1f} MB in, {len(response.content) / 1e6:4.1f} MB out"
+                reference = min(
+                    _timed(lambda: numpy_reference(actuators, apps, TOP)) for _ in range(3)
                 )
-                _line(label, BATCH_CASES, seconds)
+                service = [[c["model"] for c in r["candidates"]] for r in results]
+                differ = disagreements(actuators, numpy_reference(actuators, apps, TOP), service)
+                ratios.setdefault(name, []).append(seconds / reference)
+                print(
+                    f"  {name:<25} {len(response.content) / 1e6:5.1f} MB out {seconds:6.2f} s, "
+                    f"reference {reference * 1e3:5.0f} ms: {seconds / reference:5.1f}× "
+                    f"(top {TOP} differs in {differ} of {BATCH_CASES} cases)"
+                )
+    for name, measured in ratios.items():
+        print(
+            f"  {name:<25} × the reference: {min(measured):.1f}–{max(measured):.1f} "
+            f"(median {statistics.median(measured):.1f})"
+        )
 
 
 def main() -> None:
     """Run the benchmark and print its table."""
+    parser = argparse.ArgumentParser(prog="python -m bench.batch")
+    parser.add_argument("--http-only", action="store_true", help="only the HTTP batch")
+    args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"
         starter = starter_catalogue(url)
+        if args.http_only:
+            http(url)
+            return
 
         compare("starter catalogue", starter, scalar_cases=2_000)
         compare("synthetic catalogue", synthetic_catalogue(1_000), scalar_cases=200)
