@@ -6,8 +6,9 @@ import json
 import math
 
 import orjson
+import pytest
 
-from actuator_selection.i18n.check_messages import Phrase, jsonable_params, phrase
+from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable_params, phrase
 from actuator_selection.i18n.messages import Text
 
 
@@ -45,3 +46,26 @@ def test_lists_and_alternatives_keep_their_items_and_a_plain_string_has_no_param
         "missing": ["feedback system", "DC bus"],
     }
     assert jsonable_params("a rule's own words") is None
+
+
+def test_codes_only_keeps_code_and_params_and_writes_no_words() -> None:
+    """Within ``codes_only`` a message is its code and params (the same JSON), its English
+    text not written; outside, and after an error within, the text is back."""
+    clause = phrase("thermal_peak.short", rms_torque_nm=12.5)
+    worded = phrase("peak_torque.fail", value=95.48, limit=float("inf"))
+    with codes_only():
+        coded = phrase("peak_torque.fail", value=95.48, limit=float("inf"))
+        nested = phrase("continuous_duty.pass", value=1.0, limit=2.0, mean_speed_rpm=3.0)
+        assert isinstance(coded, Phrase)
+        assert str(coded) == ""
+        assert (coded.code, jsonable_params(coded)) == (worded.code, jsonable_params(worded))
+        assert jsonable_params(phrase("fail_for_any_inertia", message=clause)) == {
+            "message": {"code": "thermal_peak.short", "params": {"rms_torque_nm": 12.5}}
+        }
+        assert nested.code == "continuous_duty.pass"
+    assert str(phrase("peak_torque.fail", value=95.48, limit=151.0)).startswith(
+        "acceleration torque T_1 = 95.48 Nm exceeds"
+    )
+    with pytest.raises(RuntimeError), codes_only():
+        raise RuntimeError
+    assert str(phrase("peak_torque.fail", value=95.48, limit=151.0)) != ""

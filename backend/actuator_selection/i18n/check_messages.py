@@ -19,7 +19,9 @@ by " / "), or None (a clause left out: rendered as nothing).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from contextlib import contextmanager
+from contextvars import ContextVar
 from typing import Any, Final
 
 from actuator_selection.i18n.messages import N_, Text
@@ -32,6 +34,11 @@ class Phrase(str):
     params: Mapping[str, Any]
 
     def __new__(cls, code: str, params: Mapping[str, Any]) -> Phrase:
+        if _CODES_ONLY.get():  # the English text is not read (codes_only)
+            text = str.__new__(cls)
+            text.code = code
+            text.params = params
+            return text
         # str.format in C: a Phrase among the params formats as its English text; a clause
         # left out (None) and a list need writing out first (most params are numbers).
         fields = params
@@ -46,6 +53,22 @@ class Phrase(str):
 
     def __reduce__(self) -> tuple[Any, ...]:
         return (Phrase, (self.code, dict(self.params)))
+
+
+_CODES_ONLY: ContextVar[bool] = ContextVar("codes_only", default=False)
+
+
+@contextmanager
+def codes_only() -> Iterator[None]:
+    """Within it, a :class:`Phrase` carries its code and params only, its text empty: for
+    an answer that gives the messages as codes and params and never reads their words (a
+    batch without ``include_messages``: writing 240,000 checks' English text cost more
+    than the engineering). Nothing made within it may outlive the answer it is made for."""
+    token = _CODES_ONLY.set(True)
+    try:
+        yield
+    finally:
+        _CODES_ONLY.reset(token)
 
 
 _WRITTEN_OUT = (list, tuple)
@@ -143,7 +166,12 @@ def jsonable_params(message: str) -> dict[str, Any] | None:
     words as their English text, ±∞ and NaN as text; None for a message without a code."""
     if not isinstance(message, Phrase):
         return None
-    return {k: _jsonable(v) for k, v in message.params.items()}
+    params = message.params
+    out = dict(params)  # most params are finite numbers, kept as they are
+    for k, v in params.items():
+        if type(v) is not float or v - v != 0.0:  # inf − inf, NaN − NaN: NaN
+            out[k] = _jsonable(v)
+    return out
 
 
 def _jsonable(value: Any) -> Any:
