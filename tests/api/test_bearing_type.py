@@ -59,7 +59,7 @@ def test_the_cha_20a_life_fails_with_exponent_3_and_the_batch_agrees(client: Tes
     roller_life = {c["name"]: c for c in roller["checks"]}["bearing_life"]
     assert "cross roller bearing: B = 10/3" in roller_life["message"]
     # the batch (the vectorised flowchart) gives the same checks, number for number
-    batch = client.post(f"{API}/batch", json={"cases": [BODY], "top": 2})
+    batch = client.post(f"{API}/batch", json={"cases": [BODY], "top": 2, "include_messages": True})
     assert batch.status_code == 200, batch.text
     (result,) = batch.json()["results"]
     got = {c["model"]: c for c in result["candidates"]}

@@ -145,7 +145,7 @@ def test_the_english_answer_is_the_scalar_flowcharts_text(
 
 def test_the_batch_answers_reasons_and_checks_in_german(client: TestClient) -> None:
     case = {k: v for k, v in EXAMPLE_REQUEST.items() if k != "models"} | {"models": [MODEL]}
-    body = {"cases": [case], "include_checks": True}
+    body = {"cases": [case], "include_checks": True, "include_messages": True}
     english = client.post(f"{SELECTIONS}/batch", json=body).json()
     response = client.post(f"{SELECTIONS}/batch", json=body, headers={"Accept-Language": "de"})
     assert response.status_code == 200, response.text
@@ -166,7 +166,7 @@ def test_the_batchs_controllers_are_the_details_in_german(
     """Table 521.1's criteria, the voltage checks (Eq. 521.2) and the controllers note of a
     batch candidate with ``include_controllers``: the candidate detail's, in German too."""
     case = {k: v for k, v in EXAMPLE_REQUEST.items() if k != "models"} | {"models": [MODEL]}
-    body = {"cases": [case], "include_controllers": True}
+    body = {"cases": [case], "include_controllers": True, "include_messages": True}
     german = client.post(f"{SELECTIONS}/batch", json=body, headers={"Accept-Language": "de"})
     assert german.status_code == 200, german.text
     (candidate,) = german.json()["results"][0]["candidates"]

@@ -94,11 +94,13 @@ def test_53_nm_at_68_rpm_fails_on_the_winding_current(client: TestClient) -> Non
 
 def test_the_batch_answers_as_the_single_selection(client: TestClient) -> None:
     cases = [RUN_105, {**RUN_105, "models": None}]
-    response = client.post(f"{API}/batch", json={"cases": cases, "top": 3})
+    response = client.post(
+        f"{API}/batch", json={"cases": cases, "top": 3, "include_messages": True}
+    )
     assert response.status_code == 200, response.text
     for case, result in zip(cases, response.json()["results"], strict=True):
         single, details = single_candidates(client, case, 3)
         assert result["mean_speed_rpm"] == single["mean_speed_rpm"]
-        assert [without(c, "controllers") for c in result["candidates"]] == [
+        assert [without(c, "controllers", "reason_checks") for c in result["candidates"]] == [
             without(c, "controllers") for c in details
         ]

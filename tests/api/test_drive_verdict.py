@@ -134,14 +134,18 @@ def test_the_batch_and_the_limits_agree_with_the_single_answer(client: TestClien
     """The batch's top 3 leaves CHA-14A-E-30 out, and its candidates equal the single
     selection's (the scalar flowchart's) with ==; the limits see the same failure."""
     single = created(client, BELT_AXIS)
-    response = client.post(f"{API}/batch", json={"cases": [BELT_AXIS], "top": 3})
+    response = client.post(
+        f"{API}/batch", json={"cases": [BELT_AXIS], "top": 3, "include_messages": True}
+    )
     assert response.status_code == 200, response.text
     (result,) = response.json()["results"]
     top = [c["model"] for c in result["candidates"]]
     assert "CHA-14A-E-30" not in top
     assert top == [c["model"] for c in single["candidates"][:3]]
     both = {**BELT_AXIS, "models": ["CHA-14A-E-30", "CHA-20A-30"]}
-    response = client.post(f"{API}/batch", json={"cases": [both], "top": 2})
+    response = client.post(
+        f"{API}/batch", json={"cases": [both], "top": 2, "include_messages": True}
+    )
     (result,) = response.json()["results"]
     alone = created(client, both)
     for got in result["candidates"]:

@@ -103,7 +103,9 @@ def test_imported_ratings_are_checked_and_the_batch_agrees(api: SalesApi) -> Non
     assert other_checks["gear_average_torque"]["status"] == "no_data"
     assert other_checks["brake_emergency_stops"]["status"] == "no_data"
     # the batch gives the same checks, number for number
-    batch = admin(api, "post", f"{API}/batch", json={"cases": [BODY], "top": 2})
+    batch = admin(
+        api, "post", f"{API}/batch", json={"cases": [BODY], "top": 2, "include_messages": True}
+    )
     assert batch.status_code == 200, batch.text
     (result,) = batch.json()["results"]
     got = {c["model"]: c for c in result["candidates"]}

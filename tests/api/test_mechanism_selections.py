@@ -180,7 +180,7 @@ def test_the_brake_drop_of_the_vertical_belt_axis_is_a_distance(client: TestClie
     ).json()
     worte = {c["name"]: c for c in german["checks"]}["brake_emergency_stops"]["message"]
     assert "fällt die Last um bis zu" in worte, worte
-    batch = client.post(f"{API}/batch", json={"cases": [body], "top": 1})
+    batch = client.post(f"{API}/batch", json={"cases": [body], "top": 1, "include_messages": True})
     assert batch.status_code == 200, batch.text
     (result,) = batch.json()["results"]
     (candidate,) = result["candidates"]

@@ -172,7 +172,10 @@ def test_cha_bearing_forces_are_not_applicable_single_batch_and_report(
         "not_applicable"
     )
     # the batch answers the same checks, number for number
-    batch = client.post("/api/v1/selections/batch", json={"cases": [body], "top": 3})
+    batch = client.post(
+        "/api/v1/selections/batch",
+        json={"cases": [body], "top": 3, "include_messages": True},
+    )
     assert batch.status_code == 200, batch.text
     (result,) = batch.json()["results"]
     for candidate in result["candidates"]:

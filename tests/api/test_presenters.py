@@ -26,7 +26,9 @@ from actuator_selection.schemas.limits import LimitsOut
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot, DriveContext
 from actuator_selection.services.presenters.batch import (
+    batch_candidate_body,
     candidate_body,
+    coded_summary,
     controllers_summary,
     result_body,
 )
@@ -117,6 +119,10 @@ def _brief(check: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
+OPEN = ("fail", "warn", "no_data")
+"""The statuses of a candidate's reasons."""
+
+
 @pytest.mark.parametrize("name", ["worked_example", "nothing_fits", "ball_screw_with_output_load"])
 def test_detail_and_batch_presenters_agree_with_the_ranking(
     name: str, catalogue: CatalogueSnapshot, session: Session
@@ -160,7 +166,28 @@ def test_detail_and_batch_presenters_agree_with_the_ranking(
             mode="json",
             exclude={"selection_id", "catalogue_version", "actuator", "segment_torques"},
         )
-        bodies.append(body)
+        summary = controllers_summary(drive.excluded, controllers_note(drive))
+        for include_messages in (True, False):
+            batch = batch_candidate_body(
+                candidate,
+                include_checks=True,
+                include_messages=include_messages,
+                controllers=body["controllers"],
+                controllers_summary=summary if include_messages else coded_summary(summary),
+            )
+            bodies.append(batch)
+            if include_messages:  # the detail's words and the names of the open checks
+                assert batch == body | {"reason_checks": candidate.open_checks}
+            else:  # the detail less its words
+                assert batch == {
+                    k: v for k, v in body.items() if k not in ("reasons", "controllers_note")
+                } | {
+                    "checks": [
+                        {k: v for k, v in c.items() if k != "message"} for c in body["checks"]
+                    ],
+                    "reason_checks": candidate.open_checks,
+                }
+        assert candidate.open_checks == [c["name"] for c in checks if c["status"] in OPEN]
     result = result_body(id=None, case_id="order 1/10", selection=selection, candidates=bodies)
     parsed = BatchResultOut.model_validate(result)
     assert parsed.model_dump(mode="json", exclude_unset=True) == orjson.loads(dump_json(result))

@@ -119,33 +119,109 @@ def single_candidates(client: TestClient, case: dict[str, Any], top: int) -> Any
 # --- the same answers as single selections ---------------------------------------------------
 
 
+WORDS = ("reasons", "controllers_note")
+"""A candidate's words, left out of a batch without ``include_messages`` (and each
+check's ``message``)."""
+
+
+def coded(candidate: dict[str, Any]) -> dict[str, Any]:
+    """A candidate in words as a batch without ``include_messages`` gives it: no words, the
+    names of the checks that do not pass (``reason_checks``) instead."""
+    out = without(candidate, *WORDS)
+    if "checks" in out:
+        out["checks"] = [without(c, "message") for c in out["checks"]]
+    return out | {"reason_checks": open_checks(candidate)}
+
+
+def open_checks(candidate: dict[str, Any]) -> list[str]:
+    """The names of a candidate's checks that fail, warn or lack data."""
+    return [c["name"] for c in candidate["checks"] if c["status"] in ("fail", "warn", "no_data")]
+
+
 def test_batch_equals_single_selections(batch_client: TestClient) -> None:
-    """N random cases posted one by one and as one batch: equal candidates and figures."""
+    """N random cases posted one by one and as one batch: equal candidates and figures; in
+    words (``include_messages``) the same words, else their codes and params alone."""
     cases = random_cases(24, catalogue_models(batch_client), seed=1)
+    worded = post(batch_client, cases, top=3, include_controllers=True, include_messages=True)
     full = post(batch_client, cases, top=3, include_controllers=True)
     brief = post(batch_client, cases, top=4, include_checks=False)
-    assert full.status_code == 200, full.text
-    assert brief.status_code == 200, brief.text
+    for answer in (worded, full, brief):
+        assert answer.status_code == 200, answer.text
+    worded_results = worded.json()["results"]
     full_results = full.json()["results"]
     brief_results = brief.json()["results"]
-    assert len(full_results) == len(brief_results) == len(cases)
-    for case, got, got_brief in zip(cases, full_results, brief_results, strict=True):
+    assert len(worded_results) == len(full_results) == len(brief_results) == len(cases)
+    for case, got_worded, got, got_brief in zip(
+        cases, worded_results, full_results, brief_results, strict=True
+    ):
         single, details = single_candidates(batch_client, case, 4)
         for key in ("load", "mean_speed_rpm", "duty_cycle_percent", "cycle_time_s"):
             assert got[key] == single[key], key
             assert got_brief[key] == single[key], key
+            assert got_worded[key] == single[key], key
         assert got["id"] is None
-        assert got["candidates"] == details[:3]
-        assert got_brief["candidates"] == [without(c, *DETAIL_KEYS) for c in details]
+        assert [without(c, "reason_checks") for c in got_worded["candidates"]] == details[:3]
+        assert [c["reason_checks"] for c in got_worded["candidates"]] == [
+            open_checks(c) for c in details[:3]
+        ]
+        assert got["candidates"] == [coded(c) for c in details[:3]]
+        assert got_brief["candidates"] == [without(coded(c), *DETAIL_KEYS) for c in details]
         assert full.json()["catalogue_version"] == single["catalogue_version"]
+
+
+def test_batch_in_german_words_as_the_single_selection(batch_client: TestClient) -> None:
+    """With ``include_messages`` and ``Accept-Language: de`` the words are the German of
+    the gettext catalogue, as a single selection's candidate detail words them."""
+    cases = random_cases(6, catalogue_models(batch_client), seed=4)
+    german = {"Accept-Language": "de"}
+    answer = batch_client.post(URL, json={"cases": cases, "include_messages": True}, headers=german)
+    assert answer.status_code == 200, answer.text
+    assert answer.headers["content-language"] == "de"
+    for case, result in zip(cases, answer.json()["results"], strict=True):
+        single = batch_client.post(f"{API_PREFIX}/selections", json=case).json()
+        for candidate in result["candidates"]:
+            url = f"{API_PREFIX}/selections/{single['id']}/candidates/{candidate['model']}"
+            detail = batch_client.get(url, headers=german).json()
+            assert without(candidate, "reason_checks") == without(
+                detail, *SELECTION_KEYS, "controllers"
+            )
+    # the codes and params are the same in every language; the words differ
+    english = post(batch_client, cases, include_messages=True).json()["results"]
+    worded = answer.json()["results"]
+    assert [[coded(c) for c in r["candidates"]] for r in english] == [
+        [coded(c) for c in r["candidates"]] for r in worded
+    ]
+    assert english != worded
+
+
+def test_batch_without_messages_has_no_words(batch_client: TestClient) -> None:
+    """The default answer carries no text in any language: every message is its code and
+    params; the request's language changes nothing in it."""
+    cases = random_cases(8, catalogue_models(batch_client), seed=6)
+    answers = [
+        batch_client.post(URL, json={"cases": cases}, headers={"Accept-Language": language})
+        for language in ("en", "de")
+    ]
+    assert answers[0].content == answers[1].content
+    for result in answers[0].json()["results"]:
+        for c in result["candidates"]:
+            assert not set(WORDS) & set(c)
+            assert c["reason_checks"] == open_checks(c)
+            assert c["controllers_note_code"]
+            for check in c["checks"]:
+                assert "message" not in check
+                assert check["message_code"]
 
 
 def test_batch_response_validates_against_its_schema(batch_client: TestClient) -> None:
     cases = random_cases(12, catalogue_models(batch_client), seed=2)
     for options in (
+        {"include_checks": True, "include_controllers": True, "include_messages": True},
         {"include_checks": True, "include_controllers": True},
         {"include_checks": True},
+        {"include_checks": True, "include_messages": True},
         {"include_checks": False},
+        {"include_checks": False, "include_messages": True},
         {"include_checks": False, "include_controllers": True},
     ):
         response = post(batch_client, cases, **options)
@@ -158,7 +234,9 @@ def test_batch_response_validates_against_its_schema(batch_client: TestClient) -
             for c in result["candidates"]:
                 assert ("checks" in c) is options["include_checks"]
                 assert ("controllers" in c) is options.get("include_controllers", False)
-                if "checks" in c and "controllers" in c:
+                assert ("reasons" in c) is options.get("include_messages", False)
+                if "checks" in c and "controllers" in c and "reasons" in c:
+                    c = without(c, "reason_checks")
                     actuator = batch_client.get(f"{API_PREFIX}/actuators/{c['model']}").json()
                     added = {"selection_id": "x", "catalogue_version": 1, "actuator": actuator}
                     parsed_candidate = CandidateDetailOut.model_validate(c | added)
@@ -168,12 +246,17 @@ def test_batch_response_validates_against_its_schema(batch_client: TestClient) -
 
 def test_batch_candidate_schema_has_candidate_out_fields() -> None:
     """BatchCandidateOut copies a candidate's detail (CandidateDetailOut, less what the
-    selection adds); a field added there must come here."""
+    selection adds), with ``reason_checks`` after ``reasons``; a field added there must come
+    here. The detail lists and the words are optional (asked for)."""
     fields = {k: v for k, v in CandidateDetailOut.model_fields.items() if k not in SELECTION_KEYS}
-    assert list(BatchCandidateOut.model_fields) == list(fields)
+    names = list(fields)
+    names.insert(names.index("reasons") + 1, "reason_checks")
+    assert list(BatchCandidateOut.model_fields) == names
     for name, field in fields.items():
         batch_field = BatchCandidateOut.model_fields[name]
-        assert batch_field.is_required() is (field.is_required() and name not in DETAIL_KEYS)
+        optional = name in DETAIL_KEYS or name in WORDS
+        assert batch_field.is_required() is (field.is_required() and not optional)
+    assert BatchCandidateOut.model_fields["reason_checks"].is_required()
 
 
 def test_openapi_documents_the_batch_contract(batch_client: TestClient) -> None:
@@ -220,7 +303,7 @@ def test_ten_thousand_cases_in_one_request(batch_client: TestClient) -> None:
     for i in (0, 4_999, 9_999):  # the order of the cases is kept
         single, details = single_candidates(batch_client, cases[i], 3)
         assert results[i]["load"] == single["load"]
-        assert results[i]["candidates"] == [without(c, *DETAIL_KEYS) for c in details]
+        assert results[i]["candidates"] == [without(coded(c), *DETAIL_KEYS) for c in details]
 
 
 def stored_count(connection: Connection) -> int:
@@ -239,7 +322,9 @@ def test_store_keeps_each_case_as_a_selection(
 ) -> None:
     cases = random_cases(4, catalogue_models(batch_client), seed=5)
     before = stored_count(connection)
-    response = post(batch_client, cases, store=True, include_controllers=True)
+    response = post(
+        batch_client, cases, store=True, include_controllers=True, include_messages=True
+    )
     assert response.status_code == 201, response.text
     results = response.json()["results"]
     assert stored_count(connection) == before + len(cases)
@@ -253,7 +338,9 @@ def test_store_keeps_each_case_as_a_selection(
         ]
         for c in result["candidates"]:
             url = f"{API_PREFIX}/selections/{result['id']}/candidates/{c['model']}"
-            assert without(batch_client.get(url).json(), *SELECTION_KEYS) == c
+            assert without(batch_client.get(url).json(), *SELECTION_KEYS) == without(
+                c, "reason_checks"
+            )
         assert body["cycle"] == case["cycle"]
         assert body["load"] == result["load"]
 

@@ -74,7 +74,8 @@ def test_columns_equal_the_per_case_batch(client: TestClient) -> None:
         assert got.status_code == 200, got.text
         answer = BatchColumnsOut.model_validate(got.json()).model_dump(mode="json")
         batch = client.post(
-            f"{API_PREFIX}/selections/batch", json={"cases": as_cases(columns), "top": top}
+            f"{API_PREFIX}/selections/batch",
+            json={"cases": as_cases(columns), "top": top, "include_messages": True},
         )
         assert batch.status_code == 200, batch.text
         results = batch.json()["results"]

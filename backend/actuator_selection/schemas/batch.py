@@ -109,6 +109,15 @@ class BatchSelectionRequest(StrictModel):
         default=True,
         description="false leaves each candidate's `checks` out (`reasons` stay)",
     )
+    include_messages: bool = Field(
+        default=False,
+        description="true adds the words: each check's `message`, each candidate's `reasons` "
+        "and `controllers_note`, in the answer's language (Accept-Language), as a single "
+        "selection words them. False (the default) gives the messages as codes and "
+        "parameters only (`message_code`, `message_params`, `reason_checks`, "
+        "`controllers_note_code`, `controllers_note_params`), from which a client words "
+        "them in any language: a batch's words cost more than its engineering",
+    )
     include_controllers: bool = Field(
         default=False,
         description="true adds each candidate's `controllers` list (Table 521.1, Eq. 521.2) "
@@ -134,12 +143,30 @@ class BatchSelectionRequest(StrictModel):
         return value
 
 
+class BatchCheckOut(CheckOut):
+    """A check as a single selection gives it; its ``message`` only with include_messages."""
+
+    message: str | None = Field(  # type: ignore[assignment]
+        default=None,
+        description="the check in words, in the answer's language (Content-Language); left "
+        "out unless include_messages (`message_code` and `message_params` word it)",
+    )
+
+
 class BatchCandidateOut(CandidateFigures):
     """A candidate as a single selection's detail gives it (CandidateDetailOut); its detail
-    lists only if asked for."""
+    lists only if asked for, its words only with include_messages."""
 
-    reasons: list[str] = Field(description="messages of the checks that did not pass")
-    checks: list[CheckOut] | None = Field(
+    reasons: list[str] | None = Field(
+        default=None,
+        description="messages of the checks that did not pass; left out unless "
+        "include_messages (`reason_checks` names the checks)",
+    )
+    reason_checks: list[str] = Field(
+        description="names of the checks that fail, warn or lack data, in the flowchart's "
+        "order: the checks `reasons` words (two may share one message)"
+    )
+    checks: list[BatchCheckOut] | None = Field(
         default=None, description="the flowchart's checks; left out unless include_checks"
     )
     controllers: list[DriveOptionOut] | None = Field(
@@ -148,7 +175,10 @@ class BatchCandidateOut(CandidateFigures):
         "output-voltage check (Eq. 521.2) at n_2; left out unless include_controllers",
     )
     controllers_excluded: int = Field(description="how many controllers Table 521.1 excludes")
-    controllers_note: str = Field(description="what the controller list rests on")
+    controllers_note: str | None = Field(
+        default=None,
+        description="what the controller list rests on, in words; left out unless include_messages",
+    )
     controllers_note_code: str | None = Field(
         default=None, description="stable code of `controllers_note`, as in a candidate's detail"
     )

@@ -31,7 +31,8 @@ from actuator_selection.schemas.selections import RANKING_RULE
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
 from actuator_selection.services.errors import UseCaseError, entry
 from actuator_selection.services.presenters.batch import (
-    candidate_body,
+    batch_candidate_body,
+    coded_summary,
     controllers_summary,
     result_body,
 )
@@ -161,6 +162,7 @@ class _Drives:
     def __init__(self, context: DriveContext, localize: Localize) -> None:
         self._context = context
         self._summaries: dict[str, dict[str, Any]] = {}
+        self._coded: dict[str, dict[str, Any]] = {}
         self._localize = localize
         self._lists: dict[tuple[str, float], list[dict[str, Any]]] = {}
         self._bodies = DriveOptionBodies(localize)  # criteria and voltage checks in words
@@ -177,6 +179,13 @@ class _Drives:
             found = self._summaries[actuator.model] = controllers_summary(
                 drive.excluded, controllers_note(drive), self._localize
             )
+        return found
+
+    def coded_summary(self, actuator: Actuator, speed_rpm: float) -> dict[str, Any]:
+        """:meth:`summary` less its words (:func:`coded_summary`)."""
+        found = self._coded.get(actuator.model)
+        if found is None:
+            found = self._coded[actuator.model] = coded_summary(self.summary(actuator, speed_rpm))
         return found
 
     def controllers(self, actuator: Actuator, speed_rpm: float) -> list[dict[str, Any]]:
@@ -219,15 +228,17 @@ def _candidates(
     localize: Localize,
 ) -> list[dict[str, Any]]:
     out = []
+    summary = drives.summary if body.include_messages else drives.coded_summary
     for c in selection.candidates:
         out.append(
-            candidate_body(
+            batch_candidate_body(
                 c,
                 include_checks=body.include_checks,
+                include_messages=body.include_messages,
                 controllers=(
                     drives.controllers(c.actuator, speed_rpm) if body.include_controllers else None
                 ),
-                controllers_summary=drives.summary(c.actuator, speed_rpm),
+                controllers_summary=summary(c.actuator, speed_rpm),
                 localize=localize,
             )
         )

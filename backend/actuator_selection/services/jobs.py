@@ -336,7 +336,10 @@ def chunk_answer(
     case's index in the job, first."""
     cases = [BatchCaseIn.model_validate_json(line) for line in cases_json.split(b"\n")]
     body = BatchSelectionRequest(
-        cases=cases, top=options["top"], include_checks=options["include_checks"]
+        cases=cases,
+        top=options["top"],
+        include_checks=options["include_checks"],
+        include_messages=True,  # a job's results are in its language (options["language"])
     )
     apps = [case.to_core() for case in body.cases]
     answer = size_batch(

@@ -45,6 +45,15 @@ class Candidate:
         return tuple(dict.fromkeys(c.message for c in self.checks if c.status.open))
 
     @property
+    def open_checks(self) -> list[str]:
+        """The names of the checks that fail, lack data or warn, in flowchart order: what
+        :attr:`reasons` words (each check once; two may share a message)."""
+        held = _CHECKS.__get__(self, Candidate)
+        if isinstance(held, DeferredChecks):  # a batch's candidate, checks unread: from codes
+            return held.open_names()
+        return [c.name for c in self.checks if c.status.open]
+
+    @property
     def worst_overload(self) -> float:
         """The largest :attr:`~actuator_selection.sizing.checks.Check.overload` of its
         checks: 0 unless a check failed, else how far the worst one is over its limit."""

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from actuator_selection.i18n.check_messages import jsonable_params
+from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.selection import resolved_load
 from actuator_selection.sizing.selection import VALUE_OF, Candidate, Check, Selection
@@ -83,6 +83,84 @@ def candidate_body(
         body["controllers"] = controllers
     body.update(controllers_summary)
     return body
+
+
+def coded_check_body(check: Check) -> dict[str, Any]:
+    """A check as :func:`check_body` gives it, less ``message``: its words are left to the
+    client (``message_code`` and ``message_params``), or asked for (``include_messages``)."""
+    value, limit, message = check.value, check.limit, check.message
+    if value is not None:
+        value = float(value)
+    if limit is not None:
+        limit = float(limit)
+    # margin_percent and utilisation (sizing.checks.rule), without the properties' calls
+    shares = value is not None and limit is not None and limit > 0
+    coded = isinstance(message, Phrase)
+    return {
+        "name": check.name,
+        "status": VALUE_OF[check.status],
+        "value": value,
+        "limit": limit,
+        "unit": check.unit,
+        "reference": check.reference,
+        "message_code": message.code if coded else None,
+        "message_params": jsonable_params(message) if coded else None,
+        "approximate": check.approximate,
+        "margin_percent": (limit - value) / limit * 100.0 if shares else None,  # type: ignore[operator]
+        "utilisation": value / limit if shares else None,  # type: ignore[operator]
+    }
+
+
+def batch_candidate_body(
+    candidate: Candidate,
+    *,
+    include_checks: bool,
+    include_messages: bool,
+    controllers: list[dict[str, Any]] | None,
+    controllers_summary: dict[str, Any],
+    localize: Localize = english,
+) -> dict[str, Any]:
+    """A batch candidate (``BatchCandidateOut``): with ``include_messages``, the detail's
+    candidate in words (:func:`candidate_body`, the answer as it was before messages were
+    asked for); without, the same less every text: no ``reasons``, no check's
+    ``message``, no ``controllers_note`` (``controllers_summary`` as
+    :func:`coded_summary` gives it), their codes and params given. Either way
+    ``reason_checks`` names the checks that do not pass."""
+    if include_messages:
+        body = candidate_body(
+            candidate,
+            include_checks=include_checks,
+            controllers=controllers,
+            controllers_summary=controllers_summary,
+            localize=localize,
+        )
+        body["reason_checks"] = candidate.open_checks
+        return body
+    t = candidate.torques
+    a = candidate.actuator
+    body = {
+        "model": a.model,
+        "family": a.family,
+        "gear_ratio": float(a.gear_ratio),
+        "verdict": VALUE_OF[candidate.verdict],
+        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
+        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
+        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
+        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
+        "reason_checks": candidate.open_checks,
+    }
+    if include_checks:
+        with codes_only():  # the checks' messages as codes and params, no English written
+            body["checks"] = [coded_check_body(c) for c in candidate.checks]
+    if controllers is not None:
+        body["controllers"] = controllers
+    body.update(controllers_summary)
+    return body
+
+
+def coded_summary(summary: dict[str, Any]) -> dict[str, Any]:
+    """:func:`controllers_summary` less its words (``controllers_note``)."""
+    return {k: v for k, v in summary.items() if k != "controllers_note"}
 
 
 def controllers_summary(excluded: int, note: str, localize: Localize = english) -> dict[str, Any]:

@@ -171,6 +171,11 @@ class DeferredChecks(Deferred):
         (:meth:`Rule.words`)."""
         raise NotImplementedError
 
+    def open_names(self) -> list[str]:
+        """The names of the checks that fail, warn or lack data, in the rules' order,
+        without building or wording them."""
+        raise NotImplementedError
+
 
 def margin_percent(value: float | None, limit: float | None) -> float | None:
     """Headroom (limit − value)/limit [%]; negative when the limit is exceeded; None

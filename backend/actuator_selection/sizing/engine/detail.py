@@ -210,6 +210,10 @@ class _DecidedChecks(DeferredChecks):
             return []
         return d.reasons(d.operands_of(cell), cell)
 
+    def open_names(self) -> list[str]:
+        rules = self._decided.rules
+        return [rules[k].name for k in self._decided.not_passing[self._cell]]
+
 
 def _cycle_torques(
     actuator: Actuator,
