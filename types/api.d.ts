@@ -1899,7 +1899,7 @@ export interface components {
         /**
          * BatchCandidateOut
          * @description A candidate as a single selection's detail gives it (CandidateDetailOut); its detail
-         *     lists only if asked for.
+         *     lists only if asked for, its words only with include_messages.
          */
         BatchCandidateOut: {
             /** Model */
@@ -1935,14 +1935,19 @@ export interface components {
             rms_torque_nm: number | null;
             /**
              * Reasons
-             * @description messages of the checks that did not pass
+             * @description messages of the checks that did not pass; left out unless include_messages (`reason_checks` names the checks)
              */
-            reasons: string[];
+            reasons?: string[] | null;
+            /**
+             * Reason Checks
+             * @description names of the checks that fail, warn or lack data, in the flowchart's order: the checks `reasons` words (two may share one message)
+             */
+            reason_checks: string[];
             /**
              * Checks
              * @description the flowchart's checks; left out unless include_checks
              */
-            checks?: components["schemas"]["CheckOut"][] | null;
+            checks?: components["schemas"]["BatchCheckOut"][] | null;
             /**
              * Controllers
              * @description controllers of Table 521.1 not excluded, best first, each with its output-voltage check (Eq. 521.2) at n_2; left out unless include_controllers
@@ -1955,9 +1960,9 @@ export interface components {
             controllers_excluded: number;
             /**
              * Controllers Note
-             * @description what the controller list rests on
+             * @description what the controller list rests on, in words; left out unless include_messages
              */
-            controllers_note: string;
+            controllers_note?: string | null;
             /**
              * Controllers Note Code
              * @description stable code of `controllers_note`, as in a candidate's detail
@@ -2039,6 +2044,62 @@ export interface components {
              * @description the client's own id of the case (an order position, say), echoed as its result's `case_id`; not stored with a selection
              */
             case_id?: string | null;
+        };
+        /**
+         * BatchCheckOut
+         * @description A check as a single selection gives it; its ``message`` only with include_messages.
+         */
+        BatchCheckOut: {
+            /** Name */
+            name: string;
+            /**
+             * Status
+             * @enum {string}
+             */
+            status: "pass" | "fail" | "warn" | "no_data" | "not_applicable";
+            /** Value */
+            value: number | null;
+            /** Limit */
+            limit: number | null;
+            /** Unit */
+            unit: string;
+            /**
+             * Reference
+             * @description the chapter's equation, table or figure
+             */
+            reference: string;
+            /**
+             * Message
+             * @description the check in words, in the answer's language (Content-Language); left out unless include_messages (`message_code` and `message_params` word it)
+             */
+            message?: string | null;
+            /**
+             * Message Code
+             * @description stable code of the message (e.g. `peak_torque.pass`), the same in every language; null for a rule without one
+             */
+            message_code?: string | null;
+            /**
+             * Message Params
+             * @description the values the message names, the same in every language: numbers (`value`, `limit` in the check's unit, others with their unit in the name), words (English), clauses as `{code, params}`; null where `message_code` is
+             */
+            message_params?: {
+                [key: string]: unknown;
+            } | null;
+            /**
+             * Approximate
+             * @description true when a simplified limit stood in for the zone
+             */
+            approximate: boolean;
+            /**
+             * Margin Percent
+             * @description (limit − value)/limit · 100
+             */
+            margin_percent: number | null;
+            /**
+             * Utilisation
+             * @description value/limit: the share of the limit used, > 1 when it is exceeded
+             */
+            utilisation: number | null;
         };
         /**
          * BatchColumnsOut
@@ -2347,6 +2408,11 @@ export interface components {
              * @description false leaves each candidate's `checks` out (`reasons` stay); omitted: true
              */
             include_checks?: boolean;
+            /**
+             * Include Messages
+             * @description true adds the words: each check's `message`, each candidate's `reasons` and `controllers_note`, in the answer's language (Accept-Language), as a single selection words them. False (the default) gives the messages as codes and parameters only (`message_code`, `message_params`, `reason_checks`, `controllers_note_code`, `controllers_note_params`), from which a client words them in any language: a batch's words cost more than its engineering; omitted: false
+             */
+            include_messages?: boolean;
             /**
              * Include Controllers
              * @description true adds each candidate's `controllers` list (Table 521.1, Eq. 521.2) as a single selection gives it; cases × top ≤ 1000. `controllers_excluded` and `controllers_note` are always given; omitted: false
