@@ -94,8 +94,9 @@ def coded_check_body(check: Check) -> dict[str, Any]:
     if limit is not None:
         limit = float(limit)
     # margin_percent and utilisation (sizing.checks.rule), without the properties' calls
-    shares = value is not None and limit is not None and limit > 0
-    coded = isinstance(message, Phrase)
+    margin = share = None
+    if value is not None and limit is not None and limit > 0:
+        margin, share = (limit - value) / limit * 100.0, value / limit
     return {
         "name": check.name,
         "status": VALUE_OF[check.status],
@@ -103,11 +104,11 @@ def coded_check_body(check: Check) -> dict[str, Any]:
         "limit": limit,
         "unit": check.unit,
         "reference": check.reference,
-        "message_code": message.code if coded else None,
-        "message_params": jsonable_params(message) if coded else None,
+        "message_code": message.code if isinstance(message, Phrase) else None,
+        "message_params": jsonable_params(message),
         "approximate": check.approximate,
-        "margin_percent": (limit - value) / limit * 100.0 if shares else None,  # type: ignore[operator]
-        "utilisation": value / limit if shares else None,  # type: ignore[operator]
+        "margin_percent": margin,
+        "utilisation": share,
     }
 
 
