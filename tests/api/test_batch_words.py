@@ -36,3 +36,37 @@ def test_reasons_take_the_words_of_the_checks(session: Session) -> None:
             )
             reasons += len(body["reasons"])
     assert reasons > 0
+
+
+def test_briefs_are_the_checks_unbuilt(session: Session) -> None:
+    """A batch candidate's checks as briefs (read before the checks are built) state what
+    the checks built from the same decisions state: name, unit, reference, status, value,
+    limit, approximate and message, with its words."""
+    catalogue = CatalogueCache().snapshot(session)
+    apps = random_cases(60, seed=9)
+    briefed = select_batch(list(catalogue.actuators), apps, top=3)
+    built = select_batch(list(catalogue.actuators), apps, top=3)
+    statuses = set()
+    for one, other in zip(briefed, built, strict=True):
+        for candidate, twin in zip(one.candidates, other.candidates, strict=True):
+            pairs = candidate.briefs()  # checks not built yet: from the rules
+            for (rule, brief), check in zip(pairs, twin.checks, strict=True):
+                assert (rule.name, rule.unit, rule.reference) == (
+                    check.name,
+                    check.unit,
+                    check.reference,
+                )
+                assert brief == (
+                    check.status,
+                    check.value,
+                    check.limit,
+                    check.approximate,
+                    check.message,
+                )
+                statuses.add(check.status.value)
+            assert candidate.open_checks == twin.open_checks
+            checks = candidate.checks  # once built, the briefs come from the checks
+            assert candidate.briefs() == [
+                (c, (c.status, c.value, c.limit, c.approximate, c.message)) for c in checks
+            ]
+    assert {"pass", "fail", "no_data"} <= statuses

@@ -8,7 +8,7 @@ from enum import StrEnum
 from typing import Any
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.sizing.checks import Check, DeferredChecks, Status
+from actuator_selection.sizing.checks import Brief, Check, DeferredChecks, Rule, Status
 from actuator_selection.sizing.deferred import defer_field
 from actuator_selection.sizing.motion import CycleTorques, Profile
 
@@ -43,6 +43,16 @@ class Candidate:
         if isinstance(held, DeferredChecks):  # a batch's candidate, checks unread: these alone
             return tuple(dict.fromkeys(held.reasons()))
         return tuple(dict.fromkeys(c.message for c in self.checks if c.status.open))
+
+    def briefs(self) -> list[tuple[Check | Rule, Brief]]:
+        """Each check as a :data:`~actuator_selection.sizing.checks.Brief` beside what
+        names it (its :class:`Check` or, for a batch's candidate whose checks are unread,
+        its rule: each has ``name``, ``unit`` and ``reference``), without building the
+        checks that are not built yet."""
+        held = _CHECKS.__get__(self, Candidate)
+        if isinstance(held, DeferredChecks):
+            return list(held.briefs())
+        return [(c, (c.status, c.value, c.limit, c.approximate, c.message)) for c in self.checks]
 
     @property
     def open_checks(self) -> list[str]:

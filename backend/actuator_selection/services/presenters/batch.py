@@ -13,6 +13,7 @@ from typing import Any
 from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.selection import resolved_load
+from actuator_selection.sizing.checks import Brief, Rule
 from actuator_selection.sizing.selection import VALUE_OF, Candidate, Check, Selection
 
 
@@ -85,10 +86,12 @@ def candidate_body(
     return body
 
 
-def coded_check_body(check: Check) -> dict[str, Any]:
+def coded_check_body(named: Check | Rule, brief: Brief) -> dict[str, Any]:
     """A check as :func:`check_body` gives it, less ``message``: its words are left to the
-    client (``message_code`` and ``message_params``), or asked for (``include_messages``)."""
-    value, limit, message = check.value, check.limit, check.message
+    client (``message_code`` and ``message_params``), or asked for (``include_messages``).
+    ``named`` and ``brief`` as :meth:`~actuator_selection.sizing.candidates.Candidate.
+    briefs` gives them."""
+    status, value, limit, approximate, message = brief
     if value is not None:
         value = float(value)
     if limit is not None:
@@ -98,15 +101,15 @@ def coded_check_body(check: Check) -> dict[str, Any]:
     if value is not None and limit is not None and limit > 0:
         margin, share = (limit - value) / limit * 100.0, value / limit
     return {
-        "name": check.name,
-        "status": VALUE_OF[check.status],
+        "name": named.name,
+        "status": VALUE_OF[status],
         "value": value,
         "limit": limit,
-        "unit": check.unit,
-        "reference": check.reference,
+        "unit": named.unit,
+        "reference": named.reference,
         "message_code": message.code if isinstance(message, Phrase) else None,
         "message_params": jsonable_params(message),
-        "approximate": check.approximate,
+        "approximate": approximate,
         "margin_percent": margin,
         "utilisation": share,
     }
@@ -152,7 +155,7 @@ def batch_candidate_body(
     }
     if include_checks:
         with codes_only():  # the checks' messages as codes and params, no English written
-            body["checks"] = [coded_check_body(c) for c in candidate.checks]
+            body["checks"] = [coded_check_body(*named) for named in candidate.briefs()]
     if controllers is not None:
         body["controllers"] = controllers
     body.update(controllers_summary)

@@ -49,6 +49,7 @@ from __future__ import annotations
 from actuator_selection.sizing.checks.operands import Operands, Real, Truth
 from actuator_selection.sizing.checks.rule import (
     FLOAT_OPS,
+    Brief,
     Check,
     DeferredChecks,
     Formula,
@@ -127,6 +128,7 @@ __all__ = [
     "PEAK_TORQUE",
     "RULES",
     "THERMAL_PEAK",
+    "Brief",
     "Check",
     "DeferredChecks",
     "Formula",

@@ -34,6 +34,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "FLOAT_OPS",
+    "Brief",
     "Check",
     "DeferredChecks",
     "Formula",
@@ -155,6 +156,11 @@ class _Words(Deferred):
 defer_field(Check, "message")
 
 
+Brief = tuple[Status, float | None, float | None, bool, str]
+"""A check's status, value, limit, ``approximate`` and message, as its :class:`Check` has
+them (:meth:`Rule.brief`); its name, unit and reference are its rule's."""
+
+
 class DeferredChecks(Deferred):
     """A candidate's checks decided (by the engine) but not built yet:
     :meth:`resolve` builds them all, :meth:`reasons` words only those that do not pass
@@ -169,6 +175,11 @@ class DeferredChecks(Deferred):
     def reasons(self) -> list[str]:
         """The messages of the checks that fail, warn or lack data, in the rules' order
         (:meth:`Rule.words`)."""
+        raise NotImplementedError
+
+    def briefs(self) -> list[tuple[Rule, Brief]]:
+        """Every check as its rule and a :data:`Brief`, in the rules' order, without
+        building it."""
         raise NotImplementedError
 
     def open_names(self) -> list[str]:
@@ -462,6 +473,32 @@ class Rule:
             message,
             approximate,
             lacking,
+        )
+
+    def brief(
+        self,
+        q: Operands,
+        status: Status,
+        value: float,
+        limit: float,
+        approximate: bool,
+        missing: int | None,
+    ) -> Brief:
+        """What :meth:`report` gives for the same arguments as a :data:`Brief` (status,
+        value, limit, approximate, message), without building the check: a batch lists
+        240,000 checks as numbers and codes."""
+        if status is Status.NO_DATA:
+            assert missing is not None
+            known = value if value == value else None  # NaN: T_1, T_3, T_rms without J_A
+            return (status, known, None, False, self._no_data[missing][2])
+        if status is Status.NOT_APPLICABLE:
+            return (status, None, None, False, self.message(q, status, math.nan, math.nan))
+        return (
+            status,
+            value if value == value else None,
+            limit if limit == limit else None,
+            approximate,
+            self.words(q, status, value, limit, missing),
         )
 
     def words(

@@ -14,7 +14,7 @@ import numpy as np
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.candidates import Candidate
-from actuator_selection.sizing.checks import Check, DeferredChecks, Operands, Rule
+from actuator_selection.sizing.checks import Brief, Check, DeferredChecks, Operands, Rule
 from actuator_selection.sizing.deferred import Deferred
 from actuator_selection.sizing.engine.arrays import (
     PASS,
@@ -172,6 +172,25 @@ class _Decided:
             None if first < 0 else first,
         )
 
+    def briefs(self, q: Operands, cell: int) -> list[tuple[Rule, Brief]]:
+        """Every rule's check of ``cell``, the rule beside its :data:`~actuator_selection.
+        sizing.checks.Brief` (:meth:`~actuator_selection.sizing.checks.Rule.brief`)."""
+        out = []
+        for rule, (codes, values, limits, approximate, missing) in zip(
+            self.rules, self.columns, strict=True
+        ):
+            first = missing[cell]
+            brief = rule.brief(
+                q,
+                STATUS_BY_CODE[codes[cell]],
+                values[cell],
+                limits[cell],
+                approximate[cell],
+                None if first < 0 else first,
+            )
+            out.append((rule, brief))
+        return out
+
     def reasons(self, q: Operands, cell: int) -> list[str]:
         """The words of the rules that do not pass for ``cell`` (its operands ``q``)."""
         out = []
@@ -209,6 +228,10 @@ class _DecidedChecks(DeferredChecks):
         if not d.not_passing[cell]:
             return []
         return d.reasons(d.operands_of(cell), cell)
+
+    def briefs(self) -> list[tuple[Rule, Brief]]:
+        d, cell = self._decided, self._cell
+        return d.briefs(d.operands_of(cell), cell)
 
     def open_names(self) -> list[str]:
         rules = self._decided.rules
