@@ -1001,6 +1001,36 @@ function chartUnavailable(div, text) {
   div.replaceChildren(h("p", { class: "chart-placeholder chart-error" }, text));
 }
 
+/**
+ * The chosen candidate's detail and both figures asked for at once, before the results are
+ * drawn: the server answers them while the page lays the results out, and the charts are
+ * drawn as soon as that is done (``drawCharts`` takes them from the same caches).
+ */
+function askChartData(sel, model, lang) {
+  if (!model) return;
+  candidateDetail(sel, model);
+  candidateFigure("diagram", sel, model, lang, true).catch(() => {});
+  candidateFigure("cycle", sel, model, lang, true).catch(() => {});
+}
+
+/** How long a new answer's results wait for its best candidate's detail before they are drawn. */
+const DETAIL_WAIT_MS = 250;
+
+/**
+ * The best candidate's detail and figures asked for as soon as a selection answers, and its
+ * detail awaited (for at most ``DETAIL_WAIT_MS``): the results are then laid out once, with
+ * the detail's checks, instead of once without and again when the detail comes.
+ */
+async function chartDataAsked(sel) {
+  const model = Array.isArray(sel?.candidates) ? sel.candidates[0]?.model : undefined;
+  if (typeof sel?.id !== "string" || !model) return;
+  askChartData(sel, model, state.lang);
+  await Promise.race([
+    candidateDetail(sel, model).settled,
+    new Promise((resolve) => window.setTimeout(resolve, DETAIL_WAIT_MS)),
+  ]);
+}
+
 async function drawCharts() {
   const token = ++drawToken;
   const sel = state.selection;
@@ -1141,6 +1171,7 @@ function acceptSelection(sel, preferredModel, marks = []) {
   state.compareRefused = null;
   const models = sel.candidates.map((c) => c.model);
   state.chosen = models.includes(preferredModel) ? preferredModel : (models[0] ?? null);
+  askChartData(sel, state.chosen, state.lang);
   renderResults();
   updateUrl();
   announce(resultSentence(sel, state.chosen, state.lang));
@@ -1175,6 +1206,7 @@ async function onSubmit(event) {
   if (!state.selection) renderResults();
   try {
     const sel = await createSelection(body);
+    await chartDataAsked(sel);
     setBusy(false);
     acceptSelection(sel);
     bringResultsIntoView();
