@@ -11,7 +11,7 @@ import { loadPlotly } from "../../lib/plotly.js";
 import { MAX_COMPARED, compareStatusText, compareToggle, renderCompare, validMarks } from "./compare.js";
 import { initProfile } from "./profile.js";
 import { ratioVariables, renderRatioStudy } from "./ratio.js";
-import { NARROW_CHART_PX, WARM_FIGURE, cycleCaption, diagramCaption, fitFigure } from "./figures.js";
+import { NARROW_CHART_PX, WARM_FIGURES, cycleCaption, diagramCaption, fitFigure } from "./figures.js";
 import {
   LOAD_KINDS,
   TRANSMISSION_FIELDS,
@@ -1112,39 +1112,75 @@ async function drawCharts() {
   }
 }
 
-/** The page waits this long, untouched, after plotly.js has run before warming it up. */
+/**
+ * The page waits this long, untouched, after plotly.js has run before warming it up, and
+ * as long again after each move of the pointer, wheel or scroll (a user about to click).
+ */
 const WARM_AFTER_MS = 400;
+
+/** The warm-up's pause between its figures (``warmCharts``). */
+const WARM_GAP_MS = 150;
 
 /** Whether the user has pressed a key or a pointer, or put something in, since the page loaded. */
 let touched = false;
 
+/** When the pointer last moved, or the page was scrolled (``performance.now()``). */
+let lastMoved = -Infinity;
+
+/** Whether the user is about to act: input waiting for the page, or the pointer just moved. */
+function userActing() {
+  const scheduling = /** @type {{ isInputPending?: (options?: object) => boolean } | undefined} */ (
+    /** @type {any} */ (navigator).scheduling
+  );
+  const pending = scheduling?.isInputPending?.({ includeContinuous: true }) ?? false;
+  return pending || performance.now() - lastMoved < WARM_AFTER_MS;
+}
+
 /**
- * The cycle chart drawn once off screen and thrown away, while the page waits for its first
- * input. plotly.js compiles its drawing code on first use: a first chart took 100–130 ms
- * here and a warmed-up one 35 ms, so the user's first charts come that much sooner.
- * Skipped once the user has started (clicked or typed: the 200 ms of drawing would hold
- * up their input, and the real charts come soon) or a permalink is opened. Says what it
- * did in ``<html data-charts-warm>``: "done", "skipped" or "failed" (a warm-up only).
+ * ``warmCharts`` once the page has been quiet for ``WARM_AFTER_MS``: a warm-up started
+ * just before a click would hold the click up for as long as a chart takes to draw.
+ */
+function warmWhenQuiet(Plotly) {
+  const wait = () => {
+    const quiet = performance.now() - lastMoved;
+    if (!touched && userActing()) window.setTimeout(wait, Math.max(50, WARM_AFTER_MS - quiet));
+    else warmCharts(Plotly);
+  };
+  window.setTimeout(wait, WARM_AFTER_MS);
+}
+
+/**
+ * Made-up charts (``WARM_FIGURES``) drawn off screen and thrown away, while the page waits
+ * for its first input. plotly.js sets itself up and compiles its drawing code on first use:
+ * a first chart took 100–130 ms here and a warmed-up one 35 ms, so the user's first charts
+ * come that much sooner. One figure a task, the small one first, ``WARM_GAP_MS`` apart, so
+ * that a click waits for one figure at most; the rest is skipped once the user has started
+ * (clicked or typed, or input is waiting), or a permalink is opened. Says what it did in
+ * ``<html data-charts-warm>``: "done", "partial" (the user started in between), "skipped"
+ * or "failed" (a warm-up only).
  */
 async function warmCharts(Plotly) {
-  if (touched || state.busy || state.selection) {
-    document.documentElement.dataset.chartsWarm = "skipped";
-    return;
+  const stop = () => touched || state.busy || state.selection || userActing();
+  let drawn = 0;
+  for (const figure of WARM_FIGURES) {
+    // a pause between the figures, for a click on its way (a pointer on its way to a button)
+    if (drawn) await new Promise((resolve) => window.setTimeout(resolve, WARM_GAP_MS));
+    if (stop()) break;
+    const host = h("div", { class: "chart chart-warmup", "aria-hidden": "true", inert: true });
+    document.body.append(host);
+    try {
+      await Plotly.newPlot(host, figure.data, figure.layout, { ...PLOT_CONFIG, locale: state.lang });
+      Plotly.purge(host);
+      drawn += 1;
+    } catch {
+      document.documentElement.dataset.chartsWarm = "failed";
+      return;
+    } finally {
+      host.remove();
+    }
   }
-  const host = h("div", { class: "chart chart-warmup", "aria-hidden": "true", inert: true });
-  document.body.append(host);
-  try {
-    const lang = state.lang;
-    // two panels of lines, a filled area, markers, shapes and annotations, as the API's
-    // figures draw them
-    await Plotly.newPlot(host, WARM_FIGURE.data, WARM_FIGURE.layout, { ...PLOT_CONFIG, locale: lang });
-    Plotly.purge(host);
-    document.documentElement.dataset.chartsWarm = "done";
-  } catch {
-    document.documentElement.dataset.chartsWarm = "failed";
-  } finally {
-    host.remove();
-  }
+  const all = drawn === WARM_FIGURES.length;
+  document.documentElement.dataset.chartsWarm = all ? "done" : drawn ? "partial" : "skipped";
 }
 
 // ---------------------------------------------------------------- flow
@@ -1369,7 +1405,10 @@ function init() {
     for (const type of ["pointerdown", "keydown", "input"]) {
       document.addEventListener(type, () => (touched = true), { capture: true, once: true });
     }
-    loadPlotly().then((Plotly) => window.setTimeout(() => warmCharts(Plotly), WARM_AFTER_MS), () => {});
+    for (const type of ["pointermove", "wheel", "scroll"]) {
+      document.addEventListener(type, () => (lastMoved = performance.now()), { capture: true, passive: true });
+    }
+    loadPlotly().then(warmWhenQuiet, () => {});
   }
 }
 

@@ -68,23 +68,35 @@ export function fitFigure(figure, { narrow = false } = {}) {
 }
 
 /**
- * A made-up figure of what the API's figures draw (two panels of lines, a filled area,
- * markers, a shape and annotations), drawn once off screen to warm plotly.js up; never shown.
+ * Made-up figures of what the API's figures draw, drawn off screen one a task to warm
+ * plotly.js up; never shown. The first is small (one panel, a line, the legend below, as
+ * the API's): it takes plotly.js's first-use costs. The second has the rest (two panels of
+ * lines, a filled area, markers, a shape and annotations).
  */
-export const WARM_FIGURE = {
-  data: [
-    { type: "scatter", mode: "lines", x: [0, 1, 2], y: [0, 1, 0], fill: "toself", yaxis: "y" },
-    { type: "scatter", mode: "lines", x: [0, 1, 2], y: [1, -1, 0], line: { dash: "dash" }, yaxis: "y2" },
-    { type: "scatter", mode: "markers", x: [1], y: [0.5], marker: { symbol: "triangle-up" }, yaxis: "y" },
-  ],
-  layout: {
-    xaxis: { anchor: "y2" },
-    yaxis: { domain: [0.58, 1], anchor: "x" },
-    yaxis2: { domain: [0, 0.46], anchor: "x" },
-    shapes: [{ type: "line", xref: "x", yref: "paper", x0: 1, x1: 1, y0: 0, y1: 1 }],
-    annotations: [{ x: 1, y: 1, xref: "x", yref: "paper", text: "T<sub>1</sub>", showarrow: false }],
+export const WARM_FIGURES = [
+  {
+    data: [{ type: "scatter", mode: "lines", x: [0, 1], y: [0, 1], name: "n<sub>2</sub>" }],
+    layout: {
+      showlegend: true,
+      legend: { orientation: "h", x: 0, xanchor: "left", y: -0.2, yanchor: "top" },
+      margin: { l: 64, r: 16, t: 24, b: 48 },
+    },
   },
-};
+  {
+    data: [
+      { type: "scatter", mode: "lines", x: [0, 1, 2], y: [0, 1, 0], fill: "toself", yaxis: "y" },
+      { type: "scatter", mode: "lines", x: [0, 1, 2], y: [1, -1, 0], line: { dash: "dash" }, yaxis: "y2" },
+      { type: "scatter", mode: "markers", x: [1], y: [0.5], marker: { symbol: "triangle-up" }, yaxis: "y" },
+    ],
+    layout: {
+      xaxis: { anchor: "y2" },
+      yaxis: { domain: [0.58, 1], anchor: "x" },
+      yaxis2: { domain: [0, 0.46], anchor: "x" },
+      shapes: [{ type: "line", xref: "x", yref: "paper", x0: 1, x1: 1, y0: 0, y1: 1 }],
+      annotations: [{ x: 1, y: 1, xref: "x", yref: "paper", text: "T<sub>1</sub>", showarrow: false }],
+    },
+  },
+];
 
 /** A text alternative of the cycle chart, for the figure's caption. */
 export function cycleCaption(selection, candidate, lang) {
