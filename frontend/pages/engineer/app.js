@@ -1113,13 +1113,10 @@ async function drawCharts() {
 }
 
 /**
- * The page waits this long, untouched, after plotly.js has run before warming it up, and
- * as long again after each move of the pointer, wheel or scroll (a user about to click).
+ * The warm-up's second figure waits until the page has been quiet this long: no move of
+ * the pointer, wheel or scroll (a user about to click).
  */
 const WARM_AFTER_MS = 400;
-
-/** The warm-up's pause between its figures (``warmCharts``). */
-const WARM_GAP_MS = 150;
 
 /** Whether the user has pressed a key or a pointer, or put something in, since the page loaded. */
 let touched = false;
@@ -1127,45 +1124,39 @@ let touched = false;
 /** When the pointer last moved, or the page was scrolled (``performance.now()``). */
 let lastMoved = -Infinity;
 
-/** Whether the user is about to act: input waiting for the page, or the pointer just moved. */
-function userActing() {
+/** Whether input is waiting for the page (a click on its way). */
+function inputPending() {
   const scheduling = /** @type {{ isInputPending?: (options?: object) => boolean } | undefined} */ (
     /** @type {any} */ (navigator).scheduling
   );
-  const pending = scheduling?.isInputPending?.({ includeContinuous: true }) ?? false;
-  return pending || performance.now() - lastMoved < WARM_AFTER_MS;
+  return scheduling?.isInputPending?.({ includeContinuous: true }) ?? false;
 }
 
-/**
- * ``warmCharts`` once the page has been quiet for ``WARM_AFTER_MS``: a warm-up started
- * just before a click would hold the click up for as long as a chart takes to draw.
- */
-function warmWhenQuiet(Plotly) {
-  const wait = () => {
-    const quiet = performance.now() - lastMoved;
-    if (!touched && userActing()) window.setTimeout(wait, Math.max(50, WARM_AFTER_MS - quiet));
-    else warmCharts(Plotly);
-  };
-  window.setTimeout(wait, WARM_AFTER_MS);
+/** ``WARM_AFTER_MS`` from now, and as much longer as the pointer keeps moving. */
+async function quietPeriod() {
+  let wait = WARM_AFTER_MS;
+  while (wait > 0) {
+    await new Promise((resolve) => window.setTimeout(resolve, wait));
+    wait = touched ? 0 : WARM_AFTER_MS - (performance.now() - lastMoved);
+  }
 }
 
 /**
  * Made-up charts (``WARM_FIGURES``) drawn off screen and thrown away, while the page waits
  * for its first input. plotly.js sets itself up and compiles its drawing code on first use:
  * a first chart took 100–130 ms here and a warmed-up one 35 ms, so the user's first charts
- * come that much sooner. One figure a task, the small one first, ``WARM_GAP_MS`` apart, so
- * that a click waits for one figure at most; the rest is skipped once the user has started
- * (clicked or typed, or input is waiting), or a permalink is opened. Says what it did in
- * ``<html data-charts-warm>``: "done", "partial" (the user started in between), "skipped"
- * or "failed" (a warm-up only).
+ * come that much sooner. The small figure as soon as plotly.js has run (it takes the
+ * first-use costs, which the user's first chart would pay otherwise), the other one a task
+ * of its own once the page has been quiet (``quietPeriod``), so that a click waits for the
+ * small one at most. Each is skipped once the user has started (clicked or typed, or input
+ * is waiting), or a permalink is opened. Says what it did in ``<html data-charts-warm>``:
+ * "done", "partial" (the user started in between), "skipped" or "failed" (a warm-up only).
  */
 async function warmCharts(Plotly) {
-  const stop = () => touched || state.busy || state.selection || userActing();
   let drawn = 0;
   for (const figure of WARM_FIGURES) {
-    // a pause between the figures, for a click on its way (a pointer on its way to a button)
-    if (drawn) await new Promise((resolve) => window.setTimeout(resolve, WARM_GAP_MS));
-    if (stop()) break;
+    if (drawn) await quietPeriod();
+    if (touched || state.busy || state.selection || inputPending()) break;
     const host = h("div", { class: "chart chart-warmup", "aria-hidden": "true", inert: true });
     document.body.append(host);
     try {
@@ -1401,14 +1392,17 @@ function init() {
   if (id) openPermalink(id, params.get("model"), (params.get("compare") ?? "").split(",").filter(Boolean));
   else {
     // the page's own <script> loads plotly.js (else it asks where it is); then, while
-    // the user has not started, the charts are warmed up
+    // the user has not started, plotly.js is warmed up
     for (const type of ["pointerdown", "keydown", "input"]) {
       document.addEventListener(type, () => (touched = true), { capture: true, once: true });
     }
     for (const type of ["pointermove", "wheel", "scroll"]) {
       document.addEventListener(type, () => (lastMoved = performance.now()), { capture: true, passive: true });
     }
-    loadPlotly().then(warmWhenQuiet, () => {});
+    loadPlotly().then(
+      (Plotly) => window.setTimeout(() => warmCharts(Plotly)), // a task of its own: input first
+      () => {},
+    );
   }
 }
 
