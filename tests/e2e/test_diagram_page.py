@@ -70,3 +70,42 @@ def _same_traces(page: Page, chart: str, figure: dict[str, Any]) -> None:
         layout["yaxis"]["title"]["text"],
         layout["separators"],
     ]
+
+
+# When the chosen candidate's panel first appears.
+PANEL_SEEN = """
+(() => {
+  new MutationObserver((_, observer) => {
+    if (document.getElementById("detail")) {
+      window.__panelAt = performance.now();
+      observer.disconnect();
+    }
+  }).observe(document, {subtree: true, childList: true});
+})();
+"""
+
+
+def test_the_chart_data_is_asked_before_the_results_are_drawn(page: Page) -> None:
+    """The best candidate's detail and both figures are asked as soon as the selection
+    answers, so that the server answers them while the page lays the results out, and the
+    results wait for the detail (a moment at most): the panel is drawn once, with it."""
+    page.add_init_script(PANEL_SEEN)
+    page.goto("/")
+    fill_worked_example(page)
+    _, body = post_selection(page)
+    model = body["candidates"][0]["model"]
+    timing = cast(
+        dict[str, list[float]],
+        page.evaluate(
+            """model => Object.fromEntries(performance.getEntriesByType("resource")
+                 .filter((e) => e.name.includes(`/candidates/${model}`))
+                 .map((e) => [new URL(e.name).pathname.split("/").pop(),
+                              [e.startTime, e.responseEnd]]))""",
+            model,
+        ),
+    )
+    assert set(timing) == {model, "cycle", "diagram"}
+    panel_at = page.evaluate("() => window.__panelAt")
+    assert all(started < panel_at for started, _ in timing.values()), (timing, panel_at)
+    assert timing[model][1] < panel_at, (timing, panel_at)  # the detail was in
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
