@@ -101,12 +101,12 @@ class Run:
     charts_ms: float
     reference_ms: float
     warm_up: str
-    """What the page's plotly warm-up did in the first load (skipped, unless it ran before
-    the user's first click)."""
+    """What the page's plotly warm-up did in the first load (``warmCharts`` in app.js: done,
+    partial where the user's click came between its figures, skipped, failed)."""
     paused_submit_to_charts_ms: float
     """The second load, its form left untouched for ``PAUSE_MS``: submit to both charts."""
     paused_warm_up: str
-    """What the page's plotly warm-up did in that load (done, skipped, failed)."""
+    """What the page's plotly warm-up did in that load (done, partial, skipped, failed)."""
 
 
 def chromium_path() -> str:
