@@ -87,8 +87,8 @@ PANEL_SEEN = """
 
 def test_the_chart_data_is_asked_before_the_results_are_drawn(page: Page) -> None:
     """The best candidate's detail and both figures are asked as soon as the selection
-    answers, so that the server answers them while the page lays the results out, and the
-    results wait for the detail (a moment at most): the panel is drawn once, with it."""
+    answers, so that the server answers them while the page lays the results out (the results
+    then wait a moment at most for the detail, to draw the panel once, with it)."""
     page.add_init_script(PANEL_SEEN)
     page.goto("/")
     fill_worked_example(page)
@@ -107,5 +107,6 @@ def test_the_chart_data_is_asked_before_the_results_are_drawn(page: Page) -> Non
     assert set(timing) == {model, "cycle", "diagram"}
     panel_at = page.evaluate("() => window.__panelAt")
     assert all(started < panel_at for started, _ in timing.values()), (timing, panel_at)
-    assert timing[model][1] < panel_at, (timing, panel_at)  # the detail was in
+    # Whether the detail came within the page's wait (DETAIL_WAIT_MS) is the machine's
+    # speed, not the page's order: not asserted (no timing in tests).
     expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
