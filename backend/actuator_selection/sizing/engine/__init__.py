@@ -5,7 +5,9 @@ for one actuator and for 64,000.
   by its operand's name (:data:`CATALOGUE_OPERANDS`, built in one function);
 - :mod:`~actuator_selection.sizing.engine.cases`: the load cases as rows;
 - :mod:`~actuator_selection.sizing.engine.block`: one block of cells: torques, heating,
-  the operands (built by name in one place) and each rule's status codes;
+  the operands (built by name in one place);
+- :mod:`~actuator_selection.sizing.engine.codes`: the rules' status codes for a block,
+  every rule at once;
 - :mod:`~actuator_selection.sizing.engine.evaluation`: blocks into the whole evaluation, the
   ranking, and the views: :func:`select` (1 × N), :func:`evaluate` (1 × 1);
 - :mod:`~actuator_selection.sizing.engine.detail`: a candidate's checks in words, from the
@@ -23,12 +25,13 @@ from actuator_selection.sizing.engine.arrays import (
     FloatArray,
     IndexArray,
 )
-from actuator_selection.sizing.engine.block import ARRAY_OPS, CHECK_NAMES
+from actuator_selection.sizing.engine.block import CHECK_NAMES
 from actuator_selection.sizing.engine.catalogue import (
     CATALOGUE_OPERANDS,
     CatalogueArrays,
     catalogue_arrays,
 )
+from actuator_selection.sizing.engine.codes import ARRAY_OPS
 from actuator_selection.sizing.engine.columns import (
     CheckTable,
     RankedTable,

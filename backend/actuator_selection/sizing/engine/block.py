@@ -3,13 +3,14 @@
 The cycle's torques on every actuator (:meth:`~actuator_selection.sizing.motion.Profile.
 torques` on arrays: T = c + (J_A + J)·α piece by piece, ∫T² dt summed in order), the
 winding's heating over the repeating cycle, the operands by name (:func:`operands_of`),
-and each rule's status codes (:func:`status_codes`): no data where a requirement is
-missing, else pass, fail or warn, and the overload that ranks what does not fit.
+and the rules' status codes (:func:`~actuator_selection.sizing.engine.codes.status_codes`,
+every rule at once): no data where a requirement is missing, else pass, fail or warn,
+and the overload that ranks what does not fit.
 
 The rules are not written here: those of :mod:`actuator_selection.sizing.checks` compute
 their values and limits on the arrays of :class:`~actuator_selection.sizing.checks.Operands`
-with numpy's operations (:data:`ARRAY_OPS`); this module turns each rule's comparison
-into codes. Every expression performs the same IEEE operations in the same order as the
+with numpy's operations (:data:`~actuator_selection.sizing.engine.codes.ARRAY_OPS`).
+Every expression performs the same IEEE operations in the same order as the
 plain-float flowchart that the tests keep as the oracle (``tests/oracle``; numpy adds no
 fused multiply-add, squares are ``x * x``), so both agree bit for bit, which the tests
 check with ``==``.
@@ -20,18 +21,14 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence, Sized
 from dataclasses import dataclass
-from itertools import repeat
 from typing import Any
 
 import numpy as np
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.sizing.checks import RULES, Operands, Ops, Rule
+from actuator_selection.sizing.checks import RULES, Operands, Rule
 from actuator_selection.sizing.checks.rules.gear import AVERAGE_TORQUE_RULES
 from actuator_selection.sizing.engine.arrays import (
-    FAIL,
-    NO_DATA,
-    NOT_APPLICABLE,
     PASS,
     WARN,
     BoolArray,
@@ -41,25 +38,12 @@ from actuator_selection.sizing.engine.arrays import (
 )
 from actuator_selection.sizing.engine.cases import Cases, case_operands
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays
+from actuator_selection.sizing.engine.codes import RuleArrays, RuleDetail, status_codes
 from actuator_selection.sizing.motion import PieceArrays, heating_gain, mean_abs_speed_rpm
 
 CHECK_NAMES = tuple(rule.name for rule in RULES)
 """The chapter's checks in flowchart order (:data:`~actuator_selection.sizing.checks.RULES`)."""
 
-
-def _python_pow(x: Any, exponent: float) -> Any:
-    """``math.pow`` element by element: bit for bit what Python's floats compute
-    (numpy's power differs in the last bit for some inputs). The rules raise only case
-    quantities to a power, so the arrays are one column of cases."""
-    base = np.asarray(x, dtype=np.float64)
-    flat = base.ravel().tolist()
-    powers = np.fromiter(map(math.pow, flat, repeat(exponent)), np.float64, len(flat))
-    return powers.reshape(base.shape)
-
-
-ARRAY_OPS = Ops(where=np.where, isnan=np.isnan, not_=np.logical_not, sqrt=np.sqrt, pow=_python_pow)
-"""The rules' operations on numpy arrays (one cell's words use
-:data:`~actuator_selection.sizing.checks.FLOAT_OPS`)."""
 
 _KEPT_PIECES = 16
 """Cycles of up to this many pieces keep each piece's mean T² between the heating check's
@@ -71,217 +55,35 @@ and memory stays bounded whatever the number of cases."""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
-class _RuleArrays:
-    """What :meth:`~actuator_selection.sizing.checks.Rule.check` reports, for a block: each
-    array broadcasts to the block's shape (cases × actuators)."""
-
-    values: FloatArray
-    """The value checked; NaN where unknown (the check reports None)."""
-    limits: FloatArray
-    """The limit; NaN where there is none (no data, or beyond a zone's last speed)."""
-    approximate: BoolArray | np.bool_
-    first_missing: CodeArray
-    """Index into the rule's requirements of the first one missing; −1 where none is."""
-
-
-@dataclass(frozen=True, slots=True, eq=False)
 class Block:
+    """The flowchart's results for a block of cases × actuators."""
+
     accel_torque: FloatArray
     constant_torque: FloatArray
     decel_torque: FloatArray
     rms_torque: FloatArray
-    statuses: tuple[CodeArray, ...]
+    statuses: CodeArray
+    """The status codes, rules × cases × actuators (one rule's: ``statuses[k]``)."""
     overload: FloatArray
     """The largest :func:`~actuator_selection.sizing.checks.overload` of the checks."""
-    details: tuple[_RuleArrays, ...] | None = None
+    checks: RuleArrays | None = None
+    """With ``detail``: each rule's value, limit, approximation and missing requirement,
+    rules × cases × actuators."""
     operands: Operands | None = None
     """With ``detail``: what the rules computed from (for the words of their checks)."""
 
+    @property
+    def details(self) -> tuple[RuleDetail, ...] | None:
+        """:attr:`checks` rule by rule, or None without ``detail``."""
+        return None if self.checks is None else tuple(self.checks)
+
     def verdicts(self) -> CodeArray:
-        worst = np.full(self.accel_torque.shape, PASS)
-        for codes in self.statuses:
-            np.maximum(worst, codes, out=worst)
-        # NOT_APPLICABLE/PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable.
+        """The verdict codes, cases × actuators: the largest status code of the checks
+        (NOT_APPLICABLE/PASS/WARN → suitable, NO_DATA → unconfirmed, FAIL → unsuitable)."""
+        worst: CodeArray = np.maximum.reduce(self.statuses, axis=0, initial=PASS)
         np.subtract(worst, WARN, out=worst)
         np.maximum(worst, 0, out=worst)
         return worst
-
-
-def _lacking(
-    rule: Rule, q: Operands, cat: CatalogueArrays
-) -> tuple[CodeArray, BoolArray, bool, bool]:
-    """Per actuator, the index of the first of ``rule``'s requirements the catalogue does
-    not meet (−1: none), and whether any requirement after the first is unmet; whether
-    the rule lacks data for every actuator (and cannot fail on its
-    :attr:`~actuator_selection.sizing.checks.Rule.lower_bound`): then its status is
-    ``no_data`` in every cell, decided without comparing (a one-model selection's checks
-    are often so); and whether it lacks data for none: then nothing is masked.
-
-    A requirement names catalogue values only (:class:`~actuator_selection.sizing.checks.
-    Requirement`), so this is a fact about the actuators, computed once per catalogue
-    and rule: six rules' requirements were a fifth of a whole-catalogue selection's
-    engine."""
-    found = cat.lacking.get(rule)
-    if found is not None:
-        return found
-    n = cat.inertia.shape
-    first_missing: CodeArray = np.full(n, -1, dtype=np.int8)
-    others_missing: BoolArray = np.zeros(n, dtype=np.bool_)
-    for k, need in enumerate(rule.requires):
-        lacking = need.missing(q, ARRAY_OPS)
-        assert np.shape(lacking) == n, f"{rule.name}: a requirement names a case's value"
-        first_missing = np.where((first_missing < 0) & lacking, np.int8(k), first_missing)
-        if k:
-            others_missing = others_missing | lacking
-    everywhere = bool((first_missing >= 0).all()) and (
-        rule.lower_bound is None or not bool(((first_missing == 0) & ~others_missing).any())
-    )
-    nowhere = not bool((first_missing >= 0).any())
-    found = cat.lacking[rule] = (first_missing, others_missing, everywhere, nowhere)
-    return found
-
-
-def _status_codes(
-    rule: Rule,
-    q: Operands,
-    cat: CatalogueArrays,
-    *,
-    detail: bool = False,
-    overload: bool = True,
-) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
-    """The codes of one rule for the block (:meth:`~actuator_selection.sizing.checks.Rule.check`
-    on arrays): no data where a requirement is missing, else pass, fail or warn; the
-    overload (:func:`~actuator_selection.sizing.checks.overload`); with ``detail``, also the
-    value, limit, approximation and missing requirement it reports. Each array is of the
-    block's shape or broadcasts to it (a column of cases, a row of actuators, a
-    scalar): its readers broadcast, and a whole-catalogue selection spared ~25
-    ``np.broadcast_to`` calls.
-
-    Called with numpy's floating-point errors ignored: NaN where data is missing is
-    masked here. Without ``overload``, the overload is not computed (:data:`_NO_OVERLOAD`).
-    """
-    xp = ARRAY_OPS
-    codes, over, arrays = _decided_codes(rule, q, cat, detail=detail, overload=overload)
-    if rule.applies is None:
-        return codes, over, arrays
-    # Where the premise does not hold: not applicable, whatever the data (Rule.check).
-    applies = rule.applies(q, xp)
-    codes = np.where(applies, codes, NOT_APPLICABLE)
-    if overload:
-        over = np.where(applies, over, 0.0)
-    if arrays is None:
-        return codes, over, None
-    return (
-        codes,
-        over,
-        _RuleArrays(
-            values=np.where(applies, arrays.values, math.nan),
-            limits=np.where(applies, arrays.limits, math.nan),
-            approximate=arrays.approximate & applies,
-            first_missing=np.where(applies, arrays.first_missing, np.int8(-1)),
-        ),
-    )
-
-
-def _decided_codes(
-    rule: Rule,
-    q: Operands,
-    cat: CatalogueArrays,
-    *,
-    detail: bool,
-    overload: bool,
-) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
-    """:func:`_status_codes` before :attr:`~actuator_selection.sizing.checks.Rule.applies`."""
-    xp = ARRAY_OPS
-    first_missing, others_missing, everywhere, nowhere = _lacking(rule, q, cat)  # per actuator
-    if everywhere:  # no data in every cell: only the value, which the check reports
-        codes = np.full(first_missing.shape, NO_DATA)
-        none = np.zeros(first_missing.shape)
-        if not detail:
-            return codes, none, None
-        arrays = _RuleArrays(
-            values=rule.value(q, xp),
-            limits=np.full(first_missing.shape, math.nan),
-            approximate=np.False_,
-            first_missing=first_missing,
-        )
-        return codes, none, arrays
-    if nowhere:  # every actuator has the data: nothing to mask, no floor to apply
-        return _complete_codes(rule, q, first_missing, detail=detail, overload=overload)
-    value, limit = rule.value(q, xp), rule.limit(q, xp)
-    # numpy's True, not Python's: ~True is −2, which would make the masks integers.
-    within = np.True_ if rule.within is None else rule.within(q, xp)
-    ok = value <= limit if rule.within is None else (value <= limit) & within
-    binding = np.True_ if rule.binding is None else rule.binding(q, xp)
-    missing = first_missing >= 0
-    if rule.lower_bound is not None:  # Rule.check's _floor_failure, on arrays
-        floor = rule.lower_bound(q, xp)
-        floor_fails = (first_missing == 0) & ~others_missing & ((floor > limit) | ~within) & binding
-        value = np.where(floor_fails, floor, value)
-        missing = missing & ~floor_fails
-    fail = FAIL if rule.binding is None else np.where(binding, FAIL, WARN)
-    codes = np.where(missing, NO_DATA, np.where(ok, PASS, fail))  # cases × actuators
-    if rule.lower_bound is not None:
-        codes = np.where(floor_fails, FAIL, codes)
-    over = _overload(codes, value, limit) if overload else _NO_OVERLOAD
-    if not detail:
-        return codes, over, None
-    approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp) & ~missing
-    return (
-        codes,
-        over,
-        _RuleArrays(
-            values=value,
-            limits=np.where(missing, math.nan, limit),
-            approximate=approximate,
-            first_missing=first_missing,
-        ),
-    )
-
-
-def _complete_codes(
-    rule: Rule, q: Operands, first_missing: CodeArray, *, detail: bool, overload: bool
-) -> tuple[CodeArray, FloatArray, _RuleArrays | None]:
-    """:func:`_status_codes` where no actuator lacks the rule's data (the usual case): the
-    same codes, values and limits with no mask (``missing`` is False everywhere, so the
-    lower bound, which applies only where J_A is missing, changes nothing)."""
-    xp = ARRAY_OPS
-    value, limit = rule.value(q, xp), rule.limit(q, xp)
-    within = np.True_ if rule.within is None else rule.within(q, xp)
-    ok = value <= limit if rule.within is None else (value <= limit) & within
-    fail = FAIL if rule.binding is None else np.where(rule.binding(q, xp), FAIL, WARN)
-    # Of the block's shape, as the masked path's codes are (first_missing is a row).
-    codes = np.where(ok & (first_missing < 0), PASS, fail)
-    over = _overload(codes, value, limit) if overload else _NO_OVERLOAD
-    if not detail:
-        return codes, over, None
-    approximate = np.False_ if rule.approximate is None else rule.approximate(q, xp)
-    return (
-        codes,
-        over,
-        _RuleArrays(
-            values=value,
-            limits=limit,
-            approximate=approximate,
-            first_missing=first_missing,
-        ),
-    )
-
-
-_NO_OVERLOAD: FloatArray = np.zeros(())
-"""The overload where it is not asked for (:func:`evaluate_block`'s ``overload``): 0,
-broadcasting to any cells."""
-
-
-def _overload(codes: CodeArray, value: FloatArray, limit: FloatArray) -> FloatArray:
-    """:func:`~actuator_selection.sizing.checks.overload` where the codes fail, else 0."""
-    failing = codes == FAIL
-    if not failing.any():  # nothing fails: no overload (most cells of a selection)
-        return np.zeros(np.shape(codes))
-    no_limit = np.isnan(limit) | (limit <= 0) | np.isnan(value)
-    over = np.where(no_limit, math.inf, np.maximum(value / limit, 1.0))
-    out: FloatArray = np.where(failing, over, 0.0)
-    return out
 
 
 class _HeatingGains:
@@ -442,7 +244,7 @@ def _thermal_torque(
         cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), energy / cycle_s
     )
     peak = heat = start
-    on_current = bool(np.any(~np.isnan(cat.heating_slope)))
+    on_current = not np.isnan(cat.heating_slope).all()
     for k in range(p.duration.shape[1]):
         if squares is None:
             square = _piece_torques(cat, p, k)[1]
@@ -498,7 +300,7 @@ def evaluate_block(
     energy = np.zeros(shape)
     heat = np.zeros(shape)
     # The heating counts the winding current where the catalogue allows (_heating_square).
-    on_current = bool(np.any(~np.isnan(cat.heating_slope)))
+    on_current = not np.isnan(cat.heating_slope).all()
     heat_energy = np.zeros(shape) if on_current else energy
     # Each piece's mean T², kept for the second pass where the cycle has few pieces (else
     # recomputed there, so that memory stays bounded).
@@ -509,6 +311,13 @@ def evaluate_block(
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
     cube, weight = np.zeros(shape), np.zeros(cases.size)
+    # Which extremes each piece can change (a piece brakes, or not, in every case of a
+    # trapezoid): an update where no case takes part changes nothing. Per piece: whether
+    # any case brakes, any drives, any runs steadily (three calls for all the pieces).
+    brakes: list[bool] = np.asarray(p.braking.any(axis=0)).tolist()
+    drives: list[bool] = np.asarray(~p.braking.all(axis=0)).tolist()
+    runs: list[bool] = np.asarray(p.constant_speed.any(axis=0)).tolist()
+    changes = list(zip(brakes, drives, runs, strict=True))
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
         speeds = _piece_speeds(p)  # each piece's mean |n|, for the heating
         for k in range(p.duration.shape[1]):
@@ -525,9 +334,7 @@ def evaluate_block(
                 squares.append(square)
             braking = p.braking[:, k, col]
             steady = p.constant_speed[:, k, col]
-            # Which extremes the piece can change (a piece brakes, or not, in every case
-            # of a trapezoid): an update where no case takes part changes nothing.
-            brakes, drives, runs = braking.any(), not braking.all(), steady.any()
+            piece_brakes, piece_drives, piece_runs = changes[k]
             if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
                 w = (np.abs(p.start_rpm[:, k]) + np.abs(p.end_rpm[:, k])) / 2.0 * p.duration[:, k]
                 largest = np.abs(torques[0])
@@ -537,15 +344,15 @@ def evaluate_block(
                 weight = weight + w
             for torque in torques:
                 magnitude = np.abs(torque)
-                if brakes:
+                if piece_brakes:
                     take = braking & (magnitude > decel_abs)
                     decel = np.where(take, torque, decel)
                     decel_abs = np.where(take, magnitude, decel_abs)
-                if drives:
+                if piece_drives:
                     take = ~braking & (magnitude > accel_abs)
                     accel = np.where(take, torque, accel)
                     accel_abs = np.where(take, magnitude, accel_abs)
-                if runs:
+                if piece_runs:
                     take = steady & (magnitude > constant_abs)
                     constant = np.where(take, torque, constant)
                     constant_abs = np.where(take, magnitude, constant_abs)
@@ -582,19 +389,17 @@ def evaluate_block(
         },
     )
     with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes
-        results = [_status_codes(r, q, cat, detail=detail, overload=overload) for r in rules]
-    details = [d for _, _, d in results if d is not None]
-    worst = np.zeros(shape) if overload else _NO_OVERLOAD
-    for _, over, _ in results if overload else ():
-        np.maximum(worst, over, out=worst)
+        statuses, worst, checks = status_codes(
+            rules, q, cat, shape, detail=detail, overload=overload
+        )
     return Block(
         accel_torque=accel_torque,
         constant_torque=constant_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
-        statuses=tuple(codes for codes, _, _ in results),
+        statuses=statuses,
         overload=worst,
-        details=tuple(details) if detail else None,
+        checks=checks,
         operands=q if detail else None,
     )
 

@@ -68,6 +68,28 @@ CATALOGUE_OPERANDS: Final = (*(name for name, _ in PUBLISHED_OPERANDS), *DERIVED
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class Lacking:
+    """Where the catalogue misses the requirements of a set of rules (:func:`~actuator_selection.
+    sizing.engine.codes.lacking`): a fact about the actuators, the same for every case."""
+
+    first_missing: CodeArray
+    """Per rule × 1 × actuator, the index of the first requirement the catalogue does not
+    meet; −1: none."""
+    others_missing: BoolArray
+    """Per rule × 1 × actuator, whether any requirement after the first is unmet."""
+    everywhere: tuple[bool, ...]
+    """Per rule, whether it lacks data for every actuator and cannot fail on its
+    :attr:`~actuator_selection.sizing.checks.Rule.lower_bound`: its status is ``no_data``
+    in every cell where it applies, its limit not computed (a one-model selection's
+    checks are often so)."""
+    somewhere: tuple[bool, ...]
+    """Per rule, whether it lacks data for any actuator: else nothing is masked."""
+    floors: tuple[int, ...]
+    """The rules that may fail on their lower bound: where only their first requirement
+    (J_A) is missing."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class CatalogueArrays:
     """The actuators as columns; NaN where the catalogue gives no value."""
 
@@ -85,11 +107,9 @@ class CatalogueArrays:
     columns: dict[str, FloatArray | BoolArray] = dataclasses_field(default_factory=dict)
     """Every column as read from the actuators (the operands and the fields they are
     ranked and heated by), what the next catalogue's arrays copy from."""
-    lacking: dict[Rule, tuple[CodeArray, BoolArray, bool, bool]] = dataclasses_field(
-        default_factory=dict
-    )
-    """Per rule, where the catalogue misses its requirements (``block.lacking``), filled
-    when the rule is first evaluated against these actuators."""
+    lacking: dict[tuple[Rule, ...], Lacking] = dataclasses_field(default_factory=dict)
+    """Per rule set, where the catalogue misses its requirements (``codes.lacking``),
+    filled when the rules are first evaluated against these actuators."""
 
     @property
     def inertia(self) -> FloatArray:

@@ -253,12 +253,13 @@ def _table_rows(ranked: RankedBlock) -> tuple[Any, ...]:
         cells(block.decel_torque),
         cells(block.rms_torque),
     ]
-    if block.details is not None:
+    checks = block.checks
+    if checks is not None:  # rules × cells
         out += [
-            np.stack([cells(c) for c in block.statuses]),
-            np.stack([cells(d.values) for d in block.details]),
-            np.stack([cells(d.limits) for d in block.details]),
-            np.stack([cells(d.approximate) for d in block.details]),
-            np.stack([cells(d.first_missing) for d in block.details]),
+            block.statuses[:, rows, cols],
+            checks.values[:, rows, cols],
+            checks.limits[:, rows, cols],
+            checks.approximate[:, rows, cols],
+            checks.first_missing[:, rows, cols],
         ]
     return tuple(out)

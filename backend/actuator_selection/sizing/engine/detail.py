@@ -42,30 +42,31 @@ def detail_cells(
     limits of the arrays and the operands of the cell, as floats. Equal to
     :func:`~actuator_selection.sizing.selection.evaluate` of the cell (the tests compare
     them with ``==``); the checks are built, and their words written, when first read."""
-    assert block.details is not None
+    checks = block.checks
+    assert checks is not None
     assert block.operands is not None
     shape = block.accel_torque.shape
 
     def cells(array: Any) -> list[Any]:
         return _picked(array, shape, rows, columns)
 
-    codes = [np.broadcast_to(c, shape)[rows, columns] for c in block.statuses]
+    codes = block.statuses[:, rows, columns]  # rules × cells
     not_passing: list[list[int]] = [[] for _ in range(rows.size)]
-    failing, cells_failing = np.nonzero(np.array(codes).reshape(len(codes), rows.size) > PASS)
+    failing, cells_failing = np.nonzero(codes > PASS)
     for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
         not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
     decided = _Decided(
         rules,
-        [
-            (
-                rule_codes.tolist(),
-                cells(d.values),
-                cells(d.limits),
-                cells(d.approximate),
-                cells(d.first_missing),
+        list(
+            zip(
+                codes.tolist(),
+                checks.values[:, rows, columns].tolist(),
+                checks.limits[:, rows, columns].tolist(),
+                checks.approximate[:, rows, columns].tolist(),
+                checks.first_missing[:, rows, columns].tolist(),
+                strict=True,
             )
-            for rule_codes, d in zip(codes, block.details, strict=True)
-        ],
+        ),
         not_passing,
         block.operands,
         cells,

@@ -29,6 +29,7 @@ import itertools
 from collections.abc import Collection, Iterator, Sequence
 from dataclasses import dataclass
 from dataclasses import field as dataclasses_field
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -163,17 +164,17 @@ def evaluate_batch(
     for start, stop in blocks(actuators, apps):
         rows = cases.rows(start, stop)
         block = evaluate_block(cat, rows, limits_of_zones[start:stop], rules, detail=True)
-        assert block.details is not None
+        reported = block.checks
+        assert reported is not None
         accel[start:stop] = block.accel_torque
         constant[start:stop] = block.constant_torque
         decel[start:stop] = block.decel_torque
         rms[start:stop] = block.rms_torque
-        for k, (codes, detail) in enumerate(zip(block.statuses, block.details, strict=True)):
-            statuses[start:stop, :, k] = codes
-            values[start:stop, :, k] = detail.values
-            limits[start:stop, :, k] = detail.limits
-            approximate[start:stop, :, k] = detail.approximate
-            first_missing[start:stop, :, k] = detail.first_missing
+        _put_checks(statuses[start:stop], block.statuses)
+        _put_checks(values[start:stop], reported.values)
+        _put_checks(limits[start:stop], reported.limits)
+        _put_checks(approximate[start:stop], reported.approximate)
+        _put_checks(first_missing[start:stop], reported.first_missing)
         verdicts[start:stop] = block.verdicts()
         worst_overload[start:stop] = block.overload
     return BatchEvaluation(
@@ -195,6 +196,14 @@ def evaluate_batch(
         check_names=tuple(rule.name for rule in rules),
         rank_position=cat.rank_position,
     )
+
+
+def _put_checks(cells: npt.NDArray[Any], rules: npt.NDArray[Any]) -> None:
+    """A block's rules × cases × actuators into ``cells``, cases × actuators × checks (a
+    contiguous part of the evaluation's array), as one copy of a transposed table."""
+    count = rules.shape[0]
+    if count:
+        cells.reshape(-1, count)[...] = rules.reshape(count, -1).T
 
 
 def _allowed_columns(
