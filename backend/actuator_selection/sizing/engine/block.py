@@ -121,6 +121,10 @@ class _HeatingGains:
         self.time_constant: FloatArray = np.where(np.isnan(published), case_tau, published)
         self.assumed: BoolArray = np.isnan(published) & cases.thermal_assumed[:, np.newaxis]
         self._shape = shape
+        # Each piece's gains picked once: the heating's two passes and the speed's read them.
+        self._piece = [
+            self._pick(self._pieces[:, :, k]) for k in range(cases.pieces.duration.shape[1])
+        ]
 
     def _pick(self, table: FloatArray) -> FloatArray:
         """Cases × actuators from a (τ_th columns × cases) table; where no actuator
@@ -132,7 +136,7 @@ class _HeatingGains:
 
     def piece(self, k: int) -> FloatArray:
         """The gains of piece ``k``, cases × actuators."""
-        return self._pick(self._pieces[:, :, k])
+        return self._piece[k]
 
     def cycle(self) -> FloatArray:
         """The gains of the whole cycle, cases × actuators."""
@@ -201,18 +205,11 @@ def _piece_torques(
 
 def _piece_speeds(p: PieceArrays) -> list[FloatArray]:
     """Each piece's mean |n| (a column of cases), computed once per block for the
-    heating (:func:`_heating_square`) and the heating's speed (:func:`_thermal_speed`)."""
-    col = np.newaxis
-    return [
-        mean_abs_speed_rpm(
-            p.duration[:, k, col],
-            p.start_rpm[:, k, col],
-            p.end_rpm[:, k, col],
-            p.accel_start[:, k, col],
-            p.accel_end[:, k, col],
-        )
-        for k in range(p.duration.shape[1])
-    ]
+    heating (:func:`_heating_square`) and the heating's speed (:func:`_thermal_speed`):
+    for every piece at once (the same operations on each element as piece by piece, in
+    a sixth of the numpy calls), then a column per piece."""
+    speed = mean_abs_speed_rpm(p.duration, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end)
+    return [speed[:, k, np.newaxis] for k in range(p.duration.shape[1])]
 
 
 def _heating_square(cat: CatalogueArrays, speed: FloatArray, square: FloatArray) -> FloatArray:

@@ -250,21 +250,12 @@ def _summed(
 def figures_of(profiles: Sequence[Profile]) -> CycleFigures:
     """The :class:`CycleFigures` of cycles whose profiles are known: the same numbers
     :func:`cycle_figures` gives (a profile's figures are its row of them), not computed
-    again."""
-
-    def column(name: str) -> FloatArray:
-        return np.array([getattr(p, name) for p in profiles], dtype=np.float64)
-
-    return CycleFigures(
-        cycle_s=column("cycle_s"),
-        mean_speed_rpm=column("mean_speed_rpm"),
-        duty_cycle_percent=column("duty_cycle_percent"),
-        peak_speed_rpm=column("peak_speed_rpm"),
-        accel_floor_nm=column("accel_floor_nm"),
-        decel_floor_nm=column("decel_floor_nm"),
-        rms_floor_nm=column("rms_floor_nm"),
-        braking_s=column("braking_s"),
-    )
+    again. One table, its columns contiguous: an array per figure cost eight numpy calls,
+    a tenth of a one-model selection's cases."""
+    table = np.array(
+        [[getattr(p, name) for name in _FIGURE_NAMES] for p in profiles], dtype=np.float64
+    ).reshape(len(profiles), len(_FIGURE_NAMES))
+    return CycleFigures(*np.ascontiguousarray(table.T))
 
 
 def profile_of(motion: Motion) -> Profile:
