@@ -140,11 +140,15 @@ GUIDANCE_WIDENING = 10.0
 """The guidance searches the variable's default range widened this much both ways."""
 
 
-def guidance(body: SelectionRequest, actuators: Sequence[Actuator]) -> list[dict[str, Any]]:
+def guidance(
+    body: SelectionRequest, actuators: Sequence[Actuator], catalogue: CatalogueSnapshot
+) -> list[dict[str, Any]]:
     """When nothing fits: for the load's own lead or diameter, the actuators that fit at
     some value of it (best utilisation first, at most :data:`GUIDED`), each with the
     interval that holds its best value ("a lead of 190–1000 mm makes CHA-32A-50 fit").
-    The range is the variable's default range widened by :data:`GUIDANCE_WIDENING`."""
+    The range is the variable's default range widened by :data:`GUIDANCE_WIDENING`. The
+    engine reads ``catalogue``'s arrays of ``actuators`` (built once per version)."""
+    arrays = catalogue.arrays(tuple(actuators))
     fields = type(body.load).model_fields
     found: list[dict[str, Any]] = []
     for variable, (low, high) in DEFAULT_RANGE.items():
@@ -157,7 +161,9 @@ def guidance(body: SelectionRequest, actuators: Sequence[Actuator]) -> list[dict
             max=min(high * GUIDANCE_WIDENING, MAX_VALUE),
         )
         lower, upper = spec.bounds
-        ranked = ranked_ratio_study(actuators, varied(body, spec), lower, upper, top=GUIDED)
+        ranked = ranked_ratio_study(
+            actuators, varied(body, spec), lower, upper, top=GUIDED, arrays=arrays
+        )
         results = [r for r in ranked.results if r.best is not None]
         for result in results:
             assert result.best is not None

@@ -118,10 +118,6 @@ class _Ranked:
         """The torques of the candidates ranked ``start`` to ``stop``, None for NaN."""
         return list(zip(*(or_none(t[start:stop]) for t in self.torques), strict=True))
 
-    def check_dicts(self) -> list[list[JSON]]:
-        """Every candidate's checks as dicts (:func:`presenter.binding` asks them)."""
-        return self.checks.dicts(0, len(self.actuators))
-
     def rest(self, start: int) -> bytes:
         """:func:`presenter.ranking_rest` from place ``start`` on, its names read from
         :attr:`columns` in the ranking's order at once."""
@@ -216,7 +212,7 @@ def _candidates(
         total=total,
         counts=presenter.verdict_counts(ranked.verdict_codes),
         rest=ranked.rest(shown) if shown < total else None,
-        binding=presenter.binding(ranked.actuators, ranked.verdicts, ranked.check_dicts, app),
+        binding=presenter.binding(ranked.actuators, ranked.verdicts, ranked.checks, app),
     )
 
 
@@ -238,7 +234,7 @@ def size_selection(
     answered = _candidates(actuators, app, catalogue, groups, top)
     binding = answered.binding
     if binding is not None and guide:  # nothing fits: where the load's own lead or
-        binding["transmissions"] = guidance(body, actuators)  # diameter would
+        binding["transmissions"] = guidance(body, actuators, catalogue)  # diameter would
     # The selection request's fields alone (a batch case's ``case_id`` is the batch's).
     request = body.model_dump(mode="json", include=set(SelectionRequest.model_fields))
     id_ = str(uuid.uuid4())
