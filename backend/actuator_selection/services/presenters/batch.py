@@ -50,6 +50,22 @@ def check_body(
     }
 
 
+def _figures(candidate: Candidate) -> dict[str, Any]:
+    """A candidate's actuator, verdict and torques, as every form of it begins."""
+    t = candidate.torques
+    a = candidate.actuator
+    return {
+        "model": a.model,
+        "family": a.family,
+        "gear_ratio": float(a.gear_ratio),
+        "verdict": VALUE_OF[candidate.verdict],
+        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
+        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
+        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
+        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
+    }
+
+
 def candidate_body(
     candidate: Candidate,
     *,
@@ -61,23 +77,12 @@ def candidate_body(
     """A candidate in full (``BatchCandidateOut``; the detail's figures, reasons, checks
     and controllers), its words by ``localize``; ``checks`` and ``controllers`` only when
     given; ``controllers_summary`` from :func:`controllers_summary`."""
-    t = candidate.torques
-    a = candidate.actuator
     # The checks first: a batch candidate's reasons then come from the checks built, and
     # their words from the checks' (a reason is a check's message, worded once).
     worded: dict[int, str] = {}
     checks = [check_body(c, localize, worded) for c in candidate.checks] if include_checks else None
-    body: dict[str, Any] = {
-        "model": a.model,
-        "family": a.family,
-        "gear_ratio": float(a.gear_ratio),
-        "verdict": VALUE_OF[candidate.verdict],
-        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
-        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
-        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
-        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
-        "reasons": [worded.get(id(r)) or localize(r) for r in candidate.reasons],
-    }
+    body = _figures(candidate)
+    body["reasons"] = [worded.get(id(r)) or localize(r) for r in candidate.reasons]
     if checks is not None:
         body["checks"] = checks
     if controllers is not None:
@@ -140,19 +145,8 @@ def batch_candidate_body(
         )
         body["reason_checks"] = candidate.open_checks
         return body
-    t = candidate.torques
-    a = candidate.actuator
-    body = {
-        "model": a.model,
-        "family": a.family,
-        "gear_ratio": float(a.gear_ratio),
-        "verdict": VALUE_OF[candidate.verdict],
-        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
-        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
-        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
-        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
-        "reason_checks": candidate.open_checks,
-    }
+    body = _figures(candidate)
+    body["reason_checks"] = candidate.open_checks
     if include_checks:
         with codes_only():  # the checks' messages as codes and params, no English written
             body["checks"] = [coded_check_body(*named) for named in candidate.briefs()]
