@@ -254,12 +254,16 @@ def _table_rows(ranked: RankedBlock) -> tuple[Any, ...]:
         cells(block.rms_torque),
     ]
     checks = block.checks
-    if checks is not None:  # rules × cells
+    if checks is not None:  # rules × cells, in C order: numpy lays an index after a
+        # slice out cells-first, and the answer's writer (orjson) takes C order only
         out += [
-            block.statuses[:, rows, cols],
-            checks.values[:, rows, cols],
-            checks.limits[:, rows, cols],
-            checks.approximate[:, rows, cols],
-            checks.first_missing[:, rows, cols],
+            np.ascontiguousarray(a[:, rows, cols])
+            for a in (
+                block.statuses,
+                checks.values,
+                checks.limits,
+                checks.approximate,
+                checks.first_missing,
+            )
         ]
     return tuple(out)
