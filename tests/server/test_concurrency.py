@@ -157,6 +157,7 @@ def test_selections_record_the_catalogue_version_they_were_computed_with(
     torques = [float(row["max_torque_nm"]), 97.0]
     expected = {first: torques[0]}
     done = threading.Event()
+    changed = threading.Event()  # a few imports have committed
     body = {**WORKED_EXAMPLE, "models": [model]}
 
     def admin() -> None:
@@ -172,11 +173,15 @@ def test_selections_record_the_catalogue_version_they_were_computed_with(
                 )
                 assert imported.status_code == 200, imported.text
                 expected[first + k] = torques[k % 2]
+                if k == 3:
+                    changed.set()
 
     def size() -> list[dict[str, Any]]:
-        out = []
+        # Size until the catalogue has changed under the clients, however fast
+        # a selection is against an import (bounded).
+        out: list[dict[str, Any]] = []
         with server.client() as client:
-            for _ in range(30):
+            while len(out) < 30 or (not changed.is_set() and len(out) < 5000):
                 response = client.post("/api/v1/selections", json=body)
                 assert response.status_code == 201, response.text
                 out.append(response.json())
