@@ -72,6 +72,7 @@ pytest: install
 bench: install
 	$(BIN)/python -m bench.selection
 	$(BIN)/python -m bench.fixed_cost
+	$(BIN)/python -m bench.instructions
 	$(BIN)/python -m bench.batch
 	$(BIN)/python -m bench.ratio
 	$(BIN)/python -m bench.catalogue
