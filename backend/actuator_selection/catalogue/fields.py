@@ -30,8 +30,8 @@ from enum import Enum
 from typing import Final
 
 from actuator_selection.catalogue.csvio import Column, NamePattern, Rule, one_of
+from actuator_selection.catalogue.parts import BearingType
 from actuator_selection.i18n.messages import N_, Text
-from actuator_selection.sizing.bearing import BearingType
 
 MODEL_NAME = NamePattern(
     re.compile(r"[A-Za-z0-9]+(?:[-._+][A-Za-z0-9]+)*"),

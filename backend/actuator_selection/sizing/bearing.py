@@ -15,10 +15,11 @@ easymanua.ls/harmonic-drive/fha-series/manual?p=25 and p=26):
    or vibration, 3 for precise positioning (formula (10));
 3. life L_10 = 10⁶/(60·n_av)·(C/(f_w·P_c))^B [h] (formula (7)), P_c = X·(F_r + 2M/d_p) +
    Y·F_a with X, Y = 1, 0.45 where F_a/(F_r + 2M/d_p) ≤ 1.5, else 0.67, 0.67 (formula (5),
-   CHA Table 70.4). The life exponent B is the bearing type's (:class:`BearingType`,
-   ISO 281 and the CHA manual 1018854 12/2015, p. 69, Table 69.3): 10/3 for a cross
-   roller bearing, 3 for the four-point contact ball bearing of the CHA-14A, -17A and
-   -20A (CHA manual 1018854 8/2018 V03, output bearing Table 55.1, type column "F").
+   CHA Table 70.4). The life exponent B is the bearing type's
+   (:class:`~actuator_selection.catalogue.parts.BearingType`, ISO 281 and the CHA manual
+   1018854 12/2015, p. 69, Table 69.3): 10/3 for a cross roller bearing, 3 for the
+   four-point contact ball bearing of the CHA-14A, -17A and -20A (CHA manual 1018854
+   8/2018 V03, output bearing Table 55.1, type column "F").
 
 **Oscillating motion** (FHA-C formula (8), CSF manual §2-7 "life under oscillating
 movement"): L_oc = 10⁶/(60·n_1)·(90/θ)·(C/(f_w·P_c))^(10/3) with n_1 reciprocating
@@ -55,9 +56,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from enum import StrEnum
 from typing import Any
 
+from actuator_selection.catalogue.parts import BearingType
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
 
 STATIC_RADIAL_FACTOR = 1.0
@@ -80,17 +81,6 @@ BALL_LIFE_EXPONENT = 3.0
 for ball bearings; CHA manual 1018854 12/2015, Table 69.3: B = 3)."""
 BALL_LIFE_EXPONENT_INVERSE = 1.0 / 3.0
 """1/B of a ball bearing."""
-
-
-class BearingType(StrEnum):
-    """The type of an actuator's output bearing, as its catalogue names it: it sets the life
-    exponent B (:func:`life_exponent`)."""
-
-    CROSS_ROLLER = "cross_roller"
-    """A cross roller bearing (CHA-25A and larger; FHA-C): B = 10/3."""
-    FOUR_POINT_CONTACT_BALL = "four_point_contact_ball"
-    """A four-point contact ball bearing (CHA-14A, -17A, -20A; type "F" in the CHA output
-    bearing table): B = 3."""
 
 
 def life_exponent(bearing_type: str | None) -> float:
