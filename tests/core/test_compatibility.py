@@ -8,6 +8,7 @@ from types import MappingProxyType
 
 import pytest
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import InvalidInputError, NotFoundError
 from actuator_selection.sizing.compatibility import (
     MARK_COLUMNS,
@@ -26,7 +27,6 @@ from actuator_selection.sizing.compatibility import (
     parse_support_level,
     product_family,
 )
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 SEED = Path(__file__).parents[2] / "seed_data"
 KTY = TemperatureSensor.KTY84_130

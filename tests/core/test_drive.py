@@ -7,6 +7,7 @@ import math
 import pytest
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.sizing.compatibility import (
     ActuatorInterface,
     BusClass,
@@ -20,7 +21,6 @@ from actuator_selection.sizing.compatibility import (
 from actuator_selection.sizing.drive import DriveOptions, drive_options, voltage_check
 from actuator_selection.sizing.electrical import DcBusClass
 from actuator_selection.sizing.selection import Status
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 TESTED = SupportLevel.TESTED
 BUSES = (

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import InvalidInputError, OutOfRangeError
 from actuator_selection.sizing.thermal import (
     DIN_44081,
@@ -19,7 +20,6 @@ from actuator_selection.sizing.thermal import (
     PtcZone,
     SensorFitting,
     TemperatureLimits,
-    TemperatureSensor,
     ThermalState,
     classify_kty_reading,
     classify_ptc,

@@ -7,6 +7,7 @@ from typing import Annotated, Literal
 from fastapi import APIRouter, Path, Query
 
 from actuator_selection.catalogue.csvio import WHOLE_NUMBER_MAX
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.errors import NotFoundError
@@ -31,7 +32,6 @@ from actuator_selection.sizing.compatibility import (
     match_controllers,
     product_family,
 )
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 router = APIRouter(tags=["controllers"])
 

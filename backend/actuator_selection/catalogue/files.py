@@ -25,6 +25,7 @@ from actuator_selection.catalogue.fields import (
     MODEL_LENGTH,
     MODEL_NAME,
 )
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import DomainError
 from actuator_selection.sizing.compatibility import (
     MARK_COLUMNS,
@@ -32,7 +33,6 @@ from actuator_selection.sizing.compatibility import (
     FeedbackSystem,
     parse_support_level,
 )
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 _P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
 

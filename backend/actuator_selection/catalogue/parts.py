@@ -20,3 +20,10 @@ class BearingType(StrEnum):
     FOUR_POINT_CONTACT_BALL = "four_point_contact_ball"
     """A four-point contact ball bearing (CHA-14A, -17A, -20A; type "F" in the CHA output
     bearing table): B = 3."""
+
+
+class TemperatureSensor(StrEnum):
+    """Sensor types of Table 518.1 (the temperature sensor columns of Table 521.1)."""
+
+    PTC = "ptc"
+    KTY84_130 = "kty84_130"

@@ -35,6 +35,7 @@ from actuator_selection.catalogue.files import (
     SENSOR_FITTINGS,
     ZONE_POINTS,
 )
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.db.changes import set_values
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -49,7 +50,6 @@ from actuator_selection.db.models import (
 from actuator_selection.db.repositories import CatalogueVersionRepository, mark_changed
 from actuator_selection.db.seed import CatalogueFiles, apply_catalogue, zone_problems
 from actuator_selection.db.seed_controllers import controller_name_problems
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

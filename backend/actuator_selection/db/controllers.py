@@ -7,6 +7,7 @@ from typing import TypeVar
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -27,12 +28,7 @@ from actuator_selection.sizing.compatibility import (
     product_family,
 )
 from actuator_selection.sizing.electrical import DcBusClass
-from actuator_selection.sizing.thermal import (
-    KtyCharacteristic,
-    SensorFitting,
-    TemperatureLimits,
-    TemperatureSensor,
-)
+from actuator_selection.sizing.thermal import KtyCharacteristic, SensorFitting, TemperatureLimits
 
 _Option = TypeVar("_Option", BusClass, TemperatureSensor, FeedbackSystem)
 

@@ -24,6 +24,7 @@ from actuator_selection.catalogue.files import (
     KTY_POINTS,
     SENSOR_FITTINGS,
 )
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.db.changes import delete_in, retire_at, sync_rows
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -37,7 +38,7 @@ from actuator_selection.db.models import (
 from actuator_selection.db.repositories import mark_changed
 from actuator_selection.errors import DomainError
 from actuator_selection.sizing.compatibility import BusClass
-from actuator_selection.sizing.thermal import KtyCharacteristic, TemperatureSensor
+from actuator_selection.sizing.thermal import KtyCharacteristic
 
 
 def controller_name_problems(

@@ -6,8 +6,8 @@ from typing import Literal
 
 from pydantic import ConfigDict, Field, field_validator
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.schemas.common import MAX_SPEED_RPM, ResponseModel, StrictModel
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 MAX_VOLTAGE_CONSTANT = 10_000.0
 """K_E bound [V per 1000 rpm]: a hundred times the largest catalogue value."""

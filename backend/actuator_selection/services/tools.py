@@ -6,6 +6,7 @@ from __future__ import annotations
 from sqlalchemy.orm import Session
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.errors import InvalidInputError, MissingDataError, NotFoundError
@@ -29,7 +30,6 @@ from actuator_selection.sizing.electrical import (
     output_torque_from_current,
 )
 from actuator_selection.sizing.thermal import (
-    TemperatureSensor,
     classify_kty_reading,
     classify_ptc_reading,
     finite_overload_duration_s,

@@ -39,10 +39,10 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from types import MappingProxyType
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import InvalidInputError, NotFoundError
 from actuator_selection.i18n.check_messages import phrase
 from actuator_selection.i18n.messages import N_
-from actuator_selection.sizing.thermal import TemperatureSensor
 
 REFERENCE = N_("Table 521.1")
 

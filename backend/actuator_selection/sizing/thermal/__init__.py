@@ -51,7 +51,6 @@ from actuator_selection.sizing.thermal.sensors import (
     PtcReading,
     PtcZone,
     SensorFitting,
-    TemperatureSensor,
     classify_ptc,
 )
 
@@ -65,7 +64,6 @@ __all__ = [
     "PtcZone",
     "SensorFitting",
     "TemperatureLimits",
-    "TemperatureSensor",
     "ThermalAssessment",
     "ThermalState",
     "classify_kty_reading",

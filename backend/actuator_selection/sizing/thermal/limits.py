@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import StrEnum
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.thermal.sensors import (
     DIN_44081,
@@ -13,7 +14,6 @@ from actuator_selection.sizing.thermal.sensors import (
     PtcReading,
     PtcZone,
     SensorFitting,
-    TemperatureSensor,
     _require_finite,
     classify_ptc,
 )

@@ -11,16 +11,10 @@ from dataclasses import dataclass
 from enum import StrEnum
 from itertools import pairwise
 
+from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import InvalidInputError, OutOfRangeError
 
 # --------------------------------------------------------------------------- sensors
-
-
-class TemperatureSensor(StrEnum):
-    """Sensor types of Table 518.1 (the temperature sensor columns of Table 521.1)."""
-
-    PTC = "ptc"
-    KTY84_130 = "kty84_130"
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
