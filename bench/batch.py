@@ -28,11 +28,11 @@ from pathlib import Path
 from fastapi.testclient import TestClient
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.config import Settings
 from actuator_selection.http.app import API_PREFIX, create_app, tune_gc
 from actuator_selection.sizing.engine import evaluate_batch, rank_batch, select_batch
 from actuator_selection.sizing.selection import select
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 from bench.reference import disagreements, numpy_reference, snapshot_actuators
 from bench.selection import http_case, random_cases, starter_catalogue
 

@@ -12,6 +12,7 @@ from tests import worked_example
 from tests.oracle.flowchart import ORDER, operands
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.sizing import checks, selection
 from actuator_selection.sizing.checks import FLOAT_OPS, RULES, Check, Operands, Requirement, Status
 from actuator_selection.sizing.checks.rule import _new_check
@@ -19,7 +20,6 @@ from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import ARRAY_OPS, CHECK_NAMES
 from actuator_selection.sizing.motion import CycleTorques
 from actuator_selection.sizing.selection import Application, evaluate
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 EXAMPLE = worked_example.APPLICATION
 FHA = worked_example.FHA_25C_50_L

@@ -19,6 +19,7 @@ from tests.core.test_continuous import catalogue
 from tests.oracle.ratio_exhaustive import exhaustive_ratio_study
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.schemas.ratio import RatioStudyRequest
 from actuator_selection.services.ratio import varied
 from actuator_selection.sizing import ratio
@@ -32,7 +33,6 @@ from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study, ratio_study
 from actuator_selection.sizing.ratio_cases import geared, geared_cases
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 
 @cache

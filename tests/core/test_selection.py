@@ -9,10 +9,10 @@ import pytest
 from tests import worked_example
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.sizing.checks import Check, overload
 from actuator_selection.sizing.cycle import Load
 from actuator_selection.sizing.selection import Application, Status, Verdict, evaluate, select
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 EXAMPLE = worked_example.APPLICATION
 FHA = worked_example.FHA_25C_50_L

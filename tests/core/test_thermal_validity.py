@@ -20,6 +20,7 @@ import pytest
 from tests.oracle.flowchart import operands
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.checks import Check, Operands, Status
@@ -28,7 +29,6 @@ from actuator_selection.sizing.engine import evaluate_batch
 from actuator_selection.sizing.motion import Motion, Segment
 from actuator_selection.sizing.selection import Application, Verdict, evaluate
 from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S, overload_duration_s
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 # CHA-25A-50 (CHA Engineering Data 1018854 12/2015, CHA-25A table, ratio 50): T_max 98 Nm,
 # n_max 112 rpm, J_out 0.97 kgm², T_0 55 Nm; rated motor speed 3500 rpm / 50 = 70 rpm.

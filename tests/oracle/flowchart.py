@@ -22,6 +22,7 @@ from actuator_selection.sizing.checks import Check, Operands, Rule, Status, rule
 from actuator_selection.sizing.electrical import no_load_torque_slope_nm_per_rpm
 from actuator_selection.sizing.motion import CycleTorques, Profile
 from actuator_selection.sizing.thermal import DEFAULT_THERMAL_TIME_CONSTANT_S
+from actuator_selection.sizing.zones import torque_limit_nm
 
 
 def _verdict(checks: Iterable[Check]) -> Verdict:
@@ -60,7 +61,7 @@ def operands(
     nan = math.nan
     zone = actuator.zone
     n_av = profile.mean_speed_rpm
-    zone_torque = None if zone is None else zone.torque_limit_nm(n_av)
+    zone_torque = None if zone is None else torque_limit_nm(zone, n_av)
     # The oracle's own reading of the catalogue, independent of the engine's
     # (CATALOGUE_OPERANDS): in the oracle's order (ORDER), named by it.
     values = (

@@ -19,6 +19,7 @@ from tests import worked_example
 from tests.oracle.flowchart import evaluate, select
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.i18n.check_messages import jsonable_params, renderer
 from actuator_selection.sizing.axis import AxisLoad
@@ -45,7 +46,6 @@ from actuator_selection.sizing.selection import (
     Verdict,
     ranking_key,
 )
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 EXAMPLE = worked_example.APPLICATION
 FHA = worked_example.FHA_25C_50_L

@@ -15,7 +15,7 @@ import dataclasses
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from actuator_selection.catalogue.fields import ENGINE_FIELDS, CatalogueField, Kind
-from actuator_selection.sizing.zones import ContinuousDutyZone
+from actuator_selection.catalogue.zones import ContinuousDutyZone
 
 _DOC = """A servo actuator as the catalogue publishes it, values at the output shaft.
 

@@ -19,6 +19,7 @@ from sqlalchemy.orm import Session, selectinload
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.fields import ACTUATOR_FIELDS, ENGINE_FIELDS
 from actuator_selection.catalogue.records import ActuatorRecord, FamilyRecord
+from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.db.changes import batches
 from actuator_selection.db.models import (
     ActuatorFamilyRow,
@@ -28,7 +29,6 @@ from actuator_selection.db.models import (
     SelectionRow,
     ZonePointRow,
 )
-from actuator_selection.sizing.zones import ContinuousDutyZone, ZonePoint
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

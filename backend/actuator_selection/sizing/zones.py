@@ -1,73 +1,36 @@
-"""The continuous-duty zone of an actuator's speed/torque diagram (Fig. 517.1).
+"""The continuous-duty zone's edge at a speed (Fig. 517.1).
 
-The catalogue draws the zone's upper edge as a curve from standstill to the
-highest continuous speed; an operating point (n_av, T_rms) below that curve may
-run indefinitely. Here the edge is a polyline of (speed, torque) points,
-linearly interpolated between them.
+The catalogue publishes the zone's upper edge as its corner points
+(:class:`~actuator_selection.catalogue.zones.ContinuousDutyZone`); an operating point
+(n_av, T_rms) below the edge may run indefinitely. Between two points the edge is
+linearly interpolated; beyond the last point's speed the zone ends. The engine's checks
+compute the same edge on arrays (:func:`~actuator_selection.sizing.engine.cases.zone_limits`).
 """
 
 from __future__ import annotations
 
-import itertools
-import math
 from bisect import bisect_right
-from dataclasses import dataclass
 
-from actuator_selection.errors import InvalidInputError
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ZonePoint:
-    """One corner of the zone's upper edge: output speed [rpm] and torque [Nm]."""
-
-    speed_rpm: float
-    torque_nm: float
+from actuator_selection.catalogue.zones import ContinuousDutyZone
 
 
-@dataclass(frozen=True, slots=True, kw_only=True)
-class ContinuousDutyZone:
-    """Upper edge of the continuous-duty zone, from standstill upwards in speed.
+def torque_limit_nm(zone: ContinuousDutyZone, speed_rpm: float) -> float | None:
+    """Continuous torque ``zone`` allows at ``speed_rpm``; None outside its speed range.
 
-    The first point is at 0 rpm (the continuous stall torque), speeds rise
-    strictly, torques are ≥ 0. Beyond the last point's speed the zone ends.
-
+    >>> from actuator_selection.catalogue.zones import ZonePoint
     >>> zone = ContinuousDutyZone(points=(ZonePoint(speed_rpm=0, torque_nm=60),
     ...                                   ZonePoint(speed_rpm=100, torque_nm=40)))
-    >>> zone.torque_limit_nm(50)
+    >>> torque_limit_nm(zone, 50)
     50.0
-    >>> zone.torque_limit_nm(101) is None
+    >>> torque_limit_nm(zone, 101) is None
     True
     """
-
-    points: tuple[ZonePoint, ...]
-
-    def __post_init__(self) -> None:
-        if len(self.points) < 2:
-            raise InvalidInputError("zone", "needs at least two points")
-        if self.points[0].speed_rpm != 0:
-            raise InvalidInputError("zone", "must start at 0 rpm (the continuous stall torque)")
-        for p in self.points:
-            if not (math.isfinite(p.speed_rpm) and math.isfinite(p.torque_nm)):
-                raise InvalidInputError("zone", "points must be finite numbers")
-            if p.torque_nm < 0:
-                raise InvalidInputError("zone", "torques must be ≥ 0")
-        speeds = [p.speed_rpm for p in self.points]
-        if any(b <= a for a, b in itertools.pairwise(speeds)):
-            raise InvalidInputError("zone", "speeds must rise strictly from point to point")
-
-    @property
-    def max_speed_rpm(self) -> float:
-        """The highest speed the zone covers [rpm]."""
-        return self.points[-1].speed_rpm
-
-    def torque_limit_nm(self, speed_rpm: float) -> float | None:
-        """Continuous torque allowed at ``speed_rpm``; None outside the zone's speed range."""
-        if speed_rpm < 0 or speed_rpm > self.max_speed_rpm:
-            return None
-        speeds = [p.speed_rpm for p in self.points]
-        i = bisect_right(speeds, speed_rpm)
-        if i >= len(self.points):
-            return self.points[-1].torque_nm
-        a, b = self.points[i - 1], self.points[i]
-        share = (speed_rpm - a.speed_rpm) / (b.speed_rpm - a.speed_rpm)
-        return a.torque_nm + share * (b.torque_nm - a.torque_nm)
+    if speed_rpm < 0 or speed_rpm > zone.max_speed_rpm:
+        return None
+    speeds = [p.speed_rpm for p in zone.points]
+    i = bisect_right(speeds, speed_rpm)
+    if i >= len(zone.points):
+        return zone.points[-1].torque_nm
+    a, b = zone.points[i - 1], zone.points[i]
+    share = (speed_rpm - a.speed_rpm) / (b.speed_rpm - a.speed_rpm)
+    return a.torque_nm + share * (b.torque_nm - a.torque_nm)

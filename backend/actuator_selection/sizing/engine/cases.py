@@ -197,7 +197,8 @@ def _output_loads(apps: Sequence[Application]) -> FloatArray:
 def zone_limits(
     actuators: Sequence[Actuator], columns: IndexArray, mean_speed: FloatArray
 ) -> FloatArray:
-    """ContinuousDutyZone.torque_limit_nm(n_av) per case × zone column; NaN beyond the zone."""
+    """The zone's edge at n_av (:func:`~actuator_selection.sizing.zones.torque_limit_nm`) per
+    case × zone column; NaN beyond the zone."""
     limits = np.full((mean_speed.size, columns.size), math.nan)
     for k, j in enumerate(columns.tolist()):
         zone = actuators[j].zone
