@@ -316,17 +316,17 @@ def _drive_messages() -> Iterator[str]:
     stored lean check written from its numbers."""
     from tests.core.test_drive import BUSES, CHA, CHA_INTERFACE, CONTROLLERS
 
-    from actuator_selection.schemas.controllers import controllers_note
-    from actuator_selection.schemas.output_load import OutputLoadIn, output_bearing_note
-    from actuator_selection.schemas.quotes import StoredCheck
-    from actuator_selection.sizing.compatibility import (
+    from actuator_selection.catalogue.controllers import (
         BusClass,
         Controller,
         FeedbackSystem,
         ProductFamily,
         SupportLevel,
-        match_controllers,
     )
+    from actuator_selection.schemas.controllers import controllers_note
+    from actuator_selection.schemas.output_load import OutputLoadIn, output_bearing_note
+    from actuator_selection.schemas.quotes import StoredCheck
+    from actuator_selection.sizing.compatibility import match_controllers
     from actuator_selection.sizing.drive import DriveOptions, drive_options, shared_voltage_check
 
     possible = Controller(

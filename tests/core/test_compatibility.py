@@ -8,24 +8,26 @@ from types import MappingProxyType
 
 import pytest
 
-from actuator_selection.catalogue.parts import TemperatureSensor
-from actuator_selection.errors import InvalidInputError, NotFoundError
-from actuator_selection.sizing.compatibility import (
+from actuator_selection.catalogue.controllers import (
     MARK_COLUMNS,
     ActuatorInterface,
     BusClass,
     Controller,
     Criterion,
-    CriterionStatus,
     FeedbackSystem,
-    MatchVerdict,
     ProductFamily,
     SupportLevel,
     controller_from_record,
-    match_controller,
-    match_controllers,
     parse_support_level,
     product_family,
+)
+from actuator_selection.catalogue.parts import TemperatureSensor
+from actuator_selection.errors import InvalidInputError, NotFoundError
+from actuator_selection.sizing.compatibility import (
+    CriterionStatus,
+    MatchVerdict,
+    match_controller,
+    match_controllers,
 )
 
 SEED = Path(__file__).parents[2] / "seed_data"

@@ -7,17 +7,16 @@ import math
 import pytest
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.catalogue.parts import TemperatureSensor
-from actuator_selection.sizing.compatibility import (
+from actuator_selection.catalogue.controllers import (
     ActuatorInterface,
     BusClass,
     Controller,
     FeedbackSystem,
-    MatchVerdict,
     ProductFamily,
     SupportLevel,
-    match_controllers,
 )
+from actuator_selection.catalogue.parts import TemperatureSensor
+from actuator_selection.sizing.compatibility import MatchVerdict, match_controllers
 from actuator_selection.sizing.drive import DriveOptions, drive_options, voltage_check
 from actuator_selection.sizing.electrical import DcBusClass
 from actuator_selection.sizing.selection import Status

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from actuator_selection.catalogue.controllers import BusClass
 from actuator_selection.errors import InvalidInputError, MissingDataError, OutOfRangeError
-from actuator_selection.sizing.compatibility import BusClass
 from actuator_selection.sizing.electrical import (
     OUTPUT_TURNS_OPPOSITE_TO_MOTOR,
     DcBusClass,

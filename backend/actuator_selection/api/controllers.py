@@ -6,6 +6,13 @@ from typing import Annotated, Literal
 
 from fastapi import APIRouter, Path, Query
 
+from actuator_selection.catalogue.controllers import (
+    BusClass,
+    FeedbackSystem,
+    Option,
+    SupportLevel,
+    product_family,
+)
 from actuator_selection.catalogue.csvio import WHOLE_NUMBER_MAX
 from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.db.controllers import ProtectionRepository
@@ -24,14 +31,7 @@ from actuator_selection.schemas.controllers import (
     ControllerOut,
     InterfaceOut,
 )
-from actuator_selection.sizing.compatibility import (
-    BusClass,
-    FeedbackSystem,
-    Option,
-    SupportLevel,
-    match_controllers,
-    product_family,
-)
+from actuator_selection.sizing.compatibility import match_controllers
 
 router = APIRouter(tags=["controllers"])
 

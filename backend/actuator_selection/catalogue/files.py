@@ -17,6 +17,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from enum import StrEnum
 
+from actuator_selection.catalogue.controllers import (
+    MARK_COLUMNS,
+    BusClass,
+    FeedbackSystem,
+    parse_support_level,
+)
 from actuator_selection.catalogue.csvio import Column, CsvSpec, Rule, one_of, whole_number
 from actuator_selection.catalogue.fields import (
     ACTUATOR_FIELDS,
@@ -27,12 +33,6 @@ from actuator_selection.catalogue.fields import (
 )
 from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import DomainError
-from actuator_selection.sizing.compatibility import (
-    MARK_COLUMNS,
-    BusClass,
-    FeedbackSystem,
-    parse_support_level,
-)
 
 _P, _N = Rule.POSITIVE, Rule.NON_NEGATIVE
 

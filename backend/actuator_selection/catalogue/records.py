@@ -10,8 +10,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.controllers import ActuatorInterface, Controller
 from actuator_selection.catalogue.fields import CatalogueValue
-from actuator_selection.sizing.compatibility import ActuatorInterface, Controller
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -7,6 +7,14 @@ from typing import TypeVar
 from sqlalchemy import select
 from sqlalchemy.orm import Session
 
+from actuator_selection.catalogue.controllers import (
+    MARK_COLUMNS,
+    ActuatorInterface,
+    BusClass,
+    FeedbackSystem,
+    controller_from_record,
+    product_family,
+)
 from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
 from actuator_selection.db.models import (
@@ -19,14 +27,6 @@ from actuator_selection.db.models import (
     SensorPointRow,
 )
 from actuator_selection.errors import NotFoundError
-from actuator_selection.sizing.compatibility import (
-    MARK_COLUMNS,
-    ActuatorInterface,
-    BusClass,
-    FeedbackSystem,
-    controller_from_record,
-    product_family,
-)
 from actuator_selection.sizing.electrical import DcBusClass
 from actuator_selection.sizing.thermal import KtyCharacteristic, SensorFitting, TemperatureLimits
 

@@ -16,6 +16,7 @@ from sqlalchemy import select
 from sqlalchemy.orm import Session
 
 from actuator_selection.catalogue.changes import FileChanges
+from actuator_selection.catalogue.controllers import BusClass
 from actuator_selection.catalogue.csvio import CsvSpec, Problem, Record
 from actuator_selection.catalogue.files import (
     BUS_CLASSES,
@@ -37,7 +38,6 @@ from actuator_selection.db.models import (
 )
 from actuator_selection.db.repositories import mark_changed
 from actuator_selection.errors import DomainError
-from actuator_selection.sizing.compatibility import BusClass
 from actuator_selection.sizing.thermal import KtyCharacteristic
 
 

@@ -7,18 +7,17 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
-from actuator_selection.i18n.check_messages import Phrase, jsonable_params, phrase
-from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
-from actuator_selection.schemas.common import ResponseModel
-from actuator_selection.sizing.compatibility import (
+from actuator_selection.catalogue.controllers import (
     LABELS,
     MARK_COLUMNS,
     ActuatorInterface,
     Controller,
-    ControllerMatch,
-    CriterionResult,
 )
+from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
+from actuator_selection.i18n.check_messages import Phrase, jsonable_params, phrase
+from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
+from actuator_selection.schemas.common import ResponseModel
+from actuator_selection.sizing.compatibility import ControllerMatch, CriterionResult
 from actuator_selection.sizing.drive import DriveOption, DriveOptions
 from actuator_selection.sizing.selection import Check
 

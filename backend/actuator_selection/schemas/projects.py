@@ -15,6 +15,7 @@ from typing import Any, Literal
 
 from pydantic import ConfigDict, Field, StrictInt
 
+from actuator_selection.catalogue.controllers import BusClass
 from actuator_selection.schemas.common import MAX_TIME_S, ResponseModel, StrictModel
 from actuator_selection.schemas.selections import (
     CheckBrief,
@@ -22,7 +23,6 @@ from actuator_selection.schemas.selections import (
     SelectionRequest,
     VoltageBrief,
 )
-from actuator_selection.sizing.compatibility import BusClass
 
 MAX_AXES = 16
 """Axes in one project: more than one DC bus of a machine usually feeds."""

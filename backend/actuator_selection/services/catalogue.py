@@ -20,12 +20,11 @@ import numpy.typing as npt
 from sqlalchemy.orm import Session
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.controllers import ActuatorInterface, Controller
 from actuator_selection.db.controllers import ProtectionRepository
 from actuator_selection.db.repositories import CatalogueRepository, CatalogueVersionRepository
 from actuator_selection.sizing.compatibility import (
-    ActuatorInterface,
     CompatibilityResult,
-    Controller,
     MatchVerdict,
     match_controllers,
 )

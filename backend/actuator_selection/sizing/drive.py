@@ -17,11 +17,10 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.catalogue.controllers import ActuatorInterface, Controller
 from actuator_selection.i18n.check_messages import phrase
 from actuator_selection.sizing.compatibility import (
-    ActuatorInterface,
     CompatibilityResult,
-    Controller,
     ControllerMatch,
     MatchVerdict,
 )

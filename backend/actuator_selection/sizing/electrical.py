@@ -32,10 +32,10 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any, Final
 
+from actuator_selection.catalogue.controllers import BusClass
 from actuator_selection.errors import InvalidInputError, MissingDataError, OutOfRangeError
 from actuator_selection.i18n.check_messages import phrase
 from actuator_selection.i18n.messages import N_, Text
-from actuator_selection.sizing.compatibility import BusClass
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM, per_krpm_to_per_rpm
 
 
