@@ -3,6 +3,7 @@ the seller and the default terms of quotes."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from decimal import Decimal
 from functools import lru_cache
 from pathlib import Path
@@ -10,7 +11,6 @@ from pathlib import Path
 from pydantic import Field, SecretStr
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
-from actuator_selection.db.engine import EngineLimits
 from actuator_selection.sales.quote_terms import QuoteDefaults, SellerParty
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -22,6 +22,33 @@ FRONTEND_DIR = REPO_ROOT / "frontend"
 
 PLACEHOLDER_SELLER_NAME = "Your company"
 """The default ``SELLER_NAME``: a quote document made with it carries a warning banner."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class EngineLimits:
+    """How long the database may make a request wait, and how many connections it holds
+    (what :func:`~actuator_selection.db.engine.make_engine` is given).
+
+    Parameters
+    ----------
+    lock_timeout_s
+        Longest wait for a lock [s]: SQLite's busy timeout, PostgreSQL's ``lock_timeout``.
+    statement_timeout_s
+        Longest statement [s] (PostgreSQL ``statement_timeout``).
+    pool_size
+        Connections kept open; as many again may be opened under load.
+    pool_timeout_s
+        Longest wait for a free connection [s], then ``sqlalchemy.exc.TimeoutError`` (503).
+    connect_timeout_s
+        Longest wait for a new PostgreSQL connection [s] (libpq ``connect_timeout``;
+        whole seconds, at least 2), then the database counts as unreachable (503).
+    """
+
+    lock_timeout_s: float = 5.0
+    statement_timeout_s: float = 60.0
+    pool_size: int = 8
+    pool_timeout_s: float = 10.0
+    connect_timeout_s: int = 5
 
 
 class Settings(BaseSettings):

@@ -27,7 +27,8 @@ from procrastinate.types import JSONValue
 from sqlalchemy.engine import make_url
 from sqlalchemy.orm import Session, sessionmaker
 
-from actuator_selection.db.engine import EngineLimits, make_engine, make_session_factory
+from actuator_selection.config import EngineLimits
+from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.schemas.checks import Localize
 from actuator_selection.services import jobs
 from actuator_selection.services.catalogue import CatalogueCache

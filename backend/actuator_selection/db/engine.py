@@ -17,7 +17,6 @@ Both are set up for concurrent clients (the README's "Durability and concurrency
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -27,34 +26,10 @@ from sqlalchemy.engine import make_url
 from sqlalchemy.exc import DisconnectionError
 from sqlalchemy.orm import Session, sessionmaker
 
+from actuator_selection.config import EngineLimits
+
 WRITE_INTENT = "actuator_selection_writes"
 """Execution option: the transaction will write (SQLite: ``BEGIN IMMEDIATE``)."""
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class EngineLimits:
-    """How long the database may make a request wait, and how many connections it holds.
-
-    Parameters
-    ----------
-    lock_timeout_s
-        Longest wait for a lock [s]: SQLite's busy timeout, PostgreSQL's ``lock_timeout``.
-    statement_timeout_s
-        Longest statement [s] (PostgreSQL ``statement_timeout``).
-    pool_size
-        Connections kept open; as many again may be opened under load.
-    pool_timeout_s
-        Longest wait for a free connection [s], then ``sqlalchemy.exc.TimeoutError`` (503).
-    connect_timeout_s
-        Longest wait for a new PostgreSQL connection [s] (libpq ``connect_timeout``;
-        whole seconds, at least 2), then the database counts as unreachable (503).
-    """
-
-    lock_timeout_s: float = 5.0
-    statement_timeout_s: float = 60.0
-    pool_size: int = 8
-    pool_timeout_s: float = 10.0
-    connect_timeout_s: int = 5
 
 
 def normalise_url(url: str) -> str:
