@@ -28,10 +28,7 @@ DOMAIN = ("sizing", "catalogue", "sales", "errors", "text", "i18n.messages", "i1
 EDGE = ("api", "http", "cli", "cli_keys", "__main__")
 LAYERS = ("domain", "use cases", "edge")
 
-EXCEPTIONS = {
-    ("documents.quote_document", "http.static"): "the quote links the plotly bundle where "
-    "http/static.py serves it (PLOTLY_URL, from the locked version)",
-}
+EXCEPTIONS: dict[tuple[str, str], str] = {}
 """Known edges against the direction, each with its reason; none is added lightly."""
 
 

@@ -27,6 +27,7 @@ from actuator_selection.documents.quote_document import (
 from actuator_selection.documents.quote_document_text import Language
 from actuator_selection.http.deps import DocumentLanguageDep, SessionDep, SettingsDep, reads_only
 from actuator_selection.http.errors import RequestFieldError, UnauthorizedError, field_error
+from actuator_selection.http.static import PLOTLY_URL
 from actuator_selection.sales.quote_status import QuoteStatus
 from actuator_selection.sales.records import ApiKeyRecord
 from actuator_selection.schemas.documents import DocumentLinkOut
@@ -296,7 +297,8 @@ def quote_document(
     _document_reader(
         principal, access, number=number, session=session, now=clock.now(), secret=secret
     )
-    html = render_quote_document(_document_context(session, number, clock, settings, language))
+    context = _document_context(session, number, clock, settings, language)
+    html = render_quote_document(context, plotly_url=PLOTLY_URL)
     return HTMLResponse(
         html,
         headers={**DOCUMENT_HEADERS, "Content-Language": language, "Vary": "Accept-Language"},

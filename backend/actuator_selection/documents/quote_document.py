@@ -8,8 +8,9 @@ Rendered from ``documents/templates/quote_document.html`` by Jinja2 with autoesc
 customer text can hold anything and must never become markup, so every value is
 escaped by the template engine, not by hand.
 The speed/torque diagram is a plotly figure built here with
-``plotly.graph_objects`` and drawn in the browser by the app's own plotly.js
-(``PLOTLY_URL``) through a small script of this module; no CDN, no inline code.
+``plotly.graph_objects`` and drawn in the browser by the app's own plotly.js (its URL
+given by the router, where ``http/static.py`` serves it) through a small script of this
+module; no CDN, no inline code.
 
 Every number comes from the stored quote and the stored selection (immutable),
 plus the actuator's catalogue entry as copied into the quote when it was made.
@@ -30,7 +31,6 @@ from actuator_selection.catalogue.citations import citation
 from actuator_selection.documents.figures import DiagramPoints, diagram_figure
 from actuator_selection.documents.quote_document_text import DocumentText, Language, load_rows
 from actuator_selection.documents.symbols import symbols
-from actuator_selection.http.static import PLOTLY_URL
 from actuator_selection.i18n.localize import render_check
 from actuator_selection.sales.money import ROUNDING_RULE
 from actuator_selection.sales.quote_terms import VAT_ROUNDING_RULE, SellerParty
@@ -231,10 +231,12 @@ _TEMPLATES = Environment(
 (the one translation that carries markup, and the figure's script-safe JSON)."""
 
 
-def render_quote_document(context: dict[str, Any]) -> str:
-    """The HTML document of a quote from its content (:func:`quote_document_context`);
-    every text from outside is escaped (Jinja2 autoescaping)."""
-    return _TEMPLATES.get_template("quote_document.html").render(**context)
+def render_quote_document(context: dict[str, Any], *, plotly_url: str) -> str:
+    """The HTML document of a quote from its content (:func:`quote_document_context`),
+    its diagram drawn by the plotly.js at ``plotly_url``; every text from outside is
+    escaped (Jinja2 autoescaping)."""
+    template = _TEMPLATES.get_template("quote_document.html")
+    return template.render(**context, plotly_url=plotly_url)
 
 
 _ACTUATOR_ITEM = re.compile(
@@ -535,6 +537,5 @@ def quote_document_context(
         version_note=version_note,
         figures_fixed=t("figures_fixed"),
         tick_number=lambda value: t.number(value, "#,##0.###"),  # the PDF's diagram axes
-        plotly_url=PLOTLY_URL,
         document_script="/api/v1" + DOCUMENT_SCRIPT_PATH,
     )
