@@ -11,6 +11,10 @@
 A module imports only its own layer and the layers inside it. The rule is read from each
 module's source (every ``import``, lazy ones in functions too), so a new module is held
 by it without being listed here.
+
+Within a layer, the parts of the house (its top-level packages and modules) import one
+way too: the engine reads the catalogue, never the catalogue the engine; the database
+reads the settings, never the settings the database.
 """
 
 from __future__ import annotations
@@ -208,7 +212,12 @@ def test_no_modules_import_one_another() -> None:
 PARTS = tuple(d for d in DOMAIN if "." in d)
 """The parts of the house below a top-level package: the words' codes, domain inside ``i18n``."""
 
-AGAINST_THE_GRAIN: dict[tuple[str, str], str] = {}
+AGAINST_THE_GRAIN = {
+    ("http", "api"): "http/app.py assembles the application from api/'s routers "
+    "(create_app, the one place they are mounted) and http/openapi.py describes their "
+    "security from api/auth.py's marker, while the routers use what http/ shares (deps, "
+    "errors, media types, throttle): the composition root lives beside what it composes",
+}
 """Known imports from one part of the house back into a part that imports it, each with
 its reason (as :data:`EXCEPTIONS`); none is added lightly."""
 
