@@ -175,6 +175,7 @@ def test_detail_and_batch_presenters_agree_with_the_ranking(
                 controllers=body["controllers"],
                 controllers_summary=summary if include_messages else coded_summary(summary),
             )
+            batch = orjson.loads(dump_json(batch))  # the checks may be their JSON
             bodies.append(batch)
             if include_messages:  # the detail's words and the names of the open checks
                 assert batch == body | {"reason_checks": candidate.open_checks}

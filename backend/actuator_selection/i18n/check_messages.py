@@ -170,18 +170,19 @@ def jsonable_params(message: str) -> dict[str, Any] | None:
     out = dict(params)  # most params are finite numbers, kept as they are
     for k, v in params.items():
         if type(v) is not float or v - v != 0.0:  # inf − inf, NaN − NaN: NaN
-            out[k] = _jsonable(v)
+            out[k] = jsonable(v)
     return out
 
 
-def _jsonable(value: Any) -> Any:
+def jsonable(value: Any) -> Any:
+    """A param as JSON carries it (:func:`jsonable_params`)."""
     kind = type(value)
     if kind is float:  # most params: a finite number, as it is
         return value if value - value == 0.0 else repr(value)  # inf − inf, NaN − NaN: NaN
     if isinstance(value, Phrase):
         return {"code": value.code, "params": jsonable_params(value)}
     if isinstance(value, list | tuple):
-        return [_jsonable(v) for v in value]
+        return [jsonable(v) for v in value]
     if isinstance(value, str):
         return str(value)
     if isinstance(value, float):

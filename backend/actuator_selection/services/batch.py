@@ -31,6 +31,7 @@ from actuator_selection.schemas.selections import RANKING_RULE
 from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContext
 from actuator_selection.services.errors import UseCaseError, entry
 from actuator_selection.services.presenters.batch import (
+    CodedChecks,
     batch_candidate_body,
     coded_summary,
     controllers_summary,
@@ -226,6 +227,7 @@ def _candidates(
     body: BatchSelectionRequest,
     drives: _Drives,
     localize: Localize,
+    coded: CodedChecks,
 ) -> list[dict[str, Any]]:
     out = []
     summary = drives.summary if body.include_messages else drives.coded_summary
@@ -240,6 +242,7 @@ def _candidates(
                 ),
                 controllers_summary=summary(c.actuator, speed_rpm),
                 localize=localize,
+                coded=coded,
             )
         )
     return out
@@ -294,6 +297,7 @@ def _result_chunks(
     for start in range(0, len(apps), STREAM_CASES):
         end = start + STREAM_CASES
         selections = _select(actuators, apps[start:end], models[start:end], body.top)
+        coded = CodedChecks()  # the slice's checks, written from the engine's arrays
         results = [
             dump_json(
                 result_body(
@@ -301,7 +305,7 @@ def _result_chunks(
                     case_id=case_id,
                     selection=selection,
                     candidates=_candidates(
-                        selection, selection.profile.peak_speed_rpm, body, drives, localize
+                        selection, selection.profile.peak_speed_rpm, body, drives, localize, coded
                     ),
                 )
             )

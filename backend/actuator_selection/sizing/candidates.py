@@ -5,12 +5,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import StrEnum
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.checks import Brief, Check, DeferredChecks, Rule, Status
 from actuator_selection.sizing.deferred import defer_field
 from actuator_selection.sizing.motion import CycleTorques, Profile
+
+if TYPE_CHECKING:
+    from actuator_selection.sizing.engine.detail import DecidedCells
 
 
 class Verdict(StrEnum):
@@ -53,6 +56,16 @@ class Candidate:
         if isinstance(held, DeferredChecks):
             return list(held.briefs())
         return [(c, (c.status, c.value, c.limit, c.approximate, c.message)) for c in self.checks]
+
+    def decided(self) -> tuple[DecidedCells, int] | None:
+        """The engine's decisions of the cells detailed with this candidate, and its cell
+        among them (:meth:`~actuator_selection.sizing.checks.DeferredChecks.decided`);
+        None where its checks are built (they are then read one by one)."""
+        held = _CHECKS.__get__(self, Candidate)
+        if isinstance(held, DeferredChecks):
+            decided: tuple[DecidedCells, int] = held.decided()
+            return decided
+        return None
 
     @property
     def open_checks(self) -> list[str]:

@@ -8,12 +8,23 @@ more than the engineering of the whole batch (the tests validate it against the 
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
 from typing import Any
 
-from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable_params
+import numpy as np
+import numpy.typing as npt
+import orjson
+
+from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
-from actuator_selection.services.presenters.selection import resolved_load
-from actuator_selection.sizing.checks import Brief, Rule
+from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
+from actuator_selection.sizing.checks import Brief, Operands, Rule, Status
+from actuator_selection.sizing.checks.rule import Pick, Said, Term, Variants
+from actuator_selection.sizing.engine import STATUS_BY_CODE
+from actuator_selection.sizing.engine.arrays import NO_DATA
+from actuator_selection.sizing.engine.codes import ARRAY_OPS
+from actuator_selection.sizing.engine.detail import DecidedCells
 from actuator_selection.sizing.selection import VALUE_OF, Candidate, Check, Selection
 
 
@@ -120,6 +131,216 @@ def coded_check_body(named: Check | Rule, brief: Brief) -> dict[str, Any]:
     }
 
 
+class CodedChecks:
+    """A batch candidate's ``checks`` as :func:`coded_check_body` gives them, written as
+    JSON from the engine's arrays (:meth:`of`): the checks of every candidate detailed
+    with one set of decisions (a :class:`~actuator_selection.sizing.engine.detail.
+    DecidedCells`) at once, rule by rule (:func:`coded_checks_json`), with no object
+    per check. One writer serves a slice of a batch: it keeps what it wrote for the
+    decisions it was asked about."""
+
+    def __init__(self) -> None:
+        self._written: dict[int, tuple[DecidedCells, list[bytes]]] = {}
+
+    def of(self, candidate: Candidate) -> Any:
+        """``candidate``'s checks: their JSON (``orjson.Fragment``), or, where its checks
+        are built, one dict each (:func:`coded_check_body`)."""
+        found = candidate.decided()
+        if found is None:
+            with codes_only():  # the checks' messages as codes and params, no English
+                return [coded_check_body(*named) for named in candidate.briefs()]
+        decided, cell = found
+        written = self._written.get(id(decided))
+        if written is None:
+            written = self._written[id(decided)] = (decided, coded_checks_json(decided))
+        return orjson.Fragment(written[1][cell])
+
+
+def coded_checks_json(decided: DecidedCells) -> list[bytes]:
+    """Each cell's ``checks`` of ``decided`` as JSON, in the cells' order: the text
+    :func:`dump_json` writes of :func:`coded_check_body` of each check, written rule by
+    rule for every cell at once (numpy's string functions join each check's members).
+    The messages' codes and params come from the same words: a rule's ``no_data``
+    message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
+    or :class:`~actuator_selection.sizing.checks.Variants` message from the arrays, any
+    other message cell by cell in codes only."""
+    columns = decided.columns
+    cells = columns.statuses.shape[1]
+    operands: list[Operands] = []  # over the cells, computed once if a rule needs them
+    written = []
+    for k, rule in enumerate(decided.rules):
+        values, limits = columns.values[k], columns.limits[k]
+        with np.errstate(all="ignore"):  # margin_percent, utilisation (sizing.checks.rule)
+            rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)
+            margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
+            share = np.where(rated, values / limits, math.nan)
+        check: Any = b'{"name":' + dump_json(rule.name) + b',"status":'
+        check = _add(check, _STATUS_JSON[columns.statuses[k]], b',"value":', json_items(values))
+        check = _add(check, b',"limit":', json_items(limits))
+        check = _add(check, b',"unit":' + dump_json(rule.unit))
+        check = _add(check, b',"reference":' + dump_json(rule.reference))
+        check = _add(check, b',"message_code":', _messages(decided, k, operands, cells))
+        approximate = np.where(columns.approximate[k], b"true", b"false")
+        check = _add(check, b',"approximate":', approximate, b',"margin_percent":')
+        check = _add(check, json_items(margin), b',"utilisation":', json_items(share), b"}")
+        written.append(check.tolist())
+    return [b"[" + b",".join(row) + b"]" for row in zip(*written, strict=True)]
+
+
+def _add(*parts: Any) -> Any:
+    """``parts`` (byte strings and arrays of them) joined item by item."""
+    out = parts[0]
+    for part in parts[1:]:
+        out = np.strings.add(out, part)
+    return out
+
+
+_STATUS_JSON = np.array([dump_json(s.value) for s in STATUS_BY_CODE], dtype=np.bytes_)
+"""The API's status names as JSON strings, by status code."""
+_WORDED = np.array([s in (Status.PASS, Status.FAIL, Status.WARN) for s in STATUS_BY_CODE])
+"""By status code, whether a rule's own message words it (not no data, not not applicable)."""
+
+
+def _messages(
+    decided: DecidedCells, k: int, operands: list[Operands], cells: int
+) -> npt.NDArray[np.bytes_]:
+    """Rule ``k``'s ``message_code`` and ``message_params`` members of each cell (the
+    code's JSON, then ``,"message_params":`` and the params' JSON)."""
+    rule = decided.rules[k]
+    columns = decided.columns
+    statuses, first = columns.statuses[k], columns.first_missing[k]
+    out = np.full(cells, b"", dtype=object)
+    done = np.zeros(cells, dtype=np.bool_)
+    no_data = statuses == NO_DATA
+    if no_data.any():
+        said = [_message_json(rule.no_data_message(r)) for r in range(len(rule.requires))]
+        out[no_data] = np.array(said, dtype=object)[first[no_data]]
+        done |= no_data
+    if isinstance(rule.message, Said | Variants):
+        worded = _WORDED[statuses] & (first < 0)  # a floor's failure wraps the message
+        if worded.any():
+            if not operands:
+                operands.append(decided.operand_columns())
+            cell = _Cells(operands[0], statuses, columns.values[k], columns.limits[k], worded)
+            out[worded] = _declared_json(rule.message, cell)
+            done |= worded
+    if not done.all():  # any other message: worded cell by cell, in codes only
+        values, limits = columns.values[k].tolist(), columns.limits[k].tolist()
+        with codes_only():
+            for j in np.flatnonzero(~done).tolist():
+                missing = int(first[j])
+                message = rule.words(
+                    decided.operands_of(j),
+                    STATUS_BY_CODE[statuses[j]],
+                    values[j],
+                    limits[j],
+                    None if missing < 0 else missing,
+                )
+                out[j] = _message_json(message)
+    return out.astype(np.bytes_)
+
+
+def _message_json(message: str) -> bytes:
+    """A message's ``message_code`` and ``message_params`` members, the first one's name
+    left out (as :func:`_messages` writes them)."""
+    code = message.code if isinstance(message, Phrase) else None
+    return dump_json(code) + b',"message_params":' + dump_json(jsonable_params(message))
+
+
+@dataclass(frozen=True, slots=True)
+class _Cells:
+    """The cells of one rule whose declared message is written: the operands, statuses,
+    values and limits of every cell detailed, and which of them (``mask``)."""
+
+    q: Operands
+    statuses: npt.NDArray[np.int8]
+    values: npt.NDArray[np.float64]
+    limits: npt.NDArray[np.float64]
+    mask: npt.NDArray[np.bool_]
+
+    def term(self, term: Term) -> npt.NDArray[Any]:
+        """``term`` over the cells of :attr:`mask`."""
+        with np.errstate(all="ignore"):
+            found = term(self.q, ARRAY_OPS, self.values, self.limits)
+        return np.broadcast_to(found, self.mask.shape)[self.mask]
+
+    def within(self, where: npt.NDArray[np.bool_]) -> _Cells:
+        """The cells of :attr:`mask` where ``where`` (over those cells) holds."""
+        mask = self.mask.copy()
+        mask[self.mask] = where
+        return _Cells(self.q, self.statuses, self.values, self.limits, mask)
+
+
+def _declared_json(message: Said | Variants, cells: _Cells) -> npt.NDArray[np.bytes_]:
+    """:func:`_message_json` of a declared message (:class:`~actuator_selection.sizing.
+    checks.Said`, :class:`~actuator_selection.sizing.checks.Variants`) over ``cells``,
+    each decided pass, fail or warn: what the message says of each, from the arrays."""
+    if isinstance(message, Said):
+        code = np.array([dump_json(c) for c in message.codes], dtype=np.bytes_)
+        status_index = _STATUS_INDEX[cells.statuses[cells.mask]]
+        said: npt.NDArray[np.bytes_] = _add(
+            code[status_index], b',"message_params":', _params_json(message, cells)
+        )
+        return said
+    out = np.empty(int(cells.mask.sum()), dtype=object)
+    left = np.ones(out.shape, dtype=np.bool_)
+    for condition, variant in message.cases:
+        holds = left if condition is None else left & cells.term(condition)
+        if holds.any():
+            out[holds] = _declared_json(variant, cells.within(holds))
+        left &= ~holds
+    return out.astype(np.bytes_)
+
+
+def _params_json(message: Said, cells: _Cells) -> Any:
+    """The params of ``message`` over ``cells`` as JSON objects."""
+    if not message.params:
+        return b"{}"
+    out: Any = b"{"
+    for n, (name, param) in enumerate(message.params):
+        out = _add(out, (b"," if n else b"") + dump_json(name) + b":", _param_json(param, cells))
+    return np.strings.add(out, b"}")
+
+
+def _param_json(param: Any, cells: _Cells) -> Any:
+    """One param of a :class:`~actuator_selection.sizing.checks.Said` over ``cells``, as
+    :func:`~actuator_selection.i18n.check_messages.jsonable_params` has it written."""
+    if isinstance(param, Said):
+        code = np.array([dump_json(c) for c in param.codes], dtype=np.bytes_)
+        status_index = _STATUS_INDEX[cells.statuses[cells.mask]]
+        return _add(
+            b'{"code":', code[status_index], b',"params":', _params_json(param, cells), b"}"
+        )
+    if isinstance(param, Pick):
+        holds = cells.term(param.condition).astype(np.bool_)
+        out = np.empty(holds.shape, dtype=object)
+        for where, chosen in ((holds, param.if_true), (~holds, param.if_false)):
+            if where.any():
+                out[where] = np.broadcast_to(_param_json(chosen, cells.within(where)), where.sum())
+        return out.astype(np.bytes_)
+    if callable(param):
+        return _param_items(cells.term(param))
+    return dump_json(jsonable(param))  # a constant: words, a clause or None
+
+
+_STATUS_INDEX = np.array([list(Status).index(s) for s in STATUS_BY_CODE], dtype=np.intp)
+"""By status code, the status's place in :class:`Status` (:attr:`Said.codes`' order)."""
+
+
+def _param_items(column: npt.NDArray[Any]) -> npt.NDArray[np.bytes_]:
+    """Each item of ``column`` as :func:`~actuator_selection.i18n.check_messages.
+    jsonable_params` has it written: numbers as they are, a float that is NaN or infinite
+    as its ``repr`` (a string)."""
+    out = json_items(column)
+    if column.dtype.kind == "f":
+        odd = ~np.isfinite(column)
+        if odd.any():
+            out = out.astype(object)
+            out[odd] = [dump_json(repr(x)) for x in column[odd].tolist()]
+            out = out.astype(np.bytes_)
+    return out
+
+
 def batch_candidate_body(
     candidate: Candidate,
     *,
@@ -128,13 +349,15 @@ def batch_candidate_body(
     controllers: list[dict[str, Any]] | None,
     controllers_summary: dict[str, Any],
     localize: Localize = english,
+    coded: CodedChecks | None = None,
 ) -> dict[str, Any]:
     """A batch candidate (``BatchCandidateOut``): with ``include_messages``, the detail's
     candidate in words (:func:`candidate_body`, the answer as it was before messages were
     asked for); without, the same less every text: no ``reasons``, no check's
     ``message``, no ``controllers_note`` (``controllers_summary`` as
-    :func:`coded_summary` gives it), their codes and params given. Either way
-    ``reason_checks`` names the checks that do not pass."""
+    :func:`coded_summary` gives it), their codes and params given, the checks written by
+    ``coded`` (a writer of the batch's slice; None: one of this candidate's own). Either
+    way ``reason_checks`` names the checks that do not pass."""
     if include_messages:
         body = candidate_body(
             candidate,
@@ -148,8 +371,7 @@ def batch_candidate_body(
     body = _figures(candidate)
     body["reason_checks"] = candidate.open_checks
     if include_checks:
-        with codes_only():  # the checks' messages as codes and params, no English written
-            body["checks"] = [coded_check_body(*named) for named in candidate.briefs()]
+        body["checks"] = (coded or CodedChecks()).of(candidate)
     if controllers is not None:
         body["controllers"] = controllers
     body.update(controllers_summary)

@@ -41,16 +41,24 @@ __all__ = [
     "Message",
     "Operands",
     "Ops",
+    "Pick",
     "Real",
     "Requirement",
     "Rule",
+    "Said",
     "Status",
+    "Term",
     "Truth",
+    "Variants",
+    "compared",
+    "given_limit",
+    "given_value",
     "larger",
     "margin_percent",
     "outcome",
     "overload",
     "published",
+    "said",
 ]
 
 WORDS: Final = {
@@ -185,6 +193,12 @@ class DeferredChecks(Deferred):
     def open_names(self) -> list[str]:
         """The names of the checks that fail, warn or lack data, in the rules' order,
         without building or wording them."""
+        raise NotImplementedError
+
+    def decided(self) -> tuple[Any, int]:
+        """The engine's decisions of the cells detailed with these (a
+        :class:`~actuator_selection.sizing.engine.detail.DecidedCells`), and which cell
+        these are: a batch writes every cell's checks from its arrays at once."""
         raise NotImplementedError
 
 
@@ -509,10 +523,15 @@ class Rule:
         candidate's reasons), and building each check first cost a third of that."""
         if status is Status.NO_DATA:
             assert missing is not None
-            return self._no_data[missing][2]
+            return self.no_data_message(missing)
         message = self.message(q, status, value, limit)
         # A failure at the least value for every J_A (lower_bound) names its missing J_A.
         return message if missing is None else _floor_message(message)
+
+    def no_data_message(self, missing: int) -> str:
+        """The message of ``no_data`` where the requirement ``missing`` (an index into
+        :attr:`requires`) is the first one not met."""
+        return self._no_data[missing][2]
 
     def _others_met(self, q: Operands) -> bool:
         """Whether every requirement but the first is met (floats)."""
@@ -543,6 +562,94 @@ def _floor_message(message: str) -> str:
 def outcome(status: Status) -> str:
     """The message variant of ``status`` for a rule that only passes or fails."""
     return "pass" if status is Status.PASS else "fail"
+
+
+Term = Callable[[Operands, Ops, Any, Any], Any]
+"""A message's param or condition, from the operands, the ops, and the check's value and
+limit: a float for one cell, an array over many (as a rule's :data:`Formula`)."""
+
+
+def given_value(q: Operands, xp: Ops, value: Any, limit: Any) -> Any:
+    """The check's value, as a message's param."""
+    return value
+
+
+def given_limit(q: Operands, xp: Ops, value: Any, limit: Any) -> Any:
+    """The check's limit, as a message's param."""
+    return limit
+
+
+@dataclass(frozen=True, slots=True)
+class Said:
+    """A rule's :data:`Message` (or a clause of one) declared rather than written out: its
+    code and its params in their order. Being declared, the same message is also written
+    for many cells at once from the engine's arrays (a batch's codes and params,
+    ``services/presenters/batch.py``), its :data:`Term` params run on arrays as the rules'
+    formulas do, with no call per check.
+
+    ``code`` may name the check's ``{outcome}`` (:func:`outcome`: pass, fail) or its
+    ``{status}`` (pass, fail, warn). A param is a :data:`Term`, a nested :class:`Said` (a
+    clause), a :class:`Pick` between two, or a constant (words, a clause, None)."""
+
+    code: str
+    params: tuple[tuple[str, Any], ...] = ()
+    codes: tuple[str, ...] = field(init=False, repr=False, compare=False)
+    """``code`` for each status, in :class:`Status`' order."""
+
+    def __post_init__(self) -> None:
+        codes = tuple(self.code.format(outcome=outcome(s), status=s.value) for s in Status)
+        object.__setattr__(self, "codes", codes)
+
+    def __call__(self, q: Operands, status: Status, value: Any, limit: Any) -> str:
+        params = {name: said(p, q, status, value, limit) for name, p in self.params}
+        return phrase(self.codes[_STATUS_INDEX[status]], **params)
+
+
+_STATUS_INDEX: Final = {s: i for i, s in enumerate(Status)}
+
+
+@dataclass(frozen=True, slots=True)
+class Pick:
+    """A param that is ``if_true`` where ``condition`` (a :data:`Term`) holds, else
+    ``if_false`` (each a param of :class:`Said`)."""
+
+    condition: Term
+    if_true: Any
+    if_false: Any
+
+
+@dataclass(frozen=True, slots=True)
+class Variants:
+    """A rule's :data:`Message` that is the first of ``cases`` whose condition (a
+    :data:`Term`; None: always) holds."""
+
+    cases: tuple[tuple[Term | None, Said], ...]
+
+    def __call__(self, q: Operands, status: Status, value: Any, limit: Any) -> str:
+        for condition, message in self.cases:
+            if condition is None or condition(q, FLOAT_OPS, value, limit):
+                return message(q, status, value, limit)
+        raise ValueError("no variant of the message holds")
+
+
+def said(param: Any, q: Operands, status: Status, value: Any, limit: Any) -> Any:
+    """A param of :class:`Said` for one cell."""
+    if isinstance(param, Said):
+        return param(q, status, value, limit)
+    if isinstance(param, Pick):
+        chosen = param.if_true if param.condition(q, FLOAT_OPS, value, limit) else param.if_false
+        return said(chosen, q, status, value, limit)
+    if callable(param):
+        return param(q, FLOAT_OPS, value, limit)
+    return param  # a constant: words, a clause or None
+
+
+def compared(name: str, *extra: tuple[str, Any], by_status: bool = False) -> Said:
+    """The message that says a check's value against its limit: the code
+    ``{name}.{outcome}`` (or ``.{status}``), the params ``value``, ``limit``, then
+    ``extra``."""
+    code = f"{name}.{{status}}" if by_status else f"{name}.{{outcome}}"
+    return Said(code, (("value", given_value), ("limit", given_limit), *extra))
 
 
 def larger(a: Real, b: Real, xp: Ops) -> Real:

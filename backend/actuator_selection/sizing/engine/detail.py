@@ -7,9 +7,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.application import Application
@@ -20,7 +22,9 @@ from actuator_selection.sizing.engine.arrays import (
     PASS,
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
+    BoolArray,
     CodeArray,
+    FloatArray,
     IndexArray,
 )
 from actuator_selection.sizing.engine.block import Block
@@ -55,21 +59,19 @@ def detail_cells(
     failing, cells_failing = np.nonzero(codes > PASS)
     for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
         not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
-    decided = _Decided(
+    decided = DecidedCells(
         rules,
-        list(
-            zip(
-                codes.tolist(),
-                checks.values[:, rows, columns].tolist(),
-                checks.limits[:, rows, columns].tolist(),
-                checks.approximate[:, rows, columns].tolist(),
-                checks.first_missing[:, rows, columns].tolist(),
-                strict=True,
-            )
+        RuleColumns(
+            statuses=codes,
+            values=checks.values[:, rows, columns],
+            limits=checks.limits[:, rows, columns],
+            approximate=checks.approximate[:, rows, columns],
+            first_missing=checks.first_missing[:, rows, columns],
         ),
         not_passing,
         block.operands,
         cells,
+        lambda array: _picked_array(array, shape, rows, columns),
     )
     torques = zip(
         cells(block.accel_torque),
@@ -116,6 +118,27 @@ Column = tuple[list[int], list[float], list[float], list[bool], list[int]]
 approximations and first missing requirements (−1: none)."""
 
 
+def _picked_array(
+    array: Any, shape: tuple[int, ...], rows: IndexArray, columns: IndexArray
+) -> npt.NDArray[Any]:
+    """The cells (``rows``, ``columns``) of ``array`` broadcast to ``shape`` (cases ×
+    actuators), as an array over the cells: a column of cases, a row of actuators and a
+    scalar are indexed as they are, without broadcasting them first."""
+    a = np.asarray(array)
+    picked: npt.NDArray[Any]
+    if a.size == 1:  # a scalar, or one cell (a 1 × 1 view's arrays): the same everywhere
+        picked = np.full(rows.size, a.reshape(()), dtype=a.dtype)
+    elif a.ndim == 2 and a.shape[1] == 1:  # a column of cases
+        picked = a[rows, 0]
+    elif a.ndim == 1 and a.shape[0] == shape[1]:  # a row of actuators
+        picked = a[columns]
+    elif a.shape == shape:
+        picked = a[rows, columns]
+    else:
+        picked = np.broadcast_to(a, shape)[rows, columns]
+    return picked
+
+
 def _picked(array: Any, shape: tuple[int, ...], rows: IndexArray, columns: IndexArray) -> list[Any]:
     """The cells (``rows``, ``columns``) of ``array`` broadcast to ``shape`` (cases ×
     actuators), as Python values: a column of cases, a row of actuators and a scalar
@@ -134,22 +157,55 @@ def _picked(array: Any, shape: tuple[int, ...], rows: IndexArray, columns: Index
     return picked
 
 
-class _Decided:
-    """The rules' decisions for the cells of a block that are detailed."""
+@dataclass(frozen=True, slots=True, eq=False)
+class RuleColumns:
+    """The rules' decisions for the cells detailed, each array rules × cells: what
+    :meth:`~actuator_selection.sizing.checks.Rule.report` reports of each cell's checks."""
 
-    __slots__ = ("_cells", "_operands", "_source", "columns", "not_passing", "rules")
+    statuses: CodeArray
+    """Status codes (:data:`STATUS_BY_CODE`)."""
+    values: FloatArray
+    """The value checked; NaN where unknown (the check reports None)."""
+    limits: FloatArray
+    """The limit; NaN where there is none (no data, or beyond a zone's last speed)."""
+    approximate: BoolArray
+    first_missing: CodeArray
+    """Index into the rule's requirements of the first one missing; −1 where none is."""
+
+
+class DecidedCells:
+    """The rules' decisions for the cells of a block that are detailed (:attr:`columns`),
+    and the operands they were decided from, cell by cell (:meth:`operands_of`) or as
+    arrays over the cells (:meth:`operand_columns`)."""
+
+    __slots__ = (
+        "_cell_arrays",
+        "_cells",
+        "_lists",
+        "_operands",
+        "_source",
+        "columns",
+        "not_passing",
+        "rules",
+    )
 
     def __init__(
         self,
         rules: Sequence[Rule],
-        columns: list[Column],
+        columns: RuleColumns,
         not_passing: list[list[int]],
         source: Operands,
         cells: Callable[[Any], list[Any]],
+        cell_arrays: Callable[[Any], npt.NDArray[Any]],
     ) -> None:
         self.rules, self.columns, self.not_passing = rules, columns, not_passing
-        self._source, self._cells = source, cells
+        self._source, self._cells, self._cell_arrays = source, cells, cell_arrays
         self._operands: list[list[Any]] | None = None
+        self._lists: list[Column] | None = None
+
+    def operand_columns(self) -> Operands:
+        """Each of :class:`Operands`' fields as an array over the cells detailed."""
+        return Operands._make([self._cell_arrays(operand) for operand in self._source])
 
     def operands_of(self, cell: int) -> Operands:
         """What the rules computed from for ``cell``: needed only to word a check, so
@@ -159,10 +215,26 @@ class _Decided:
             self._operands = [self._cells(operand) for operand in self._source]
         return Operands._make([field[cell] for field in self._operands])
 
+    def _columns(self) -> list[Column]:
+        """:attr:`columns` rule by rule as Python values, for the checks built one by one."""
+        if self._lists is None:
+            c = self.columns
+            self._lists = list(
+                zip(
+                    c.statuses.tolist(),
+                    c.values.tolist(),
+                    c.limits.tolist(),
+                    c.approximate.tolist(),
+                    c.first_missing.tolist(),
+                    strict=True,
+                )
+            )
+        return self._lists
+
     def check(self, k: int, q: Operands, cell: int) -> Check:
         """Rule ``k``'s check of ``cell`` (its operands ``q``), with its words: a batch
         candidate's checks are built only to be listed in words (``include_checks``)."""
-        codes, values, limits, approximate, missing = self.columns[k]
+        codes, values, limits, approximate, missing = self._columns()[k]
         first = missing[cell]
         return self.rules[k].report(
             q,
@@ -178,7 +250,7 @@ class _Decided:
         sizing.checks.Brief` (:meth:`~actuator_selection.sizing.checks.Rule.brief`)."""
         out = []
         for rule, (codes, values, limits, approximate, missing) in zip(
-            self.rules, self.columns, strict=True
+            self.rules, self._columns(), strict=True
         ):
             first = missing[cell]
             brief = rule.brief(
@@ -195,8 +267,9 @@ class _Decided:
     def reasons(self, q: Operands, cell: int) -> list[str]:
         """The words of the rules that do not pass for ``cell`` (its operands ``q``)."""
         out = []
+        columns = self._columns()
         for k in self.not_passing[cell]:
-            codes, values, limits, _, missing = self.columns[k]
+            codes, values, limits, _, missing = columns[k]
             first = missing[cell]
             out.append(
                 self.rules[k].words(
@@ -216,7 +289,7 @@ class _DecidedChecks(DeferredChecks):
 
     __slots__ = ("_cell", "_decided")
 
-    def __init__(self, decided: _Decided, cell: int) -> None:
+    def __init__(self, decided: DecidedCells, cell: int) -> None:
         self._decided, self._cell = decided, cell
 
     def resolve(self) -> tuple[Check, ...]:
@@ -237,6 +310,9 @@ class _DecidedChecks(DeferredChecks):
     def open_names(self) -> list[str]:
         rules = self._decided.rules
         return [rules[k].name for k in self._decided.not_passing[self._cell]]
+
+    def decided(self) -> tuple[DecidedCells, int]:
+        return self._decided, self._cell
 
 
 def _cycle_torques(

@@ -16,6 +16,7 @@ from actuator_selection.sizing.checks.rule import (
     Real,
     Rule,
     Status,
+    compared,
     larger,
     outcome,
     published,
@@ -200,17 +201,6 @@ def _drive_voltage(q: Operands, xp: Ops) -> Real:
     return electrical.needed_voltage_v(_resistive_sum(q), _inductive_drop(q), xp.sqrt)
 
 
-def _voltage_message(q: Operands, status: Status, volts: float, available: float) -> str:
-    return phrase(
-        f"drive_voltage.{outcome(status)}",
-        value=volts,
-        limit=available,
-        speed_rpm=q.speed_rpm,
-        dc_bus_voltage_v=q.dc_bus_voltage_v,
-        printed_v=float(_resistive_sum(q)),
-    )
-
-
 DRIVE_VOLTAGE = Rule(
     name="drive_voltage",
     reference="Eq. 521.2 with ωL·I in quadrature",
@@ -228,7 +218,12 @@ DRIVE_VOLTAGE = Rule(
             N_("controller listed for the actuator (Table 521.1) on a DC bus class it runs on"),
         ),
     ),
-    message=_voltage_message,
+    message=compared(
+        "drive_voltage",
+        ("speed_rpm", lambda q, xp, value, limit: q.speed_rpm),
+        ("dc_bus_voltage_v", lambda q, xp, value, limit: q.dc_bus_voltage_v),
+        ("printed_v", lambda q, xp, value, limit: _resistive_sum(q)),
+    ),
 )
 """The controller's output voltage at the load speed n_2 and I_max: Eq. 521.2 with the
 inductive drop ω·L·I in quadrature, U = √((n·i·K_E + I·R)² + (ω·L·I)²), all line-to-line

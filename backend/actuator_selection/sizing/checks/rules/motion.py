@@ -11,16 +11,9 @@ from __future__ import annotations
 
 from typing import Final
 
-from actuator_selection.i18n.check_messages import check_words, phrase
+from actuator_selection.i18n.check_messages import check_words
 from actuator_selection.i18n.messages import N_
-from actuator_selection.sizing.checks.rule import (
-    Message,
-    Operands,
-    Rule,
-    Status,
-    outcome,
-    published,
-)
+from actuator_selection.sizing.checks.rule import Rule, compared, published
 
 INERTIA_RATIO_LIMIT = 3.0
 """J_L ≤ 3·J_A, the pre-selection rule of Table 515.1."""
@@ -58,10 +51,6 @@ check_words(WORDS)
 # --- 1. max_speed: n_2 ≤ n_max (Table 515.1) ------------------------------------------------
 
 
-def _max_speed_message(q: Operands, status: Status, n_2: float, n_max: float) -> str:
-    return phrase(f"max_speed.{outcome(status)}", value=n_2, limit=n_max)
-
-
 MAX_SPEED = Rule(
     name="max_speed",
     reference="Table 515.1",
@@ -69,16 +58,12 @@ MAX_SPEED = Rule(
     value=lambda q, xp: q.speed_rpm,
     limit=lambda q, xp: q.max_speed_rpm,
     requires=(published("max_speed_rpm", N_("maximum output speed n_max")),),
-    message=_max_speed_message,
+    message=compared("max_speed"),
 )
 """n_2 ≤ n_max (Table 515.1)."""
 
 
 # --- 2. inertia_ratio: J_L ≤ 3·J_A (Table 515.1, footnote 1) --------------------------------
-
-
-def _inertia_ratio_message(q: Operands, status: Status, j_l: float, limit: float) -> str:
-    return phrase(f"inertia_ratio.{status.value}", value=j_l, limit=limit)
 
 
 INERTIA_RATIO = Rule(
@@ -89,19 +74,12 @@ INERTIA_RATIO = Rule(
     limit=lambda q, xp: INERTIA_RATIO_LIMIT * q.inertia_kgm2,
     requires=(published("inertia_kgm2", N_("moment of inertia J_A")),),
     binding=lambda q, xp: q.high_dynamics,
-    message=_inertia_ratio_message,
+    message=compared("inertia_ratio", by_status=True),
 )
 """J_L ≤ 3·J_A (Table 515.1); binding for highly dynamic applications only, a warning else."""
 
 
 # --- 3., 4. peak_torque, decel_torque: T_1, |T_3| ≤ T_max (Eq. 514.1) -----------------------
-
-
-def _torque_message(rule: str) -> Message:
-    def message(q: Operands, status: Status, torque: float, t_max: float) -> str:
-        return phrase(f"{rule}.{outcome(status)}", value=torque, limit=t_max)
-
-    return message
 
 
 _TORQUE_REQUIRES = (
@@ -116,7 +94,7 @@ PEAK_TORQUE = Rule(
     value=lambda q, xp: abs(q.accel_torque_nm),
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
-    message=_torque_message("peak_torque"),
+    message=compared("peak_torque"),
     lower_bound=lambda q, xp: q.accel_torque_floor_nm,
 )
 """|T_1| ≤ T_max (Eq. 514.1); T_1 is positive in the chapter's cycle, negative where a
@@ -129,7 +107,7 @@ DECEL_TORQUE = Rule(
     value=lambda q, xp: abs(q.decel_torque_nm),
     limit=lambda q, xp: q.max_torque_nm,
     requires=_TORQUE_REQUIRES,
-    message=_torque_message("decel_torque"),
+    message=compared("decel_torque"),
     lower_bound=lambda q, xp: q.decel_torque_floor_nm,
 )
 """|T_3| ≤ T_max (Eq. 514.1): braking loads the gear as much as accelerating."""

@@ -14,21 +14,23 @@ heating over the repeating cycle, and the speed the heating follows (Fig. 517.1,
 
 from __future__ import annotations
 
-import math
 from typing import Final
 
 from actuator_selection.i18n.check_messages import check_words, phrase
 from actuator_selection.i18n.messages import N_
 from actuator_selection.sizing.checks.rule import (
-    FLOAT_OPS,
     Operands,
     Ops,
+    Pick,
     Real,
     Requirement,
     Rule,
-    Status,
+    Said,
     Truth,
-    outcome,
+    Variants,
+    compared,
+    given_limit,
+    given_value,
     published,
 )
 
@@ -159,36 +161,78 @@ def _continuous_limit(q: Operands, xp: Ops) -> Real:
     return xp.where(q.has_zone, q.zone_torque_nm, xp.where(current, falling, rectangle))
 
 
-def _continuous_message(q: Operands, status: Status, t_rms: float, limit: float) -> str:
-    result = outcome(status)
-    n_av = q.mean_speed_rpm
-    if q.has_zone:
-        if math.isnan(limit):
-            return phrase(
+def _beyond_zone(q: Operands, xp: Ops, value: Real, limit: Real) -> Truth:
+    """Where n_av lies beyond a published zone's last speed (the limit is NaN there)."""
+    return q.has_zone & xp.isnan(limit)
+
+
+def _mean_speed(q: Operands, xp: Ops, value: Real, limit: Real) -> Real:
+    return q.mean_speed_rpm
+
+
+def _zone_max_speed(q: Operands, xp: Ops, value: Real, limit: Real) -> Real:
+    return q.zone_max_speed_rpm
+
+
+def _slope(q: Operands, xp: Ops, value: Real, limit: Real) -> Real:
+    return q.no_load_torque_slope_nm_per_rpm
+
+
+_continuous_message = Variants(
+    (
+        (
+            _beyond_zone,
+            Said(
                 "continuous_duty.beyond_zone",
-                value=t_rms,
-                mean_speed_rpm=n_av,
-                zone_max_speed_rpm=q.zone_max_speed_rpm,
-            )
-        return phrase(f"continuous_duty.{result}", value=t_rms, limit=limit, mean_speed_rpm=n_av)
-    slope = q.no_load_torque_slope_nm_per_rpm
-    if not (math.isnan(slope) or math.isnan(q.stall_torque_nm)):
-        return phrase(
-            f"continuous_duty.current_{result}",
-            value=t_rms,
-            limit=limit,
-            mean_speed_rpm=n_av,
-            stall_torque_nm=q.stall_torque_nm,
-            slope_nm_per_rpm=slope,
-        )
-    what = _ALLOWABLE_TORQUE if math.isnan(q.stall_torque_nm) else _STALL_TORQUE
-    return phrase(
-        f"continuous_duty.rectangle_{result}",
-        value=t_rms,
-        limit=limit,
-        mean_speed_rpm=n_av,
-        what=what,
+                (
+                    ("value", given_value),
+                    ("mean_speed_rpm", _mean_speed),
+                    ("zone_max_speed_rpm", _zone_max_speed),
+                ),
+            ),
+        ),
+        (
+            lambda q, xp, value, limit: q.has_zone,
+            compared("continuous_duty", ("mean_speed_rpm", _mean_speed)),
+        ),
+        (
+            lambda q, xp, value, limit: xp.not_(
+                xp.isnan(q.no_load_torque_slope_nm_per_rpm) | xp.isnan(q.stall_torque_nm)
+            ),
+            Said(
+                "continuous_duty.current_{outcome}",
+                (
+                    ("value", given_value),
+                    ("limit", given_limit),
+                    ("mean_speed_rpm", _mean_speed),
+                    ("stall_torque_nm", lambda q, xp, value, limit: q.stall_torque_nm),
+                    ("slope_nm_per_rpm", _slope),
+                ),
+            ),
+        ),
+        (
+            None,
+            Said(
+                "continuous_duty.rectangle_{outcome}",
+                (
+                    ("value", given_value),
+                    ("limit", given_limit),
+                    ("mean_speed_rpm", _mean_speed),
+                    (
+                        "what",
+                        Pick(
+                            lambda q, xp, value, limit: xp.isnan(q.stall_torque_nm),
+                            _ALLOWABLE_TORQUE,
+                            _STALL_TORQUE,
+                        ),
+                    ),
+                ),
+            ),
+        ),
     )
+)
+"""``continuous_duty`` in words: beyond the zone, against the zone's edge, against the
+current-based edge, or against the rectangle (T_0, else the allowable torque)."""
 
 
 _CONTINUOUS_LIMIT_DATA = Requirement(
@@ -248,30 +292,42 @@ def _speed_limit(q: Operands, xp: Ops) -> Real:
     return xp.where(q.has_zone, q.zone_max_speed_rpm, published_speed)
 
 
-def _speed_message(q: Operands, status: Status, n_th: float, limit: float) -> str:
-    if q.has_zone:
-        what = _ZONE_SPEED
-    elif not math.isnan(q.continuous_speed_rpm):
-        what = _ALLOWABLE_SPEED
-    else:
-        what = _RATED_SPEED
-    model = phrase(
-        "continuous_speed.model",
-        tau_s=q.thermal_time_constant_s,
-        assumed=_ASSUMED if q.thermal_time_constant_assumed else None,
-    )
-    return phrase(
-        f"continuous_speed.{outcome(status)}",
-        value=n_th,
-        limit=limit,
-        mean_speed_rpm=q.mean_speed_rpm,
-        speed_what=what,
-        model=model,
-    )
+def _tau(q: Operands, xp: Ops, value: Real, limit: Real) -> Real:
+    return q.thermal_time_constant_s
+
+
+def _assumed(q: Operands, xp: Ops, value: Real, limit: Real) -> Truth:
+    return q.thermal_time_constant_assumed
 
 
 _ASSUMED = phrase("thermal_peak.assumed")
 """The clause "assumed" of the thermal model (no params: one for every message)."""
+
+_speed_message = compared(
+    "continuous_speed",
+    ("mean_speed_rpm", _mean_speed),
+    (
+        "speed_what",
+        Pick(
+            lambda q, xp, value, limit: q.has_zone,
+            _ZONE_SPEED,
+            Pick(
+                lambda q, xp, value, limit: xp.isnan(q.continuous_speed_rpm),
+                _RATED_SPEED,
+                _ALLOWABLE_SPEED,
+            ),
+        ),
+    ),
+    (
+        "model",
+        Said(
+            "continuous_speed.model",
+            (("tau_s", _tau), ("assumed", Pick(_assumed, _ASSUMED, None))),
+        ),
+    ),
+)
+"""``continuous_speed`` in words: against the zone's last, the allowable continuous or
+the rated speed, with the thermal model it follows."""
 
 # --- 6. thermal_peak: the cycle's heating peak ≤ the continuous limit (Fig. 520.1 model) ------
 
@@ -292,37 +348,66 @@ def _heating_limit(q: Operands, xp: Ops) -> Real:
     return xp.where(_on_current(q, xp), q.stall_torque_nm, _continuous_limit(q, xp))
 
 
-def _thermal_message(q: Operands, status: Status, peak: float, limit: float) -> str:
-    tau, t_0 = q.thermal_time_constant_s, q.cycle_s
-    ratio = t_0 / tau
-    model = phrase(
-        "thermal_peak.model",
-        tau_s=tau,
-        assumed=_ASSUMED if q.thermal_time_constant_assumed else None,
-        cycle_s=t_0,
-        ratio=ratio,
-        regime=phrase(
-            "thermal_peak.short" if ratio <= 0.1 else "thermal_peak.long",
-            rms_torque_nm=q.rms_torque_nm,
+def _cycle_ratio(q: Operands, xp: Ops, value: Real, limit: Real) -> Real:
+    """t_0/τ_th: how short the cycle is against the winding's thermal time constant."""
+    return q.cycle_s / q.thermal_time_constant_s
+
+
+def _regime(rule: str) -> Said:
+    return Said(rule, (("rms_torque_nm", lambda q, xp, value, limit: q.rms_torque_nm),))
+
+
+_THERMAL_MODEL = Said(
+    "thermal_peak.model",
+    (
+        ("tau_s", _tau),
+        ("assumed", Pick(_assumed, _ASSUMED, None)),
+        ("cycle_s", lambda q, xp, value, limit: q.cycle_s),
+        ("ratio", _cycle_ratio),
+        (
+            "regime",
+            Pick(
+                lambda q, xp, value, limit: _cycle_ratio(q, xp, value, limit) <= 0.1,
+                _regime("thermal_peak.short"),
+                _regime("thermal_peak.long"),
+            ),
         ),
+    ),
+)
+"""The thermal model of ``thermal_peak``'s words: τ_th, the cycle against it, and whether
+T_rms governs."""
+
+_thermal_message = Variants(
+    (
+        (
+            lambda q, xp, value, limit: xp.isnan(limit),
+            Said(
+                "thermal_peak.beyond_zone",
+                (
+                    ("value", given_value),
+                    ("mean_speed_rpm", _mean_speed),
+                    ("zone_max_speed_rpm", _zone_max_speed),
+                    ("model", _THERMAL_MODEL),
+                ),
+            ),
+        ),
+        (
+            lambda q, xp, value, limit: _on_current(q, xp),
+            Said(
+                "thermal_peak.current_{outcome}",
+                (
+                    ("value", given_value),
+                    ("limit", given_limit),
+                    ("slope_nm_per_rpm", _slope),
+                    ("model", _THERMAL_MODEL),
+                ),
+            ),
+        ),
+        (None, compared("thermal_peak", ("model", _THERMAL_MODEL))),
     )
-    if math.isnan(limit):
-        return phrase(
-            "thermal_peak.beyond_zone",
-            value=peak,
-            mean_speed_rpm=q.mean_speed_rpm,
-            zone_max_speed_rpm=q.zone_max_speed_rpm,
-            model=model,
-        )
-    if _on_current(q, FLOAT_OPS):
-        return phrase(
-            f"thermal_peak.current_{outcome(status)}",
-            value=peak,
-            limit=limit,
-            slope_nm_per_rpm=q.no_load_torque_slope_nm_per_rpm,
-            model=model,
-        )
-    return phrase(f"thermal_peak.{outcome(status)}", value=peak, limit=limit, model=model)
+)
+"""``thermal_peak`` in words: beyond the zone, on the winding current, or against the
+continuous limit, each with the thermal model."""
 
 
 THERMAL_PEAK = Rule(
