@@ -90,7 +90,7 @@ def test_params_as_numbers_are_written_as_the_dicts_write_them() -> None:
 
     values = [0.1, 5.0, 1e-7, 1.5e16, 123456789.0, -2.5e-300, 1e300, math.nan, math.inf, -math.inf]
     items = _param_items(np.array(values))
-    for value, item in zip(values, items.tolist(), strict=True):
+    for value, item in zip(values, items, strict=True):
         params = jsonable_params(phrase("max_speed.pass", value=value, limit=1.0))
         assert params is not None
         assert item == dump_json(params["value"])

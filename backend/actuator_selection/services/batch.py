@@ -47,6 +47,7 @@ from actuator_selection.sizing.checks import Rule, rules_for
 from actuator_selection.sizing.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
+    CatalogueArrays,
     CheckTable,
     RankedTable,
     TrapezoidColumns,
@@ -126,7 +127,7 @@ def size_batch(
     answer and a 2xx means the cases are committed; the rest is computed while the
     answer is sent.
     """
-    actuators = list(catalogue.actuators)
+    actuators = tuple(catalogue.actuators)
     context = DriveContext(catalogue)
     ids: list[str | None] = [None] * len(apps)
     if body.store:
@@ -139,6 +140,7 @@ def size_batch(
     chunks = _result_chunks(
         body,
         actuators,
+        catalogue.arrays(actuators),
         apps,
         models,
         list(zip(ids, case_ids, strict=True)),
@@ -256,13 +258,15 @@ of 500 cases with checks held 27 MB of Python objects at its peak, one of 200 ho
 
 
 def _select(
-    actuators: list[Actuator],
+    actuators: Sequence[Actuator],
+    arrays: CatalogueArrays,
     apps: list[Application],
     models: Sequence[list[str] | None],
     top: int,
 ) -> list[Selection]:
     """``select_batch`` for cases whose checks may differ (a brake adds one): each set of
-    checks run on its own cases, the selections back in the order of the cases."""
+    checks run on its own cases, the selections back in the order of the cases;
+    ``arrays`` the catalogue's (the snapshot's, built once per version)."""
     groups: dict[tuple[Rule, ...], list[int]] = {}
     for i, app in enumerate(apps):
         groups.setdefault(rules_for(app), []).append(i)
@@ -274,6 +278,7 @@ def _select(
             top=top,
             models=[models[i] for i in indexes],
             rules=rules,
+            arrays=arrays,
         )
         for i, selection in zip(indexes, chosen, strict=True):
             out[i] = selection
@@ -282,7 +287,8 @@ def _select(
 
 def _result_chunks(
     body: BatchSelectionRequest,
-    actuators: list[Actuator],
+    actuators: Sequence[Actuator],
+    arrays: CatalogueArrays,
     apps: list[Application],
     models: list[list[str] | None],
     ids: list[tuple[str | None, str | None]],
@@ -296,7 +302,7 @@ def _result_chunks(
     """
     for start in range(0, len(apps), STREAM_CASES):
         end = start + STREAM_CASES
-        selections = _select(actuators, apps[start:end], models[start:end], body.top)
+        selections = _select(actuators, arrays, apps[start:end], models[start:end], body.top)
         coded = CodedChecks()  # the slice's checks, written from the engine's arrays
         results = [
             dump_json(

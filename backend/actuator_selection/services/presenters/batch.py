@@ -159,7 +159,8 @@ class CodedChecks:
 def coded_checks_json(decided: DecidedCells) -> list[bytes]:
     """Each cell's ``checks`` of ``decided`` as JSON, in the cells' order: the text
     :func:`dump_json` writes of :func:`coded_check_body` of each check, written rule by
-    rule for every cell at once (numpy's string functions join each check's members).
+    rule for every cell at once: orjson writes each array of numbers, and one template
+    per rule (and per clause of a message) takes each cell's members.
     The messages' codes and params come from the same words: a rule's ``no_data``
     message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
     or :class:`~actuator_selection.sizing.checks.Variants` message from the arrays, any
@@ -174,36 +175,62 @@ def coded_checks_json(decided: DecidedCells) -> list[bytes]:
             rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)
             margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
             share = np.where(rated, values / limits, math.nan)
-        check: Any = b'{"name":' + dump_json(rule.name) + b',"status":'
-        check = _add(check, _STATUS_JSON[columns.statuses[k]], b',"value":', json_items(values))
-        check = _add(check, b',"limit":', json_items(limits))
-        check = _add(check, b',"unit":' + dump_json(rule.unit))
-        check = _add(check, b',"reference":' + dump_json(rule.reference))
-        check = _add(check, b',"message_code":', _messages(decided, k, operands, cells))
-        approximate = np.where(columns.approximate[k], b"true", b"false")
-        check = _add(check, b',"approximate":', approximate, b',"margin_percent":')
-        check = _add(check, json_items(margin), b',"utilisation":', json_items(share), b"}")
-        written.append(check.tolist())
+        template = _template(
+            b'{"name":',
+            dump_json(rule.name),
+            b',"status":',
+            None,
+            b',"value":',
+            None,
+            b',"limit":',
+            None,
+            b',"unit":',
+            dump_json(rule.unit),
+            b',"reference":',
+            dump_json(rule.reference),
+            b',"message_code":',
+            None,
+            b',"approximate":',
+            None,
+            b',"margin_percent":',
+            None,
+            b',"utilisation":',
+            None,
+            b"}",
+        )
+        members = (
+            _STATUS_JSON[columns.statuses[k]].tolist(),
+            json_items(values),
+            json_items(limits),
+            _messages(decided, k, operands, cells),
+            _TRUTH_JSON[columns.approximate[k].view(np.int8)].tolist(),
+            json_items(margin),
+            json_items(share),
+        )
+        written.append(list(map(template.__mod__, zip(*members, strict=True))))
     return [b"[" + b",".join(row) + b"]" for row in zip(*written, strict=True)]
 
 
-def _add(*parts: Any) -> Any:
-    """``parts`` (byte strings and arrays of them) joined item by item."""
-    out = parts[0]
-    for part in parts[1:]:
-        out = np.strings.add(out, part)
-    return out
+def _template(*parts: bytes | None) -> bytes:
+    """A bytes template of ``parts``: each None a member (``%b``), the rest as they are."""
+    return b"".join(b"%b" if p is None else p.replace(b"%", b"%%") for p in parts)
 
 
-_STATUS_JSON = np.array([dump_json(s.value) for s in STATUS_BY_CODE], dtype=np.bytes_)
+def _filled(template: bytes, members: list[list[bytes]], cells: int) -> list[bytes]:
+    """``template`` filled with each cell's ``members``."""
+    if not members:
+        return [template % ()] * cells
+    return list(map(template.__mod__, zip(*members, strict=True)))
+
+
+_STATUS_JSON = np.array([dump_json(s.value) for s in STATUS_BY_CODE], dtype=object)
 """The API's status names as JSON strings, by status code."""
+_TRUTH_JSON = np.array([b"false", b"true"], dtype=object)
 _WORDED = np.array([s in (Status.PASS, Status.FAIL, Status.WARN) for s in STATUS_BY_CODE])
 """By status code, whether a rule's own message words it (not no data, not not applicable)."""
 
 
-def _messages(
-    decided: DecidedCells, k: int, operands: list[Operands], cells: int
-) -> npt.NDArray[np.bytes_]:
+def _messages(decided: DecidedCells, k: int, operands: list[Operands], cells: int) -> list[bytes]:
     """Rule ``k``'s ``message_code`` and ``message_params`` members of each cell (the
     code's JSON, then ``,"message_params":`` and the params' JSON)."""
     rule = decided.rules[k]
@@ -237,7 +264,8 @@ def _messages(
                     None if missing < 0 else missing,
                 )
                 out[j] = _message_json(message)
-    return out.astype(np.bytes_)
+    found: list[bytes] = out.tolist()
+    return found
 
 
 def _message_json(message: str) -> bytes:
@@ -258,11 +286,21 @@ class _Cells:
     limits: npt.NDArray[np.float64]
     mask: npt.NDArray[np.bool_]
 
+    @property
+    def count(self) -> int:
+        return int(self.mask.sum())
+
     def term(self, term: Term) -> npt.NDArray[Any]:
         """``term`` over the cells of :attr:`mask`."""
         with np.errstate(all="ignore"):
             found = term(self.q, ARRAY_OPS, self.values, self.limits)
         return np.broadcast_to(found, self.mask.shape)[self.mask]
+
+    def codes(self, message: Said) -> list[bytes]:
+        """``message``'s code of each cell, as JSON."""
+        codes = np.array([dump_json(c) for c in message.codes], dtype=object)
+        found: list[bytes] = codes[_STATUS_INDEX[self.statuses[self.mask]]].tolist()
+        return found
 
     def within(self, where: npt.NDArray[np.bool_]) -> _Cells:
         """The cells of :attr:`mask` where ``where`` (over those cells) holds."""
@@ -271,53 +309,56 @@ class _Cells:
         return _Cells(self.q, self.statuses, self.values, self.limits, mask)
 
 
-def _declared_json(message: Said | Variants, cells: _Cells) -> npt.NDArray[np.bytes_]:
+def _declared_json(message: Said | Variants, cells: _Cells) -> list[bytes]:
     """:func:`_message_json` of a declared message (:class:`~actuator_selection.sizing.
     checks.Said`, :class:`~actuator_selection.sizing.checks.Variants`) over ``cells``,
     each decided pass, fail or warn: what the message says of each, from the arrays."""
     if isinstance(message, Said):
-        code = np.array([dump_json(c) for c in message.codes], dtype=np.bytes_)
-        status_index = _STATUS_INDEX[cells.statuses[cells.mask]]
-        said: npt.NDArray[np.bytes_] = _add(
-            code[status_index], b',"message_params":', _params_json(message, cells)
-        )
-        return said
-    out = np.empty(int(cells.mask.sum()), dtype=object)
+        members = [cells.codes(message), _params_json(message, cells)]
+        return _filled(b'%b,"message_params":%b', members, cells.count)
+    out = np.empty(cells.count, dtype=object)
     left = np.ones(out.shape, dtype=np.bool_)
     for condition, variant in message.cases:
         holds = left if condition is None else left & cells.term(condition)
         if holds.any():
             out[holds] = _declared_json(variant, cells.within(holds))
         left &= ~holds
-    return out.astype(np.bytes_)
+    found: list[bytes] = out.tolist()
+    return found
 
 
-def _params_json(message: Said, cells: _Cells) -> Any:
+def _params_json(message: Said, cells: _Cells) -> list[bytes]:
     """The params of ``message`` over ``cells`` as JSON objects."""
-    if not message.params:
-        return b"{}"
-    out: Any = b"{"
+    parts: list[bytes | None] = [b"{"]
+    members = []
     for n, (name, param) in enumerate(message.params):
-        out = _add(out, (b"," if n else b"") + dump_json(name) + b":", _param_json(param, cells))
-    return np.strings.add(out, b"}")
+        parts.append((b"," if n else b"") + dump_json(name) + b":")
+        found = _param_json(param, cells)
+        if isinstance(found, bytes):  # the same in every cell
+            parts.append(found)
+        else:
+            parts.append(None)
+            members.append(found)
+    parts.append(b"}")
+    return _filled(_template(*parts), members, cells.count)
 
 
-def _param_json(param: Any, cells: _Cells) -> Any:
+def _param_json(param: Any, cells: _Cells) -> list[bytes] | bytes:
     """One param of a :class:`~actuator_selection.sizing.checks.Said` over ``cells``, as
-    :func:`~actuator_selection.i18n.check_messages.jsonable_params` has it written."""
+    :func:`~actuator_selection.i18n.check_messages.jsonable_params` has it written (one
+    byte string where it is the same in every cell)."""
     if isinstance(param, Said):
-        code = np.array([dump_json(c) for c in param.codes], dtype=np.bytes_)
-        status_index = _STATUS_INDEX[cells.statuses[cells.mask]]
-        return _add(
-            b'{"code":', code[status_index], b',"params":', _params_json(param, cells), b"}"
-        )
+        members = [cells.codes(param), _params_json(param, cells)]
+        return _filled(b'{"code":%b,"params":%b}', members, cells.count)
     if isinstance(param, Pick):
         holds = cells.term(param.condition).astype(np.bool_)
         out = np.empty(holds.shape, dtype=object)
         for where, chosen in ((holds, param.if_true), (~holds, param.if_false)):
             if where.any():
-                out[where] = np.broadcast_to(_param_json(chosen, cells.within(where)), where.sum())
-        return out.astype(np.bytes_)
+                found = _param_json(chosen, cells.within(where))
+                out[where] = [found] * int(where.sum()) if isinstance(found, bytes) else found
+        picked: list[bytes] = out.tolist()
+        return picked
     if callable(param):
         return _param_items(cells.term(param))
     return dump_json(jsonable(param))  # a constant: words, a clause or None
@@ -327,7 +368,7 @@ _STATUS_INDEX = np.array([list(Status).index(s) for s in STATUS_BY_CODE], dtype=
 """By status code, the status's place in :class:`Status` (:attr:`Said.codes`' order)."""
 
 
-def _param_items(column: npt.NDArray[Any]) -> npt.NDArray[np.bytes_]:
+def _param_items(column: npt.NDArray[Any]) -> list[bytes]:
     """Each item of ``column`` as :func:`~actuator_selection.i18n.check_messages.
     jsonable_params` has it written: numbers as they are, a float that is NaN or infinite
     as its ``repr`` (a string)."""
@@ -335,9 +376,8 @@ def _param_items(column: npt.NDArray[Any]) -> npt.NDArray[np.bytes_]:
     if column.dtype.kind == "f":
         odd = ~np.isfinite(column)
         if odd.any():
-            out = out.astype(object)
-            out[odd] = [dump_json(repr(x)) for x in column[odd].tolist()]
-            out = out.astype(np.bytes_)
+            for j, x in zip(np.flatnonzero(odd).tolist(), column[odd].tolist(), strict=True):
+                out[j] = dump_json(repr(x))
     return out
 
 

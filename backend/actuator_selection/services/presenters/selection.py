@@ -177,8 +177,8 @@ def checks_as_json(ev: BatchEvaluation) -> list[orjson.Fragment]:
     for k, name in enumerate(ev.check_names):
         check: Any = b'{"name":' + orjson.dumps(name) + b',"status":'
         check = np.strings.add(check, _STATUS_JSON[ev.statuses[0][:, k]])
-        check = np.strings.add(np.strings.add(check, b',"value":'), json_items(ev.values[0][:, k]))
-        check = np.strings.add(np.strings.add(check, b',"limit":'), json_items(ev.limits[0][:, k]))
+        check = np.strings.add(np.strings.add(check, b',"value":'), _json_array(ev.values[0][:, k]))
+        check = np.strings.add(np.strings.add(check, b',"limit":'), _json_array(ev.limits[0][:, k]))
         approximate = ev.approximate[0][:, k]
         if approximate.any():
             check = np.where(approximate, np.strings.add(check, b',"approximate":true'), check)
@@ -190,11 +190,18 @@ def checks_as_json(ev: BatchEvaluation) -> list[orjson.Fragment]:
     return [orjson.Fragment(b"[" + b",".join(row) + b"]") for row in zip(*columns, strict=True)]
 
 
-def json_items(column: npt.NDArray[Any]) -> npt.NDArray[np.bytes_]:
-    """Each item of ``column`` (numbers or truths) as orjson writes it (a float that is
-    NaN or infinite as null), as byte strings."""
+def json_items(column: npt.NDArray[Any]) -> list[bytes]:
+    """Each item of ``column`` (numbers or truths, one dimension) as orjson writes it (a
+    float that is NaN or infinite as null), as byte strings."""
+    if not column.size:
+        return []
     written = orjson.dumps(np.ascontiguousarray(column), option=orjson.OPT_SERIALIZE_NUMPY)
-    return np.array(written[1:-1].split(b","), dtype=np.bytes_)
+    return written[1:-1].split(b",")
+
+
+def _json_array(column: FloatArray) -> npt.NDArray[np.bytes_]:
+    """:func:`json_items` as an array, for numpy's string functions."""
+    return np.array(json_items(column), dtype=np.bytes_)
 
 
 _STATUS_NAMES = np.array([s.value for s in STATUS_BY_CODE], dtype=object)
