@@ -70,8 +70,10 @@ export function fitFigure(figure, { narrow = false } = {}) {
 /**
  * Made-up figures of what the API's figures draw, drawn off screen one a task to warm
  * plotly.js up; never shown. The first is small (one panel, a line, the legend below, as
- * the API's): it takes plotly.js's first-use costs. The second has the rest (two panels of
- * lines, a filled area, markers, a shape and annotations).
+ * the API's, two tick labels an axis): it takes plotly.js's first-use costs, and as
+ * plotly.js measures each text in the page (a layout each), no more texts than it takes
+ * to run that code once. The second has the rest (two panels of lines, a filled area,
+ * markers, a shape and annotations).
  */
 export const WARM_FIGURES = [
   {
@@ -80,6 +82,8 @@ export const WARM_FIGURES = [
       showlegend: true,
       legend: { orientation: "h", x: 0, xanchor: "left", y: -0.2, yanchor: "top" },
       margin: { l: 64, r: 16, t: 24, b: 48 },
+      xaxis: { nticks: 2 },
+      yaxis: { nticks: 2 },
     },
   },
   {
