@@ -56,3 +56,32 @@ def test_every_kind_the_api_lists_is_on_the_page_with_its_fields(page: Page) -> 
             toggle.check()
             for field in spec["transmission"]:
                 _assert_field(page, box, f"load.transmission.{field['name']}", field)
+
+
+def test_a_kind_s_fieldset_is_built_when_first_chosen(page: Page) -> None:
+    """The page starts with the default kind's fieldset only; another kind's is built
+    the first time it is chosen, worded in the page's language at that moment, and kept
+    (with what was typed into it) when the user switches away and back."""
+    page.goto("/")
+    expect(page.locator("#results-body .notice")).to_be_attached()  # the page's script ran
+    mechanisms = page.locator("fieldset.mechanism")
+    expect(mechanisms).to_have_count(1)
+    page.locator('.lang-button[data-lang="de"]').click()
+    page.locator('input[name="load-kind"][value="belt"]').check()
+    expect(mechanisms).to_have_count(2)
+    box = page.locator("#mech-belt")
+    expect(box).to_be_visible()
+    words = box.locator("[data-i18n]")
+    built_in_german = words.all_inner_texts()
+    assert all(built_in_german)
+    speed = box.locator("input[data-number]").first
+    speed.fill("12")
+    page.locator('.lang-button[data-lang="en"]').click()
+    assert words.all_inner_texts() != built_in_german
+    page.locator('.lang-button[data-lang="de"]').click()
+    assert words.all_inner_texts() == built_in_german  # as the language switch words it
+    page.locator('input[name="load-kind"][value="direct"]').check()
+    expect(box).to_be_hidden()
+    page.locator('input[name="load-kind"][value="belt"]').check()
+    expect(mechanisms).to_have_count(2)
+    expect(speed).to_have_value("12")

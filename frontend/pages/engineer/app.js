@@ -15,6 +15,7 @@ import { NARROW_CHART_PX, WARM_FIGURES, cycleCaption, diagramCaption, fitFigure 
 import {
   LOAD_KINDS,
   TRANSMISSION_FIELDS,
+  kindFieldset,
   kindSpec,
   quantityField,
   renderMechanisms,
@@ -262,6 +263,7 @@ function updateSpeedField(kind) {
 }
 
 function setLoadKind(kind) {
+  kindFieldset(kind); // built when first chosen
   for (const radio of $$as('input[name="load-kind"]', HTMLInputElement)) {
     radio.checked = radio.value === kind;
   }
@@ -1304,7 +1306,11 @@ function applyLang(lang) {
 
 /** The generated parts of the form: the mechanisms' fieldsets and the output load's fields. */
 function buildForm() {
-  renderMechanisms(html("#load-kind"), $("#speed-field"));
+  renderMechanisms(html("#load-kind"), $("#speed-field"), (fieldset) => {
+    applyStaticTexts(fieldset, state.lang);
+    showReadings(fieldset, state.lang);
+    updateResolved();
+  });
   $("#output-load").append(
     ...OUTPUT_LOAD_FIELDS.map((field) =>
       quantityField({ id: `f-ol-${field.name}`, path: `output_load.${field.name}`, ...field }),

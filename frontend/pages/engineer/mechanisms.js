@@ -2,8 +2,9 @@
 // `make mechanisms` from the request models; GET /api/v1/mechanisms answers the same):
 // the choice of kind, each kind's fieldset with its fields' symbols and units, a line sketch
 // per mechanism and, where the kind takes one, an optional transmission between the
-// actuator output and the mechanism. Built once into the form; texts carry data-i18n keys,
-// so the language switch relabels them like the static page.
+// actuator output and the mechanism. Each kind's fieldset is built into the form when first
+// chosen; texts carry data-i18n keys, so the language switch relabels them like the static
+// page.
 // Nothing is converted here: numbers (or, where the API takes it, text with a unit,
 // "0.5 in") go to the API as typed, read by lib/numbers.js (a decimal comma as a point:
 // "0,5 in" goes as "0.5 in").
@@ -286,13 +287,21 @@ function mechanismFieldset(spec, first) {
   );
 }
 
+/** Where the kinds' fieldsets go (``renderMechanisms``), and what follows a new one's build. */
+let placement = null;
+
 /**
  * The choice of kind (radio buttons named ``load-kind``, the first checked) into ``choices``,
- * and every kind's fieldset after ``anchor``; transmission checkboxes wired.
+ * and the first kind's fieldset after ``anchor``; the others are built when first chosen
+ * (``kindFieldset``): two thirds of the form's fields are in kinds a user may never choose,
+ * and the page's start, its first layout and the browser's own look at the form's fields
+ * (autofill) would pay for them.
  * @param {HTMLElement} choices
  * @param {Element} anchor
+ * @param {(fieldset: HTMLFieldSetElement) => void} onBuilt what a fieldset built later needs
+ *   (its texts in the page's language)
  */
-export function renderMechanisms(choices, anchor) {
+export function renderMechanisms(choices, anchor, onBuilt) {
   choices.append(
     ...KINDS.map((spec, k) =>
       h(
@@ -304,15 +313,31 @@ export function renderMechanisms(choices, anchor) {
       ),
     ),
   );
-  const sets = KINDS.map((spec, k) => mechanismFieldset(spec, k === 0));
-  anchor.after(...sets);
-  for (const fs of sets) {
-    const toggle = fs.querySelector(".transmission-toggle");
-    if (toggle instanceof HTMLInputElement) {
-      toggle.addEventListener("change", () => setTransmission(fs, toggle.checked));
-    }
+  placement = { anchor, onBuilt: null };
+  kindFieldset(KINDS[0].type);
+  placement.onBuilt = onBuilt;
+}
+
+/**
+ * The fieldset of load kind ``type`` (null for none), built the first time it is asked for,
+ * after the ones built before, transmission checkbox wired.
+ * @param {string} type
+ * @returns {HTMLFieldSetElement | null}
+ */
+export function kindFieldset(type) {
+  const built = document.getElementById(`mech-${type}`);
+  if (built instanceof HTMLFieldSetElement) return built;
+  const spec = kindSpec(type);
+  if (!spec || !placement) return null;
+  const fs = /** @type {HTMLFieldSetElement} */ (mechanismFieldset(spec, spec === KINDS[0]));
+  const sets = document.querySelectorAll("fieldset.mechanism");
+  (sets.length ? sets[sets.length - 1] : placement.anchor).after(fs);
+  const toggle = fs.querySelector(".transmission-toggle");
+  if (toggle instanceof HTMLInputElement) {
+    toggle.addEventListener("change", () => setTransmission(fs, toggle.checked));
   }
-  return sets;
+  placement.onBuilt?.(fs);
+  return fs;
 }
 
 /**
