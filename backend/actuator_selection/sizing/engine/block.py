@@ -174,7 +174,10 @@ def _case_gains(
     key = np.column_stack([durations, cycles, taus])
     where: IndexArray = np.zeros(key.shape[0], dtype=np.intp)
     if key.shape[0] > 1:
-        key, where = _distinct_rows(key)
+        if (key == key[0]).all():  # one case repeated (pairs of a trapezoid: often)
+            key = key[:1]
+        else:
+            key, where = _distinct_rows(key)
     rows = key.tolist()
     pieces = np.array([_gains(r[:-2], r[-1]) for r in rows], dtype=np.float64)
     cycle = np.array([heating_gain(r[-2], r[-1]) for r in rows], dtype=np.float64)

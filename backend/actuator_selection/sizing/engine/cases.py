@@ -91,16 +91,29 @@ class Cases:
     def take(self, index: slice | IndexArray) -> Cases:
         """The cases at ``index`` (a slice, or row numbers, repeated as often as given)."""
         p, f = self.pieces, self.figures
+        if isinstance(index, slice):
+
+            def taken(a: Any) -> Any:
+                return a[index]
+        else:  # ``take`` along the rows: a table's rows gathered 9× faster than a[index]
+
+            def taken(a: Any) -> Any:
+                return a.take(index, axis=0)
+
         return Cases(
-            pieces=PieceArrays(**{x.name: getattr(p, x.name)[index] for x in fields(p)}),
-            figures=CycleFigures(**{x.name: getattr(f, x.name)[index] for x in fields(f)}),
-            load_inertia=self.load_inertia[index],
-            high_dynamics=self.high_dynamics[index],
-            output_load=self.output_load[index],
-            thermal_time_constant=self.thermal_time_constant[index],
-            thermal_assumed=self.thermal_assumed[index],
-            requests=self.requests[index],
+            pieces=PieceArrays(**{name: taken(getattr(p, name)) for name in _PIECE_FIELDS}),
+            figures=CycleFigures(**{name: taken(getattr(f, name)) for name in _FIGURE_FIELDS}),
+            load_inertia=taken(self.load_inertia),
+            high_dynamics=taken(self.high_dynamics),
+            output_load=taken(self.output_load),
+            thermal_time_constant=taken(self.thermal_time_constant),
+            thermal_assumed=taken(self.thermal_assumed),
+            requests=taken(self.requests),
         )
+
+
+_PIECE_FIELDS = tuple(x.name for x in fields(PieceArrays))
+_FIGURE_FIELDS = tuple(x.name for x in fields(CycleFigures))
 
 
 def cases_of(apps: Sequence[Application]) -> Cases:

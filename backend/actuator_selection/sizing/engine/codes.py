@@ -116,7 +116,6 @@ def lacking(rules: Sequence[Rule], q: Operands, cat: CatalogueArrays) -> Lacking
     xp = ARRAY_OPS
     first_missing = np.full((len(rules), *n), -1, dtype=np.int8)
     others_missing = np.zeros((len(rules), *n), dtype=np.bool_)
-    everywhere, floors = [], []
     for r, rule in enumerate(rules):
         first, others = first_missing[r], others_missing[r]
         for k, need in enumerate(rule.requires):
@@ -125,6 +124,22 @@ def lacking(rules: Sequence[Rule], q: Operands, cat: CatalogueArrays) -> Lacking
             first[(first < 0) & missing] = k
             if k:
                 others |= missing
+    # As the block's arrays: rules × 1 × actuators (rules × pairs × 1 for pairs).
+    shape = (len(rules), *(1,) * (2 - len(n)), *n)
+    found = cat.lacking[key] = summarised(
+        rules, first_missing.reshape(shape), others_missing.reshape(shape)
+    )
+    return found
+
+
+def summarised(
+    rules: Sequence[Rule], first_missing: CodeArray, others_missing: BoolArray
+) -> Lacking:
+    """The :class:`~actuator_selection.sizing.engine.catalogue.Lacking` of ``rules`` from
+    where each misses its first requirement and any other (rules × the block's cells)."""
+    everywhere, floors = [], []
+    for r, rule in enumerate(rules):
+        first, others = first_missing[r], others_missing[r]
         # Where only the first requirement (J_A) is missing, a lower bound may fail.
         floor = rule.lower_bound is not None and bool(((first == 0) & ~others).any())
         if floor:
@@ -133,16 +148,13 @@ def lacking(rules: Sequence[Rule], q: Operands, cat: CatalogueArrays) -> Lacking
     somewhere: list[bool] = np.asarray(
         (first_missing >= 0).reshape(len(rules), -1).any(axis=1)
     ).tolist()
-    # As the block's arrays: rules × 1 × actuators (rules × pairs × 1 for pairs).
-    shape = (len(rules), *(1,) * (2 - len(n)), *n)
-    found = cat.lacking[key] = Lacking(
-        first_missing=first_missing.reshape(shape),
-        others_missing=others_missing.reshape(shape),
+    return Lacking(
+        first_missing=first_missing,
+        others_missing=others_missing,
         everywhere=tuple(everywhere),
         somewhere=tuple(somewhere),
         floors=tuple(floors),
     )
-    return found
 
 
 _CACHED_CELLS = 1 << 16

@@ -26,19 +26,20 @@ from actuator_selection.sizing.engine.arrays import IndexArray
 from actuator_selection.sizing.engine.block import Block, evaluate_block
 from actuator_selection.sizing.engine.cases import Cases, ZoneTable
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays
+from actuator_selection.sizing.engine.codes import summarised
 
 
 def paired_catalogue(cat: CatalogueArrays, columns: IndexArray) -> CatalogueArrays:
     """The catalogue's values of actuator ``columns[p]`` for each pair, as a column (P × 1);
     τ_th left out (:func:`paired_cases` carries it), the zone's edge one column."""
     col = np.newaxis
-    taken = {name: values[columns][:, col] for name, values in cat.operands.items()}
+    taken = {name: values.take(columns)[:, col] for name, values in cat.operands.items()}
     has_zone = bool(np.asarray(taken["has_zone"]).any())
     return CatalogueArrays(
         operands=taken,
         # one NaN: the block's heating takes each pair's τ_th from its case
         thermal_time_constant=np.full(1, math.nan),
-        heating_slope=cat.heating_slope[columns][:, col],
+        heating_slope=cat.heating_slope.take(columns)[:, col],
         zone_columns=np.zeros(1 if has_zone else 0, dtype=np.intp),
         rank_position=cat.rank_position[columns],
     )
@@ -78,6 +79,14 @@ def evaluate_pairs(
     ``overload`` as :func:`~actuator_selection.sizing.engine.block.evaluate_block`'s."""
     rows, columns = np.asarray(rows, dtype=np.intp), np.asarray(columns, dtype=np.intp)
     paired = paired_catalogue(cat, columns)
+    key = tuple(rules)
+    lack = cat.lacking.get(key)
+    if lack is not None:  # the whole catalogue's (rules × 1 × actuators), pair by pair
+        paired.lacking[key] = summarised(
+            rules,
+            lack.first_missing.take(columns, axis=2).reshape(len(rules), -1, 1),
+            lack.others_missing.take(columns, axis=2).reshape(len(rules), -1, 1),
+        )
     pairs = paired_cases(cases, rows, cat, columns)
     edges = zones.edges(columns, pairs.mean_speed)[:, np.newaxis]
     zone = edges if paired.zone_columns.size else np.empty((rows.size, 0))
