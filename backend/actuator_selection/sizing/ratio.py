@@ -483,13 +483,6 @@ def ranked_ratio_study(
     return _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, top)
 
 
-def _model_rank(actuators: Sequence[Actuator]) -> IndexArray:
-    """Each actuator's place in the order of the models' names."""
-    _names, rank = np.unique([a.model for a in actuators], return_inverse=True)
-    model_rank: IndexArray = rank.reshape(-1)
-    return model_rank
-
-
 def _ranking(model_rank: IndexArray, has_best: BoolArray, best: _Best) -> IndexArray:
     """The columns in the ranking's order (:func:`ranked_ratio_study`)."""
     utilisation = np.where(has_best, best.utilisation, 0.0)
@@ -608,7 +601,7 @@ def _study(
     else:
         # every best value refined (the ranking reads them); beside it, the ends of the
         # actuators the grid ranks first (:data:`GUESSED` × top), then any other listed
-        model_rank = _model_rank(actuators)
+        model_rank = cat.model_rank
         guess = listed(_ranking(model_rank, has_best, best)[: GUESSED * top])
         found = brackets(guess)
         if series is None:

@@ -104,6 +104,8 @@ class CatalogueArrays:
     """The columns of the actuators with a continuous-duty zone."""
     rank_position: npt.NDArray[np.int32]
     """Each actuator's place in the static order (T_max, J_A, model) that breaks ties."""
+    model_rank: IndexArray
+    """Each actuator's place in the order of the models' names (the ratio study's ties)."""
     columns: dict[str, FloatArray | BoolArray] = dataclasses_field(default_factory=dict)
     """Every column as read from the actuators (the operands and the fields they are
     ranked and heated by), what the next catalogue's arrays copy from."""
@@ -183,6 +185,7 @@ def catalogue_arrays(
     order = np.lexsort((models, inertia, torque))
     rank_position = np.empty(len(actuators), dtype=np.int32)
     rank_position[order] = np.arange(len(actuators), dtype=np.int32)
+    _names, model_rank = np.unique(models, return_inverse=True)
     operands = {k: v for k, v in columns.items() if not k.startswith("field:")}
     slope = operands["no_load_torque_slope_nm_per_rpm"]
     on_current = ~has_zone & ~np.isnan(operands["stall_torque_nm"])
@@ -192,5 +195,6 @@ def catalogue_arrays(
         heating_slope=np.where(on_current, slope, math.nan),
         zone_columns=np.flatnonzero(has_zone),
         rank_position=rank_position,
+        model_rank=model_rank.reshape(-1),
         columns=columns,
     )

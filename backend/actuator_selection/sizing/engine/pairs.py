@@ -42,6 +42,7 @@ def paired_catalogue(cat: CatalogueArrays, columns: IndexArray) -> CatalogueArra
         heating_slope=cat.heating_slope.take(columns)[:, col],
         zone_columns=np.zeros(1 if has_zone else 0, dtype=np.intp),
         rank_position=cat.rank_position[columns],
+        model_rank=cat.model_rank[columns],
     )
 
 
