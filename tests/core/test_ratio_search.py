@@ -32,7 +32,7 @@ from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study, ratio_study
-from actuator_selection.sizing.ratio_cases import geared, geared_cases
+from actuator_selection.sizing.ratio_cases import MONOTONE_SHARES, geared, geared_cases
 
 
 @cache
@@ -169,7 +169,10 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
     monkeypatch.setattr(ratio, "GUESSED", guessed)
     vary, columns = study
-    ranked = ranked_ratio_study(actuators(), vary, low, high, top=top, cases_at=columns)
+    monotone = None if columns is None else MONOTONE_SHARES  # the ratio's, as the service's
+    ranked = ranked_ratio_study(
+        actuators(), vary, low, high, top=top, cases_at=columns, monotone=monotone
+    )
     whole = exhaustive_ratio_study(actuators(), vary, low, high)
     expected = _ranking(whole)[:top]
     assert len(ranked.results) == min(top, len(whole))
@@ -268,3 +271,57 @@ def test_a_block_without_its_overload_has_the_same_checks() -> None:
     for lean_detail, detail in zip(lean.details, full.details, strict=True):
         np.testing.assert_array_equal(lean_detail.values, detail.values)
         np.testing.assert_array_equal(lean_detail.limits, detail.limits)
+
+
+@pytest.mark.parametrize(
+    ("study", "low", "high"),
+    [
+        (_worked(4.0), 1.0, 20.0),
+        (_worked(4.0, 0.9), 0.05, 2000.0),
+        (_worked(40.0), 0.5, 5.0),
+    ],
+    ids=["ratio 1-20", "ratio 0.05-2000 eta 0.9", "fast load, ratio 0.5-5"],
+)
+def test_the_floors_bound_the_refined_utilisation(study: Study, low: float, high: float) -> None:
+    """The monotone checks' floors (``MONOTONE_SHARES``: n_max rising with i, 3·J_A
+    falling) are at most each actuator's best utilisation of the exhaustive study, and
+    above the 7th best grid utilisation for some actuators (those a ranked study of 7
+    does not refine)."""
+    vary, columns = study
+    assert columns is not None
+    chosen = actuators()
+    cat = catalogue_arrays(chosen)
+    grid = np.geomspace(low, high, ratio.GRID_POINTS)
+    cases = columns(grid)
+    rules = rules_of([vary(1.0)], None)
+    block = evaluate_block(
+        cat, cases, zone_limits(chosen, cat.zone_columns, cases.mean_speed), rules, detail=True
+    )
+    assert block.checks is not None
+    codes, util, _which, _failing = ratio._cells(block)
+    util = util.reshape(grid.size, -1)
+    masked = np.where((codes.reshape(util.shape) != ratio._FAIL) & np.isfinite(util), util, np.inf)
+    best_k = np.argmin(masked, axis=0)
+    names = [rule.name for rule in rules]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        shares = [
+            (
+                np.where(
+                    block.checks.limits[names.index(name)] > 0,
+                    block.checks.values[names.index(name)] / block.checks.limits[names.index(name)],
+                    np.nan,
+                ),
+                direction,
+            )
+            for name, direction in MONOTONE_SHARES.items()
+        ]
+    floor = ratio._floors(shares, best_k)
+    whole = exhaustive_ratio_study(chosen, vary, low, high)
+    refined = np.array(
+        [np.inf if r.best_utilisation is None else r.best_utilisation for r in whole]
+    )
+    assert (floor <= refined).all()
+    assert (floor > 0).any()
+    fits = np.isfinite(masked.min(axis=0))
+    seventh = np.sort(masked.min(axis=0)[fits])[6]
+    assert (floor[fits] > seventh).any()

@@ -26,7 +26,7 @@ from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases
 from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study
-from actuator_selection.sizing.ratio_cases import geared, geared_cases
+from actuator_selection.sizing.ratio_cases import MONOTONE_SHARES, geared, geared_cases
 
 
 def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], Application]:
@@ -120,6 +120,7 @@ def study(
         series=spec.series,
         arrays=catalogue.arrays(tuple(actuators)),
         cases_at=columns_of(body, spec),
+        monotone=MONOTONE_SHARES if spec.variable == "ratio" else None,
     )
     return RatioStudyOut(
         catalogue_version=catalogue.version,

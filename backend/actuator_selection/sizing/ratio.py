@@ -51,7 +51,7 @@ condition T(i) ≤ T_max bounds i to the roots of J_A·ε_L·i² − T_max·i + 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Generator, Sequence
+from collections.abc import Callable, Generator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import cast
 
@@ -383,6 +383,34 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool)
             )
 
 
+REACH = 2
+"""Grid steps the parabolic steps can move a best value (:func:`_refinement`): at most
+1 + 1/4 + 1/16 + … < 4/3 of a step, whatever :data:`REFINE_ROUNDS`."""
+
+
+def _floors(shares: Sequence[tuple[FloatArray, int]], best_k: IndexArray) -> FloatArray:
+    """A lower bound of each actuator's best utilisation after the parabolic steps, from
+    the checks whose share is monotone in the free value (``shares``: grid × actuators,
+    each with its direction, +1 rising): the refined value lies within :data:`REACH` grid
+    steps of the best grid value ``best_k``, where a rising share is at least its value at
+    the lower end and a falling one at the upper end, and the utilisation, the largest
+    share, at least that. A share counts only where it is finite at both ends (the
+    utilisation counts it there, and between them).
+
+    The bound of the analytic sizing methods (H.-J. Van de Straete et al. 1999;
+    Giberti et al. 2011): the motor speed i·n_L rises with the ratio i and the reflected
+    load inertia J_L/i² falls, against limits that depend on the actuator alone."""
+    n = best_k.size
+    every = np.arange(n)
+    floor = np.full(n, -np.inf)
+    for share, direction in shares:
+        low = share[np.maximum(best_k - REACH, 0), every]
+        high = share[np.minimum(best_k + REACH, share.shape[0] - 1), every]
+        least = low if direction > 0 else high
+        np.copyto(floor, least, where=np.isfinite(low) & np.isfinite(high) & (least > floor))
+    return floor
+
+
 GUESSED = 2
 """A ranked study bisects, beside the parabolic steps, the ends of the first
 ``GUESSED × top`` actuators by their best grid value; the listed ones the steps move up
@@ -447,7 +475,7 @@ def ratio_study(
     interval: neighbouring series values that all pass). ``cases_at``: the load cases of
     ``vary`` at many values at once, where the caller can build them as columns
     (:func:`~actuator_selection.sizing.ratio_cases.geared_cases`)."""
-    found = _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, None)
+    found = _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, None, {})
     return found.results
 
 
@@ -475,12 +503,22 @@ def ranked_ratio_study(
     rules: Sequence[Rule] | None = None,
     arrays: CatalogueArrays | None = None,
     cases_at: Callable[[FloatArray], Cases] | None = None,
+    monotone: Mapping[str, int] | None = None,
 ) -> RankedStudy:
     """:func:`ratio_study`'s first ``top`` results in the ranking's order (best value
     first, by best utilisation, then by model; those without a best value last, by model),
-    each equal to its result of the whole study: every actuator's best value is searched
-    (the ranking reads it), only the listed actuators' interval ends are bisected."""
-    return _study(actuators, vary, lower, upper, series, rules, arrays, cases_at, top)
+    each equal to its result of the whole study: the best value of every actuator that
+    could be listed is searched (the ranking reads it), only the listed actuators'
+    interval ends are bisected.
+
+    ``monotone``: checks whose share (value/limit) ``vary`` makes non-decreasing (+1) or
+    non-increasing (−1) in the free value, by name (:data:`~actuator_selection.sizing.
+    ratio_cases.MONOTONE_SHARES`); they bound each best value's utilisation from below
+    (:func:`_floors`), and an actuator whose bound exceeds the ``top``-th best grid
+    utilisation cannot be listed: its best value is not refined."""
+    return _study(
+        actuators, vary, lower, upper, series, rules, arrays, cases_at, top, monotone or {}
+    )
 
 
 def _ranking(model_rank: IndexArray, has_best: BoolArray, best: _Best) -> IndexArray:
@@ -500,6 +538,7 @@ def _study(
     arrays: CatalogueArrays | None,
     cases_at: Callable[[FloatArray], Cases] | None,
     top: int | None,
+    monotone: Mapping[str, int],
 ) -> RankedStudy:
     """The study; ``top`` None: every actuator in the catalogue's order, else the
     ranking's first ``top``."""
@@ -527,6 +566,11 @@ def _study(
     verdicts = np.empty(shape, dtype=np.int8)
     util, which = np.empty(shape), np.empty(shape, dtype=np.intp)
     failing_grid = np.empty((*shape, len(rules)), dtype=np.bool_)
+    # the monotone checks' shares on the grid (a ranked study's bound, _floors)
+    bounded = (
+        {} if top is None else {k: names[k] for k in range(len(names)) if names[k] in monotone}
+    )
+    shares = {k: np.empty(shape) for k in bounded}
     grid_cells = (
         verdicts.reshape(-1),
         util.reshape(-1),
@@ -547,6 +591,14 @@ def _study(
         util[start:stop] = u.reshape(-1, shape[1])
         which[start:stop] = w.reshape(-1, shape[1])
         failing_grid[start:stop] = f.reshape(-1, shape[1], len(rules))
+        if shares:
+            assert block.checks is not None
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                for k, share in shares.items():
+                    limits = block.checks.limits[k]
+                    share[start:stop] = np.where(
+                        limits > 0, block.checks.values[k] / limits, np.nan
+                    )
     ok = verdicts != _FAIL  # grid × actuators
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
@@ -604,6 +656,12 @@ def _study(
         model_rank = cat.model_rank
         guess = listed(_ranking(model_rank, has_best, best)[: GUESSED * top])
         found = brackets(guess)
+        if shares and columns.size > top:
+            # those that cannot be listed: a floor above the top-th best grid utilisation
+            # (the top-th best value is at most that), their grid value kept
+            floor = _floors([(shares[k], monotone[n]) for k, n in bounded.items()], best_k)
+            bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
+            columns = columns[~(floor[columns] > bar)]
         if series is None:
             searches = []
             if found.k.size:

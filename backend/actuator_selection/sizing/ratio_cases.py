@@ -23,6 +23,13 @@ from actuator_selection.sizing.motion import (
     trapezoid_piece_arrays,
 )
 
+MONOTONE_SHARES = {"max_speed": 1, "inertia_ratio": -1}
+"""How two checks' shares (value/limit) move with the ratio i of :func:`geared` and
+:func:`geared_cases` (the study's ``monotone``): the peak speed n_L·i rises with i, the
+load inertia J_tr + J_L/i² falls (each a product, quotient or sum of a positive
+constant: monotone in floating point too), against the actuator's n_max and 3·J_A. The
+reflected speed and inertia of Van de Straete et al. (1999) and Giberti et al. (2011)."""
+
 
 def geared(app: Application, transmission: Transmission) -> Application:
     """``app`` behind an external ratio i (between the actuator output and the load, in
