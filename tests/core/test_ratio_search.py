@@ -148,8 +148,13 @@ def _ranking(results: list[RatioResult]) -> list[RatioResult]:
 
 @pytest.mark.parametrize(
     ("study", "low", "high"),
-    [(_worked(4.0), 1.0, 20.0), (_worked(4.0, 0.9), 0.05, 2000.0), (_screw(), 5.0, 1000.0)],
-    ids=["ratio 1-20", "ratio 0.05-2000 eta 0.9", "lead 5-1000"],
+    [
+        (_worked(4.0), 1.0, 20.0),
+        (_worked(4.0, 0.9), 0.05, 2000.0),
+        (_worked(40.0), 0.5, 5.0),
+        (_screw(), 5.0, 1000.0),
+    ],
+    ids=["ratio 1-20", "ratio 0.05-2000 eta 0.9", "fast load, ratio 0.5-5", "lead 5-1000"],
 )
 @pytest.mark.parametrize("top", [1, 7, 1000])
 @pytest.mark.parametrize("many_pairs", [ratio.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
@@ -164,8 +169,10 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """Only the listed actuators' ends bisected (those the grid ranks first beside the
-    parabolic steps, the rest after; or all after): the first ``top`` of the ranking,
-    each equal to its result of the exhaustive study, and the counts of the whole."""
+    parabolic steps, the rest after; or all after), and for a ratio, those that the
+    floors show cannot be listed neither evaluated on the grid nor refined (the fast
+    load's: some of them fit nowhere): the first ``top`` of the ranking, each equal to its
+    result of the exhaustive study, and the counts of the whole."""
     monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
     monkeypatch.setattr(ratio, "GUESSED", guessed)
     vary, columns = study
@@ -282,11 +289,13 @@ def test_a_block_without_its_overload_has_the_same_checks() -> None:
     ],
     ids=["ratio 1-20", "ratio 0.05-2000 eta 0.9", "fast load, ratio 0.5-5"],
 )
-def test_the_floors_bound_the_refined_utilisation(study: Study, low: float, high: float) -> None:
-    """The monotone checks' floors (``MONOTONE_SHARES``: n_max rising with i, 3·J_A
-    falling) are at most each actuator's best utilisation of the exhaustive study, and
+def test_the_floors_bound_the_utilisation(study: Study, low: float, high: float) -> None:
+    """The monotone checks' shares (``MONOTONE_SHARES``: n_max rising with i, 3·J_A
+    falling) are the engine's, bit for bit; the floor over the range is at most every
+    passing grid utilisation and every best utilisation of the exhaustive study, the
+    floor about the best grid value at most the best utilisation; and each floor is
     above the 7th best grid utilisation for some actuators (those a ranked study of 7
-    does not refine)."""
+    neither evaluates on the grid nor refines)."""
     vary, columns = study
     assert columns is not None
     chosen = actuators()
@@ -298,30 +307,28 @@ def test_the_floors_bound_the_refined_utilisation(study: Study, low: float, high
         cat, cases, zone_limits(chosen, cat.zone_columns, cases.mean_speed), rules, detail=True
     )
     assert block.checks is not None
+    shares = ratio._monotone_shares(rules, MONOTONE_SHARES, cases, cat)
+    names = [rule.name for rule in rules]
+    for (share, direction), name in zip(shares, MONOTONE_SHARES, strict=True):
+        assert direction == MONOTONE_SHARES[name]
+        k = names.index(name)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            engine = block.checks.values[k] / block.checks.limits[k]
+        np.testing.assert_array_equal(share, np.where(block.checks.limits[k] > 0, engine, np.nan))
     codes, util, _which, _failing = ratio._cells(block)
     util = util.reshape(grid.size, -1)
     masked = np.where((codes.reshape(util.shape) != ratio._FAIL) & np.isfinite(util), util, np.inf)
-    best_k = np.argmin(masked, axis=0)
-    names = [rule.name for rule in rules]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        shares = [
-            (
-                np.where(
-                    block.checks.limits[names.index(name)] > 0,
-                    block.checks.values[names.index(name)] / block.checks.limits[names.index(name)],
-                    np.nan,
-                ),
-                direction,
-            )
-            for name, direction in MONOTONE_SHARES.items()
-        ]
-    floor = ratio._floors(shares, best_k)
     whole = exhaustive_ratio_study(chosen, vary, low, high)
     refined = np.array(
         [np.inf if r.best_utilisation is None else r.best_utilisation for r in whole]
     )
-    assert (floor <= refined).all()
-    assert (floor > 0).any()
+    about_best = ratio._floors(shares, np.argmin(masked, axis=0))
+    over_range = ratio._range_floors(shares)
+    assert (about_best <= refined).all()
+    assert (over_range <= refined).all()
+    assert (over_range <= masked).all()
+    assert (over_range > 0).all()
     fits = np.isfinite(masked.min(axis=0))
     seventh = np.sort(masked.min(axis=0)[fits])[6]
-    assert (floor[fits] > seventh).any()
+    assert (about_best[fits] > seventh).any()
+    assert (over_range[fits] > seventh).any()

@@ -26,9 +26,15 @@ The search runs on the engine, vectorised over cases × actuators:
    actuators together, in the same engine calls as the bisection.
 
 A pair whose value is a grid value or the actuator's best value so far is read from
-that cell, not asked again. :func:`ranked_ratio_study` (the API's answer) refines every
-actuator's best value, which its ranking reads, and bisects only the listed actuators'
-brackets.
+that cell, not asked again. :func:`ranked_ratio_study` (the API's answer) refines the
+best value of every actuator that can be listed (its ranking reads them) and bisects only
+the listed actuators' brackets. Where the free value makes some checks' shares monotone
+(an external ratio: the speed i·n_L rises, the reflected inertia J_L/i² falls; the
+bounds of Van de Straete et al. and Giberti et al. below), those shares bound each
+actuator's utilisation from below, over the range (:func:`_range_floors`) and about its
+best grid value (:func:`_floors`): an actuator whose bound exceeds the ``top``-th best
+grid utilisation found cannot be listed, and is neither evaluated on the grid (only
+whether it fits somewhere, :func:`_fitting`) nor refined.
 
 The numbers are those of evaluating every value on every actuator
 (``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
@@ -61,7 +67,7 @@ from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.candidates import Verdict
-from actuator_selection.sizing.checks import Rule, Status
+from actuator_selection.sizing.checks import Operands, Rule, Status
 from actuator_selection.sizing.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -72,16 +78,18 @@ from actuator_selection.sizing.engine import (
     IndexArray,
     catalogue_arrays,
 )
-from actuator_selection.sizing.engine.block import Block, blocks, evaluate_block
+from actuator_selection.sizing.engine.block import Block, blocks, evaluate_block, operands_of
 from actuator_selection.sizing.engine.cases import (
     Cases,
     ZoneTable,
+    case_operands,
     cases_of,
     zone_limits,
     zone_table,
 )
+from actuator_selection.sizing.engine.codes import ARRAY_OPS
 from actuator_selection.sizing.engine.evaluation import rules_of
-from actuator_selection.sizing.engine.pairs import evaluate_pairs
+from actuator_selection.sizing.engine.pairs import catalogue_part, evaluate_pairs
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
@@ -209,11 +217,11 @@ class _Pairs:
         k = np.minimum(np.searchsorted(self.grid, values), self.grid.size - 1)
         on_grid = self.grid[k] == values
         if not on_grid.any():
-            return self._evaluated(values, columns)
+            return self.evaluated(values, columns)
         width = self.cells[0].size // self.grid.size
         at = k[on_grid] * width + columns[on_grid]
         off = ~on_grid
-        found = self._evaluated(values[off], columns[off]) if off.any() else None
+        found = self.evaluated(values[off], columns[off]) if off.any() else None
         out = []
         grid_parts: tuple[np.ndarray, ...] = self.cells
         for n, grid_part in enumerate(grid_parts):
@@ -224,7 +232,8 @@ class _Pairs:
             out.append(part)
         return cast(Cells, tuple(out))
 
-    def _evaluated(self, values: FloatArray, columns: IndexArray) -> Cells:
+    def evaluated(self, values: FloatArray, columns: IndexArray) -> Cells:
+        """The cells of the pairs, each evaluated (none read from the grid's)."""
         xs, rows = np.unique(values, return_inverse=True)
         cases = self.cases_at(xs)
         block = evaluate_pairs(
@@ -382,6 +391,75 @@ def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool)
                 points.shape
             )
 
+
+def _monotone_shares(
+    rules: Sequence[Rule], monotone: Mapping[str, int], cases: Cases, cat: CatalogueArrays
+) -> list[tuple[FloatArray, int]]:
+    """The shares (value/limit; NaN where the limit is not positive) of the checks that
+    ``monotone`` names, cases × actuators, each with its direction (+1: rising with the
+    free value): the rule's own value and limit on the case's and the catalogue's
+    operands, as the engine computes them (such a check reads no cell's quantity)."""
+    chosen = [(rule, monotone[rule.name]) for rule in rules if rule.name in monotone]
+    if not chosen:
+        return []
+    case = case_operands(cases)
+    cell = {n: math.nan for n in Operands._fields if n not in case and n not in cat.operands}
+    q = operands_of(case, cat.operands, cell)
+    shape = (cases.size, cat.size)
+    found = []
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for rule, direction in chosen:
+            value = np.broadcast_to(rule.value(q, ARRAY_OPS), shape)
+            limit = np.broadcast_to(rule.limit(q, ARRAY_OPS), shape)
+            found.append((np.where(limit > 0, value / limit, np.nan), direction))
+    return found
+
+
+def _range_floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
+    """A lower bound of each actuator's utilisation anywhere in the range (grid ×
+    actuators ``shares``, :func:`_monotone_shares`): between grid values k and k + 1 a
+    rising share is at least its value at k, a falling one at k + 1, and the utilisation,
+    the largest share, at least the larger; the least of that over the range. A share
+    counts where it is finite at every grid value (the utilisation counts it there and
+    between them)."""
+    lower = np.full((shares[0][0].shape[0] - 1, shares[0][0].shape[1]), -np.inf)
+    for share, direction in shares:
+        bound = share[:-1] if direction > 0 else share[1:]
+        counts = np.isfinite(share).all(axis=0)
+        np.copyto(lower, bound, where=counts & (bound > lower))
+    floor: FloatArray = lower.min(axis=0)
+    return floor
+
+
+def _fitting(
+    search: _Pairs, grid: FloatArray, columns: IndexArray, shares: Sequence[tuple[FloatArray, int]]
+) -> int:
+    """How many of the actuators ``columns`` (not evaluated on the grid) pass at some grid
+    value: each asked first at the grid value of its least share (``shares``), those that
+    fail there then at every other."""
+    if not columns.size:
+        return 0
+    least = np.full((grid.size, columns.size), -np.inf)
+    for share, _direction in shares:
+        np.fmax(least, share[:, columns], out=least)
+    first = np.argmin(least, axis=0)
+    passes = search.evaluated(grid[first], columns)[0] != _FAIL
+    fits = int(passes.sum())
+    others = np.nonzero(~passes)[0]
+    if others.size:
+        k = np.arange(grid.size)
+        cells = k[None, :] != first[others, None]  # each one's other grid values
+        at, row = np.nonzero(cells)
+        found = search.evaluated(grid[row], columns[others[at]])[0] != _FAIL
+        fits += int(np.unique(at[found]).size)
+    return fits
+
+
+FIRST = 2
+"""A ranked study with a floor (:func:`_range_floors`) evaluates the grid on the
+``FIRST × top`` actuators of least floor first: the ``top``-th best of their grid
+utilisations bounds the listed ones', and an actuator whose floor exceeds it is not
+evaluated on the grid."""
 
 REACH = 2
 """Grid steps the parabolic steps can move a best value (:func:`_refinement`): at most
@@ -561,44 +639,57 @@ def _study(
     names = tuple(rule.name for rule in rules)
     cases = cases_at(grid)
     limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
-    # the grid × the catalogue, block by block; only what the search reads is kept
+    # the grid × the catalogue; a column left out (a ranked study's, that cannot be
+    # listed) fails everywhere here, its fit found apart (_fitting)
     shape = (grid.size, len(actuators))
-    verdicts = np.empty(shape, dtype=np.int8)
-    util, which = np.empty(shape), np.empty(shape, dtype=np.intp)
-    failing_grid = np.empty((*shape, len(rules)), dtype=np.bool_)
-    # the monotone checks' shares on the grid (a ranked study's bound, _floors)
-    bounded = (
-        {} if top is None else {k: names[k] for k in range(len(names)) if names[k] in monotone}
-    )
-    shares = {k: np.empty(shape) for k in bounded}
+    verdicts = np.full(shape, _FAIL, dtype=np.int8)
+    util, which = np.full(shape, np.nan), np.zeros(shape, dtype=np.intp)
+    failing_grid = np.zeros((*shape, len(rules)), dtype=np.bool_)
     grid_cells = (
         verdicts.reshape(-1),
         util.reshape(-1),
         which.reshape(-1),
         failing_grid.reshape(-1, len(rules)),
     )
-    for start, stop in blocks(actuators, grid):
-        block = evaluate_block(
-            cat,
-            cases.rows(start, stop),
-            limits_of_zones[start:stop],
-            rules,
-            detail=True,
-            overload=False,
-        )
-        codes, u, w, f = _cells(block)
-        verdicts[start:stop] = codes.reshape(-1, shape[1])
-        util[start:stop] = u.reshape(-1, shape[1])
-        which[start:stop] = w.reshape(-1, shape[1])
-        failing_grid[start:stop] = f.reshape(-1, shape[1], len(rules))
-        if shares:
-            assert block.checks is not None
-            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-                for k, share in shares.items():
-                    limits = block.checks.limits[k]
-                    share[start:stop] = np.where(
-                        limits > 0, block.checks.values[k] / limits, np.nan
-                    )
+
+    def evaluate(part: IndexArray | None) -> None:
+        """The grid × the actuators ``part`` (ascending; None: all), block by block;
+        only what the search reads is kept."""
+        sub, zones = cat, limits_of_zones
+        at: slice | IndexArray = slice(None)
+        if part is not None:
+            sub, at = catalogue_part(cat, part), part
+            zones = limits_of_zones[:, np.searchsorted(cat.zone_columns, part[sub.zone_columns])]
+        width = sub.size
+        for start, stop in blocks(range(width), grid):
+            block = evaluate_block(
+                sub, cases.rows(start, stop), zones[start:stop], rules, detail=True, overload=False
+            )
+            codes, u, w, f = _cells(block)
+            verdicts[start:stop, at] = codes.reshape(-1, width)
+            util[start:stop, at] = u.reshape(-1, width)
+            which[start:stop, at] = w.reshape(-1, width)
+            failing_grid[start:stop, at] = f.reshape(-1, width, len(rules))
+
+    # a ranked study: the monotone checks' shares bound the utilisations from below
+    shares = [] if top is None else _monotone_shares(rules, monotone, cases, cat)
+    unlisted: IndexArray = np.zeros(0, dtype=np.intp)
+    if top is not None and shares and grid.size > 1:
+        # the FIRST × top of least floor first; those whose floor exceeds the top-th
+        # of their best grid utilisations cannot be listed: not evaluated on the grid
+        floor = _range_floors(shares)
+        order = np.argsort(floor, kind="stable")
+        first, rest = np.sort(order[: FIRST * top]), order[FIRST * top :]
+        evaluate(first)
+        passing = (verdicts[:, first] != _FAIL) & np.isfinite(util[:, first])
+        least = np.where(passing, util[:, first], np.inf).min(axis=0)
+        if rest.size and np.isfinite(least).sum() >= top:
+            bar = np.partition(least, top - 1)[top - 1]
+            unlisted, rest = rest[floor[rest] > bar], rest[~(floor[rest] > bar)]
+        if rest.size:
+            evaluate(np.sort(rest))
+    else:
+        evaluate(None)
     ok = verdicts != _FAIL  # grid × actuators
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
@@ -659,7 +750,7 @@ def _study(
         if shares and columns.size > top:
             # those that cannot be listed: a floor above the top-th best grid utilisation
             # (the top-th best value is at most that), their grid value kept
-            floor = _floors([(shares[k], monotone[n]) for k, n in bounded.items()], best_k)
+            floor = _floors(shares, best_k)
             bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
             columns = columns[~(floor[columns] > bar)]
         if series is None:
@@ -688,7 +779,7 @@ def _study(
         )
     )
     results = _results(actuators, chosen, grid, ok, util, ends, has_best, best, names)
-    fitting = int(ok.any(axis=0).sum())
+    fitting = int(ok.any(axis=0).sum()) + _fitting(search, grid, unlisted, shares)
     return RankedStudy(results=results, total=len(actuators), fitting=fitting)
 
 

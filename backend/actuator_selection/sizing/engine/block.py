@@ -25,7 +25,6 @@ from typing import Any
 
 import numpy as np
 
-from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.checks import RULES, Operands, Rule
 from actuator_selection.sizing.checks.rules.gear import AVERAGE_TORQUE_RULES
 from actuator_selection.sizing.engine.arrays import (
@@ -415,6 +414,6 @@ def operands_of(
     return Operands(**case, **catalogue, **cell)
 
 
-def blocks(actuators: Sequence[Actuator], apps: Sized) -> list[tuple[int, int]]:
+def blocks(actuators: Sized, apps: Sized) -> list[tuple[int, int]]:
     rows = max(1, _BLOCK_CELLS // max(1, len(actuators)))
     return [(start, min(start + rows, len(apps))) for start in range(0, len(apps), rows)]

@@ -25,7 +25,7 @@ from actuator_selection.sizing.checks import Rule
 from actuator_selection.sizing.engine.arrays import IndexArray
 from actuator_selection.sizing.engine.block import Block, evaluate_block
 from actuator_selection.sizing.engine.cases import Cases, ZoneTable
-from actuator_selection.sizing.engine.catalogue import CatalogueArrays
+from actuator_selection.sizing.engine.catalogue import CatalogueArrays, Lacking
 from actuator_selection.sizing.engine.codes import summarised
 
 
@@ -43,6 +43,37 @@ def paired_catalogue(cat: CatalogueArrays, columns: IndexArray) -> CatalogueArra
         zone_columns=np.zeros(1 if has_zone else 0, dtype=np.intp),
         rank_position=cat.rank_position[columns],
         model_rank=cat.model_rank[columns],
+    )
+
+
+def catalogue_part(cat: CatalogueArrays, columns: IndexArray) -> CatalogueArrays:
+    """The actuators ``columns`` (ascending) of ``cat`` as a catalogue of their own, a row
+    as the whole one: the product of cases × part of the catalogue (the ratio study's grid
+    on the actuators that can be listed). Where the whole catalogue lacks data is taken
+    from its, for each rule set it has evaluated."""
+    return CatalogueArrays(
+        operands={name: values.take(columns) for name, values in cat.operands.items()},
+        thermal_time_constant=cat.thermal_time_constant.take(columns),
+        heating_slope=cat.heating_slope.take(columns),
+        zone_columns=np.flatnonzero(cat.operands["has_zone"].take(columns)),
+        rank_position=cat.rank_position.take(columns),
+        model_rank=cat.model_rank.take(columns),
+        lacking={
+            rules: _lacking_of(rules, lack, columns, (len(rules), 1, -1))
+            for rules, lack in cat.lacking.items()
+        },
+    )
+
+
+def _lacking_of(
+    rules: tuple[Rule, ...], lack: Lacking, columns: IndexArray, shape: tuple[int, ...]
+) -> Lacking:
+    """The whole catalogue's ``lack`` (rules × 1 × actuators) of the actuators
+    ``columns``, as ``shape``."""
+    return summarised(
+        rules,
+        lack.first_missing.take(columns, axis=2).reshape(shape),
+        lack.others_missing.take(columns, axis=2).reshape(shape),
     )
 
 
@@ -83,11 +114,7 @@ def evaluate_pairs(
     key = tuple(rules)
     lack = cat.lacking.get(key)
     if lack is not None:  # the whole catalogue's (rules × 1 × actuators), pair by pair
-        paired.lacking[key] = summarised(
-            rules,
-            lack.first_missing.take(columns, axis=2).reshape(len(rules), -1, 1),
-            lack.others_missing.take(columns, axis=2).reshape(len(rules), -1, 1),
-        )
+        paired.lacking[key] = _lacking_of(key, lack, columns, (len(rules), -1, 1))
     pairs = paired_cases(cases, rows, cat, columns)
     edges = zones.edges(columns, pairs.mean_speed)[:, np.newaxis]
     zone = edges if paired.zone_columns.size else np.empty((rows.size, 0))
