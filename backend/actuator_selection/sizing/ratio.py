@@ -34,7 +34,8 @@ bounds of Van de Straete et al. and Giberti et al. below), those shares bound ea
 actuator's utilisation from below, over the range (:func:`_range_floors`) and about its
 best grid value (:func:`_floors`): an actuator whose bound exceeds the ``top``-th best
 grid utilisation found cannot be listed, and is neither evaluated on the grid (only
-whether it fits somewhere, :func:`_fitting`) nor refined.
+whether it fits somewhere, asked first where it most likely does: :func:`_likeliest`)
+nor refined.
 
 The numbers are those of evaluating every value on every actuator
 (``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
@@ -431,35 +432,21 @@ def _range_floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
     return floor
 
 
-def _fitting(
-    search: _Pairs, grid: FloatArray, columns: IndexArray, shares: Sequence[tuple[FloatArray, int]]
-) -> int:
-    """How many of the actuators ``columns`` (not evaluated on the grid) pass at some grid
-    value: each asked first at the grid value of its least share (``shares``), those that
-    fail there then at every other."""
-    if not columns.size:
-        return 0
-    least = np.full((grid.size, columns.size), -np.inf)
+def _likeliest(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) -> IndexArray:
+    """For each of the actuators ``columns``, the grid value (its index) where the
+    largest of the ``shares`` is least: where it most likely passes."""
+    least = np.full((shares[0][0].shape[0], columns.size), -np.inf)
     for share, _direction in shares:
         np.fmax(least, share[:, columns], out=least)
-    first = np.argmin(least, axis=0)
-    passes = search.evaluated(grid[first], columns)[0] != _FAIL
-    fits = int(passes.sum())
-    others = np.nonzero(~passes)[0]
-    if others.size:
-        k = np.arange(grid.size)
-        cells = k[None, :] != first[others, None]  # each one's other grid values
-        at, row = np.nonzero(cells)
-        found = search.evaluated(grid[row], columns[others[at]])[0] != _FAIL
-        fits += int(np.unique(at[found]).size)
-    return fits
+    found: IndexArray = np.argmin(least, axis=0)
+    return found
 
 
 FIRST = 2
 """A ranked study with a floor (:func:`_range_floors`) evaluates the grid on the
-``FIRST × top`` actuators of least floor first: the ``top``-th best of their grid
-utilisations bounds the listed ones', and an actuator whose floor exceeds it is not
-evaluated on the grid."""
+``FIRST × top`` actuators of least floor first, then on twice as many each time: the
+``top``-th best grid utilisation so far bounds the listed ones', and an actuator whose
+floor exceeds it is not evaluated on the grid."""
 
 REACH = 2
 """Grid steps the parabolic steps can move a best value (:func:`_refinement`): at most
@@ -640,7 +627,7 @@ def _study(
     cases = cases_at(grid)
     limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     # the grid × the catalogue; a column left out (a ranked study's, that cannot be
-    # listed) fails everywhere here, its fit found apart (_fitting)
+    # listed) fails everywhere here, whether it fits found apart
     shape = (grid.size, len(actuators))
     verdicts = np.full(shape, _FAIL, dtype=np.int8)
     util, which = np.full(shape, np.nan), np.zeros(shape, dtype=np.intp)
@@ -674,20 +661,33 @@ def _study(
     # a ranked study: the monotone checks' shares bound the utilisations from below
     shares = [] if top is None else _monotone_shares(rules, monotone, cases, cat)
     unlisted: IndexArray = np.zeros(0, dtype=np.intp)
-    if top is not None and shares and grid.size > 1:
-        # the FIRST × top of least floor first; those whose floor exceeds the top-th
-        # of their best grid utilisations cannot be listed: not evaluated on the grid
+    fits_apart = 0  # those not evaluated on the grid that fit
+    search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
+    if top is not None and top < shape[1] and shares and grid.size > 1:
+        # by least floor, FIRST × top first, twice as many each time after: those whose
+        # floor exceeds the top-th best grid utilisation so far cannot be listed, and
+        # are not evaluated on the grid
         floor = _range_floors(shares)
-        order = np.argsort(floor, kind="stable")
-        first, rest = np.sort(order[: FIRST * top]), order[FIRST * top :]
-        evaluate(first)
-        passing = (verdicts[:, first] != _FAIL) & np.isfinite(util[:, first])
-        least = np.where(passing, util[:, first], np.inf).min(axis=0)
-        if rest.size and np.isfinite(least).sum() >= top:
+        rest = np.argsort(floor, kind="stable")
+        least = np.full(shape[1], np.inf)  # the best grid utilisation of those evaluated
+        size = FIRST * top
+        while rest.size:
+            part, rest = np.sort(rest[:size]), rest[size:]
+            size *= 2
+            evaluate(part)
+            passing = (verdicts[:, part] != _FAIL) & np.isfinite(util[:, part])
+            least[part] = np.where(passing, util[:, part], np.inf).min(axis=0)
             bar = np.partition(least, top - 1)[top - 1]
-            unlisted, rest = rest[floor[rest] > bar], rest[~(floor[rest] > bar)]
-        if rest.size:
-            evaluate(np.sort(rest))
+            cut = np.searchsorted(floor[rest], bar, side="right")  # floors ascending
+            unlisted, rest = np.concatenate([unlisted, rest[cut:]]), rest[:cut]
+        # whether those fit somewhere: asked where they most likely pass, those that fail
+        # there evaluated on the grid (as if listable: the same answer)
+        if unlisted.size:
+            likeliest = grid[_likeliest(shares, unlisted)]
+            passes = search.evaluated(likeliest, unlisted)[0] != _FAIL
+            fits_apart = int(passes.sum())
+            if not passes.all():
+                evaluate(np.sort(unlisted[~passes]))
     else:
         evaluate(None)
     ok = verdicts != _FAIL  # grid × actuators
@@ -707,7 +707,6 @@ def _study(
         which=which[best_k, every],
     )
     columns = np.nonzero(has_best)[0]
-    search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
     refine = series is None and columns.size > 0
 
     def brackets(of: BoolArray | None) -> _Brackets:
@@ -779,7 +778,7 @@ def _study(
         )
     )
     results = _results(actuators, chosen, grid, ok, util, ends, has_best, best, names)
-    fitting = int(ok.any(axis=0).sum()) + _fitting(search, grid, unlisted, shares)
+    fitting = int(ok.any(axis=0).sum()) + fits_apart
     return RankedStudy(results=results, total=len(actuators), fitting=fitting)
 
 
