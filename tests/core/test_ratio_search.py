@@ -322,8 +322,9 @@ def test_the_floors_bound_the_utilisation(study: Study, low: float, high: float)
     refined = np.array(
         [np.inf if r.best_utilisation is None else r.best_utilisation for r in whole]
     )
-    about_best = ratio._floors(shares, np.argmin(masked, axis=0))
-    over_range = ratio._range_floors(shares)
+    floors = ratio._floors(shares)
+    about_best = ratio._floor_about(floors, np.argmin(masked, axis=0))
+    over_range = floors.min(axis=0)
     assert (about_best <= refined).all()
     assert (over_range <= refined).all()
     assert (over_range <= masked).all()

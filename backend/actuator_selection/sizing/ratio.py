@@ -31,11 +31,11 @@ best value of every actuator that can be listed (its ranking reads them) and bis
 the listed actuators' brackets. Where the free value makes some checks' shares monotone
 (an external ratio: the speed i·n_L rises, the reflected inertia J_L/i² falls; the
 bounds of Van de Straete et al. and Giberti et al. below), those shares bound each
-actuator's utilisation from below, over the range (:func:`_range_floors`) and about its
-best grid value (:func:`_floors`): an actuator whose bound exceeds the ``top``-th best
-grid utilisation found cannot be listed, and is neither evaluated on the grid (only
-whether it fits somewhere, asked first where it most likely does: :func:`_likeliest`)
-nor refined.
+actuator's utilisation from below between grid values (:func:`_floors`): over the range,
+an actuator whose bound exceeds the ``top``-th best grid utilisation found cannot be
+listed and is not evaluated on the grid (only whether it fits somewhere, asked first
+where it most likely does: :func:`_likeliest`); about its best grid value
+(:func:`_floor_about`), one whose bound exceeds it is not refined.
 
 The numbers are those of evaluating every value on every actuator
 (``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
@@ -416,20 +416,24 @@ def _monotone_shares(
     return found
 
 
-def _range_floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
-    """A lower bound of each actuator's utilisation anywhere in the range (grid ×
-    actuators ``shares``, :func:`_monotone_shares`): between grid values k and k + 1 a
-    rising share is at least its value at k, a falling one at k + 1, and the utilisation,
-    the largest share, at least the larger; the least of that over the range. A share
-    counts where it is finite at every grid value (the utilisation counts it there and
-    between them)."""
+def _floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
+    """A lower bound of each actuator's utilisation between neighbouring grid values
+    (intervals × actuators), from the checks whose share is monotone in the free value
+    (``shares``: grid × actuators, each with its direction, +1 rising;
+    :func:`_monotone_shares`): between grid values k and k + 1 a rising share is at least
+    its value at k, a falling one at k + 1, and the utilisation, the largest share, at
+    least the larger. A share counts where it is finite at every grid value (the
+    utilisation counts it there and between them).
+
+    The bound of the analytic sizing methods (H.-J. Van de Straete et al. 1999;
+    Giberti et al. 2011): the motor speed i·n_L rises with the ratio i and the reflected
+    load inertia J_L/i² falls, against limits that depend on the actuator alone."""
     lower = np.full((shares[0][0].shape[0] - 1, shares[0][0].shape[1]), -np.inf)
     for share, direction in shares:
         bound = share[:-1] if direction > 0 else share[1:]
         counts = np.isfinite(share).all(axis=0)
         np.copyto(lower, bound, where=counts & (bound > lower))
-    floor: FloatArray = lower.min(axis=0)
-    return floor
+    return lower
 
 
 def _likeliest(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) -> IndexArray:
@@ -443,7 +447,7 @@ def _likeliest(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) ->
 
 
 FIRST = 2
-"""A ranked study with a floor (:func:`_range_floors`) evaluates the grid on the
+"""A ranked study with floors (:func:`_floors`) evaluates the grid on the
 ``FIRST × top`` actuators of least floor first, then on twice as many each time: the
 ``top``-th best grid utilisation so far bounds the listed ones', and an actuator whose
 floor exceeds it is not evaluated on the grid."""
@@ -453,26 +457,15 @@ REACH = 2
 1 + 1/4 + 1/16 + … < 4/3 of a step, whatever :data:`REFINE_ROUNDS`."""
 
 
-def _floors(shares: Sequence[tuple[FloatArray, int]], best_k: IndexArray) -> FloatArray:
-    """A lower bound of each actuator's best utilisation after the parabolic steps, from
-    the checks whose share is monotone in the free value (``shares``: grid × actuators,
-    each with its direction, +1 rising): the refined value lies within :data:`REACH` grid
-    steps of the best grid value ``best_k``, where a rising share is at least its value at
-    the lower end and a falling one at the upper end, and the utilisation, the largest
-    share, at least that. A share counts only where it is finite at both ends (the
-    utilisation counts it there, and between them).
-
-    The bound of the analytic sizing methods (H.-J. Van de Straete et al. 1999;
-    Giberti et al. 2011): the motor speed i·n_L rises with the ratio i and the reflected
-    load inertia J_L/i² falls, against limits that depend on the actuator alone."""
-    n = best_k.size
-    every = np.arange(n)
-    floor = np.full(n, -np.inf)
-    for share, direction in shares:
-        low = share[np.maximum(best_k - REACH, 0), every]
-        high = share[np.minimum(best_k + REACH, share.shape[0] - 1), every]
-        least = low if direction > 0 else high
-        np.copyto(floor, least, where=np.isfinite(low) & np.isfinite(high) & (least > floor))
+def _floor_about(floors: FloatArray, best_k: IndexArray) -> FloatArray:
+    """A lower bound of each actuator's best utilisation after the parabolic steps: the
+    least of its ``floors`` (:func:`_floors`) over the intervals within :data:`REACH`
+    grid steps of its best grid value ``best_k``, where the refined value lies."""
+    every = np.arange(best_k.size)
+    last = floors.shape[0] - 1
+    floor = floors[np.clip(best_k - REACH, 0, last), every]
+    for step in range(1 - REACH, REACH):
+        np.fmin(floor, floors[np.clip(best_k + step, 0, last), every], out=floor)
     return floor
 
 
@@ -663,11 +656,12 @@ def _study(
     unlisted: IndexArray = np.zeros(0, dtype=np.intp)
     fits_apart = 0  # those not evaluated on the grid that fit
     search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
-    if top is not None and top < shape[1] and shares and grid.size > 1:
+    floors = _floors(shares) if shares and grid.size > 1 else None
+    if top is not None and top < shape[1] and floors is not None:
         # by least floor, FIRST × top first, twice as many each time after: those whose
         # floor exceeds the top-th best grid utilisation so far cannot be listed, and
         # are not evaluated on the grid
-        floor = _range_floors(shares)
+        floor = floors.min(axis=0)  # over the whole range
         rest = np.argsort(floor, kind="stable")
         least = np.full(shape[1], np.inf)  # the best grid utilisation of those evaluated
         size = FIRST * top
@@ -746,10 +740,10 @@ def _study(
         model_rank = cat.model_rank
         guess = listed(_ranking(model_rank, has_best, best)[: GUESSED * top])
         found = brackets(guess)
-        if shares and columns.size > top:
+        if floors is not None and columns.size > top:
             # those that cannot be listed: a floor above the top-th best grid utilisation
             # (the top-th best value is at most that), their grid value kept
-            floor = _floors(shares, best_k)
+            floor = _floor_about(floors, best_k)
             bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
             columns = columns[~(floor[columns] > bar)]
         if series is None:
