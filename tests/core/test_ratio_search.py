@@ -189,6 +189,29 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     assert ranked.fitting == sum(1 for r in whole if r.intervals)
 
 
+@pytest.mark.parametrize("speed_rpm", [4.0, 40.0], ids=["worked", "fast load"])
+@pytest.mark.parametrize("top", [1, 7])
+def test_a_ranked_series_with_floors_as_before(speed_rpm: float, top: int) -> None:
+    """A standard series: the floors between its values leave off the grid those that
+    cannot be listed (the fast load's: most fit nowhere), the same first ``top`` and
+    counts as the exhaustive study's."""
+    series = [1.0, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0, 20.0, 50.0]
+    vary, columns = _worked(speed_rpm)
+    ranked = ranked_ratio_study(
+        actuators(),
+        vary,
+        1,
+        50,
+        top=top,
+        series=series,
+        cases_at=columns,
+        monotone=MONOTONE_SHARES,
+    )
+    whole = exhaustive_ratio_study(actuators(), vary, 1, 50, series=series)
+    _same(ranked.results, _ranking(whole)[:top])
+    assert ranked.fitting == sum(1 for r in whole if r.intervals)
+
+
 def test_a_series_as_before() -> None:
     series = [1.0, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0, 20.0, 50.0]
     vary, columns = _worked(4.0)
