@@ -5,15 +5,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import StrEnum
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.checks import Brief, Check, DeferredChecks, Rule, Status
 from actuator_selection.sizing.deferred import defer_field
 from actuator_selection.sizing.motion import CycleTorques, Profile
-
-if TYPE_CHECKING:
-    from actuator_selection.sizing.engine.detail import DecidedCells
 
 
 class Verdict(StrEnum):
@@ -57,14 +54,14 @@ class Candidate:
             return list(held.briefs())
         return [(c, (c.status, c.value, c.limit, c.approximate, c.message)) for c in self.checks]
 
-    def decided(self) -> tuple[DecidedCells, int] | None:
-        """The engine's decisions of the cells detailed with this candidate, and its cell
-        among them (:meth:`~actuator_selection.sizing.checks.DeferredChecks.decided`);
-        None where its checks are built (they are then read one by one)."""
+    def decided(self) -> tuple[Any, int] | None:
+        """The engine's decisions of the cells detailed with this candidate (the engine's
+        ``DecidedCells``, which this module does not import: the engine imports it), and
+        its cell among them (:meth:`~actuator_selection.sizing.checks.DeferredChecks.
+        decided`); None where its checks are built (they are then read one by one)."""
         held = _CHECKS.__get__(self, Candidate)
         if isinstance(held, DeferredChecks):
-            decided: tuple[DecidedCells, int] = held.decided()
-            return decided
+            return held.decided()
         return None
 
     @property

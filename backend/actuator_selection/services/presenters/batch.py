@@ -149,7 +149,8 @@ class CodedChecks:
         if found is None:
             with codes_only():  # the checks' messages as codes and params, no English
                 return [coded_check_body(*named) for named in candidate.briefs()]
-        decided, cell = found
+        decided: DecidedCells = found[0]
+        cell: int = found[1]
         written = self._written.get(id(decided))
         if written is None:
             written = self._written[id(decided)] = (decided, coded_checks_json(decided))
