@@ -32,7 +32,12 @@ from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import evaluate_pairs
 from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study, ratio_study
-from actuator_selection.sizing.ratio_cases import MONOTONE_SHARES, geared, geared_cases
+from actuator_selection.sizing.ratio_cases import (
+    MONOTONE_SHARES,
+    geared,
+    geared_cases,
+    geared_torque_floor,
+)
 
 
 @cache
@@ -58,6 +63,10 @@ def actuators() -> tuple[Actuator, ...]:
 
 Study = tuple[Callable[[float], Application], Callable[[FloatArray], Cases] | None]
 
+TorqueFloor = Callable[[FloatArray, FloatArray], FloatArray]
+_TORQUE_FLOORS: dict[Callable[[FloatArray], Cases], TorqueFloor] = {}
+"""Each of :func:`_worked`'s cases as columns, its bound of |T_1| (as the service's)."""
+
 
 def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
     """The worked example's load behind a ratio (J_tr 10⁻⁴ kgm²), its cases built as
@@ -68,6 +77,10 @@ def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
     app = Application(pattern=pattern, load=Load(torque_nm=5, inertia_kgm2=1.3))
     transmission = Transmission(ratio=1, inertia_kgm2=1e-4, efficiency=efficiency)
     columns = geared_cases(app, 1e-4, efficiency)
+    assert columns is not None
+    floor = geared_torque_floor(app, 1e-4, efficiency)
+    assert floor is not None
+    _TORQUE_FLOORS[columns] = floor
     return lambda i: geared(app, dataclasses.replace(transmission, ratio=i)), columns
 
 
@@ -177,8 +190,16 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     monkeypatch.setattr(ratio, "GUESSED", guessed)
     vary, columns = study
     monotone = None if columns is None else MONOTONE_SHARES  # the ratio's, as the service's
+    floor = None if columns is None else _TORQUE_FLOORS[columns]
     ranked = ranked_ratio_study(
-        actuators(), vary, low, high, top=top, cases_at=columns, monotone=monotone
+        actuators(),
+        vary,
+        low,
+        high,
+        top=top,
+        cases_at=columns,
+        monotone=monotone,
+        torque_floor=floor,
     )
     whole = exhaustive_ratio_study(actuators(), vary, low, high)
     expected = _ranking(whole)[:top]
@@ -206,6 +227,7 @@ def test_a_ranked_series_with_floors_as_before(speed_rpm: float, top: int) -> No
         series=series,
         cases_at=columns,
         monotone=MONOTONE_SHARES,
+        torque_floor=None if columns is None else _TORQUE_FLOORS[columns],
     )
     whole = exhaustive_ratio_study(actuators(), vary, 1, 50, series=series)
     _same(ranked.results, _ranking(whole)[:top])
@@ -356,3 +378,54 @@ def test_the_floors_bound_the_utilisation(study: Study, low: float, high: float)
     seventh = np.sort(masked.min(axis=0)[fits])[6]
     assert (about_best[fits] > seventh).any()
     assert (over_range[fits] > seventh).any()
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_torque_floor_bounds_the_engine_s_peak_torque(seed: int) -> None:
+    """The bound of |T_1| between neighbouring ratios (``geared_torque_floor``) and its
+    share of T_max are never above the engine's at any ratio between them, sampled
+    densely, over random loads: η_tr < 1, no load torque (T_L ≥ 0, Eq. 514.1), no load
+    inertia (then, with η_tr < 1 and no torque, the factor is η: nothing drives), J_tr 0;
+    and the bound is not void (it exceeds half the least |T_1| between for some)."""
+    rng = np.random.default_rng(seed)
+    chosen = actuators()
+    cat = catalogue_arrays(chosen)
+    peak = [r for r in rules_of([_worked(4.0)[0](1.0)], None) if r.name == "peak_torque"]
+    tight = False
+    for _ in range(4):
+        torque = float(rng.choice([0.0, 1.0]) * rng.uniform(0, 40))
+        inertia = float(rng.choice([0.0, 1.0]) * rng.uniform(0.01, 3))
+        efficiency = float(rng.choice([1.0, 0.9, 0.5]))
+        j_tr = float(rng.choice([0.0, 1e-4, 1e-2]))
+        pattern = SpeedPattern(
+            speed_rpm=float(rng.uniform(1, 60)),
+            accel_s=float(rng.uniform(0.02, 0.5)),
+            constant_s=0.1,
+            decel_s=0.1,
+            pause_s=1.0,
+        )
+        app = Application(pattern=pattern, load=Load(torque_nm=torque, inertia_kgm2=inertia))
+        columns = geared_cases(app, j_tr, efficiency)
+        floor = geared_torque_floor(app, j_tr, efficiency)
+        assert columns is not None
+        assert floor is not None
+        grid = np.sort(rng.uniform(0.05, 200, 12))
+        bound = floor(grid, cat.inertia)
+        shares = ratio._peak_torque_floors(bound, cat)
+        for k in range(grid.size - 1):
+            a, b = float(grid[k]), float(grid[k + 1])
+            between = np.concatenate([[a, b], np.geomspace(a, b, 40), rng.uniform(a, b, 40)])
+            cases = columns(between)
+            zones = zone_limits(chosen, cat.zone_columns, cases.mean_speed)
+            block = evaluate_block(cat, cases, zones, peak, detail=True)
+            assert block.checks is not None
+            engine = np.abs(block.accel_torque)
+            known = ~np.isnan(cat.inertia)
+            assert (bound[k][known] <= engine[:, known]).all()
+            assert np.isnan(bound[k][~known]).all()
+            with np.errstate(divide="ignore", invalid="ignore"):
+                share = block.checks.values[0] / block.checks.limits[0]
+            counted = (block.checks.limits[0] > 0) & np.isfinite(share)
+            assert (np.where(counted, shares[k] <= share, True)).all()
+            tight = tight or bool((bound[k][known] > 0.5 * engine[:, known].min(axis=0)).any())
+    assert tight

@@ -26,7 +26,12 @@ from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases
 from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study
-from actuator_selection.sizing.ratio_cases import MONOTONE_SHARES, geared, geared_cases
+from actuator_selection.sizing.ratio_cases import (
+    MONOTONE_SHARES,
+    geared,
+    geared_cases,
+    geared_torque_floor,
+)
 
 
 def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], Application]:
@@ -68,6 +73,18 @@ def columns_of(body: SelectionRequest, study: RatioStudyIn) -> Callable[[FloatAr
     if study.variable != "ratio":
         return None
     return geared_cases(
+        body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
+    )
+
+
+def torque_floor_of(
+    body: SelectionRequest, study: RatioStudyIn
+) -> Callable[[FloatArray, FloatArray], FloatArray] | None:
+    """A lower bound of |T_1| between neighbouring values where :func:`columns_of`
+    builds the cases (:func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`)."""
+    if study.variable != "ratio":
+        return None
+    return geared_torque_floor(
         body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
     )
 
@@ -121,6 +138,7 @@ def study(
         arrays=catalogue.arrays(tuple(actuators)),
         cases_at=columns_of(body, spec),
         monotone=MONOTONE_SHARES if spec.variable == "ratio" else None,
+        torque_floor=torque_floor_of(body, spec),
     )
     return RatioStudyOut(
         catalogue_version=catalogue.version,

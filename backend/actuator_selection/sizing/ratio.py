@@ -436,6 +436,21 @@ def _floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
     return lower
 
 
+def _peak_torque_floors(torque: FloatArray, cat: CatalogueArrays) -> FloatArray:
+    """The ``peak_torque`` check's share |T_1|/T_max bounded from below between grid
+    values (intervals × actuators), from a lower bound of |T_1| there (``torque``:
+    :func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`): a correctly
+    rounded ÷ by T_max > 0 is monotone, so the bound's share is at most the engine's;
+    −inf where there is none (no bound, T_max not positive). Where |T_1| overflows the
+    engine counts no share, but the check fails there: no passing value is bounded
+    wrongly."""
+    limit = cat.operands["max_torque_nm"]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        share = torque / limit
+    found: FloatArray = np.where((limit > 0) & ~np.isnan(share), share, -np.inf)
+    return found
+
+
 def _likeliest(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) -> IndexArray:
     """For each of the actuators ``columns``, the grid value (its index) where the
     largest of the ``shares`` is least: where it most likely passes."""
@@ -562,6 +577,7 @@ def ranked_ratio_study(
     arrays: CatalogueArrays | None = None,
     cases_at: Callable[[FloatArray], Cases] | None = None,
     monotone: Mapping[str, int] | None = None,
+    torque_floor: Callable[[FloatArray, FloatArray], FloatArray] | None = None,
 ) -> RankedStudy:
     """:func:`ratio_study`'s first ``top`` results in the ranking's order (best value
     first, by best utilisation, then by model; those without a best value last, by model),
@@ -573,9 +589,23 @@ def ranked_ratio_study(
     non-increasing (−1) in the free value, by name (:data:`~actuator_selection.sizing.
     ratio_cases.MONOTONE_SHARES`); they bound each best value's utilisation from below
     (:func:`_floors`), and an actuator whose bound exceeds the ``top``-th best grid
-    utilisation cannot be listed: its best value is not refined."""
+    utilisation cannot be listed: its best value is not refined. ``torque_floor``: a
+    lower bound of |T_1| between neighbouring values, given the values and J_A
+    (:func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`), raising those
+    bounds by the ``peak_torque`` check's (:func:`_peak_torque_floors`; with
+    ``monotone`` only)."""
     return _study(
-        actuators, vary, lower, upper, series, rules, arrays, cases_at, top, monotone or {}
+        actuators,
+        vary,
+        lower,
+        upper,
+        series,
+        rules,
+        arrays,
+        cases_at,
+        top,
+        monotone or {},
+        torque_floor,
     )
 
 
@@ -597,6 +627,7 @@ def _study(
     cases_at: Callable[[FloatArray], Cases] | None,
     top: int | None,
     monotone: Mapping[str, int],
+    torque_floor: Callable[[FloatArray, FloatArray], FloatArray] | None = None,
 ) -> RankedStudy:
     """The study; ``top`` None: every actuator in the catalogue's order, else the
     ranking's first ``top``."""
@@ -657,6 +688,8 @@ def _study(
     fits_apart = 0  # those not evaluated on the grid that fit
     search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
     floors = _floors(shares) if shares and grid.size > 1 else None
+    if floors is not None and torque_floor is not None and "peak_torque" in names:
+        np.fmax(floors, _peak_torque_floors(torque_floor(grid, cat.inertia), cat), out=floors)
     if top is not None and top < shape[1] and floors is not None:
         # by least floor, FIRST × top first, twice as many each time after: those whose
         # floor exceeds the top-th best grid utilisation so far cannot be listed, and
