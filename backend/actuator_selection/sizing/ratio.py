@@ -439,16 +439,15 @@ def _floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
 def _peak_torque_floors(torque: FloatArray, cat: CatalogueArrays) -> FloatArray:
     """The ``peak_torque`` check's share |T_1|/T_max bounded from below between grid
     values (intervals × actuators), from a lower bound of |T_1| there (``torque``:
-    :func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`): a correctly
-    rounded ÷ by T_max > 0 is monotone, so the bound's share is at most the engine's;
-    −inf where there is none (no bound, T_max not positive). Where |T_1| overflows the
-    engine counts no share, but the check fails there: no passing value is bounded
-    wrongly."""
+    :func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`, divided in
+    place): a correctly rounded ÷ by T_max > 0 is monotone, so the bound's share is at
+    most the engine's; NaN where there is none (no bound, T_max not positive). Where
+    |T_1| overflows the engine counts no share, but the check fails there: no passing
+    value is bounded wrongly."""
     limit = cat.operands["max_torque_nm"]
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        share = torque / limit
-    found: FloatArray = np.where((limit > 0) & ~np.isnan(share), share, -np.inf)
-    return found
+        share: FloatArray = np.divide(torque, np.where(limit > 0, limit, np.nan), out=torque)
+    return share
 
 
 def _likeliest(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) -> IndexArray:
@@ -689,6 +688,7 @@ def _study(
     search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
     floors = _floors(shares) if shares and grid.size > 1 else None
     if floors is not None and torque_floor is not None and "peak_torque" in names:
+        # fmax: a NaN (no bound) leaves the floor as it is
         np.fmax(floors, _peak_torque_floors(torque_floor(grid, cat.inertia), cat), out=floors)
     if top is not None and top < shape[1] and floors is not None:
         # by least floor, FIRST × top first, twice as many each time after: those whose

@@ -140,23 +140,23 @@ def geared_torque_floor(
     """A lower bound of the engine's |T_1| (the ``peak_torque`` check's value) of
     :func:`geared_cases` between neighbouring ratios: given the ratios (ascending, n)
     and the actuators' J_A (m), intervals × actuators ((n − 1) × m); NaN where none is
-    known (J_A not published, an overflow). None where ``app`` is a cycle of segments.
+    proven (J_A not published or negative, a negative operand, an overflow's inf·0).
+    None where ``app`` is a cycle of segments.
 
-    The Giberti et al. (2011) / Van de Straete et al. (1999) reflection: the trapezoid's
-    accelerating piece carries, at ratio i, the torque T(i) = c(i) + (J_A + J(i))·α(i)
-    with c = f·(T_L/i), J = f·(J_tr + J_L/i²), α = α_L·i (:func:`~actuator_selection.
-    sizing.motion.trapezoid_piece_arrays`: n·i·2π/60/t_1), f the power flow's factor
-    (1/η, η or 1, :func:`_by_power_flow`; 1 where η = 1). T_L/i, J_tr + J_L/i² and α_L·i
-    are each monotone in i, whatever the signs of T_L, J_L, α_L, and so is each as
-    computed in floating point (a correctly rounded +, ×, ÷ by a constant is monotone):
-    between ratios a and b each lies between its values at a and b. Interval
-    arithmetic with monotone rounding then bounds T over [a, b]: c ≥ min_f f·min(c_a, c_b),
-    J_A + J between J_A + min_f f·J_min and J_A + max_f f·J_max, the product at least the
-    least of its four corners, and T ≥ T_lo, T ≤ T_hi; so |T| ≥ max(T_lo, −T_hi). The
-    accelerating piece does not brake, so the engine's |T_1| (the largest |T| of the
-    pieces that do not) is at least its |T|. The load driving back, a negative T_L or J_L,
-    a zero torque: the factor's three values and the corners cover them (the bound is
-    then looser, never wrong)."""
+    The reflection of Giberti et al. (2011) and Van de Straete et al. (1999): the
+    trapezoid's accelerating piece carries, at ratio i, T(i) = c(i) + (J_A + J(i))·α(i)
+    (:func:`~actuator_selection.sizing.engine.block.evaluate_block`), with c = f·(T_L/i),
+    J = f·(J_tr + J_L/i²), α = n_L·i·2π/60/t_1 (:func:`~actuator_selection.sizing.
+    motion.trapezoid_piece_arrays`), f the power flow's factor (1/η, η or 1 by the sign
+    of the load side's torque, :func:`_by_power_flow`; 1 where η = 1). T_L/i,
+    J_tr + J_L/i² and α are each monotone in i, and so is each as computed here and by
+    :func:`geared_cases` (the same operations; a correctly rounded +, ×, ÷ by a constant
+    is monotone): between ratios a and b each is at least the lesser of its values at
+    a and b, and f at least its least value. Where those bounds c_lo, J_lo, α_lo and J_A
+    are ≥ 0, rounding is monotone in each operand of J_A + J, (J_A + J)·α and c + …, so
+    T(i) ≥ T_lo = c_lo + (J_A + J_lo)·α_lo ≥ 0, computed in that order: |T(i)| ≥ T_lo.
+    The accelerating piece does not brake, so the engine's |T_1| (the largest |T| of
+    the pieces that do not) is at least its |T(i)|. Elsewhere no bound is claimed."""
     pattern, load = app.pattern, app.load
     if pattern is None or load is None:
         return None
@@ -168,24 +168,20 @@ def geared_torque_floor(
             static = load.torque_nm / ratios
             inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
             accel = pattern.speed_rpm * ratios * RAD_PER_S_PER_RPM / pattern.accel_s
-            c_low, c_high = _ends(static)
-            j_low, j_high = _ends(inertia)
-            a_low, a_high = _ends(accel)
-            c_lo = np.min([c_low * f for f in factors], axis=0)[:, np.newaxis]
-            c_hi = np.max([c_high * f for f in factors], axis=0)[:, np.newaxis]
-            j_lo = np.min([j_low * f for f in factors], axis=0)[:, np.newaxis]
-            j_hi = np.max([j_high * f for f in factors], axis=0)[:, np.newaxis]
-            i_lo, i_hi = inertia_a + j_lo, inertia_a + j_hi
-            corners = [i * a[:, np.newaxis] for i in (i_lo, i_hi) for a in (a_low, a_high)]
-            # np.min/np.max propagate NaN (an overflow's inf·0): no bound there
-            t_lo = c_lo + np.min(corners, axis=0)
-            t_hi = c_hi + np.max(corners, axis=0)
-            bound: FloatArray = np.maximum(t_lo, -t_hi)
+            c_lo = np.min([_least(static) * f for f in factors], axis=0)
+            j_lo = np.min([_least(inertia) * f for f in factors], axis=0)
+            a_lo = _least(accel)
+            provable = (c_lo >= 0) & (j_lo >= 0) & (a_lo >= 0)
+            j_a = np.where(inertia_a >= 0, inertia_a, np.nan)
+            bound: FloatArray = j_a + j_lo[:, np.newaxis]  # in place after: one array
+            bound *= a_lo[:, np.newaxis]
+            bound += c_lo[:, np.newaxis]
+        bound[~provable] = np.nan
         return bound
 
     return floor
 
 
-def _ends(values: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """The lesser and the larger of each pair of neighbouring ``values``."""
-    return np.minimum(values[:-1], values[1:]), np.maximum(values[:-1], values[1:])
+def _least(values: FloatArray) -> FloatArray:
+    """The lesser of each pair of neighbouring ``values``."""
+    return np.minimum(values[:-1], values[1:])
