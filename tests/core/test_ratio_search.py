@@ -22,7 +22,7 @@ from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.schemas.ratio import RatioStudyRequest
 from actuator_selection.services.ratio import varied
-from actuator_selection.sizing import ratio
+from actuator_selection.sizing import ratio, ratio_floors, ratio_search
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import FloatArray, catalogue_arrays, evaluate_batch
@@ -126,7 +126,7 @@ def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
 )
 @pytest.mark.parametrize(
     ("many_pairs", "few_pairs"),
-    [(ratio.MANY_PAIRS, ratio.FEW_PAIRS), (ratio.MANY_PAIRS, 0), (0, 0)],
+    [(ratio_search.MANY_PAIRS, ratio_search.FEW_PAIRS), (ratio_search.MANY_PAIRS, 0), (0, 0)],
     ids=["as chosen", "2 halvings a call", "1 halving a call"],
 )
 def test_the_search_finds_what_the_exhaustive_study_finds(
@@ -137,8 +137,8 @@ def test_the_search_finds_what_the_exhaustive_study_finds(
     few_pairs: int,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
-    monkeypatch.setattr(ratio, "FEW_PAIRS", few_pairs)
+    monkeypatch.setattr(ratio_search, "MANY_PAIRS", many_pairs)
+    monkeypatch.setattr(ratio_search, "FEW_PAIRS", few_pairs)
     vary, columns = study
     found = ratio_study(actuators(), vary, low, high, cases_at=columns)
     assert any(r.intervals for r in found)
@@ -170,7 +170,7 @@ def _ranking(results: list[RatioResult]) -> list[RatioResult]:
     ids=["ratio 1-20", "ratio 0.05-2000 eta 0.9", "fast load, ratio 0.5-5", "lead 5-1000"],
 )
 @pytest.mark.parametrize("top", [1, 7, 1000])
-@pytest.mark.parametrize("many_pairs", [ratio.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
+@pytest.mark.parametrize("many_pairs", [ratio_search.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
 @pytest.mark.parametrize("guessed", [ratio.GUESSED, 0], ids=["guessed", "bisected after"])
 def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     study: Study,
@@ -186,7 +186,7 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     floors show cannot be listed neither evaluated on the grid nor refined (the fast
     load's: some of them fit nowhere): the first ``top`` of the ranking, each equal to its
     result of the exhaustive study, and the counts of the whole."""
-    monkeypatch.setattr(ratio, "MANY_PAIRS", many_pairs)
+    monkeypatch.setattr(ratio_search, "MANY_PAIRS", many_pairs)
     monkeypatch.setattr(ratio, "GUESSED", guessed)
     vary, columns = study
     monotone = None if columns is None else MONOTONE_SHARES  # the ratio's, as the service's
@@ -352,7 +352,7 @@ def test_the_floors_bound_the_utilisation(study: Study, low: float, high: float)
         cat, cases, zone_limits(chosen, cat.zone_columns, cases.mean_speed), rules, detail=True
     )
     assert block.checks is not None
-    shares = ratio._monotone_shares(rules, MONOTONE_SHARES, cases, cat)
+    shares = ratio_floors.monotone_shares(rules, MONOTONE_SHARES, cases, cat)
     names = [rule.name for rule in rules]
     for (share, direction), name in zip(shares, MONOTONE_SHARES, strict=True):
         assert direction == MONOTONE_SHARES[name]
@@ -360,15 +360,17 @@ def test_the_floors_bound_the_utilisation(study: Study, low: float, high: float)
         with np.errstate(divide="ignore", invalid="ignore"):
             engine = block.checks.values[k] / block.checks.limits[k]
         np.testing.assert_array_equal(share, np.where(block.checks.limits[k] > 0, engine, np.nan))
-    codes, util, _which, _failing = ratio._cells(block)
+    codes, util, _which, _failing = ratio_search.block_cells(block)
     util = util.reshape(grid.size, -1)
-    masked = np.where((codes.reshape(util.shape) != ratio._FAIL) & np.isfinite(util), util, np.inf)
+    masked = np.where(
+        (codes.reshape(util.shape) != ratio_search.FAIL) & np.isfinite(util), util, np.inf
+    )
     whole = exhaustive_ratio_study(chosen, vary, low, high)
     refined = np.array(
         [np.inf if r.best_utilisation is None else r.best_utilisation for r in whole]
     )
-    floors = ratio._floors(shares)
-    about_best = ratio._floor_about(floors, np.argmin(masked, axis=0))
+    floors = ratio_floors.interval_floors(shares)
+    about_best = ratio_floors.floor_about(floors, np.argmin(masked, axis=0))
     over_range = floors.min(axis=0)
     assert (about_best <= refined).all()
     assert (over_range <= refined).all()
@@ -411,7 +413,7 @@ def test_the_torque_floor_bounds_the_engine_s_peak_torque(seed: int) -> None:
         assert floor is not None
         grid = np.sort(rng.uniform(0.05, 200, 12))
         bound = floor(grid, cat.inertia)
-        shares = ratio._peak_torque_floors(bound, cat)
+        shares = ratio_floors.peak_torque_floors(bound, cat)
         for k in range(grid.size - 1):
             a, b = float(grid[k]), float(grid[k + 1])
             between = np.concatenate([[a, b], np.geomspace(a, b, 40), rng.uniform(a, b, 40)])

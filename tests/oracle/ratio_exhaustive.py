@@ -22,14 +22,12 @@ from actuator_selection.sizing.engine import (
     catalogue_arrays,
     evaluate_batch,
 )
-from actuator_selection.sizing.ratio import (
-    _CHECK_FAIL,
-    _FAIL,
+from actuator_selection.sizing.ratio import Interval, RatioResult, _grid
+from actuator_selection.sizing.ratio_search import (
     BISECTION_STEPS,
+    CODE_FAIL,
+    FAIL,
     REFINE_ROUNDS,
-    Interval,
-    RatioResult,
-    _grid,
 )
 
 
@@ -68,7 +66,7 @@ class _Cells:
         ev = evaluate_batch(chosen, [self.vary(float(x)) for x in xs], rules=self.rules)
         self.names = ev.check_names
         util, which = _utilisation(ev)
-        failing = ev.statuses[rows, at] == _CHECK_FAIL
+        failing = ev.statuses[rows, at] == CODE_FAIL
         return ev.verdicts[rows, at], util[rows, at], which[rows, at], failing
 
 
@@ -93,10 +91,10 @@ def exhaustive_ratio_study(
     cat = catalogue_arrays(actuators) if arrays is None else arrays
     ev = evaluate_batch(actuators, [vary(float(x)) for x in grid], rules=rules, arrays=cat)
     names = ev.check_names
-    ok = ev.verdicts != _FAIL  # grid × actuators
+    ok = ev.verdicts != FAIL  # grid × actuators
     util, which = _utilisation(ev)
     cells = _Cells(actuators, vary, rules)
-    failing_grid = ev.statuses == _CHECK_FAIL
+    failing_grid = ev.statuses == CODE_FAIL
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
     change_k, change_j = np.nonzero(ok[1:] != ok[:-1])
@@ -111,7 +109,7 @@ def exhaustive_ratio_study(
         for _ in range(BISECTION_STEPS):
             middle = np.sqrt(ok_side * bad_side)
             codes, _u, _w, failing = cells(middle, change_j)
-            fails = codes == _FAIL
+            fails = codes == FAIL
             ok_side = np.where(fails, ok_side, middle)
             bad_side = np.where(fails, middle, bad_side)
             bad_fail = np.where(fails[:, None], failing, bad_fail)
@@ -145,7 +143,7 @@ def exhaustive_ratio_study(
             vertex = np.exp(centre + np.where(convex, np.clip(shift, -half, half), 0.0))
             vertex = np.clip(vertex, grid[0], grid[-1])  # within the range searched
             codes, u, w, _f = cells(vertex, columns)
-            better = (codes != _FAIL) & np.isfinite(u) & (u < best_util[columns])
+            better = (codes != FAIL) & np.isfinite(u) & (u < best_util[columns])
             chosen = columns[better]
             best[chosen] = vertex[better]
             best_util[chosen] = u[better]

@@ -18,7 +18,8 @@ The search runs on the engine, vectorised over cases × actuators:
    a bracket; all brackets are bisected together, on the engine's pairs
    (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`: each bracket's midpoint
    on its own actuator, not every midpoint on every actuator), several halvings to an
-   engine call where the pairs are few, one where they are many (:data:`MANY_PAIRS`),
+   engine call where the pairs are few, one where they are many
+   (:data:`~actuator_selection.sizing.ratio_search.MANY_PAIRS`),
    so several intervals per actuator are found where the checks are not monotonic;
 3. the grid value of least binding utilisation (max value/limit over the checks,
    :func:`~actuator_selection.sizing.checks.rule.utilisation`) is refined by parabolic
@@ -31,11 +32,12 @@ best value of every actuator that can be listed (its ranking reads them) and bis
 the listed actuators' brackets. Where the free value makes some checks' shares monotone
 (an external ratio: the speed i·n_L rises, the reflected inertia J_L/i² falls; the
 bounds of Van de Straete et al. and Giberti et al. below), those shares bound each
-actuator's utilisation from below between grid values (:func:`_floors`): over the range,
+actuator's utilisation from below between grid values
+(:func:`~actuator_selection.sizing.ratio_floors.interval_floors`): over the range,
 an actuator whose bound exceeds the ``top``-th best grid utilisation found cannot be
 listed and is not evaluated on the grid (only whether it fits somewhere, asked first
-where it most likely does: :func:`_likeliest`); about its best grid value
-(:func:`_floor_about`), one whose bound exceeds it is not refined.
+where it most likely does: :func:`likeliest_index`); about its best grid value
+(:func:`floor_about`), one whose bound exceeds it is not refined.
 
 The numbers are those of evaluating every value on every actuator
 (``tests/oracle/ratio_exhaustive.py``, the study as first written, which the tests
@@ -58,66 +60,56 @@ condition T(i) ≤ T_max bounds i to the roots of J_A·ε_L·i² − T_max·i + 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Generator, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import cast
 
 import numpy as np
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.errors import InvalidInputError
+from actuator_selection.sizing import ratio_search
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.candidates import Verdict
-from actuator_selection.sizing.checks import Operands, Rule, Status
+from actuator_selection.sizing.checks import Rule
 from actuator_selection.sizing.engine import (
-    STATUS_BY_CODE,
     VERDICT_BY_CODE,
     BoolArray,
     CatalogueArrays,
-    CodeArray,
     FloatArray,
     IndexArray,
     catalogue_arrays,
 )
-from actuator_selection.sizing.engine.block import Block, blocks, evaluate_block, operands_of
+from actuator_selection.sizing.engine.block import blocks, evaluate_block
 from actuator_selection.sizing.engine.cases import (
     Cases,
-    ZoneTable,
-    case_operands,
     cases_of,
     zone_limits,
     zone_table,
 )
-from actuator_selection.sizing.engine.codes import ARRAY_OPS
 from actuator_selection.sizing.engine.evaluation import rules_of
-from actuator_selection.sizing.engine.pairs import catalogue_part, evaluate_pairs
+from actuator_selection.sizing.engine.pairs import catalogue_part
+from actuator_selection.sizing.ratio_floors import (
+    FIRST,
+    floor_about,
+    interval_floors,
+    likeliest_index,
+    monotone_shares,
+    peak_torque_floors,
+)
+from actuator_selection.sizing.ratio_search import (
+    FAIL,
+    Best,
+    Brackets,
+    Pairs,
+    block_cells,
+    depth_for,
+    refinement,
+)
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
-BISECTION_STEPS = 12
-"""Halvings of every bracket: a grid step of 6.5 % narrowed to 1.6·10⁻⁵ relative."""
-BISECTION_DEPTH = 2
-"""Halvings per engine call (:func:`_bisection`) where the pairs are few: 3 values a
-bracket, 6 calls, the parabolic steps' beside them, each asked ahead for both outcomes
-(:func:`_refinement`); fewer calls, each paying the engine's fixed cost once."""
-FEWEST_DEPTH = 3
-"""Halvings per engine call where the pairs are fewer than :data:`FEW_PAIRS` and the
-load cases come as columns (no application built per value): 7 values a bracket, 4
-calls."""
-FEW_PAIRS = 2_000
-MANY_PAIRS = 20_000
-"""From how many pairs saved one halving per call (12 calls, 1 value a bracket) and the
-parabolic steps not asked ahead (3 values a step fewer) cost less than the 6 calls more:
-a call's fixed cost is that of some thousand pairs (``python -m bench.ratio``)."""
-REFINE_ROUNDS = 3
-"""Parabolic steps for the best value (one engine call each, after the first, beside the
-bisection's)."""
 MAX_SERIES = 200
 """The most values of a standard series."""
-
-_FAIL = VERDICT_BY_CODE.index(Verdict.UNSUITABLE)
-_CHECK_FAIL = STATUS_BY_CODE.index(Status.FAIL)
-_CODE_FAIL = np.int8(_CHECK_FAIL)
 
 
 def inertia_matched_ratio(load_inertia_kgm2: float, actuator_inertia_kgm2: float) -> float:
@@ -160,366 +152,10 @@ class RatioResult:
     """The binding utilisation at each grid value (for the chart)."""
 
 
-Cells = tuple[CodeArray, FloatArray, IndexArray, BoolArray]
-"""Per cell: the verdict code, the binding utilisation (max value/limit over the checks
-with both; NaN where none has), its check's index, and which checks fail (cells ×
-checks)."""
-
-
-def _cells(block: Block) -> Cells:
-    """What the search reads of a block (run with ``detail``), its cells flattened in
-    order; the status codes and each check's value and limit, no check worded."""
-    assert block.details is not None
-    shape = block.accel_torque.shape
-    best = np.full(shape, -np.inf)
-    which = np.zeros(shape, dtype=np.intp)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for k, d in enumerate(block.details):
-            share = d.values / d.limits  # a share where the limit is positive and it finite
-            take = (d.limits > 0) & np.isfinite(share) & (share > best)
-            np.copyto(best, share, where=take)  # the first check of the largest, as argmax
-            np.copyto(which, k, where=take)
-    util = np.where(np.isfinite(best), best, np.nan)
-    failing = np.empty((*shape, len(block.statuses)), dtype=np.bool_)
-    for k, codes in enumerate(block.statuses):
-        np.equal(codes, _CODE_FAIL, out=failing[..., k])
-    return (
-        block.verdicts().ravel(),
-        util.ravel(),
-        which.ravel(),
-        failing.reshape(-1, len(block.statuses)),
-    )
-
-
-Request = tuple[FloatArray, IndexArray]
-"""Pairs to evaluate: the free value and the actuator's column, pair by pair."""
-Search = Generator[Request, Cells, None]
-
-
-class _Pairs:
-    """The engine on pairs (value, actuator): the distinct values as the cases, each pair
-    its own cell (:func:`~actuator_selection.sizing.engine.pairs.evaluate_pairs`); a pair
-    whose value is a grid value (a parabolic step's about the best grid value, its
-    neighbours) read from the grid's cells, the same numbers."""
-
-    def __init__(
-        self,
-        cat: CatalogueArrays,
-        zones: ZoneTable,
-        cases_at: Callable[[FloatArray], Cases],
-        rules: Sequence[Rule],
-        grid: FloatArray,
-        cells: Cells,
-    ) -> None:
-        self.cat, self.zones, self.cases_at, self.rules = cat, zones, cases_at, rules
-        self.grid, self.cells = grid, cells  # the grid's, grid × actuators (cells raveled)
-
-    def __call__(self, values: FloatArray, columns: IndexArray) -> Cells:
-        k = np.minimum(np.searchsorted(self.grid, values), self.grid.size - 1)
-        on_grid = self.grid[k] == values
-        if not on_grid.any():
-            return self.evaluated(values, columns)
-        width = self.cells[0].size // self.grid.size
-        at = k[on_grid] * width + columns[on_grid]
-        off = ~on_grid
-        found = self.evaluated(values[off], columns[off]) if off.any() else None
-        out = []
-        grid_parts: tuple[np.ndarray, ...] = self.cells
-        for n, grid_part in enumerate(grid_parts):
-            part = np.empty((values.size, *grid_part.shape[1:]), dtype=grid_part.dtype)
-            part[on_grid] = grid_part[at]
-            if found is not None:
-                part[off] = found[n]
-            out.append(part)
-        return cast(Cells, tuple(out))
-
-    def evaluated(self, values: FloatArray, columns: IndexArray) -> Cells:
-        """The cells of the pairs, each evaluated (none read from the grid's)."""
-        xs, rows = np.unique(values, return_inverse=True)
-        cases = self.cases_at(xs)
-        block = evaluate_pairs(
-            self.cat, self.zones, cases, rows, columns, self.rules, overload=False
-        )
-        return _cells(block)
-
-    def run(self, *searches: Search) -> None:
-        """Run ``searches`` side by side: each engine call evaluates the pairs that every
-        search still running asks for, in one block."""
-        asked: dict[int, Request] = {}
-        running = dict(enumerate(searches))
-        for n, search in list(running.items()):
-            request = next(search, None)
-            if request is None:
-                del running[n]
-            else:
-                asked[n] = request
-        while running:
-            order = list(running)
-            sizes = [asked[n][0].size for n in order]
-            answer = self(
-                np.concatenate([asked[n][0] for n in order]),
-                np.concatenate([asked[n][1] for n in order]),
-            )
-            at = 0
-            for n, size in zip(order, sizes, strict=True):
-                part = cast(Cells, tuple(a[at : at + size] for a in answer))
-                at += size
-                try:
-                    asked[n] = running[n].send(part)
-                except StopIteration:
-                    del running[n], asked[n]
-
-
-def _bisection(
-    ok_side: FloatArray,
-    bad_side: FloatArray,
-    columns: IndexArray,
-    bad_fail: BoolArray,
-    depth: int,
-) -> Search:
-    """:data:`BISECTION_STEPS` halvings of every bracket (ok value, failing value) in
-    log x, in rounds of ``depth``: each round evaluates the midpoints of
-    every interval the round's halvings could reach (a tree of 2^depth − 1 values per
-    bracket, each the geometric mean of its interval's ends, as one halving computes
-    it) and then follows each bracket's halvings through it. The arrays are updated in
-    place: the last ok value, the first failing one, and the checks failing there."""
-    width = 2**depth - 1
-    for _ in range(BISECTION_STEPS // depth):
-        low = np.empty((ok_side.size, width))
-        high = np.empty((ok_side.size, width))
-        middle = np.empty((ok_side.size, width))
-        low[:, 0], high[:, 0] = ok_side, bad_side
-        for k in range(width):
-            middle[:, k] = np.sqrt(low[:, k] * high[:, k])
-            left, right = 2 * k + 1, 2 * k + 2
-            if right < width:  # left: the middle failed; right: it passed
-                low[:, left], high[:, left] = low[:, k], middle[:, k]
-                low[:, right], high[:, right] = middle[:, k], high[:, k]
-        codes, _u, _w, failing = yield middle.ravel(), np.repeat(columns, width)
-        codes = codes.reshape(middle.shape)
-        failing = failing.reshape((*middle.shape, -1))
-        node: IndexArray = np.zeros(ok_side.size, dtype=np.intp)
-        every = np.arange(ok_side.size)
-        for _step in range(depth):
-            m = middle[every, node]
-            fails = codes[every, node] == _FAIL
-            ok_side[:] = np.where(fails, ok_side, m)
-            bad_side[:] = np.where(fails, m, bad_side)
-            bad_fail[:] = np.where(fails[:, None], failing[every, node], bad_fail)
-            node = np.where(fails, 2 * node + 1, 2 * node + 2)
-
-
-@dataclass(slots=True, kw_only=True)
-class _Best:
-    """Per actuator, the value of least binding utilisation found so far, updated in place."""
-
-    value: FloatArray
-    utilisation: FloatArray
-    code: CodeArray
-    which: IndexArray
-
-
-def _asked(
-    best: _Best, values: FloatArray, columns: IndexArray
-) -> Generator[Request, Cells, Cells]:
-    """The cells of the pairs (``values``, ``columns``), those at an actuator's best value
-    so far (the middle of a step about it, a vertex that does not move) taken from the
-    best's, the same numbers, the rest asked; the failing checks are not read (False)."""
-    known = values == best.value[columns]
-    if not known.any():
-        return (yield values, columns)
-    codes, utilisation = best.code[columns], best.utilisation[columns]
-    which, failing = best.which[columns], np.zeros((values.size, 0), dtype=np.bool_)
-    ask = ~known
-    if ask.any():
-        asked = yield values[ask], columns[ask]
-        codes[ask], utilisation[ask], which[ask] = asked[0], asked[1], asked[2]
-    return codes, utilisation, which, failing
-
-
-def _refinement(best: _Best, columns: IndexArray, grid: FloatArray, ahead: bool) -> Search:
-    """:data:`REFINE_ROUNDS` parabolic steps in log x about each best value: a parabola
-    through the best and its neighbours, its vertex evaluated; each round about the best
-    so far, a quarter as wide.
-
-    ``ahead``: the next round's three values are asked with the vertex, for both outcomes
-    (about the vertex, should it be better; about the best so far, should it not), so
-    that the rounds take one engine call each, not two, for twice the values."""
-    step = math.log(grid[1] / grid[0])
-
-    def about(centre: FloatArray, half: FloatArray) -> FloatArray:
-        values: FloatArray = np.exp(centre[:, None] + half[:, None] * np.array([-1.0, 0.0, 1.0]))
-        return values
-
-    def vertex_of(centre: FloatArray, half: FloatArray, u: FloatArray) -> FloatArray:
-        left, mid, right = u[:, 0], u[:, 1], u[:, 2]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            shift = 0.5 * half * (left - right) / (left - 2 * mid + right)
-        convex = np.isfinite(shift) & (left - 2 * mid + right > 0)
-        vertex = np.exp(centre + np.where(convex, np.clip(shift, -half, half), 0.0))
-        return np.asarray(np.clip(vertex, grid[0], grid[-1]))  # within the range searched
-
-    n = columns.size
-    centre, half = np.log(best.value[columns]), np.full(n, step)
-    points = about(centre, half)
-    u = (yield from _asked(best, points.ravel(), np.repeat(columns, 3)))[1].reshape(points.shape)
-    for r in range(REFINE_ROUNDS):
-        vertex = vertex_of(centre, half, u)
-        last = r + 1 == REFINE_ROUNDS
-        values, asked = [vertex], [columns]
-        if not last and ahead:  # the next round about either centre
-            moved, stayed = about(np.log(vertex), half / 4), about(centre, half / 4)
-            values += [moved.ravel(), stayed.ravel()]
-            asked += [np.repeat(columns, 3)] * 2
-        codes, got, w, _f = yield from _asked(best, np.concatenate(values), np.concatenate(asked))
-        at_vertex = got[:n]
-        better = (
-            (codes[:n] != _FAIL) & np.isfinite(at_vertex) & (at_vertex < best.utilisation[columns])
-        )
-        chosen = columns[better]
-        best.value[chosen] = vertex[better]
-        best.utilisation[chosen] = at_vertex[better]
-        best.code[chosen] = codes[:n][better]
-        best.which[chosen] = w[:n][better]
-        if last:
-            break
-        if ahead:
-            u = np.where(better[:, None], got[n : 4 * n].reshape(n, 3), got[4 * n :].reshape(n, 3))
-        centre, half = np.log(best.value[columns]), half / 4
-        if not ahead:
-            points = about(centre, half)
-            u = (yield from _asked(best, points.ravel(), np.repeat(columns, 3)))[1].reshape(
-                points.shape
-            )
-
-
-def _monotone_shares(
-    rules: Sequence[Rule], monotone: Mapping[str, int], cases: Cases, cat: CatalogueArrays
-) -> list[tuple[FloatArray, int]]:
-    """The shares (value/limit; NaN where the limit is not positive) of the checks that
-    ``monotone`` names, cases × actuators, each with its direction (+1: rising with the
-    free value): the rule's own value and limit on the case's and the catalogue's
-    operands, as the engine computes them (such a check reads no cell's quantity)."""
-    chosen = [(rule, monotone[rule.name]) for rule in rules if rule.name in monotone]
-    if not chosen:
-        return []
-    case = case_operands(cases)
-    cell = {n: math.nan for n in Operands._fields if n not in case and n not in cat.operands}
-    q = operands_of(case, cat.operands, cell)
-    shape = (cases.size, cat.size)
-    found = []
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for rule, direction in chosen:
-            value = np.broadcast_to(rule.value(q, ARRAY_OPS), shape)
-            limit = np.broadcast_to(rule.limit(q, ARRAY_OPS), shape)
-            found.append((np.where(limit > 0, value / limit, np.nan), direction))
-    return found
-
-
-def _floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
-    """A lower bound of each actuator's utilisation between neighbouring grid values
-    (intervals × actuators), from the checks whose share is monotone in the free value
-    (``shares``: grid × actuators, each with its direction, +1 rising;
-    :func:`_monotone_shares`): between grid values k and k + 1 a rising share is at least
-    its value at k, a falling one at k + 1, and the utilisation, the largest share, at
-    least the larger. A share counts where it is finite at every grid value (the
-    utilisation counts it there and between them).
-
-    The bound of the analytic sizing methods (H.-J. Van de Straete et al. 1999;
-    Giberti et al. 2011): the motor speed i·n_L rises with the ratio i and the reflected
-    load inertia J_L/i² falls, against limits that depend on the actuator alone."""
-    lower = np.full((shares[0][0].shape[0] - 1, shares[0][0].shape[1]), -np.inf)
-    for share, direction in shares:
-        bound = share[:-1] if direction > 0 else share[1:]
-        counts = np.isfinite(share).all(axis=0)
-        np.copyto(lower, bound, where=counts & (bound > lower))
-    return lower
-
-
-def _peak_torque_floors(torque: FloatArray, cat: CatalogueArrays) -> FloatArray:
-    """The ``peak_torque`` check's share |T_1|/T_max bounded from below between grid
-    values (intervals × actuators), from a lower bound of |T_1| there (``torque``:
-    :func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`, divided in
-    place): a correctly rounded ÷ by T_max > 0 is monotone, so the bound's share is at
-    most the engine's; NaN where there is none (no bound, T_max not positive). Where
-    |T_1| overflows the engine counts no share, but the check fails there: no passing
-    value is bounded wrongly."""
-    limit = cat.operands["max_torque_nm"]
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        share: FloatArray = np.divide(torque, np.where(limit > 0, limit, np.nan), out=torque)
-    return share
-
-
-def _likeliest(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) -> IndexArray:
-    """For each of the actuators ``columns``, the grid value (its index) where the
-    largest of the ``shares`` is least: where it most likely passes."""
-    least = np.full((shares[0][0].shape[0], columns.size), -np.inf)
-    for share, _direction in shares:
-        np.fmax(least, share[:, columns], out=least)
-    found: IndexArray = np.argmin(least, axis=0)
-    return found
-
-
-FIRST = 2
-"""A ranked study with floors (:func:`_floors`) evaluates the grid on the
-``FIRST × top`` actuators of least floor first, then on twice as many each time: the
-``top``-th best grid utilisation so far bounds the listed ones', and an actuator whose
-floor exceeds it is not evaluated on the grid."""
-
-REACH = 2
-"""Grid steps the parabolic steps can move a best value (:func:`_refinement`): at most
-1 + 1/4 + 1/16 + … < 4/3 of a step, whatever :data:`REFINE_ROUNDS`."""
-
-
-def _floor_about(floors: FloatArray, best_k: IndexArray) -> FloatArray:
-    """A lower bound of each actuator's best utilisation after the parabolic steps: the
-    least of its ``floors`` (:func:`_floors`) over the intervals within :data:`REACH`
-    grid steps of its best grid value ``best_k``, where the refined value lies."""
-    every = np.arange(best_k.size)
-    last = floors.shape[0] - 1
-    floor = floors[np.clip(best_k - REACH, 0, last), every]
-    for step in range(1 - REACH, REACH):
-        np.fmin(floor, floors[np.clip(best_k + step, 0, last), every], out=floor)
-    return floor
-
-
 GUESSED = 2
 """A ranked study bisects, beside the parabolic steps, the ends of the first
 ``GUESSED × top`` actuators by their best grid value; the listed ones the steps move up
 from further down are bisected after."""
-
-
-def _depth(pairs: int, as_columns: bool) -> int:
-    """Halvings per engine call for a search of about ``pairs`` pairs: few pairs, fewer
-    calls; many, fewer pairs."""
-    if pairs >= MANY_PAIRS:
-        return 1
-    return FEWEST_DEPTH if as_columns and pairs < FEW_PAIRS else BISECTION_DEPTH
-
-
-@dataclass(frozen=True, slots=True, kw_only=True)
-class _Brackets:
-    """Brackets of the verdict's changes: grid index ``k`` (between k and k + 1) and
-    actuator ``j``, each bracket's ends and the checks failing at its bad end (bisected
-    in place)."""
-
-    k: IndexArray
-    j: IndexArray
-    ok_side: FloatArray
-    bad_side: FloatArray
-    bad_fail: BoolArray
-
-    def bisection(self, depth: int) -> Search:
-        return _bisection(self.ok_side, self.bad_side, self.j, self.bad_fail, depth)
-
-    def joined(self, other: _Brackets) -> _Brackets:
-        return _Brackets(
-            k=np.concatenate([self.k, other.k]),
-            j=np.concatenate([self.j, other.j]),
-            ok_side=np.concatenate([self.ok_side, other.ok_side]),
-            bad_side=np.concatenate([self.bad_side, other.bad_side]),
-            bad_fail=np.concatenate([self.bad_fail, other.bad_fail]),
-        )
 
 
 def _grid(lower: float, upper: float, series: Sequence[float] | None) -> FloatArray:
@@ -587,11 +223,11 @@ def ranked_ratio_study(
     ``monotone``: checks whose share (value/limit) ``vary`` makes non-decreasing (+1) or
     non-increasing (−1) in the free value, by name (:data:`~actuator_selection.sizing.
     ratio_cases.MONOTONE_SHARES`); they bound each best value's utilisation from below
-    (:func:`_floors`), and an actuator whose bound exceeds the ``top``-th best grid
+    (:func:`interval_floors`), and an actuator whose bound exceeds the ``top``-th best grid
     utilisation cannot be listed: its best value is not refined. ``torque_floor``: a
     lower bound of |T_1| between neighbouring values, given the values and J_A
     (:func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`), raising those
-    bounds by the ``peak_torque`` check's (:func:`_peak_torque_floors`; with
+    bounds by the ``peak_torque`` check's (:func:`peak_torque_floors`; with
     ``monotone`` only)."""
     return _study(
         actuators,
@@ -608,7 +244,7 @@ def ranked_ratio_study(
     )
 
 
-def _ranking(model_rank: IndexArray, has_best: BoolArray, best: _Best) -> IndexArray:
+def _ranking(model_rank: IndexArray, has_best: BoolArray, best: Best) -> IndexArray:
     """The columns in the ranking's order (:func:`ranked_ratio_study`)."""
     utilisation = np.where(has_best, best.utilisation, 0.0)
     order: IndexArray = np.lexsort((model_rank, utilisation, ~has_best))
@@ -652,7 +288,7 @@ def _study(
     # the grid × the catalogue; a column left out (a ranked study's, that cannot be
     # listed) fails everywhere here, whether it fits found apart
     shape = (grid.size, len(actuators))
-    verdicts = np.full(shape, _FAIL, dtype=np.int8)
+    verdicts = np.full(shape, FAIL, dtype=np.int8)
     util, which = np.full(shape, np.nan), np.zeros(shape, dtype=np.intp)
     failing_grid = np.zeros((*shape, len(rules)), dtype=np.bool_)
     grid_cells = (
@@ -675,21 +311,21 @@ def _study(
             block = evaluate_block(
                 sub, cases.rows(start, stop), zones[start:stop], rules, detail=True, overload=False
             )
-            codes, u, w, f = _cells(block)
+            codes, u, w, f = block_cells(block)
             verdicts[start:stop, at] = codes.reshape(-1, width)
             util[start:stop, at] = u.reshape(-1, width)
             which[start:stop, at] = w.reshape(-1, width)
             failing_grid[start:stop, at] = f.reshape(-1, width, len(rules))
 
     # a ranked study: the monotone checks' shares bound the utilisations from below
-    shares = [] if top is None else _monotone_shares(rules, monotone, cases, cat)
+    shares = [] if top is None else monotone_shares(rules, monotone, cases, cat)
     unlisted: IndexArray = np.zeros(0, dtype=np.intp)
     fits_apart = 0  # those not evaluated on the grid that fit
-    search = _Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
-    floors = _floors(shares) if shares and grid.size > 1 else None
+    search = Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
+    floors = interval_floors(shares) if shares and grid.size > 1 else None
     if floors is not None and torque_floor is not None and "peak_torque" in names:
         # fmax: a NaN (no bound) leaves the floor as it is
-        np.fmax(floors, _peak_torque_floors(torque_floor(grid, cat.inertia), cat), out=floors)
+        np.fmax(floors, peak_torque_floors(torque_floor(grid, cat.inertia), cat), out=floors)
     if top is not None and top < shape[1] and floors is not None:
         # by least floor, FIRST × top first, twice as many each time after: those whose
         # floor exceeds the top-th best grid utilisation so far cannot be listed, and
@@ -702,7 +338,7 @@ def _study(
             part, rest = np.sort(rest[:size]), rest[size:]
             size *= 2
             evaluate(part)
-            passing = (verdicts[:, part] != _FAIL) & np.isfinite(util[:, part])
+            passing = (verdicts[:, part] != FAIL) & np.isfinite(util[:, part])
             least[part] = np.where(passing, util[:, part], np.inf).min(axis=0)
             bar = np.partition(least, top - 1)[top - 1]
             cut = np.searchsorted(floor[rest], bar, side="right")  # floors ascending
@@ -710,14 +346,14 @@ def _study(
         # whether those fit somewhere: asked where they most likely pass, those that fail
         # there evaluated on the grid (as if listable: the same answer)
         if unlisted.size:
-            likeliest = grid[_likeliest(shares, unlisted)]
-            passes = search.evaluated(likeliest, unlisted)[0] != _FAIL
+            likeliest = grid[likeliest_index(shares, unlisted)]
+            passes = search.evaluated(likeliest, unlisted)[0] != FAIL
             fits_apart = int(passes.sum())
             if not passes.all():
                 evaluate(np.sort(unlisted[~passes]))
     else:
         evaluate(None)
-    ok = verdicts != _FAIL  # grid × actuators
+    ok = verdicts != FAIL  # grid × actuators
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
     change_k, change_j = np.nonzero(ok[1:] != ok[:-1])
@@ -727,7 +363,7 @@ def _study(
     best_k = np.argmin(masked, axis=0)
     every = np.arange(len(actuators))
     has_best = np.isfinite(masked[best_k, every])
-    best = _Best(
+    best = Best(
         value=grid[best_k].astype(float),
         utilisation=masked[best_k, every],
         code=verdicts[best_k, every],
@@ -736,14 +372,14 @@ def _study(
     columns = np.nonzero(has_best)[0]
     refine = series is None and columns.size > 0
 
-    def brackets(of: BoolArray | None) -> _Brackets:
+    def brackets(of: BoolArray | None) -> Brackets:
         """The brackets of the actuators ``of`` (None: all): (actuator, ok value, bad
         value) at each change of the verdict, and the checks failing at the bad one."""
         k, j = (
             (change_k, change_j) if of is None else (change_k[of[change_j]], change_j[of[change_j]])
         )
         passes = ok[k, j]
-        return _Brackets(
+        return Brackets(
             k=k,
             j=j,
             ok_side=np.where(passes, grid[k], grid[k + 1]),
@@ -762,10 +398,10 @@ def _study(
         if series is None:
             # few pairs: fewer engine calls; many: fewer pairs
             pairs = 6 * found.k.size + (12 * columns.size if refine else 0)
-            searches = [found.bisection(_depth(pairs, as_columns))] if found.k.size else []
+            searches = [found.bisection(depth_for(pairs, as_columns))] if found.k.size else []
             if refine:
-                ahead = pairs < MANY_PAIRS
-                searches.append(_refinement(best, columns, grid, ahead=ahead))
+                ahead = pairs < ratio_search.MANY_PAIRS
+                searches.append(refinement(best, columns, grid, ahead=ahead))
             search.run(*searches)
     else:
         # every best value refined (the ranking reads them); beside it, the ends of the
@@ -776,21 +412,21 @@ def _study(
         if floors is not None and columns.size > top:
             # those that cannot be listed: a floor above the top-th best grid utilisation
             # (the top-th best value is at most that), their grid value kept
-            floor = _floor_about(floors, best_k)
+            floor = floor_about(floors, best_k)
             bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
             columns = columns[~(floor[columns] > bar)]
         if series is None:
             searches = []
             if found.k.size:
-                searches.append(found.bisection(_depth(6 * found.k.size, as_columns)))
+                searches.append(found.bisection(depth_for(6 * found.k.size, as_columns)))
             if refine:
-                ahead = 12 * columns.size < MANY_PAIRS
-                searches.append(_refinement(best, columns, grid, ahead=ahead))
+                ahead = 12 * columns.size < ratio_search.MANY_PAIRS
+                searches.append(refinement(best, columns, grid, ahead=ahead))
             search.run(*searches)
         chosen = _ranking(model_rank, has_best, best)[:top]
         late = brackets(listed(chosen) & ~guess)
         if late.k.size and series is None:
-            search.run(late.bisection(_depth(6 * late.k.size, as_columns)))
+            search.run(late.bisection(depth_for(6 * late.k.size, as_columns)))
         found = found.joined(late)
     change_k, change_j = found.k, found.j
     ok_side, bad_fail = found.ok_side, found.bad_fail
@@ -817,7 +453,7 @@ def _results(
     util: FloatArray,
     ends: dict[tuple[int, int], tuple[float, tuple[str, ...]]],
     has_best: BoolArray,
-    best: _Best,
+    best: Best,
     names: tuple[str, ...],
 ) -> list[RatioResult]:
     """The results of the actuators ``chosen``, in that order: their intervals (each run
