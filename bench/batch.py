@@ -4,9 +4,10 @@ Prints cases per second of ``sizing.selection.select`` run case by case and of
 ``sizing.engine.select_batch`` (best 3 per case) on the starter catalogue and on a
 synthetic catalogue of 1,000 actuators, their ratio, and the end-to-end time of
 POST /api/v1/selections/batch for 10,000 cases without checks, with checks and with
-checks in words (JSON both ways included), each as a ratio to the numpy reference
-(``bench/reference.py``) timed in the same run, with the count of cases whose best three
-differ from it. Runs on a throw-away SQLite database seeded with the starter catalogue.
+checks in words, sent to a real server process (``bench.http``'s): its CPU time as a
+ratio to the numpy reference's (``bench/reference.py``) timed in the same run, with the
+count of cases whose best three differ from it. Runs on a throw-away SQLite database
+seeded with the starter catalogue.
 
 The synthetic actuators are made up (model names ``SYN-…``): plausible magnitudes
 only, so that the scaling with catalogue size can be measured. They are not data.
@@ -16,25 +17,21 @@ from __future__ import annotations
 
 import argparse
 import gc
-import json
 import math
 import random
-import statistics
 import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
 
-from fastapi.testclient import TestClient
-
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
-from actuator_selection.config import Settings
-from actuator_selection.http.app import API_PREFIX, create_app, tune_gc
+from actuator_selection.http.app import tune_gc
 from actuator_selection.sizing.engine import evaluate_batch, rank_batch, select_batch
 from actuator_selection.sizing.selection import select
-from bench.reference import disagreements, numpy_reference, snapshot_actuators
-from bench.selection import http_case, random_cases, starter_catalogue
+from bench.http import _serve, batch_server_cpu
+from bench.reference import snapshot_actuators
+from bench.selection import random_cases, starter_catalogue
 
 TOP = 3
 BATCH_CASES = 10_000
@@ -77,13 +74,6 @@ def _timed(run: Callable[[], object]) -> float:
     start = time.perf_counter()
     run()
     return time.perf_counter() - start
-
-
-def _cpu(run: Callable[[], object]) -> float:
-    """The CPU time of this process while ``run`` runs [s]."""
-    start = time.process_time()
-    run()
-    return time.process_time() - start
 
 
 def _line(label: str, n: int, seconds: float) -> float:
@@ -145,75 +135,20 @@ def compare(name: str, actuators: list[Actuator], scalar_cases: int) -> None:
 HTTP_ROUNDS = 3
 """Rounds of the per-case batch against the numpy reference, each variant in turn."""
 
-HTTP_VARIANTS: tuple[tuple[str, dict[str, bool]], ...] = (
-    ("checks no ", {"include_checks": False}),
-    ("checks yes", {"include_checks": True}),
-    ("checks yes, messages yes", {"include_checks": True, "include_messages": True}),
-)
-"""The per-case batch's options timed against the reference: without checks, with
-checks (their messages as codes and parameters), and with checks and their words."""
-
 
 def http(url: str) -> None:
-    """POST /selections/batch with 10,000 cases, end to end through the ASGI app, each
-    variant of :data:`HTTP_VARIANTS` in each of :data:`HTTP_ROUNDS` rounds, against the
-    numpy reference (``bench/reference.py``) timed right after it (the best of three):
-    the ratio, and the cases whose best three differ from the service's (a count)."""
-    print(
-        f"HTTP POST {API_PREFIX}/selections/batch, {BATCH_CASES} cases, top {TOP}, "
-        f"{HTTP_ROUNDS} rounds (TestClient: the request's JSON and the answer's bytes "
-        "included, not the client's parsing of them; no compression), "
-        "each against the numpy reference for the same cases (bench/reference.py)"
-    )
-    apps = random_cases(BATCH_CASES, seed=8)
-    payload = [http_case(a) for a in apps]
-    actuators = snapshot_actuators(url)
-    ratios: dict[str, list[float]] = {}
-    cpu_ratios: dict[str, list[float]] = {}
-    with TestClient(create_app(Settings(database_url=url))) as client:
-        for _ in range(HTTP_ROUNDS):
-            for name, options in HTTP_VARIANTS:
-                body = json.dumps({"cases": payload, "top": TOP, **options}).encode()
-                start, cpu = time.perf_counter(), time.process_time()
-                response = client.post(
-                    f"{API_PREFIX}/selections/batch",
-                    content=body,
-                    headers={"content-type": "application/json", "accept-encoding": "identity"},
-                )
-                if response.status_code == 422:  # a service without the option
-                    print(f"  {name}: refused (422), skipped")
-                    continue
-                seconds = time.perf_counter() - start  # the answer received, not yet parsed
-                cpu = time.process_time() - cpu  # the server's thread and the client's
-                response.raise_for_status()
-                results = response.json()["results"]
-                assert len(results) == BATCH_CASES
-                reference = min(
-                    _timed(lambda: numpy_reference(actuators, apps, TOP)) for _ in range(3)
-                )
-                reference_cpu = min(
-                    _cpu(lambda: numpy_reference(actuators, apps, TOP)) for _ in range(3)
-                )
-                service = [[c["model"] for c in r["candidates"]] for r in results]
-                differ = disagreements(actuators, numpy_reference(actuators, apps, TOP), service)
-                ratios.setdefault(name, []).append(seconds / reference)
-                cpu_ratios.setdefault(name, []).append(cpu / reference_cpu)
-                print(
-                    f"  {name:<25} {len(response.content) / 1e6:5.1f} MB out {seconds:6.2f} s "
-                    f"(CPU {cpu:6.2f} s), reference {reference * 1e3:5.0f} ms "
-                    f"(CPU {reference_cpu * 1e3:5.0f} ms): {seconds / reference:5.1f}× "
-                    f"(CPU {cpu / reference_cpu:5.1f}×); top {TOP} differs in {differ} of "
-                    f"{BATCH_CASES} cases"
-                )
-    # On a shared machine the wall clock moves with the neighbours' load; the process's
-    # CPU time (TestClient serves in a thread of this process) much less.
-    for name, measured in ratios.items():
-        spent = cpu_ratios[name]
-        print(
-            f"  {name:<25} × the reference: {min(measured):.1f}–{max(measured):.1f} "
-            f"(median {statistics.median(measured):.1f}); CPU time "
-            f"{min(spent):.1f}–{max(spent):.1f} (median {statistics.median(spent):.1f})"
+    """POST /selections/batch with 10,000 cases to a real server (``bench.http``'s, on
+    the database at ``url``), each variant in each of :data:`HTTP_ROUNDS` rounds: the
+    server process's CPU time ÷ the numpy reference's (:func:`bench.http.batch_server_cpu`).
+    """
+    process, base = _serve(url, {"WORKERS": "1"})
+    try:
+        batch_server_cpu(
+            base, process.pid, snapshot_actuators(url), n=BATCH_CASES, rounds=HTTP_ROUNDS, top=TOP
         )
+    finally:
+        process.terminate()
+        process.wait(10)
 
 
 def main() -> None:

@@ -8,7 +8,9 @@ median of the rounds' ratios to ``GET /api/v1/health`` and each round's, the ser
 process's CPU time per request and /health's divided by it (with workers > 1: the
 master's only), and every answer that was not 2xx (there should be none). Then, with
 one worker, batches of random cases, per case and as columns, each against the numpy
-reference (``bench/reference.py``) timed right after it.
+reference (``bench/reference.py``) timed right after it, and the per-case batch of
+10,000 cases in ``--rounds`` rounds as the server's CPU time ÷ the reference's
+(:func:`batch_server_cpu`, issue 32's figure).
 
     python -m bench.http                       # PostgreSQL at $TEST_POSTGRES_URL if it answers
     python -m bench.http --database sqlite     # the embedded default
@@ -192,6 +194,77 @@ def _batch(
         )
 
 
+BATCH_VARIANTS: tuple[tuple[str, dict[str, bool]], ...] = (
+    ("checks no ", {"include_checks": False}),
+    ("checks yes", {"include_checks": True}),
+    ("checks yes, messages yes", {"include_checks": True, "include_messages": True}),
+)
+"""The per-case batch's options measured against the reference: without checks, with
+checks (their messages as codes and parameters; issue 32's figure), and with words."""
+
+
+def batch_server_cpu(
+    base: str,
+    pid: int,
+    actuators: list[Actuator],
+    *,
+    n: int = 10_000,
+    rounds: int = 3,
+    variants: tuple[tuple[str, dict[str, bool]], ...] = BATCH_VARIANTS,
+    top: int = 3,
+) -> None:
+    """POST /selections/batch with ``n`` random cases (seed 8), each of ``variants`` in
+    turn in each of ``rounds`` rounds, to the server ``pid`` at ``base``: the server
+    process's CPU time for the request (its JSON parsed, the cases sized, the answer
+    written; uncompressed, ``accept-encoding: identity``) divided by the CPU time of the
+    numpy reference for the same cases in this process (the best of three) measured right
+    after it, each round's and the range; and the cases whose best three differ from the
+    reference's (a count). The client's writing and reading are not in it."""
+    print(
+        f"POST /api/v1/selections/batch, {n} cases, top {top}, {rounds} rounds: server "
+        "CPU ÷ the numpy reference's CPU (bench/reference.py), measured right after"
+    )
+    apps = random_cases(n, seed=8)
+    payload = [http_case(app) for app in apps]
+    expected = numpy_reference(actuators, apps, top)
+    ratios: dict[str, list[float]] = {}
+    with httpx.Client(base_url=f"{base}/api/v1", timeout=600) as client:
+        for _ in range(rounds):
+            for name, options in variants:
+                body = json.dumps({"cases": payload, "top": top, **options}).encode()
+                headers = {"content-type": "application/json", "accept-encoding": "identity"}
+                cpu = _cpu_s(pid)
+                started = time.monotonic()
+                response = client.post("/selections/batch", content=body, headers=headers)
+                seconds = time.monotonic() - started
+                cpu = _cpu_s(pid) - cpu
+                response.raise_for_status()
+                reference = min(
+                    _cpu(lambda: numpy_reference(actuators, apps, top)) for _ in range(3)
+                )
+                results = response.json()["results"]
+                service = [[c["model"] for c in r["candidates"]] for r in results]
+                differ = disagreements(actuators, expected, service)
+                ratios.setdefault(name, []).append(cpu / reference)
+                print(
+                    f"  {name:<25} {len(response.content) / 1e6:5.1f} MB  {seconds:6.2f} s, "
+                    f"server CPU {cpu:6.2f} s, reference CPU {reference * 1e3:5.0f} ms: "
+                    f"{cpu / reference:5.1f}×; top {top} differs in {differ} of {n} cases"
+                )
+    for name, measured in ratios.items():
+        print(
+            f"  {name:<25} server CPU × the reference's: {min(measured):.1f}–"
+            f"{max(measured):.1f} (median {statistics.median(measured):.1f})"
+        )
+
+
+def _cpu(run: Callable[[], object]) -> float:
+    """The CPU time of this process while ``run`` runs [s]."""
+    started = time.process_time()
+    run()
+    return time.process_time() - started
+
+
 def _httpx_json(body: Any) -> bytes:
     """The request's body as httpx writes ``json=`` (httpx._content.encode_json)."""
     return json.dumps(body, ensure_ascii=False, separators=(",", ":"), allow_nan=False).encode()
@@ -327,6 +400,8 @@ def main() -> None:
                         process, base = _serve(url, {"WORKERS": "1"})
                     for n, checks in ((10_000, False), (10_000, True), (args.batch_cases, True)):
                         _batch(base, process.pid, n, actuators, checks, columns=columns)
+                    if not columns:
+                        batch_server_cpu(base, process.pid, actuators, rounds=args.rounds)
         finally:
             process.terminate()
             process.wait(10)
