@@ -10,11 +10,13 @@ committed before the first slice is returned.
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterator, Sequence
 from datetime import UTC, datetime
 from typing import Any, NamedTuple
 
 import numpy as np
+import orjson
 import pydantic_core
 
 from actuator_selection.catalogue.actuators import Actuator
@@ -33,11 +35,15 @@ from actuator_selection.services.errors import UseCaseError, entry
 from actuator_selection.services.presenters.batch import (
     CodedChecks,
     batch_candidate_body,
+    case_body,
+    coded_candidate_body,
+    coded_checks_json,
     coded_summary,
     controllers_summary,
+    figures_body,
     result_body,
 )
-from actuator_selection.services.presenters.selection import dump_json
+from actuator_selection.services.presenters.selection import dump_json, load_body
 from actuator_selection.services.selections import (
     Writer,
     size_selection,
@@ -49,12 +55,14 @@ from actuator_selection.sizing.engine import (
     VERDICT_BY_CODE,
     CatalogueArrays,
     CheckTable,
+    RankedCells,
     RankedTable,
     TrapezoidColumns,
     rank_columns,
+    ranked_cells,
     select_batch,
 )
-from actuator_selection.sizing.selection import Application, Selection
+from actuator_selection.sizing.selection import VALUE_OF, Application, Selection
 
 
 def _too_many_candidates(cases: int, top: int) -> list[dict[str, Any]]:
@@ -257,6 +265,14 @@ of 500 cases with checks held 27 MB of Python objects at its peak, one of 200 ho
 (tracemalloc), at no measurable cost in time."""
 
 
+def _by_rules(apps: list[Application]) -> dict[tuple[Rule, ...], list[int]]:
+    """The indexes of the cases by the checks they need (a brake adds one), in order."""
+    groups: dict[tuple[Rule, ...], list[int]] = {}
+    for i, app in enumerate(apps):
+        groups.setdefault(rules_for(app), []).append(i)
+    return groups
+
+
 def _select(
     actuators: Sequence[Actuator],
     arrays: CatalogueArrays,
@@ -267,11 +283,8 @@ def _select(
     """``select_batch`` for cases whose checks may differ (a brake adds one): each set of
     checks run on its own cases, the selections back in the order of the cases;
     ``arrays`` the catalogue's (the snapshot's, built once per version)."""
-    groups: dict[tuple[Rule, ...], list[int]] = {}
-    for i, app in enumerate(apps):
-        groups.setdefault(rules_for(app), []).append(i)
     out: list[Selection | None] = [None] * len(apps)
-    for rules, indexes in groups.items():
+    for rules, indexes in _by_rules(apps).items():
         chosen = select_batch(
             actuators,
             [apps[i] for i in indexes],
@@ -302,6 +315,13 @@ def _result_chunks(
     """
     for start in range(0, len(apps), STREAM_CASES):
         end = start + STREAM_CASES
+        if not body.include_messages:
+            written = _coded_results(
+                body, actuators, arrays, apps[start:end], models[start:end], ids[start:end], drives
+            )
+            if written is not None:
+                yield (b"," if start else b"") + b",".join(written)
+                continue
         selections = _select(actuators, arrays, apps[start:end], models[start:end], body.top)
         coded = CodedChecks()  # the slice's checks, written from the engine's arrays
         results = [
@@ -318,6 +338,118 @@ def _result_chunks(
             for (id_, case_id), selection in zip(ids[start:end], selections, strict=True)
         ]
         yield (b"," if start else b"") + b",".join(results)
+
+
+def _coded_results(
+    body: BatchSelectionRequest,
+    actuators: Sequence[Actuator],
+    arrays: CatalogueArrays,
+    apps: list[Application],
+    models: Sequence[list[str] | None],
+    ids: list[tuple[str | None, str | None]],
+    drives: _Drives,
+) -> list[bytes] | None:
+    """Each case's entry of ``results`` without words (not ``include_messages``) as JSON,
+    written from the ranking's arrays (``sizing.engine.ranked_cells``) with no profile
+    per case and no candidate per cell: the bytes :func:`result_body` of
+    :func:`_select`'s selections gives. None where a cycle's figures or a candidate's
+    torques are not finite: the selections then raise the error that names the input."""
+    out: list[bytes] = [b""] * len(apps)
+    for rules, indexes in _by_rules(apps).items():
+        cases = [apps[i] for i in indexes]
+        for ranked in ranked_cells(
+            actuators,
+            cases,
+            top=body.top,
+            models=[models[i] for i in indexes],
+            rules=rules,
+            arrays=arrays,
+        ):
+            written = _ranked_json(
+                ranked,
+                actuators,
+                cases[ranked.start : ranked.start + len(ranked.counts)],
+                [ids[i] for i in indexes[ranked.start : ranked.start + len(ranked.counts)]],
+                body,
+                drives,
+            )
+            if written is None:
+                return None
+            for n, text in enumerate(written):
+                out[indexes[ranked.start + n]] = text
+    return out
+
+
+def _ranked_json(
+    ranked: RankedCells,
+    actuators: Sequence[Actuator],
+    apps: list[Application],
+    ids: list[tuple[str | None, str | None]],
+    body: BatchSelectionRequest,
+    drives: _Drives,
+) -> list[bytes] | None:
+    """:func:`_coded_results` of one block of cases ranked."""
+    f = ranked.figures
+    if not all(
+        np.isfinite(a).all()
+        for a in (f.mean_speed_rpm, f.accel_floor_nm, f.decel_floor_nm, f.rms_floor_nm)
+    ):
+        return None  # profile_from raises the error that names the input
+    accel, constant, decel, rms = (t.tolist() for t in ranked.torques)
+    checks = coded_checks_json(ranked.decided) if body.include_checks else None
+    open_rules = ranked.decided.not_passing
+    names = [rule.name for rule in ranked.decided.rules]
+    peaks = f.peak_speed_rpm.tolist()
+    candidates: list[dict[str, Any]] = []
+    for cell, (row, column, verdict) in enumerate(
+        zip(
+            ranked.rows.tolist(),
+            ranked.columns.tolist(),
+            ranked.verdicts.tolist(),
+            strict=True,
+        )
+    ):
+        actuator = actuators[column]
+        torques = None
+        if actuator.inertia_kgm2 is not None:
+            if not (
+                math.isfinite(accel[cell])
+                and math.isfinite(decel[cell])
+                and math.isfinite(rms[cell])
+            ):
+                return None  # Profile.torques raises the error that names the input
+            t2 = constant[cell]
+            torques = (accel[cell], None if t2 != t2 else t2, decel[cell], rms[cell])
+        speed = peaks[row]
+        candidates.append(
+            coded_candidate_body(
+                figures_body(actuator, VALUE_OF[VERDICT_BY_CODE[verdict]], torques),
+                [names[k] for k in open_rules[cell]],
+                None if checks is None else orjson.Fragment(checks[cell]),
+                drives.controllers(actuator, speed) if body.include_controllers else None,
+                drives.coded_summary(actuator, speed),
+            )
+        )
+    out = []
+    taken = iter(candidates)
+    figures = zip(
+        f.cycle_s.tolist(), f.mean_speed_rpm.tolist(), f.duty_cycle_percent.tolist(), strict=True
+    )
+    for app, (id_, case_id), peak, case_figures, count in zip(
+        apps, ids, peaks, figures, ranked.counts, strict=True
+    ):
+        out.append(
+            dump_json(
+                case_body(
+                    id=id_,
+                    case_id=case_id,
+                    load=load_body(app.axis_load, peak),
+                    figures=case_figures,
+                    candidates=list(itertools.islice(taken, count)),
+                )
+            )
+        )
+    return out
 
 
 _COLUMNS = ("torque_nm", "inertia_kgm2", "accel_s", "constant_s", "decel_s", "pause_s")

@@ -16,6 +16,7 @@ import numpy as np
 import numpy.typing as npt
 import orjson
 
+from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
@@ -64,16 +65,32 @@ def check_body(
 def _figures(candidate: Candidate) -> dict[str, Any]:
     """A candidate's actuator, verdict and torques, as every form of it begins."""
     t = candidate.torques
-    a = candidate.actuator
+    return figures_body(
+        candidate.actuator,
+        VALUE_OF[candidate.verdict],
+        (t.accel_torque_nm, t.constant_torque_nm, t.decel_torque_nm, t.rms_torque_nm)
+        if t
+        else None,
+    )
+
+
+def figures_body(
+    a: Actuator,
+    verdict: str,
+    torques: tuple[float, float | None, float, float] | None,
+) -> dict[str, Any]:
+    """A candidate's actuator, ``verdict`` and ``torques`` (T_1, T_2, T_3, T_rms; None
+    without J_A), as every form of it begins (:func:`_figures` of a candidate)."""
+    accel, constant, decel, rms = torques or (None, None, None, None)
     return {
         "model": a.model,
         "family": a.family,
         "gear_ratio": float(a.gear_ratio),
-        "verdict": VALUE_OF[candidate.verdict],
-        "accel_torque_nm": _number(t.accel_torque_nm) if t else None,
-        "constant_torque_nm": _number(t.constant_torque_nm) if t else None,
-        "decel_torque_nm": _number(t.decel_torque_nm) if t else None,
-        "rms_torque_nm": _number(t.rms_torque_nm) if t else None,
+        "verdict": verdict,
+        "accel_torque_nm": _number(accel),
+        "constant_torque_nm": _number(constant),
+        "decel_torque_nm": _number(decel),
+        "rms_torque_nm": _number(rms),
     }
 
 
@@ -409,14 +426,32 @@ def batch_candidate_body(
         )
         body["reason_checks"] = candidate.open_checks
         return body
-    body = _figures(candidate)
-    body["reason_checks"] = candidate.open_checks
-    if include_checks:
-        body["checks"] = (coded or CodedChecks()).of(candidate)
+    return coded_candidate_body(
+        _figures(candidate),
+        candidate.open_checks,
+        (coded or CodedChecks()).of(candidate) if include_checks else None,
+        controllers,
+        controllers_summary,
+    )
+
+
+def coded_candidate_body(
+    figures: dict[str, Any],
+    reason_checks: list[str],
+    checks: Any,
+    controllers: list[dict[str, Any]] | None,
+    summary: dict[str, Any],
+) -> dict[str, Any]:
+    """A batch candidate without words (:func:`batch_candidate_body`) from its parts:
+    ``figures`` (:func:`figures_body`), the checks that do not pass, ``checks`` (None:
+    not asked for), ``controllers`` (None: not asked for) and :func:`coded_summary`."""
+    figures["reason_checks"] = reason_checks
+    if checks is not None:
+        figures["checks"] = checks
     if controllers is not None:
-        body["controllers"] = controllers
-    body.update(controllers_summary)
-    return body
+        figures["controllers"] = controllers
+    figures.update(summary)
+    return figures
 
 
 def coded_summary(summary: dict[str, Any]) -> dict[str, Any]:
@@ -443,12 +478,32 @@ def result_body(
     candidates: list[dict[str, Any]],
 ) -> dict[str, Any]:
     """One entry of ``results`` (:class:`BatchResultOut`) as a JSON-ready dict."""
+    return case_body(
+        id=id,
+        case_id=case_id,
+        load=resolved_load(selection.profile),
+        figures=(selection.cycle_time_s, selection.mean_speed_rpm, selection.duty_cycle_percent),
+        candidates=candidates,
+    )
+
+
+def case_body(
+    *,
+    id: str | None,
+    case_id: str | None,
+    load: dict[str, float],
+    figures: tuple[float, float, float],
+    candidates: list[dict[str, Any]],
+) -> dict[str, Any]:
+    """One entry of ``results`` from its parts: ``figures`` the cycle time, mean speed
+    and duty cycle (:func:`result_body` of a selection)."""
+    cycle_time_s, mean_speed_rpm, duty_cycle_percent = figures
     return {
         "id": id,
         "case_id": case_id,
-        "load": resolved_load(selection.profile),
-        "cycle_time_s": selection.cycle_time_s,
-        "mean_speed_rpm": selection.mean_speed_rpm,
-        "duty_cycle_percent": selection.duty_cycle_percent,
+        "load": load,
+        "cycle_time_s": cycle_time_s,
+        "mean_speed_rpm": mean_speed_rpm,
+        "duty_cycle_percent": duty_cycle_percent,
         "candidates": candidates,
     }

@@ -31,6 +31,7 @@ from actuator_selection.schemas.selections import (
     SelectionRequest,
 )
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.checks import Check, Rule
 from actuator_selection.sizing.drive import shared_voltage_check
 from actuator_selection.sizing.electrical import DcBusClass
@@ -415,9 +416,14 @@ def binding(
 
 def resolved_load(profile: Profile) -> dict[str, float]:
     """``load`` (``ResolvedLoad``) of a cycle: the load at the output."""
-    axis = profile.load
+    return load_body(profile.load, profile.peak_speed_rpm)
+
+
+def load_body(axis: AxisLoad, peak_speed_rpm: float) -> dict[str, float]:
+    """``load`` (``ResolvedLoad``) of a cycle of peak speed ``peak_speed_rpm`` with the
+    axis load ``axis`` (:func:`resolved_load` of its profile)."""
     return {
-        "speed_rpm": profile.peak_speed_rpm,
+        "speed_rpm": peak_speed_rpm,
         "torque_nm": axis.friction_torque_nm,
         "inertia_kgm2": axis.inertia_kgm2,
         "gravity_torque_nm": axis.gravity_torque_nm,

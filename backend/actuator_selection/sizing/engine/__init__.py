@@ -40,12 +40,14 @@ from actuator_selection.sizing.engine.columns import (
 )
 from actuator_selection.sizing.engine.evaluation import (
     BatchEvaluation,
+    RankedCells,
     case_verdicts,
     evaluate,
     evaluate_batch,
     evaluate_cases,
     evaluate_each,
     rank_batch,
+    ranked_cells,
     select,
     select_batch,
 )
@@ -63,6 +65,7 @@ __all__ = [
     "CodeArray",
     "FloatArray",
     "IndexArray",
+    "RankedCells",
     "RankedTable",
     "TrapezoidColumns",
     "case_verdicts",
@@ -73,6 +76,7 @@ __all__ = [
     "evaluate_each",
     "rank_batch",
     "rank_columns",
+    "ranked_cells",
     "select",
     "select_batch",
 ]

@@ -31,6 +31,50 @@ from actuator_selection.sizing.engine.block import Block
 from actuator_selection.sizing.motion import CycleTorques, Motion, Profile
 
 
+def decide_cells(
+    rules: Sequence[Rule], block: Block, rows: IndexArray, columns: IndexArray
+) -> DecidedCells:
+    """The rules' decisions for the cells (``rows``, ``columns``) of a block evaluated
+    with ``detail``, and the operands they were decided from."""
+    checks = block.checks
+    assert checks is not None
+    assert block.operands is not None
+    shape = block.accel_torque.shape
+    codes = block.statuses[:, rows, columns]  # rules × cells
+    not_passing: list[list[int]] = [[] for _ in range(rows.size)]
+    failing, cells_failing = np.nonzero(codes > PASS)
+    for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
+        not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
+    return DecidedCells(
+        rules,
+        RuleColumns(
+            statuses=codes,
+            values=checks.values[:, rows, columns],
+            limits=checks.limits[:, rows, columns],
+            approximate=checks.approximate[:, rows, columns],
+            first_missing=checks.first_missing[:, rows, columns],
+        ),
+        not_passing,
+        block.operands,
+        lambda array: _picked(array, shape, rows, columns),
+        lambda array: _picked_array(array, shape, rows, columns),
+    )
+
+
+def cell_torques(
+    block: Block, rows: IndexArray, columns: IndexArray
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """The torques T_1, T_2, T_3 and T_rms of the cells (``rows``, ``columns``) of a
+    block, each an array over the cells."""
+    shape = block.accel_torque.shape
+    return (
+        _picked_array(block.accel_torque, shape, rows, columns),
+        _picked_array(block.constant_torque, shape, rows, columns),
+        _picked_array(block.decel_torque, shape, rows, columns),
+        _picked_array(block.rms_torque, shape, rows, columns),
+    )
+
+
 def detail_cells(
     actuators: Sequence[Actuator],
     rules: Sequence[Rule],
@@ -46,51 +90,45 @@ def detail_cells(
     limits of the arrays and the operands of the cell, as floats. Equal to
     :func:`~actuator_selection.sizing.selection.evaluate` of the cell (the tests compare
     them with ``==``); the checks are built, and their words written, when first read."""
-    checks = block.checks
-    assert checks is not None
-    assert block.operands is not None
     shape = block.accel_torque.shape
-
-    def cells(array: Any) -> list[Any]:
-        return _picked(array, shape, rows, columns)
-
-    codes = block.statuses[:, rows, columns]  # rules × cells
-    not_passing: list[list[int]] = [[] for _ in range(rows.size)]
-    failing, cells_failing = np.nonzero(codes > PASS)
-    for k, cell in zip(failing.tolist(), cells_failing.tolist(), strict=True):
-        not_passing[cell].append(k)  # rule by rule: each cell's in the rules' order
-    decided = DecidedCells(
-        rules,
-        RuleColumns(
-            statuses=codes,
-            values=checks.values[:, rows, columns],
-            limits=checks.limits[:, rows, columns],
-            approximate=checks.approximate[:, rows, columns],
-            first_missing=checks.first_missing[:, rows, columns],
-        ),
-        not_passing,
-        block.operands,
-        cells,
-        lambda array: _picked_array(array, shape, rows, columns),
+    return candidates_of(
+        actuators,
+        decide_cells(rules, block, rows, columns),
+        _picked_array(verdicts, shape, rows, columns),
+        cell_torques(block, rows, columns),
+        rows,
+        columns,
+        profiles,
     )
-    torques = zip(
-        cells(block.accel_torque),
-        cells(block.constant_torque),
-        cells(block.decel_torque),
-        cells(block.rms_torque),
-        strict=True,
-    )
-    cell_verdicts = cells(verdicts)
+
+
+def candidates_of(
+    actuators: Sequence[Actuator],
+    decided: DecidedCells,
+    verdicts: CodeArray,
+    torques: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
+    rows: IndexArray,
+    columns: IndexArray,
+    profiles: Sequence[Profile],
+) -> list[Candidate]:
+    """The candidates of cells decided (:func:`decide_cells`), their verdict codes and
+    torques (:func:`cell_torques`) each an array over the cells, ``profiles`` by row."""
     out = []
-    for cell, (row, column, verdict, cell_torques) in enumerate(
-        zip(rows.tolist(), columns.tolist(), cell_verdicts, torques, strict=True)
+    for cell, (row, column, verdict, torques_of_cell) in enumerate(
+        zip(
+            rows.tolist(),
+            columns.tolist(),
+            verdicts.tolist(),
+            zip(*(t.tolist() for t in torques), strict=True),
+            strict=True,
+        )
     ):
         actuator = actuators[column]
         out.append(
             Candidate(
                 actuator=actuator,
                 verdict=VERDICT_BY_CODE[verdict],
-                torques=_cycle_torques(actuator, profiles[row], *cell_torques),
+                torques=_cycle_torques(actuator, profiles[row], *torques_of_cell),
                 checks=_DecidedChecks(decided, cell),  # type: ignore[arg-type]
             )
         )

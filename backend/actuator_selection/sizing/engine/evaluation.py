@@ -50,8 +50,15 @@ from actuator_selection.sizing.engine.arrays import (
 from actuator_selection.sizing.engine.block import CHECK_NAMES, Block, blocks, evaluate_block
 from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
-from actuator_selection.sizing.engine.detail import CycleOf, detail_cells
-from actuator_selection.sizing.motion import figure_rows, profile_from
+from actuator_selection.sizing.engine.detail import (
+    CycleOf,
+    DecidedCells,
+    candidates_of,
+    cell_torques,
+    decide_cells,
+    detail_cells,
+)
+from actuator_selection.sizing.motion import CycleFigures, figure_rows, profile_from
 
 
 @dataclass(frozen=True, slots=True, eq=False, kw_only=True)
@@ -328,6 +335,67 @@ def rank_batch(
     return chosen
 
 
+@dataclass(frozen=True, slots=True, eq=False)
+class RankedCells:
+    """A block of cases ranked (from case ``start``) and its best cells detailed: the
+    cases' figures, and for each case's candidates in order (``counts`` of them a case)
+    the actuator, verdict code, torques and the rules' decisions, as arrays over the
+    cells: what :func:`select_batch` builds its selections from."""
+
+    start: int
+    figures: CycleFigures
+    holding: FloatArray
+    counts: list[int]
+    rows: IndexArray
+    columns: IndexArray
+    verdicts: CodeArray
+    torques: tuple[FloatArray, FloatArray, FloatArray, FloatArray]
+    """T_1, T_2, T_3 and T_rms of each cell (NaN: T_2 without a constant piece)."""
+    decided: DecidedCells
+    block: Block
+    block_verdicts: CodeArray
+
+
+def ranked_cells(
+    actuators: Sequence[Actuator],
+    apps: Sequence[Application],
+    *,
+    top: int = 3,
+    models: Sequence[Collection[str] | None] | None = None,
+    rules: Sequence[Rule] | None = None,
+    arrays: CatalogueArrays | None = None,
+) -> Iterator[RankedCells]:
+    """The best ``top`` cells of every load case block by block, as :func:`select_batch`
+    takes them (its arguments), before any object per case or candidate is built."""
+    check_arguments(len(apps), top, models)
+    rules = rules_of(apps, rules)
+    for ranked in ranked_blocks(
+        actuators,
+        cases_of(apps),
+        top=top,
+        models=models,
+        rules=rules,
+        detail=True,
+        arrays=arrays,
+    ):
+        order, kept = ranked.order, ranked.kept
+        rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
+        columns = order[kept]
+        yield RankedCells(
+            start=ranked.start,
+            figures=ranked.cases.figures,
+            holding=ranked.cases.pieces.holding,
+            counts=kept.sum(axis=1).tolist(),
+            rows=rows,
+            columns=columns,
+            verdicts=ranked.verdicts[rows, columns],
+            torques=cell_torques(ranked.block, rows, columns),
+            decided=decide_cells(rules, ranked.block, rows, columns),
+            block=ranked.block,
+            block_verdicts=ranked.verdicts,
+        )
+
+
 def select_batch(
     actuators: Sequence[Actuator],
     apps: Sequence[Application],
@@ -358,39 +426,27 @@ def select_batch(
         The checks (:data:`~actuator_selection.sizing.checks.RULES`: the chapter's), for the
         arrays and for the candidates alike.
     """
-    check_arguments(len(apps), top, models)
-    rules = rules_of(apps, rules)
     selections = []
-    ranked_cases = ranked_blocks(
-        actuators,
-        cases_of(apps),
-        top=top,
-        models=models,
-        rules=rules,
-        detail=True,
-        arrays=arrays,
-    )
-    for ranked in ranked_cases:
-        order, kept, figures, holding = (
-            ranked.order,
-            ranked.kept,
-            ranked.cases.figures,
-            ranked.cases.pieces.holding,
-        )
-        rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[kept]
-        cases = apps[ranked.start : ranked.start + order.shape[0]]
+    for ranked in ranked_cells(actuators, apps, top=top, models=models, rules=rules, arrays=arrays):
+        cases = apps[ranked.start : ranked.start + len(ranked.counts)]
         profiles = [
             profile_from(CycleOf(app), app.axis_load, row_figures, row_holding)
             for app, row_figures, row_holding in zip(
-                cases, figure_rows(figures), holding.tolist(), strict=True
+                cases, figure_rows(ranked.figures), ranked.holding.tolist(), strict=True
             )
         ]
         detailed = iter(
-            detail_cells(
-                actuators, rules, ranked.block, ranked.verdicts, rows, order[kept], profiles
+            candidates_of(
+                actuators,
+                ranked.decided,
+                ranked.verdicts,
+                ranked.torques,
+                ranked.rows,
+                ranked.columns,
+                profiles,
             )
         )
-        for profile, count in zip(profiles, kept.sum(axis=1).tolist(), strict=True):
+        for profile, count in zip(profiles, ranked.counts, strict=True):
             selections.append(
                 Selection(
                     mean_speed_rpm=profile.mean_speed_rpm,
