@@ -43,7 +43,9 @@ def test_answer_from_arrays_is_the_answer_from_selections(
     apps = _varied(n, seed=top)
     names = [a.model for a in actuators]
     models = [rng.sample(names, rng.randint(1, 8)) if rng.random() < 0.2 else None for _ in apps]
-    ids = [(None, f"case-{i}" if rng.random() < 0.5 else None) for i in range(n)]
+    ids: list[tuple[str | None, str | None]] = [
+        (None, f"case-{i}" if rng.random() < 0.5 else None) for i in range(n)
+    ]
     body = BatchSelectionRequest.model_construct(
         cases=[],
         top=top,
