@@ -314,7 +314,7 @@ def _drive_messages() -> Iterator[str]:
     criterion's four outcomes, the voltage check's pass, fail and three kinds of missing
     data, the three notes on a controller list, the output bearing's three notes and a
     stored lean check written from its numbers."""
-    from tests.core.test_drive import BUSES, CHA, CHA_INTERFACE, CONTROLLERS
+    from tests.sizing.test_drive import BUSES, CHA, CHA_INTERFACE, CONTROLLERS
 
     from actuator_selection.catalogue.controllers import (
         BusClass,

@@ -3,7 +3,7 @@
 The chapter's equations as it prints them, for its one cycle. The flowchart computes
 every cycle, this one included, as segments (:mod:`actuator_selection.sizing.motion`);
 these functions stay as the chapter's own statement of the numbers, and the tests hold
-the segment flowchart to them operation for operation (tests/core/test_motion.py).
+the segment flowchart to them operation for operation (tests/sizing/test_motion.py).
 :class:`SpeedPattern` and :class:`Load` are the chapter's shorthand for a load case.
 
 The speed pattern of Fig. 516.2: accelerate from standstill to the load speed n_2

@@ -16,7 +16,7 @@ The engine (:mod:`actuator_selection.sizing.engine`) builds them in one place
 
 mypy sees :class:`Computed`'s fields typed; a published value (``q.max_speed_rpm``) is read
 through ``__getattr__`` as :data:`Real`: its name is checked when the rule runs (every rule
-runs in the tests) and against the registry by ``tests/core/test_operands.py``.
+runs in the tests) and against the registry by ``tests/sizing/test_operands.py``.
 
 >>> "max_speed_rpm" in Operands._fields and "mean_speed_rpm" in Operands._fields
 True

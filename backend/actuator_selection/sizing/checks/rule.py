@@ -252,7 +252,7 @@ def _new_check(
 
     The generated frozen ``__init__`` takes keywords and looks up ``object.__setattr__``
     for each field; the engine's candidates build eight checks each
-    (a batch: eight for each of 30,000 candidates). tests/core/test_checks.py keeps
+    (a batch: eight for each of 30,000 candidates). tests/sizing/test_checks.py keeps
     this equal to ``Check(...)``, field for field.
     """
     check: Check = _new_object(Check)

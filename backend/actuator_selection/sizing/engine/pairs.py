@@ -10,7 +10,7 @@ with the case: the actuator's τ_th where it publishes one (as the block's heati
 it), and the zone's edge at the case's n_av (:class:`~actuator_selection.sizing.engine.
 cases.ZoneTable`). Each cell is the same arithmetic as in the product, so a pair's
 numbers equal its cell of :func:`~actuator_selection.sizing.engine.evaluate_batch` bit for
-bit (``tests/core/test_engine_pairs.py``).
+bit (``tests/sizing/test_ratio_search.py``: ``test_pairs_equal_their_cells_of_the_product``).
 """
 
 from __future__ import annotations

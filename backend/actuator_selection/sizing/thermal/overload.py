@@ -22,7 +22,7 @@ and a check that uses it says ``approximate``. Why 10 min:
 
 - a smaller τ_th is the safe side: every time to shutdown τ_th·ln((k² − p²)/(k² − 1))
   is proportional to it, and the peak of the cycle's heating grows as τ_th shrinks
-  (tests/core/test_thermal_validity.py checks both);
+  (tests/sizing/test_thermal_validity.py checks both);
 - it must still let the chapter's own rule stand where the manufacturer applies it: the
   continuous-duty diagram of the worked example is drawn for a duty cycle of one minute
   ("ED = 1 min.", Fig. 517.1; the reading of that note is unconfirmed), and T_rms over a

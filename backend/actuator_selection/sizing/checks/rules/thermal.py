@@ -268,7 +268,7 @@ continuous torque falls with speed as the winding current does (issue item 6): E
 with the winding at its continuous stall current I_0 gives T(n) = k_T·(I_0 − I_NLS −
 K_INL·n), the no-load current I_NLR = I_NLS + K_INL·n of Eq. 522.2 taking its share of
 I_0. At standstill k_T·(I_0 − I_NLS) reproduces the published T_0 of the CHA-20A…58A
-rows within ±6.5 % (tests/core/test_continuous.py); the edge is anchored at the
+rows within ±6.5 % (tests/sizing/test_continuous.py); the edge is anchored at the
 published T_0, T_c(n) = T_0 − k_T·K_INL·n, so that the catalogue's own stall point
 stands and the current sets the slope (K_INL at 80 °C, the warm actuator of continuous
 duty, where published: :func:`~actuator_selection.sizing.electrical.

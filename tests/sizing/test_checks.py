@@ -146,7 +146,7 @@ def test_operands_name_each_value() -> None:
         rms_floor_nm=43,
     )
     q = operands(actuator, app, torques, profile)
-    # The drive's and the output bearing's operands: tests/core/test_drive_current.py.
+    # The drive's and the output bearing's operands: tests/sizing/test_drive_current.py.
     named = q._asdict()
     assert {k: named[k] for k in ORDER[: ORDER.index("decel_s")]} == {
         "speed_rpm": 21,

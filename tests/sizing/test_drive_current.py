@@ -258,7 +258,7 @@ def test_new_operands_land_in_their_fields() -> None:
     assert math.isnan(q.radial_force_n)
     assert math.isnan(q.required_life_h)
     # The output bearing's operands end here; the thermal ones follow
-    # (tests/core/test_thermal_validity.py).
+    # (tests/sizing/test_thermal_validity.py).
     assert ORDER[ORDER.index("cycle_s") - 1] == "bearing_dynamic_tilting_moment_nm"
     assert set(ORDER) <= set(Operands._fields)
 

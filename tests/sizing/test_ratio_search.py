@@ -15,8 +15,8 @@ from functools import cache
 import numpy as np
 import pytest
 from tests.api.test_selection_binding import VERTICAL_SCREW
-from tests.core.test_continuous import catalogue
 from tests.oracle.ratio_exhaustive import exhaustive_ratio_study
+from tests.sizing.test_continuous import catalogue
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint

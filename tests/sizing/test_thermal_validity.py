@@ -336,7 +336,7 @@ def test_the_catalogues_time_constant_comes_first() -> None:
 
 def test_the_thermal_operands_land_in_their_fields() -> None:
     """operands() appends t_0, τ_th, whether it is assumed, the heating peak as a torque
-    and as a speed, and k_T·K_INL (tests/core/test_continuous.py)."""
+    and as a speed, and k_T·K_INL (tests/sizing/test_continuous.py)."""
     app = hold((80.0, 1.0), (0.0, 10.0), tau=123.0)
     q = operands(CHA_25A_50, app, app.profile.torques(0.97), app.profile)
     start = Operands._fields.index("cycle_s")
