@@ -117,6 +117,7 @@ def _serve(args: argparse.Namespace) -> int:
         host=args.host,
         port=args.port,
         workers=args.workers,
+        timeout_keep_alive=get_settings().keep_alive_s,
         log_level="info",
     )
     return 0

@@ -100,6 +100,11 @@ class Settings(BaseSettings):
     job_stalled_after_s: float = Field(default=10.0, gt=0)
     """A worker that has not reported for this long [s] is taken for dead, and the chunk
     it was computing is run again by another (it reports every third of this)."""
+    keep_alive_s: int = Field(default=75, ge=1)
+    """How long the server keeps an idle keep-alive connection open [s]. Longer than a
+    proxy's own (nginx's upstream ``keepalive_timeout``, 60 s, deploy/nginx.conf), so that
+    the server never closes a connection as the proxy or a client sends on it: that
+    request would fail without an answer (uvicorn's default is 5 s)."""
     body_timeout_s: float = Field(default=10.0, gt=0)
     """Longest time to receive a request's whole body [s], then 408; a request is admitted
     (``MAX_CONCURRENT_REQUESTS``) only once its body is in, so a slow client holds no place.
