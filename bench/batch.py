@@ -24,9 +24,9 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+from actuator_selection.app import tune_gc
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
-from actuator_selection.http.app import tune_gc
 from actuator_selection.sizing.engine import evaluate_batch, rank_batch, select_batch
 from actuator_selection.sizing.selection import select
 from bench.http import _serve, batch_server_cpu

@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 import orjson
 
+from actuator_selection.app import tune_gc
 from actuator_selection.db.engine import make_engine, make_session_factory
-from actuator_selection.http.app import tune_gc
 from actuator_selection.schemas.selections import SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 from actuator_selection.services.selections import size_selection

@@ -43,10 +43,10 @@ import zstandard
 from sqlalchemy import create_engine, text
 from sqlalchemy.engine import make_url
 
+from actuator_selection.app import GZIP_LEVEL, ZSTD_LEVEL
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.config import REPO_ROOT
 from actuator_selection.db.engine import normalise_url
-from actuator_selection.http.app import GZIP_LEVEL, ZSTD_LEVEL
 from bench.reference import disagreements, numpy_reference, snapshot_actuators
 from bench.selection import http_case, http_columns, random_cases, starter_catalogue
 

@@ -49,11 +49,11 @@ def serve(kind: str, requests: int) -> None:
     """In this process: warm the app with every kind, then send ``requests`` of ``kind``."""
     from fastapi.testclient import TestClient
 
+    from actuator_selection.app import create_app
     from actuator_selection.config import SEED_DIR, Settings
     from actuator_selection.db.engine import make_engine, make_session_factory
     from actuator_selection.db.migrate import upgrade
     from actuator_selection.db.seed import load_seed
-    from actuator_selection.http.app import create_app
 
     with tempfile.TemporaryDirectory() as tmp:
         url = f"sqlite:///{Path(tmp) / 'bench.sqlite3'}"

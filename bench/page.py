@@ -151,7 +151,7 @@ def served(database_url: str) -> Iterator[str]:
         "-m",
         "uvicorn",
         "--factory",
-        "actuator_selection.http.app:create_app",
+        "actuator_selection.app:create_app",
         "--host",
         "127.0.0.1",
         "--port",

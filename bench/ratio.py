@@ -21,8 +21,8 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
+from actuator_selection.app import tune_gc
 from actuator_selection.db.engine import make_engine, make_session_factory
-from actuator_selection.http.app import tune_gc
 from actuator_selection.schemas.ratio import RatioStudyRequest
 from actuator_selection.schemas.selections import SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache

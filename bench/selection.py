@@ -18,13 +18,13 @@ from typing import Any
 
 from fastapi.testclient import TestClient
 
+from actuator_selection.app import create_app, tune_gc
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.db.seed import load_seed
-from actuator_selection.http.app import create_app, tune_gc
 from actuator_selection.schemas.selections import SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 from actuator_selection.services.presenters.selection import DEFAULT_TOP

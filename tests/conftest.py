@@ -24,11 +24,11 @@ from sqlalchemy import Connection, Engine, create_engine, text
 from sqlalchemy.engine import make_url
 from sqlalchemy.orm import Session, sessionmaker
 
+from actuator_selection.app import create_app
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory, normalise_url
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.seed import load_seed
-from actuator_selection.http.app import create_app
 
 POSTGRES_URL = normalise_url(
     os.environ.get("TEST_POSTGRES_URL", "postgresql://postgres@127.0.0.1:5432/test")

@@ -112,7 +112,7 @@ def _serve(args: argparse.Namespace) -> int:
         )
     get_settings.cache_clear()
     uvicorn.run(
-        "actuator_selection.http.app:serve_app",
+        "actuator_selection.app:serve_app",
         factory=True,
         host=args.host,
         port=args.port,

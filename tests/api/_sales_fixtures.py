@@ -19,9 +19,9 @@ from sqlalchemy.orm import Session, sessionmaker
 from tests import worked_example
 
 from actuator_selection.api.quotes import Clock, get_clock
+from actuator_selection.app import create_app
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.sales import ApiKeyRepository, PriceRepository, parse_prices
-from actuator_selection.http.app import create_app
 
 EXAMPLE_PRICE_LIST = "EXAMPLE — not real prices"
 

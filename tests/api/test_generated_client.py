@@ -17,8 +17,8 @@ from typing import Any
 import pytest
 from tests.api._sales_fixtures import WORKED_EXAMPLE, SalesApi, api, sales_api_with
 
+from actuator_selection.app import create_app
 from actuator_selection.config import Settings
-from actuator_selection.http.app import create_app
 
 __all__ = ["api", "sales_api_with"]  # fixtures
 

@@ -21,8 +21,8 @@ from typing import Any
 
 import pytest
 
+from actuator_selection.app import create_app
 from actuator_selection.config import REPO_ROOT, Settings
-from actuator_selection.http.app import create_app
 
 pytestmark = pytest.mark.node
 

@@ -10,8 +10,8 @@ import pytest
 from fastapi.testclient import TestClient
 from sqlalchemy import Engine
 
+from actuator_selection.app import create_app
 from actuator_selection.config import Settings
-from actuator_selection.http.app import create_app
 from actuator_selection.schemas.tools import SensorTemperatureRequest
 
 TOOL = "/api/v1/tools/sensor-temperature"

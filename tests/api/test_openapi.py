@@ -19,8 +19,8 @@ import jsonschema_rs
 import pytest
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
+from actuator_selection.app import create_app
 from actuator_selection.config import Settings
-from actuator_selection.http.app import create_app
 from actuator_selection.http.openapi import ERROR_SCHEMA, SECURITY_SCHEME
 
 __all__ = ["api", "sales_api_with"]  # fixtures
@@ -107,7 +107,7 @@ def test_bearer_security_scheme() -> None:
 
 
 ROLE_TAGS = {"catalogue management", "prices", "quotes"}
-"""The operations of these tags need an admin or sales key (``api/auth.py``)."""
+"""The operations of these tags need an admin or sales key (``http/auth.py``)."""
 
 
 @pytest.mark.parametrize(("path", "method", "op"), OPERATIONS, ids=IDS)

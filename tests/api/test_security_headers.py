@@ -21,9 +21,9 @@ from sqlalchemy.orm import Session, sessionmaker
 from tests.api._sales_fixtures import FakeClock, SalesApi, create_keys, load_example_prices
 
 from actuator_selection.api.quotes import get_clock
+from actuator_selection.app import create_app
 from actuator_selection.config import FRONTEND_DIR, Settings
 from actuator_selection.http import security_headers
-from actuator_selection.http.app import create_app
 from actuator_selection.http.security_headers import PAGE_CSP, inline_script_hashes
 
 EVERY_RESPONSE = {

@@ -15,8 +15,8 @@ from sqlalchemy.orm import Session
 from tests import worked_example
 from tests.oracle.flowchart import select
 
+from actuator_selection.app import GC_THRESHOLDS, tune_gc
 from actuator_selection.db.repositories import CatalogueRepository
-from actuator_selection.http.app import GC_THRESHOLDS, tune_gc
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
 

@@ -11,8 +11,8 @@ from fastapi.testclient import TestClient
 from sqlalchemy import Connection, func, select
 from tests import worked_example
 
+from actuator_selection.app import API_PREFIX
 from actuator_selection.db.models import SelectionRow
-from actuator_selection.http.app import API_PREFIX
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_BATCH_CASES,

@@ -12,7 +12,7 @@ import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
 
-from actuator_selection.http.app import API_PREFIX
+from actuator_selection.app import API_PREFIX
 from actuator_selection.schemas.batch import MAX_BATCH_CANDIDATES, MAX_BATCH_CASES
 from actuator_selection.schemas.batch_columns import COLUMNS_EXAMPLE, BatchColumnsOut
 from actuator_selection.services.batch import _coalesced, _json_pieces

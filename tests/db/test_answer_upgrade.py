@@ -29,11 +29,11 @@ from sqlalchemy.orm import Session
 from tests import worked_example
 from tests.api._sales_fixtures import EXAMPLE_PRICE_LIST, create_keys, load_example_prices
 
+from actuator_selection.app import create_app
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import alembic_config
 from actuator_selection.db.seed import load_seed
-from actuator_selection.http.app import create_app
 from actuator_selection.schemas.quotes import StoredSelection
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueCache

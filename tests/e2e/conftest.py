@@ -36,12 +36,12 @@ from playwright.sync_api import (
 )
 from tests.api._sales_fixtures import load_example_prices
 
+from actuator_selection.app import create_app
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.migrate import upgrade
 from actuator_selection.db.sales import ApiKeyRepository
 from actuator_selection.db.seed import load_seed
-from actuator_selection.http.app import create_app
 
 CHROMIUM_ARGS = [
     "--no-sandbox",

@@ -44,8 +44,8 @@ from sqlalchemy.orm import Session, sessionmaker
 from tests import worked_example
 from tests.api._sales_fixtures import create_keys, load_example_prices
 
+from actuator_selection.app import create_app
 from actuator_selection.config import SEED_DIR, Settings
-from actuator_selection.http.app import create_app
 
 MAX_EXAMPLES = int(os.environ.get("FUZZ_MAX_EXAMPLES", "15"))
 RANDOM = os.environ.get("FUZZ_RANDOM") == "1"

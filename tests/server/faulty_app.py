@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fastapi.routing import APIRoute
 
-from actuator_selection.http.app import create_app
+from actuator_selection.app import create_app
 
 app = create_app()
 

@@ -29,7 +29,6 @@ from urllib.parse import quote
 
 from fastapi import APIRouter, Body, Depends, Path, Query, Response
 
-from actuator_selection.api.auth import AdminDep
 from actuator_selection.api.uploads import (
     SpooledUpload,
     file_errors,
@@ -47,6 +46,7 @@ from actuator_selection.catalogue.csvio import (
 )
 from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS, CONTROLLERS, INTERFACES
 from actuator_selection.db.seed import CatalogueFiles, catalogue_from_json, parse_catalogue
+from actuator_selection.http.auth import AdminDep
 from actuator_selection.http.deps import SessionDep
 from actuator_selection.schemas.actuators import ActuatorOut
 from actuator_selection.schemas.admin import CatalogueImportOut, ZoneIn, write_json_schema

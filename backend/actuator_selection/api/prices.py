@@ -11,10 +11,10 @@ from typing import Annotated
 
 from fastapi import APIRouter, Depends, Query
 
-from actuator_selection.api.auth import AdminDep, PriceReaderDep
 from actuator_selection.api.uploads import Upload, file_errors, raw_upload, text_of, unsupported
 from actuator_selection.catalogue.csvio import CatalogueFileError
 from actuator_selection.db.sales import PRICES, PriceRepository, parse_prices
+from actuator_selection.http.auth import AdminDep, PriceReaderDep
 from actuator_selection.http.deps import SessionDep
 from actuator_selection.http.errors import ResourceNotFoundError, service_error
 from actuator_selection.schemas.prices import (

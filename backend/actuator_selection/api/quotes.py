@@ -15,7 +15,6 @@ from fastapi import APIRouter, Depends, Header, Query, Request, Response
 from fastapi.responses import HTMLResponse
 from sqlalchemy.orm import Session
 
-from actuator_selection.api.auth import PrincipalDep, SalesDep, authorize
 from actuator_selection.config import PLACEHOLDER_SELLER_NAME, Settings
 from actuator_selection.db.sales import ApiKeyRepository, QuoteSearch
 from actuator_selection.documents.quote_document import (
@@ -25,6 +24,7 @@ from actuator_selection.documents.quote_document import (
     render_quote_document,
 )
 from actuator_selection.documents.quote_document_text import Language
+from actuator_selection.http.auth import PrincipalDep, SalesDep, authorize
 from actuator_selection.http.deps import DocumentLanguageDep, SessionDep, SettingsDep, reads_only
 from actuator_selection.http.errors import RequestFieldError, UnauthorizedError, field_error
 from actuator_selection.http.static import PLOTLY_URL

@@ -1,4 +1,4 @@
-"""The application (``app.create_app``) and what every route shares: the session
-dependency, the one error shape, admission, security headers, methods, media types,
+"""What every route shares (mounted by ``app.create_app``): the session
+dependency, the one error shape, admission, API keys, security headers, methods, media types,
 throttling, OpenAPI and the static pages.
 """

@@ -11,7 +11,7 @@ FastAPI's document is post-processed once (:func:`install`):
   conflict, 400 and 413 where a body is taken, 415 where a JSON body is taken (a body
   in another media type or encoding, ``http/media_types.py``) or the decorator says so;
 - a ``201 Created`` documents its ``Location`` header (each endpoint sets it);
-- the ``HTTPBearer`` security scheme (``Authorization: Bearer <key>``, ``api/auth.py``):
+- the ``HTTPBearer`` security scheme (``Authorization: Bearer <key>``, ``http/auth.py``):
   required on operations that need a role, optional (``[{}, {"HTTPBearer": []}]``)
   where anonymous callers are let in;
 - request bodies carry an example: the first of their model's ``examples``, or
@@ -24,7 +24,7 @@ FastAPI's document is post-processed once (:func:`install`):
 - ``servers``: the API's base URL (:func:`servers`: ``/`` unless ``PUBLIC_BASE_URL`` names one).
 
 Which operation reads a key or needs a role is read from its dependencies
-(:func:`~actuator_selection.api.auth.get_principal`, the ``require_role`` marker),
+(:func:`~actuator_selection.http.auth.get_principal`, the ``require_role`` marker),
 so a new route is documented rightly without touching this module.
 """
 
@@ -41,11 +41,11 @@ from fastapi import FastAPI
 from fastapi.dependencies.models import Dependant
 from fastapi.routing import APIRoute, iter_route_contexts
 
-from actuator_selection.api.auth import ROLES_ATTRIBUTE, get_principal
 from actuator_selection.catalogue.csvio import to_json_values
 from actuator_selection.catalogue.files import CATALOGUE_SPECS, JSON_KEYS
 from actuator_selection.config import SEED_DIR
 from actuator_selection.db.seed import read_catalogue
+from actuator_selection.http.auth import ROLES_ATTRIBUTE, get_principal
 from actuator_selection.http.deps import SAFE_METHODS, is_reads_only
 from actuator_selection.schemas.errors import ErrorOut
 

@@ -47,11 +47,11 @@ def main(root: Path) -> None:
     from fastapi.testclient import TestClient
     from sqlalchemy import text
 
+    from actuator_selection.app import create_app
     from actuator_selection.config import SEED_DIR, Settings
     from actuator_selection.db.engine import make_engine, make_session_factory
     from actuator_selection.db.migrate import upgrade
     from actuator_selection.db.seed import load_seed
-    from actuator_selection.http.app import create_app
 
     url = f"sqlite:///{tempfile.mkdtemp()}/old.sqlite3"
     upgrade(url=url)

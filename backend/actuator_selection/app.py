@@ -30,7 +30,6 @@ from actuator_selection.api import (
     selections,
     tools,
 )
-from actuator_selection.api.auth import require_reader
 from actuator_selection.config import FRONTEND_DIR, Settings, get_settings
 from actuator_selection.db.availability import Availability
 from actuator_selection.db.engine import make_engine, make_session_factory
@@ -44,6 +43,7 @@ from actuator_selection.http import (
     static,
     throttle,
 )
+from actuator_selection.http.auth import require_reader
 from actuator_selection.i18n.localize import localizer
 from actuator_selection.job_queue import job_queue
 from actuator_selection.services.catalogue import CatalogueCache
