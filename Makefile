@@ -46,7 +46,7 @@ test: install lint typecheck jslint pytest
 ## and type checks, and the tests that need neither a browser, a real server nor PostgreSQL
 ## (the core's unit tests and doctests, the database and the API on SQLite).
 ## `make test` stays the whole suite, and CI's.
-FAST_TESTS := tests/test_purity.py tests/sizing tests/catalogue tests/sales tests/i18n tests/db tests/api backend/actuator_selection/sizing backend/actuator_selection/catalogue backend/actuator_selection/sales backend/actuator_selection/i18n backend/actuator_selection/errors.py backend/actuator_selection/text.py backend/actuator_selection/documents/symbols.py
+FAST_TESTS := tests/test_purity.py tests/sizing tests/catalogue tests/sales tests/phrases tests/db tests/api backend/actuator_selection/sizing backend/actuator_selection/catalogue backend/actuator_selection/sales backend/actuator_selection/phrases backend/actuator_selection/i18n backend/actuator_selection/errors.py backend/actuator_selection/text.py backend/actuator_selection/documents/symbols.py
 
 check: install lint typecheck jslint
 	$(BIN)/python -m pytest -n auto -q -k "not postgresql" $(FAST_TESTS)

@@ -1,9 +1,9 @@
 """Imports point one way, from the edge inwards: edge → use cases → domain.
 
 - **domain** (``sizing``, ``catalogue``, ``sales``, ``errors``, ``text`` and the words'
-  codes ``i18n.messages``, ``i18n.check_messages``): pure functions over frozen
+  codes ``phrases``): pure functions over frozen
   dataclasses; the standard library only, and numpy for the engine.
-- **use cases** (``services``, ``documents``, ``db``, ``schemas``, the rest of ``i18n``,
+- **use cases** (``services``, ``documents``, ``db``, ``schemas``, ``i18n``,
   ``job_queue``, ``config``, ``supervision``): they compute with the domain, read and
   write the database, render the words and the documents; nothing here knows a route.
 - **edge** (``app`` the application, which mounts ``api``'s routers on what ``http`` gives
@@ -29,7 +29,7 @@ from pathlib import Path
 PACKAGE = Path(__file__).resolve().parents[1] / "backend" / "actuator_selection"
 NAME = "actuator_selection"
 
-DOMAIN = ("sizing", "catalogue", "sales", "errors", "text", "i18n.messages", "i18n.check_messages")
+DOMAIN = ("sizing", "catalogue", "sales", "errors", "text", "phrases")
 EDGE = ("app", "api", "http", "cli", "cli_keys", "__main__")
 LAYERS = ("domain", "use cases", "edge")
 
@@ -158,7 +158,7 @@ def test_the_domain_loads_no_framework_when_run() -> None:
     for forbidden in ("fastapi", "sqlalchemy", "pydantic", "starlette", "plotly", "babel"):
         assert forbidden not in modules, f"the domain imported {forbidden}"
     above = sorted(m for m in modules if m.startswith(NAME + ".") and layer(m[len(NAME) + 1 :]) > 0)
-    assert above == [NAME + ".i18n"], f"the domain imported {above}"  # the package's docstring
+    assert above == [], f"the domain imported {above}"
 
 
 def test_schemas_import_no_database_layer() -> None:
@@ -210,9 +210,6 @@ def test_no_modules_import_one_another() -> None:
     assert circles(house_edges()) == []
 
 
-PARTS = tuple(d for d in DOMAIN if "." in d)
-"""The parts of the house below a top-level package: the words' codes, domain inside ``i18n``."""
-
 AGAINST_THE_GRAIN: dict[tuple[str, str], str] = {}
 """Known imports from one part of the house back into a part that imports it, each with
 its reason (as :data:`EXCEPTIONS`); none is added lightly."""
@@ -220,10 +217,7 @@ its reason (as :data:`EXCEPTIONS`); none is added lightly."""
 
 def part(module: str) -> str:
     """The part of the house ``module`` belongs to: its top-level package or module
-    (``sizing``, ``config``), or the part of :data:`PARTS` it is in (``i18n.messages``)."""
-    for p in PARTS:
-        if _within(module, (p,)):
-            return p
+    (``sizing``, ``config``)."""
     return module.split(".")[0]
 
 
@@ -258,11 +252,19 @@ def test_the_parts_against_the_grain_are_still_so() -> None:
     assert set(AGAINST_THE_GRAIN) <= set(edges)
 
 
+def test_each_part_of_the_house_is_in_one_layer() -> None:
+    """A package is read as one room: all its modules stand in one layer (the domain's
+    words' codes are ``phrases``, not a corner of ``i18n`` that renders them)."""
+    layers: dict[str, set[int]] = {}
+    for module in modules():
+        layers.setdefault(part(module), set()).add(layer(module))
+    assert {p: ls for p, ls in layers.items() if len(ls) > 1} == {}
+
+
 def test_the_parts_of_the_house() -> None:
     assert part("sizing.checks.rules.gear") == "sizing"
     assert part("config") == "config"
-    assert part("i18n.messages") == "i18n.messages"
-    assert part("i18n.localize") == "i18n"
+    assert part("phrases.check_messages") == "phrases"
     assert ("sizing", "catalogue") in part_edges()  # the engine reads the catalogue
 
 

@@ -5,7 +5,7 @@ body where there is one, or in the path or query where ``where`` says so) and
 carries a message an engineer understands. Each kind carries the HTTP status it
 answers with (``http_status``); one handler in ``http/errors.py`` writes the answer.
 
-An error raised with a ``code`` (a rule of ``i18n/messages.py``) takes its message from
+An error raised with a ``code`` (a rule of ``phrases/messages.py``) takes its message from
 that rule's template and its ``params``; the API sends code and params beside the text
 and renders the text in the request's language. An error raised with a message alone
 has no template: its text stays English, and its code is its type.
@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, Self
 
-from actuator_selection.i18n.messages import MESSAGES, english
+from actuator_selection.phrases.messages import MESSAGES, english
 
 
 class DomainError(ValueError):
@@ -31,7 +31,7 @@ class DomainError(ValueError):
     where
         Which part of a request holds the field: ``body``, ``path`` or ``query``.
     code
-        The rule broken, a key of ``i18n.messages.MESSAGES``: its template is the
+        The rule broken, a key of ``phrases.messages.MESSAGES``: its template is the
         message (``message`` is then left out).
     params
         The values the template names (``{"max": 200}``).

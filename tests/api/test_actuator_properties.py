@@ -13,7 +13,7 @@ from actuator_selection.catalogue.csvio import read
 from actuator_selection.catalogue.fields import ACTUATOR_FIELDS, CatalogueField
 from actuator_selection.catalogue.files import ACTUATORS
 from actuator_selection.i18n.localize import translations
-from actuator_selection.i18n.messages import Text
+from actuator_selection.phrases.messages import Text
 
 SEED = Path(__file__).resolve().parents[2] / "seed_data"
 BESIDES = ["continuous_duty_zone", "continuous_duty_zone_source", "output_turns_opposite_to_motor"]

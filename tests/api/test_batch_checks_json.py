@@ -14,7 +14,7 @@ from bench.batch import synthetic_catalogue
 from bench.selection import random_cases
 from sqlalchemy.orm import Session
 
-from actuator_selection.i18n.check_messages import codes_only, jsonable_params, phrase
+from actuator_selection.phrases.check_messages import codes_only, jsonable_params, phrase
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.presenters.batch import (
     CodedChecks,

@@ -16,8 +16,8 @@ from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.oracle.flowchart import operands
 
-from actuator_selection.i18n.check_messages import CHECK_MESSAGES, Phrase
 from actuator_selection.i18n.localize import catalog_path, check_templates, render_check
+from actuator_selection.phrases.check_messages import CHECK_MESSAGES, Phrase
 from actuator_selection.sizing.checks import ALL_RULES, BEARING_STATIC, RULES, Operands, Status
 from actuator_selection.sizing.checks.rule import _floor_message
 from actuator_selection.sizing.selection import evaluate

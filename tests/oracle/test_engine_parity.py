@@ -21,7 +21,7 @@ from tests.oracle.flowchart import evaluate, select
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.check_messages import jsonable_params, renderer
+from actuator_selection.phrases.check_messages import jsonable_params, renderer
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.bearing import OutputLoad
 from actuator_selection.sizing.checks import RULES, Requirement, Rule, published, rules_for

@@ -18,7 +18,7 @@ from types import MappingProxyType
 
 from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.errors import InvalidInputError, NotFoundError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 
 
 class SupportLevel(StrEnum):

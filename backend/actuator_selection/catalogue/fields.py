@@ -31,7 +31,7 @@ from typing import Final
 
 from actuator_selection.catalogue.csvio import Column, NamePattern, Rule, one_of
 from actuator_selection.catalogue.parts import BearingType
-from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.phrases.messages import N_, Text
 
 MODEL_NAME = NamePattern(
     re.compile(r"[A-Za-z0-9]+(?:[-._+][A-Za-z0-9]+)*"),

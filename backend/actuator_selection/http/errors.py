@@ -53,7 +53,7 @@ from actuator_selection.i18n.localize import (
     negotiate,
     pydantic_message,
 )
-from actuator_selection.i18n.messages import Text
+from actuator_selection.phrases.messages import Text
 from actuator_selection.text import NUL_RULE
 
 log = logging.getLogger(__name__)

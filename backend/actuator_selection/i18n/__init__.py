@@ -1,4 +1,4 @@
-"""The words: the rules' codes and English templates (msgids), the gettext
-catalogue under ``locale/``, its rendering in the request's language and the page's
-words exported from it (docs/i18n.md).
+"""The words in the request's language: the gettext catalogue under ``locale/`` (every
+msgid of :mod:`actuator_selection.phrases` and of the layers above), its rendering, and
+the page's words exported from it (docs/i18n.md).
 """

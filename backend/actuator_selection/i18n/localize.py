@@ -35,10 +35,10 @@ from babel.numbers import format_decimal, format_scientific
 from werkzeug.datastructures import LanguageAccept
 from werkzeug.http import parse_accept_header
 
-from actuator_selection.i18n import check_messages
-from actuator_selection.i18n.check_messages import CHECK_MESSAGES, CHECK_WORDS
-from actuator_selection.i18n.messages import MESSAGES as DOMAIN_MESSAGES
-from actuator_selection.i18n.messages import N_, Text, listed
+from actuator_selection.phrases import check_messages
+from actuator_selection.phrases.check_messages import CHECK_MESSAGES, CHECK_WORDS
+from actuator_selection.phrases.messages import MESSAGES as DOMAIN_MESSAGES
+from actuator_selection.phrases.messages import N_, Text, listed
 from actuator_selection.schemas.mechanisms import MECHANISM_TYPES
 from actuator_selection.schemas.quantities import QUANTITY_MESSAGES
 from actuator_selection.schemas.quotes import DECIMAL_TEXT_RULE, PROJECT_OR_SELECTION
@@ -454,7 +454,7 @@ def localized(entry: Mapping[str, Any], language: str) -> dict[str, Any]:
 
 
 def check_templates() -> dict[str, str]:
-    """Every template and word of the check messages (``i18n/check_messages.py``) and the
+    """Every template and word of the check messages (``phrases/check_messages.py``) and the
     catalogue values the rules name where data is missing, by ``<group>:<code>`` (for the
     tests). Their templates carry format specs (``{value:.4g}``), which
     :func:`render_check` follows."""

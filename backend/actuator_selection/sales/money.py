@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from decimal import ROUND_HALF_UP, Decimal
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 
 CENT = Decimal("0.01")
 """Smallest unit kept: every money amount is a whole number of cents."""

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sales.money import (
     HUNDRED,
     MAX_AMOUNT,

@@ -7,7 +7,7 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from actuator_selection.i18n.check_messages import Phrase, jsonable_params
+from actuator_selection.phrases.check_messages import Phrase, jsonable_params
 from actuator_selection.schemas.common import ResponseModel
 from actuator_selection.sizing.selection import Check
 

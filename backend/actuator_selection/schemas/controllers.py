@@ -14,7 +14,7 @@ from actuator_selection.catalogue.controllers import (
     Controller,
 )
 from actuator_selection.catalogue.records import ControllerRecord, InterfaceRecord
-from actuator_selection.i18n.check_messages import Phrase, jsonable_params, phrase
+from actuator_selection.phrases.check_messages import Phrase, jsonable_params, phrase
 from actuator_selection.schemas.checks import CheckOut, Localize, english, message_code
 from actuator_selection.schemas.common import ResponseModel
 from actuator_selection.sizing.compatibility import ControllerMatch, CriterionResult

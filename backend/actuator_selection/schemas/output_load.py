@@ -7,7 +7,7 @@ from typing import Any
 
 from pydantic import Field
 
-from actuator_selection.i18n.check_messages import Phrase, phrase
+from actuator_selection.phrases.check_messages import Phrase, phrase
 from actuator_selection.schemas.common import StrictModel
 from actuator_selection.sizing.bearing import NORMAL_LOAD_FACTOR, NORMAL_STATIC_SAFETY, OutputLoad
 

@@ -35,7 +35,7 @@ from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler, ValidationError
 from pydantic.json_schema import JsonSchemaValue
 from pydantic_core import CoreSchema, PydanticCustomError, core_schema
 
-from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.phrases.messages import N_, Text
 
 if TYPE_CHECKING:
     import pint

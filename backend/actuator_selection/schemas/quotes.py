@@ -25,9 +25,9 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
-from actuator_selection.i18n.check_messages import phrase
-from actuator_selection.i18n.messages import N_
-from actuator_selection.i18n.messages import Text as Words
+from actuator_selection.phrases.check_messages import phrase
+from actuator_selection.phrases.messages import N_
+from actuator_selection.phrases.messages import Text as Words
 from actuator_selection.sales.money import MAX_QUANTITY, PLAIN_DECIMAL, ROUNDING_RULE
 from actuator_selection.sales.quote_status import QuoteStatus, allowed_transitions, effective_status
 from actuator_selection.sales.quote_terms import LANGUAGES, VAT_ROUNDING_RULE, SellerParty
@@ -515,7 +515,7 @@ class StoredCheck(CheckBrief):
 
     @property
     def phrase(self) -> str:
-        """The check in words as a message with a code (``i18n/check_messages.py``), which
+        """The check in words as a message with a code (``phrases/check_messages.py``), which
         the API renders in a reader's language (the check's name, which :attr:`summary` puts
         before the numbers, stands beside it where it is shown)."""
         if self.status == "no_data":

@@ -17,7 +17,7 @@ from typing import Any
 
 from actuator_selection.catalogue.csvio import CatalogueFileError, Problem
 from actuator_selection.errors import DomainError
-from actuator_selection.i18n.messages import english
+from actuator_selection.phrases.messages import english
 from actuator_selection.services.messages import USE_CASE_MESSAGES
 
 Loc = list[str | int]

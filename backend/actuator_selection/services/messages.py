@@ -4,7 +4,7 @@ An error a use case raises (:mod:`services.errors`) names its rule by code and t
 the rule's message names as params; the API renders the template in the request's
 language from the gettext catalogs under ``locale/`` (``i18n/localize.py``), where the
 templates are the msgids, and answers the code and params beside the text. Words among
-the params (the kind of price) are :class:`~actuator_selection.i18n.messages.Text`, so
+the params (the kind of price) are :class:`~actuator_selection.phrases.messages.Text`, so
 they are translated too. Codes are part of the API contract: add new ones, never rename
 or reuse one.
 """
@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Final
 
-from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.phrases.messages import N_, Text
 
 USE_CASE_MESSAGES: Final[Mapping[str, str]] = {
     # Batches (services/batch.py)

@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -49,8 +49,8 @@ from actuator_selection.catalogue.controllers import (
     Option,
     SupportLevel,
 )
-from actuator_selection.i18n.check_messages import phrase
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.check_messages import phrase
+from actuator_selection.phrases.messages import N_
 
 REFERENCE = N_("Table 521.1")
 

@@ -27,7 +27,7 @@ import math
 from dataclasses import dataclass
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.motion import CycleTorques, profile_of, trapezoid
 from actuator_selection.sizing.units import rpm_to_rad_per_s

@@ -18,7 +18,7 @@ from functools import lru_cache
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.controllers import ActuatorInterface, Controller
-from actuator_selection.i18n.check_messages import phrase
+from actuator_selection.phrases.check_messages import phrase
 from actuator_selection.sizing.compatibility import (
     CompatibilityResult,
     ControllerMatch,

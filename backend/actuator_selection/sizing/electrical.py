@@ -34,8 +34,8 @@ from typing import Any, Final
 
 from actuator_selection.catalogue.controllers import BusClass
 from actuator_selection.errors import InvalidInputError, MissingDataError, OutOfRangeError
-from actuator_selection.i18n.check_messages import phrase
-from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.phrases.check_messages import phrase
+from actuator_selection.phrases.messages import N_, Text
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM, per_krpm_to_per_rpm
 
 

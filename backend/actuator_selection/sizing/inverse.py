@@ -41,7 +41,7 @@ from dataclasses import dataclass
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.check_messages import phrase
+from actuator_selection.phrases.check_messages import phrase
 from actuator_selection.sizing.checks import Check, Rule, Status
 from actuator_selection.sizing.engine import case_verdicts, catalogue_arrays, evaluate_cases
 from actuator_selection.sizing.selection import Application, Candidate, Verdict
@@ -78,7 +78,7 @@ class Limit:
     note: str
     reason: str | None = None
     """Why ``value`` is None, in words with a code (a check message's
-    :class:`~actuator_selection.i18n.check_messages.Phrase`): ``limit.none.min``,
+    :class:`~actuator_selection.phrases.check_messages.Phrase`): ``limit.none.min``,
     ``limit.none.max`` or ``limit.accel_no_ramp``."""
 
 

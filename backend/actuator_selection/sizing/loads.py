@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.phrases.messages import N_, Text
 from actuator_selection.sizing.cycle import Load
 
 STANDARD_GRAVITY_M_PER_S2 = 9.81

@@ -17,7 +17,7 @@ import numpy.typing as npt
 import orjson
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable, jsonable_params
+from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
 from actuator_selection.sizing.checks import Brief, Operands, Rule, Status
@@ -363,7 +363,7 @@ def _params_json(message: Said, cells: _Cells) -> list[bytes]:
 
 def _param_json(param: Any, cells: _Cells) -> list[bytes] | bytes:
     """One param of a :class:`~actuator_selection.sizing.checks.Said` over ``cells``, as
-    :func:`~actuator_selection.i18n.check_messages.jsonable_params` has it written (one
+    :func:`~actuator_selection.phrases.check_messages.jsonable_params` has it written (one
     byte string where it is the same in every cell)."""
     if isinstance(param, Said):
         members = [cells.codes(param), _params_json(param, cells)]
@@ -387,7 +387,7 @@ _STATUS_INDEX = np.array([list(Status).index(s) for s in STATUS_BY_CODE], dtype=
 
 
 def _param_items(column: npt.NDArray[Any]) -> list[bytes]:
-    """Each item of ``column`` as :func:`~actuator_selection.i18n.check_messages.
+    """Each item of ``column`` as :func:`~actuator_selection.phrases.check_messages.
     jsonable_params` has it written: numbers as they are, a float that is NaN or infinite
     as its ``repr`` (a string)."""
     out = json_items(column)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from actuator_selection.i18n.check_messages import jsonable_params
+from actuator_selection.phrases.check_messages import jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.schemas.limits import LimitsOut
 from actuator_selection.sizing.checks import rules_for

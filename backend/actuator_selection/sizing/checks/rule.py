@@ -24,8 +24,8 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import TYPE_CHECKING, Any, Final
 
-from actuator_selection.i18n.check_messages import Phrase, check_words, phrase
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.check_messages import Phrase, check_words, phrase
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.checks.operands import Operands, Real, Truth
 from actuator_selection.sizing.deferred import Deferred, defer_field
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_, Text
+from actuator_selection.phrases.messages import N_, Text
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import _check, _check_result, _square
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM

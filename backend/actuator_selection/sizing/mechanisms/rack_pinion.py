@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import STANDARD_GRAVITY_M_PER_S2, _check
 from actuator_selection.sizing.mechanisms.linear import (

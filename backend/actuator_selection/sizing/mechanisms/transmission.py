@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import _check, _check_result, _square
 from actuator_selection.sizing.mechanisms.linear import _check_efficiency, _nonnegative

@@ -11,7 +11,7 @@ import numpy as np
 import numpy.typing as npt
 
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM, rpm_to_rad_per_s
 

@@ -25,8 +25,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Final
 
-from actuator_selection.i18n.check_messages import check_words, phrase
-from actuator_selection.i18n.messages import N_
+from actuator_selection.phrases.check_messages import check_words, phrase
+from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.checks.operands import Operands, Real
 from actuator_selection.sizing.checks.rule import (
     FLOAT_OPS,

@@ -1,4 +1,4 @@
-"""A check message's parameters as the API sends them (i18n/check_messages.py)."""
+"""A check message's parameters as the API sends them (phrases/check_messages.py)."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import math
 import orjson
 import pytest
 
-from actuator_selection.i18n.check_messages import Phrase, codes_only, jsonable_params, phrase
-from actuator_selection.i18n.messages import Text
+from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable_params, phrase
+from actuator_selection.phrases.messages import Text
 
 
 def test_params_travel_as_json_with_clauses_words_and_non_finite_numbers_spelled_out() -> None:
