@@ -34,8 +34,10 @@ from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study, ratio_study
 from actuator_selection.sizing.ratio_cases import (
     MONOTONE_SHARES,
+    GearedBounds,
     geared,
     geared_cases,
+    geared_rms_floor,
     geared_torque_floor,
 )
 
@@ -66,6 +68,8 @@ Study = tuple[Callable[[float], Application], Callable[[FloatArray], Cases] | No
 TorqueFloor = Callable[[FloatArray, FloatArray], FloatArray]
 _TORQUE_FLOORS: dict[Callable[[FloatArray], Cases], TorqueFloor] = {}
 """Each of :func:`_worked`'s cases as columns, its bound of |T_1| (as the service's)."""
+_RMS_FLOORS: dict[Callable[[FloatArray], Cases], TorqueFloor] = {}
+"""The same, its bound of T_rms."""
 
 
 def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
@@ -81,6 +85,9 @@ def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
     floor = geared_torque_floor(app, 1e-4, efficiency)
     assert floor is not None
     _TORQUE_FLOORS[columns] = floor
+    rms = geared_rms_floor(app, 1e-4, efficiency)
+    assert rms is not None
+    _RMS_FLOORS[columns] = rms
     return lambda i: geared(app, dataclasses.replace(transmission, ratio=i)), columns
 
 
@@ -172,6 +179,11 @@ def _ranking(results: list[RatioResult]) -> list[RatioResult]:
 @pytest.mark.parametrize("top", [1, 7, 1000])
 @pytest.mark.parametrize("many_pairs", [ratio_search.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
 @pytest.mark.parametrize("guessed", [ratio.GUESSED, 0], ids=["guessed", "bisected after"])
+@pytest.mark.parametrize(
+    ("coarse", "at_once"),
+    [(ratio_floors.COARSE, ratio.AT_ONCE_LEAST), (1, 0), (16, 0)],
+    ids=["as chosen", "fine floors, fits at once", "coarser floors, fits at once"],
+)
 def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     study: Study,
     low: float,
@@ -179,15 +191,21 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     top: int,
     many_pairs: int,
     guessed: int,
+    coarse: int,
+    at_once: int,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """Only the listed actuators' ends bisected (those the grid ranks first beside the
     parabolic steps, the rest after; or all after), and for a ratio, those that the
     floors show cannot be listed neither evaluated on the grid nor refined (the fast
-    load's: some of them fit nowhere): the first ``top`` of the ranking, each equal to its
-    result of the exhaustive study, and the counts of the whole."""
+    load's: some of them fit nowhere; the floors first on every ``COARSE``-th value;
+    whether those left off fit asked at one value for all, as blocks, or as pairs):
+    the first ``top`` of the ranking, each equal to its result of the exhaustive study,
+    and the counts of the whole."""
     monkeypatch.setattr(ratio_search, "MANY_PAIRS", many_pairs)
     monkeypatch.setattr(ratio, "GUESSED", guessed)
+    monkeypatch.setattr(ratio_floors, "COARSE", coarse)
+    monkeypatch.setattr(ratio, "AT_ONCE_LEAST", at_once)
     vary, columns = study
     monotone = None if columns is None else MONOTONE_SHARES  # the ratio's, as the service's
     floor = None if columns is None else _TORQUE_FLOORS[columns]
@@ -200,6 +218,7 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
         cases_at=columns,
         monotone=monotone,
         torque_floor=floor,
+        rms_floor=None if columns is None else _RMS_FLOORS[columns],
     )
     whole = exhaustive_ratio_study(actuators(), vary, low, high)
     expected = _ranking(whole)[:top]
@@ -228,6 +247,7 @@ def test_a_ranked_series_with_floors_as_before(speed_rpm: float, top: int) -> No
         cases_at=columns,
         monotone=MONOTONE_SHARES,
         torque_floor=None if columns is None else _TORQUE_FLOORS[columns],
+        rms_floor=None if columns is None else _RMS_FLOORS[columns],
     )
     whole = exhaustive_ratio_study(actuators(), vary, 1, 50, series=series)
     _same(ranked.results, _ranking(whole)[:top])
@@ -431,3 +451,65 @@ def test_the_torque_floor_bounds_the_engine_s_peak_torque(seed: int) -> None:
             assert not (shares[k] > share)[counted].any()
             tight = tight or bool((bound[k][known] > 0.5 * engine[:, known].min(axis=0)).any())
     assert tight
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_rms_floor_bounds_the_engine_s_rms_torque(seed: int) -> None:
+    """The bound of T_rms between neighbouring ratios (``geared_rms_floor``) and its
+    share of the continuous limit's upper bound (``continuous_floors``) are never above
+    the engine's T_rms and ``continuous_duty`` share at any ratio between them, sampled
+    densely, over random loads as for the torque's (η_tr < 1, no T_L, no J_L, J_tr 0;
+    a T_L that outweighs the braking; the actuators with a zone have no bound), the
+    braking piece's T² too (the trapezoid's T_3); and the bound is close (within 5 % of the
+    least T_rms between for some, the braking piece's square counted)."""
+    rng = np.random.default_rng(seed)
+    chosen = actuators()
+    cat = catalogue_arrays(chosen)
+    rules = rules_of([_worked(4.0)[0](1.0)], None)
+    continuous = next(r for r in rules if r.name == "continuous_duty")
+    close = False
+    for _ in range(4):
+        # up to 4,000 Nm: the braking piece's torque then keeps the load's sign
+        torque = float(rng.choice([0.0, 1.0, 100.0]) * rng.uniform(0, 40))
+        inertia = float(rng.choice([0.0, 1.0]) * rng.uniform(0.01, 3))
+        efficiency = float(rng.choice([1.0, 0.9, 0.5]))
+        j_tr = float(rng.choice([0.0, 1e-4, 1e-2]))
+        pattern = SpeedPattern(
+            speed_rpm=float(rng.uniform(1, 60)),
+            accel_s=float(rng.uniform(0.02, 0.5)),
+            constant_s=float(rng.uniform(0.0, 0.5)),
+            decel_s=float(rng.uniform(0.02, 0.5)),
+            pause_s=float(rng.uniform(0.0, 2.0)),
+        )
+        load = Load(torque_nm=torque, inertia_kgm2=inertia)
+        app = Application(pattern=pattern, load=load)
+        columns = geared_cases(app, j_tr, efficiency)
+        floor = geared_rms_floor(app, j_tr, efficiency)
+        assert columns is not None
+        assert floor is not None
+        grid = np.sort(rng.uniform(0.05, 200, 12))
+        bound = floor(grid, cat.inertia)
+        shares = ratio_floors.continuous_floors(bound.copy(), continuous, columns(grid), cat)
+        factors = (1.0,) if efficiency == 1 else (1.0, 1.0 / efficiency, efficiency)
+        braking = GearedBounds(pattern, load, j_tr, factors, grid).braking_square(cat.inertia)
+        assert (braking > 0).any()
+        for k in range(grid.size - 1):
+            a, b = float(grid[k]), float(grid[k + 1])
+            between = np.concatenate([[a, b], np.geomspace(a, b, 40), rng.uniform(a, b, 40)])
+            cases = columns(between)
+            zones = zone_limits(chosen, cat.zone_columns, cases.mean_speed)
+            block = evaluate_block(cat, cases, zones, [continuous], detail=True)
+            assert block.checks is not None
+            engine = block.rms_torque
+            assert (braking[k] <= block.decel_torque * block.decel_torque).all()
+            known = ~np.isnan(bound[k])
+            assert (bound[k][known] <= engine[:, known]).all()
+            assert known.sum() > 0.9 * np.isfinite(cat.inertia).sum()
+            with np.errstate(divide="ignore", invalid="ignore"):
+                share = block.checks.values[0] / block.checks.limits[0]
+            counted = (block.checks.limits[0] > 0) & np.isfinite(share)
+            assert not (shares[k] > share)[counted].any()
+            assert np.isnan(shares[k][cat.operands["has_zone"]]).all()
+            least = engine[:, known].min(axis=0)
+            close = close or bool((bound[k][known] > 0.95 * least).any())
+    assert close

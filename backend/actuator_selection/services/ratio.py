@@ -30,6 +30,7 @@ from actuator_selection.sizing.ratio_cases import (
     MONOTONE_SHARES,
     geared,
     geared_cases,
+    geared_rms_floor,
     geared_torque_floor,
 )
 
@@ -89,6 +90,18 @@ def torque_floor_of(
     )
 
 
+def rms_floor_of(
+    body: SelectionRequest, study: RatioStudyIn
+) -> Callable[[FloatArray, FloatArray], FloatArray] | None:
+    """A lower bound of T_rms between neighbouring values where :func:`columns_of`
+    builds the cases (:func:`~actuator_selection.sizing.ratio_cases.geared_rms_floor`)."""
+    if study.variable != "ratio":
+        return None
+    return geared_rms_floor(
+        body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
+    )
+
+
 def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
     # built without validating again (a model per actuator of a 6,400-actuator study cost
     # more than its search): the core's frozen results, checked by their types
@@ -139,6 +152,7 @@ def study(
         cases_at=columns_of(body, spec),
         monotone=MONOTONE_SHARES if spec.variable == "ratio" else None,
         torque_floor=torque_floor_of(body, spec),
+        rms_floor=rms_floor_of(body, spec),
     )
     return RatioStudyOut(
         catalogue_version=catalogue.version,

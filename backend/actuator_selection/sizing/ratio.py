@@ -75,6 +75,7 @@ from actuator_selection.sizing.engine import (
     VERDICT_BY_CODE,
     BoolArray,
     CatalogueArrays,
+    CodeArray,
     FloatArray,
     IndexArray,
     catalogue_arrays,
@@ -90,11 +91,9 @@ from actuator_selection.sizing.engine.evaluation import rules_of
 from actuator_selection.sizing.engine.pairs import catalogue_part
 from actuator_selection.sizing.ratio_floors import (
     FIRST,
+    Floors,
     floor_about,
-    interval_floors,
     likeliest_index,
-    monotone_shares,
-    peak_torque_floors,
 )
 from actuator_selection.sizing.ratio_search import (
     FAIL,
@@ -108,6 +107,12 @@ from actuator_selection.sizing.ratio_search import (
 
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
+AT_ONCE_ROUNDS = 3
+AT_ONCE_LEAST = 256
+"""Whether the actuators a ranked study leaves off the grid fit somewhere is asked at
+one value for all of them (the one most of them most likely pass at, a block of one
+case), up to ``AT_ONCE_ROUNDS`` times while at least ``AT_ONCE_LEAST`` are left; the
+rest each at its own value, as pairs."""
 MAX_SERIES = 200
 """The most values of a standard series."""
 
@@ -213,6 +218,7 @@ def ranked_ratio_study(
     cases_at: Callable[[FloatArray], Cases] | None = None,
     monotone: Mapping[str, int] | None = None,
     torque_floor: Callable[[FloatArray, FloatArray], FloatArray] | None = None,
+    rms_floor: Callable[[FloatArray, FloatArray], FloatArray] | None = None,
 ) -> RankedStudy:
     """:func:`ratio_study`'s first ``top`` results in the ranking's order (best value
     first, by best utilisation, then by model; those without a best value last, by model),
@@ -228,7 +234,10 @@ def ranked_ratio_study(
     lower bound of |T_1| between neighbouring values, given the values and J_A
     (:func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`), raising those
     bounds by the ``peak_torque`` check's (:func:`peak_torque_floors`; with
-    ``monotone`` only)."""
+    ``monotone`` only). ``rms_floor``: a lower bound of T_rms between neighbouring
+    values, given the same (:func:`~actuator_selection.sizing.ratio_cases.
+    geared_rms_floor`), raising them by the ``continuous_duty`` check's
+    (:func:`continuous_floors`; with ``monotone`` only)."""
     return _study(
         actuators,
         vary,
@@ -241,6 +250,7 @@ def ranked_ratio_study(
         top,
         monotone or {},
         torque_floor,
+        rms_floor,
     )
 
 
@@ -263,6 +273,7 @@ def _study(
     top: int | None,
     monotone: Mapping[str, int],
     torque_floor: Callable[[FloatArray, FloatArray], FloatArray] | None = None,
+    rms_floor: Callable[[FloatArray, FloatArray], FloatArray] | None = None,
 ) -> RankedStudy:
     """The study; ``top`` None: every actuator in the catalogue's order, else the
     ranking's first ``top``."""
@@ -298,6 +309,15 @@ def _study(
         failing_grid.reshape(-1, len(rules)),
     )
 
+    seen = np.zeros(shape[1], dtype=np.bool_)  # the columns evaluated on the grid
+
+    def zones_of(sub: CatalogueArrays, part: IndexArray) -> FloatArray:
+        """The zones' edges (grid × zone columns) of ``sub``, the actuators ``part``."""
+        zones: FloatArray = limits_of_zones[
+            :, np.searchsorted(cat.zone_columns, part[sub.zone_columns])
+        ]
+        return zones
+
     def evaluate(part: IndexArray | None) -> None:
         """The grid × the actuators ``part`` (ascending; None: all), block by block;
         only what the search reads is kept."""
@@ -305,7 +325,8 @@ def _study(
         at: slice | IndexArray = slice(None)
         if part is not None:
             sub, at = catalogue_part(cat, part), part
-            zones = limits_of_zones[:, np.searchsorted(cat.zone_columns, part[sub.zone_columns])]
+            zones = zones_of(sub, part)
+        seen[at] = True
         width = sub.size
         for start, stop in blocks(range(width), grid):
             block = evaluate_block(
@@ -317,20 +338,30 @@ def _study(
             which[start:stop, at] = w.reshape(-1, width)
             failing_grid[start:stop, at] = f.reshape(-1, width, len(rules))
 
+    def at_value(k: int, part: IndexArray) -> CodeArray:
+        """The verdicts of the actuators ``part`` (ascending) at grid value ``k``."""
+        sub = catalogue_part(cat, part)
+        zones = zones_of(sub, part)[k : k + 1]
+        block = evaluate_block(sub, cases.rows(k, k + 1), zones, rules, overload=False)
+        verdicts: CodeArray = block.verdicts()[0]
+        return verdicts
+
     # a ranked study: the monotone checks' shares bound the utilisations from below
-    shares = [] if top is None else monotone_shares(rules, monotone, cases, cat)
     unlisted: IndexArray = np.zeros(0, dtype=np.intp)
     fits_apart = 0  # those not evaluated on the grid that fit
     search = Pairs(cat, zone_table(actuators), cases_at, rules, grid, grid_cells)
-    floors = interval_floors(shares) if shares and grid.size > 1 else None
-    if floors is not None and torque_floor is not None and "peak_torque" in names:
-        # fmax: a NaN (no bound) leaves the floor as it is
-        np.fmax(floors, peak_torque_floors(torque_floor(grid, cat.inertia), cat), out=floors)
+    floors = None
+    if top is not None and grid.size > 1 and any(name in monotone for name in names):
+        floors = Floors(rules, monotone, cases, grid, cat, torque_floor, rms_floor)
     if top is not None and top < shape[1] and floors is not None:
         # by least floor, FIRST × top first, twice as many each time after: those whose
         # floor exceeds the top-th best grid utilisation so far cannot be listed, and
-        # are not evaluated on the grid
-        floor = floors.min(axis=0)  # over the whole range
+        # are not evaluated on the grid; the floors first between every COARSE-th grid
+        # value, then between neighbours for those still in the running
+        coarse = floors.coarse()
+        bounds, shares = floors.between(coarse, None)
+        floor = bounds.min(axis=0)  # over the whole range
+        tightened = np.zeros(shape[1], dtype=np.bool_)
         rest = np.argsort(floor, kind="stable")
         least = np.full(shape[1], np.inf)  # the best grid utilisation of those evaluated
         size = FIRST * top
@@ -341,31 +372,58 @@ def _study(
             passing = (verdicts[:, part] != FAIL) & np.isfinite(util[:, part])
             least[part] = np.where(passing, util[:, part], np.inf).min(axis=0)
             bar = np.partition(least, top - 1)[top - 1]
+            loose = np.sort(rest[~tightened[rest] & (floor[rest] <= bar)])
+            if loose.size:  # both are bounds: the larger
+                fine = floors.between(None, loose)[0].min(axis=0)
+                floor[loose] = np.maximum(floor[loose], fine)
+                tightened[loose] = True
+                rest = rest[np.argsort(floor[rest], kind="stable")]
             cut = np.searchsorted(floor[rest], bar, side="right")  # floors ascending
             unlisted, rest = np.concatenate([unlisted, rest[cut:]]), rest[:cut]
         # whether those fit somewhere: asked where they most likely pass, those that fail
         # there evaluated on the grid (as if listable: the same answer)
         if unlisted.size:
-            likeliest = grid[likeliest_index(shares, unlisted)]
-            passes = search.evaluated(likeliest, unlisted)[0] != FAIL
+            unlisted = np.sort(unlisted)
+            likeliest = likeliest_index(shares, unlisted)
+            # those left at the commonest of those values, as one case (a pair costs
+            # some cells of a case's block), while they are many; then each at its own
+            passes = np.zeros(unlisted.size, dtype=np.bool_)
+            asked = np.zeros(unlisted.size, dtype=np.bool_)  # at its own value
+            left = np.arange(unlisted.size)
+            for _round in range(AT_ONCE_ROUNDS):
+                if not left.size or left.size < AT_ONCE_LEAST:
+                    break
+                common = int(np.bincount(likeliest[left]).argmax())
+                passes[left] = at_value(coarse[common], unlisted[left]) != FAIL
+                asked[left[likeliest[left] == common]] = True
+                left = left[~passes[left] & ~asked[left]]
+            if left.size:
+                own = grid[coarse[likeliest[left]]]
+                passes[left] = search.evaluated(own, unlisted[left])[0] != FAIL
             fits_apart = int(passes.sum())
             if not passes.all():
                 evaluate(np.sort(unlisted[~passes]))
     else:
         evaluate(None)
-    ok = verdicts != FAIL  # grid × actuators
+    ok = verdicts != FAIL  # grid × actuators; those not evaluated fail everywhere
+    every = np.arange(len(actuators))
+    on_grid = every if seen.all() else np.flatnonzero(seen)  # only those read below
+    seen_ok, seen_util = (ok, util) if seen.all() else (ok[:, on_grid], util[:, on_grid])
 
     # brackets: (actuator, ok value, bad value) at each change of the verdict
-    change_k, change_j = np.nonzero(ok[1:] != ok[:-1])
+    change_k, change_at = np.nonzero(seen_ok[1:] != seen_ok[:-1])
+    change_j = on_grid[change_at]
 
     # the best grid value per actuator among the passing ones, then a finer grid about it
-    masked = np.where(ok & np.isfinite(util), util, np.inf)
-    best_k = np.argmin(masked, axis=0)
-    every = np.arange(len(actuators))
-    has_best = np.isfinite(masked[best_k, every])
+    masked = np.where(seen_ok & np.isfinite(seen_util), seen_util, np.inf)
+    best_k = np.zeros(shape[1], dtype=np.intp)
+    best_k[on_grid] = np.argmin(masked, axis=0)
+    least_util = np.full(shape[1], np.inf)
+    least_util[on_grid] = masked[best_k[on_grid], np.arange(on_grid.size)]
+    has_best = np.isfinite(least_util)
     best = Best(
         value=grid[best_k].astype(float),
-        utilisation=masked[best_k, every],
+        utilisation=least_util,
         code=verdicts[best_k, every],
         which=which[best_k, every],
     )
@@ -412,9 +470,9 @@ def _study(
         if floors is not None and columns.size > top:
             # those that cannot be listed: a floor above the top-th best grid utilisation
             # (the top-th best value is at most that), their grid value kept
-            floor = floor_about(floors, best_k)
+            about = floor_about(floors.between(None, columns)[0], best_k[columns])
             bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
-            columns = columns[~(floor[columns] > bar)]
+            columns = columns[~(about > bar)]
         if series is None:
             searches = []
             if found.k.size:

@@ -11,7 +11,7 @@ from collections.abc import Callable
 import numpy as np
 
 from actuator_selection.sizing.application import Application
-from actuator_selection.sizing.cycle import Load
+from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases, cases_of
 from actuator_selection.sizing.loads import _square
@@ -24,12 +24,17 @@ from actuator_selection.sizing.motion import (
 )
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
 
-MONOTONE_SHARES = {"max_speed": 1, "inertia_ratio": -1}
-"""How two checks' shares (value/limit) move with the ratio i of :func:`geared` and
+MONOTONE_SHARES = {"max_speed": 1, "inertia_ratio": -1, "drive_voltage": 1}
+"""How three checks' shares (value/limit) move with the ratio i of :func:`geared` and
 :func:`geared_cases` (the study's ``monotone``): the peak speed n_L·i rises with i, the
 load inertia J_tr + J_L/i² falls (each a product, quotient or sum of a positive
-constant: monotone in floating point too), against the actuator's n_max and 3·J_A. The
-reflected speed and inertia of Van de Straete et al. (1999) and Giberti et al. (2011)."""
+constant: monotone in floating point too), against the actuator's n_max and 3·J_A; the
+voltage U = √((|n|·i_A·K_E/1000 + I·R)² + (|n|·i_A·2π/60·p·L·I)²) at the peak speed n
+rises with it (a product by, or a sum with, a constant ≥ 0 and the square and √ of
+a value ≥ 0 are monotone as rounded) where the actuator's constants are ≥ 0
+(:data:`~actuator_selection.sizing.ratio_floors.NON_NEGATIVE`), against its bus's
+U_DC/√2. The reflected speed and inertia of Van de Straete et al. (1999) and Giberti
+et al. (2011)."""
 
 
 def geared(app: Application, transmission: Transmission) -> Application:
@@ -163,14 +168,91 @@ def geared_torque_floor(
     factors = (1.0,) if efficiency == 1 else (1.0, 1.0 / efficiency, efficiency)
 
     def floor(ratios: FloatArray, inertia_a: FloatArray) -> FloatArray:
+        between = GearedBounds(pattern, load, transmission_inertia_kgm2, factors, ratios)
+        return between.accelerating(inertia_a)
+
+    return floor
+
+
+def geared_rms_floor(
+    app: Application, transmission_inertia_kgm2: float, efficiency: float = 1.0
+) -> Callable[[FloatArray, FloatArray], FloatArray] | None:
+    """A lower bound of the engine's T_rms (the ``continuous_duty`` check's value) of
+    :func:`geared_cases` between neighbouring ratios, as :func:`geared_torque_floor`
+    bounds |T_1|: intervals × actuators, NaN where none is proven; None where ``app``
+    is a cycle of segments.
+
+    The rms torque of Giberti et al. (2011) as a function of the ratio, bounded piece by
+    piece: T_rms² = Σ T_k²·t_k / t_0 over the trapezoid's pieces, summed in their order
+    from 0 (:func:`~actuator_selection.sizing.engine.block.evaluate_block`). A lower
+    bound of each |T_k| gives one of T_k² (a correctly rounded x·x is monotone in |x|),
+    of each term (× t_k ≥ 0), of the sum (+ is monotone in each operand), and of
+    √(Σ/t_0). Accelerating: T_lo of :func:`geared_torque_floor`. Running: T = c + (J_A
+    + J)·0 = c ≥ c_lo ≥ 0. Braking (α < 0): T = c + (J_A + J)·α lies between
+    c_lo + (J_A + J_hi)·α_lo and c_hi + (J_A + J_lo)·α_hi (each operand at the end of
+    its range that lowers or raises it; α_hi ≤ 0, J_A + J ≥ 0): |T| is at least the
+    lower where that is ≥ 0, at least −(the upper) where that is ≤ 0, else 0. At rest:
+    T = 0. Where the accelerating piece has no bound, none is claimed."""
+    pattern, load = app.pattern, app.load
+    if pattern is None or load is None:
+        return None
+    factors = (1.0,) if efficiency == 1 else (1.0, 1.0 / efficiency, efficiency)
+    durations = (pattern.accel_s, pattern.constant_s, pattern.decel_s, pattern.pause_s)
+    cycle = 0.0
+    for t in durations:  # t_0 as cycle_figures sums it
+        cycle = cycle + t
+
+    def floor(ratios: FloatArray, inertia_a: FloatArray) -> FloatArray:
+        between = GearedBounds(pattern, load, transmission_inertia_kgm2, factors, ratios)
+        col = np.newaxis
+        energy = between.accelerating(inertia_a)  # NaN where not proven: NaN after
         with np.errstate(all="ignore"):
-            # each as geared_cases and trapezoid_piece_arrays compute it
+            energy *= energy
+            energy *= pattern.accel_s
+            running = between.c_lo * between.c_lo * pattern.constant_s
+            energy += running[:, col]
+            energy += between.braking_square(inertia_a) * pattern.decel_s
+            # at rest T = 0: + 0·t_4 leaves the sum as it is
+            energy /= cycle
+            rms: FloatArray = np.sqrt(energy, out=energy)
+        return rms
+
+    return floor
+
+
+class GearedBounds:
+    """The operands of :func:`geared_cases`' pieces at neighbouring ratios (ascending),
+    bounded between them: each the lesser (``_lo``) or the larger (``_hi``) of its
+    values at the two, over every factor of the power flow; the J_L term and the
+    accelerations as :func:`geared_cases` and :func:`~actuator_selection.sizing.motion.
+    trapezoid_piece_arrays` compute them."""
+
+    def __init__(
+        self,
+        pattern: SpeedPattern,
+        load: Load,
+        transmission_inertia_kgm2: float,
+        factors: tuple[float, ...],
+        ratios: FloatArray,
+    ) -> None:
+        with np.errstate(all="ignore"):
             static = load.torque_nm / ratios
             inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
-            accel = pattern.speed_rpm * ratios * RAD_PER_S_PER_RPM / pattern.accel_s
-            c_lo = np.min([_least(static) * f for f in factors], axis=0)
-            j_lo = np.min([_least(inertia) * f for f in factors], axis=0)
-            a_lo = _least(accel)
+            speed = pattern.speed_rpm * ratios
+            accel = speed * RAD_PER_S_PER_RPM / pattern.accel_s
+            decel = -speed * RAD_PER_S_PER_RPM / pattern.decel_s
+            self.c_lo = np.min([_least(static) * f for f in factors], axis=0)
+            self.c_hi = np.max([_most(static) * f for f in factors], axis=0)
+            self.j_lo = np.min([_least(inertia) * f for f in factors], axis=0)
+            self.j_hi = np.max([_most(inertia) * f for f in factors], axis=0)
+        self.a_lo = _least(accel)
+        self.d_lo, self.d_hi = _least(decel), _most(decel)
+
+    def accelerating(self, inertia_a: FloatArray) -> FloatArray:
+        """T_lo of the accelerating piece (:func:`geared_torque_floor`), intervals ×
+        actuators; NaN where not proven."""
+        c_lo, j_lo, a_lo = self.c_lo, self.j_lo, self.a_lo
+        with np.errstate(all="ignore"):
             provable = (c_lo >= 0) & (j_lo >= 0) & (a_lo >= 0)
             j_a = np.where(inertia_a >= 0, inertia_a, np.nan)
             bound: FloatArray = j_a + j_lo[:, np.newaxis]  # in place after: one array
@@ -179,9 +261,30 @@ def geared_torque_floor(
         bound[~provable] = np.nan
         return bound
 
-    return floor
+    def braking_square(self, inertia_a: FloatArray) -> FloatArray:
+        """A lower bound of the braking piece's T², intervals × actuators (0 where its
+        sign is not known; NaN where J_A is not published: no bound after)."""
+        col = np.newaxis
+        with np.errstate(all="ignore"):
+            upper = inertia_a + self.j_lo[:, col]
+            upper *= self.d_hi[:, col]
+            upper += self.c_hi[:, col]
+            lower = inertia_a + self.j_hi[:, col]
+            lower *= self.d_lo[:, col]
+            lower += self.c_lo[:, col]
+            # the operands' signs the argument needs, per interval
+            known = ((self.j_lo >= 0) & (self.d_hi <= 0) & (self.c_lo >= 0))[:, col]
+            magnitude = np.where(upper <= 0, -upper, np.where(lower >= 0, lower, 0.0))
+            magnitude = np.where(known & (inertia_a >= 0), magnitude, 0.0)
+            magnitude *= magnitude
+        return magnitude
 
 
 def _least(values: FloatArray) -> FloatArray:
     """The lesser of each pair of neighbouring ``values``."""
     return np.minimum(values[:-1], values[1:])
+
+
+def _most(values: FloatArray) -> FloatArray:
+    """The larger of each pair of neighbouring ``values``."""
+    return np.maximum(values[:-1], values[1:])

@@ -7,7 +7,7 @@ the exhaustive study."""
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
@@ -16,7 +16,20 @@ from actuator_selection.sizing.engine import CatalogueArrays, FloatArray, IndexA
 from actuator_selection.sizing.engine.block import operands_of
 from actuator_selection.sizing.engine.cases import Cases, case_operands
 from actuator_selection.sizing.engine.codes import ARRAY_OPS
+from actuator_selection.sizing.engine.pairs import catalogue_part
 from actuator_selection.sizing.ratio_search import REACH
+
+NON_NEGATIVE = (
+    "gear_ratio",
+    "motor_voltage_constant_v_per_krpm",
+    "max_current_a",
+    "resistance_line_ohm",
+    "inductance_line_h",
+    "pole_pairs",
+)
+"""The catalogue operands a share's monotony takes as ≥ 0 (``drive_voltage``'s, :data:`~
+actuator_selection.sizing.ratio_cases.MONOTONE_SHARES`): an actuator with one of them
+negative counts no monotone share (NaN), whatever the check."""
 
 
 def monotone_shares(
@@ -29,17 +42,27 @@ def monotone_shares(
     chosen = [(rule, monotone[rule.name]) for rule in rules if rule.name in monotone]
     if not chosen:
         return []
-    case = case_operands(cases)
-    cell = {n: math.nan for n in Operands._fields if n not in case and n not in cat.operands}
-    q = operands_of(case, cat.operands, cell)
+    q = _grid_operands(cases, cat)
     shape = (cases.size, cat.size)
+    negative = np.zeros(cat.size, dtype=np.bool_)
+    for name in NON_NEGATIVE:
+        negative |= cat.operands[name] < 0
     found = []
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for rule, direction in chosen:
             value = np.broadcast_to(rule.value(q, ARRAY_OPS), shape)
             limit = np.broadcast_to(rule.limit(q, ARRAY_OPS), shape)
-            found.append((np.where(limit > 0, value / limit, np.nan), direction))
+            counted = (limit > 0) & ~negative
+            found.append((np.where(counted, value / limit, np.nan), direction))
     return found
+
+
+def _grid_operands(cases: Cases, cat: CatalogueArrays) -> Operands:
+    """The case's and the catalogue's operands at the grid's values, as the engine reads
+    them; NaN for every quantity of a cell (the cycle's torques, a zone's edge)."""
+    case = case_operands(cases)
+    cell = {n: math.nan for n in Operands._fields if n not in case and n not in cat.operands}
+    return operands_of(case, cat.operands, cell)
 
 
 def interval_floors(shares: Sequence[tuple[FloatArray, int]]) -> FloatArray:
@@ -76,6 +99,30 @@ def peak_torque_floors(torque: FloatArray, cat: CatalogueArrays) -> FloatArray:
     return share
 
 
+def continuous_floors(
+    rms: FloatArray, rule: Rule, cases: Cases, cat: CatalogueArrays
+) -> FloatArray:
+    """The ``continuous_duty`` check's share T_rms/T_c bounded from below between grid
+    values (intervals × actuators), from a lower bound of T_rms there (``rms``:
+    :func:`~actuator_selection.sizing.ratio_cases.geared_rms_floor`, divided in place)
+    and an upper bound of the continuous limit T_c: the larger of its values at the
+    two grid values (``rule``'s own limit on the grid's operands, as the engine's).
+    Without a zone T_c is monotone in the free value: T_0 or the allowable torque (a
+    constant), or max(T_0 − k_T·K_INL·n_av, 0) with n_av = Σ|n̄_k|·t_k/t_0 monotone in
+    the ratio as computed (each speed n_L·i, a correctly rounded × by a constant);
+    with one (its edge at n_av, not monotone) no bound is claimed (NaN). Where T_c at a
+    value between is not positive the engine counts no share: a passing value there has
+    T_rms = 0, at most the bound's 0."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        limit = np.broadcast_to(
+            rule.limit(_grid_operands(cases, cat), ARRAY_OPS), (cases.size, cat.size)
+        )
+        upper = np.maximum(limit[:-1], limit[1:])  # NaN where either is
+        upper = np.where((upper > 0) & np.logical_not(cat.operands["has_zone"]), upper, np.nan)
+        share: FloatArray = np.divide(rms, upper, out=rms)
+    return share
+
+
 def likeliest_index(shares: Sequence[tuple[FloatArray, int]], columns: IndexArray) -> IndexArray:
     """For each of the actuators ``columns``, the grid value (its index) where the
     largest of the ``shares`` is least: where it most likely passes."""
@@ -103,3 +150,67 @@ def floor_about(floors: FloatArray, best_k: IndexArray) -> FloatArray:
     for step in range(1 - REACH, REACH):
         np.fmin(floor, floors[np.clip(best_k + step, 0, last), every], out=floor)
     return floor
+
+
+COARSE = 4
+"""A ranked study's floors over the range are first bounded on every ``COARSE``-th grid
+value for the whole catalogue (:meth:`Floors.between`; a bound between any two grid
+values holds between any pair of values in it), then between neighbouring values for
+the actuators that bound leaves in the running."""
+
+Bound = Callable[[FloatArray, FloatArray], FloatArray]
+"""A bound between neighbouring values (``geared_torque_floor``, ``geared_rms_floor``),
+given the values and the actuators' J_A."""
+
+
+class Floors:
+    """Lower bounds of the actuators' utilisation between grid values, computed where
+    asked: the monotone checks' (:func:`interval_floors`), raised by the ``peak_torque``
+    check's (:func:`peak_torque_floors`, with ``torque``) and the ``continuous_duty``
+    check's (:func:`continuous_floors`, with ``rms``)."""
+
+    def __init__(
+        self,
+        rules: Sequence[Rule],
+        monotone: Mapping[str, int],
+        cases: Cases,
+        grid: FloatArray,
+        cat: CatalogueArrays,
+        torque: Bound | None,
+        rms: Bound | None,
+    ) -> None:
+        self.rules, self.monotone, self.cases, self.grid, self.cat = (
+            rules,
+            monotone,
+            cases,
+            grid,
+            cat,
+        )
+        names = [rule.name for rule in rules]
+        self.torque = torque if "peak_torque" in names else None
+        self.continuous = None if rms is None or "continuous_duty" not in names else rms
+        self.continuous_rule = rules[names.index("continuous_duty")] if self.continuous else None
+
+    def coarse(self) -> IndexArray:
+        """Every :data:`COARSE`-th grid value's index, the last one too."""
+        last = self.grid.size - 1
+        rows: IndexArray = np.unique(np.append(np.arange(0, last, COARSE), last))
+        return rows
+
+    def between(
+        self, rows: IndexArray | None, part: IndexArray | None
+    ) -> tuple[FloatArray, list[tuple[FloatArray, int]]]:
+        """The floors between neighbouring values of the grid's ``rows`` (ascending;
+        None: all) for the actuators ``part`` (ascending; None: all), intervals × them,
+        and the monotone shares at those values."""
+        cat = self.cat if part is None else catalogue_part(self.cat, part)
+        cases = self.cases if rows is None else self.cases.take(rows)
+        values = self.grid if rows is None else self.grid[rows]
+        shares = monotone_shares(self.rules, self.monotone, cases, cat)
+        floors = interval_floors(shares)
+        if self.torque is not None:  # fmax: a NaN (no bound) leaves the floor as it is
+            np.fmax(floors, peak_torque_floors(self.torque(values, cat.inertia), cat), out=floors)
+        if self.continuous is not None and self.continuous_rule is not None:
+            rms = self.continuous(values, cat.inertia)
+            np.fmax(floors, continuous_floors(rms, self.continuous_rule, cases, cat), out=floors)
+        return floors, shares
