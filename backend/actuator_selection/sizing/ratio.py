@@ -92,7 +92,6 @@ from actuator_selection.sizing.engine.pairs import catalogue_part
 from actuator_selection.sizing.ratio_floors import (
     FIRST,
     Floors,
-    floor_about,
     likeliest_index,
 )
 from actuator_selection.sizing.ratio_search import (
@@ -374,7 +373,7 @@ def _study(
             bar = np.partition(least, top - 1)[top - 1]
             loose = np.sort(rest[~tightened[rest] & (floor[rest] <= bar)])
             if loose.size:  # both are bounds: the larger
-                fine = floors.between(None, loose)[0].min(axis=0)
+                fine = floors.within(coarse, bounds, loose, bar)
                 floor[loose] = np.maximum(floor[loose], fine)
                 tightened[loose] = True
                 rest = rest[np.argsort(floor[rest], kind="stable")]
@@ -470,7 +469,7 @@ def _study(
         if floors is not None and columns.size > top:
             # those that cannot be listed: a floor above the top-th best grid utilisation
             # (the top-th best value is at most that), their grid value kept
-            about = floor_about(floors.between(None, columns)[0], best_k[columns])
+            about = floors.about(best_k[columns], columns)
             bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
             columns = columns[~(about > bar)]
         if series is None:

@@ -211,7 +211,9 @@ def geared_rms_floor(
             energy *= pattern.accel_s
             running = between.c_lo * between.c_lo * pattern.constant_s
             energy += running[:, col]
-            energy += between.braking_square(inertia_a) * pattern.decel_s
+            braking = between.braking_square(inertia_a)
+            braking *= pattern.decel_s
+            energy += braking
             # at rest T = 0: + 0·t_4 leaves the sum as it is
             energy /= cycle
             rms: FloatArray = np.sqrt(energy, out=energy)
@@ -262,22 +264,25 @@ class GearedBounds:
         return bound
 
     def braking_square(self, inertia_a: FloatArray) -> FloatArray:
-        """A lower bound of the braking piece's T², intervals × actuators (0 where its
-        sign is not known; NaN where J_A is not published: no bound after)."""
+        """A lower bound of the braking piece's T², intervals × actuators: the larger of
+        −T_hi, T_lo and 0 (:func:`geared_rms_floor`; T_lo ≤ T ≤ T_hi, so where T_hi ≤ 0
+        |T| ≥ −T_hi, where T_lo ≥ 0 |T| ≥ T_lo; fmax: a NaN end gives no bound), 0 where
+        the operands' signs the argument needs do not hold."""
         col = np.newaxis
         with np.errstate(all="ignore"):
-            upper = inertia_a + self.j_lo[:, col]
-            upper *= self.d_hi[:, col]
-            upper += self.c_hi[:, col]
+            bound: FloatArray = inertia_a + self.j_lo[:, col]  # then −T_hi, in place
+            bound *= self.d_hi[:, col]
+            bound += self.c_hi[:, col]
+            np.negative(bound, out=bound)
             lower = inertia_a + self.j_hi[:, col]
             lower *= self.d_lo[:, col]
             lower += self.c_lo[:, col]
-            # the operands' signs the argument needs, per interval
-            known = ((self.j_lo >= 0) & (self.d_hi <= 0) & (self.c_lo >= 0))[:, col]
-            magnitude = np.where(upper <= 0, -upper, np.where(lower >= 0, lower, 0.0))
-            magnitude = np.where(known & (inertia_a >= 0), magnitude, 0.0)
-            magnitude *= magnitude
-        return magnitude
+            np.fmax(bound, lower, out=bound)
+            np.fmax(bound, 0.0, out=bound)
+            # where J_A is negative or NaN the accelerating piece's bound is NaN
+            bound[~((self.j_lo >= 0) & (self.d_hi <= 0) & (self.c_lo >= 0))] = 0.0
+            bound *= bound
+        return bound
 
 
 def _least(values: FloatArray) -> FloatArray:
