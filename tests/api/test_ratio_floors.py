@@ -5,7 +5,8 @@ bounded), on SQLite and PostgreSQL: the first ``top`` of a ranked study, which l
 off the grid the actuators its floors show cannot be listed, equal the first ``top`` of
 the whole study (``top`` = every actuator: no floor used), each number the same; on the
 starter catalogue and on 10 × its copies (640 actuators, as ``python -m bench.ratio``
-measures; whether those left off fit asked at one value for hundreds at once)."""
+measures; the floors first on every ``COARSE``-th value, as from ~2,000 actuators;
+whether those left off fit asked at one value for hundreds at once)."""
 
 from __future__ import annotations
 
@@ -39,20 +40,20 @@ STUDIES = {
 @pytest.mark.parametrize("copies", [1, 10])
 @pytest.mark.parametrize("top", [1, 7, 100])
 @pytest.mark.parametrize(
-    ("coarse", "at_once"),
-    [(ratio_floors.COARSE, ratio.AT_ONCE_LEAST), (1, 0)],
-    ids=["as chosen", "fine floors, fits at once"],
+    ("fine_cells", "at_once"),
+    [(ratio_floors.FINE_CELLS, ratio.AT_ONCE_LEAST), (0, 0)],
+    ids=["as chosen", "coarse floors first, fits at once"],
 )
 def test_a_ranked_study_lists_the_whole_study_s_first(
     session: Session,
     name: str,
     copies: int,
     top: int,
-    coarse: int,
+    fine_cells: int,
     at_once: int,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    monkeypatch.setattr(ratio_floors, "COARSE", coarse)
+    monkeypatch.setattr(ratio_floors, "FINE_CELLS", fine_cells)
     monkeypatch.setattr(ratio, "AT_ONCE_LEAST", at_once)
     catalogue = copied_catalogue(CatalogueCache().snapshot(session), copies)
     request = RatioStudyRequest.model_validate(STUDIES[name])

@@ -180,9 +180,13 @@ def _ranking(results: list[RatioResult]) -> list[RatioResult]:
 @pytest.mark.parametrize("many_pairs", [ratio_search.MANY_PAIRS, 0], ids=["as chosen", "1 halving"])
 @pytest.mark.parametrize("guessed", [ratio.GUESSED, 0], ids=["guessed", "bisected after"])
 @pytest.mark.parametrize(
-    ("coarse", "at_once"),
-    [(ratio_floors.COARSE, ratio.AT_ONCE_LEAST), (1, 0), (16, 0)],
-    ids=["as chosen", "fine floors, fits at once", "coarser floors, fits at once"],
+    ("coarse", "fine_cells", "at_once"),
+    [
+        (ratio_floors.COARSE, ratio_floors.FINE_CELLS, ratio.AT_ONCE_LEAST),
+        (4, 0, 0),
+        (16, 0, 0),
+    ],
+    ids=["as chosen", "coarse floors first, fits at once", "coarser floors, fits at once"],
 )
 def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     study: Study,
@@ -192,19 +196,22 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     many_pairs: int,
     guessed: int,
     coarse: int,
+    fine_cells: int,
     at_once: int,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """Only the listed actuators' ends bisected (those the grid ranks first beside the
     parabolic steps, the rest after; or all after), and for a ratio, those that the
     floors show cannot be listed neither evaluated on the grid nor refined (the fast
-    load's: some of them fit nowhere; the floors first on every ``COARSE``-th value;
-    whether those left off fit asked at one value for all, as blocks, or as pairs):
+    load's: some of them fit nowhere; the floors between neighbouring values, or first
+    on every ``COARSE``-th value; whether those left off fit asked at one value for
+    all, as blocks, or as pairs):
     the first ``top`` of the ranking, each equal to its result of the exhaustive study,
     and the counts of the whole."""
     monkeypatch.setattr(ratio_search, "MANY_PAIRS", many_pairs)
     monkeypatch.setattr(ratio, "GUESSED", guessed)
     monkeypatch.setattr(ratio_floors, "COARSE", coarse)
+    monkeypatch.setattr(ratio_floors, "FINE_CELLS", fine_cells)
     monkeypatch.setattr(ratio, "AT_ONCE_LEAST", at_once)
     vary, columns = study
     monotone = None if columns is None else MONOTONE_SHARES  # the ratio's, as the service's

@@ -92,6 +92,7 @@ from actuator_selection.sizing.engine.pairs import catalogue_part
 from actuator_selection.sizing.ratio_floors import (
     FIRST,
     Floors,
+    floor_about,
     likeliest_index,
 )
 from actuator_selection.sizing.ratio_search import (
@@ -360,7 +361,7 @@ def _study(
         coarse = floors.coarse()
         bounds, shares = floors.between(coarse, None)
         floor = bounds.min(axis=0)  # over the whole range
-        tightened = np.zeros(shape[1], dtype=np.bool_)
+        tightened = np.full(shape[1], coarse.size == grid.size)  # between neighbours
         rest = np.argsort(floor, kind="stable")
         least = np.full(shape[1], np.inf)  # the best grid utilisation of those evaluated
         size = FIRST * top
@@ -469,7 +470,10 @@ def _study(
         if floors is not None and columns.size > top:
             # those that cannot be listed: a floor above the top-th best grid utilisation
             # (the top-th best value is at most that), their grid value kept
-            about = floors.about(best_k[columns], columns)
+            if coarse.size == grid.size:  # between neighbours already
+                about = floor_about(bounds[:, columns], best_k[columns])
+            else:
+                about = floors.about(best_k[columns], columns)
             bar = np.partition(best.utilisation[columns], top - 1)[top - 1]
             columns = columns[~(about > bar)]
         if series is None:

@@ -160,6 +160,11 @@ the actuators that bound leaves in the running, inside the coarse intervals wher
 does (:meth:`Floors.within`): at 6,400 actuators ~2 ms where the floors between
 neighbours cost ~12 ms (ratio 0.05–2000)."""
 
+FINE_CELLS = 100_000
+"""Up to this many grid values × actuators (~2,000 actuators) the floors are computed
+between neighbouring values at once: the coarse ones' ordering and the second pass
+cost more than they spare."""
+
 Bound = Callable[[FloatArray, FloatArray], FloatArray]
 """A bound between neighbouring values (``geared_torque_floor``, ``geared_rms_floor``),
 given the values and the actuators' J_A."""
@@ -194,9 +199,11 @@ class Floors:
         self.continuous_rule = rules[names.index("continuous_duty")] if self.continuous else None
 
     def coarse(self) -> IndexArray:
-        """Every :data:`COARSE`-th grid value's index, the last one too."""
+        """Every :data:`COARSE`-th grid value's index, the last one too; every one where
+        the grid × the catalogue is at most :data:`FINE_CELLS`."""
         last = self.grid.size - 1
-        rows: IndexArray = np.unique(np.append(np.arange(0, last, COARSE), last))
+        step = 1 if self.grid.size * self.cat.size <= FINE_CELLS else COARSE
+        rows: IndexArray = np.unique(np.append(np.arange(0, last, step), last))
         return rows
 
     def between(
