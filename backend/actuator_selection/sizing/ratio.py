@@ -108,11 +108,13 @@ from actuator_selection.sizing.ratio_search import (
 GRID_POINTS = 48
 """Grid values over the range (geometric): neighbours 6.5 % apart over 1–20."""
 AT_ONCE_ROUNDS = 3
-AT_ONCE_LEAST = 256
+AT_ONCE_LEAST = 1_000
 """Whether the actuators a ranked study leaves off the grid fit somewhere is asked at
 one value for all of them (the one most of them most likely pass at, a block of one
-case), up to ``AT_ONCE_ROUNDS`` times while at least ``AT_ONCE_LEAST`` are left; the
-rest each at its own value, as pairs."""
+case: a pair costs some cells of such a block, ~1.6 µs against ~0.3 µs at 6,400), up to
+``AT_ONCE_ROUNDS`` times while at least ``AT_ONCE_LEAST`` are left (fewer: the block's
+fixed cost exceeds what it spares, ~1 ms more for 440 at 640 actuators); the rest each
+at its own value, as pairs."""
 MAX_SERIES = 200
 """The most values of a standard series."""
 
