@@ -16,7 +16,6 @@ from datetime import UTC, datetime
 from typing import Any, NamedTuple
 
 import numpy as np
-import orjson
 import pydantic_core
 
 from actuator_selection.catalogue.actuators import Actuator
@@ -34,16 +33,17 @@ from actuator_selection.services.catalogue import CatalogueSnapshot, DriveContex
 from actuator_selection.services.errors import UseCaseError, entry
 from actuator_selection.services.presenters.batch import (
     CodedChecks,
+    actuator_body,
     batch_candidate_body,
-    case_body,
-    coded_candidate_body,
-    coded_checks_json,
+    cases_json,
+    coded_candidates_json,
+    coded_check_columns,
     coded_summary,
     controllers_summary,
-    figures_body,
+    members_json,
     result_body,
 )
-from actuator_selection.services.presenters.selection import dump_json, load_body
+from actuator_selection.services.presenters.selection import dump_json, json_items, load_body
 from actuator_selection.services.selections import (
     Writer,
     size_selection,
@@ -62,6 +62,7 @@ from actuator_selection.sizing.engine import (
     ranked_cells,
     select_batch,
 )
+from actuator_selection.sizing.engine.detail import DecidedCells
 from actuator_selection.sizing.selection import VALUE_OF, Application, Selection
 
 
@@ -388,68 +389,70 @@ def _ranked_json(
     body: BatchSelectionRequest,
     drives: _Drives,
 ) -> list[bytes] | None:
-    """:func:`_coded_results` of one block of cases ranked."""
+    """:func:`_coded_results` of one block of cases ranked: each member written as JSON
+    over the cells or cases at once, and each candidate and case by one template."""
     f = ranked.figures
     if not all(
         np.isfinite(a).all()
         for a in (f.mean_speed_rpm, f.accel_floor_nm, f.decel_floor_nm, f.rms_floor_nm)
     ):
         return None  # profile_from raises the error that names the input
-    accel, constant, decel, rms = (t.tolist() for t in ranked.torques)
-    checks = coded_checks_json(ranked.decided) if body.include_checks else None
-    open_rules = ranked.decided.not_passing
-    names = [rule.name for rule in ranked.decided.rules]
+    columns = ranked.columns
+    # T_1…T_rms where the actuator has J_A (T_2 NaN without a constant piece), else None
+    known = np.array([a.inertia_kgm2 is not None for a in actuators], dtype=np.bool_)[columns]
+    accel, _, decel, rms = ranked.torques
+    if not all(np.isfinite(t[known]).all() for t in (accel, decel, rms)):
+        return None  # Profile.torques raises the error that names the input
+    torques = [json_items(np.where(known, t, math.nan)) for t in ranked.torques]
     peaks = f.peak_speed_rpm.tolist()
-    candidates: list[dict[str, Any]] = []
-    for cell, (row, column, verdict) in enumerate(
-        zip(
-            ranked.rows.tolist(),
-            ranked.columns.tolist(),
-            ranked.verdicts.tolist(),
-            strict=True,
-        )
-    ):
-        actuator = actuators[column]
-        torques = None
-        if actuator.inertia_kgm2 is not None:
-            if not (
-                math.isfinite(accel[cell])
-                and math.isfinite(decel[cell])
-                and math.isfinite(rms[cell])
-            ):
-                return None  # Profile.torques raises the error that names the input
-            t2 = constant[cell]
-            torques = (accel[cell], None if t2 != t2 else t2, decel[cell], rms[cell])
-        speed = peaks[row]
-        candidates.append(
-            coded_candidate_body(
-                figures_body(actuator, VALUE_OF[VERDICT_BY_CODE[verdict]], torques),
-                [names[k] for k in open_rules[cell]],
-                None if checks is None else orjson.Fragment(checks[cell]),
-                drives.controllers(actuator, speed) if body.include_controllers else None,
-                drives.coded_summary(actuator, speed),
-            )
-        )
-    out = []
-    taken = iter(candidates)
-    figures = zip(
-        f.cycle_s.tolist(), f.mean_speed_rpm.tolist(), f.duty_cycle_percent.tolist(), strict=True
+    named, first = np.unique(columns, return_index=True)
+    heads = np.empty(len(actuators), dtype=object)
+    tails = np.empty(len(actuators), dtype=object)
+    for j, row in zip(named.tolist(), ranked.rows[first].tolist(), strict=True):
+        a = actuators[j]
+        heads[j] = members_json(actuator_body(a))
+        tails[j] = members_json(drives.coded_summary(a, peaks[row]), comma=True)
+    controllers = None
+    if body.include_controllers:
+        controllers = [
+            dump_json(drives.controllers(actuators[column], peaks[row]))
+            for row, column in zip(ranked.rows.tolist(), columns.tolist(), strict=True)
+        ]
+    candidates = coded_candidates_json(
+        heads[columns].tolist(),
+        _VERDICT_JSON[ranked.verdicts].tolist(),
+        torques,
+        _reason_checks(ranked.decided),
+        coded_check_columns(ranked.decided) if body.include_checks else None,
+        controllers,
+        tails[columns].tolist(),
     )
-    for app, (id_, case_id), peak, case_figures, count in zip(
-        apps, ids, peaks, figures, ranked.counts, strict=True
-    ):
-        out.append(
-            dump_json(
-                case_body(
-                    id=id_,
-                    case_id=case_id,
-                    load=load_body(app.axis_load, peak),
-                    figures=case_figures,
-                    candidates=list(itertools.islice(taken, count)),
-                )
-            )
-        )
+    return cases_json(
+        [dump_json(id_) for id_, _ in ids],
+        [dump_json(case_id) for _, case_id in ids],
+        [dump_json(load_body(app.axis_load, peak)) for app, peak in zip(apps, peaks, strict=True)],
+        [json_items(f.cycle_s), json_items(f.mean_speed_rpm), json_items(f.duty_cycle_percent)],
+        candidates,
+        ranked.counts,
+    )
+
+
+def _reason_checks(decided: DecidedCells) -> list[bytes]:
+    """Each cell's ``reason_checks`` as JSON: the names of the checks that do not pass."""
+    names = [rule.name for rule in decided.rules]
+    written: dict[tuple[int, ...], bytes] = {}
+    out = []
+    for open_rules in decided.not_passing:
+        key = tuple(open_rules)
+        found = written.get(key)
+        if found is None:
+            found = written[key] = dump_json([names[k] for k in key])
+        out.append(found)
     return out
+
+
+_VERDICT_JSON = np.array([dump_json(VALUE_OF[v]) for v in VERDICT_BY_CODE], dtype=object)
+"""The API's verdict names as JSON strings, by verdict code."""
 
 
 _COLUMNS = ("torque_nm", "inertia_kgm2", "accel_s", "constant_s", "decel_s", "pause_s")

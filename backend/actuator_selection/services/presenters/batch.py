@@ -8,7 +8,9 @@ more than the engineering of the whole batch (the tests validate it against the 
 
 from __future__ import annotations
 
+import itertools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -83,15 +85,18 @@ def figures_body(
     without J_A), as every form of it begins (:func:`_figures` of a candidate)."""
     accel, constant, decel, rms = torques or (None, None, None, None)
     return {
-        "model": a.model,
-        "family": a.family,
-        "gear_ratio": float(a.gear_ratio),
+        **actuator_body(a),
         "verdict": verdict,
         "accel_torque_nm": _number(accel),
         "constant_torque_nm": _number(constant),
         "decel_torque_nm": _number(decel),
         "rms_torque_nm": _number(rms),
     }
+
+
+def actuator_body(a: Actuator) -> dict[str, Any]:
+    """The actuator's members of a candidate, as :func:`figures_body` begins."""
+    return {"model": a.model, "family": a.family, "gear_ratio": float(a.gear_ratio)}
 
 
 def candidate_body(
@@ -176,9 +181,16 @@ class CodedChecks:
 
 def coded_checks_json(decided: DecidedCells) -> list[bytes]:
     """Each cell's ``checks`` of ``decided`` as JSON, in the cells' order: the text
-    :func:`dump_json` writes of :func:`coded_check_body` of each check, written rule by
-    rule for every cell at once: orjson writes each array of numbers, and one template
-    per rule (and per clause of a message) takes each cell's members.
+    :func:`dump_json` writes of :func:`coded_check_body` of each check, the cell's
+    checks of :func:`coded_check_columns` in an array."""
+    return [b"[" + b",".join(row) + b"]" for row in zip(*coded_check_columns(decided), strict=True)]
+
+
+def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
+    """Each rule's check of each cell of ``decided`` as JSON (a list per rule, in the
+    cells' order): the text :func:`dump_json` writes of :func:`coded_check_body`, written
+    rule by rule for every cell at once: orjson writes each array of numbers, and one
+    template per rule (and per clause of a message) takes each cell's members.
     The messages' codes and params come from the same words: a rule's ``no_data``
     message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
     or :class:`~actuator_selection.sizing.checks.Variants` message from the arrays, any
@@ -226,7 +238,7 @@ def coded_checks_json(decided: DecidedCells) -> list[bytes]:
             json_items(share),
         )
         written.append(list(map(template.__mod__, zip(*members, strict=True))))
-    return [b"[" + b",".join(row) + b"]" for row in zip(*written, strict=True)]
+    return written
 
 
 def _template(*parts: bytes | None) -> bytes:
@@ -452,6 +464,67 @@ def coded_candidate_body(
         figures["controllers"] = controllers
     figures.update(summary)
     return figures
+
+
+def coded_candidates_json(
+    actuators: list[bytes],
+    verdicts: list[bytes],
+    torques: Sequence[list[bytes]],
+    reason_checks: list[bytes],
+    checks: list[list[bytes]] | None,
+    controllers: list[bytes] | None,
+    summaries: list[bytes],
+) -> list[bytes]:
+    """Each cell's batch candidate without words as JSON: the text :func:`dump_json`
+    writes of :func:`coded_candidate_body`, from each member's JSON over the cells (one
+    template fills them): ``actuators`` the actuator's members of :func:`figures_body`
+    (``"model":…,"family":…,"gear_ratio":…``), ``verdicts`` and ``torques`` (T_1, T_2,
+    T_3, T_rms) its values, ``reason_checks`` the list, ``checks`` each rule's check of
+    :func:`coded_check_columns` (None: not asked for), ``controllers`` the list (None:
+    not asked for), and ``summaries`` the members of :func:`coded_summary` each after a
+    comma (:func:`members_json`)."""
+    parts = [
+        b'{%b,"verdict":%b,"accel_torque_nm":%b,"constant_torque_nm":%b,'
+        b'"decel_torque_nm":%b,"rms_torque_nm":%b,"reason_checks":%b'
+    ]
+    members = [actuators, verdicts, *torques, reason_checks]
+    if checks is not None:
+        parts.append(b',"checks":[' + b",".join([b"%b"] * len(checks)) + b"]")
+        members += checks
+    if controllers is not None:
+        parts.append(b',"controllers":%b')
+        members.append(controllers)
+    parts.append(b"%b}")
+    members.append(summaries)
+    return _filled(b"".join(parts), members, len(verdicts))
+
+
+def members_json(body: dict[str, Any], *, comma: bool = False) -> bytes:
+    """The members of ``body`` as :func:`dump_json` writes them inside its braces
+    (``comma``: each after a comma, so that none is nothing)."""
+    inner = dump_json(body)[1:-1]
+    return b"," + inner if comma and inner else inner
+
+
+def cases_json(
+    ids: list[bytes],
+    case_ids: list[bytes],
+    loads: list[bytes],
+    figures: Sequence[list[bytes]],
+    candidates: list[bytes],
+    counts: Sequence[int],
+) -> list[bytes]:
+    """Each case's entry of ``results`` as JSON, the text :func:`dump_json` writes of
+    :func:`case_body`, from its members' JSON: ``figures`` the cycle times, mean speeds
+    and duty cycles, ``candidates`` every case's candidates in turn (``counts`` of them a
+    case; :func:`coded_candidates_json`)."""
+    ends = list(itertools.accumulate(counts))
+    listed = [b",".join(candidates[end - n : end]) for end, n in zip(ends, counts, strict=True)]
+    template = (
+        b'{"id":%b,"case_id":%b,"load":%b,"cycle_time_s":%b,"mean_speed_rpm":%b,'
+        b'"duty_cycle_percent":%b,"candidates":[%b]}'
+    )
+    return _filled(template, [ids, case_ids, loads, *figures, listed], len(counts))
 
 
 def coded_summary(summary: dict[str, Any]) -> dict[str, Any]:
