@@ -190,7 +190,8 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
     """Each rule's check of each cell of ``decided`` as JSON (a list per rule, in the
     cells' order): the text :func:`dump_json` writes of :func:`coded_check_body`, written
     rule by rule for every cell at once: orjson writes each array of numbers, and one
-    template per rule (and per clause of a message) takes each cell's members.
+    template per rule and shape of its message (:func:`_message_shapes`) takes each
+    cell's members, the message's code and params among them.
     The messages' codes and params come from the same words: a rule's ``no_data``
     message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
     or :class:`~actuator_selection.sizing.checks.Variants` message from the arrays, any
@@ -205,7 +206,7 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
             rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)
             margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
             share = np.where(rated, values / limits, math.nan)
-        template = _template(
+        head = (
             b'{"name":',
             dump_json(rule.name),
             b',"status":',
@@ -219,25 +220,33 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
             b',"reference":',
             dump_json(rule.reference),
             b',"message_code":',
-            None,
-            b',"approximate":',
-            None,
-            b',"margin_percent":',
-            None,
-            b',"utilisation":',
-            None,
-            b"}",
         )
-        members = (
-            _STATUS_JSON[columns.statuses[k]].tolist(),
-            json_items(values),
-            json_items(limits),
-            _messages(decided, k, operands, cells),
-            _TRUTH_JSON[columns.approximate[k].view(np.int8)].tolist(),
-            json_items(margin),
-            json_items(share),
-        )
-        written.append(list(map(template.__mod__, zip(*members, strict=True))))
+        tail = (b',"approximate":', None, b',"margin_percent":', None, b',"utilisation":', None)
+        statuses = _STATUS_JSON[columns.statuses[k]]
+        truths = _TRUTH_JSON[columns.approximate[k].view(np.int8)]
+        shapes = _message_shapes(decided, k, operands, cells)
+        out = None if len(shapes) == 1 else np.empty(cells, dtype=object)
+        for where, parts, members in shapes:
+            said = statuses[where].tolist()
+            filled = _filled(
+                _template(*head, *parts, *tail, b"}"),
+                [
+                    said,
+                    json_items(values[where]),
+                    json_items(limits[where]),
+                    *members,
+                    truths[where].tolist(),
+                    json_items(margin[where]),
+                    json_items(share[where]),
+                ],
+                len(said),
+            )
+            if out is None:
+                written.append(filled)
+            else:
+                out[where] = filled
+        if out is not None:
+            written.append(out.tolist())
     return written
 
 
@@ -260,31 +269,47 @@ _WORDED = np.array([s in (Status.PASS, Status.FAIL, Status.WARN) for s in STATUS
 """By status code, whether a rule's own message words it (not no data, not not applicable)."""
 
 
-def _messages(decided: DecidedCells, k: int, operands: list[Operands], cells: int) -> list[bytes]:
+Shape = tuple[Any, list[bytes | None], list[list[bytes]]]
+"""Cells whose message is written by one template: which cells (a mask over them, or
+a slice of all), the template's parts (None: a member) and each member over those cells."""
+
+
+def _message_shapes(
+    decided: DecidedCells, k: int, operands: list[Operands], cells: int
+) -> list[Shape]:
     """Rule ``k``'s ``message_code`` and ``message_params`` members of each cell (the
-    code's JSON, then ``,"message_params":`` and the params' JSON)."""
+    code's JSON, then ``,"message_params":`` and the params' JSON), by shape: the cells
+    whose message is declared (:class:`~actuator_selection.sizing.checks.Said`,
+    :class:`~actuator_selection.sizing.checks.Variants`) by the clauses each says
+    (:func:`_said_shapes`), every other one (no data, not applicable, a message that is
+    a plain function) as its written text (:func:`_message_json`)."""
     rule = decided.rules[k]
     columns = decided.columns
     statuses, first = columns.statuses[k], columns.first_missing[k]
-    out = np.full(cells, b"", dtype=object)
-    done = np.zeros(cells, dtype=np.bool_)
-    no_data = statuses == NO_DATA
-    if no_data.any():
-        said = [_message_json(rule.no_data_message(r)) for r in range(len(rule.requires))]
-        out[no_data] = np.array(said, dtype=object)[first[no_data]]
-        done |= no_data
+    shapes: list[Shape] = []
+    worded = np.zeros(cells, dtype=np.bool_)
     if isinstance(rule.message, Said | Variants):
         worded = _WORDED[statuses] & (first < 0)  # a floor's failure wraps the message
         if worded.any():
             if not operands:
                 operands.append(decided.operand_columns())
-            cell = _Cells(operands[0], statuses, columns.values[k], columns.limits[k], worded)
-            out[worded] = _declared_json(rule.message, cell)
-            done |= worded
-    if not done.all():  # any other message: worded cell by cell, in codes only
+            cell = _Cells(operands[0], statuses, columns.values[k], columns.limits[k], worded, {})
+            shapes = [(c.mask, parts, its) for c, parts, its in _said_shapes(rule.message, cell)]
+    if worded.all():
+        if len(shapes) == 1:  # every cell: no mask to apply
+            return [(slice(None), shapes[0][1], shapes[0][2])]
+        return shapes
+    out = np.full(cells, b"", dtype=object)
+    left = ~worded
+    no_data = statuses == NO_DATA
+    if no_data.any():
+        said = [_message_json(rule.no_data_message(r)) for r in range(len(rule.requires))]
+        out[no_data] = np.array(said, dtype=object)[first[no_data]]
+    other = left & ~no_data
+    if other.any():  # any other message: worded cell by cell, in codes only
         values, limits = columns.values[k].tolist(), columns.limits[k].tolist()
         with codes_only():
-            for j in np.flatnonzero(~done).tolist():
+            for j in np.flatnonzero(other).tolist():
                 missing = int(first[j])
                 message = rule.words(
                     decided.operands_of(j),
@@ -294,8 +319,9 @@ def _messages(decided: DecidedCells, k: int, operands: list[Operands], cells: in
                     None if missing < 0 else missing,
                 )
                 out[j] = _message_json(message)
-    found: list[bytes] = out.tolist()
-    return found
+    if not worded.any():
+        return [(slice(None), [None], [out.tolist()])]
+    return [*shapes, (left, [None], [out[left].tolist()])]
 
 
 def _message_json(message: str) -> bytes:
@@ -308,23 +334,24 @@ def _message_json(message: str) -> bytes:
 @dataclass(frozen=True, slots=True)
 class _Cells:
     """The cells of one rule whose declared message is written: the operands, statuses,
-    values and limits of every cell detailed, and which of them (``mask``)."""
+    values and limits of every cell detailed, which of them (``mask``), and the terms
+    computed over every cell (by the term's identity: each computed once a rule)."""
 
     q: Operands
     statuses: npt.NDArray[np.int8]
     values: npt.NDArray[np.float64]
     limits: npt.NDArray[np.float64]
     mask: npt.NDArray[np.bool_]
-
-    @property
-    def count(self) -> int:
-        return int(self.mask.sum())
+    terms: dict[int, npt.NDArray[Any]]
 
     def term(self, term: Term) -> npt.NDArray[Any]:
         """``term`` over the cells of :attr:`mask`."""
-        with np.errstate(all="ignore"):
-            found = term(self.q, ARRAY_OPS, self.values, self.limits)
-        return np.broadcast_to(found, self.mask.shape)[self.mask]
+        found = self.terms.get(id(term))
+        if found is None:
+            with np.errstate(all="ignore"):
+                computed = term(self.q, ARRAY_OPS, self.values, self.limits)
+            found = self.terms[id(term)] = np.broadcast_to(computed, self.mask.shape)
+        return found[self.mask]
 
     def codes(self, message: Said) -> list[bytes]:
         """``message``'s code of each cell, as JSON."""
@@ -336,62 +363,84 @@ class _Cells:
         """The cells of :attr:`mask` where ``where`` (over those cells) holds."""
         mask = self.mask.copy()
         mask[self.mask] = where
-        return _Cells(self.q, self.statuses, self.values, self.limits, mask)
+        return _Cells(self.q, self.statuses, self.values, self.limits, mask, self.terms)
 
 
-def _declared_json(message: Said | Variants, cells: _Cells) -> list[bytes]:
-    """:func:`_message_json` of a declared message (:class:`~actuator_selection.sizing.
-    checks.Said`, :class:`~actuator_selection.sizing.checks.Variants`) over ``cells``,
-    each decided pass, fail or warn: what the message says of each, from the arrays."""
+@dataclass(frozen=True, slots=True)
+class _Chosen:
+    """A :class:`~actuator_selection.sizing.checks.Said` clause with each of its params'
+    :class:`~actuator_selection.sizing.checks.Pick` decided (``params``)."""
+
+    said: Said
+    params: list[Any]
+
+
+def _said_shapes(
+    message: Said | Variants, cells: _Cells
+) -> list[tuple[_Cells, list[bytes | None], list[list[bytes]]]]:
+    """:func:`_message_json` of a declared message over ``cells`` (each decided pass,
+    fail or warn) by shape: the cells that take the same variant and the same branch of
+    each :class:`~actuator_selection.sizing.checks.Pick`, with one template's parts
+    (None: a member) and the members over those cells, from the arrays."""
     if isinstance(message, Said):
-        members = [cells.codes(message), _params_json(message, cells)]
-        return _filled(b'%b,"message_params":%b', members, cells.count)
-    out = np.empty(cells.count, dtype=object)
-    left = np.ones(out.shape, dtype=np.bool_)
+        out = []
+        for c, chosen in _chosen(message, cells):
+            parts, members = _object_parts(chosen, c)
+            out.append((c, [None, b',"message_params":', *parts], [c.codes(message), *members]))
+        return out
+    out = []
+    left = np.ones(int(np.count_nonzero(cells.mask)), dtype=np.bool_)
     for condition, variant in message.cases:
         holds = left if condition is None else left & cells.term(condition)
         if holds.any():
-            out[holds] = _declared_json(variant, cells.within(holds))
+            out += _said_shapes(variant, cells.within(holds))
         left &= ~holds
-    found: list[bytes] = out.tolist()
-    return found
+    return out
 
 
-def _params_json(message: Said, cells: _Cells) -> list[bytes]:
-    """The params of ``message`` over ``cells`` as JSON objects."""
-    parts: list[bytes | None] = [b"{"]
-    members = []
-    for n, (name, param) in enumerate(message.params):
-        parts.append((b"," if n else b"") + dump_json(name) + b":")
-        found = _param_json(param, cells)
-        if isinstance(found, bytes):  # the same in every cell
-            parts.append(found)
-        else:
-            parts.append(None)
-            members.append(found)
-    parts.append(b"}")
-    return _filled(_template(*parts), members, cells.count)
+def _chosen(message: Said, cells: _Cells) -> list[tuple[_Cells, _Chosen]]:
+    """``message`` over ``cells``, split where a param's :class:`~actuator_selection.
+    sizing.checks.Pick` (or a clause's) takes another branch."""
+    leaves: list[tuple[_Cells, list[Any]]] = [(cells, [])]
+    for _, param in message.params:
+        leaves = [(c2, [*params, p]) for c, params in leaves for c2, p in _param_chosen(param, c)]
+    return [(c, _Chosen(message, params)) for c, params in leaves]
 
 
-def _param_json(param: Any, cells: _Cells) -> list[bytes] | bytes:
-    """One param of a :class:`~actuator_selection.sizing.checks.Said` over ``cells``, as
-    :func:`~actuator_selection.phrases.check_messages.jsonable_params` has it written (one
-    byte string where it is the same in every cell)."""
+def _param_chosen(param: Any, cells: _Cells) -> list[tuple[_Cells, Any]]:
+    """``param`` over ``cells``, each :class:`~actuator_selection.sizing.checks.Pick`
+    decided: the cells of each branch taken, with what it says there."""
     if isinstance(param, Said):
-        members = [cells.codes(param), _params_json(param, cells)]
-        return _filled(b'{"code":%b,"params":%b}', members, cells.count)
+        return list(_chosen(param, cells))
     if isinstance(param, Pick):
         holds = cells.term(param.condition).astype(np.bool_)
-        out = np.empty(holds.shape, dtype=object)
-        for where, chosen in ((holds, param.if_true), (~holds, param.if_false)):
+        out = []
+        for where, branch in ((holds, param.if_true), (~holds, param.if_false)):
             if where.any():
-                found = _param_json(chosen, cells.within(where))
-                out[where] = [found] * int(where.sum()) if isinstance(found, bytes) else found
-        picked: list[bytes] = out.tolist()
-        return picked
-    if callable(param):
-        return _param_items(cells.term(param))
-    return dump_json(jsonable(param))  # a constant: words, a clause or None
+                out += _param_chosen(branch, cells.within(where))
+        return out
+    return [(cells, param)]
+
+
+def _object_parts(chosen: _Chosen, cells: _Cells) -> tuple[list[bytes | None], list[list[bytes]]]:
+    """The params of ``chosen`` over ``cells`` as one JSON object's template parts (None:
+    a member) and members, as :func:`~actuator_selection.phrases.check_messages.
+    jsonable_params` has them written."""
+    parts: list[bytes | None] = [b"{"]
+    members: list[list[bytes]] = []
+    for n, ((name, _), param) in enumerate(zip(chosen.said.params, chosen.params, strict=True)):
+        parts.append((b"," if n else b"") + dump_json(name) + b":")
+        if isinstance(param, _Chosen):  # a clause: its code and params
+            inner, its = _object_parts(param, cells)
+            parts += [b'{"code":', None, b',"params":', *inner, b"}"]
+            members += [cells.codes(param.said), *its]
+        elif callable(param):
+            parts.append(None)
+            members.append(_param_items(cells.term(param)))
+        else:
+            parts.append(dump_json(jsonable(param)))  # a constant: words, a clause or None
+    parts.append(b"}")
+    return parts, members
 
 
 _STATUS_INDEX = np.array([list(Status).index(s) for s in STATUS_BY_CODE], dtype=np.intp)
