@@ -224,7 +224,9 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
         tail = (b',"approximate":', None, b',"margin_percent":', None, b',"utilisation":', None)
         statuses = _STATUS_JSON[columns.statuses[k]]
         truths = _TRUTH_JSON[columns.approximate[k].view(np.int8)]
-        shapes = _message_shapes(decided, k, operands, cells)
+        # the values' and limits' JSON, shared with the messages' params that say them
+        given = (_object_array(json_items(values)), _object_array(json_items(limits)))
+        shapes = _message_shapes(decided, k, operands, cells, given)
         out = None if len(shapes) == 1 else np.empty(cells, dtype=object)
         for where, parts, members in shapes:
             said = statuses[where].tolist()
@@ -232,8 +234,8 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
                 _template(*head, *parts, *tail, b"}"),
                 [
                     said,
-                    json_items(values[where]),
-                    json_items(limits[where]),
+                    given[0][where].tolist(),
+                    given[1][where].tolist(),
                     *members,
                     truths[where].tolist(),
                     json_items(margin[where]),
@@ -248,6 +250,12 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
         if out is not None:
             written.append(out.tolist())
     return written
+
+
+def _object_array(items: list[bytes]) -> npt.NDArray[np.object_]:
+    out = np.empty(len(items), dtype=object)
+    out[:] = items
+    return out
 
 
 def _template(*parts: bytes | None) -> bytes:
@@ -275,7 +283,11 @@ a slice of all), the template's parts (None: a member) and each member over thos
 
 
 def _message_shapes(
-    decided: DecidedCells, k: int, operands: list[Operands], cells: int
+    decided: DecidedCells,
+    k: int,
+    operands: list[Operands],
+    cells: int,
+    given: tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]],
 ) -> list[Shape]:
     """Rule ``k``'s ``message_code`` and ``message_params`` members of each cell (the
     code's JSON, then ``,"message_params":`` and the params' JSON), by shape: the cells
@@ -293,7 +305,8 @@ def _message_shapes(
         if worded.any():
             if not operands:
                 operands.append(decided.operand_columns())
-            cell = _Cells(operands[0], statuses, columns.values[k], columns.limits[k], worded, {})
+            value, limit = columns.values[k], columns.limits[k]
+            cell = _Cells(operands[0], statuses, value, limit, worded, {}, given)
             shapes = [(c.mask, parts, its) for c, parts, its in _said_shapes(rule.message, cell)]
     if worded.all():
         if len(shapes) == 1:  # every cell: no mask to apply
@@ -342,16 +355,41 @@ class _Cells:
     values: npt.NDArray[np.float64]
     limits: npt.NDArray[np.float64]
     mask: npt.NDArray[np.bool_]
-    terms: dict[int, npt.NDArray[Any]]
+    terms: dict[int, tuple[Any, npt.NDArray[Any]]]
+    given: tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]]
+    """The JSON of :attr:`values` and of :attr:`limits` over every cell: a term that
+    gives one of them as it is (``given_value``) is written from it."""
 
     def term(self, term: Term) -> npt.NDArray[Any]:
         """``term`` over the cells of :attr:`mask`."""
+        return self._computed(term)[1][self.mask]
+
+    def _computed(self, term: Term) -> tuple[Any, npt.NDArray[Any]]:
         found = self.terms.get(id(term))
         if found is None:
             with np.errstate(all="ignore"):
                 computed = term(self.q, ARRAY_OPS, self.values, self.limits)
-            found = self.terms[id(term)] = np.broadcast_to(computed, self.mask.shape)
-        return found[self.mask]
+            found = self.terms[id(term)] = (
+                computed,
+                np.broadcast_to(computed, self.mask.shape),
+            )
+        return found
+
+    def items(self, term: Term) -> list[bytes]:
+        """``term`` over the cells of :attr:`mask` as a param's JSON (:func:`_param_items`)."""
+        computed, column = self._computed(term)
+        written = (
+            self.given[0]
+            if computed is self.values
+            else self.given[1]
+            if computed is self.limits
+            else None
+        )
+        found = column[self.mask]
+        if written is None or not np.isfinite(found).all():
+            return _param_items(found)
+        shared: list[bytes] = written[self.mask].tolist()  # finite: the same text
+        return shared
 
     def codes(self, message: Said) -> list[bytes]:
         """``message``'s code of each cell, as JSON."""
@@ -363,7 +401,7 @@ class _Cells:
         """The cells of :attr:`mask` where ``where`` (over those cells) holds."""
         mask = self.mask.copy()
         mask[self.mask] = where
-        return _Cells(self.q, self.statuses, self.values, self.limits, mask, self.terms)
+        return _Cells(self.q, self.statuses, self.values, self.limits, mask, self.terms, self.given)
 
 
 @dataclass(frozen=True, slots=True)
@@ -436,7 +474,7 @@ def _object_parts(chosen: _Chosen, cells: _Cells) -> tuple[list[bytes | None], l
             members += [cells.codes(param.said), *its]
         elif callable(param):
             parts.append(None)
-            members.append(_param_items(cells.term(param)))
+            members.append(cells.items(param))
         else:
             parts.append(dump_json(jsonable(param)))  # a constant: words, a clause or None
     parts.append(b"}")
