@@ -605,13 +605,18 @@ def cases_json(
     :func:`case_body`, from its members' JSON: ``figures`` the cycle times, mean speeds
     and duty cycles, ``candidates`` every case's candidates in turn (``counts`` of them a
     case; :func:`coded_candidates_json`)."""
+    head = (
+        b'{"id":%b,"case_id":%b,"load":%b,"cycle_time_s":%b,"mean_speed_rpm":%b,'
+        b'"duty_cycle_percent":%b,"candidates":['
+    )
+    members = [ids, case_ids, loads, *figures]
+    if counts and min(counts) == max(counts):  # as many in every case: each one a member
+        n = counts[0]
+        members += [candidates[k::n] for k in range(n)]
+        return _filled(head + b",".join([b"%b"] * n) + b"]}", members, len(counts))
     ends = list(itertools.accumulate(counts))
     listed = [b",".join(candidates[end - n : end]) for end, n in zip(ends, counts, strict=True)]
-    template = (
-        b'{"id":%b,"case_id":%b,"load":%b,"cycle_time_s":%b,"mean_speed_rpm":%b,'
-        b'"duty_cycle_percent":%b,"candidates":[%b]}'
-    )
-    return _filled(template, [ids, case_ids, loads, *figures, listed], len(counts))
+    return _filled(head + b"%b]}", [*members, listed], len(counts))
 
 
 def coded_summary(summary: dict[str, Any]) -> dict[str, Any]:
