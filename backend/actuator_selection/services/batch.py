@@ -259,19 +259,14 @@ def _candidates(
     return out
 
 
-STREAM_CASES = 500
-"""Cases computed and written per slice of a batch answer without words (written from
-the ranking's arrays): memory stays flat in the number of cases (20,000 cases peaked at
-622 MB when the answer was built whole). Each slice has a fixed cost (the engine's and
-the writer's numpy calls per block, rule and shape of a message): 10,000 cases with
-checks took about a tenth less CPU in slices of 500 than of 200, and held 37 MB of
-Python objects at their peak against 15 MB (tracemalloc, 2026-11-27); slices of 1,000
-were not faster than of 500 and held 74 MB."""
-
-STREAM_CASES_WORDED = 200
-"""Cases per slice of a batch answer with words (``include_messages``), written from the
-selections: a slice of 500 cases held 67 MB of Python objects at its peak, one of 200
-27 MB (tracemalloc, 2026-11-27)."""
+STREAM_CASES = 200
+"""Cases computed and written per slice of a batch answer: memory stays flat in the
+number of cases (20,000 cases peaked at 622 MB when the answer was built whole). Each
+slice has a fixed cost (the engine's and the writer's numpy calls per block, rule and
+shape of a message): without words, 10,000 cases with checks took about a tenth less
+CPU in slices of 500, but held 37 MB of Python objects at their peak against 15 MB
+(tracemalloc), and a server's peak RSS for 20,000 cases rose from 212 to 233 MB; with
+words a slice of 500 held 67 MB, one of 200 27 MB (2026-11-27). Kept at 200."""
 
 
 def _by_rules(apps: list[Application]) -> dict[tuple[Rule, ...], list[int]]:
@@ -317,15 +312,13 @@ def _result_chunks(
     drives: _Drives,
     localize: Localize,
 ) -> Iterator[bytes]:
-    """The ``results`` array's JSON, :data:`STREAM_CASES` cases at a time
-    (:data:`STREAM_CASES_WORDED` with words), comma-joined.
+    """The ``results`` array's JSON, :data:`STREAM_CASES` cases at a time, comma-joined.
 
     These dicts are BatchSelectionOut's JSON (the tests validate them); validating
     them again as models would take longer than the whole flowchart.
     """
-    step = STREAM_CASES_WORDED if body.include_messages else STREAM_CASES
-    for start in range(0, len(apps), step):
-        end = start + step
+    for start in range(0, len(apps), STREAM_CASES):
+        end = start + STREAM_CASES
         if not body.include_messages:
             written = _coded_results(
                 body, actuators, arrays, apps[start:end], models[start:end], ids[start:end], drives
