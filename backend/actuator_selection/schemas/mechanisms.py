@@ -192,19 +192,21 @@ class BallScrewInclineIn(_MechanismIn):
         json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
-    def _axis(self) -> AxisLoad:
-        return inclined_ball_screw_axis(
-            InclinedBallScrew(
-                mass_kg=self.mass_kg,
-                lead_m=mm_to_m(self.lead_mm),
-                friction_coefficient=self.friction_coefficient,
-                efficiency=self.efficiency,
-                incline_deg=self.incline_deg,
-                screw_inertia_kgm2=self.screw_inertia_kgm2,
-                counterweight_kg=self.counterweight_kg,
-                friction_force_n=self.friction_force_n,
-            )
+    def screw(self) -> InclinedBallScrew:
+        """The screw as the core sees it (its lead in m)."""
+        return InclinedBallScrew(
+            mass_kg=self.mass_kg,
+            lead_m=mm_to_m(self.lead_mm),
+            friction_coefficient=self.friction_coefficient,
+            efficiency=self.efficiency,
+            incline_deg=self.incline_deg,
+            screw_inertia_kgm2=self.screw_inertia_kgm2,
+            counterweight_kg=self.counterweight_kg,
+            friction_force_n=self.friction_force_n,
         )
+
+    def _axis(self) -> AxisLoad:
+        return inclined_ball_screw_axis(self.screw())
 
 
 class BeltIn(_MechanismIn):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
@@ -85,14 +86,32 @@ def inclined_ball_screw_axis(
     >>> axis.efficiency
     0.9
     """
-    sin_t, cos_t = _sin_cos(screw.incline_deg)
+    moving_mass, gravity_force, friction_force = inclined_ball_screw_forces(screw, g=g)
     return _linear_axis(
-        radius_m=screw.lead_m / (2 * math.pi),
+        radius_m=screw_radius_m(screw.lead_m),
         radius_field="lead_m",
         rotating_inertia_kgm2=screw.screw_inertia_kgm2,
-        moving_mass_kg=screw.mass_kg + screw.counterweight_kg,
-        gravity_force_n=(screw.mass_kg * sin_t - screw.counterweight_kg) * g,
-        friction_force_n=screw.friction_coefficient * screw.mass_kg * g * cos_t
-        + screw.friction_force_n,
+        moving_mass_kg=moving_mass,
+        gravity_force_n=gravity_force,
+        friction_force_n=friction_force,
         efficiency=screw.efficiency,
+    )
+
+
+def screw_radius_m(lead_m: Any) -> Any:
+    """r = P/2π of a lead P [m] (a float, or an array of many leads)."""
+    return lead_m / (2 * math.pi)
+
+
+def inclined_ball_screw_forces(
+    screw: InclinedBallScrew, *, g: float = STANDARD_GRAVITY_M_PER_S2
+) -> tuple[float, float, float]:
+    """What of :func:`inclined_ball_screw_axis` does not depend on the lead: the moved
+    mass m + m_c [kg], the weight's force (m·sin θ − m_c)·g and the friction force
+    μ·m·g·cos θ + F_F [N], each reflected through r = P/2π."""
+    sin_t, cos_t = _sin_cos(screw.incline_deg)
+    return (
+        screw.mass_kg + screw.counterweight_kg,
+        (screw.mass_kg * sin_t - screw.counterweight_kg) * g,
+        screw.friction_coefficient * screw.mass_kg * g * cos_t + screw.friction_force_n,
     )

@@ -5,12 +5,18 @@ reflected mass, force and weight on an incline (first principles, see the packag
 from __future__ import annotations
 
 import math
+from typing import Any, overload
+
+import numpy as np
+import numpy.typing as npt
 
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.phrases.messages import N_, Text
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import _check, _check_result, _square
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
+
+FloatArray = npt.NDArray[np.float64]
 
 MM_PER_M = 1000.0
 """Millimetres in a metre: linear axes take their load speed in mm/s."""
@@ -19,8 +25,12 @@ MAX_INCLINE_DEG = 90.0
 """|θ| bound [°]: vertical. Beyond it the axis is the same one with its direction reversed."""
 
 
-def mm_to_m(length_mm: float) -> float:
-    """A length given in millimetres [mm] in metres [m].
+@overload
+def mm_to_m(length_mm: float) -> float: ...
+@overload
+def mm_to_m(length_mm: FloatArray) -> FloatArray: ...
+def mm_to_m(length_mm: Any) -> Any:
+    """A length given in millimetres [mm] in metres [m] (a float, or an array of many).
 
     >>> mm_to_m(10.0)
     0.01
@@ -113,3 +123,25 @@ def _linear_axis(
         speed_unit="mm/s",
         force_unit="N",
     )
+
+
+def linear_axis_columns(
+    radius_m: FloatArray,
+    *,
+    rotating_inertia_kgm2: float,
+    moving_mass_kg: float,
+    gravity_force_n: float,
+    friction_force_n: float,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """:func:`_linear_axis` at many radii r at once: n per mm/s = 1/(1000·r·2π/60),
+    J_L = J_rot + m_moving·r², T_G = F_G·r and T_F = F_F·r as columns, the same
+    operations in the same order (r² as Python's ``**``, the C library's pow, which
+    numpy's x·x may not match in the last bit). Not checked: the caller sees to r and the
+    results being finite and r² not vanishing, where :func:`_linear_axis` raises."""
+    with np.errstate(all="ignore"):
+        speed = 1.0 / (MM_PER_M * radius_m * RAD_PER_S_PER_RPM)
+        square = np.array([_square(r) for r in radius_m.tolist()], dtype=np.float64)
+        inertia = rotating_inertia_kgm2 + moving_mass_kg * square
+        gravity = gravity_force_n * radius_m
+        friction = friction_force_n * radius_m
+    return speed, inertia, gravity, friction
