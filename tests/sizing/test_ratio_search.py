@@ -21,7 +21,7 @@ from tests.sizing.test_continuous import catalogue
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
 from actuator_selection.schemas.ratio import RatioStudyRequest
-from actuator_selection.services.ratio import varied
+from actuator_selection.services.ratio import columns_of, varied
 from actuator_selection.sizing import ratio, ratio_floors, ratio_search
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.cycle import Load, SpeedPattern
@@ -91,11 +91,14 @@ def _worked(speed_rpm: float, efficiency: float = 1.0) -> Study:
     return lambda i: geared(app, dataclasses.replace(transmission, ratio=i)), columns
 
 
-def _screw() -> Study:
+def _screw(as_columns: bool = True) -> Study:
+    """The vertical screw's lead, its cases built as columns as the service builds them
+    (``columns_of``), or an application per value."""
     request = RatioStudyRequest.model_validate(
         VERTICAL_SCREW | {"ratio_study": {"variable": "lead_mm"}}
     )
-    return varied(request, request.ratio_study), None
+    columns = columns_of(request, request.ratio_study) if as_columns else None
+    return varied(request, request.ratio_study), columns
 
 
 def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
@@ -121,6 +124,7 @@ def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
         (_worked(40.0), 0.5, 5.0),
         (_screw(), 5.0, 1000.0),
         (_screw(), 20.0, 400.0),
+        (_screw(as_columns=False), 5.0, 1000.0),
     ],
     ids=[
         "ratio 1-20",
@@ -129,6 +133,7 @@ def _same(fast: list[RatioResult], old: list[RatioResult]) -> None:
         "fast load, ratio 0.5-5",
         "lead 5-1000",
         "lead 20-400",
+        "lead 5-1000 by value",
     ],
 )
 @pytest.mark.parametrize(
@@ -214,8 +219,9 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
     monkeypatch.setattr(ratio_floors, "FINE_CELLS", fine_cells)
     monkeypatch.setattr(ratio, "AT_ONCE_LEAST", at_once)
     vary, columns = study
-    monotone = None if columns is None else MONOTONE_SHARES  # the ratio's, as the service's
-    floor = None if columns is None else _TORQUE_FLOORS[columns]
+    # a ratio's columns have the ratio's shares and floors, as the service's; a lead's none
+    monotone = MONOTONE_SHARES if columns in _TORQUE_FLOORS else None
+    floor = _TORQUE_FLOORS.get(columns) if columns is not None else None
     ranked = ranked_ratio_study(
         actuators(),
         vary,
@@ -225,7 +231,7 @@ def test_the_ranking_s_first_are_those_of_the_exhaustive_study(
         cases_at=columns,
         monotone=monotone,
         torque_floor=floor,
-        rms_floor=None if columns is None else _RMS_FLOORS[columns],
+        rms_floor=_RMS_FLOORS.get(columns) if columns is not None else None,
     )
     whole = exhaustive_ratio_study(actuators(), vary, low, high)
     expected = _ranking(whole)[:top]
@@ -254,7 +260,7 @@ def test_a_ranked_series_with_floors_as_before(speed_rpm: float, top: int) -> No
         cases_at=columns,
         monotone=MONOTONE_SHARES,
         torque_floor=None if columns is None else _TORQUE_FLOORS[columns],
-        rms_floor=None if columns is None else _RMS_FLOORS[columns],
+        rms_floor=_RMS_FLOORS.get(columns) if columns is not None else None,
     )
     whole = exhaustive_ratio_study(actuators(), vary, 1, 50, series=series)
     _same(ranked.results, _ranking(whole)[:top])

@@ -8,6 +8,7 @@ from typing import Any
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.errors import InvalidInputError
+from actuator_selection.schemas.mechanisms import BallScrewInclineIn
 from actuator_selection.schemas.ratio import (
     DEFAULT_RANGE,
     MAX_VALUE,
@@ -24,6 +25,7 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases
+from actuator_selection.sizing.lead_cases import screw_cases
 from actuator_selection.sizing.mechanisms import Transmission
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study
 from actuator_selection.sizing.ratio_cases import (
@@ -70,7 +72,13 @@ def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], App
 
 def columns_of(body: SelectionRequest, study: RatioStudyIn) -> Callable[[FloatArray], Cases] | None:
     """:func:`varied` at many values at once as the engine's cases, where it can be built
-    as columns: an external ratio on the chapter's trapezoid."""
+    as columns: an external ratio on the chapter's trapezoid, the lead of a screw
+    (without a transmission) on the trapezoid."""
+    load = body.load
+    if study.variable == "lead_mm" and isinstance(load, BallScrewInclineIn):
+        if load.transmission is not None or load.speed is None:
+            return None
+        return screw_cases(body.to_core(), load.screw(), load.speed, varied(body, study))
     if study.variable != "ratio":
         return None
     return geared_cases(
