@@ -263,24 +263,26 @@ class BeltIn(_MechanismIn):
         json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
-    def _axis(self) -> AxisLoad:
-        return belt_axis(
-            BeltDrive(
-                mass_kg=self.mass_kg,
-                pulley_diameter_m=mm_to_m(self.pulley_diameter_mm),
-                friction_coefficient=self.friction_coefficient,
-                efficiency=self.efficiency,
-                incline_deg=self.incline_deg,
-                belt_mass_kg=self.belt_mass_kg,
-                pulley_inertia_kgm2=self.pulley_inertia_kgm2,
-                idler_inertia_kgm2=self.idler_inertia_kgm2,
-                idler_diameter_m=None
-                if self.idler_diameter_mm is None
-                else mm_to_m(self.idler_diameter_mm),
-                counterweight_kg=self.counterweight_kg,
-                friction_force_n=self.friction_force_n,
-            )
+    def belt(self) -> BeltDrive:
+        """The belt drive as the core sees it (its lengths in m)."""
+        return BeltDrive(
+            mass_kg=self.mass_kg,
+            pulley_diameter_m=mm_to_m(self.pulley_diameter_mm),
+            friction_coefficient=self.friction_coefficient,
+            efficiency=self.efficiency,
+            incline_deg=self.incline_deg,
+            belt_mass_kg=self.belt_mass_kg,
+            pulley_inertia_kgm2=self.pulley_inertia_kgm2,
+            idler_inertia_kgm2=self.idler_inertia_kgm2,
+            idler_diameter_m=None
+            if self.idler_diameter_mm is None
+            else mm_to_m(self.idler_diameter_mm),
+            counterweight_kg=self.counterweight_kg,
+            friction_force_n=self.friction_force_n,
         )
+
+    def _axis(self) -> AxisLoad:
+        return belt_axis(self.belt())
 
 
 class RackPinionIn(_MechanismIn):
@@ -319,19 +321,21 @@ class RackPinionIn(_MechanismIn):
         json_schema_extra=shown("F_R", "mech.friction_force"),
     )
 
-    def _axis(self) -> AxisLoad:
-        return rack_pinion_axis(
-            RackPinion(
-                mass_kg=self.mass_kg,
-                pinion_diameter_m=mm_to_m(self.pinion_diameter_mm),
-                friction_coefficient=self.friction_coefficient,
-                efficiency=self.efficiency,
-                incline_deg=self.incline_deg,
-                pinion_inertia_kgm2=self.pinion_inertia_kgm2,
-                counterweight_kg=self.counterweight_kg,
-                friction_force_n=self.friction_force_n,
-            )
+    def rack(self) -> RackPinion:
+        """The rack and pinion as the core sees it (its diameter in m)."""
+        return RackPinion(
+            mass_kg=self.mass_kg,
+            pinion_diameter_m=mm_to_m(self.pinion_diameter_mm),
+            friction_coefficient=self.friction_coefficient,
+            efficiency=self.efficiency,
+            incline_deg=self.incline_deg,
+            pinion_inertia_kgm2=self.pinion_inertia_kgm2,
+            counterweight_kg=self.counterweight_kg,
+            friction_force_n=self.friction_force_n,
         )
+
+    def _axis(self) -> AxisLoad:
+        return rack_pinion_axis(self.rack())
 
 
 class ConveyorIn(_MechanismIn):

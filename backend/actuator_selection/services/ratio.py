@@ -8,7 +8,7 @@ from typing import Any
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.errors import InvalidInputError
-from actuator_selection.schemas.mechanisms import BallScrewInclineIn
+from actuator_selection.schemas.mechanisms import BallScrewInclineIn, BeltIn, RackPinionIn
 from actuator_selection.schemas.ratio import (
     DEFAULT_RANGE,
     MAX_VALUE,
@@ -25,8 +25,12 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases
-from actuator_selection.sizing.lead_cases import screw_cases
+from actuator_selection.sizing.linear_cases import linear_cases
 from actuator_selection.sizing.mechanisms import Transmission
+from actuator_selection.sizing.mechanisms.ball_screw import inclined_ball_screw_law
+from actuator_selection.sizing.mechanisms.belt import belt_law
+from actuator_selection.sizing.mechanisms.linear import LinearLaw
+from actuator_selection.sizing.mechanisms.rack_pinion import rack_pinion_law
 from actuator_selection.sizing.ratio import RatioResult, ranked_ratio_study
 from actuator_selection.sizing.ratio_cases import (
     MONOTONE_SHARES,
@@ -72,18 +76,35 @@ def varied(body: SelectionRequest, study: RatioStudyIn) -> Callable[[float], App
 
 def columns_of(body: SelectionRequest, study: RatioStudyIn) -> Callable[[FloatArray], Cases] | None:
     """:func:`varied` at many values at once as the engine's cases, where it can be built
-    as columns: an external ratio on the chapter's trapezoid, the lead of a screw
-    (without a transmission) on the trapezoid."""
+    as columns: an external ratio on the chapter's trapezoid; a screw's lead, a pinion's
+    or a belt pulley's diameter (without a transmission of their own) on the
+    trapezoid."""
     load = body.load
-    if study.variable == "lead_mm" and isinstance(load, BallScrewInclineIn):
-        if load.transmission is not None or load.speed is None:
-            return None
-        return screw_cases(body.to_core(), load.screw(), load.speed, varied(body, study))
+    linear = _linear_law(load, study.variable)
+    if linear is not None:
+        law, speed = linear
+        return linear_cases(body.to_core(), law, speed, varied(body, study))
     if study.variable != "ratio":
         return None
     return geared_cases(
         body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
     )
+
+
+def _linear_law(load: object, variable: str) -> tuple[LinearLaw, float] | None:
+    """The linear axis of ``load`` as a function of ``variable`` and its load speed, where
+    it is one on a trapezoid (a speed given) without a transmission of its own."""
+    if not isinstance(load, BallScrewInclineIn | RackPinionIn | BeltIn):
+        return None
+    if load.transmission is not None or load.speed is None:
+        return None
+    if variable == "lead_mm" and isinstance(load, BallScrewInclineIn):
+        return inclined_ball_screw_law(load.screw()), load.speed
+    if variable == "pinion_diameter_mm" and isinstance(load, RackPinionIn):
+        return rack_pinion_law(load.rack()), load.speed
+    if variable == "pulley_diameter_mm" and isinstance(load, BeltIn):
+        return belt_law(load.belt()), load.speed
+    return None
 
 
 def torque_floor_of(

@@ -6,15 +6,18 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import STANDARD_GRAVITY_M_PER_S2, _check
 from actuator_selection.sizing.mechanisms.linear import (
+    LinearLaw,
     _check_efficiency,
     _check_incline,
     _linear_axis,
     _nonnegative,
-    _sin_cos,
+    incline_forces,
 )
 
 # --- linear axes from first principles ----------------------------------------------------
@@ -86,14 +89,14 @@ def inclined_ball_screw_axis(
     >>> axis.efficiency
     0.9
     """
-    moving_mass, gravity_force, friction_force = inclined_ball_screw_forces(screw, g=g)
+    law = inclined_ball_screw_law(screw, g=g)
     return _linear_axis(
         radius_m=screw_radius_m(screw.lead_m),
         radius_field="lead_m",
         rotating_inertia_kgm2=screw.screw_inertia_kgm2,
-        moving_mass_kg=moving_mass,
-        gravity_force_n=gravity_force,
-        friction_force_n=friction_force,
+        moving_mass_kg=law.moving_mass_kg,
+        gravity_force_n=law.gravity_force_n,
+        friction_force_n=law.friction_force_n,
         efficiency=screw.efficiency,
     )
 
@@ -103,15 +106,25 @@ def screw_radius_m(lead_m: Any) -> Any:
     return lead_m / (2 * math.pi)
 
 
-def inclined_ball_screw_forces(
+def inclined_ball_screw_law(
     screw: InclinedBallScrew, *, g: float = STANDARD_GRAVITY_M_PER_S2
-) -> tuple[float, float, float]:
-    """What of :func:`inclined_ball_screw_axis` does not depend on the lead: the moved
-    mass m + m_c [kg], the weight's force (m·sin θ − m_c)·g and the friction force
-    μ·m·g·cos θ + F_F [N], each reflected through r = P/2π."""
-    sin_t, cos_t = _sin_cos(screw.incline_deg)
-    return (
-        screw.mass_kg + screw.counterweight_kg,
-        (screw.mass_kg * sin_t - screw.counterweight_kg) * g,
-        screw.friction_coefficient * screw.mass_kg * g * cos_t + screw.friction_force_n,
+) -> LinearLaw:
+    """:func:`inclined_ball_screw_axis` as a function of the lead P: r = P/2π, J_S, and
+    the moved mass m + m_c and the forces, which do not depend on P."""
+    gravity, friction = incline_forces(
+        mass_kg=screw.mass_kg,
+        counterweight_kg=screw.counterweight_kg,
+        friction_coefficient=screw.friction_coefficient,
+        friction_force_n=screw.friction_force_n,
+        incline_deg=screw.incline_deg,
+        g=g,
+    )
+    inertia = screw.screw_inertia_kgm2
+    return LinearLaw(
+        radius_m=screw_radius_m,
+        rotating_inertia_kgm2=lambda leads: np.full(leads.shape, inertia),
+        moving_mass_kg=screw.mass_kg + screw.counterweight_kg,
+        gravity_force_n=gravity,
+        friction_force_n=friction,
+        efficiency=screw.efficiency,
     )

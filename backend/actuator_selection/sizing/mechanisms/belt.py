@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import (
@@ -13,11 +15,15 @@ from actuator_selection.sizing.loads import (
     _square,
 )
 from actuator_selection.sizing.mechanisms.linear import (
+    FloatArray,
+    LinearLaw,
     _check_efficiency,
     _check_incline,
     _linear_axis,
     _nonnegative,
-    _sin_cos,
+    half,
+    incline_forces,
+    squares,
 )
 
 
@@ -112,17 +118,49 @@ def belt_axis(belt: BeltDrive, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> AxisL
     >>> round(axis.speed_rpm_per_unit, 6), axis.torque_nm_per_force_unit, axis.speed_unit
     (0.381972, 0.025, 'mm/s')
     """
-    sin_t, cos_t = _sin_cos(belt.incline_deg)
     idler = _reflected_roller(
         belt.idler_inertia_kgm2, belt.pulley_diameter_m, belt.idler_diameter_m, "idler_diameter_m"
     )
+    law = belt_law(belt, g=g)
     return _linear_axis(
-        radius_m=belt.pulley_diameter_m / 2,
+        radius_m=half(belt.pulley_diameter_m),
         radius_field="pulley_diameter_m",
         rotating_inertia_kgm2=belt.pulley_inertia_kgm2 + idler,
+        moving_mass_kg=law.moving_mass_kg,
+        gravity_force_n=law.gravity_force_n,
+        friction_force_n=law.friction_force_n,
+        efficiency=belt.efficiency,
+    )
+
+
+def belt_law(belt: BeltDrive, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> LinearLaw:
+    """:func:`belt_axis` as a function of the drive pulley's diameter D: r = D/2,
+    J_D + J_I·(D/D_I)² (J_D + J_I without D_I), and the moved mass m + m_B + m_c and the
+    forces, which do not depend on D."""
+    gravity, friction = incline_forces(
+        mass_kg=belt.mass_kg,
+        counterweight_kg=belt.counterweight_kg,
+        friction_coefficient=belt.friction_coefficient,
+        friction_force_n=belt.friction_force_n,
+        incline_deg=belt.incline_deg,
+        g=g,
+    )
+    pulley, idler, idler_d = (
+        belt.pulley_inertia_kgm2,
+        belt.idler_inertia_kgm2,
+        belt.idler_diameter_m,
+    )
+
+    def rotating(diameters: FloatArray) -> FloatArray:
+        if idler_d is None:
+            return np.full(diameters.shape, pulley + idler)
+        return pulley + idler * squares(diameters / idler_d)  # as _reflected_roller
+
+    return LinearLaw(
+        radius_m=half,
+        rotating_inertia_kgm2=rotating,
         moving_mass_kg=belt.mass_kg + belt.belt_mass_kg + belt.counterweight_kg,
-        gravity_force_n=(belt.mass_kg * sin_t - belt.counterweight_kg) * g,
-        friction_force_n=belt.friction_coefficient * belt.mass_kg * g * cos_t
-        + belt.friction_force_n,
+        gravity_force_n=gravity,
+        friction_force_n=friction,
         efficiency=belt.efficiency,
     )

@@ -5,6 +5,8 @@ reflected mass, force and weight on an incline (first principles, see the packag
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any, overload
 
 import numpy as np
@@ -125,23 +127,64 @@ def _linear_axis(
     )
 
 
-def linear_axis_columns(
-    radius_m: FloatArray,
+def half(diameter_m: Any) -> Any:
+    """r = d/2 of a diameter [m] (a float, or an array of many)."""
+    return diameter_m / 2
+
+
+def incline_forces(
     *,
-    rotating_inertia_kgm2: float,
-    moving_mass_kg: float,
-    gravity_force_n: float,
+    mass_kg: float,
+    counterweight_kg: float,
+    friction_coefficient: float,
     friction_force_n: float,
-) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
-    """:func:`_linear_axis` at many radii r at once: n per mm/s = 1/(1000·r·2π/60),
-    J_L = J_rot + m_moving·r², T_G = F_G·r and T_F = F_F·r as columns, the same
-    operations in the same order (r² as Python's ``**``, the C library's pow, which
-    numpy's x·x may not match in the last bit). Not checked: the caller sees to r and the
-    results being finite and r² not vanishing, where :func:`_linear_axis` raises."""
+    incline_deg: float,
+    g: float,
+) -> tuple[float, float]:
+    """The weight's force (m·sin θ − m_c)·g and the friction force μ·m·g·cos θ + F_F [N]
+    of a mass m moved on an incline θ, with a counterweight m_c, by a screw, a pinion or a
+    belt (first principles, module doc)."""
+    sin_t, cos_t = _sin_cos(incline_deg)
+    return (
+        (mass_kg * sin_t - counterweight_kg) * g,
+        friction_coefficient * mass_kg * g * cos_t + friction_force_n,
+    )
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class LinearLaw:
+    """A linear axis (:func:`_linear_axis`) as a function of its free length L [m] (a
+    screw's lead, a pinion's or a pulley's diameter): r and the rotating parts' J of L,
+    as its mechanism computes them, on an array of many L; the rest does not depend on
+    L."""
+
+    radius_m: Callable[[FloatArray], FloatArray]
+    rotating_inertia_kgm2: Callable[[FloatArray], FloatArray]
+    moving_mass_kg: float
+    gravity_force_n: float
+    friction_force_n: float
+    efficiency: float
+
+
+def linear_axis_columns(
+    law: LinearLaw, lengths_m: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
+    """r and :func:`_linear_axis` at many lengths L at once (``law``): n per mm/s =
+    1/(1000·r·2π/60), J_L = J_rot + m_moving·r², T_G = F_G·r and T_F = F_F·r as columns,
+    the same operations in the same order (r² as Python's ``**``, the C library's pow,
+    which numpy's x·x does not match in the last bit for ~0.08 % of values). Not
+    checked: the caller sees to the results being finite and r² not vanishing, where
+    :func:`_linear_axis` raises."""
     with np.errstate(all="ignore"):
+        radius_m = law.radius_m(lengths_m)
         speed = 1.0 / (MM_PER_M * radius_m * RAD_PER_S_PER_RPM)
-        square = np.array([_square(r) for r in radius_m.tolist()], dtype=np.float64)
-        inertia = rotating_inertia_kgm2 + moving_mass_kg * square
-        gravity = gravity_force_n * radius_m
-        friction = friction_force_n * radius_m
-    return speed, inertia, gravity, friction
+        inertia = law.rotating_inertia_kgm2(lengths_m) + law.moving_mass_kg * squares(radius_m)
+        gravity = law.gravity_force_n * radius_m
+        friction = law.friction_force_n * radius_m
+    return radius_m, speed, inertia, gravity, friction
+
+
+def squares(values: FloatArray) -> FloatArray:
+    """x² of each value as :func:`~actuator_selection.sizing.loads._square` computes it
+    (Python's ``**``, +∞ where it overflows)."""
+    return np.array([_square(x) for x in values.tolist()], dtype=np.float64)

@@ -4,15 +4,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from actuator_selection.phrases.messages import N_
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.loads import STANDARD_GRAVITY_M_PER_S2, _check
 from actuator_selection.sizing.mechanisms.linear import (
+    LinearLaw,
     _check_efficiency,
     _check_incline,
     _linear_axis,
     _nonnegative,
-    _sin_cos,
+    half,
+    incline_forces,
 )
 
 
@@ -76,14 +80,35 @@ def rack_pinion_axis(rack: RackPinion, *, g: float = STANDARD_GRAVITY_M_PER_S2) 
     >>> round(axis.friction_torque_nm, 4), round(axis.inertia_kgm2, 4), axis.gravity_torque_nm
     (3.924, 0.322, 0.0)
     """
-    sin_t, cos_t = _sin_cos(rack.incline_deg)
+    law = rack_pinion_law(rack, g=g)
     return _linear_axis(
-        radius_m=rack.pinion_diameter_m / 2,
+        radius_m=half(rack.pinion_diameter_m),
         radius_field="pinion_diameter_m",
         rotating_inertia_kgm2=rack.pinion_inertia_kgm2,
+        moving_mass_kg=law.moving_mass_kg,
+        gravity_force_n=law.gravity_force_n,
+        friction_force_n=law.friction_force_n,
+        efficiency=rack.efficiency,
+    )
+
+
+def rack_pinion_law(rack: RackPinion, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> LinearLaw:
+    """:func:`rack_pinion_axis` as a function of the pinion's diameter d: r = d/2, J_P,
+    and the moved mass m + m_c and the forces, which do not depend on d."""
+    gravity, friction = incline_forces(
+        mass_kg=rack.mass_kg,
+        counterweight_kg=rack.counterweight_kg,
+        friction_coefficient=rack.friction_coefficient,
+        friction_force_n=rack.friction_force_n,
+        incline_deg=rack.incline_deg,
+        g=g,
+    )
+    inertia = rack.pinion_inertia_kgm2
+    return LinearLaw(
+        radius_m=half,
+        rotating_inertia_kgm2=lambda diameters: np.full(diameters.shape, inertia),
         moving_mass_kg=rack.mass_kg + rack.counterweight_kg,
-        gravity_force_n=(rack.mass_kg * sin_t - rack.counterweight_kg) * g,
-        friction_force_n=rack.friction_coefficient * rack.mass_kg * g * cos_t
-        + rack.friction_force_n,
+        gravity_force_n=gravity,
+        friction_force_n=friction,
         efficiency=rack.efficiency,
     )

@@ -1,8 +1,9 @@
-"""The ratio study's load cases at many leads of a ball screw (issue 31 part 1,
-:mod:`actuator_selection.sizing.ratio`): :func:`screw_cases`, the cases a selection
-builds at each lead (an axis, a trapezoid of segments, their pieces by the power flow)
-as the engine's columns, no application built per value, as
-:func:`~actuator_selection.sizing.ratio_cases.geared_cases` does for an external ratio."""
+"""The ratio study's load cases at many leads of a screw or diameters of a pinion or a
+belt's pulley (issue 31 part 1, :mod:`actuator_selection.sizing.ratio`):
+:func:`linear_cases`, the cases a selection builds at each value (an axis, a trapezoid
+of segments, their pieces by the power flow) as the engine's columns, no application
+built per value, as :func:`~actuator_selection.sizing.ratio_cases.geared_cases` does for
+an external ratio."""
 
 from __future__ import annotations
 
@@ -14,12 +15,7 @@ import numpy as np
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import REQUEST_FIELDS, Cases, cases_of
-from actuator_selection.sizing.mechanisms.ball_screw import (
-    InclinedBallScrew,
-    inclined_ball_screw_forces,
-    screw_radius_m,
-)
-from actuator_selection.sizing.mechanisms.linear import linear_axis_columns, mm_to_m
+from actuator_selection.sizing.mechanisms.linear import LinearLaw, linear_axis_columns, mm_to_m
 from actuator_selection.sizing.motion import PieceArrays, cycle_figures
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
 
@@ -27,15 +23,15 @@ _DROP = REQUEST_FIELDS.index("drop_torque_nm")
 _TRAVEL = REQUEST_FIELDS.index("travel_mm_per_rad")
 
 
-def screw_cases(
+def linear_cases(
     base: Application,
-    screw: InclinedBallScrew,
+    law: LinearLaw,
     speed_mm_per_s: float,
     vary: Callable[[float], Application],
 ) -> Callable[[FloatArray], Cases] | None:
-    """The cases of ``vary`` (``base``, the request's own load case, with the screw's lead
-    P in mm set to each value) at many leads at once: the axis of
-    :func:`~actuator_selection.sizing.mechanisms.inclined_ball_screw_axis` at r = P/2π
+    """The cases of ``vary`` (``base``, the request's own load case, with the mechanism's
+    free length L in mm, a screw's lead or a pinion's or pulley's diameter, set to each
+    value) at many values at once: the axis of ``law`` at each L
     (:func:`~actuator_selection.sizing.mechanisms.linear.linear_axis_columns`), the
     trapezoid's speed v·n-per-mm/s, its four pieces as
     :func:`~actuator_selection.sizing.motion.segments.pieces_of` makes them (constant
@@ -45,28 +41,20 @@ def screw_cases(
     test compares them). Where a value would make a selection refuse the case (r² or a
     result not finite, a speed of 0) the cases are built by ``vary`` value by value, which
     raises as a selection does. None where ``base``'s cycle is not the chapter's
-    trapezoid of a screw without a transmission or process loads."""
+    trapezoid (no process loads, no jerk)."""
     motion = base.motion
     if motion is None or not _trapezoid(base):
         return None
     segments = motion.segments
     durations = [s.duration_s for s in segments]
-    moving_mass, gravity_force, friction_force = inclined_ball_screw_forces(screw)
-    eta = screw.efficiency
+    eta = law.efficiency
     first = cases_of([base])
 
     def by_value(values: FloatArray) -> Cases:
         return cases_of([vary(float(x)) for x in values])
 
-    def at(leads: FloatArray) -> Cases:
-        radius = screw_radius_m(mm_to_m(leads))
-        speed_factor, inertia, gravity, friction = linear_axis_columns(
-            radius,
-            rotating_inertia_kgm2=screw.screw_inertia_kgm2,
-            moving_mass_kg=moving_mass,
-            gravity_force_n=gravity_force,
-            friction_force_n=friction_force,
-        )
+    def at(values: FloatArray) -> Cases:
+        radius, speed_factor, inertia, gravity, friction = linear_axis_columns(law, mm_to_m(values))
         with np.errstate(all="ignore"):
             speed = speed_mm_per_s * speed_factor
             travel = 60.0 / (2.0 * math.pi * speed_factor)
@@ -76,9 +64,9 @@ def screw_cases(
             and all(np.isfinite(c).all() for c in checked)
             and np.all(speed > 0)
         ):
-            return by_value(leads)
+            return by_value(values)
         pieces = _pieces(durations, speed, inertia, gravity, friction, eta)
-        rows = leads.size
+        rows = values.size
         index = np.zeros(rows, dtype=np.intp)
         requests = first.requests[index]
         requests[:, _DROP] = np.abs(gravity)
