@@ -9,6 +9,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+import numpy.typing as npt
+
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.phrases.messages import N_, Text
 from actuator_selection.sizing.cycle import Load
@@ -31,6 +34,13 @@ def _square(x: float) -> float:
         return x**2
     except OverflowError:
         return math.inf
+
+
+def squares(values: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """x² of each value as :func:`_square` computes it (Python's ``**``, +∞ where it
+    overflows), for the load cases built as columns (the ratio study): numpy's x·x
+    differs from it in the last bit for about 0.08 % of values."""
+    return np.array([_square(x) for x in values.tolist()], dtype=np.float64)
 
 
 def _check_result(field: str, value: float, *, what: str) -> None:

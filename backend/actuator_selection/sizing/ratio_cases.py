@@ -14,7 +14,7 @@ from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import Cases, cases_of
-from actuator_selection.sizing.loads import _square
+from actuator_selection.sizing.loads import _square, squares
 from actuator_selection.sizing.mechanisms import Transmission, with_transmission
 from actuator_selection.sizing.motion import (
     Motion,
@@ -93,7 +93,7 @@ def geared_cases(
         def repeated(value: float) -> FloatArray:
             return np.full(ratios.size, value)
 
-        inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
+        inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / squares(ratios)
         pieces = trapezoid_piece_arrays(
             speed_rpm=pattern.speed_rpm * ratios,
             accel_s=repeated(pattern.accel_s),
@@ -239,7 +239,7 @@ class GearedBounds:
     ) -> None:
         with np.errstate(all="ignore"):
             static = load.torque_nm / ratios
-            inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / (ratios * ratios)
+            inertia = transmission_inertia_kgm2 + load.inertia_kgm2 / squares(ratios)
             speed = pattern.speed_rpm * ratios
             accel = speed * RAD_PER_S_PER_RPM / pattern.accel_s
             decel = -speed * RAD_PER_S_PER_RPM / pattern.decel_s

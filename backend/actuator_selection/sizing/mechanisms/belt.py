@@ -13,6 +13,7 @@ from actuator_selection.sizing.loads import (
     _check,
     _check_result,
     _square,
+    squares,
 )
 from actuator_selection.sizing.mechanisms.linear import (
     FloatArray,
@@ -23,7 +24,6 @@ from actuator_selection.sizing.mechanisms.linear import (
     _nonnegative,
     half,
     incline_forces,
-    squares,
 )
 
 

@@ -15,7 +15,7 @@ import numpy.typing as npt
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.phrases.messages import N_, Text
 from actuator_selection.sizing.axis import AxisLoad
-from actuator_selection.sizing.loads import _check, _check_result, _square
+from actuator_selection.sizing.loads import _check, _check_result, _square, squares
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
 
 FloatArray = npt.NDArray[np.float64]
@@ -182,9 +182,3 @@ def linear_axis_columns(
         gravity = law.gravity_force_n * radius_m
         friction = law.friction_force_n * radius_m
     return radius_m, speed, inertia, gravity, friction
-
-
-def squares(values: FloatArray) -> FloatArray:
-    """x² of each value as :func:`~actuator_selection.sizing.loads._square` computes it
-    (Python's ``**``, +∞ where it overflows)."""
-    return np.array([_square(x) for x in values.tolist()], dtype=np.float64)
