@@ -93,53 +93,50 @@ class _HeatingGains:
     assumed). The gains are computed with ``math.expm1`` on Python floats
     (:func:`~actuator_selection.sizing.motion.heating_gain`), as Python's floats
     compute them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
-    the distinct τ_th values are computed: the case's, and each published one.
+    the distinct τ_th values are computed: the case's, and each published one (the
+    catalogue's :attr:`~CatalogueArrays.published_taus`, found once per catalogue).
     """
 
     def __init__(self, cat: CatalogueArrays, cases: Cases) -> None:
-        published = cat.thermal_time_constant
-        known = ~np.isnan(published)
-        # The distinct published τ_th, sorted, and each actuator's place among them (at
-        # once: one Python step per actuator cost more than the heating at 64,000).
-        distinct, where = np.unique(published[known], return_inverse=True)
-        values = distinct.tolist()
-        # Per case, gains for its own τ_th (column 0) and each published τ_th (1, 2, …).
-        taus = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
-        gains = [_case_gains(cases.pieces.duration, cases.figures.cycle_s, tau) for tau in taus]
-        self._pieces = np.array([piece for piece, _ in gains], dtype=np.float64).reshape(
-            len(taus), cases.size, cases.pieces.duration.shape[1]
-        )
-        self._cycle = np.array([cycle for _, cycle in gains], dtype=np.float64).reshape(
-            len(taus), cases.size
-        )
-        self._index = np.zeros(published.shape, dtype=np.intp)
-        self._index[known] = where.ravel() + 1
+        values = cat.published_taus
+        durations, cycles = cases.pieces.duration, cases.figures.cycle_s
+        count = durations.shape[1]
+        if cases.size == 1:  # one case (a selection's): its few gains straight from floats
+            row, cycle = durations[0].tolist(), float(cycles[0])
+            taus = [float(cases.thermal_time_constant[0]), *values]
+            pieces = np.array([_gains(row, tau) for tau in taus], dtype=np.float64)
+            whole = np.array([heating_gain(cycle, tau) for tau in taus], dtype=np.float64)
+        else:  # per case, gains for its own τ_th (row 0) and each published τ_th (1, 2, …)
+            columns = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
+            gains = [_case_gains(durations, cycles, tau) for tau in columns]
+            pieces = np.array([piece for piece, _ in gains], dtype=np.float64)
+            whole = np.array([cycle for _, cycle in gains], dtype=np.float64)
+        self._pieces = pieces.reshape(len(values) + 1, cases.size, count)
+        self._cycle = whole.reshape(len(values) + 1, cases.size)
+        self._index = cat.tau_column
         self._mixed = bool(values)
-        shape = (cases.size, published.size)
         case_tau = cases.thermal_time_constant[:, np.newaxis]
-        self.time_constant: FloatArray = np.where(np.isnan(published), case_tau, published)
-        self.assumed: BoolArray = np.isnan(published) & cases.thermal_assumed[:, np.newaxis]
-        self._shape = shape
-        # Each piece's gains picked once: the heating's two passes and the speed's read them.
-        self._piece = [
-            self._pick(self._pieces[:, :, k]) for k in range(cases.pieces.duration.shape[1])
-        ]
-
-    def _pick(self, table: FloatArray) -> FloatArray:
-        """Cases × actuators from a (τ_th columns × cases) table; where no actuator
-        publishes τ_th, cases × 1 (broadcast by the arithmetic that uses it)."""
-        if not self._mixed:
-            column: FloatArray = table[0][:, np.newaxis]
-            return column
-        return table[self._index].T
+        unpublished = cat.tau_unpublished
+        self.time_constant: FloatArray = np.where(unpublished, case_tau, cat.thermal_time_constant)
+        self.assumed: BoolArray = unpublished & cases.thermal_assumed[:, np.newaxis]
+        # Each piece's gains, cases × pieces × actuators (× 1 where no actuator publishes
+        # τ_th), picked once: the heating's two passes and the speed's read them.
+        if self._mixed:
+            self._piece: FloatArray = self._pieces[self._index].transpose(1, 2, 0)
+        else:
+            self._piece = self._pieces[0][:, :, np.newaxis]
 
     def piece(self, k: int) -> FloatArray:
-        """The gains of piece ``k``, cases × actuators."""
-        return self._piece[k]
+        """The gains of piece ``k``, cases × actuators (or cases × 1)."""
+        gains: FloatArray = self._piece[:, k]
+        return gains
 
     def cycle(self) -> FloatArray:
-        """The gains of the whole cycle, cases × actuators."""
-        return self._pick(self._cycle)
+        """The gains of the whole cycle, cases × actuators (or cases × 1)."""
+        if not self._mixed:
+            column: FloatArray = self._cycle[0][:, np.newaxis]
+            return column
+        return self._cycle[self._index].T
 
 
 def _gains(durations: list[float], tau: float) -> list[float]:
@@ -183,44 +180,77 @@ def _case_gains(
     return pieces.reshape(len(rows), durations.shape[1])[where], cycle[where]
 
 
+def _spread(row: FloatArray) -> FloatArray:
+    """A catalogue's values (actuators, or a column of pairs: :mod:`~actuator_selection.
+    sizing.engine.pairs`) as they broadcast against cases × pieces × actuators."""
+    return row[:, np.newaxis, :] if row.ndim == 2 else row
+
+
 def _piece_torques(
-    cat: CatalogueArrays, p: PieceArrays, k: int
-) -> tuple[tuple[FloatArray, ...], FloatArray]:
-    """The torques at the ends of piece ``k``, T = c + (J_A + J)·α (one array where the
-    acceleration is constant along the piece in every case: a trapezoid's pieces), and
-    the mean of T² over the piece (:meth:`~actuator_selection.sizing.motion.Profile.
-    thermal_torque_nm`): T_a² where the torque is constant, else (T_a² + T_a·T_b + T_b²)/3.
+    cat: CatalogueArrays, p: PieceArrays, pieces: slice
+) -> tuple[FloatArray, FloatArray]:
+    """The torques at the ends of the pieces ``pieces``, T = c + (J_A + J)·α, cases ×
+    ends × actuators in the pieces' order (each piece's start, then its end; the starts
+    only where the acceleration is constant along every piece in every case: a
+    trapezoid's), and the mean of T² over each piece, cases × pieces × actuators
+    (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm`): T_a² where the
+    torque is constant, else (T_a² + T_a·T_b + T_b²)/3.
 
     Where α is constant the end torque equals the start torque (at most the sign of a
-    zero differs), so it is not computed: it could not be of larger magnitude."""
+    zero differs): it cannot be of larger magnitude, so it changes no extreme."""
     col = np.newaxis
-    inertia = cat.inertia + p.inertia[:, k, col]
-    static = p.static[:, k, col]
-    t0 = static + inertia * p.accel_start[:, k, col]
-    constant = p.accel_start[:, k] == p.accel_end[:, k]
+    accel_start, accel_end = p.accel_start[:, pieces], p.accel_end[:, pieces]
+    static = p.static[:, pieces, col]
+    inertia = _spread(cat.inertia) + p.inertia[:, pieces, col]
+    t0 = static + inertia * accel_start[:, :, col]
+    constant = accel_start == accel_end
     if constant.all():
-        return (t0,), t0 * t0
-    t1 = static + inertia * p.accel_end[:, k, col]
-    square = np.where(constant[:, col], t0 * t0, (t0 * t0 + t0 * t1 + t1 * t1) / 3.0)
-    return (t0, t1), square
-
-
-def _piece_speeds(p: PieceArrays) -> list[FloatArray]:
-    """Each piece's mean |n| (a column of cases), computed once per block for the
-    heating (:func:`_heating_square`) and the heating's speed (:func:`_thermal_speed`):
-    for every piece at once (the same operations on each element as piece by piece, in
-    a sixth of the numpy calls), then a column per piece."""
-    speed = mean_abs_speed_rpm(p.duration, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end)
-    return [speed[:, k, np.newaxis] for k in range(p.duration.shape[1])]
+        return t0, t0 * t0
+    t1 = static + inertia * accel_end[:, :, col]
+    square = np.where(constant[:, :, col], t0 * t0, (t0 * t0 + t0 * t1 + t1 * t1) / 3.0)
+    ends = np.stack((t0, t1), axis=2).reshape(t0.shape[0], -1, t0.shape[2])
+    return ends, square
 
 
 def _heating_square(cat: CatalogueArrays, speed: FloatArray, square: FloatArray) -> FloatArray:
-    """The mean T² of piece ``k`` as the winding's heating counts it
+    """The mean T² of each piece as the winding's heating counts it
     (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm` with its
     ``no_load_slope``): (√m + k_T·K_INL·|n̄|)² where :attr:`CatalogueArrays.heating_slope`
-    is published, else m; ``speed`` the piece's mean |n| (:func:`_piece_speeds`)."""
-    torque = np.sqrt(square) + cat.heating_slope * speed
-    return np.where(np.isnan(cat.heating_slope), square, torque * torque)
+    is published, else m; ``speed`` the pieces' mean |n|, cases × pieces × 1."""
+    slope = _spread(cat.heating_slope)
+    torque = np.sqrt(square) + slope * speed
+    return np.where(np.isnan(slope), square, torque * torque)
+
+
+def _added_in_order(total: Any, terms: FloatArray) -> FloatArray:
+    """``total`` plus the pieces' ``terms`` (cases × pieces × …, overwritten), added one
+    piece after the other as a loop adds them: a cumulative sum along the pieces, whose
+    last is the sum (``np.add.reduce`` may add pairwise: another rounding)."""
+    np.add(total, terms[:, 0], out=terms[:, 0])
+    total_in_order: FloatArray = np.add.accumulate(terms, axis=1)[:, -1]
+    return total_in_order
+
+
+def _extremes(
+    found: FloatArray, found_abs: FloatArray, ends: FloatArray, counts: BoolArray
+) -> tuple[FloatArray, FloatArray]:
+    """T_1, T_2, T_3 (``found``, extremes × cases × actuators, their magnitudes
+    ``found_abs``, −1 where none yet) updated with the torques ``ends`` (cases × ends ×
+    actuators, in the pieces' order) where ``counts`` (extremes × cases × ends × 1: a
+    driving, a steady, a braking piece's end): the signed torque of largest magnitude,
+    the first one on a tie (``argmax``; a NaN counts for none), for every extreme at
+    once."""
+    magnitude = np.abs(ends)
+    candidates = np.where(counts & (magnitude >= 0.0), magnitude, -1.0)
+    at = candidates.argmax(axis=2)[:, :, np.newaxis]
+    largest = np.take_along_axis(candidates, at, axis=2)[:, :, 0]
+    torque = np.take_along_axis(ends[np.newaxis], at, axis=2)[:, :, 0]
+    take = largest > found_abs
+    return np.where(take, torque, found), np.where(take, largest, found_abs)
+
+
+_NO_EXTREME = np.array([0.0, math.nan, 0.0])[:, np.newaxis, np.newaxis]
+"""T_1, T_2, T_3 where no piece counts: 0, NaN (no constant-speed piece), 0."""
 
 
 def _thermal_torque(
@@ -230,11 +260,12 @@ def _thermal_torque(
     heat: FloatArray,
     energy: FloatArray,
     squares: list[FloatArray] | None,
-    speeds: list[FloatArray],
+    group: int,
 ) -> FloatArray:
     """:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm` on arrays: the
     periodic start x_0 = B/(1 − A) from the first pass's ``heat`` (B), then the peak of x
-    over the pieces' ends, the torques recomputed piece by piece as in the first pass."""
+    over the pieces' ends; the pieces' mean T² as in the first pass (``squares``, a
+    table per ``group`` of pieces), recomputed group by group where not kept."""
     col = np.newaxis
     p = cases.pieces
     cycle_gain = gains.cycle()
@@ -243,33 +274,49 @@ def _thermal_torque(
         cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), energy / cycle_s
     )
     peak = heat = start
-    on_current = not np.isnan(cat.heating_slope).all()
-    for k in range(p.duration.shape[1]):
+    count = p.duration.shape[1]
+    for g, first in enumerate(range(0, count, group)):
+        pieces = slice(first, first + group)
         if squares is None:
-            square = _piece_torques(cat, p, k)[1]
-            if on_current:
-                square = _heating_square(cat, speeds[k], square)
+            square = _piece_torques(cat, p, pieces)[1]
+            if cat.on_current:
+                square = _heating_square(cat, _mean_speeds(p, pieces), square)
         else:
-            square = squares[k]
-        heat = heat + (square - heat) * gains.piece(k)
-        peak = np.where(heat > peak, heat, peak)
+            square = squares[g]
+        for j in range(square.shape[1]):
+            heat = heat + (square[:, j] - heat) * gains.piece(first + j)
+            peak = np.where(heat > peak, heat, peak)
     return np.sqrt(peak)
 
 
-def _thermal_speed(cases: Cases, gains: _HeatingGains, speeds: list[FloatArray]) -> FloatArray:
+def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
+    """The pieces' mean |n| (:func:`~actuator_selection.sizing.motion.mean_abs_speed_rpm`),
+    cases × pieces × 1: every piece at once, the same operations on each element."""
+    speed: FloatArray = mean_abs_speed_rpm(
+        p.duration[:, pieces],
+        p.start_rpm[:, pieces],
+        p.end_rpm[:, pieces],
+        p.accel_start[:, pieces],
+        p.accel_end[:, pieces],
+    )
+    return speed[:, :, np.newaxis]
+
+
+def _thermal_speed(cases: Cases, gains: _HeatingGains, speeds: FloatArray) -> FloatArray:
     """:meth:`~actuator_selection.sizing.motion.Profile.thermal_speed_rpm` on arrays: each
-    piece's mean |n| (a column of cases), the periodic start y_0 = B/(1 − A), the peak of
-    y over the pieces' ends, never below n_av; cases × actuators (or cases × 1 where no
-    actuator publishes τ_th)."""
+    piece's mean |n| (``speeds``, cases × pieces × 1), the periodic start y_0 =
+    B/(1 − A), the peak of y over the pieces' ends, never below n_av; cases × actuators
+    (or cases × 1 where no actuator publishes τ_th)."""
     mean = cases.figures.mean_speed_rpm[:, np.newaxis]
     heat: FloatArray = np.zeros_like(mean)
-    for k, speed in enumerate(speeds):
-        heat = heat + (speed - heat) * gains.piece(k)
+    count = speeds.shape[1]
+    for k in range(count):
+        heat = heat + (speeds[:, k] - heat) * gains.piece(k)
     cycle_gain = gains.cycle()
     start = np.where(cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), mean)
     peak = heat = start
-    for k, speed in enumerate(speeds):
-        heat = heat + (speed - heat) * gains.piece(k)
+    for k in range(count):
+        heat = heat + (speeds[:, k] - heat) * gains.piece(k)
         peak = np.where(heat > peak, heat, peak)
     return np.where(peak > mean, peak, mean)
 
@@ -288,80 +335,71 @@ def evaluate_block(
     computed: a search that reads verdicts and utilisations only).
 
     The torques are :meth:`~actuator_selection.sizing.motion.Profile.torques` on arrays,
-    piece by piece: T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in
-    order, T_1, T_2, T_3 the signed torques of largest magnitude (the first one on a tie).
+    for a group of pieces at once (cases × pieces × actuators; as many pieces as keep a
+    group within :data:`_BLOCK_CELLS`, at most :data:`_KEPT_PIECES`: a small block's
+    whole cycle in one group, so that its numpy calls do not grow with its pieces):
+    T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in the pieces' order,
+    T_1, T_2, T_3 the signed torques of largest magnitude (the first one on a tie).
     """
     col = np.newaxis
     p = cases.pieces
     # cases × actuators; cases × 1 where the catalogue is a column of pairs (engine.pairs)
     shape = (cases.size, cat.inertia.shape[-1])
+    count = p.duration.shape[1]
+    group = max(1, min(_KEPT_PIECES, _BLOCK_CELLS // max(1, shape[0] * shape[1])))
     gains = _HeatingGains(cat, cases)
-    energy = np.zeros(shape)
-    heat = np.zeros(shape)
     # The heating counts the winding current where the catalogue allows (_heating_square).
-    on_current = not np.isnan(cat.heating_slope).all()
-    heat_energy = np.zeros(shape) if on_current else energy
-    # Each piece's mean T², kept for the second pass where the cycle has few pieces (else
+    on_current = cat.on_current
+    energy: Any = 0.0
+    heat_energy: Any = 0.0
+    heat: Any = 0.0
+    # Each group's mean T², kept for the second pass where the cycle has few pieces (else
     # recomputed there, so that memory stays bounded).
-    squares: list[FloatArray] | None = [] if p.duration.shape[1] <= _KEPT_PIECES else None
-    accel, accel_abs = np.zeros(shape), np.full(shape, -1.0)
-    decel, decel_abs = np.zeros(shape), np.full(shape, -1.0)
-    constant, constant_abs = np.full(shape, math.nan), np.full(shape, -1.0)
+    squares: list[FloatArray] | None = [] if count <= _KEPT_PIECES else None
+    found = np.broadcast_to(_NO_EXTREME, (3, *shape))  # T_1, T_2, T_3
+    found_abs = np.broadcast_to(-1.0, (3, *shape))
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
-    cube, weight = np.zeros(shape), np.zeros(cases.size)
-    # Which extremes each piece can change (a piece brakes, or not, in every case of a
-    # trapezoid): an update where no case takes part changes nothing. Per piece: whether
-    # any case brakes, any drives, any runs steadily (three calls for all the pieces).
-    brakes: list[bool] = np.asarray(p.braking.any(axis=0)).tolist()
-    drives: list[bool] = np.asarray(~p.braking.all(axis=0)).tolist()
-    runs: list[bool] = np.asarray(p.constant_speed.any(axis=0)).tolist()
-    changes = list(zip(brakes, drives, runs, strict=True))
+    cube: Any = 0.0
+    weight: Any = 0.0
+    # Which extremes each piece's torques count for: driving, steady, braking.
+    counting = np.stack((~p.braking, p.constant_speed, p.braking))[..., col]
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
-        speeds = _piece_speeds(p)  # each piece's mean |n|, for the heating
-        for k in range(p.duration.shape[1]):
-            torques, square = _piece_torques(cat, p, k)
-            # ∫T² dt of the piece: its mean T² times its duration, in the pieces' order.
-            energy = energy + square * p.duration[:, k, col]
+        speeds = _mean_speeds(p)  # each piece's mean |n|, for the heating
+        for first in range(0, count, group):
+            pieces = slice(first, first + group)
+            ends, square = _piece_torques(cat, p, pieces)
+            duration = p.duration[:, pieces]
+            # ∫T² dt of the pieces: each one's mean T² times its duration, in order.
+            energy = _added_in_order(energy, square * duration[:, :, col])
             if on_current:
-                square = _heating_square(cat, speeds[k], square)
-                heat_energy = heat_energy + square * p.duration[:, k, col]
+                square = _heating_square(cat, speeds[:, pieces], square)
+                heat_energy = _added_in_order(heat_energy, square * duration[:, :, col])
             else:
                 heat_energy = energy
-            heat = heat + (square - heat) * gains.piece(k)
+            for j in range(square.shape[1]):
+                heat = heat + (square[:, j] - heat) * gains.piece(first + j)
             if squares is not None:
                 squares.append(square)
-            braking = p.braking[:, k, col]
-            steady = p.constant_speed[:, k, col]
-            piece_brakes, piece_drives, piece_runs = changes[k]
+            counts = counting[:, :, pieces]
+            if ends.shape[1] > square.shape[1]:  # a start and an end per piece
+                counts = counts.repeat(2, axis=2)
+            found, found_abs = _extremes(found, found_abs, ends, counts)
             if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
-                w = (np.abs(p.start_rpm[:, k]) + np.abs(p.end_rpm[:, k])) / 2.0 * p.duration[:, k]
-                largest = np.abs(torques[0])
-                if len(torques) > 1:
-                    largest = np.maximum(largest, np.abs(torques[1]))
-                cube = cube + w[:, col] * (largest * largest * largest)
-                weight = weight + w
-            for torque in torques:
-                magnitude = np.abs(torque)
-                if piece_brakes:
-                    take = braking & (magnitude > decel_abs)
-                    decel = np.where(take, torque, decel)
-                    decel_abs = np.where(take, magnitude, decel_abs)
-                if piece_drives:
-                    take = ~braking & (magnitude > accel_abs)
-                    accel = np.where(take, torque, accel)
-                    accel_abs = np.where(take, magnitude, accel_abs)
-                if piece_runs:
-                    take = steady & (magnitude > constant_abs)
-                    constant = np.where(take, torque, constant)
-                    constant_abs = np.where(take, magnitude, constant_abs)
+                w = (np.abs(p.start_rpm[:, pieces]) + np.abs(p.end_rpm[:, pieces])) / 2.0 * duration
+                largest = np.abs(ends)
+                if ends.shape[1] > square.shape[1]:
+                    largest = np.maximum(largest[:, 0::2], largest[:, 1::2])
+                cube = _added_in_order(cube, w[:, :, col] * (largest * largest * largest))
+                weight = _added_in_order(weight, w.copy())
+        accel, constant, decel = found
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
-        gear_cube = cube / weight[:, col]
-        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares, speeds)
+        gear_cube = cube / weight[:, col] if averaged else np.full(shape, math.nan)
+        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares, group)
         thermal_speed = _thermal_speed(cases, gains, speeds)
-    unknown = np.isnan(cat.inertia)  # no J_A: no torques (the candidate's None)
     accel_torque, decel_torque, constant_torque = accel, decel, constant
-    if unknown.any():  # each array is of the block's shape: unchanged where J_A is known
+    if cat.inertia_unknown:  # no J_A: no torques (the candidate's None); each array is
+        unknown = np.isnan(cat.inertia)  # of the block's shape: unchanged where J_A is known
         accel_torque = np.where(unknown, math.nan, accel)
         decel_torque = np.where(unknown, math.nan, decel)
         rms_torque = np.where(unknown, math.nan, rms_torque)

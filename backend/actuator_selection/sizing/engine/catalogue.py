@@ -112,6 +112,33 @@ class CatalogueArrays:
     lacking: dict[tuple[Rule, ...], Lacking] = dataclasses_field(default_factory=dict)
     """Per rule set, where the catalogue misses its requirements (``codes.lacking``),
     filled when the rules are first evaluated against these actuators."""
+    published_taus: tuple[float, ...] = dataclasses_field(init=False)
+    """The distinct τ_th that the actuators publish, ascending."""
+    tau_column: IndexArray = dataclasses_field(init=False)
+    """Per actuator, its τ_th's place: 0 the case's (none published), k the k-th of
+    :attr:`published_taus`."""
+    tau_unpublished: BoolArray = dataclasses_field(init=False)
+    """Where no τ_th is published (the case's then)."""
+    on_current: bool = dataclasses_field(init=False)
+    """Whether any actuator's heating follows the winding current (:attr:`heating_slope`)."""
+    inertia_unknown: bool = dataclasses_field(init=False)
+    """Whether any actuator lacks J_A (its torques are NaN)."""
+
+    def __post_init__(self) -> None:
+        # Facts about the actuators the block reads for every request: worked out once
+        # with the arrays (the snapshot keeps them), not per block (np.unique, isnan).
+        published = self.thermal_time_constant
+        unpublished = np.isnan(published)
+        distinct, where = np.unique(published[~unpublished], return_inverse=True)
+        column = np.zeros(published.shape, dtype=np.intp)
+        column[~unpublished] = where.ravel() + 1
+        values: list[float] = distinct.tolist()
+        fixed = object.__setattr__
+        fixed(self, "published_taus", tuple(values))
+        fixed(self, "tau_column", column)
+        fixed(self, "tau_unpublished", unpublished)
+        fixed(self, "on_current", not bool(np.isnan(self.heating_slope).all()))
+        fixed(self, "inertia_unknown", bool(np.isnan(self.inertia).any()))
 
     @property
     def inertia(self) -> FloatArray:
