@@ -19,7 +19,7 @@ check with ``==``.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence, Sized
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence, Sized
 from dataclasses import dataclass
 from typing import Any
 
@@ -47,6 +47,10 @@ CHECK_NAMES = tuple(rule.name for rule in RULES)
 _KEPT_PIECES = 16
 """Cycles of up to this many pieces keep each piece's mean T² between the heating check's
 two passes (16 arrays of a block: 8 MiB); longer ones recompute it."""
+
+_STACKED_CELLS = 1 << 12
+"""Blocks of up to this many cells heat T² and |n| as one array (rather than |n| per
+case, cases × 1): half the numpy calls, where a call's fixed cost outweighs its work."""
 
 _BLOCK_CELLS = 1 << 16
 """Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
@@ -232,19 +236,22 @@ def _added_in_order(total: Any, terms: FloatArray) -> FloatArray:
 
 
 def _extremes(
-    found: FloatArray, found_abs: FloatArray, ends: FloatArray, counts: BoolArray
+    found: FloatArray | None, found_abs: FloatArray, ends: FloatArray, counts: BoolArray
 ) -> tuple[FloatArray, FloatArray]:
-    """T_1, T_2, T_3 (``found``, extremes × cases × actuators, their magnitudes
-    ``found_abs``, −1 where none yet) updated with the torques ``ends`` (cases × ends ×
-    actuators, in the pieces' order) where ``counts`` (extremes × cases × ends × 1: a
-    driving, a steady, a braking piece's end): the signed torque of largest magnitude,
-    the first one on a tie (``argmax``; a NaN counts for none), for every extreme at
-    once."""
+    """T_1, T_2, T_3 (``found``, extremes × cases × actuators, None before the first
+    group; their magnitudes ``found_abs``, −1 where none yet) updated with the torques
+    ``ends`` (cases × ends × actuators, in the pieces' order) where ``counts``
+    (extremes × cases × ends × 1: a driving, a steady, a braking piece's end): the signed
+    torque of largest magnitude, the first one on a tie (``argmax``; a NaN counts for
+    none), for every extreme at once."""
     magnitude = np.abs(ends)
     candidates = np.where(counts & (magnitude >= 0.0), magnitude, -1.0)
-    at = candidates.argmax(axis=2)[:, :, np.newaxis]
-    largest = np.take_along_axis(candidates, at, axis=2)[:, :, 0]
-    torque = np.take_along_axis(ends[np.newaxis], at, axis=2)[:, :, 0]
+    largest = candidates.max(axis=2)
+    # The torque at the first largest, by indexes (take_along_axis costs more in Python).
+    cases = np.arange(ends.shape[0])[:, np.newaxis]
+    torque = ends[cases, candidates.argmax(axis=2), np.arange(ends.shape[2])]
+    if found is None:  # the first group: nothing found before
+        return np.where(largest >= 0.0, torque, _NO_EXTREME), largest
     take = largest > found_abs
     return np.where(take, torque, found), np.where(take, largest, found_abs)
 
@@ -253,40 +260,48 @@ _NO_EXTREME = np.array([0.0, math.nan, 0.0])[:, np.newaxis, np.newaxis]
 """T_1, T_2, T_3 where no piece counts: 0, NaN (no constant-speed piece), 0."""
 
 
-def _thermal_torque(
-    cat: CatalogueArrays,
-    cases: Cases,
-    gains: _HeatingGains,
-    heat: FloatArray,
-    energy: FloatArray,
-    squares: list[FloatArray] | None,
-    group: int,
-) -> FloatArray:
-    """:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm` on arrays: the
-    periodic start x_0 = B/(1 − A) from the first pass's ``heat`` (B), then the peak of x
-    over the pieces' ends; the pieces' mean T² as in the first pass (``squares``, a
-    table per ``group`` of pieces), recomputed group by group where not kept."""
-    col = np.newaxis
-    p = cases.pieces
-    cycle_gain = gains.cycle()
-    cycle_s = cases.figures.cycle_s[:, col]
-    start = np.where(
-        cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), energy / cycle_s
-    )
-    peak = heat = start
-    count = p.duration.shape[1]
-    for g, first in enumerate(range(0, count, group)):
-        pieces = slice(first, first + group)
-        if squares is None:
-            square = _piece_torques(cat, p, pieces)[1]
-            if cat.on_current:
-                square = _heating_square(cat, _mean_speeds(p, pieces), square)
-        else:
-            square = squares[g]
-        for j in range(square.shape[1]):
-            heat = heat + (square[:, j] - heat) * gains.piece(first + j)
+def _heated_over(
+    heat: Any, sources: FloatArray, gains: _HeatingGains, first: int = 0, peak: Any = None
+) -> tuple[Any, Any]:
+    """The winding's heating over the pieces ``first``, ``first + 1``, … whose heat
+    sources are ``sources`` (… × cases × pieces × …): x ← x + (s − x)·g piece by piece
+    (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm`), and the peak
+    of x over the pieces' ends where ``peak`` is given (else None)."""
+    for j in range(sources.shape[-2]):
+        heat = heat + (sources[..., j, :] - heat) * gains.piece(first + j)
+        if peak is not None:
             peak = np.where(heat > peak, heat, peak)
-    return np.sqrt(peak)
+    return heat, peak
+
+
+def _periodic_peak(
+    heat: Any,
+    groups: Callable[[], Iterable[tuple[int, FloatArray]]],
+    gains: _HeatingGains,
+    fallback: Any,
+) -> Any:
+    """The peak of the heating over a repeating cycle: the periodic start x_0 = B/(1 − A)
+    from the first pass's ``heat`` (B; ``fallback`` where the cycle's gain is 0), then
+    a second pass over the pieces' heat sources (``groups``: (first piece, sources))."""
+    cycle_gain = gains.cycle()
+    start = np.where(cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), fallback)
+    peak = heat = start
+    for first, sources in groups():
+        heat, peak = _heated_over(heat, sources, gains, first, peak)
+    return peak
+
+
+def _regrouped(
+    cat: CatalogueArrays, p: PieceArrays, group: int
+) -> Iterator[tuple[int, FloatArray]]:
+    """Each ``group`` of pieces' mean T² as the heating counts it, recomputed (a long
+    cycle's, not kept between the heating's two passes)."""
+    for first in range(0, p.duration.shape[1], group):
+        pieces = slice(first, first + group)
+        square = _piece_torques(cat, p, pieces)[1]
+        if cat.on_current:
+            square = _heating_square(cat, _mean_speeds(p, pieces), square)
+        yield first, square
 
 
 def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
@@ -300,25 +315,6 @@ def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
         p.accel_end[:, pieces],
     )
     return speed[:, :, np.newaxis]
-
-
-def _thermal_speed(cases: Cases, gains: _HeatingGains, speeds: FloatArray) -> FloatArray:
-    """:meth:`~actuator_selection.sizing.motion.Profile.thermal_speed_rpm` on arrays: each
-    piece's mean |n| (``speeds``, cases × pieces × 1), the periodic start y_0 =
-    B/(1 − A), the peak of y over the pieces' ends, never below n_av; cases × actuators
-    (or cases × 1 where no actuator publishes τ_th)."""
-    mean = cases.figures.mean_speed_rpm[:, np.newaxis]
-    heat: FloatArray = np.zeros_like(mean)
-    count = speeds.shape[1]
-    for k in range(count):
-        heat = heat + (speeds[:, k] - heat) * gains.piece(k)
-    cycle_gain = gains.cycle()
-    start = np.where(cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), mean)
-    peak = heat = start
-    for k in range(count):
-        heat = heat + (speeds[:, k] - heat) * gains.piece(k)
-        peak = np.where(heat > peak, heat, peak)
-    return np.where(peak > mean, peak, mean)
 
 
 def evaluate_block(
@@ -356,8 +352,8 @@ def evaluate_block(
     # Each group's mean T², kept for the second pass where the cycle has few pieces (else
     # recomputed there, so that memory stays bounded).
     squares: list[FloatArray] | None = [] if count <= _KEPT_PIECES else None
-    found = np.broadcast_to(_NO_EXTREME, (3, *shape))  # T_1, T_2, T_3
-    found_abs = np.broadcast_to(-1.0, (3, *shape))
+    found: FloatArray | None = None  # T_1, T_2, T_3 (extremes × cases × actuators)
+    found_abs: FloatArray = _NO_EXTREME  # their magnitudes
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
     cube: Any = 0.0
@@ -377,9 +373,9 @@ def evaluate_block(
                 heat_energy = _added_in_order(heat_energy, square * duration[:, :, col])
             else:
                 heat_energy = energy
-            for j in range(square.shape[1]):
-                heat = heat + (square[:, j] - heat) * gains.piece(first + j)
-            if squares is not None:
+            if squares is None:  # a long cycle: its first heating pass group by group
+                heat, _ = _heated_over(heat, square, gains, first)
+            else:
                 squares.append(square)
             counts = counting[:, :, pieces]
             if ends.shape[1] > square.shape[1]:  # a start and an end per piece
@@ -392,11 +388,47 @@ def evaluate_block(
                     largest = np.maximum(largest[:, 0::2], largest[:, 1::2])
                 cube = _added_in_order(cube, w[:, :, col] * (largest * largest * largest))
                 weight = _added_in_order(weight, w.copy())
+        assert found is not None
         accel, constant, decel = found
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
         gear_cube = cube / weight[:, col] if averaged else np.full(shape, math.nan)
-        thermal_torque = _thermal_torque(cat, cases, gains, heat, heat_energy, squares, group)
-        thermal_speed = _thermal_speed(cases, gains, speeds)
+        # The heating's peaks (Profile.thermal_torque_nm, .thermal_speed_rpm): of T², and
+        # of |n| (at least n_av), over the repeating cycle.
+        mean = cases.figures.mean_speed_rpm[:, col]
+        torque_fallback = heat_energy / cases.figures.cycle_s[:, col]
+        if squares is None:  # the second pass recomputes each group's mean T²
+            torque_peak = _periodic_peak(
+                heat,
+                lambda: _regrouped(cat, p, group),
+                gains,
+                torque_fallback,
+            )
+        else:
+            square = squares[0] if len(squares) == 1 else np.concatenate(squares, axis=1)
+            if shape[0] * shape[1] <= _STACKED_CELLS:  # T² and |n| heated as one array
+                sources = np.empty((2, *square.shape))
+                sources[0], sources[1] = square, speeds
+                fallback = np.empty((2, *shape))
+                fallback[0], fallback[1] = torque_fallback, mean
+                torque_peak, speed_peak = _periodic_peak(
+                    _heated_over(0.0, sources, gains)[0],
+                    lambda: ((0, sources),),
+                    gains,
+                    fallback,
+                )
+            else:
+                torque_peak = _periodic_peak(
+                    _heated_over(0.0, square, gains)[0],
+                    lambda: ((0, square),),
+                    gains,
+                    torque_fallback,
+                )
+        if squares is None or shape[0] * shape[1] > _STACKED_CELLS:
+            speed_peak = _periodic_peak(
+                _heated_over(0.0, speeds, gains)[0], lambda: ((0, speeds),), gains, mean
+            )
+        thermal_torque = np.sqrt(torque_peak)
+        thermal_speed = np.where(speed_peak > mean, speed_peak, mean)
     accel_torque, decel_torque, constant_torque = accel, decel, constant
     if cat.inertia_unknown:  # no J_A: no torques (the candidate's None); each array is
         unknown = np.isnan(cat.inertia)  # of the block's shape: unchanged where J_A is known
