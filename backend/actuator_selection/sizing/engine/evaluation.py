@@ -160,6 +160,11 @@ def evaluate_batch(
     cases = cases_of(apps)
     limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))
+    ranges = blocks(actuators, apps)
+    if len(ranges) == 1:  # one block (a selection's): its arrays as they are
+        return _evaluation(
+            evaluate_block(cat, cases, limits_of_zones, rules, detail=True), cases, rules, cat
+        )
     accel, constant, decel, rms = (np.empty(shape) for _ in range(4))
     checks = (*shape, len(rules))
     statuses = np.empty(checks, dtype=np.int8)
@@ -168,7 +173,7 @@ def evaluate_batch(
     first_missing = np.empty(checks, dtype=np.int8)
     verdicts = np.empty(shape, dtype=np.int8)
     worst_overload = np.empty(shape)
-    for start, stop in blocks(actuators, apps):
+    for start, stop in ranges:
         rows = cases.rows(start, stop)
         block = evaluate_block(cat, rows, limits_of_zones[start:stop], rules, detail=True)
         reported = block.checks
@@ -184,10 +189,10 @@ def evaluate_batch(
         _put_checks(first_missing[start:stop], reported.first_missing)
         verdicts[start:stop] = block.verdicts()
         worst_overload[start:stop] = block.overload
-    return BatchEvaluation(
-        mean_speed_rpm=cases.figures.mean_speed_rpm,
-        duty_cycle_percent=cases.figures.duty_cycle_percent,
-        cycle_time_s=cases.figures.cycle_s,
+    return _assembled(
+        cases,
+        rules,
+        cat,
         accel_torque_nm=accel,
         constant_torque_nm=constant,
         decel_torque_nm=decel,
@@ -199,9 +204,50 @@ def evaluate_batch(
         approximate=approximate,
         first_missing=first_missing,
         worst_overload=worst_overload,
+    )
+
+
+def _evaluation(
+    block: Block, cases: Cases, rules: Sequence[Rule], cat: CatalogueArrays
+) -> BatchEvaluation:
+    """The :class:`BatchEvaluation` of one block of every case: the block's arrays, its
+    rules' axis moved last (a copy each), not copied into arrays of the whole batch."""
+    reported = block.checks
+    assert reported is not None
+
+    def checks_last(rules_first: npt.NDArray[Any]) -> npt.NDArray[Any]:
+        return np.ascontiguousarray(rules_first.transpose(1, 2, 0))
+
+    return _assembled(
+        cases,
+        rules,
+        cat,
+        accel_torque_nm=block.accel_torque,
+        constant_torque_nm=block.constant_torque,
+        decel_torque_nm=block.decel_torque,
+        rms_torque_nm=block.rms_torque,
+        statuses=checks_last(block.statuses),
+        verdicts=block.verdicts(),
+        values=checks_last(reported.values),
+        limits=checks_last(reported.limits),
+        approximate=checks_last(reported.approximate),
+        first_missing=checks_last(reported.first_missing),
+        worst_overload=block.overload,
+    )
+
+
+def _assembled(
+    cases: Cases, rules: Sequence[Rule], cat: CatalogueArrays, **cells: npt.NDArray[Any]
+) -> BatchEvaluation:
+    """The :class:`BatchEvaluation` of ``cases`` from its arrays of cells by name."""
+    return BatchEvaluation(
+        mean_speed_rpm=cases.figures.mean_speed_rpm,
+        duty_cycle_percent=cases.figures.duty_cycle_percent,
+        cycle_time_s=cases.figures.cycle_s,
         missing_what=tuple(tuple(need.what for need in rule.requires) for rule in rules),
         check_names=tuple(rule.name for rule in rules),
         rank_position=cat.rank_position,
+        **cells,
     )
 
 
