@@ -154,28 +154,45 @@ def cases_of(apps: Sequence[Application]) -> Cases:
     # A profile already computed holds its cycle's figures (a single selection's).
     profiles = [p for p in (a.known_profile for a in apps) if p is not None]
     figures = figures_of(profiles) if len(profiles) == len(apps) else cycle_figures(pieces)
+    # The case's other inputs in one table (one numpy call, not one per input): τ_th, its
+    # being assumed, high dynamics, the output load's fields, the request's.
+    loads = 3 + len(OUTPUT_LOAD_FIELDS)
+    inputs = np.array([_inputs(a) for a in apps], dtype=np.float64).reshape(
+        len(apps), loads + len(REQUEST_FIELDS)
+    )
+    flags = inputs[:, 1:3] != 0.0
     return Cases(
         pieces=pieces,
         figures=figures,
         load_inertia=inertia,
-        high_dynamics=np.array([a.high_dynamics for a in apps], dtype=np.bool_),
-        output_load=_output_loads(apps),
-        thermal_time_constant=np.array(
-            [
-                DEFAULT_THERMAL_TIME_CONSTANT_S if tau is None else tau
-                for tau in (a.thermal_time_constant_s for a in apps)
-            ],
-            dtype=np.float64,
-        ),
-        thermal_assumed=np.array([a.thermal_time_constant_s is None for a in apps], dtype=np.bool_),
-        requests=np.array(
-            [
-                [math.nan if v is None else v for v in (getattr(a, n) for n in REQUEST_FIELDS)]
-                for a in apps
-            ],
-            dtype=np.float64,
-        ).reshape(len(apps), len(REQUEST_FIELDS)),
+        high_dynamics=flags[:, 1],
+        output_load=inputs[:, 3:loads],
+        thermal_time_constant=inputs[:, 0],
+        thermal_assumed=flags[:, 0],
+        requests=inputs[:, loads:],
     )
+
+
+_NO_OUTPUT_LOAD = (math.nan,) * len(OUTPUT_LOAD_FIELDS)
+
+
+def _inputs(a: Application) -> list[float | bool]:
+    """A case's row of :func:`cases_of`'s inputs (NaN where not given)."""
+    tau = a.thermal_time_constant_s
+    load = a.output_load
+    return [
+        DEFAULT_THERMAL_TIME_CONSTANT_S if tau is None else tau,
+        tau is None,
+        a.high_dynamics,
+        *(
+            _NO_OUTPUT_LOAD
+            if load is None
+            else (
+                math.nan if v is None else v for v in (getattr(load, n) for n in OUTPUT_LOAD_FIELDS)
+            )
+        ),
+        *(math.nan if v is None else v for v in (getattr(a, n) for n in REQUEST_FIELDS)),
+    ]
 
 
 def swing_of(cases: Cases) -> FloatArray:
@@ -191,20 +208,6 @@ def swing_of(cases: Cases) -> FloatArray:
     with np.errstate(all="ignore"):
         swing = swing_deg(columns, np.where)
     return np.asarray(np.where(loaded, swing, math.nan), dtype=np.float64)
-
-
-def _output_loads(apps: Sequence[Application]) -> FloatArray:
-    nan = math.nan
-    rows = [
-        [nan] * len(OUTPUT_LOAD_FIELDS)
-        if a.output_load is None
-        else [
-            nan if v is None else v
-            for v in (getattr(a.output_load, name) for name in OUTPUT_LOAD_FIELDS)
-        ]
-        for a in apps
-    ]
-    return np.array(rows, dtype=np.float64).reshape(len(apps), len(OUTPUT_LOAD_FIELDS))
 
 
 def zone_limits(

@@ -126,10 +126,10 @@ def trapezoid_piece_arrays(
         accel_end=accel_end,
         static=static,
         inertia=inertia,
-        braking=_TRAPEZOID_BRAKING.repeat(rows, axis=0),
-        constant_speed=_TRAPEZOID_CONSTANT.repeat(rows, axis=0),
-        moving=_TRAPEZOID_MOVING.repeat(rows, axis=0),
-        direction=_TRAPEZOID_DIRECTION.repeat(rows, axis=0),
+        braking=_repeated(_TRAPEZOID_BRAKING, rows),
+        constant_speed=_repeated(_TRAPEZOID_CONSTANT, rows),
+        moving=_repeated(_TRAPEZOID_MOVING, rows),
+        direction=_repeated(_TRAPEZOID_DIRECTION, rows),
         holding=torque_nm.copy(),
     )
 
@@ -139,6 +139,13 @@ _TRAPEZOID_BRAKING = np.array([[False, False, True, False]])
 _TRAPEZOID_CONSTANT = np.array([[False, True, False, False]])
 _TRAPEZOID_MOVING = np.array([[True, True, True, False]])
 _TRAPEZOID_DIRECTION = np.array([[1.0, 1.0, 1.0, 0.0]])
+for _row in (_TRAPEZOID_BRAKING, _TRAPEZOID_CONSTANT, _TRAPEZOID_MOVING, _TRAPEZOID_DIRECTION):
+    _row.setflags(write=False)  # one case's own (not copied: four numpy calls a selection)
+
+
+def _repeated(row: Any, rows: int) -> Any:
+    """The trapezoid's ``row`` for ``rows`` cases: itself (read-only) for one."""
+    return row if rows == 1 else row.repeat(rows, axis=0)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
