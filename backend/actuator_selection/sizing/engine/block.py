@@ -14,6 +14,17 @@ Every expression performs the same IEEE operations in the same order as the
 plain-float flowchart that the tests keep as the oracle (``tests/oracle``; numpy adds no
 fused multiply-add, squares are ``x * x``), so both agree bit for bit, which the tests
 check with ``==``.
+
+Why a cycle's pieces as one array: a one-model selection is a block of one cell, where
+each numpy call costs its fixed overhead whatever the size of its arrays; piece by piece,
+its torques, sums and extremes took some fifteen calls a piece. Cases × pieces ×
+actuators, they take a fixed few: every element's operations as before, the sums over
+the pieces cumulative (``np.add.accumulate`` adds in the pieces' order, where a reduction
+may add pairwise), the extremes by ``argmax`` (the first on a tie, as a strict ``>``
+piece after piece). Only the heating stays piece by piece (each piece starts from the
+last one's heat), T² and |n| in one array in a small block. Facts about the actuators
+(the published τ_th, current-based heating, a missing J_A) are found once per catalogue
+(:class:`~actuator_selection.sizing.engine.catalogue.CatalogueArrays`).
 """
 
 from __future__ import annotations
@@ -105,11 +116,11 @@ class _HeatingGains:
         values = cat.published_taus
         durations, cycles = cases.pieces.duration, cases.figures.cycle_s
         count = durations.shape[1]
-        if cases.size == 1:  # one case (a selection's): its few gains straight from floats
-            row, cycle = durations[0].tolist(), float(cycles[0])
-            taus = [float(cases.thermal_time_constant[0]), *values]
-            pieces = np.array([_gains(row, tau) for tau in taus], dtype=np.float64)
-            whole = np.array([heating_gain(cycle, tau) for tau in taus], dtype=np.float64)
+        if cases.size == 1:  # one case (a selection's): its few gains straight from floats,
+            row, cycle = durations[0].tolist(), float(cycles[0])  # one table: the pieces',
+            taus = [float(cases.thermal_time_constant[0]), *values]  # then the cycle's
+            table = np.array([_gains([*row, cycle], tau) for tau in taus], dtype=np.float64)
+            pieces, whole = table[:, :count], table[:, count]
         else:  # per case, gains for its own τ_th (row 0) and each published τ_th (1, 2, …)
             columns = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
             gains = [_case_gains(durations, cycles, tau) for tau in columns]
@@ -307,13 +318,16 @@ def _regrouped(
 def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
     """The pieces' mean |n| (:func:`~actuator_selection.sizing.motion.mean_abs_speed_rpm`),
     cases × pieces × 1: every piece at once, the same operations on each element."""
-    speed: FloatArray = mean_abs_speed_rpm(
-        p.duration[:, pieces],
-        p.start_rpm[:, pieces],
-        p.end_rpm[:, pieces],
-        p.accel_start[:, pieces],
-        p.accel_end[:, pieces],
+    columns: tuple[FloatArray, ...] = (
+        p.duration,
+        p.start_rpm,
+        p.end_rpm,
+        p.accel_start,
+        p.accel_end,
     )
+    if pieces != slice(None):
+        columns = tuple(c[:, pieces] for c in columns)
+    speed: FloatArray = mean_abs_speed_rpm(*columns)
     return speed[:, :, np.newaxis]
 
 
@@ -391,7 +405,7 @@ def evaluate_block(
         assert found is not None
         accel, constant, decel = found
         rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
-        gear_cube = cube / weight[:, col] if averaged else np.full(shape, math.nan)
+        gear_cube = cube / weight[:, col] if averaged else math.nan  # no rule reads it
         # The heating's peaks (Profile.thermal_torque_nm, .thermal_speed_rpm): of T², and
         # of |n| (at least n_av), over the repeating cycle.
         mean = cases.figures.mean_speed_rpm[:, col]

@@ -240,15 +240,29 @@ def _assembled(
     cases: Cases, rules: Sequence[Rule], cat: CatalogueArrays, **cells: npt.NDArray[Any]
 ) -> BatchEvaluation:
     """The :class:`BatchEvaluation` of ``cases`` from its arrays of cells by name."""
+    key = tuple(rules)
+    names = _NAMES.get(key)
+    if names is None:  # per rule set, once (a selection's rules are one of a few sets)
+        if len(_NAMES) > 64:  # rule sets made by the caller: keep it bounded
+            _NAMES.clear()
+        names = _NAMES[key] = (
+            tuple(tuple(need.what for need in rule.requires) for rule in rules),
+            tuple(rule.name for rule in rules),
+        )
     return BatchEvaluation(
         mean_speed_rpm=cases.figures.mean_speed_rpm,
         duty_cycle_percent=cases.figures.duty_cycle_percent,
         cycle_time_s=cases.figures.cycle_s,
-        missing_what=tuple(tuple(need.what for need in rule.requires) for rule in rules),
-        check_names=tuple(rule.name for rule in rules),
+        missing_what=names[0],
+        check_names=names[1],
         rank_position=cat.rank_position,
         **cells,
     )
+
+
+_NAMES: dict[tuple[Rule, ...], tuple[tuple[tuple[str, ...], ...], tuple[str, ...]]] = {}
+"""Per rule set, :attr:`BatchEvaluation.missing_what` and :attr:`~BatchEvaluation.
+check_names`."""
 
 
 def _put_checks(cells: npt.NDArray[Any], rules: npt.NDArray[Any]) -> None:
