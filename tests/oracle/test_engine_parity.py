@@ -595,6 +595,37 @@ def test_many_cases_span_several_blocks() -> None:
         assert batch[i] == truncated(select(actuators, apps[i]), 2)
 
 
+def test_large_blocks_equal_one_case_blocks() -> None:
+    """A block of more cells than are heated as one array (``block._STACKED_CELLS``),
+    whose pieces are taken fewer than 16 at a time (a block of ~65,000 cells), and cycles
+    of many pieces: every cell as the one-case blocks give it, which the tests above hold
+    to the scalar flowchart."""
+    rng = random.Random(5)
+    actuators = [random_actuator(rng, k) for k in range(70)]
+    apps = [random_case(rng, actuators) for _ in range(900)]
+    apps += [random_motion_case(rng) for _ in range(100)]
+    rng.shuffle(apps)
+    whole = evaluate_batch(actuators, apps)
+    for i in range(0, len(apps), 19):
+        one = evaluate_batch(actuators, [apps[i]])
+        for field in (
+            "accel_torque_nm",
+            "constant_torque_nm",
+            "decel_torque_nm",
+            "rms_torque_nm",
+            "statuses",
+            "verdicts",
+            "values",
+            "limits",
+            "approximate",
+            "first_missing",
+            "worst_overload",
+        ):
+            np.testing.assert_array_equal(
+                getattr(whole, field)[i], getattr(one, field)[0], err_msg=f"case {i} {field}"
+            )
+
+
 def test_floors_without_j_a_match_the_scalar_flowchart() -> None:
     """Actuators without J_A against loads whose floors fail and pass: every cell equal."""
     base = worked_example.FHA_25C_50_L
