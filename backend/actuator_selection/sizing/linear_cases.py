@@ -16,7 +16,7 @@ from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import REQUEST_FIELDS, Cases, cases_of
 from actuator_selection.sizing.mechanisms.linear import LinearLaw, linear_axis_columns, mm_to_m
-from actuator_selection.sizing.motion import PieceArrays, cycle_figures
+from actuator_selection.sizing.motion import PieceArrays
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
 
 _DROP = REQUEST_FIELDS.index("drop_torque_nm")
@@ -66,21 +66,10 @@ def linear_cases(
         ):
             return by_value(values)
         pieces = _pieces(durations, speed, inertia, gravity, friction, eta)
-        rows = values.size
-        index = np.zeros(rows, dtype=np.intp)
-        requests = first.requests[index]
+        requests = first.requests[np.zeros(values.size, dtype=np.intp)]
         requests[:, _DROP] = np.abs(gravity)
         requests[:, _TRAVEL] = travel
-        return Cases(
-            pieces=pieces,
-            figures=cycle_figures(pieces),
-            load_inertia=inertia,
-            high_dynamics=first.high_dynamics[index],
-            output_load=first.output_load[index],
-            thermal_time_constant=first.thermal_time_constant[index],
-            thermal_assumed=first.thermal_assumed[index],
-            requests=requests,
-        )
+        return first.repeated_with(pieces, inertia, requests)
 
     return at
 

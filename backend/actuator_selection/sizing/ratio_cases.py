@@ -19,7 +19,6 @@ from actuator_selection.sizing.mechanisms import Transmission, with_transmission
 from actuator_selection.sizing.motion import (
     Motion,
     PieceArrays,
-    cycle_figures,
     trapezoid_piece_arrays,
 )
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
@@ -105,17 +104,7 @@ def geared_cases(
         )
         if efficiency != 1:
             pieces = _by_power_flow(pieces, efficiency)
-        first = np.zeros(ratios.size, dtype=np.intp)
-        return Cases(
-            pieces=pieces,
-            figures=cycle_figures(pieces),
-            load_inertia=inertia,
-            high_dynamics=base.high_dynamics[first],
-            output_load=base.output_load[first],
-            thermal_time_constant=base.thermal_time_constant[first],
-            thermal_assumed=base.thermal_assumed[first],
-            requests=requests[first],
-        )
+        return base.repeated_with(pieces, inertia, requests[np.zeros(ratios.size, dtype=np.intp)])
 
     return at
 

@@ -88,6 +88,23 @@ class Cases:
             return self
         return self.take(slice(start, stop))
 
+    def repeated_with(
+        self, pieces: PieceArrays, load_inertia: FloatArray, requests: FloatArray
+    ) -> Cases:
+        """The first case once for each row of ``pieces``, its cycle, J_L and further inputs
+        those rows' (a ratio study's values as columns), its other inputs repeated."""
+        first = np.zeros(load_inertia.size, dtype=np.intp)
+        return Cases(
+            pieces=pieces,
+            figures=cycle_figures(pieces),
+            load_inertia=load_inertia,
+            high_dynamics=self.high_dynamics[first],
+            output_load=self.output_load[first],
+            thermal_time_constant=self.thermal_time_constant[first],
+            thermal_assumed=self.thermal_assumed[first],
+            requests=requests,
+        )
+
     def take(self, index: slice | IndexArray) -> Cases:
         """The cases at ``index`` (a slice, or row numbers, repeated as often as given)."""
         p, f = self.pieces, self.figures
