@@ -111,14 +111,7 @@ def inclined_ball_screw_law(
 ) -> LinearLaw:
     """:func:`inclined_ball_screw_axis` as a function of the lead P: r = P/2π, J_S, and
     the moved mass m + m_c and the forces, which do not depend on P."""
-    gravity, friction = incline_forces(
-        mass_kg=screw.mass_kg,
-        counterweight_kg=screw.counterweight_kg,
-        friction_coefficient=screw.friction_coefficient,
-        friction_force_n=screw.friction_force_n,
-        incline_deg=screw.incline_deg,
-        g=g,
-    )
+    gravity, friction = incline_forces(screw, g=g)
     inertia = screw.screw_inertia_kgm2
     return LinearLaw(
         radius_m=screw_radius_m,

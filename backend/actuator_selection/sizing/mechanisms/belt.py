@@ -137,14 +137,7 @@ def belt_law(belt: BeltDrive, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> Linear
     """:func:`belt_axis` as a function of the drive pulley's diameter D: r = D/2,
     J_D + J_I·(D/D_I)² (J_D + J_I without D_I), and the moved mass m + m_B + m_c and the
     forces, which do not depend on D."""
-    gravity, friction = incline_forces(
-        mass_kg=belt.mass_kg,
-        counterweight_kg=belt.counterweight_kg,
-        friction_coefficient=belt.friction_coefficient,
-        friction_force_n=belt.friction_force_n,
-        incline_deg=belt.incline_deg,
-        g=g,
-    )
+    gravity, friction = incline_forces(belt, g=g)
     pulley, idler, idler_d = (
         belt.pulley_inertia_kgm2,
         belt.idler_inertia_kgm2,

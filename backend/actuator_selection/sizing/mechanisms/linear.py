@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, overload
+from typing import Any, Protocol, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -132,22 +132,30 @@ def half(diameter_m: Any) -> Any:
     return diameter_m / 2
 
 
-def incline_forces(
-    *,
-    mass_kg: float,
-    counterweight_kg: float,
-    friction_coefficient: float,
-    friction_force_n: float,
-    incline_deg: float,
-    g: float,
-) -> tuple[float, float]:
+class InclinedMass(Protocol):
+    """A mass m moved on an incline θ, with a counterweight m_c, friction μ and a further
+    friction force F_F: what a screw's, a pinion's and a belt's axis share."""
+
+    @property
+    def mass_kg(self) -> float: ...
+    @property
+    def counterweight_kg(self) -> float: ...
+    @property
+    def friction_coefficient(self) -> float: ...
+    @property
+    def friction_force_n(self) -> float: ...
+    @property
+    def incline_deg(self) -> float: ...
+
+
+def incline_forces(axis: InclinedMass, *, g: float) -> tuple[float, float]:
     """The weight's force (m·sin θ − m_c)·g and the friction force μ·m·g·cos θ + F_F [N]
-    of a mass m moved on an incline θ, with a counterweight m_c, by a screw, a pinion or a
-    belt (first principles, module doc)."""
-    sin_t, cos_t = _sin_cos(incline_deg)
+    of ``axis``'s mass moved by a screw, a pinion or a belt (first principles, module
+    doc)."""
+    sin_t, cos_t = _sin_cos(axis.incline_deg)
     return (
-        (mass_kg * sin_t - counterweight_kg) * g,
-        friction_coefficient * mass_kg * g * cos_t + friction_force_n,
+        (axis.mass_kg * sin_t - axis.counterweight_kg) * g,
+        axis.friction_coefficient * axis.mass_kg * g * cos_t + axis.friction_force_n,
     )
 
 

@@ -95,14 +95,7 @@ def rack_pinion_axis(rack: RackPinion, *, g: float = STANDARD_GRAVITY_M_PER_S2) 
 def rack_pinion_law(rack: RackPinion, *, g: float = STANDARD_GRAVITY_M_PER_S2) -> LinearLaw:
     """:func:`rack_pinion_axis` as a function of the pinion's diameter d: r = d/2, J_P,
     and the moved mass m + m_c and the forces, which do not depend on d."""
-    gravity, friction = incline_forces(
-        mass_kg=rack.mass_kg,
-        counterweight_kg=rack.counterweight_kg,
-        friction_coefficient=rack.friction_coefficient,
-        friction_force_n=rack.friction_force_n,
-        incline_deg=rack.incline_deg,
-        g=g,
-    )
+    gravity, friction = incline_forces(rack, g=g)
     inertia = rack.pinion_inertia_kgm2
     return LinearLaw(
         radius_m=half,
