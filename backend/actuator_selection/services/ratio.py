@@ -107,26 +107,21 @@ def _linear_law(load: object, variable: str) -> tuple[LinearLaw, float] | None:
     return None
 
 
-def torque_floor_of(
-    body: SelectionRequest, study: RatioStudyIn
-) -> Callable[[FloatArray, FloatArray], FloatArray] | None:
-    """A lower bound of |T_1| between neighbouring values where :func:`columns_of`
-    builds the cases (:func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`)."""
-    if study.variable != "ratio":
-        return None
-    return geared_torque_floor(
-        body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
-    )
+Floor = Callable[[FloatArray, FloatArray], FloatArray]
+"""A lower bound of a torque between neighbouring values of the study's variable."""
 
 
-def rms_floor_of(
-    body: SelectionRequest, study: RatioStudyIn
-) -> Callable[[FloatArray, FloatArray], FloatArray] | None:
-    """A lower bound of T_rms between neighbouring values where :func:`columns_of`
-    builds the cases (:func:`~actuator_selection.sizing.ratio_cases.geared_rms_floor`)."""
+def floor_of(
+    body: SelectionRequest,
+    study: RatioStudyIn,
+    geared_floor: Callable[[Application, float, float], Floor | None],
+) -> Floor | None:
+    """``geared_floor`` (:func:`~actuator_selection.sizing.ratio_cases.geared_torque_floor`
+    of |T_1|, :func:`~actuator_selection.sizing.ratio_cases.geared_rms_floor` of T_rms)
+    where :func:`columns_of` builds the cases of an external ratio; None otherwise."""
     if study.variable != "ratio":
         return None
-    return geared_rms_floor(
+    return geared_floor(
         body.to_core(), study.transmission_inertia_kgm2, study.transmission_efficiency
     )
 
@@ -180,8 +175,8 @@ def study(
         arrays=catalogue.arrays(tuple(actuators)),
         cases_at=columns_of(body, spec),
         monotone=MONOTONE_SHARES if spec.variable == "ratio" else None,
-        torque_floor=torque_floor_of(body, spec),
-        rms_floor=rms_floor_of(body, spec),
+        torque_floor=floor_of(body, spec, geared_torque_floor),
+        rms_floor=floor_of(body, spec, geared_rms_floor),
     )
     return RatioStudyOut(
         catalogue_version=catalogue.version,
