@@ -49,7 +49,7 @@ test: install lint typecheck jslint pytest
 FAST_TESTS := tests/test_purity.py tests/sizing tests/catalogue tests/sales tests/phrases tests/db tests/api backend/actuator_selection/sizing backend/actuator_selection/catalogue backend/actuator_selection/sales backend/actuator_selection/phrases backend/actuator_selection/i18n backend/actuator_selection/errors.py backend/actuator_selection/text.py backend/actuator_selection/documents/symbols.py
 
 check: install lint typecheck jslint
-	$(BIN)/python -m pytest -n auto -q -k "not postgresql" $(FAST_TESTS)
+	$(BIN)/python -m pytest -n auto -q -k "not postgresql" -m "not slow" $(FAST_TESTS)
 
 lint: install
 	$(BIN)/ruff check .

@@ -79,6 +79,7 @@ def _selection(client: TestClient, **changes: Any) -> dict[str, Any]:
     return answer
 
 
+@pytest.mark.slow
 def test_the_whole_catalogue_report_is_three_pages_with_both_diagrams(
     client: TestClient,
 ) -> None:

@@ -58,6 +58,7 @@ def _module(package: ModuleType, name: str) -> Any:
     return importlib.import_module(f"{package.__name__}.{name}")
 
 
+@pytest.mark.slow
 def test_generated_client_sizes_and_reads_a_selection(generated: ModuleType, api: SalesApi) -> None:
     client = generated.Client(base_url="http://testserver")
     client.set_httpx_client(api.client)

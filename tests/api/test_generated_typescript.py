@@ -85,6 +85,7 @@ def test_the_pages_api_types_are_generated_from_openapi_today(tmp_path: Path) ->
     assert "SelectionOut: {" in fresh
 
 
+@pytest.mark.slow
 def test_generated_types_take_the_documented_requests(tmp_path: Path) -> None:
     generate_types(tmp_path)
 

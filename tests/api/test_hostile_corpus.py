@@ -149,6 +149,7 @@ def _unit_body(endpoint: str, load: dict[str, Any]) -> dict[str, Any]:
     ],
     ids=["selections", "limits", "batch"],
 )
+@pytest.mark.slow
 def test_unit_text_is_refused_in_no_more_time_than_a_normal_request(
     api: SalesApi, endpoint: str, texts: tuple[str, ...]
 ) -> None:
@@ -390,6 +391,7 @@ def only_error(response: Any, status: int = 422) -> dict[str, Any]:
     return error
 
 
+@pytest.mark.slow
 def test_truncated_archives_and_a_zip_bomb_are_refused(api: SalesApi) -> None:
     before = version(api)
     archive = zipped(export_zip(api))

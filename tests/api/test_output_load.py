@@ -125,6 +125,7 @@ def test_batch_groups_cases_by_their_checks(client: TestClient) -> None:
     assert response.status_code == 200, response.text
 
 
+@pytest.mark.slow
 def test_cha_bearing_forces_are_not_applicable_single_batch_and_report(
     client: TestClient,
 ) -> None:

@@ -52,6 +52,7 @@ def _pdf(api: SalesApi, number: str, **headers: str) -> Any:
 
 
 @pytest.mark.parametrize("language", ["de", "en"])
+@pytest.mark.slow
 def test_the_pdf_is_the_document_in_the_asked_language(api: SalesApi, language: str) -> None:
     quote = _quote(api)
     response = _pdf(api, quote["number"], **{"Accept-Language": language})

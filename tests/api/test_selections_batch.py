@@ -138,6 +138,7 @@ def open_checks(candidate: dict[str, Any]) -> list[str]:
     return [c["name"] for c in candidate["checks"] if c["status"] in ("fail", "warn", "no_data")]
 
 
+@pytest.mark.slow
 def test_batch_equals_single_selections(batch_client: TestClient) -> None:
     """N random cases posted one by one and as one batch: equal candidates and figures; in
     words (``include_messages``) the same words, else their codes and params alone."""
