@@ -90,6 +90,10 @@ def _trapezoid(app: Application) -> bool:
     )
 
 
+_DIRECTION = np.array([[1.0, 1.0, 1.0, 0.0]])
+_BRAKING = np.array([[False, False, True, False]])
+
+
 def _pieces(
     durations: list[float],
     speed: FloatArray,
@@ -119,24 +123,24 @@ def _pieces(
         else:
             load_side = static + inertia * alpha
             factor = np.where(load_side * s > 0, 1.0 / eta, eta)
-        columns.append(
-            (np.full(rows, t), start, end, alpha, alpha, static * factor, inertia * factor, s)
-        )
-
-    def table(q: int) -> FloatArray:
-        return np.ascontiguousarray(np.stack([np.broadcast_to(c[q], rows) for c in columns], 1))
-
-    direction = np.array([[float(c[7]) for c in columns]]).repeat(rows, axis=0)
-    accel_start, accel_end = table(3), table(4)
+        duration = np.full(rows, t)
+        columns.append((duration, start, end, alpha, alpha, static * factor, inertia * factor))
+    # every table in one array (quantity × piece × case) seen transposed, as
+    # trapezoid_piece_arrays builds them: one numpy call, not a stack per table
+    tables: FloatArray = np.array(
+        [[c[q] for c in columns] for q in range(7)], dtype=np.float64
+    ).transpose(0, 2, 1)
+    duration, start_rpm, end_rpm, accel_start, accel_end, static_t, inertia_t = tables
+    direction = _DIRECTION.repeat(rows, axis=0)
     return PieceArrays(
-        duration=table(0),
-        start_rpm=table(1),
-        end_rpm=table(2),
+        duration=duration,
+        start_rpm=start_rpm,
+        end_rpm=end_rpm,
         accel_start=accel_start,
         accel_end=accel_end,
-        static=table(5),
-        inertia=table(6),
-        braking=np.array([[False, False, True, False]]).repeat(rows, axis=0),
+        static=static_t,
+        inertia=inertia_t,
+        braking=_BRAKING.repeat(rows, axis=0),
         constant_speed=(direction != 0) & (accel_start == 0.0) & (accel_end == 0.0),
         moving=direction != 0,
         direction=direction,
