@@ -65,6 +65,31 @@ CASES: dict[str, dict[str, Any]] = {
             "transmission_inertia_kgm2": 1e-4,
         },
     },
+    "vertical belt, pulley 20–200 mm": {
+        "load": {
+            "type": "belt",
+            "mass_kg": 5.0,
+            "pulley_diameter_mm": 50.0,
+            "friction_coefficient": 0.1,
+            "efficiency": 0.9,
+            "incline_deg": 90,
+            "speed": 1000,
+        },
+        "cycle": {"accel_s": 0.1, "constant_s": 0.3, "decel_s": 0.1, "pause_s": 0.5},
+        "ratio_study": {"variable": "pulley_diameter_mm", "min": 20, "max": 200},
+    },
+    "horizontal rack, pinion 20–200 mm": {
+        "load": {
+            "type": "rack_pinion",
+            "mass_kg": 200.0,
+            "pinion_diameter_mm": 80.0,
+            "friction_coefficient": 0.1,
+            "efficiency": 0.95,
+            "speed": 500,
+        },
+        "cycle": {"accel_s": 0.2, "constant_s": 0.6, "decel_s": 0.2, "pause_s": 1.0},
+        "ratio_study": {"variable": "pinion_diameter_mm", "min": 20, "max": 200},
+    },
 }
 
 
