@@ -17,6 +17,7 @@ from actuator_selection.sizing.engine import FloatArray
 from actuator_selection.sizing.engine.cases import REQUEST_FIELDS, Cases, cases_of
 from actuator_selection.sizing.mechanisms.linear import LinearLaw, linear_axis_columns, mm_to_m
 from actuator_selection.sizing.motion import PieceArrays
+from actuator_selection.sizing.ratio_cases import one_case
 from actuator_selection.sizing.units import RAD_PER_S_PER_RPM
 
 _DROP = REQUEST_FIELDS.index("drop_torque_nm")
@@ -48,7 +49,7 @@ def linear_cases(
     segments = motion.segments
     durations = [s.duration_s for s in segments]
     eta = law.efficiency
-    first = cases_of([base])
+    first = one_case(base)
 
     def by_value(values: FloatArray) -> Cases:
         return cases_of([vary(float(x)) for x in values])

@@ -71,6 +71,16 @@ def geared(app: Application, transmission: Transmission) -> Application:
     )
 
 
+def one_case(app: Application) -> Cases:
+    """``cases_of([app])``, its cycle's figures those of ``app``'s profile (summed on
+    floats, :func:`~actuator_selection.sizing.motion.profile_of`: the numbers the arrays
+    give, bit for bit), not summed again on one-row arrays (~0.3 ms of numpy calls): the
+    case a study repeats at its values (:func:`geared_cases`, :func:`~actuator_selection.
+    sizing.linear_cases.linear_cases`)."""
+    assert app.profile is not None  # computed once, then read by cases_of
+    return cases_of([app])
+
+
 def geared_cases(
     app: Application, transmission_inertia_kgm2: float, efficiency: float = 1.0
 ) -> Callable[[FloatArray], Cases] | None:
@@ -82,11 +92,11 @@ def geared_cases(
     pattern, load = app.pattern, app.load
     if pattern is None or load is None:
         return None
-    base = cases_of([app])
+    base = one_case(app)
     # With η_tr < 1, geared() writes the shorthand as a cycle of segments: what the
     # brake's drop reads of the axis (its weight, none here) is that axis's, not T_L.
     chain = Transmission(ratio=1.0, inertia_kgm2=transmission_inertia_kgm2, efficiency=efficiency)
-    requests = base.requests if efficiency == 1 else cases_of([geared(app, chain)]).requests
+    requests = base.requests if efficiency == 1 else one_case(geared(app, chain)).requests
 
     def at(ratios: FloatArray) -> Cases:
         def repeated(value: float) -> FloatArray:
