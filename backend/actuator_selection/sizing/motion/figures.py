@@ -168,22 +168,25 @@ class CycleFigures:
 
 def cycle_figures(p: PieceArrays) -> CycleFigures:
     """t_0, n_av (Eq. 514.3), ED (Eq. 514.4), the peak speed and the torque floors of each
-    cycle (:func:`_summed`, on the pieces' columns)."""
+    cycle (:func:`_summed`, on the pieces' columns): each piece's terms computed on the
+    whole tables at once (:func:`_piece_terms`, elementwise: the numbers of a column at a
+    time), then summed piece by piece."""
     rows = p.duration.shape[0]
-    columns = zip(
-        p.duration.T,
-        p.start_rpm.T,
-        p.end_rpm.T,
-        p.accel_start.T,
-        p.accel_end.T,
-        p.static.T,
-        p.inertia.T,
-        p.braking.T,
-        p.moving.T,
-        p.direction.T,
-        strict=True,
-    )
     with np.errstate(all="ignore"):  # as Python floats: overflow gives inf, no error
+        terms = _piece_terms(
+            p.duration,
+            p.start_rpm,
+            p.end_rpm,
+            p.accel_start,
+            p.accel_end,
+            p.static,
+            p.inertia,
+            p.braking,
+            p.moving,
+            p.direction,
+            _ARRAY_MATH,
+        )
+        columns = zip(*(term.T for term in terms), strict=True)
         return CycleFigures(*_summed(columns, np.zeros(rows), _ARRAY_MATH))
 
 
@@ -201,20 +204,62 @@ _ARRAY_MATH = (np.where, np.maximum, np.sqrt)
 _FLOAT_MATH = (_where, _float_maximum, math.sqrt)
 
 
-def _summed(
-    columns: Iterable[tuple[Any, ...]], zero: Any, ops: tuple[Any, Any, Any]
+def _piece_terms(
+    t: Any,
+    n0: Any,
+    n1: Any,
+    a0: Any,
+    a1: Any,
+    static: Any,
+    inertia: Any,
+    braking: Any,
+    moving: Any,
+    s: Any,
+    ops: tuple[Any, Any, Any],
 ) -> tuple[Any, ...]:
-    """The figures of :class:`CycleFigures`, in its order, summed piece by piece in the
-    order of the pieces (the trapezoid: the chapter's operations). ``columns`` holds each
-    piece's duration, start and end speed, start and end acceleration, static torque,
-    inertia, braking, moving and direction: arrays of many cycles (:func:`cycle_figures`)
-    or floats of one (:func:`profile_of`), with ``ops`` (where, maximum, sqrt) to match.
-    The same operations in the same order on IEEE doubles: a single profile and a batch
-    agree bit for bit, and one cycle costs no numpy call (~0.3 ms of them).
+    """What :func:`_summed` sums or takes the largest of, per piece: its duration, |∫n dt|,
+    its time moving and braking, its peak |n|, braking, for each end's acceleration the
+    torque at J_A = 0 in the direction of motion and against it, and its ∫T² dt
+    coefficients. Elementwise: a piece's floats (:func:`profile_of`), or the tables of
+    many cycles' pieces at once (:func:`cycle_figures`), the same operations.
 
     n_av sums ∫|n| dt: (n_a + n_b)/2·t for a piece of constant acceleration, plus
     (α_a − α_b)·t²/12 (in rpm) where the acceleration ramps (a jerk ramp's speed is
-    quadratic in time).
+    quadratic in time). ∫T² dt is a quadratic in J_A: T_a = p_a + a0·J_A,
+    T_b = p_b + a1·J_A."""
+    where, maximum, _sqrt = ops
+    ramp = (a0 - a1) * (t * t) / 12.0 / RAD_PER_S_PER_RPM
+    distance = where(a0 == a1, (n0 + n1) / 2 * t, (n0 + n1) / 2 * t + ramp)
+    ends = []
+    for alpha in (a0, a1):
+        at_zero = static + (0.0 + inertia) * alpha
+        ends += [where(s == 0, abs(at_zero), s * at_zero), -(s * at_zero)]
+    pa = static + inertia * a0
+    pb = static + inertia * a1
+    third = t / 3.0
+    return (
+        t,
+        abs(distance),
+        where(moving, t, 0.0),
+        where(braking, t, 0.0),
+        maximum(abs(n0), abs(n1)),
+        braking,
+        *ends,
+        third * (pa * pa + pa * pb + pb * pb),
+        third * (2 * pa * a0 + pa * a1 + pb * a0 + 2 * pb * a1),
+        third * (a0 * a0 + a0 * a1 + a1 * a1),
+    )
+
+
+def _summed(
+    terms: Iterable[tuple[Any, ...]], zero: Any, ops: tuple[Any, Any, Any]
+) -> tuple[Any, ...]:
+    """The figures of :class:`CycleFigures`, in its order, summed piece by piece in the
+    order of the pieces (the trapezoid: the chapter's operations) from each piece's
+    :func:`_piece_terms`: arrays of many cycles (:func:`cycle_figures`) or floats of one
+    (:func:`profile_of`), with ``ops`` (where, maximum, sqrt) to match. The same
+    operations in the same order on IEEE doubles: a single profile and a batch agree bit
+    for bit, and one cycle costs no numpy call (~0.3 ms of them).
 
     The floors bound the checks from below where J_A is unknown (issue "The checks a
     sizing engineer signs", item 7): the torque T = c + (J_A + J)·α of a piece that does
@@ -226,26 +271,18 @@ def _summed(
     cycle = travel = moving_s = braking_s = peak = zero
     accel_floor = decel_floor = zero
     a_coef = b_coef = c_coef = zero
-    for t, n0, n1, a0, a1, static, inertia, braking, moving, s in columns:
+    for t, distance, moving_t, braking_t, top, braking, *ends, a_add, b_add, c_add in terms:
         cycle = cycle + t
-        ramp = (a0 - a1) * (t * t) / 12.0 / RAD_PER_S_PER_RPM
-        distance = where(a0 == a1, (n0 + n1) / 2 * t, (n0 + n1) / 2 * t + ramp)
-        travel = travel + abs(distance)
-        moving_s = moving_s + where(moving, t, 0.0)
-        braking_s = braking_s + where(braking, t, 0.0)
-        peak = maximum(peak, maximum(abs(n0), abs(n1)))
-        for alpha in (a0, a1):
-            at_zero = static + (0.0 + inertia) * alpha
-            grows = where(s == 0, abs(at_zero), s * at_zero)
+        travel = travel + distance
+        moving_s = moving_s + moving_t
+        braking_s = braking_s + braking_t
+        peak = maximum(peak, top)
+        for grows, falls in (ends[0:2], ends[2:4]):
             accel_floor = where(braking, accel_floor, maximum(accel_floor, grows))
-            decel_floor = where(braking, maximum(decel_floor, -(s * at_zero)), decel_floor)
-        # ∫T² dt as a quadratic in J_A: T_a = p_a + a0·J_A, T_b = p_b + a1·J_A.
-        pa = static + inertia * a0
-        pb = static + inertia * a1
-        third = t / 3.0
-        a_coef = a_coef + third * (pa * pa + pa * pb + pb * pb)
-        b_coef = b_coef + third * (2 * pa * a0 + pa * a1 + pb * a0 + 2 * pb * a1)
-        c_coef = c_coef + third * (a0 * a0 + a0 * a1 + a1 * a1)
+            decel_floor = where(braking, maximum(decel_floor, falls), decel_floor)
+        a_coef = a_coef + a_add
+        b_coef = b_coef + b_add
+        c_coef = c_coef + c_add
     positive = c_coef > 0
     best = where(positive, -b_coef / (2 * where(positive, c_coef, 1.0)), 0.0)
     best = where(best > 0, best, 0.0)
@@ -296,7 +333,8 @@ def profile_of(motion: Motion) -> Profile:
     )
     load = motion.load
     holding = abs(load.gravity_torque_nm) + load.friction_torque_nm  # as piece_arrays
-    return _profile(motion, load, pieces, _summed(columns, 0.0, _FLOAT_MATH), holding)
+    terms = (_piece_terms(*piece, _FLOAT_MATH) for piece in columns)
+    return _profile(motion, load, pieces, _summed(terms, 0.0, _FLOAT_MATH), holding)
 
 
 def profile_from(
