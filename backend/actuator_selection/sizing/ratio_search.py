@@ -59,26 +59,25 @@ checks)."""
 
 def block_cells(block: Block) -> Cells:
     """What the search reads of a block (run with ``detail``), its cells flattened in
-    order; the status codes and each check's value and limit, no check worded."""
-    assert block.details is not None
-    shape = block.accel_torque.shape
-    best = np.full(shape, -np.inf)
-    which = np.zeros(shape, dtype=np.intp)
+    order; the status codes and each check's value and limit, no check worded. The
+    binding check is the first of the largest share (a share where the limit is positive
+    and it finite), as ``argmax`` takes it, every check at once (rules × cells)."""
+    checks = block.checks
+    assert checks is not None
+    rules = checks.values.shape[0]
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for k, d in enumerate(block.details):
-            share = d.values / d.limits  # a share where the limit is positive and it finite
-            take = (d.limits > 0) & np.isfinite(share) & (share > best)
-            np.copyto(best, share, where=take)  # the first check of the largest, as argmax
-            np.copyto(which, k, where=take)
+        share = checks.values / checks.limits
+        counted = (checks.limits > 0) & np.isfinite(share)
+    np.copyto(share, -np.inf, where=~counted)
+    which = share.argmax(axis=0)
+    best = np.take_along_axis(share, which[np.newaxis], axis=0)[0]
     util = np.where(np.isfinite(best), best, np.nan)
-    failing = np.empty((*shape, len(block.statuses)), dtype=np.bool_)
-    for k, codes in enumerate(block.statuses):
-        np.equal(codes, CODE_FAIL, out=failing[..., k])
+    failing = np.moveaxis(block.statuses == CODE_FAIL, 0, -1)
     return (
         block.verdicts().ravel(),
         util.ravel(),
         which.ravel(),
-        failing.reshape(-1, len(block.statuses)),
+        failing.reshape(-1, rules),
     )
 
 
