@@ -30,6 +30,8 @@ Needs Debian's Chromium (``CHROMIUM_PATH``, else ``chromium`` on the PATH, else
 from __future__ import annotations
 
 import argparse
+import json
+import math
 import os
 import shutil
 import socket
@@ -40,7 +42,7 @@ import tempfile
 import time
 from collections import Counter
 from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, cast
@@ -67,6 +69,9 @@ START_TIMEOUT_S = 120.0
 STEP_TIMEOUT_MS = 60_000
 PAUSE_MS = 1500
 """How long the second load's user reads the form before using it."""
+TRACE_CATEGORIES = ["toplevel", "blink.user_timing"]
+"""Chromium's trace of each charts load: the renderer's tasks (with their thread CPU
+time) and the page's ``performance.mark`` calls, little else (a light trace)."""
 
 # Runs before the page's own scripts (Playwright's init scripts are not subject to the
 # page's Content-Security-Policy): notes when the page's script has set the page up (the
@@ -77,7 +82,10 @@ WATCH_PAGE = """
   const charts = () => ["chart-cycle", "chart-diagram"].every(
     (id) => document.getElementById(id)?.dataset.state === "ready");
   document.addEventListener("submit", () => {
-    if (window.__submittedAt === undefined) window.__submittedAt = performance.now();
+    if (window.__submittedAt === undefined) {
+      window.__submittedAt = performance.now();
+      performance.mark("bench:submitted");
+    }
   }, true);
   new MutationObserver((_, observer) => {
     if (window.__formReadyAt === undefined && document.querySelector("#results-body .notice")) {
@@ -85,6 +93,7 @@ WATCH_PAGE = """
     }
     if (window.__chartsDrawnAt === undefined && charts()) {
       window.__chartsDrawnAt = performance.now();
+      performance.mark("bench:charts-drawn");
       observer.disconnect();
     }
   }).observe(document, {subtree: true, childList: true, attributes: true,
@@ -107,6 +116,73 @@ class Run:
     """The second load, its form left untouched for ``PAUSE_MS``: submit to both charts."""
     paused_warm_up: str
     """What the page's plotly warm-up did in that load (done, partial, skipped, failed)."""
+    charts_cpu_ms: float
+    """The first load's main-thread CPU time, navigation to both charts drawn (``MainThread``)."""
+    charts_task_ms: float
+    """The same tasks' wall-clock time (the CPU time and the waits of a busy machine)."""
+    paused_cpu_after_submit_ms: float
+    """The second load's main-thread CPU time from the submit to both charts drawn."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class MainThread:
+    """The page's main thread in a Chromium trace, up to the page's mark ``bench:charts-drawn``:
+    the tasks it ran (each task's thread CPU time, and its wall-clock time). The task
+    the mark falls in is counted up to the mark. CPU time is what the page asks of the
+    processor, whatever else runs on the machine; a CPU slowed by
+    ``Emulation.setCPUThrottlingRate`` leaves it as it is (the thread is paused, not
+    made to work longer)."""
+
+    cpu_ms: float
+    task_ms: float
+    cpu_after_submit_ms: float
+    """CPU time from the mark ``bench:submitted`` on (NaN without that mark)."""
+
+    @classmethod
+    def of(cls, trace: dict[str, Any]) -> MainThread:
+        """Read from the trace's events (Chromium's JSON trace format)."""
+        events: list[dict[str, Any]] = trace["traceEvents"]
+        marks = {e["name"]: e for e in events if e.get("name", "").startswith("bench:")}
+        end = marks["bench:charts-drawn"]
+        submitted = marks.get("bench:submitted")
+        main = {
+            (e["pid"], e["tid"])
+            for e in events
+            if e.get("ph") == "M"
+            and e.get("name") == "thread_name"
+            and e["args"].get("name") == "CrRendererMain"
+            and e["pid"] == end["pid"]
+        }
+        tasks = sorted(
+            (
+                e
+                for e in events
+                if e.get("ph") == "X"
+                and e.get("cat") == "toplevel"
+                and (e["pid"], e["tid"]) in main
+                and e["ts"] <= end["ts"]
+            ),
+            key=lambda e: (e["ts"], -e.get("dur", 0)),
+        )
+        cpu = wall = after = 0.0
+        task_end = -1.0
+        for task in tasks:
+            if task["ts"] < task_end:
+                continue  # a task nested in one counted (outermost tasks only)
+            task_end = task["ts"] + task.get("dur", 0)
+            dur = float(task.get("dur", 0))
+            share = 1.0 if task_end <= end["ts"] or dur == 0 else (end["ts"] - task["ts"]) / dur
+            task_cpu = float(task.get("tdur", 0)) * share
+            cpu += task_cpu
+            wall += dur * share
+            if submitted is not None and task_end > submitted["ts"]:
+                before = max(0.0, submitted["ts"] - task["ts"]) / dur if dur else 0.0
+                after += task_cpu * (1 - min(before, 1.0))
+        return cls(
+            cpu_ms=cpu / 1000,
+            task_ms=wall / 1000,
+            cpu_after_submit_ms=after / 1000 if submitted is not None else math.nan,
+        )
 
 
 def chromium_path() -> str:
@@ -139,27 +215,31 @@ def seeded_database(directory: Path) -> str:
     return url
 
 
+# The app under uvicorn, its pages from the directory given (the server's code is this tree's).
+SERVE = """
+import sys
+from pathlib import Path
+
+import uvicorn
+
+import actuator_selection.config as config
+
+config.FRONTEND_DIR = Path(sys.argv[1])
+uvicorn.run("actuator_selection.app:create_app", factory=True, host="127.0.0.1",
+            port=int(sys.argv[2]), log_level="warning", access_log=False)
+"""
+
+
 @contextmanager
-def served(database_url: str) -> Iterator[str]:
-    """The app under uvicorn in a subprocess; yields its base URL."""
+def served(database_url: str, frontend: Path | None = None) -> Iterator[str]:
+    """The app under uvicorn in a subprocess, its pages from ``frontend`` (default: this
+    tree's ``frontend/``); yields its base URL."""
     port = free_port()
     backend = str(Path(actuator_selection.__file__).resolve().parents[1])
     path = os.pathsep.join(p for p in (backend, os.environ.get("PYTHONPATH", "")) if p)
     env = {**os.environ, "DATABASE_URL": database_url, "PYTHONPATH": path}
-    command = [
-        sys.executable,
-        "-m",
-        "uvicorn",
-        "--factory",
-        "actuator_selection.app:create_app",
-        "--host",
-        "127.0.0.1",
-        "--port",
-        str(port),
-        "--log-level",
-        "warning",
-        "--no-access-log",
-    ]
+    pages = frontend or Path(backend).parent / "frontend"
+    command = [sys.executable, "-c", SERVE, str(pages.resolve()), str(port)]
     process = subprocess.Popen(command, env=env)
     url = f"http://127.0.0.1:{port}"
     try:
@@ -218,6 +298,7 @@ def charts_load(
         context.add_init_script(WATCH_PAGE)
         page = context.new_page()
         _slowed(context, page, slowdown)
+        browser.start_tracing(page=page, categories=TRACE_CATEGORIES)
         page.goto("/", wait_until="commit")
         page.wait_for_selector("#results-body .notice", state="attached")
         if pause_ms:
@@ -225,7 +306,7 @@ def charts_load(
         page.locator("#example").click()
         page.locator("#submit").click()
         page.wait_for_function("() => window.__chartsDrawnAt !== undefined", polling=10)
-        return cast(
+        times = cast(
             dict[str, Any],
             page.evaluate(
                 """() => ({form: window.__formReadyAt, submitted: window.__submittedAt,
@@ -233,6 +314,8 @@ def charts_load(
                            warm: document.documentElement.dataset.chartsWarm ?? "none"})"""
             ),
         )
+        times["main"] = MainThread.of(json.loads(browser.stop_tracing()))
+        return times
     finally:
         context.close()
 
@@ -249,6 +332,9 @@ def measure(browser: Browser, base_url: str, slowdown: float = 1) -> Run:
         warm_up=str(eager["warm"]),
         paused_submit_to_charts_ms=float(paused["charts"]) - float(paused["submitted"]),
         paused_warm_up=str(paused["warm"]),
+        charts_cpu_ms=eager["main"].cpu_ms,
+        charts_task_ms=eager["main"].task_ms,
+        paused_cpu_after_submit_ms=paused["main"].cpu_after_submit_ms,
     )
 
 
@@ -269,32 +355,63 @@ def main() -> None:
     parser.add_argument(
         "--slowdown", type=float, default=4, help="CPU slowdown of the second set, default 4"
     )
+    parser.add_argument(
+        "--baseline",
+        type=Path,
+        help="another tree's frontend/ directory (A/B): served by a second server of this "
+        "tree's code, its runs alternate with this tree's, and both are reported",
+    )
     args = parser.parse_args()
-    with tempfile.TemporaryDirectory(prefix="bench-page-") as tmp:
-        database_url = seeded_database(Path(tmp))
-        with served(database_url) as base_url, sync_playwright() as p:
-            url, raw, packed = plotly_size(base_url)
-            print(f"plotly.js {url}: {raw / 1e6:.2f} MB raw, {packed / 1e6:.2f} MB gzip")
-            browser = p.chromium.launch(
-                executable_path=chromium_path(), args=CHROMIUM_ARGS, headless=True
-            )
-            try:
+    with tempfile.TemporaryDirectory(prefix="bench-page-") as tmp, ExitStack() as stack:
+        trees = (
+            {"this tree": None}
+            if args.baseline is None
+            else {"this tree": None, f"baseline {args.baseline}": args.baseline}
+        )
+        sites = {}
+        for n, (name, frontend) in enumerate(trees.items()):
+            directory = Path(tmp) / str(n)
+            directory.mkdir()
+            sites[name] = stack.enter_context(served(seeded_database(directory), frontend))
+        p = stack.enter_context(sync_playwright())
+        url, raw, packed = plotly_size(next(iter(sites.values())))
+        print(f"plotly.js {url}: {raw / 1e6:.2f} MB raw, {packed / 1e6:.2f} MB gzip")
+        browser = p.chromium.launch(
+            executable_path=chromium_path(), args=CHROMIUM_ARGS, headless=True
+        )
+        try:
+            for base_url in sites.values():
                 measure(browser, base_url)  # warm-up: server caches, Chromium's start
-                runs = [measure(browser, base_url) for _ in range(args.runs)]
-                slowed = [measure(browser, base_url, args.slowdown) for _ in range(args.runs)]
-            finally:
-                browser.close()
-    _report(runs, "")
-    _report(slowed, f", CPU slowed {args.slowdown:g}×")
+            runs = _alternated(browser, sites, args.runs, 1)
+            slowed = _alternated(browser, sites, args.runs, args.slowdown)
+        finally:
+            browser.close()
+    for name in sites:
+        heading = f"{name}: " if len(sites) > 1 else ""
+        _report(runs[name], heading, "")
+        _report(slowed[name], heading, f", CPU slowed {args.slowdown:g}×")
 
 
-def _report(runs: list[Run], condition: str) -> None:
-    """Print the medians of ``runs``."""
+def _alternated(
+    browser: Browser, sites: dict[str, str], count: int, slowdown: float
+) -> dict[str, list[Run]]:
+    """``count`` rounds, each a run of every site, the order turned round each round."""
+    runs: dict[str, list[Run]] = {name: [] for name in sites}
+    order = list(sites)
+    for _ in range(count):
+        for name in order:
+            runs[name].append(measure(browser, sites[name], slowdown))
+        order.reverse()
+    return runs
+
+
+def _report(runs: list[Run], heading: str, condition: str) -> None:
+    """Print the medians of ``runs``, and the range of the main figures."""
     form = statistics.median(r.form_ready_ms for r in runs)
     charts = statistics.median(r.charts_ms for r in runs)
     reference = statistics.median(r.reference_ms for r in runs)
     ratio = statistics.median(r.charts_ms / r.reference_ms for r in runs)
-    print(f"cold load{condition}, median of {len(runs)} runs (ms since navigation start):")
+    print(f"{heading}cold load{condition}, median of {len(runs)} runs (ms since navigation start):")
     print(f"  reference: bare index.html, no script, to load   {reference:8.1f} ms")
     print(f"  engineer's page: form ready                      {form:8.1f} ms")
     print(f"  engineer's page: worked example, both charts     {charts:8.1f} ms")
@@ -304,11 +421,29 @@ def _report(runs: list[Run], condition: str) -> None:
         + ", ".join(f"{r.charts_ms:.0f}" for r in runs)
         + f"  (plotly warm-up: {_counted(r.warm_up for r in runs)})"
     )
+    print(f"  ratios: {_spread([r.charts_ms / r.reference_ms for r in runs], '.1f')}")
+    cpu = [r.charts_cpu_ms for r in runs]
+    print(
+        f"  main thread to both charts: CPU {statistics.median(cpu):6.1f} ms "
+        f"({_spread(cpu, '.0f')}), its tasks' wall clock "
+        f"{statistics.median(r.charts_task_ms for r in runs):6.1f} ms"
+    )
     paused = statistics.median(r.paused_submit_to_charts_ms for r in runs)
     print(
         f"  form untouched for {PAUSE_MS} ms, then submit to both charts   {paused:8.1f} ms"
         f"  (plotly warm-up: {_counted(r.paused_warm_up for r in runs)})"
     )
+    after = [r.paused_cpu_after_submit_ms for r in runs]
+    print(
+        f"    its main-thread CPU, submit to both charts {statistics.median(after):6.1f} ms "
+        f"({_spread(after, '.0f')})"
+    )
+
+
+def _spread(values: Iterable[float], spec: str) -> str:
+    """``12–15`` (the least and the greatest)."""
+    listed = list(values)
+    return f"{min(listed):{spec}}–{max(listed):{spec}}"
 
 
 def _counted(values: Iterable[str]) -> str:
