@@ -23,6 +23,17 @@ median of ``--runs`` runs (after one warm-up run that also warms the server). Th
 same runs again with the page's CPU slowed ``--slowdown`` times (4: Chrome DevTools'
 ``Emulation.setCPUThrottlingRate``, a slow laptop or phone), reference included.
 
+Wall-clock times swing with whatever else the machine runs. So each charts load is also
+traced (Chromium's trace, categories ``toplevel`` and ``blink.user_timing``: light), and
+*main thread to both charts* is the CPU time of the page's main thread from navigation
+to both charts drawn (each task's thread time, ``MainThread``), with its tasks' wall clock
+beside it; the paused load gives the CPU time from the submit on. A CPU slowed by
+DevTools' throttling shows in that CPU time too: the slowed runs' CPU is 4–7 times the
+other's here, so compare CPU times within one condition. ``--baseline DIR`` serves
+another tree's ``frontend/`` (e.g. ``git archive main frontend | tar -x -C /tmp/base``)
+from a second server of this tree's code, alternates its runs with this tree's (the order
+turned each round) and reports both: an A/B of the page alone.
+
 Needs Debian's Chromium (``CHROMIUM_PATH``, else ``chromium`` on the PATH, else
 ``/usr/bin/chromium``); no browser is downloaded.
 """
@@ -111,7 +122,8 @@ class Run:
     reference_ms: float
     warm_up: str
     """What the page's plotly warm-up did in the first load (``warmCharts`` in app.js: done,
-    partial where the user's click came between its figures, skipped, failed)."""
+    partial where the user's click came between its figures, skipped, failed; then what
+    the one while the answer is awaited did, ``warmWhileWaiting``)."""
     paused_submit_to_charts_ms: float
     """The second load, its form left untouched for ``PAUSE_MS``: submit to both charts."""
     paused_warm_up: str
@@ -311,7 +323,9 @@ def charts_load(
             page.evaluate(
                 """() => ({form: window.__formReadyAt, submitted: window.__submittedAt,
                            charts: window.__chartsDrawnAt,
-                           warm: document.documentElement.dataset.chartsWarm ?? "none"})"""
+                           warm: [document.documentElement.dataset.chartsWarm ?? "none",
+                                 document.documentElement.dataset.chartsWarmSubmit]
+                                .filter(Boolean).join(", at submit ")})"""
             ),
         )
         times["main"] = MainThread.of(json.loads(browser.stop_tracing()))

@@ -366,6 +366,37 @@ def test_plotly_is_warmed_up_out_of_sight_until_the_user_starts(page: Page) -> N
     other.close()
 
 
+def test_plotly_is_warmed_up_while_the_first_answer_is_awaited(page: Page) -> None:
+    """A user who submits before the warm-up could run (it gives way to the first click)
+    has the small warm-up figure drawn while the answer is on its way, off screen and
+    thrown away; the charts are then drawn as ever."""
+    held: list[Route] = []
+    page.route("**/vendor/plotly-basic-*.js", lambda route: held.append(route))
+    page.goto("/", wait_until="commit")
+    expect(page.locator("#results-body .notice")).to_be_attached()  # the page's script ran
+    page.locator("#f-speed").click()
+    assert len(held) == 1
+    held[0].continue_()
+    expect(page.locator("html")).to_have_attribute("data-charts-warm", "skipped")
+    fill_worked_example(page)
+
+    answers: list[Route] = []
+    page.route(
+        SELECTIONS_URL,
+        lambda route: (
+            answers.append(route) if route.request.method == "POST" else route.continue_()
+        ),
+    )
+    page.locator("#submit").click()
+    expect(page.locator("html")).to_have_attribute("data-charts-warm-submit", "done")
+    expect(page.locator(".chart-warmup")).to_have_count(0)
+    expect(page.locator(".js-plotly-plot")).to_have_count(0)  # nothing drawn is left
+    assert len(answers) == 1
+    answers[0].continue_()
+    wait_for_charts(page)
+    assert traces(page, "chart-diagram")["peak-accel"]["y"]
+
+
 def test_rotary_table_shows_the_converted_load(page: Page) -> None:
     mass, diameter, mu, radius = 50.0, 0.4, 0.02, 0.15
     expected_inertia = mass / 8 * diameter**2  # Eq. 515.6 → 1.0 kgm²

@@ -1159,21 +1159,61 @@ async function warmCharts(Plotly) {
   for (const figure of WARM_FIGURES) {
     if (drawn) await quietPeriod();
     if (touched || state.busy || state.selection || inputPending()) break;
-    const host = h("div", { class: "chart chart-warmup", "aria-hidden": "true", inert: true });
-    document.body.append(host);
     try {
-      await Plotly.newPlot(host, figure.data, figure.layout, { ...PLOT_CONFIG, locale: state.lang });
-      Plotly.purge(host);
+      await drawOutOfSight(Plotly, figure);
       drawn += 1;
     } catch {
       document.documentElement.dataset.chartsWarm = "failed";
       return;
-    } finally {
-      host.remove();
     }
   }
   const all = drawn === WARM_FIGURES.length;
   document.documentElement.dataset.chartsWarm = all ? "done" : drawn ? "partial" : "skipped";
+}
+
+/** Whether plotly.js has drawn a warm-up figure on this page: its first-use costs are paid. */
+let warmedUp = false;
+
+/** ``figure`` drawn off screen and thrown away (a warm-up). */
+async function drawOutOfSight(Plotly, figure) {
+  const host = h("div", { class: "chart chart-warmup", "aria-hidden": "true", inert: true });
+  document.body.append(host);
+  try {
+    await Plotly.newPlot(host, figure.data, figure.layout, { ...PLOT_CONFIG, locale: state.lang });
+    Plotly.purge(host);
+    warmedUp = true;
+  } finally {
+    host.remove();
+  }
+}
+
+/**
+ * The small warm-up figure drawn while the page waits for its first answer, when the user
+ * has submitted before ``warmCharts`` could draw it (it gives way to the user's first
+ * input): the page is idle until the answer comes, and plotly.js's first-use costs (a
+ * first chart's 100–130 ms here, four times that on a CPU slowed 4×) are then paid by
+ * the time the charts are drawn, not by the first of them. A task of its own, skipped
+ * once the answer is in (``state.busy`` cleared) or a chart is drawn. Says so in
+ * ``<html data-charts-warm-submit>``: "done", "skipped", "failed".
+ */
+function warmWhileWaiting() {
+  const root = document.documentElement;
+  const skip = () => warmedUp || !state.busy || document.querySelector(".chart.js-plotly-plot") !== null;
+  if (skip()) return;
+  loadPlotly().then(
+    (Plotly) =>
+      window.setTimeout(() => {
+        if (skip()) {
+          root.dataset.chartsWarmSubmit = "skipped";
+          return;
+        }
+        drawOutOfSight(Plotly, WARM_FIGURES[0]).then(
+          () => (root.dataset.chartsWarmSubmit = "done"),
+          () => (root.dataset.chartsWarmSubmit = "failed"),
+        );
+      }),
+    () => {}, // the charts say so when they are drawn
+  );
 }
 
 // ---------------------------------------------------------------- flow
@@ -1234,7 +1274,9 @@ async function onSubmit(event) {
   setBusy(true);
   if (!state.selection) renderResults();
   try {
-    const sel = await createSelection(body);
+    const asked = createSelection(body);
+    warmWhileWaiting();
+    const sel = await asked;
     await chartDataAsked(sel);
     setBusy(false);
     acceptSelection(sel);
