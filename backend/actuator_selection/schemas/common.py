@@ -8,6 +8,7 @@ the largest catalogue actuator delivers under 2 kNm at under 300 rpm.
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import replace
 from enum import Enum
 from types import UnionType
 from typing import Annotated, Any, ClassVar, Literal, Union, get_args, get_origin
@@ -88,7 +89,7 @@ class StrictModel(BaseModel):
     """Text fields that may hold line breaks and tabs (multi-line text)."""
 
     # After each field's own validation, so a nested model has already named its field.
-    @field_validator("*", mode="after")
+    @field_validator("*", mode="after", check_fields=False)
     @classmethod
     def _text_rule(cls, value: Any, info: ValidationInfo) -> Any:
         if info.field_name not in _text_fields(cls):
@@ -97,6 +98,28 @@ class StrictModel(BaseModel):
         if (rule := text_rule_broken(value, line_breaks=multi_line)) is not None:
             raise ValueError(rule)
         return value
+
+    @classmethod
+    def __pydantic_init_subclass__(cls, **kwargs: Any) -> None:
+        super().__pydantic_init_subclass__(**kwargs)
+        _text_rule_on_text_fields(cls)
+
+
+def _text_rule_on_text_fields(model: type[StrictModel]) -> None:
+    """The text rule (``StrictModel._text_rule``) validating only ``model``'s text fields
+    (:func:`_text_fields`), not every field: its schema rebuilt with the rule's fields
+    named. A batch of 10,000 cases has ~10⁵ numbers, for each of which the rule was a
+    Python call (~0.1 s of the request). A model not complete yet keeps the rule on every
+    field (it skips the others itself)."""
+    if not model.__pydantic_complete__:
+        return
+    validators = model.__pydantic_decorators__.field_validators
+    rule = validators["_text_rule"]
+    fields = tuple(sorted(_text_fields(model)))
+    if rule.info.fields == fields:
+        return
+    validators["_text_rule"] = replace(rule, info=replace(rule.info, fields=fields))
+    model.model_rebuild(force=True)
 
 
 _TEXT_FIELDS: dict[type[BaseModel], frozenset[str]] = {}
