@@ -43,7 +43,7 @@ from actuator_selection.services.presenters.batch import (
     members_json,
     result_body,
 )
-from actuator_selection.services.presenters.selection import dump_json, json_items, load_body
+from actuator_selection.services.presenters.selection import dump_json, json_items, load_columns
 from actuator_selection.services.selections import (
     Writer,
     size_selection,
@@ -433,7 +433,7 @@ def _ranked_json(
     return cases_json(
         [dump_json(id_) for id_, _ in ids],
         [dump_json(case_id) for _, case_id in ids],
-        [dump_json(load_body(app.axis_load, peak)) for app, peak in zip(apps, peaks, strict=True)],
+        load_columns([app.axis_load for app in apps], f.peak_speed_rpm),
         [json_items(f.cycle_s), json_items(f.mean_speed_rpm), json_items(f.duty_cycle_percent)],
         candidates,
         ranked.counts,

@@ -21,7 +21,12 @@ import orjson
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
-from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
+from actuator_selection.services.presenters.selection import (
+    LOAD_TEMPLATE,
+    dump_json,
+    json_items,
+    resolved_load,
+)
 from actuator_selection.sizing.checks import Brief, Operands, Rule, Status
 from actuator_selection.sizing.checks.rule import Pick, Said, Term, Variants
 from actuator_selection.sizing.engine import STATUS_BY_CODE
@@ -596,20 +601,22 @@ def members_json(body: dict[str, Any], *, comma: bool = False) -> bytes:
 def cases_json(
     ids: list[bytes],
     case_ids: list[bytes],
-    loads: list[bytes],
+    loads: Sequence[list[bytes]],
     figures: Sequence[list[bytes]],
     candidates: list[bytes],
     counts: Sequence[int],
 ) -> list[bytes]:
     """Each case's entry of ``results`` as JSON, the text :func:`dump_json` writes of
-    :func:`case_body`, from its members' JSON: ``figures`` the cycle times, mean speeds
-    and duty cycles, ``candidates`` every case's candidates in turn (``counts`` of them a
-    case; :func:`coded_candidates_json`)."""
+    :func:`case_body`, from its members' JSON: ``loads`` the members of its ``load``
+    (:func:`load_columns`), ``figures`` the cycle times, mean speeds and duty cycles,
+    ``candidates`` every case's candidates in turn (``counts`` of them a case;
+    :func:`coded_candidates_json`)."""
     head = (
-        b'{"id":%b,"case_id":%b,"load":%b,"cycle_time_s":%b,"mean_speed_rpm":%b,'
-        b'"duty_cycle_percent":%b,"candidates":['
+        b'{"id":%b,"case_id":%b,"load":'
+        + LOAD_TEMPLATE
+        + b',"cycle_time_s":%b,"mean_speed_rpm":%b,"duty_cycle_percent":%b,"candidates":['
     )
-    members = [ids, case_ids, loads, *figures]
+    members = [ids, case_ids, *loads, *figures]
     if counts and min(counts) == max(counts):  # as many in every case: each one a member
         n = counts[0]
         members += [candidates[k::n] for k in range(n)]

@@ -431,6 +431,28 @@ def load_body(axis: AxisLoad, peak_speed_rpm: float) -> dict[str, float]:
     }
 
 
+def load_columns(axes: Sequence[AxisLoad], peaks: npt.NDArray[np.float64]) -> list[list[bytes]]:
+    """Each member of the cases' ``load`` (:func:`load_body` of each axis load and peak
+    speed, in its order) as JSON over the cases: one array of numbers a member, written
+    at once (:func:`json_items`), where every figure is a float, as from the API's
+    models; else each case's figure as :func:`dump_json` writes it."""
+    rows = [load_body(axis, peak) for axis, peak in zip(axes, peaks.tolist(), strict=True)]
+    columns: list[list[bytes]] = []
+    for key in LOAD_KEYS:
+        figures = [row[key] for row in rows]
+        if all(type(x) is float for x in figures):
+            columns.append(json_items(np.array(figures, dtype=np.float64)))
+        else:
+            columns.append([dump_json(x) for x in figures])
+    return columns
+
+
+LOAD_KEYS = tuple(load_body(AxisLoad(inertia_kgm2=0.0, friction_torque_nm=0.0), 0.0))
+"""The members of a case's ``load``, in :func:`load_body`'s order."""
+LOAD_TEMPLATE = b"{" + b",".join(dump_json(k) + b":%b" for k in LOAD_KEYS) + b"}"
+"""A case's ``load`` as JSON, each member's value a ``%b`` (:func:`load_columns`)."""
+
+
 def segments_out(profile: Profile) -> list[dict[str, float]]:
     """``segments`` (``SegmentOut``): the cycle's segments at the output."""
     out, clock = [], 0.0
