@@ -11,7 +11,7 @@ selection cost more than the engineering.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
@@ -89,9 +89,19 @@ def check_rules(rules: Sequence[Rule]) -> list[JSON]:
 
 def or_none(column: FloatArray) -> Any:
     """The array's floats as (nested) lists, None where NaN (unknown)."""
+    if column.size <= _LISTED_UP_TO and 1 <= column.ndim <= 2:
+        items = column.tolist()  # a NaN is the one float not equal to itself
+        if column.ndim == 1:
+            return [None if x != x else x for x in items]
+        return [[None if x != x else x for x in row] for row in items]
     out = column.astype(object)
     out[np.isnan(column)] = None
     return out.tolist()
+
+
+_LISTED_UP_TO = 256
+"""Up to this many floats :func:`or_none` lists them in Python: a one-model answer's few
+torques and checks, where numpy's three calls cost more than the loop."""
 
 
 def checks_of(ev: BatchEvaluation) -> list[Any]:
@@ -135,16 +145,23 @@ class RankedChecks:
     """Per check, the index into ``missing_what`` of what is missing; −1: nothing."""
 
     @classmethod
-    def of(cls, ev: BatchEvaluation, order: npt.NDArray[np.intp]) -> RankedChecks:
-        """The (single) case of ``ev``, its actuators in ``order``."""
+    def of(
+        cls,
+        ev: BatchEvaluation,
+        order: npt.NDArray[np.intp],
+        in_order: Callable[[npt.NDArray[Any]], npt.NDArray[Any]] | None = None,
+    ) -> RankedChecks:
+        """The (single) case of ``ev``, its actuators in ``order`` (``in_order``: what
+        takes an array's rows in that order, where the caller has one)."""
+        take = (lambda rows: rows[order]) if in_order is None else in_order
         return cls(
             names=ev.check_names,
             missing_what=ev.missing_what,
-            statuses=ev.statuses[0][order],
-            values=ev.values[0][order],
-            limits=ev.limits[0][order],
-            approximate=ev.approximate[0][order],
-            first_missing=ev.first_missing[0][order],
+            statuses=take(ev.statuses[0]),
+            values=take(ev.values[0]),
+            limits=take(ev.limits[0]),
+            approximate=take(ev.approximate[0]),
+            first_missing=take(ev.first_missing[0]),
         )
 
     def dicts(self, start: int, stop: int) -> list[list[JSON]]:
