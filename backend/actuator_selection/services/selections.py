@@ -20,6 +20,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import AbstractContextManager
 from dataclasses import dataclass
 from datetime import datetime
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -148,27 +149,43 @@ def _ranked(
     asked = tuple(actuators)
     ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(asked))
     torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
-    if any(np.isinf(t).any() for t in torques):
+    if np.isinf(torques).any():
         # Finite inputs that overflow a torque: the ranked candidates' torques name the
         # input (422).
         select(actuators, app)
-    order = np.array(ev.ranking(0), dtype=np.intp)
     columns = catalogue.columns(asked)
-    codes = ev.verdicts[0][order]
+    if len(asked) == 1:  # one actuator (a one-model selection): ranked as it stands
+        order, in_order = _FIRST, _as_they_stand
+    else:
+        order = np.array(ev.ranking(0), dtype=np.intp)
+
+        def in_order(values: npt.NDArray[Any]) -> npt.NDArray[Any]:
+            return values[order]
+
+    codes = in_order(ev.verdicts[0])
     return _Ranked(
-        actuators=columns.actuator[order].tolist(),
+        actuators=in_order(columns.actuator).tolist(),
         verdicts=_VERDICTS[codes].tolist(),
         verdict_codes=codes,
         columns=columns,
         order=order,
         torques=(
-            ev.accel_torque_nm[0][order],
-            ev.constant_torque_nm[0][order],
-            ev.decel_torque_nm[0][order],
-            ev.rms_torque_nm[0][order],
+            in_order(ev.accel_torque_nm[0]),
+            in_order(ev.constant_torque_nm[0]),
+            in_order(ev.decel_torque_nm[0]),
+            in_order(ev.rms_torque_nm[0]),
         ),
-        checks=presenter.RankedChecks.of(ev, order),
+        checks=presenter.RankedChecks.of(ev, order, in_order),
     )
+
+
+_FIRST = np.zeros(1, dtype=np.intp)
+"""The ranking of one actuator."""
+
+
+def _as_they_stand(values: npt.NDArray[Any]) -> npt.NDArray[Any]:
+    """Values of one actuator in the ranking's order: as they stand."""
+    return values
 
 
 @dataclass(frozen=True, slots=True)
