@@ -91,8 +91,9 @@ def unknown_models(
 
 def refuse_unknown_models(models: list[str] | None, catalogue: CatalogueSnapshot) -> None:
     """422 naming each of ``models`` that ``catalogue`` lacks."""
-    if models is None:
+    if catalogue.has_all(models):
         return
+    assert models is not None
     known = {a.model for a in catalogue.actuators_of(models)}
     unknown = unknown_models(["body", "models"], models, known)
     if unknown:
