@@ -443,35 +443,35 @@ def evaluate_block(
             )
         thermal_torque = np.sqrt(torque_peak)
         thermal_speed = np.where(speed_peak > mean, speed_peak, mean)
-    accel_torque, decel_torque, constant_torque = accel, decel, constant
-    if cat.inertia_unknown:  # no J_A: no torques (the candidate's None); each array is
-        unknown = np.isnan(cat.inertia)  # of the block's shape: unchanged where J_A is known
-        accel_torque = np.where(unknown, math.nan, accel)
-        decel_torque = np.where(unknown, math.nan, decel)
-        rms_torque = np.where(unknown, math.nan, rms_torque)
-        thermal_torque = np.where(unknown, math.nan, thermal_torque)
-        constant_torque = np.where(unknown, math.nan, constant)
-        gear_cube = np.where(unknown, math.nan, gear_cube)
-    zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
-    if cat.zone_columns.size:
-        zone_torque = np.full(shape, math.nan)
-        zone_torque[:, cat.zone_columns] = zone_limits
-    q = operands_of(
-        case_operands(cases),
-        cat.operands,
-        {
-            "accel_torque_nm": accel_torque,
-            "decel_torque_nm": decel_torque,
-            "rms_torque_nm": rms_torque,
-            "zone_torque_nm": zone_torque,
-            "thermal_time_constant_s": gains.time_constant,
-            "thermal_time_constant_assumed": gains.assumed,
-            "thermal_torque_nm": thermal_torque,
-            "thermal_speed_rpm": thermal_speed,
-            "gear_torque_cube_nm3": gear_cube,
-        },
-    )
-    with np.errstate(all="ignore"):  # NaN where data is missing: masked by the codes
+        accel_torque, decel_torque, constant_torque = accel, decel, constant
+        if cat.inertia_unknown:  # no J_A: no torques (the candidate's None); each array is
+            unknown = np.isnan(cat.inertia)  # of the block's shape: unchanged where J_A is known
+            accel_torque = np.where(unknown, math.nan, accel)
+            decel_torque = np.where(unknown, math.nan, decel)
+            rms_torque = np.where(unknown, math.nan, rms_torque)
+            thermal_torque = np.where(unknown, math.nan, thermal_torque)
+            constant_torque = np.where(unknown, math.nan, constant)
+            gear_cube = np.where(unknown, math.nan, gear_cube)
+        zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
+        if cat.zone_columns.size:
+            zone_torque = np.full(shape, math.nan)
+            zone_torque[:, cat.zone_columns] = zone_limits
+        q = operands_of(
+            case_operands(cases),
+            cat.operands,
+            {
+                "accel_torque_nm": accel_torque,
+                "decel_torque_nm": decel_torque,
+                "rms_torque_nm": rms_torque,
+                "zone_torque_nm": zone_torque,
+                "thermal_time_constant_s": gains.time_constant,
+                "thermal_time_constant_assumed": gains.assumed,
+                "thermal_torque_nm": thermal_torque,
+                "thermal_speed_rpm": thermal_speed,
+                "gear_torque_cube_nm3": gear_cube,
+            },
+        )
+        # NaN where data is missing: masked by the codes
         statuses, worst, checks = status_codes(
             rules, q, cat, shape, detail=detail, overload=overload
         )
