@@ -353,23 +353,15 @@ def test_plotly_is_warmed_up_out_of_sight_until_the_user_starts(page: Page) -> N
 
     # plotly.js held back until the user has clicked into the form: no warm-up
     other = page.context.new_page()
-    held: list[Route] = []
-    other.route("**/vendor/plotly-basic-*.js", lambda route: held.append(route))
-    other.goto("/", wait_until="commit")
-    expect(other.locator("#results-body .notice")).to_be_attached()  # the page's script ran
-    other.locator("#f-speed").click()
-    assert len(held) == 1
-    held[0].continue_()
-    expect(other.locator("html")).to_have_attribute("data-charts-warm", "skipped")
+    _clicked_before_plotly(other)
     fill_worked_example(other)
     post_selection(other)
     other.close()
 
 
-def test_plotly_is_warmed_up_while_the_first_answer_is_awaited(page: Page) -> None:
-    """A user who submits before the warm-up could run (it gives way to the first click)
-    has the small warm-up figure drawn while the answer is on its way, off screen and
-    thrown away; the charts are then drawn as ever."""
+def _clicked_before_plotly(page: Page) -> None:
+    """Open the page with plotly.js held back until the user has clicked into the form:
+    the warm-up gives way to the click and is skipped."""
     held: list[Route] = []
     page.route("**/vendor/plotly-basic-*.js", lambda route: held.append(route))
     page.goto("/", wait_until="commit")
@@ -378,6 +370,13 @@ def test_plotly_is_warmed_up_while_the_first_answer_is_awaited(page: Page) -> No
     assert len(held) == 1
     held[0].continue_()
     expect(page.locator("html")).to_have_attribute("data-charts-warm", "skipped")
+
+
+def test_plotly_is_warmed_up_while_the_first_answer_is_awaited(page: Page) -> None:
+    """A user who submits before the warm-up could run (it gives way to the first click)
+    has the small warm-up figure drawn while the answer is on its way, off screen and
+    thrown away; the charts are then drawn as ever."""
+    _clicked_before_plotly(page)
     fill_worked_example(page)
 
     answers: list[Route] = []
