@@ -15,9 +15,16 @@ from tests.oracle.test_engine_parity import random_motion_case
 
 from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.axis import AxisLoad
-from actuator_selection.sizing.cycle import cycle_torques, duty_cycle_percent, mean_speed_rpm
+from actuator_selection.sizing.cycle import (
+    Load,
+    SpeedPattern,
+    cycle_torques,
+    duty_cycle_percent,
+    mean_speed_rpm,
+)
 from actuator_selection.sizing.motion import (
     Motion,
+    Profile,
     Segment,
     cycle_figures,
     figures_of,
@@ -287,6 +294,56 @@ def test_figures_of_known_profiles_are_the_computed_figures_bit_for_bit() -> Non
     known = figures_of([profile_of(m) for m in motions])
     for name in (f.name for f in fields(computed)):
         assert getattr(known, name).tobytes() == getattr(computed, name).tobytes(), name
+
+
+def _bits(value: object) -> tuple[str, bytes]:
+    """A figure's type and its bits: 0.0 and −0.0, 40 and 40.0 told apart."""
+    return type(value).__name__, np.float64(value).tobytes()  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_shorthand_profile_is_that_of_its_four_segments_bit_for_bit(seed: int) -> None:
+    """An application of the chapter's shorthand computes its profile from the pattern's
+    columns (``trapezoid_profile``) without a piece object: the very figures, types and
+    signs of zero that ``profile_of`` sums over the four segments' pieces, and the same
+    pieces once read."""
+    rng = random.Random(40 + seed)
+    for k in range(200):
+        speed = rng.choice([40, 3.0, rng.uniform(0.01, 5000.0), 1e150])
+        times = [rng.choice([1, 0.1, rng.uniform(1e-3, 10.0)]) for _ in range(2)]
+        app = Application(
+            pattern=SpeedPattern(
+                speed_rpm=speed,
+                accel_s=times[0],
+                constant_s=rng.choice([0.0, 0, rng.uniform(0.0, 5.0)]),
+                decel_s=times[1],
+                pause_s=rng.choice([0.0, 2, rng.uniform(0.0, 5.0)]),
+            ),
+            load=Load(
+                torque_nm=rng.choice([-0.0, 0.0, 5, rng.uniform(0.0, 500.0)]),
+                inertia_kgm2=rng.choice([0.0, 1, rng.uniform(0.0, 50.0)]),
+            ),
+        )
+        expected: Profile | str
+        try:
+            expected = profile_of(app.cycle)
+        except InvalidInputError as e:
+            expected = str(e)  # a load and cycle beyond floating point: the same 422
+        if isinstance(expected, str):
+            with pytest.raises(InvalidInputError) as raised:
+                app.profile  # noqa: B018 - computed when read
+            assert str(raised.value) == expected, k
+            continue
+        got = app.profile
+        for f in fields(got):
+            if f.name not in ("motion", "load", "pieces"):
+                assert _bits(getattr(got, f.name)) == _bits(getattr(expected, f.name)), (k, f)
+        assert got.motion == expected.motion
+        assert got.load == expected.load
+        assert got.pieces == expected.pieces
+        assert [_bits(p.static_nm) for p in got.pieces] == [
+            _bits(p.static_nm) for p in expected.pieces
+        ]
 
 
 @pytest.mark.parametrize("seed", range(4))

@@ -11,7 +11,13 @@ from actuator_selection.errors import InvalidInputError
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.bearing import OutputLoad
 from actuator_selection.sizing.cycle import Load, SpeedPattern
-from actuator_selection.sizing.motion import Motion, Profile, profile_of, trapezoid
+from actuator_selection.sizing.motion import (
+    Motion,
+    Profile,
+    profile_of,
+    trapezoid,
+    trapezoid_profile,
+)
 
 
 def require_time_constant(tau: float | None) -> None:
@@ -110,9 +116,23 @@ class Application:
 
     @property
     def profile(self) -> Profile:
-        """The cycle prepared for the flowchart (computed once)."""
+        """The cycle prepared for the flowchart (computed once; the chapter's shorthand
+        without building its pieces, :func:`~actuator_selection.sizing.motion.
+        trapezoid_profile`)."""
         if not self._profile:
-            self._profile.append(profile_of(self.cycle))
+            p = self.pattern
+            self._profile.append(
+                profile_of(self.cycle)
+                if p is None
+                else trapezoid_profile(
+                    self.cycle,
+                    speed_rpm=p.speed_rpm,
+                    accel_s=p.accel_s,
+                    constant_s=p.constant_s,
+                    decel_s=p.decel_s,
+                    pause_s=p.pause_s,
+                )
+            )
         return self._profile[0]
 
     @property

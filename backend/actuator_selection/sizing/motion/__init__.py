@@ -54,6 +54,7 @@ from actuator_selection.sizing.motion.figures import (
     profile_from,
     profile_of,
     trapezoid_piece_arrays,
+    trapezoid_profile,
 )
 from actuator_selection.sizing.motion.profile import (
     CycleTorques,
@@ -96,4 +97,5 @@ __all__ = [
     "profile_of",
     "trapezoid",
     "trapezoid_piece_arrays",
+    "trapezoid_profile",
 ]

@@ -97,26 +97,21 @@ def trapezoid_piece_arrays(
     load T_L, J_L), built as columns: the same arrays, bit for bit (a test compares them),
     without a Python object per piece, for batches of thousands of cases."""
     rows = speed_rpm.size
-    zero = np.zeros(rows)
     with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
-        accel = speed_rpm * RAD_PER_S_PER_RPM / accel_s
-        decel = -speed_rpm * RAD_PER_S_PER_RPM / decel_s
-
+        columns = _trapezoid_columns(
+            speed_rpm,
+            accel_s,
+            constant_s,
+            decel_s,
+            pause_s,
+            torque_nm,
+            inertia_kgm2,
+            np.zeros(rows),
+        )
     # The pieces as columns, every table in one array (quantity × piece × case) seen
     # transposed: the same values as an array per table (np.stack, then np.array per
     # table, cost a one-case selection ~7 %, then ~4 % of its time).
-    tables: FloatArray = np.array(
-        [
-            (accel_s, constant_s, decel_s, pause_s),
-            (zero, speed_rpm, speed_rpm, zero),
-            (speed_rpm, speed_rpm, zero, zero),
-            (accel, zero, decel, zero),
-            (accel, zero, decel, zero),
-            (torque_nm, torque_nm, torque_nm, zero),
-            (inertia_kgm2, inertia_kgm2, inertia_kgm2, inertia_kgm2),
-        ],
-        dtype=np.float64,
-    ).transpose(0, 2, 1)
+    tables: FloatArray = np.array(columns, dtype=np.float64).transpose(0, 2, 1)
     duration, start_rpm, end_rpm, accel_start, accel_end, static, inertia = tables
     return PieceArrays(
         duration=duration,
@@ -146,6 +141,44 @@ for _row in (_TRAPEZOID_BRAKING, _TRAPEZOID_CONSTANT, _TRAPEZOID_MOVING, _TRAPEZ
 def _repeated(row: Any, rows: int) -> Any:
     """The trapezoid's ``row`` for ``rows`` cases: itself (read-only) for one."""
     return row if rows == 1 else row.repeat(rows, axis=0)
+
+
+def _trapezoid_columns(
+    speed: Any,
+    accel_s: Any,
+    constant_s: Any,
+    decel_s: Any,
+    pause_s: Any,
+    static: Any,
+    inertia: Any,
+    zero: Any,
+) -> tuple[tuple[Any, Any, Any, Any], ...]:
+    """The trapezoid's pieces (accelerate, run, brake, pause) as :func:`_pieces_of` gives
+    them, a tuple per quantity of :class:`PieceArrays` (duration, start and end speed,
+    start and end acceleration, static torque, inertia): the arrays of many cases
+    (:func:`trapezoid_piece_arrays`) or the floats of one (:func:`trapezoid_profile`)."""
+    accel = speed * RAD_PER_S_PER_RPM / accel_s  # Eq. 514.1: (n_2·2π/60)/t_1
+    decel = -speed * RAD_PER_S_PER_RPM / decel_s
+    return (
+        (accel_s, constant_s, decel_s, pause_s),
+        (zero, speed, speed, zero),
+        (speed, speed, zero, zero),
+        (accel, zero, decel, zero),
+        (accel, zero, decel, zero),
+        (static, static, static, zero),
+        (inertia, inertia, inertia, inertia),
+    )
+
+
+_TRAPEZOID_FLAGS = tuple(
+    zip(
+        _TRAPEZOID_BRAKING[0].tolist(),
+        _TRAPEZOID_MOVING[0].tolist(),
+        _TRAPEZOID_DIRECTION[0].tolist(),
+        strict=True,
+    )
+)
+"""Each trapezoid piece's braking, moving and direction, as floats and truths."""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -335,6 +368,36 @@ def profile_of(motion: Motion) -> Profile:
     holding = abs(load.gravity_torque_nm) + load.friction_torque_nm  # as piece_arrays
     terms = (_piece_terms(*piece, _FLOAT_MATH) for piece in columns)
     return _profile(motion, load, pieces, _summed(terms, 0.0, _FLOAT_MATH), holding)
+
+
+def trapezoid_profile(
+    motion: Motion,
+    *,
+    speed_rpm: float,
+    accel_s: float,
+    constant_s: float,
+    decel_s: float,
+    pause_s: float,
+) -> Profile:
+    """:func:`profile_of` the chapter's trapezoid ``motion`` (:func:`trapezoid` of these
+    with a load of friction T_L and inertia J_L alone), the same floats, from its pieces'
+    columns (:func:`_trapezoid_columns`) without a :class:`Piece` for each: its pieces
+    are built when first read. A one-model selection's cycle."""
+    load = motion.load
+    # T_G + s·T_F + T_P as _pieces_of sums it (s = 1: 0 + T_L + 0, a T_L of −0.0 as 0.0).
+    static = load.gravity_torque_nm + load.friction_torque_nm + 0.0
+    columns = _trapezoid_columns(
+        speed_rpm, accel_s, constant_s, decel_s, pause_s, static, load.inertia_kgm2, 0.0
+    )
+    terms = (
+        _piece_terms(t, n0, n1, a0, a1, c, j, braking, moving, s, _FLOAT_MATH)
+        for (t, n0, n1, a0, a1, c, j), (braking, moving, s) in zip(
+            zip(*columns, strict=True), _TRAPEZOID_FLAGS, strict=True
+        )
+    )
+    holding = abs(load.gravity_torque_nm) + load.friction_torque_nm  # as piece_arrays
+    figures = _summed(terms, 0.0, _FLOAT_MATH)
+    return _profile(motion, load, _PiecesOf(motion), figures, holding)
 
 
 def profile_from(
