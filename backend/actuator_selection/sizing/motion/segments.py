@@ -51,10 +51,17 @@ class Segment:
     process_torque_nm: float = 0.0
 
     def __post_init__(self) -> None:
-        for name in ("duration_s", "start_rpm", "end_rpm", "jerk_share", "process_torque_nm"):
-            value = getattr(self, name)
-            if not math.isfinite(value):
-                raise InvalidInputError(name, code="not_finite", params={"value": value})
+        values = (
+            self.duration_s,
+            self.start_rpm,
+            self.end_rpm,
+            self.jerk_share,
+            self.process_torque_nm,
+        )
+        if not all(map(math.isfinite, values)):  # the first that is not finite
+            for name, value in zip(_SEGMENT_NUMBERS, values, strict=True):
+                if not math.isfinite(value):
+                    raise InvalidInputError(name, code="not_finite", params={"value": value})
         if self.duration_s < 0:
             raise InvalidInputError(
                 "duration_s", code="must_be_nonnegative", params={"rule": N_("a duration")}
@@ -73,6 +80,10 @@ class Segment:
         return (speed > 0) - (speed < 0)
 
 
+_SEGMENT_NUMBERS = ("duration_s", "start_rpm", "end_rpm", "jerk_share", "process_torque_nm")
+"""A segment's numbers, in the order :meth:`Segment.__post_init__` checks them."""
+
+
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Motion:
     """A closed cycle: segments in order, the last ending at the speed the first starts at."""
@@ -87,12 +98,13 @@ class Motion:
             raise InvalidInputError(
                 "segments", code="segments_too_many", params={"max": MAX_SEGMENTS}
             )
-        for k, (a, b) in enumerate(zip(self.segments, self.segments[1:], strict=False)):
-            if a.end_rpm != b.start_rpm:
-                raise InvalidInputError(f"segments.{k + 1}.start_rpm", code="speed_jump")
-        if self.segments[-1].end_rpm != self.segments[0].start_rpm:
+        segments = self.segments
+        for k in range(1, len(segments)):
+            if segments[k - 1].end_rpm != segments[k].start_rpm:
+                raise InvalidInputError(f"segments.{k}.start_rpm", code="speed_jump")
+        if segments[-1].end_rpm != segments[0].start_rpm:
             raise InvalidInputError("segments", code="cycle_not_closed")
-        if not sum(s.duration_s for s in self.segments) > 0:
+        if not sum([s.duration_s for s in segments]) > 0:
             raise InvalidInputError("segments", code="cycle_zero_duration")
 
 
