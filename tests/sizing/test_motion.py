@@ -31,6 +31,7 @@ from actuator_selection.sizing.motion import (
     piece_arrays,
     profile_of,
     trapezoid,
+    trapezoid_piece_arrays,
 )
 from actuator_selection.sizing.selection import Application
 
@@ -241,6 +242,16 @@ def test_friction_reverses_with_the_motion() -> None:
             "segments.1.start_rpm",
         ),
         ((Segment(duration_s=0, start_rpm=0, end_rpm=0),), "segments"),  # lasts 0 s
+        (
+            (
+                Segment(duration_s=1, start_rpm=0, end_rpm=10),
+                Segment(duration_s=1, start_rpm=10, end_rpm=10),
+                Segment(duration_s=1, start_rpm=10, end_rpm=0),
+                Segment(duration_s=1, start_rpm=-0.0, end_rpm=-5),
+                Segment(duration_s=1, start_rpm=-4, end_rpm=0),
+            ),
+            "segments.4.start_rpm",  # the first jump named, not the last
+        ),
     ],
 )
 def test_a_cycle_that_cannot_repeat_is_refused(segments: tuple[Segment, ...], field: str) -> None:
@@ -257,6 +268,13 @@ def test_a_cycle_that_cannot_repeat_is_refused(segments: tuple[Segment, ...], fi
         ({"duration_s": 1, "start_rpm": 0, "end_rpm": 10, "jerk_share": 1.5}, "jerk_share"),
         ({"duration_s": -1, "start_rpm": 0, "end_rpm": 0}, "duration_s"),
         ({"duration_s": math.inf, "start_rpm": 0, "end_rpm": 0}, "duration_s"),
+        ({"duration_s": 1, "start_rpm": 0, "end_rpm": -math.inf}, "end_rpm"),
+        ({"duration_s": 1, "start_rpm": math.nan, "end_rpm": math.nan}, "start_rpm"),
+        ({"duration_s": 1, "start_rpm": 0, "end_rpm": 0, "jerk_share": math.nan}, "jerk_share"),
+        (
+            {"duration_s": 1, "start_rpm": 0, "end_rpm": 0, "process_torque_nm": math.inf},
+            "process_torque_nm",
+        ),
     ],
 )
 def test_an_impossible_segment_names_its_field(kwargs: dict[str, float], field: str) -> None:
@@ -344,6 +362,37 @@ def test_the_shorthand_profile_is_that_of_its_four_segments_bit_for_bit(seed: in
         assert [_bits(p.static_nm) for p in got.pieces] == [
             _bits(p.static_nm) for p in expected.pieces
         ]
+
+
+def test_one_trapezoid_as_columns_is_its_row_of_many_bit_for_bit() -> None:
+    """A single case's trapezoid pieces are built on Python floats: the very arrays that
+    the same case gets as one row of many, overflows to ±∞ and zeros' signs included."""
+    rng = random.Random(11)
+    names = ("speed_rpm", "accel_s", "constant_s", "decel_s", "pause_s", "torque_nm")
+    rows = [
+        [
+            rng.choice([40.0, 1e300, rng.uniform(0.01, 5000.0)]),
+            rng.choice([0.1, 1e-300, rng.uniform(1e-3, 10.0)]),
+            rng.choice([0.0, rng.uniform(0.0, 5.0)]),
+            rng.choice([0.1, 1e-300, 0.0, rng.uniform(1e-3, 10.0)]),
+            rng.choice([0.0, rng.uniform(0.0, 5.0)]),
+            rng.choice([-0.0, 0.0, 5.0, rng.uniform(0.0, 500.0)]),
+            rng.choice([0.0, 1.3, math.nan, rng.uniform(0.0, 50.0)]),
+        ]
+        for _ in range(300)
+    ]
+    table = np.array(rows, dtype=np.float64)
+
+    def columns(at: slice) -> dict[str, np.ndarray]:
+        out = {name: table[at, k] for k, name in enumerate(names)}
+        return {**out, "inertia_kgm2": table[at, 6]}
+
+    many = trapezoid_piece_arrays(**columns(slice(None)))
+    for i in range(len(rows)):
+        one = trapezoid_piece_arrays(**columns(slice(i, i + 1)))
+        for f in fields(one):
+            expected = getattr(many, f.name)[i : i + 1]
+            assert getattr(one, f.name).tobytes() == expected.tobytes(), (i, f.name)
 
 
 @pytest.mark.parametrize("seed", range(4))

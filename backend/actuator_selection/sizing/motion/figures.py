@@ -97,21 +97,34 @@ def trapezoid_piece_arrays(
     load T_L, J_L), built as columns: the same arrays, bit for bit (a test compares them),
     without a Python object per piece, for batches of thousands of cases."""
     rows = speed_rpm.size
-    with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
-        columns = _trapezoid_columns(
-            speed_rpm,
-            accel_s,
-            constant_s,
-            decel_s,
-            pause_s,
-            torque_nm,
-            inertia_kgm2,
-            np.zeros(rows),
+    tables: FloatArray
+    if rows == 1 and accel_s.item() != 0 and decel_s.item() != 0:
+        # One case (a one-model selection): its pieces on Python floats, the same IEEE
+        # operations (an overflow gives inf; no time divides by 0), in one numpy call
+        # where the arrays took a dozen.
+        one = _trapezoid_columns(
+            *(a.item() for a in (speed_rpm, accel_s, constant_s, decel_s, pause_s)),
+            torque_nm.item(),
+            inertia_kgm2.item(),
+            0.0,
         )
-    # The pieces as columns, every table in one array (quantity × piece × case) seen
-    # transposed: the same values as an array per table (np.stack, then np.array per
-    # table, cost a one-case selection ~7 %, then ~4 % of its time).
-    tables: FloatArray = np.array(columns, dtype=np.float64).transpose(0, 2, 1)
+        tables = np.array(one, dtype=np.float64).reshape(len(one), 1, 4)
+    else:
+        with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
+            columns = _trapezoid_columns(
+                speed_rpm,
+                accel_s,
+                constant_s,
+                decel_s,
+                pause_s,
+                torque_nm,
+                inertia_kgm2,
+                np.zeros(rows),
+            )
+        # The pieces as columns, every table in one array (quantity × piece × case) seen
+        # transposed: the same values as an array per table (np.stack, then np.array per
+        # table, cost a one-case selection ~7 %, then ~4 % of its time).
+        tables = np.array(columns, dtype=np.float64).transpose(0, 2, 1)
     duration, start_rpm, end_rpm, accel_start, accel_end, static, inertia = tables
     return PieceArrays(
         duration=duration,
