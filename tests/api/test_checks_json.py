@@ -6,6 +6,7 @@ from __future__ import annotations
 import dataclasses
 import random
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from tests.oracle.test_engine_parity import (
@@ -18,7 +19,9 @@ from tests.oracle.test_engine_parity import (
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.services.presenters.selection import (
+    _LISTED_UP_TO,
     CHECKS_AS_DICTS_UP_TO,
+    RankedChecks,
     checks_as_dicts,
     checks_as_json,
     checks_of,
@@ -62,3 +65,24 @@ def test_a_large_catalogue_takes_the_json_writer() -> None:
     checks = checks_of(ev)
     assert all(not isinstance(c, list) for c in checks)  # orjson.Fragment, not dicts
     assert dump_json(checks) == dump_json(checks_as_dicts(ev))
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_few_candidates_checks_are_their_rows_of_many(seed: int) -> None:
+    """A few candidates' checks (a one-model selection's) are read in Python, many with
+    numpy: the same dicts, ``approximate`` and ``missing`` where they belong."""
+    rng = random.Random(300 + seed)
+    actuators = [random_actuator(rng, k) for k in range(60)]
+    apps = [random_case(rng, actuators) for _ in range(4)]
+    actuators += boundary_actuators(apps)
+    seen = set()
+    for app in apps:
+        ev = evaluate_batch(actuators, [app], rules=rules_for(app))
+        ranked = RankedChecks.of(ev, np.arange(len(actuators)))
+        whole = ranked.dicts(0, len(actuators))
+        assert ranked.first_missing.size > _LISTED_UP_TO  # the whole: numpy's reading
+        for j in range(len(actuators)):
+            assert ranked.dicts(j, j + 1) == whole[j : j + 1]
+            assert dump_json(ranked.dicts(j, j + 1)) == dump_json(whole[j : j + 1])
+        seen |= {key for row in whole for check in row for key in check}
+    assert {"approximate", "missing"} <= seen

@@ -177,9 +177,19 @@ class RankedChecks:
             ]
             for status, value, limit in zip(statuses, values, limits, strict=True)
         ]
-        for j, k in zip(*np.nonzero(self.approximate[start:stop]), strict=True):
+        approximate, missing = self.approximate[start:stop], self.first_missing[start:stop]
+        if missing.size <= _LISTED_UP_TO:  # a few candidates' checks: read in Python
+            for row, flags, firsts in zip(
+                rows, approximate.tolist(), missing.tolist(), strict=True
+            ):
+                for k, (flag, first) in enumerate(zip(flags, firsts, strict=True)):
+                    if flag:
+                        row[k]["approximate"] = True
+                    if first >= 0:
+                        row[k]["missing"] = self.missing_what[k][first]
+            return rows
+        for j, k in zip(*np.nonzero(approximate), strict=True):
             rows[j][k]["approximate"] = True
-        missing = self.first_missing[start:stop]
         for j, k in zip(*np.nonzero(missing >= 0), strict=True):
             rows[j][k]["missing"] = self.missing_what[k][missing[j, k]]
         return rows
