@@ -103,7 +103,11 @@ def trapezoid_piece_arrays(
         # operations (an overflow gives inf; no time divides by 0), in one numpy call
         # where the arrays took a dozen.
         one = _trapezoid_columns(
-            *(a.item() for a in (speed_rpm, accel_s, constant_s, decel_s, pause_s)),
+            speed_rpm.item(),
+            accel_s.item(),
+            constant_s.item(),
+            decel_s.item(),
+            pause_s.item(),
             torque_nm.item(),
             inertia_kgm2.item(),
             0.0,
