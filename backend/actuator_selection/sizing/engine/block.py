@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence, Sized
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -49,6 +49,16 @@ from actuator_selection.sizing.engine.arrays import (
 from actuator_selection.sizing.engine.cases import Cases, case_operands
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays
 from actuator_selection.sizing.engine.codes import RuleArrays, RuleDetail, status_codes
+from actuator_selection.sizing.engine.formulas import (
+    ARRAY_MATH,
+    FLOAT_MATH,
+    Math,
+    candidate,
+    faster,
+    gear_weight,
+    heated_square,
+    mean_square,
+)
 from actuator_selection.sizing.motion import PieceArrays, heating_gain, mean_abs_speed_rpm
 
 CHECK_NAMES = tuple(rule.name for rule in RULES)
@@ -98,6 +108,16 @@ class Block:
         np.subtract(worst, WARN, out=worst)
         np.maximum(worst, 0, out=worst)
         return worst
+
+
+class Gains(Protocol):
+    """The heating gains of a block (:class:`_HeatingGains`) or a cell (:class:`_CellGains`)."""
+
+    def piece(self, k: int) -> Any:
+        """The gains of piece ``k``."""
+
+    def cycle(self) -> Any:
+        """The gains of the whole cycle."""
 
 
 class _HeatingGains:
@@ -152,6 +172,27 @@ class _HeatingGains:
             column: FloatArray = self._cycle[0][:, np.newaxis]
             return column
         return self._cycle[self._index].T
+
+
+class _CellGains:
+    """:class:`_HeatingGains` of one case × one actuator, as floats: the gains at the
+    actuator's τ_th (published, else the case's), by :func:`heating_gain` as there."""
+
+    def __init__(self, cat: CatalogueArrays, cases: Cases, durations: list[float]) -> None:
+        column = int(cat.tau_column.item())
+        case_tau = float(cases.thermal_time_constant.item())
+        tau = case_tau if column == 0 else cat.published_taus[column - 1]
+        self._pieces = _gains(durations, tau)
+        self._cycle = heating_gain(float(cases.figures.cycle_s.item()), tau)
+        unpublished = bool(cat.tau_unpublished.item())
+        self.time_constant = case_tau if unpublished else float(cat.thermal_time_constant.item())
+        self.assumed = unpublished and bool(cases.thermal_assumed.item())
+
+    def piece(self, k: int) -> float:
+        return self._pieces[k]
+
+    def cycle(self) -> float:
+        return self._cycle
 
 
 def _gains(durations: list[float], tau: float) -> list[float]:
@@ -222,7 +263,7 @@ def _piece_torques(
     if constant.all():
         return t0, t0 * t0
     t1 = static + inertia * accel_end[:, :, col]
-    square = np.where(constant[:, :, col], t0 * t0, (t0 * t0 + t0 * t1 + t1 * t1) / 3.0)
+    square = mean_square(t0, t1, constant[:, :, col], ARRAY_MATH)
     ends = np.stack((t0, t1), axis=2).reshape(t0.shape[0], -1, t0.shape[2])
     return ends, square
 
@@ -232,9 +273,8 @@ def _heating_square(cat: CatalogueArrays, speed: FloatArray, square: FloatArray)
     (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm` with its
     ``no_load_slope``): (√m + k_T·K_INL·|n̄|)² where :attr:`CatalogueArrays.heating_slope`
     is published, else m; ``speed`` the pieces' mean |n|, cases × pieces × 1."""
-    slope = _spread(cat.heating_slope)
-    torque = np.sqrt(square) + slope * speed
-    return np.where(np.isnan(slope), square, torque * torque)
+    heated: FloatArray = heated_square(square, _spread(cat.heating_slope), speed, ARRAY_MATH)
+    return heated
 
 
 def _added_in_order(total: Any, terms: FloatArray) -> FloatArray:
@@ -256,7 +296,7 @@ def _extremes(
     torque of largest magnitude, the first one on a tie (``argmax``; a NaN counts for
     none), for every extreme at once."""
     magnitude = np.abs(ends)
-    candidates = np.where(counts & (magnitude >= 0.0), magnitude, -1.0)
+    candidates = candidate(magnitude, counts, ARRAY_MATH)
     largest = candidates.max(axis=2)
     # The torque at the first largest, by indexes (take_along_axis costs more in Python).
     cases = np.arange(ends.shape[0])[:, np.newaxis]
@@ -272,33 +312,48 @@ _NO_EXTREME = np.array([0.0, math.nan, 0.0])[:, np.newaxis, np.newaxis]
 
 
 def _heated_over(
-    heat: Any, sources: FloatArray, gains: _HeatingGains, first: int = 0, peak: Any = None
+    heat: Any,
+    sources: Iterable[Any],
+    gains: Gains,
+    first: int = 0,
+    peak: Any = None,
+    math_: Math = ARRAY_MATH,
 ) -> tuple[Any, Any]:
     """The winding's heating over the pieces ``first``, ``first + 1``, … whose heat
-    sources are ``sources`` (… × cases × pieces × …): x ← x + (s − x)·g piece by piece
+    sources are ``sources`` (piece by piece: :func:`_by_piece` of arrays, or one cell's
+    floats): x ← x + (s − x)·g piece by piece
     (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm`), and the peak
     of x over the pieces' ends where ``peak`` is given (else None)."""
-    for j in range(sources.shape[-2]):
-        heat = heat + (sources[..., j, :] - heat) * gains.piece(first + j)
+    where = math_.where
+    for j, source in enumerate(sources):
+        heat = heat + (source - heat) * gains.piece(first + j)
         if peak is not None:
-            peak = np.where(heat > peak, heat, peak)
+            peak = where(heat > peak, heat, peak)
     return heat, peak
+
+
+def _by_piece(sources: FloatArray) -> FloatArray:
+    """``sources`` (… × cases × pieces × …) piece by piece, as :func:`_heated_over` reads
+    them: iterating the result gives ``sources[..., j, :]``."""
+    return np.moveaxis(sources, -2, 0)
 
 
 def _periodic_peak(
     heat: Any,
-    groups: Callable[[], Iterable[tuple[int, FloatArray]]],
-    gains: _HeatingGains,
+    groups: Callable[[], Iterable[tuple[int, Iterable[Any]]]],
+    gains: Gains,
     fallback: Any,
+    math_: Math = ARRAY_MATH,
 ) -> Any:
     """The peak of the heating over a repeating cycle: the periodic start x_0 = B/(1 − A)
     from the first pass's ``heat`` (B; ``fallback`` where the cycle's gain is 0), then
     a second pass over the pieces' heat sources (``groups``: (first piece, sources))."""
+    where = math_.where
     cycle_gain = gains.cycle()
-    start = np.where(cycle_gain > 0, heat / np.where(cycle_gain > 0, cycle_gain, 1.0), fallback)
+    start = where(cycle_gain > 0, heat / where(cycle_gain > 0, cycle_gain, 1.0), fallback)
     peak = heat = start
     for first, sources in groups():
-        heat, peak = _heated_over(heat, sources, gains, first, peak)
+        heat, peak = _heated_over(heat, sources, gains, first, peak, math_)
     return peak
 
 
@@ -312,7 +367,7 @@ def _regrouped(
         square = _piece_torques(cat, p, pieces)[1]
         if cat.on_current:
             square = _heating_square(cat, _mean_speeds(p, pieces), square)
-        yield first, square
+        yield first, _by_piece(square)
 
 
 def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
@@ -351,107 +406,26 @@ def evaluate_block(
     T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in the pieces' order,
     T_1, T_2, T_3 the signed torques of largest magnitude (the first one on a tie).
     """
-    col = np.newaxis
-    p = cases.pieces
     # cases × actuators; cases × 1 where the catalogue is a column of pairs (engine.pairs)
     shape = (cases.size, cat.inertia.shape[-1])
-    count = p.duration.shape[1]
-    group = max(1, min(_KEPT_PIECES, _BLOCK_CELLS // max(1, shape[0] * shape[1])))
-    gains = _HeatingGains(cat, cases)
-    # The heating counts the winding current where the catalogue allows (_heating_square).
-    on_current = cat.on_current
-    energy: Any = 0.0
-    heat_energy: Any = 0.0
-    heat: Any = 0.0
-    # Each group's mean T², kept for the second pass where the cycle has few pieces (else
-    # recomputed there, so that memory stays bounded).
-    squares: list[FloatArray] | None = [] if count <= _KEPT_PIECES else None
-    found: FloatArray | None = None  # T_1, T_2, T_3 (extremes × cases × actuators)
-    found_abs: FloatArray = _NO_EXTREME  # their magnitudes
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
-    cube: Any = 0.0
-    weight: Any = 0.0
-    # Which extremes each piece's torques count for: driving, steady, braking.
-    counting = np.stack((~p.braking, p.constant_speed, p.braking))[..., col]
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
-        speeds = _mean_speeds(p)  # each piece's mean |n|, for the heating
-        for first in range(0, count, group):
-            pieces = slice(first, first + group)
-            ends, square = _piece_torques(cat, p, pieces)
-            duration = p.duration[:, pieces]
-            # ∫T² dt of the pieces: each one's mean T² times its duration, in order.
-            energy = _added_in_order(energy, square * duration[:, :, col])
-            if on_current:
-                square = _heating_square(cat, speeds[:, pieces], square)
-                heat_energy = _added_in_order(heat_energy, square * duration[:, :, col])
-            else:
-                heat_energy = energy
-            if squares is None:  # a long cycle: its first heating pass group by group
-                heat, _ = _heated_over(heat, square, gains, first)
-            else:
-                squares.append(square)
-            counts = counting[:, :, pieces]
-            if ends.shape[1] > square.shape[1]:  # a start and an end per piece
-                counts = counts.repeat(2, axis=2)
-            found, found_abs = _extremes(found, found_abs, ends, counts)
-            if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
-                w = (np.abs(p.start_rpm[:, pieces]) + np.abs(p.end_rpm[:, pieces])) / 2.0 * duration
-                largest = np.abs(ends)
-                if ends.shape[1] > square.shape[1]:
-                    largest = np.maximum(largest[:, 0::2], largest[:, 1::2])
-                cube = _added_in_order(cube, w[:, :, col] * (largest * largest * largest))
-                weight = _added_in_order(weight, w.copy())
-        assert found is not None
-        accel, constant, decel = found
-        rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
-        gear_cube = cube / weight[:, col] if averaged else math.nan  # no rule reads it
-        # The heating's peaks (Profile.thermal_torque_nm, .thermal_speed_rpm): of T², and
-        # of |n| (at least n_av), over the repeating cycle.
-        mean = cases.figures.mean_speed_rpm[:, col]
-        torque_fallback = heat_energy / cases.figures.cycle_s[:, col]
-        if squares is None:  # the second pass recomputes each group's mean T²
-            torque_peak = _periodic_peak(
-                heat,
-                lambda: _regrouped(cat, p, group),
-                gains,
-                torque_fallback,
-            )
+        if shape == (1, 1) and cat.inertia.size == 1:  # one cell: its floats
+            cell = _cell_cycle(cat, cases, averaged)
         else:
-            square = squares[0] if len(squares) == 1 else np.concatenate(squares, axis=1)
-            if shape[0] * shape[1] <= _STACKED_CELLS:  # T² and |n| heated as one array
-                sources = np.empty((2, *square.shape))
-                sources[0], sources[1] = square, speeds
-                fallback = np.empty((2, *shape))
-                fallback[0], fallback[1] = torque_fallback, mean
-                torque_peak, speed_peak = _periodic_peak(
-                    _heated_over(0.0, sources, gains)[0],
-                    lambda: ((0, sources),),
-                    gains,
-                    fallback,
-                )
-            else:
-                torque_peak = _periodic_peak(
-                    _heated_over(0.0, square, gains)[0],
-                    lambda: ((0, square),),
-                    gains,
-                    torque_fallback,
-                )
-        if squares is None or shape[0] * shape[1] > _STACKED_CELLS:
-            speed_peak = _periodic_peak(
-                _heated_over(0.0, speeds, gains)[0], lambda: ((0, speeds),), gains, mean
-            )
-        thermal_torque = np.sqrt(torque_peak)
-        thermal_speed = np.where(speed_peak > mean, speed_peak, mean)
-        accel_torque, decel_torque, constant_torque = accel, decel, constant
-        if cat.inertia_unknown:  # no J_A: no torques (the candidate's None); each array is
-            unknown = np.isnan(cat.inertia)  # of the block's shape: unchanged where J_A is known
-            accel_torque = np.where(unknown, math.nan, accel)
-            decel_torque = np.where(unknown, math.nan, decel)
-            rms_torque = np.where(unknown, math.nan, rms_torque)
-            thermal_torque = np.where(unknown, math.nan, thermal_torque)
-            constant_torque = np.where(unknown, math.nan, constant)
-            gear_cube = np.where(unknown, math.nan, gear_cube)
+            cell = _block_cycle(cat, cases, shape, averaged)
+        (
+            accel_torque,
+            constant_torque,
+            decel_torque,
+            rms_torque,
+            thermal_torque,
+            thermal_speed,
+            gear_cube,
+            time_constant,
+            assumed,
+        ) = cell
         zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
         if cat.zone_columns.size:
             zone_torque = np.full(shape, math.nan)
@@ -464,8 +438,8 @@ def evaluate_block(
                 "decel_torque_nm": decel_torque,
                 "rms_torque_nm": rms_torque,
                 "zone_torque_nm": zone_torque,
-                "thermal_time_constant_s": gains.time_constant,
-                "thermal_time_constant_assumed": gains.assumed,
+                "thermal_time_constant_s": time_constant,
+                "thermal_time_constant_assumed": assumed,
                 "thermal_torque_nm": thermal_torque,
                 "thermal_speed_rpm": thermal_speed,
                 "gear_torque_cube_nm3": gear_cube,
@@ -485,6 +459,210 @@ def evaluate_block(
         checks=checks,
         operands=q if detail else None,
     )
+
+
+def _block_cycle(
+    cat: CatalogueArrays, cases: Cases, shape: tuple[int, int], averaged: bool
+) -> tuple[Any, ...]:
+    """:func:`evaluate_block`'s cycle on arrays: T_1, T_2, T_3, T_rms, the heating's
+    torque and speed, the gear's Σ|n|·t·|T|³/Σ|n|·t (NaN where no rule reads it), τ_th
+    and whether it is assumed, cases × actuators. Called with numpy's errors ignored."""
+    col = np.newaxis
+    p = cases.pieces
+    count = p.duration.shape[1]
+    group = max(1, min(_KEPT_PIECES, _BLOCK_CELLS // max(1, shape[0] * shape[1])))
+    gains = _HeatingGains(cat, cases)
+    # The heating counts the winding current where the catalogue allows (_heating_square).
+    on_current = cat.on_current
+    energy: Any = 0.0
+    heat_energy: Any = 0.0
+    heat: Any = 0.0
+    # Each group's mean T², kept for the second pass where the cycle has few pieces (else
+    # recomputed there, so that memory stays bounded).
+    squares: list[FloatArray] | None = [] if count <= _KEPT_PIECES else None
+    found: FloatArray | None = None  # T_1, T_2, T_3 (extremes × cases × actuators)
+    found_abs: FloatArray = _NO_EXTREME  # their magnitudes
+    cube: Any = 0.0
+    weight: Any = 0.0
+    # Which extremes each piece's torques count for: driving, steady, braking.
+    counting = np.stack((~p.braking, p.constant_speed, p.braking))[..., col]
+    speeds = _mean_speeds(p)  # each piece's mean |n|, for the heating
+    for first in range(0, count, group):
+        pieces = slice(first, first + group)
+        ends, square = _piece_torques(cat, p, pieces)
+        duration = p.duration[:, pieces]
+        # ∫T² dt of the pieces: each one's mean T² times its duration, in order.
+        energy = _added_in_order(energy, square * duration[:, :, col])
+        if on_current:
+            square = _heating_square(cat, speeds[:, pieces], square)
+            heat_energy = _added_in_order(heat_energy, square * duration[:, :, col])
+        else:
+            heat_energy = energy
+        if squares is None:  # a long cycle: its first heating pass group by group
+            heat, _ = _heated_over(heat, _by_piece(square), gains, first)
+        else:
+            squares.append(square)
+        counts = counting[:, :, pieces]
+        if ends.shape[1] > square.shape[1]:  # a start and an end per piece
+            counts = counts.repeat(2, axis=2)
+        found, found_abs = _extremes(found, found_abs, ends, counts)
+        if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
+            w = gear_weight(p.start_rpm[:, pieces], p.end_rpm[:, pieces], duration)
+            largest = np.abs(ends)
+            if ends.shape[1] > square.shape[1]:
+                largest = np.maximum(largest[:, 0::2], largest[:, 1::2])
+            cube = _added_in_order(cube, w[:, :, col] * (largest * largest * largest))
+            weight = _added_in_order(weight, w.copy())
+    assert found is not None
+    accel, constant, decel = found
+    rms_torque = np.sqrt(energy / cases.figures.cycle_s[:, col])
+    gear_cube = cube / weight[:, col] if averaged else math.nan  # no rule reads it
+    # The heating's peaks (Profile.thermal_torque_nm, .thermal_speed_rpm): of T², and
+    # of |n| (at least n_av), over the repeating cycle.
+    mean = cases.figures.mean_speed_rpm[:, col]
+    torque_fallback = heat_energy / cases.figures.cycle_s[:, col]
+    if squares is None:  # the second pass recomputes each group's mean T²
+        torque_peak = _periodic_peak(
+            heat,
+            lambda: _regrouped(cat, p, group),
+            gains,
+            torque_fallback,
+        )
+    else:
+        square = squares[0] if len(squares) == 1 else np.concatenate(squares, axis=1)
+        if shape[0] * shape[1] <= _STACKED_CELLS:  # T² and |n| heated as one array
+            sources = np.empty((2, *square.shape))
+            sources[0], sources[1] = square, speeds
+            fallback = np.empty((2, *shape))
+            fallback[0], fallback[1] = torque_fallback, mean
+            by_piece = _by_piece(sources)
+            torque_peak, speed_peak = _periodic_peak(
+                _heated_over(0.0, by_piece, gains)[0],
+                lambda: ((0, by_piece),),
+                gains,
+                fallback,
+            )
+        else:
+            by_piece = _by_piece(square)
+            torque_peak = _periodic_peak(
+                _heated_over(0.0, by_piece, gains)[0],
+                lambda: ((0, by_piece),),
+                gains,
+                torque_fallback,
+            )
+    if squares is None or shape[0] * shape[1] > _STACKED_CELLS:
+        by_piece = _by_piece(speeds)
+        speed_peak = _periodic_peak(
+            _heated_over(0.0, by_piece, gains)[0], lambda: ((0, by_piece),), gains, mean
+        )
+    thermal_torque = np.sqrt(torque_peak)
+    thermal_speed = faster(speed_peak, mean, ARRAY_MATH)
+    accel_torque, decel_torque, constant_torque = accel, decel, constant
+    if cat.inertia_unknown:  # no J_A: no torques (the candidate's None); each array is
+        unknown = np.isnan(cat.inertia)  # of the block's shape: unchanged where J_A is known
+        accel_torque = np.where(unknown, math.nan, accel)
+        decel_torque = np.where(unknown, math.nan, decel)
+        rms_torque = np.where(unknown, math.nan, rms_torque)
+        thermal_torque = np.where(unknown, math.nan, thermal_torque)
+        constant_torque = np.where(unknown, math.nan, constant)
+        gear_cube = np.where(unknown, math.nan, gear_cube)
+    return (
+        accel_torque,
+        constant_torque,
+        decel_torque,
+        rms_torque,
+        thermal_torque,
+        thermal_speed,
+        gear_cube,
+        gains.time_constant,
+        gains.assumed,
+    )
+
+
+def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any, ...]:
+    """:func:`_block_cycle` for one case × one actuator, on Python floats: the same
+    formulas (:mod:`~actuator_selection.sizing.engine.formulas` with
+    :data:`~actuator_selection.sizing.engine.formulas.FLOAT_MATH`, :func:`_heated_over`,
+    :func:`_periodic_peak`), piece after piece, each sum in the pieces' order and each
+    extreme the first of largest magnitude, as the arrays' cumulative sums and ``argmax``
+    take them; the results as arrays of one cell. A piece whose acceleration is constant
+    counts its start torque only (its end's is equal, at most the sign of a zero differs:
+    never a larger magnitude, never the first)."""
+    m = FLOAT_MATH
+    p, f = cases.pieces, cases.figures
+    columns = (p.duration, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end)
+    t, n0, n1, a0, a1 = (c[0].tolist() for c in columns)
+    static, load_inertia = p.static[0].tolist(), p.inertia[0].tolist()
+    braking, steady = p.braking[0].tolist(), p.constant_speed[0].tolist()
+    j_a, slope = float(cat.inertia.item()), float(cat.heating_slope.item())
+    cycle, mean = float(f.cycle_s.item()), float(f.mean_speed_rpm.item())
+    gains = _CellGains(cat, cases, t)
+    inertia = [j_a + j for j in load_inertia]
+    t0 = [c + j * a for c, j, a in zip(static, inertia, a0, strict=True)]
+    t1 = [c + j * a for c, j, a in zip(static, inertia, a1, strict=True)]
+    constant = [x == y for x, y in zip(a0, a1, strict=True)]
+    squares = [mean_square(x, y, c, m) for x, y, c in zip(t0, t1, constant, strict=True)]
+    speeds = [mean_abs_speed_rpm(*piece) for piece in zip(*(t, n0, n1, a0, a1), strict=True)]
+    energy = heat_energy = 0.0
+    for square, duration in zip(squares, t, strict=True):
+        energy = energy + square * duration
+    heating = squares
+    if cat.on_current:
+        heating = [heated_square(x, slope, n, m) for x, n in zip(squares, speeds, strict=True)]
+        for square, duration in zip(heating, t, strict=True):
+            heat_energy = heat_energy + square * duration
+    else:
+        heat_energy = energy
+    # T_1, T_2, T_3: the first end of largest magnitude among the driving, steady, braking
+    ends = [(x,) if c else (x, y) for x, y, c in zip(t0, t1, constant, strict=True)]
+    found = []
+    for default, counting in zip(
+        _NO_EXTREME.ravel().tolist(), ([not b for b in braking], steady, braking), strict=True
+    ):
+        torque, largest = default, -1.0
+        for piece_ends, counts in zip(ends, counting, strict=True):
+            for end in piece_ends:
+                magnitude = candidate(abs(end), counts, m)
+                if magnitude > largest:
+                    torque, largest = end, magnitude
+        found.append(torque)
+    accel, constant_torque, decel = found
+    gear_cube = math.nan  # no rule reads it
+    if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
+        cube = weight = 0.0
+        for x, y, start, end, duration in zip(t0, t1, n0, n1, t, strict=True):
+            w = gear_weight(start, end, duration)
+            larger = m.maximum(abs(x), abs(y))
+            cube = cube + w * (larger * larger * larger)
+            weight = weight + w
+        gear_cube = m.divide(cube, weight)
+    rms_torque = m.sqrt(m.divide(energy, cycle))
+    torque_peak = _periodic_peak(
+        _heated_over(0.0, heating, gains, math_=m)[0],
+        lambda: ((0, heating),),
+        gains,
+        m.divide(heat_energy, cycle),
+        m,
+    )
+    speed_peak = _periodic_peak(
+        _heated_over(0.0, speeds, gains, math_=m)[0], lambda: ((0, speeds),), gains, mean, m
+    )
+    thermal_torque = m.sqrt(torque_peak)
+    if j_a != j_a:  # no J_A: no torques (the candidate's None)
+        accel = decel = rms_torque = thermal_torque = constant_torque = gear_cube = math.nan
+    cell = np.array(
+        [
+            accel,
+            constant_torque,
+            decel,
+            rms_torque,
+            thermal_torque,
+            faster(speed_peak, mean, m),
+            gear_cube,
+            gains.time_constant,
+        ]
+    ).reshape(8, 1, 1)
+    return (*cell, np.full((1, 1), gains.assumed))
 
 
 def operands_of(

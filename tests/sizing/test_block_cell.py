@@ -1,0 +1,133 @@
+"""One cell's floats equal the block's arrays, bit for bit.
+
+A block of one case × one actuator (a one-model selection's) runs the block's formulas on
+Python floats (``engine.formulas.FLOAT_MATH``); any other block on arrays. These tests
+run both on the same cells, including cells whose inputs make numpy give ±∞ and NaN where
+Python's floats would raise, and compare every result by its bits.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import math
+import random
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import pytest
+from tests.oracle.test_engine_parity import random_actuator, random_case, random_motion_case
+
+from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.engine.block import _block_cycle, _cell_cycle
+from actuator_selection.sizing.engine.cases import Cases, cases_of
+from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
+from actuator_selection.sizing.engine.formulas import float_divide, float_maximum, float_sqrt
+from actuator_selection.sizing.selection import Application
+
+SPECIAL = (0.0, -0.0, 1.0, -2.5, 3.0, 5e-324, 1e-300, 1e300, -1e300, math.inf, -math.inf, math.nan)
+"""Inputs where floats and arrays part most easily: signed zeros, subnormals, overflow."""
+
+DURATIONS = tuple(x for x in SPECIAL if not x < 0.0)
+"""Of :data:`SPECIAL`, those a duration may take (``heating_gain`` overflows on a
+negative one, in both paths alike: the inputs' validation refuses them)."""
+
+
+def same_bits(a: Any, b: Any) -> bool:
+    """Equal IEEE doubles (−0.0 ≠ 0.0), any NaN equal to any NaN (JSON has no payload)."""
+    x, y = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    if x.shape != y.shape:
+        return False
+    both_nan = np.isnan(x) & np.isnan(y)
+    return bool(np.all(both_nan | (x.view(np.uint64) == y.view(np.uint64))))
+
+
+def assert_cell_equals_block(cat: CatalogueArrays, cases: Cases) -> None:
+    with np.errstate(all="ignore"):
+        block = _block_cycle(cat, cases, (1, 1), True)
+        cell = _cell_cycle(cat, cases, True)
+    assert len(cell) == len(block)
+    for k, (x, y) in enumerate(zip(cell, block, strict=True)):
+        y = np.broadcast_to(y, (1, 1))
+        assert np.shape(x) == (1, 1), k
+        assert same_bits(x, y), (k, x, y)
+
+
+def heated(rng: random.Random, actuator: Actuator) -> Actuator:
+    """``actuator`` with what makes its heating follow the current, or a published τ_th."""
+    changes: dict[str, Any] = {}
+    if rng.random() < 0.5:
+        changes |= {
+            "stall_torque_nm": rng.uniform(1, 800),
+            "zone": None,
+            "torque_constant_nm_per_a": rng.uniform(0.1, 20),
+            "no_load_current_constant_30c_a_per_rpm": rng.uniform(1e-4, 1e-2),
+        }
+    if rng.random() < 0.4:
+        changes["thermal_time_constant_s"] = rng.choice([1.0, 600.0, rng.uniform(1, 3000)])
+    return dataclasses.replace(actuator, **changes)
+
+
+def cells(seed: int, count: int) -> list[tuple[Actuator, Application]]:
+    rng = random.Random(seed)
+    out = []
+    for k in range(count):
+        actuator = heated(rng, random_actuator(rng, k))
+        app = random_motion_case(rng) if rng.random() < 0.5 else random_case(rng, [actuator])
+        out.append((actuator, app))
+    return out
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_one_cell_on_floats_equals_the_block_on_arrays(seed: int) -> None:
+    for actuator, app in cells(seed, 60):
+        assert_cell_equals_block(catalogue_arrays([actuator]), cases_of([app]))
+
+
+def with_inputs(cases: Cases, rng: random.Random) -> Cases:
+    """``cases`` (one) with its pieces' and cycle's numbers drawn from :data:`SPECIAL`."""
+    p, f = cases.pieces, cases.figures
+    p.duration[0] = [rng.choice(DURATIONS) for _ in range(p.duration.shape[1])]
+    for column in (p.start_rpm, p.end_rpm, p.accel_start, p.accel_end, p.static, p.inertia):
+        column[0] = [rng.choice(SPECIAL) for _ in range(column.shape[1])]
+    f.cycle_s[0] = rng.choice(DURATIONS)
+    f.mean_speed_rpm[0] = rng.choice(SPECIAL)
+    return cases
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_zero_durations_overflow_and_nan_agree(seed: int) -> None:
+    """0 s cycles and pieces, ±∞, NaN and overflowing products: where numpy gives ±∞ or
+    NaN the floats give the same, never ZeroDivisionError or ValueError."""
+    rng = random.Random(seed)
+    for actuator, app in cells(100 + seed, 80):
+        cat = catalogue_arrays([actuator])
+        cat.inertia[...] = rng.choice([*SPECIAL[:-1], float(cat.inertia[0])])
+        cat.heating_slope[...] = np.where(
+            np.isnan(cat.heating_slope), math.nan, rng.choice(SPECIAL[:-1])
+        )
+        assert_cell_equals_block(cat, with_inputs(cases_of([app]), rng))
+
+
+def test_a_cycle_of_zero_time_gives_nan_not_an_error() -> None:
+    """The case the float helpers are for: 0/0 and √(negative) on floats raise in Python."""
+    actuator, app = cells(7, 1)[0]
+    cases = cases_of([app])
+    cases.pieces.duration[...] = 0.0
+    cases.figures.cycle_s[...] = 0.0
+    cases.pieces.static[0, 0] = -math.inf
+    assert_cell_equals_block(catalogue_arrays([actuator]), cases)
+
+
+def pairs(values: Sequence[float]) -> list[tuple[float, float]]:
+    return list(itertools.product(values, values))
+
+
+def test_float_helpers_are_numpys_operations() -> None:
+    with np.errstate(all="ignore"):
+        for a, b in pairs(SPECIAL):
+            assert same_bits(float_divide(a, b), np.divide(a, b)), (a, b)
+            assert same_bits(float_maximum(a, b), np.maximum(a, b)), (a, b)
+        for x in SPECIAL:
+            assert same_bits(float_sqrt(x), np.sqrt(x)), x
