@@ -16,13 +16,26 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pytest
-from tests.oracle.test_engine_parity import random_actuator, random_case, random_motion_case
+from tests.oracle.test_engine_parity import (
+    random_actuator,
+    random_case,
+    random_motion_case,
+    with_gear_stiffness_brake,
+)
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.sizing.engine.block import _block_cycle, _cell_cycle
-from actuator_selection.sizing.engine.cases import Cases, cases_of
+from actuator_selection.sizing.checks import ALL_RULES, Rule
+from actuator_selection.sizing.engine.block import (
+    _block_cycle,
+    _cell_cycle,
+    _floats,
+    evaluate_block,
+)
+from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
+from actuator_selection.sizing.engine.codes import _cell_codes, lacking, status_codes
 from actuator_selection.sizing.engine.formulas import float_divide, float_maximum, float_sqrt
 from actuator_selection.sizing.selection import Application
 
@@ -131,3 +144,59 @@ def test_float_helpers_are_numpys_operations() -> None:
             assert same_bits(float_maximum(a, b), np.maximum(a, b)), (a, b)
         for x in SPECIAL:
             assert same_bits(float_sqrt(x), np.sqrt(x)), x
+
+
+def assert_cell_codes_equal_array_codes(
+    actuator: Actuator, app: Application, rules: Sequence[Rule] = ALL_RULES, **kw: Any
+) -> bool:
+    """The codes of one cell on floats equal those on arrays; whether the floats decided
+    (rather than raised, and left the arrays to decide)."""
+    cat = catalogue_arrays([actuator])
+    cases = cases_of([app])
+    with np.errstate(all="ignore"):
+        block = evaluate_block(
+            cat,
+            cases,
+            zone_limits([actuator], cat.zone_columns, cases.mean_speed),
+            rules,
+            detail=True,
+        )
+        q = block.operands
+        assert q is not None
+        floats = _floats(q, True)
+        assert floats is not None
+        decided = _cell_codes(rules, floats, lacking(rules, q, cat), **kw) is not None
+        on_floats = status_codes(rules, q, cat, (1, 1), cell=floats, **kw)
+        on_arrays = status_codes(rules, q, cat, (1, 1), **kw)
+    pairs_of: list[tuple[npt.NDArray[Any], npt.NDArray[Any]]] = [
+        (on_floats[0], on_arrays[0]),
+        (on_floats[1], on_arrays[1]),
+    ]
+    for x, y in pairs_of:
+        assert x.dtype == y.dtype
+        assert same_bits(x, y) if x.dtype == np.float64 else np.array_equal(x, y)
+    if on_arrays[2] is None:
+        assert on_floats[2] is None
+        return decided
+    assert on_floats[2] is not None
+    for name in ("values", "limits", "approximate", "first_missing"):
+        x, y = getattr(on_floats[2], name), getattr(on_arrays[2], name)
+        assert x.dtype == y.dtype, name
+        assert x.shape == y.shape, name
+        assert same_bits(x, y) if x.dtype == np.float64 else np.array_equal(x, y), name
+    return decided
+
+
+@pytest.mark.parametrize("seed", range(4))
+@pytest.mark.parametrize(("detail", "overload"), [(True, True), (False, True), (False, False)])
+def test_one_cells_codes_on_floats_equal_the_arrays(
+    seed: int, detail: bool, overload: bool
+) -> None:
+    rng = random.Random(seed)
+    on_floats = 0
+    for actuator, app in cells(200 + seed, 40):
+        actuator = with_gear_stiffness_brake(rng, actuator) if rng.random() < 0.5 else actuator
+        on_floats += assert_cell_codes_equal_array_codes(
+            actuator, app, detail=detail, overload=overload
+        )
+    assert on_floats >= 30  # the floats decide (a formula seldom raises on them)

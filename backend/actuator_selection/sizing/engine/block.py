@@ -411,7 +411,8 @@ def evaluate_block(
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
-        if shape == (1, 1) and cat.inertia.size == 1:  # one cell: its floats
+        cell_path = shape == (1, 1) and cat.inertia.size == 1
+        if cell_path:  # one cell: its floats
             cell = _cell_cycle(cat, cases, averaged)
         else:
             cell = _block_cycle(cat, cases, shape, averaged)
@@ -447,7 +448,7 @@ def evaluate_block(
         )
         # NaN where data is missing: masked by the codes
         statuses, worst, checks = status_codes(
-            rules, q, cat, shape, detail=detail, overload=overload
+            rules, q, cat, shape, detail=detail, overload=overload, cell=_floats(q, cell_path)
         )
     return Block(
         accel_torque=accel_torque,
@@ -663,6 +664,15 @@ def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any
         ]
     ).reshape(8, 1, 1)
     return (*cell, np.full((1, 1), gains.assumed))
+
+
+def _floats(q: Operands, cell: bool) -> Operands | None:
+    """The operands of a block of one cell as Python floats (and bools), for the rules
+    on floats (:func:`~actuator_selection.sizing.engine.codes.status_codes`); None for a
+    larger block."""
+    if not cell:
+        return None
+    return Operands._make([v.item() if isinstance(v, np.ndarray) else v for v in q])
 
 
 def operands_of(

@@ -87,6 +87,9 @@ class Lacking:
     floors: tuple[int, ...]
     """The rules that may fail on their lower bound: where only their first requirement
     (J_A) is missing."""
+    cell: tuple[list[int], list[bool]] = ([], [])
+    """For one actuator: :attr:`first_missing` and :attr:`others_missing` rule by rule, as
+    Python values (a block of one cell decides on floats); else empty."""
 
 
 @dataclass(frozen=True, slots=True, eq=False)

@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from actuator_selection.sizing.checks import Operands, Ops, Rule
+from actuator_selection.sizing.checks import FLOAT_OPS, Operands, Ops, Rule
 from actuator_selection.sizing.engine.arrays import (
     FAIL,
     NO_DATA,
@@ -38,6 +38,7 @@ from actuator_selection.sizing.engine.arrays import (
     FloatArray,
 )
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, Lacking
+from actuator_selection.sizing.engine.formulas import float_maximum
 
 
 def _python_pow(x: Any, exponent: float) -> Any:
@@ -148,12 +149,14 @@ def summarised(
     somewhere: list[bool] = np.asarray(
         (first_missing >= 0).reshape(len(rules), -1).any(axis=1)
     ).tolist()
+    one = first_missing.size == len(rules)  # one actuator: its values rule by rule
     return Lacking(
         first_missing=first_missing,
         others_missing=others_missing,
         everywhere=tuple(everywhere),
         somewhere=tuple(somewhere),
         floors=tuple(floors),
+        cell=(first_missing.ravel().tolist(), others_missing.ravel().tolist()) if one else ([], []),
     )
 
 
@@ -171,6 +174,7 @@ def status_codes(
     *,
     detail: bool = False,
     overload: bool = True,
+    cell: Operands | None = None,
 ) -> tuple[CodeArray, FloatArray, RuleArrays | None]:
     """Every rule's codes for the block (:meth:`~actuator_selection.sizing.checks.Rule.check`
     on arrays), rules × cases × actuators; the largest overload of the rules per cell
@@ -185,8 +189,13 @@ def status_codes(
     temporaries left the cache and deciding took twice as long).
 
     Called with numpy's floating-point errors ignored: NaN where data is missing is
-    masked here."""
+    masked here. ``cell``: the operands of a block of one cell as floats, decided on
+    floats (:func:`_cell_codes`) unless a formula raises there."""
     lack = lacking(rules, q, cat)
+    if cell is not None:
+        found = _cell_codes(rules, cell, lack, detail=detail, overload=overload)
+        if found is not None:
+            return found
     stacked = (len(rules), *shape)
     codes = np.empty(stacked, dtype=np.int8)
     out = None
@@ -287,6 +296,79 @@ def _decided(
             np.copyto(out.approximate, False, where=not_applying)
             np.copyto(out.first_missing, -1, where=not_applying)
     return worst
+
+
+def _cell_codes(
+    rules: Sequence[Rule], q: Operands, lack: Lacking, *, detail: bool, overload: bool
+) -> tuple[CodeArray, FloatArray, RuleArrays | None] | None:
+    """:func:`status_codes` for a block of one cell, its operands ``q`` floats: each rule's
+    formulas on Python floats (:data:`~actuator_selection.sizing.checks.FLOAT_OPS`, as the
+    words of a check compute them), decided as :func:`_decided` decides each cell: every
+    value as the arrays hold it (a truth as ``bool``, a number as ``float``), the same
+    comparisons in the same order; the arrays of one cell built at the end. None where a
+    formula raises on floats (a division by zero, the root of a negative number, where
+    numpy gives ±∞ or NaN): the caller decides on arrays then.
+
+    Why: a one-model selection is a block of one cell, where each numpy call costs its
+    fixed overhead for one number, some five calls per rule."""
+    xp = FLOAT_OPS
+    first_missing, others_missing = lack.cell
+    codes: list[int] = []
+    values: list[float] = []
+    limits: list[float] = []
+    approximates: list[bool] = []
+    reported_missing = list(first_missing)
+    worst = 0.0
+    try:
+        for k, rule in enumerate(rules):
+            applies = True if rule.applies is None else bool(rule.applies(q, xp))
+            within = binding = True
+            approximate = False
+            if lack.everywhere[k]:  # no data: only the value, as reported
+                value = float(rule.value(q, xp)) if detail else math.nan
+                limit = math.nan
+            else:
+                value, limit = float(rule.value(q, xp)), float(rule.limit(q, xp))
+                if rule.within is not None:
+                    within = bool(rule.within(q, xp))
+                if rule.binding is not None:
+                    binding = bool(rule.binding(q, xp))
+                if detail and rule.approximate is not None:
+                    approximate = bool(rule.approximate(q, xp))
+            code = PASS if value <= limit and within else FAIL if binding else WARN
+            missing = first_missing[k] >= 0
+            if k in lack.floors and first_missing[k] == 0 and not others_missing[k] and binding:
+                floor = float(rule.lower_bound(q, xp))  # type: ignore[misc]
+                if floor > limit or not within:  # fails on the least value over every J_A
+                    value, missing, code = floor, False, FAIL
+            if missing:
+                code, limit, approximate = NO_DATA, math.nan, False
+            if not applies:
+                code, value, limit, approximate = NOT_APPLICABLE, math.nan, math.nan, False
+                reported_missing[k] = -1
+            if overload and code == FAIL:
+                no_limit = limit != limit or limit <= 0 or value != value
+                over = math.inf if no_limit else float_maximum(value / limit, 1.0)
+                worst = float_maximum(worst, over)
+            codes.append(int(code))
+            values.append(value)
+            limits.append(limit)
+            approximates.append(approximate)
+    except (ArithmeticError, ValueError):
+        return None
+    shape = (len(rules), 1, 1)
+    statuses = np.array(codes, dtype=np.int8).reshape(shape)
+    out = None
+    if detail:
+        out = RuleArrays(
+            values=np.array(values).reshape(shape),
+            limits=np.array(limits).reshape(shape),
+            approximate=np.array(approximates, dtype=np.bool_).reshape(shape),
+            first_missing=np.array(reported_missing, dtype=np.int8).reshape(shape),
+        )
+    if not overload:
+        return statuses, NO_OVERLOAD, out
+    return statuses, np.full((1, 1), worst), out
 
 
 NO_OVERLOAD: FloatArray = np.zeros(())
