@@ -30,9 +30,9 @@ last one's heat), T² and |n| in one array in a small block. Facts about the act
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence, Sized
+from collections.abc import Iterator, Mapping, Sequence, Sized
 from dataclasses import dataclass
-from typing import Any, Protocol
+from typing import Any
 
 import numpy as np
 
@@ -44,22 +44,32 @@ from actuator_selection.sizing.engine.arrays import (
     BoolArray,
     CodeArray,
     FloatArray,
-    IndexArray,
 )
 from actuator_selection.sizing.engine.cases import Cases, case_operands
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays
-from actuator_selection.sizing.engine.codes import RuleArrays, RuleDetail, status_codes
+from actuator_selection.sizing.engine.codes import (
+    RuleArrays,
+    RuleDetail,
+    cell_codes,
+    lacking,
+    status_codes,
+)
 from actuator_selection.sizing.engine.formulas import (
     ARRAY_MATH,
     FLOAT_MATH,
-    Math,
-    candidate,
     faster,
     gear_weight,
     heated_square,
     mean_square,
 )
-from actuator_selection.sizing.motion import PieceArrays, heating_gain, mean_abs_speed_rpm
+from actuator_selection.sizing.engine.heating import (
+    CellGains,
+    HeatingGains,
+    by_piece,
+    heated_over,
+    periodic_peak,
+)
+from actuator_selection.sizing.motion import PieceArrays, mean_abs_speed_rpm
 
 CHECK_NAMES = tuple(rule.name for rule in RULES)
 """The chapter's checks in flowchart order (:data:`~actuator_selection.sizing.checks.RULES`)."""
@@ -108,132 +118,6 @@ class Block:
         np.subtract(worst, WARN, out=worst)
         np.maximum(worst, 0, out=worst)
         return worst
-
-
-class Gains(Protocol):
-    """The heating gains of a block (:class:`_HeatingGains`) or a cell (:class:`_CellGains`)."""
-
-    def piece(self, k: int) -> Any:
-        """The gains of piece ``k``."""
-
-    def cycle(self) -> Any:
-        """The gains of the whole cycle."""
-
-
-class _HeatingGains:
-    """g = 1 − e^(−t/τ_th) of each piece and of the whole cycle for a block, case ×
-    actuator (:meth:`~actuator_selection.sizing.motion.Profile.heating_gains`).
-
-    τ_th is the actuator's catalogue value where published, else the case's (given or
-    assumed). The gains are computed with ``math.expm1`` on Python floats
-    (:func:`~actuator_selection.sizing.motion.heating_gain`), as Python's floats
-    compute them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
-    the distinct τ_th values are computed: the case's, and each published one (the
-    catalogue's :attr:`~CatalogueArrays.published_taus`, found once per catalogue).
-    """
-
-    def __init__(self, cat: CatalogueArrays, cases: Cases) -> None:
-        values = cat.published_taus
-        durations, cycles = cases.pieces.duration, cases.figures.cycle_s
-        count = durations.shape[1]
-        if cases.size == 1:  # one case (a selection's): its few gains straight from floats,
-            row, cycle = durations[0].tolist(), float(cycles[0])  # one table: the pieces',
-            taus = [float(cases.thermal_time_constant[0]), *values]  # then the cycle's
-            table = np.array([_gains([*row, cycle], tau) for tau in taus], dtype=np.float64)
-            pieces, whole = table[:, :count], table[:, count]
-        else:  # per case, gains for its own τ_th (row 0) and each published τ_th (1, 2, …)
-            columns = [cases.thermal_time_constant, *(np.full(cases.size, v) for v in values)]
-            gains = [_case_gains(durations, cycles, tau) for tau in columns]
-            pieces = np.array([piece for piece, _ in gains], dtype=np.float64)
-            whole = np.array([cycle for _, cycle in gains], dtype=np.float64)
-        self._pieces = pieces.reshape(len(values) + 1, cases.size, count)
-        self._cycle = whole.reshape(len(values) + 1, cases.size)
-        self._index = cat.tau_column
-        self._mixed = bool(values)
-        case_tau = cases.thermal_time_constant[:, np.newaxis]
-        unpublished = cat.tau_unpublished
-        self.time_constant: FloatArray = np.where(unpublished, case_tau, cat.thermal_time_constant)
-        self.assumed: BoolArray = unpublished & cases.thermal_assumed[:, np.newaxis]
-        # Each piece's gains, cases × pieces × actuators (× 1 where no actuator publishes
-        # τ_th), picked once: the heating's two passes and the speed's read them.
-        if self._mixed:
-            self._piece: FloatArray = self._pieces[self._index].transpose(1, 2, 0)
-        else:
-            self._piece = self._pieces[0][:, :, np.newaxis]
-
-    def piece(self, k: int) -> FloatArray:
-        """The gains of piece ``k``, cases × actuators (or cases × 1)."""
-        gains: FloatArray = self._piece[:, k]
-        return gains
-
-    def cycle(self) -> FloatArray:
-        """The gains of the whole cycle, cases × actuators (or cases × 1)."""
-        if not self._mixed:
-            column: FloatArray = self._cycle[0][:, np.newaxis]
-            return column
-        return self._cycle[self._index].T
-
-
-class _CellGains:
-    """:class:`_HeatingGains` of one case × one actuator, as floats: the gains at the
-    actuator's τ_th (published, else the case's), by :func:`heating_gain` as there."""
-
-    def __init__(self, cat: CatalogueArrays, cases: Cases, durations: list[float]) -> None:
-        column = int(cat.tau_column.item())
-        case_tau = float(cases.thermal_time_constant.item())
-        tau = case_tau if column == 0 else cat.published_taus[column - 1]
-        self._pieces = _gains(durations, tau)
-        self._cycle = heating_gain(float(cases.figures.cycle_s.item()), tau)
-        unpublished = bool(cat.tau_unpublished.item())
-        self.time_constant = case_tau if unpublished else float(cat.thermal_time_constant.item())
-        self.assumed = unpublished and bool(cases.thermal_assumed.item())
-
-    def piece(self, k: int) -> float:
-        return self._pieces[k]
-
-    def cycle(self) -> float:
-        return self._cycle
-
-
-def _gains(durations: list[float], tau: float) -> list[float]:
-    return [heating_gain(t, tau) for t in durations]
-
-
-def _distinct_rows(key: FloatArray) -> tuple[FloatArray, IndexArray]:
-    """The distinct rows of ``key`` and where each row is among them: grouped by a sum of
-    the columns weighted (a sort of floats, not of rows), the grouping then checked row by
-    row; sorted as rows where two rows share a sum."""
-    with np.errstate(all="ignore"):
-        projection = np.zeros(key.shape[0])
-        for k in range(key.shape[1]):
-            projection = projection + key[:, k] * (1.0 + k / 7.0)
-    _, first, where = np.unique(projection, return_index=True, return_inverse=True)
-    distinct = key[first]
-    if np.array_equal(distinct[where], key):
-        return distinct, where.ravel()
-    rows = np.ascontiguousarray(key)
-    view = rows.view(np.dtype((np.void, rows.itemsize * rows.shape[1]))).ravel()
-    _, first, where = np.unique(view, return_index=True, return_inverse=True)
-    return rows[first], where.ravel()
-
-
-def _case_gains(
-    durations: FloatArray, cycles: FloatArray, taus: FloatArray
-) -> tuple[FloatArray, FloatArray]:
-    """Per case, the gains of its pieces and of its cycle at its τ_th, each computed once
-    per distinct (pieces' durations, cycle, τ_th): cases repeat where the engine runs on
-    pairs (:mod:`~actuator_selection.sizing.engine.pairs`), one row per pair."""
-    key = np.column_stack([durations, cycles, taus])
-    where: IndexArray = np.zeros(key.shape[0], dtype=np.intp)
-    if key.shape[0] > 1:
-        if (key == key[0]).all():  # one case repeated (pairs of a trapezoid: often)
-            key = key[:1]
-        else:
-            key, where = _distinct_rows(key)
-    rows = key.tolist()
-    pieces = np.array([_gains(r[:-2], r[-1]) for r in rows], dtype=np.float64)
-    cycle = np.array([heating_gain(r[-2], r[-1]) for r in rows], dtype=np.float64)
-    return pieces.reshape(len(rows), durations.shape[1])[where], cycle[where]
 
 
 def _spread(row: FloatArray) -> FloatArray:
@@ -296,7 +180,7 @@ def _extremes(
     torque of largest magnitude, the first one on a tie (``argmax``; a NaN counts for
     none), for every extreme at once."""
     magnitude = np.abs(ends)
-    candidates = candidate(magnitude, counts, ARRAY_MATH)
+    candidates = np.where(counts & (magnitude >= 0.0), magnitude, -1.0)
     largest = candidates.max(axis=2)
     # The torque at the first largest, by indexes (take_along_axis costs more in Python).
     cases = np.arange(ends.shape[0])[:, np.newaxis]
@@ -307,54 +191,9 @@ def _extremes(
     return np.where(take, torque, found), np.where(take, largest, found_abs)
 
 
-_NO_EXTREME = np.array([0.0, math.nan, 0.0])[:, np.newaxis, np.newaxis]
+_NO_EXTREMES = (0.0, math.nan, 0.0)
 """T_1, T_2, T_3 where no piece counts: 0, NaN (no constant-speed piece), 0."""
-
-
-def _heated_over(
-    heat: Any,
-    sources: Iterable[Any],
-    gains: Gains,
-    first: int = 0,
-    peak: Any = None,
-    math_: Math = ARRAY_MATH,
-) -> tuple[Any, Any]:
-    """The winding's heating over the pieces ``first``, ``first + 1``, … whose heat
-    sources are ``sources`` (piece by piece: :func:`_by_piece` of arrays, or one cell's
-    floats): x ← x + (s − x)·g piece by piece
-    (:meth:`~actuator_selection.sizing.motion.Profile.thermal_torque_nm`), and the peak
-    of x over the pieces' ends where ``peak`` is given (else None)."""
-    where = math_.where
-    for j, source in enumerate(sources):
-        heat = heat + (source - heat) * gains.piece(first + j)
-        if peak is not None:
-            peak = where(heat > peak, heat, peak)
-    return heat, peak
-
-
-def _by_piece(sources: FloatArray) -> FloatArray:
-    """``sources`` (… × cases × pieces × …) piece by piece, as :func:`_heated_over` reads
-    them: iterating the result gives ``sources[..., j, :]``."""
-    return np.moveaxis(sources, -2, 0)
-
-
-def _periodic_peak(
-    heat: Any,
-    groups: Callable[[], Iterable[tuple[int, Iterable[Any]]]],
-    gains: Gains,
-    fallback: Any,
-    math_: Math = ARRAY_MATH,
-) -> Any:
-    """The peak of the heating over a repeating cycle: the periodic start x_0 = B/(1 − A)
-    from the first pass's ``heat`` (B; ``fallback`` where the cycle's gain is 0), then
-    a second pass over the pieces' heat sources (``groups``: (first piece, sources))."""
-    where = math_.where
-    cycle_gain = gains.cycle()
-    start = where(cycle_gain > 0, heat / where(cycle_gain > 0, cycle_gain, 1.0), fallback)
-    peak = heat = start
-    for first, sources in groups():
-        heat, peak = _heated_over(heat, sources, gains, first, peak, math_)
-    return peak
+_NO_EXTREME = np.array(_NO_EXTREMES)[:, np.newaxis, np.newaxis]
 
 
 def _regrouped(
@@ -367,7 +206,7 @@ def _regrouped(
         square = _piece_torques(cat, p, pieces)[1]
         if cat.on_current:
             square = _heating_square(cat, _mean_speeds(p, pieces), square)
-        yield first, _by_piece(square)
+        yield first, by_piece(square)
 
 
 def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
@@ -411,11 +250,8 @@ def evaluate_block(
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
-        cell_path = shape == (1, 1) and cat.inertia.size == 1
-        if cell_path:  # one cell: its floats
-            cell = _cell_cycle(cat, cases, averaged)
-        else:
-            cell = _block_cycle(cat, cases, shape, averaged)
+        if shape == (1, 1) and cat.inertia.size == 1:  # one cell: on its floats
+            return _cell_block(cat, cases, zone_limits, rules, averaged, detail, overload)
         (
             accel_torque,
             constant_torque,
@@ -426,7 +262,7 @@ def evaluate_block(
             gear_cube,
             time_constant,
             assumed,
-        ) = cell
+        ) = _block_cycle(cat, cases, shape, averaged)
         zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
         if cat.zone_columns.size:
             zone_torque = np.full(shape, math.nan)
@@ -434,27 +270,104 @@ def evaluate_block(
         q = operands_of(
             case_operands(cases),
             cat.operands,
-            {
-                "accel_torque_nm": accel_torque,
-                "decel_torque_nm": decel_torque,
-                "rms_torque_nm": rms_torque,
-                "zone_torque_nm": zone_torque,
-                "thermal_time_constant_s": time_constant,
-                "thermal_time_constant_assumed": assumed,
-                "thermal_torque_nm": thermal_torque,
-                "thermal_speed_rpm": thermal_speed,
-                "gear_torque_cube_nm3": gear_cube,
-            },
+            _cell_operands(
+                accel_torque,
+                decel_torque,
+                rms_torque,
+                zone_torque,
+                time_constant,
+                assumed,
+                thermal_torque,
+                thermal_speed,
+                gear_cube,
+            ),
         )
         # NaN where data is missing: masked by the codes
         statuses, worst, checks = status_codes(
-            rules, q, cat, shape, detail=detail, overload=overload, cell=_floats(q, cell_path)
+            rules, q, cat, shape, detail=detail, overload=overload
         )
     return Block(
         accel_torque=accel_torque,
         constant_torque=constant_torque,
         decel_torque=decel_torque,
         rms_torque=rms_torque,
+        statuses=statuses,
+        overload=worst,
+        checks=checks,
+        operands=q if detail else None,
+    )
+
+
+def _cell_operands(
+    accel_torque: Any,
+    decel_torque: Any,
+    rms_torque: Any,
+    zone_torque: Any,
+    time_constant: Any,
+    assumed: Any,
+    thermal_torque: Any,
+    thermal_speed: Any,
+    gear_cube: Any,
+) -> dict[str, Any]:
+    """The cell's operands by name (:func:`operands_of`): arrays, or one cell's floats."""
+    return {
+        "accel_torque_nm": accel_torque,
+        "decel_torque_nm": decel_torque,
+        "rms_torque_nm": rms_torque,
+        "zone_torque_nm": zone_torque,
+        "thermal_time_constant_s": time_constant,
+        "thermal_time_constant_assumed": assumed,
+        "thermal_torque_nm": thermal_torque,
+        "thermal_speed_rpm": thermal_speed,
+        "gear_torque_cube_nm3": gear_cube,
+    }
+
+
+def _cell_block(
+    cat: CatalogueArrays,
+    cases: Cases,
+    zone_limits: FloatArray,
+    rules: Sequence[Rule],
+    averaged: bool,
+    detail: bool,
+    overload: bool,
+) -> Block:
+    """:func:`evaluate_block` of one case × one actuator on Python floats: the cycle
+    (:func:`_cell_cycle`), the operands (the case's, the catalogue's and the cell's as
+    floats) and the rules' codes (:func:`~actuator_selection.sizing.engine.codes.
+    cell_codes`); on arrays of one cell where a rule's formula raises on floats (numpy
+    gives ±∞ or NaN there). Its :attr:`Block.operands` are the floats (a check's words
+    read them as floats). Called with numpy's errors ignored."""
+    accel, constant, decel, rms, thermal_torque, thermal_speed, gear_cube, tau, assumed = (
+        _cell_cycle(cat, cases, averaged)
+    )
+    zone_torque = math.nan
+    if cat.zone_columns.size:
+        zone = np.full((1, 1), math.nan)
+        zone[:, cat.zone_columns] = zone_limits
+        zone_torque = float(zone.item())
+    cell = _cell_operands(
+        accel, decel, rms, zone_torque, tau, assumed, thermal_torque, thermal_speed, gear_cube
+    )
+    q = operands_of(case_operands(cases, cell=True), cat.operand_floats(), cell)
+
+    def on_arrays() -> Operands:
+        column = {name: np.full((1, 1), value) for name, value in cell.items()}
+        return operands_of(case_operands(cases), cat.operands, column)
+
+    lack = cat.lacking.get(tuple(rules))
+    if lack is None:  # the first time for these actuators and rules
+        lack = lacking(rules, on_arrays(), cat)
+    found = cell_codes(rules, q, lack, detail=detail, overload=overload)
+    if found is None:  # a formula raised on floats: the arrays' ±∞ and NaN
+        found = status_codes(rules, on_arrays(), cat, (1, 1), detail=detail, overload=overload)
+    statuses, worst, checks = found
+    torques = np.array([accel, constant, decel, rms]).reshape(4, 1, 1)
+    return Block(
+        accel_torque=torques[0],
+        constant_torque=torques[1],
+        decel_torque=torques[2],
+        rms_torque=torques[3],
         statuses=statuses,
         overload=worst,
         checks=checks,
@@ -472,7 +385,7 @@ def _block_cycle(
     p = cases.pieces
     count = p.duration.shape[1]
     group = max(1, min(_KEPT_PIECES, _BLOCK_CELLS // max(1, shape[0] * shape[1])))
-    gains = _HeatingGains(cat, cases)
+    gains = HeatingGains(cat, cases)
     # The heating counts the winding current where the catalogue allows (_heating_square).
     on_current = cat.on_current
     energy: Any = 0.0
@@ -500,7 +413,7 @@ def _block_cycle(
         else:
             heat_energy = energy
         if squares is None:  # a long cycle: its first heating pass group by group
-            heat, _ = _heated_over(heat, _by_piece(square), gains, first)
+            heat, _ = heated_over(heat, by_piece(square), gains, first)
         else:
             squares.append(square)
         counts = counting[:, :, pieces]
@@ -523,7 +436,7 @@ def _block_cycle(
     mean = cases.figures.mean_speed_rpm[:, col]
     torque_fallback = heat_energy / cases.figures.cycle_s[:, col]
     if squares is None:  # the second pass recomputes each group's mean T²
-        torque_peak = _periodic_peak(
+        torque_peak = periodic_peak(
             heat,
             lambda: _regrouped(cat, p, group),
             gains,
@@ -536,25 +449,25 @@ def _block_cycle(
             sources[0], sources[1] = square, speeds
             fallback = np.empty((2, *shape))
             fallback[0], fallback[1] = torque_fallback, mean
-            by_piece = _by_piece(sources)
-            torque_peak, speed_peak = _periodic_peak(
-                _heated_over(0.0, by_piece, gains)[0],
-                lambda: ((0, by_piece),),
+            split = by_piece(sources)
+            torque_peak, speed_peak = periodic_peak(
+                heated_over(0.0, split, gains)[0],
+                lambda: ((0, split),),
                 gains,
                 fallback,
             )
         else:
-            by_piece = _by_piece(square)
-            torque_peak = _periodic_peak(
-                _heated_over(0.0, by_piece, gains)[0],
-                lambda: ((0, by_piece),),
+            split = by_piece(square)
+            torque_peak = periodic_peak(
+                heated_over(0.0, split, gains)[0],
+                lambda: ((0, split),),
                 gains,
                 torque_fallback,
             )
     if squares is None or shape[0] * shape[1] > _STACKED_CELLS:
-        by_piece = _by_piece(speeds)
-        speed_peak = _periodic_peak(
-            _heated_over(0.0, by_piece, gains)[0], lambda: ((0, by_piece),), gains, mean
+        split = by_piece(speeds)
+        speed_peak = periodic_peak(
+            heated_over(0.0, split, gains)[0], lambda: ((0, split),), gains, mean
         )
     thermal_torque = np.sqrt(torque_peak)
     thermal_speed = faster(speed_peak, mean, ARRAY_MATH)
@@ -583,8 +496,8 @@ def _block_cycle(
 def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any, ...]:
     """:func:`_block_cycle` for one case × one actuator, on Python floats: the same
     formulas (:mod:`~actuator_selection.sizing.engine.formulas` with
-    :data:`~actuator_selection.sizing.engine.formulas.FLOAT_MATH`, :func:`_heated_over`,
-    :func:`_periodic_peak`), piece after piece, each sum in the pieces' order and each
+    :data:`~actuator_selection.sizing.engine.formulas.FLOAT_MATH`, :func:`heated_over`,
+    :func:`periodic_peak`), piece after piece, each sum in the pieces' order and each
     extreme the first of largest magnitude, as the arrays' cumulative sums and ``argmax``
     take them; the results as arrays of one cell. A piece whose acceleration is constant
     counts its start torque only (its end's is equal, at most the sign of a zero differs:
@@ -597,7 +510,7 @@ def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any
     braking, steady = p.braking[0].tolist(), p.constant_speed[0].tolist()
     j_a, slope = float(cat.inertia.item()), float(cat.heating_slope.item())
     cycle, mean = float(f.cycle_s.item()), float(f.mean_speed_rpm.item())
-    gains = _CellGains(cat, cases, t)
+    gains = CellGains(cat, cases, t)
     inertia = [j_a + j for j in load_inertia]
     t0 = [c + j * a for c, j, a in zip(static, inertia, a0, strict=True)]
     t1 = [c + j * a for c, j, a in zip(static, inertia, a1, strict=True)]
@@ -615,18 +528,18 @@ def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any
     else:
         heat_energy = energy
     # T_1, T_2, T_3: the first end of largest magnitude among the driving, steady, braking
+    # pieces' (a strict >, as argmax takes the first; a NaN magnitude never counts, as a
+    # candidate of −1 in the arrays: every counted magnitude is ≥ 0 > −1)
     ends = [(x,) if c else (x, y) for x, y, c in zip(t0, t1, constant, strict=True)]
-    found = []
-    for default, counting in zip(
-        _NO_EXTREME.ravel().tolist(), ([not b for b in braking], steady, braking), strict=True
-    ):
-        torque, largest = default, -1.0
-        for piece_ends, counts in zip(ends, counting, strict=True):
-            for end in piece_ends:
-                magnitude = candidate(abs(end), counts, m)
-                if magnitude > largest:
-                    torque, largest = end, magnitude
-        found.append(torque)
+    found = list(_NO_EXTREMES)
+    largest = [-1.0, -1.0, -1.0]
+    for piece_ends, brakes, steady_piece in zip(ends, braking, steady, strict=True):
+        counting = (not brakes, steady_piece, brakes)
+        for end in piece_ends:
+            magnitude = abs(end)
+            for k in (0, 1, 2):
+                if counting[k] and magnitude > largest[k]:
+                    found[k], largest[k] = end, magnitude
     accel, constant_torque, decel = found
     gear_cube = math.nan  # no rule reads it
     if averaged:  # Σ|n|·t·|T|³: at the piece's mean |n|, |T| its larger end
@@ -638,41 +551,30 @@ def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any
             weight = weight + w
         gear_cube = m.divide(cube, weight)
     rms_torque = m.sqrt(m.divide(energy, cycle))
-    torque_peak = _periodic_peak(
-        _heated_over(0.0, heating, gains, math_=m)[0],
+    torque_peak = periodic_peak(
+        heated_over(0.0, heating, gains, math_=m)[0],
         lambda: ((0, heating),),
         gains,
         m.divide(heat_energy, cycle),
         m,
     )
-    speed_peak = _periodic_peak(
-        _heated_over(0.0, speeds, gains, math_=m)[0], lambda: ((0, speeds),), gains, mean, m
+    speed_peak = periodic_peak(
+        heated_over(0.0, speeds, gains, math_=m)[0], lambda: ((0, speeds),), gains, mean, m
     )
     thermal_torque = m.sqrt(torque_peak)
     if j_a != j_a:  # no J_A: no torques (the candidate's None)
         accel = decel = rms_torque = thermal_torque = constant_torque = gear_cube = math.nan
-    cell = np.array(
-        [
-            accel,
-            constant_torque,
-            decel,
-            rms_torque,
-            thermal_torque,
-            faster(speed_peak, mean, m),
-            gear_cube,
-            gains.time_constant,
-        ]
-    ).reshape(8, 1, 1)
-    return (*cell, np.full((1, 1), gains.assumed))
-
-
-def _floats(q: Operands, cell: bool) -> Operands | None:
-    """The operands of a block of one cell as Python floats (and bools), for the rules
-    on floats (:func:`~actuator_selection.sizing.engine.codes.status_codes`); None for a
-    larger block."""
-    if not cell:
-        return None
-    return Operands._make([v.item() if isinstance(v, np.ndarray) else v for v in q])
+    return (
+        accel,
+        constant_torque,
+        decel,
+        rms_torque,
+        thermal_torque,
+        faster(speed_peak, mean, m),
+        gear_cube,
+        gains.time_constant,
+        gains.assumed,
+    )
 
 
 def operands_of(

@@ -319,24 +319,40 @@ def zone_table(actuators: Sequence[Actuator]) -> ZoneTable:
     return ZoneTable(row=row, speeds=speeds, torques=torques, last=last)
 
 
-def case_operands(cases: Cases) -> dict[str, Any]:
+def case_operands(cases: Cases, *, cell: bool = False) -> dict[str, Any]:
     """The operands of each case by name, as columns (cases × 1): its speed, load and
     cycle figures, the output load and the swing (:func:`~actuator_selection.sizing.engine.
-    block.operands_of`)."""
-    col = np.newaxis
+    block.operands_of`); with ``cell``, those of the one case as Python floats and bools
+    (a block of one cell)."""
     f = cases.figures
+    if cell:
+
+        def column(values: Any) -> Any:
+            return values.item()
+
+        def table(values: Any, names: tuple[str, ...]) -> dict[str, Any]:
+            return dict(zip(names, values[0].tolist(), strict=True))
+    else:
+        col = np.newaxis
+
+        def column(values: Any) -> Any:
+            return values[:, col]
+
+        def table(values: Any, names: tuple[str, ...]) -> dict[str, Any]:
+            return {name: values[:, k, col] for k, name in enumerate(names)}
+
     return {
-        "speed_rpm": f.peak_speed_rpm[:, col],
-        "load_inertia_kgm2": cases.load_inertia[:, col],
-        "high_dynamics": cases.high_dynamics[:, col],
-        "mean_speed_rpm": f.mean_speed_rpm[:, col],
-        "accel_torque_floor_nm": f.accel_floor_nm[:, col],
-        "decel_torque_floor_nm": f.decel_floor_nm[:, col],
-        "rms_torque_floor_nm": f.rms_floor_nm[:, col],
-        "load_torque_nm": cases.pieces.holding[:, col],
-        "decel_s": f.braking_s[:, col],
-        **{name: cases.output_load[:, k, col] for k, name in enumerate(OUTPUT_LOAD_FIELDS)},
-        "swing_deg": swing_of(cases)[:, col],
-        "cycle_s": f.cycle_s[:, col],
-        **{name: cases.requests[:, k, col] for k, name in enumerate(REQUEST_FIELDS)},
+        "speed_rpm": column(f.peak_speed_rpm),
+        "load_inertia_kgm2": column(cases.load_inertia),
+        "high_dynamics": column(cases.high_dynamics),
+        "mean_speed_rpm": column(f.mean_speed_rpm),
+        "accel_torque_floor_nm": column(f.accel_floor_nm),
+        "decel_torque_floor_nm": column(f.decel_floor_nm),
+        "rms_torque_floor_nm": column(f.rms_floor_nm),
+        "load_torque_nm": column(cases.pieces.holding),
+        "decel_s": column(f.braking_s),
+        **table(cases.output_load, OUTPUT_LOAD_FIELDS),
+        "swing_deg": column(swing_of(cases)),
+        "cycle_s": column(f.cycle_s),
+        **table(cases.requests, REQUEST_FIELDS),
     }

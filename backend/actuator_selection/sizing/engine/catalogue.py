@@ -115,6 +115,9 @@ class CatalogueArrays:
     lacking: dict[tuple[Rule, ...], Lacking] = dataclasses_field(default_factory=dict)
     """Per rule set, where the catalogue misses its requirements (``codes.lacking``),
     filled when the rules are first evaluated against these actuators."""
+    floats: dict[str, float | bool] = dataclasses_field(default_factory=dict)
+    """One actuator's :attr:`operands` as Python floats and bools
+    (:meth:`operand_floats`), filled when first read."""
     published_taus: tuple[float, ...] = dataclasses_field(init=False)
     """The distinct τ_th that the actuators publish, ascending."""
     tau_column: IndexArray = dataclasses_field(init=False)
@@ -149,6 +152,13 @@ class CatalogueArrays:
         inertia = self.operands["inertia_kgm2"]
         assert inertia.dtype == np.float64
         return inertia.astype(np.float64, copy=False)
+
+    def operand_floats(self) -> dict[str, float | bool]:
+        """The :attr:`operands` of a catalogue of one actuator as Python floats and bools
+        (the engine's block of one cell), read once."""
+        if not self.floats:
+            self.floats.update({name: v.item() for name, v in self.operands.items()})
+        return self.floats
 
     @property
     def size(self) -> int:

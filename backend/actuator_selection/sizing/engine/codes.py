@@ -174,7 +174,6 @@ def status_codes(
     *,
     detail: bool = False,
     overload: bool = True,
-    cell: Operands | None = None,
 ) -> tuple[CodeArray, FloatArray, RuleArrays | None]:
     """Every rule's codes for the block (:meth:`~actuator_selection.sizing.checks.Rule.check`
     on arrays), rules × cases × actuators; the largest overload of the rules per cell
@@ -189,13 +188,8 @@ def status_codes(
     temporaries left the cache and deciding took twice as long).
 
     Called with numpy's floating-point errors ignored: NaN where data is missing is
-    masked here. ``cell``: the operands of a block of one cell as floats, decided on
-    floats (:func:`_cell_codes`) unless a formula raises there."""
+    masked here. A block of one cell is decided on floats (:func:`cell_codes`)."""
     lack = lacking(rules, q, cat)
-    if cell is not None:
-        found = _cell_codes(rules, cell, lack, detail=detail, overload=overload)
-        if found is not None:
-            return found
     stacked = (len(rules), *shape)
     codes = np.empty(stacked, dtype=np.int8)
     out = None
@@ -298,7 +292,7 @@ def _decided(
     return worst
 
 
-def _cell_codes(
+def cell_codes(
     rules: Sequence[Rule], q: Operands, lack: Lacking, *, detail: bool, overload: bool
 ) -> tuple[CodeArray, FloatArray, RuleArrays | None] | None:
     """:func:`status_codes` for a block of one cell, its operands ``q`` floats: each rule's

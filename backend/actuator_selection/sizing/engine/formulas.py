@@ -87,11 +87,6 @@ def heated_square(square: Any, slope: Any, speed: Any, m: Math) -> Any:
     return m.where(m.isnan(slope), square, torque * torque)
 
 
-def candidate(magnitude: Any, counts: Any, m: Math) -> Any:
-    """A torque's magnitude where it ``counts`` for an extreme, else −1 (as a NaN)."""
-    return m.where(counts & (magnitude >= 0.0), magnitude, -1.0)
-
-
 def gear_weight(start_rpm: Any, end_rpm: Any, duration: Any) -> Any:
     """A piece's weight in the gear's T_av: its mean |n| times its duration."""
     return (abs(start_rpm) + abs(end_rpm)) / 2.0 * duration
