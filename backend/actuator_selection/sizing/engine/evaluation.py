@@ -216,6 +216,8 @@ def _evaluation(
     assert reported is not None
 
     def checks_last(rules_first: npt.NDArray[Any]) -> npt.NDArray[Any]:
+        if rules_first.shape[1:] == (1, 1):  # one cell: the same order in memory, as it is
+            return rules_first.reshape(1, 1, -1)
         return np.ascontiguousarray(rules_first.transpose(1, 2, 0))
 
     return _assembled(
