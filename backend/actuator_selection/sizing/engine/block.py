@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Mapping, Sequence, Sized
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -252,45 +252,21 @@ def evaluate_block(
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
         if shape == (1, 1) and cat.inertia.size == 1:  # one cell: on its floats
             return _cell_block(cat, cases, zone_limits, rules, averaged, detail, overload)
-        (
-            accel_torque,
-            constant_torque,
-            decel_torque,
-            rms_torque,
-            thermal_torque,
-            thermal_speed,
-            gear_cube,
-            time_constant,
-            assumed,
-        ) = _block_cycle(cat, cases, shape, averaged)
+        cycle = _block_cycle(cat, cases, shape, averaged)
         zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
         if cat.zone_columns.size:
             zone_torque = np.full(shape, math.nan)
             zone_torque[:, cat.zone_columns] = zone_limits
-        q = operands_of(
-            case_operands(cases),
-            cat.operands,
-            _cell_operands(
-                accel_torque,
-                decel_torque,
-                rms_torque,
-                zone_torque,
-                time_constant,
-                assumed,
-                thermal_torque,
-                thermal_speed,
-                gear_cube,
-            ),
-        )
+        q = operands_of(case_operands(cases), cat.operands, cycle.operands(zone_torque))
         # NaN where data is missing: masked by the codes
         statuses, worst, checks = status_codes(
             rules, q, cat, shape, detail=detail, overload=overload
         )
     return Block(
-        accel_torque=accel_torque,
-        constant_torque=constant_torque,
-        decel_torque=decel_torque,
-        rms_torque=rms_torque,
+        accel_torque=cycle.accel_torque,
+        constant_torque=cycle.constant_torque,
+        decel_torque=cycle.decel_torque,
+        rms_torque=cycle.rms_torque,
         statuses=statuses,
         overload=worst,
         checks=checks,
@@ -298,29 +274,38 @@ def evaluate_block(
     )
 
 
-def _cell_operands(
-    accel_torque: Any,
-    decel_torque: Any,
-    rms_torque: Any,
-    zone_torque: Any,
-    time_constant: Any,
-    assumed: Any,
-    thermal_torque: Any,
-    thermal_speed: Any,
-    gear_cube: Any,
-) -> dict[str, Any]:
-    """The cell's operands by name (:func:`operands_of`): arrays, or one cell's floats."""
-    return {
-        "accel_torque_nm": accel_torque,
-        "decel_torque_nm": decel_torque,
-        "rms_torque_nm": rms_torque,
-        "zone_torque_nm": zone_torque,
-        "thermal_time_constant_s": time_constant,
-        "thermal_time_constant_assumed": assumed,
-        "thermal_torque_nm": thermal_torque,
-        "thermal_speed_rpm": thermal_speed,
-        "gear_torque_cube_nm3": gear_cube,
-    }
+class _Cycle(NamedTuple):
+    """A block's cycle on its actuators (:func:`_block_cycle`: arrays, cases × actuators;
+    :func:`_cell_cycle`: one cell's floats)."""
+
+    accel_torque: Any
+    constant_torque: Any
+    decel_torque: Any
+    rms_torque: Any
+    thermal_torque: Any
+    """The heating's torque over the repeating cycle."""
+    thermal_speed: Any
+    """The heating's speed over the repeating cycle, at least n_av."""
+    gear_cube: Any
+    """The gear's Σ|n|·t·|T|³/Σ|n|·t; NaN where no rule reads it."""
+    time_constant: Any
+    """τ_th: the actuator's published one, else the case's."""
+    assumed: Any
+    """Whether τ_th is assumed."""
+
+    def operands(self, zone_torque: Any) -> dict[str, Any]:
+        """The cell's operands by name (:func:`operands_of`), with the zone's edge."""
+        return {
+            "accel_torque_nm": self.accel_torque,
+            "decel_torque_nm": self.decel_torque,
+            "rms_torque_nm": self.rms_torque,
+            "zone_torque_nm": zone_torque,
+            "thermal_time_constant_s": self.time_constant,
+            "thermal_time_constant_assumed": self.assumed,
+            "thermal_torque_nm": self.thermal_torque,
+            "thermal_speed_rpm": self.thermal_speed,
+            "gear_torque_cube_nm3": self.gear_cube,
+        }
 
 
 def _cell_block(
@@ -338,17 +323,13 @@ def _cell_block(
     cell_codes`); on arrays of one cell where a rule's formula raises on floats (numpy
     gives ±∞ or NaN there). Its :attr:`Block.operands` are the floats (a check's words
     read them as floats). Called with numpy's errors ignored."""
-    accel, constant, decel, rms, thermal_torque, thermal_speed, gear_cube, tau, assumed = (
-        _cell_cycle(cat, cases, averaged)
-    )
+    cycle = _cell_cycle(cat, cases, averaged)
     zone_torque = math.nan
     if cat.zone_columns.size:
         zone = np.full((1, 1), math.nan)
         zone[:, cat.zone_columns] = zone_limits
         zone_torque = float(zone.item())
-    cell = _cell_operands(
-        accel, decel, rms, zone_torque, tau, assumed, thermal_torque, thermal_speed, gear_cube
-    )
+    cell = cycle.operands(zone_torque)
     q = operands_of(case_operands(cases, cell=True), cat.operand_floats(), cell)
 
     def on_arrays() -> Operands:
@@ -362,7 +343,7 @@ def _cell_block(
     if found is None:  # a formula raised on floats: the arrays' ±∞ and NaN
         found = status_codes(rules, on_arrays(), cat, (1, 1), detail=detail, overload=overload)
     statuses, worst, checks = found
-    torques = np.array([accel, constant, decel, rms]).reshape(4, 1, 1)
+    torques = np.array(cycle[:4]).reshape(4, 1, 1)  # T_1, T_2, T_3, T_rms
     return Block(
         accel_torque=torques[0],
         constant_torque=torques[1],
@@ -377,7 +358,7 @@ def _cell_block(
 
 def _block_cycle(
     cat: CatalogueArrays, cases: Cases, shape: tuple[int, int], averaged: bool
-) -> tuple[Any, ...]:
+) -> _Cycle:
     """:func:`evaluate_block`'s cycle on arrays: T_1, T_2, T_3, T_rms, the heating's
     torque and speed, the gear's Σ|n|·t·|T|³/Σ|n|·t (NaN where no rule reads it), τ_th
     and whether it is assumed, cases × actuators. Called with numpy's errors ignored."""
@@ -480,7 +461,7 @@ def _block_cycle(
         thermal_torque = np.where(unknown, math.nan, thermal_torque)
         constant_torque = np.where(unknown, math.nan, constant)
         gear_cube = np.where(unknown, math.nan, gear_cube)
-    return (
+    return _Cycle(
         accel_torque,
         constant_torque,
         decel_torque,
@@ -493,7 +474,7 @@ def _block_cycle(
     )
 
 
-def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any, ...]:
+def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> _Cycle:
     """:func:`_block_cycle` for one case × one actuator, on Python floats: the same
     formulas (:mod:`~actuator_selection.sizing.engine.formulas` with
     :data:`~actuator_selection.sizing.engine.formulas.FLOAT_MATH`, :func:`heated_over`,
@@ -564,7 +545,7 @@ def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> tuple[Any
     thermal_torque = m.sqrt(torque_peak)
     if j_a != j_a:  # no J_A: no torques (the candidate's None)
         accel = decel = rms_torque = thermal_torque = constant_torque = gear_cube = math.nan
-    return (
+    return _Cycle(
         accel,
         constant_torque,
         decel,
