@@ -47,200 +47,6 @@ export interface paths {
         patch?: never;
         trace?: never;
     };
-    "/api/v1/actuators": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * List Actuators
-         * @description Catalogue actuators, filtered, ordered by model; a page of ``limit`` of them, the next
-         *     one from ``next_cursor``.
-         */
-        get: operations["list_actuators"];
-        put?: never;
-        /**
-         * Create Actuator
-         * @description Add an actuator (the columns of actuators.csv, units in the names).
-         */
-        post: operations["create_actuator"];
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/actuators/{model}": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * Get Actuator
-         * @description One catalogue actuator.
-         */
-        get: operations["get_actuator"];
-        /**
-         * Replace Actuator
-         * @description Replace an actuator's values (every column; a missing one becomes empty).
-         *
-         *     A retired actuator is brought back.
-         */
-        put: operations["replace_actuator"];
-        post?: never;
-        /**
-         * Retire Actuator
-         * @description Retire an actuator: gone from listings and selections, kept for quotes (idempotent).
-         */
-        delete: operations["retire_actuator"];
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/families": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * List Families
-         * @description Product families with their temperature sensors and limits (Tables 518.1, 519.2).
-         */
-        get: operations["list_families"];
-        put?: never;
-        post?: never;
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/catalogue/version": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * Catalogue Version
-         * @description The catalogue's version: raised by every change; each selection records the one it used.
-         */
-        get: operations["catalogue_version"];
-        put?: never;
-        post?: never;
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/controllers": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * List Controllers
-         * @description Rows of Table 521.1 that support every given criterion at the given level.
-         */
-        get: operations["list_controllers"];
-        put?: never;
-        /**
-         * Create Controller
-         * @description Add a row to the compatibility matrix (the columns of controllers.csv).
-         *
-         *     Marks are ``tested`` (●), ``possible`` (○) or empty. Without ``source_row``
-         *     the row takes the next free number; Table 521.1's rows keep 1–28.
-         */
-        post: operations["create_controller"];
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/controllers/{row}": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * Get Controller
-         * @description One row of the compatibility matrix (Table 521.1's rows keep their printed number).
-         */
-        get: operations["get_controller"];
-        /**
-         * Replace Controller
-         * @description Replace a controller's values (every column; a missing one becomes empty).
-         *
-         *     A retired controller is brought back.
-         */
-        put: operations["replace_controller"];
-        post?: never;
-        /**
-         * Retire Controller
-         * @description Retire a controller: gone from the matrix and from selections (idempotent).
-         */
-        delete: operations["retire_controller"];
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/actuators/{model}/controllers": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * Actuator Controllers
-         * @description Every controller matched against the actuator, supported ones first.
-         */
-        get: operations["actuator_controllers"];
-        put?: never;
-        post?: never;
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/mechanisms": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * List Mechanisms
-         * @description Every kind of `load` with its fields: name, symbol, unit, bounds, default, whether
-         *     text with a unit is accepted, and the message keys of its words. The page builds its
-         *     load form from this (as the module generated from it).
-         */
-        get: operations["list_mechanisms"];
-        put?: never;
-        post?: never;
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
     "/api/v1/selections/batch": {
         parameters: {
             query?: never;
@@ -275,90 +81,6 @@ export interface paths {
          * @description The batch for a table of load cases in the chapter's shorthand: each figure of Table 516.1 as a column (case i is the i-th value of every column), the best `top` candidates of each case answered as a table (a row per candidate, `candidates.case` naming its case) with each check as a column and each model's controller summary once. The numbers are the per-case batch's, bit for bit. Ranking: suitable first, then unconfirmed, then unsuitable; the unsuitable nearest miss first (smallest worst overload, the largest value/limit of its failed checks); then the smallest actuator first (lowest T_max, then lowest J_A, then model name). Nothing is stored.
          */
         post: operations["create_batch_columns"];
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/batch-jobs": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        get?: never;
-        put?: never;
-        /**
-         * Create Batch Job
-         * @description Accepts a batch of any size as a job: the body is JSON lines, each a load case exactly as one of POST /selections/batch's `cases`. Every case is checked before the job is stored; the job is then split into chunks that workers compute (GET the `Location` for the progress, GET its `/results` once done).
-         */
-        post: operations["create_batch_job"];
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/batch-jobs/{job_id}": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * Get Batch Job
-         * @description A batch job's state, progress and expected time to finish.
-         */
-        get: operations["get_batch_job"];
-        put?: never;
-        post?: never;
-        /**
-         * Delete Batch Job
-         * @description Delete a job with its cases and answers; a running one stops.
-         */
-        delete: operations["delete_batch_job"];
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/batch-jobs/{job_id}/results": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        /**
-         * Get Batch Job Results
-         * @description A done job's answers as JSON lines or CSV, streamed.
-         */
-        get: operations["get_batch_job_results"];
-        put?: never;
-        post?: never;
-        delete?: never;
-        options?: never;
-        head?: never;
-        patch?: never;
-        trace?: never;
-    };
-    "/api/v1/batch-jobs/{job_id}/cancel": {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        get?: never;
-        put?: never;
-        /**
-         * Cancel Batch Job
-         * @description Stop a queued or running job; its cases and partial answers are dropped.
-         */
-        post: operations["cancel_batch_job"];
         delete?: never;
         options?: never;
         head?: never;
@@ -620,6 +342,284 @@ export interface paths {
         get: operations["get_selection_report_pdf"];
         put?: never;
         post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/actuators": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * List Actuators
+         * @description Catalogue actuators, filtered, ordered by model; a page of ``limit`` of them, the next
+         *     one from ``next_cursor``.
+         */
+        get: operations["list_actuators"];
+        put?: never;
+        /**
+         * Create Actuator
+         * @description Add an actuator (the columns of actuators.csv, units in the names).
+         */
+        post: operations["create_actuator"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/actuators/{model}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Actuator
+         * @description One catalogue actuator.
+         */
+        get: operations["get_actuator"];
+        /**
+         * Replace Actuator
+         * @description Replace an actuator's values (every column; a missing one becomes empty).
+         *
+         *     A retired actuator is brought back.
+         */
+        put: operations["replace_actuator"];
+        post?: never;
+        /**
+         * Retire Actuator
+         * @description Retire an actuator: gone from listings and selections, kept for quotes (idempotent).
+         */
+        delete: operations["retire_actuator"];
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/families": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * List Families
+         * @description Product families with their temperature sensors and limits (Tables 518.1, 519.2).
+         */
+        get: operations["list_families"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/catalogue/version": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Catalogue Version
+         * @description The catalogue's version: raised by every change; each selection records the one it used.
+         */
+        get: operations["catalogue_version"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/controllers": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * List Controllers
+         * @description Rows of Table 521.1 that support every given criterion at the given level.
+         */
+        get: operations["list_controllers"];
+        put?: never;
+        /**
+         * Create Controller
+         * @description Add a row to the compatibility matrix (the columns of controllers.csv).
+         *
+         *     Marks are ``tested`` (●), ``possible`` (○) or empty. Without ``source_row``
+         *     the row takes the next free number; Table 521.1's rows keep 1–28.
+         */
+        post: operations["create_controller"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/controllers/{row}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Controller
+         * @description One row of the compatibility matrix (Table 521.1's rows keep their printed number).
+         */
+        get: operations["get_controller"];
+        /**
+         * Replace Controller
+         * @description Replace a controller's values (every column; a missing one becomes empty).
+         *
+         *     A retired controller is brought back.
+         */
+        put: operations["replace_controller"];
+        post?: never;
+        /**
+         * Retire Controller
+         * @description Retire a controller: gone from the matrix and from selections (idempotent).
+         */
+        delete: operations["retire_controller"];
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/actuators/{model}/controllers": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Actuator Controllers
+         * @description Every controller matched against the actuator, supported ones first.
+         */
+        get: operations["actuator_controllers"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/mechanisms": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * List Mechanisms
+         * @description Every kind of `load` with its fields: name, symbol, unit, bounds, default, whether
+         *     text with a unit is accepted, and the message keys of its words. The page builds its
+         *     load form from this (as the module generated from it).
+         */
+        get: operations["list_mechanisms"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Create Batch Job
+         * @description Accepts a batch of any size as a job: the body is JSON lines, each a load case exactly as one of POST /selections/batch's `cases`. Every case is checked before the job is stored; the job is then split into chunks that workers compute (GET the `Location` for the progress, GET its `/results` once done).
+         */
+        post: operations["create_batch_job"];
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs/{job_id}": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Batch Job
+         * @description A batch job's state, progress and expected time to finish.
+         */
+        get: operations["get_batch_job"];
+        put?: never;
+        post?: never;
+        /**
+         * Delete Batch Job
+         * @description Delete a job with its cases and answers; a running one stops.
+         */
+        delete: operations["delete_batch_job"];
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs/{job_id}/results": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        /**
+         * Get Batch Job Results
+         * @description A done job's answers as JSON lines or CSV, streamed.
+         */
+        get: operations["get_batch_job_results"];
+        put?: never;
+        post?: never;
+        delete?: never;
+        options?: never;
+        head?: never;
+        patch?: never;
+        trace?: never;
+    };
+    "/api/v1/batch-jobs/{job_id}/cancel": {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        get?: never;
+        put?: never;
+        /**
+         * Cancel Batch Job
+         * @description Stop a queued or running job; its cases and partial answers are dropped.
+         */
+        post: operations["cancel_batch_job"];
         delete?: never;
         options?: never;
         head?: never;
@@ -6120,6 +6120,1336 @@ export interface operations {
             };
         };
     };
+    create_batch: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "cases": [
+                 *         {
+                 *           "cycle": {
+                 *             "accel_s": 0.1,
+                 *             "constant_s": 0.1,
+                 *             "decel_s": 0.1,
+                 *             "pause_s": 1
+                 *           },
+                 *           "load": {
+                 *             "inertia_kgm2": 1.3,
+                 *             "speed_rpm": 40,
+                 *             "torque_nm": 5
+                 *           }
+                 *         },
+                 *         {
+                 *           "cycle": {
+                 *             "accel_s": 0.2,
+                 *             "constant_s": 0.5,
+                 *             "decel_s": 0.2,
+                 *             "pause_s": 0.5
+                 *           },
+                 *           "load": {
+                 *             "efficiency": 0.9,
+                 *             "friction_coefficient": 0.1,
+                 *             "lead_m": 0.01,
+                 *             "mass_kg": 200,
+                 *             "speed_rpm": 60,
+                 *             "type": "ball_screw"
+                 *           }
+                 *         }
+                 *       ],
+                 *       "include_checks": false,
+                 *       "top": 3
+                 *     }
+                 */
+                "application/json": components["schemas"]["BatchSelectionRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchSelectionOut"];
+                };
+            };
+            /** @description with `store: true`: the cases were stored; `Location` names the first case's selection, each result's `id` its own */
+            201: {
+                headers: {
+                    /** @description the path of the resource created (of a batch: its first case's) */
+                    Location?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchSelectionOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description an invalid case (`loc` names its index), a model the catalogue lacks, or a limit exceeded */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    create_batch_columns: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "accel_s": [
+                 *         0.1,
+                 *         0.2
+                 *       ],
+                 *       "constant_s": [
+                 *         0.1,
+                 *         0.5
+                 *       ],
+                 *       "decel_s": [
+                 *         0.1,
+                 *         0.2
+                 *       ],
+                 *       "include_checks": false,
+                 *       "inertia_kgm2": [
+                 *         1.3,
+                 *         0.4
+                 *       ],
+                 *       "pause_s": [
+                 *         1,
+                 *         0.5
+                 *       ],
+                 *       "speed_rpm": [
+                 *         40,
+                 *         60
+                 *       ],
+                 *       "top": 3,
+                 *       "torque_nm": [
+                 *         5,
+                 *         12
+                 *       ]
+                 *     }
+                 */
+                "application/json": components["schemas"]["BatchColumnsRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["BatchColumnsOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a value outside its rule (`loc` names the column and the case's index), columns of unequal lengths, or a limit exceeded */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    create_selection: {
+        parameters: {
+            query?: {
+                /** @description how many of the ranking's candidates the answer lists; the rest are read by its `next_cursor` */
+                top?: number;
+            };
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "cycle": {
+                 *         "accel_s": 0.1,
+                 *         "constant_s": 0.1,
+                 *         "decel_s": 0.1,
+                 *         "pause_s": 1
+                 *       },
+                 *       "load": {
+                 *         "inertia_kgm2": 1.3,
+                 *         "speed_rpm": 40,
+                 *         "torque_nm": 5
+                 *       }
+                 *     }
+                 */
+                "application/json": components["schemas"]["SelectionRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            201: {
+                headers: {
+                    /** @description the path of the resource created (of a batch: its first case's) */
+                    Location?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["SelectionOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description invalid load case, or a model the catalogue lacks */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    solve_selection_limits: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "cycle": {
+                 *         "accel_s": 0.1,
+                 *         "constant_s": 0.1,
+                 *         "decel_s": 0.1,
+                 *         "pause_s": 1
+                 *       },
+                 *       "load": {
+                 *         "inertia_kgm2": 1.3,
+                 *         "speed_rpm": 40,
+                 *         "torque_nm": 5
+                 *       },
+                 *       "model": "FHA-25C-50-L"
+                 *     }
+                 */
+                "application/json": components["schemas"]["LimitsRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["LimitsOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description invalid load case, or a model the catalogue lacks */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    solve_ratio_study: {
+        parameters: {
+            query?: {
+                /** @description with the chart (`figure`, `documents/figures.py`), in `lang`'s language */
+                figure?: boolean;
+                /** @description how many of the ranking's actuators the answer lists (their interval ends alone are bisected; every actuator's best value is searched) */
+                top?: number;
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
+            header?: never;
+            path?: never;
+            cookie?: never;
+        };
+        requestBody: {
+            content: {
+                /**
+                 * @example {
+                 *       "cycle": {
+                 *         "accel_s": 0.1,
+                 *         "constant_s": 0.3,
+                 *         "decel_s": 0.1,
+                 *         "pause_s": 0.5
+                 *       },
+                 *       "load": {
+                 *         "efficiency": 0.9,
+                 *         "friction_coefficient": 0.1,
+                 *         "incline_deg": 90,
+                 *         "lead_mm": 10,
+                 *         "mass_kg": 25,
+                 *         "speed": 300,
+                 *         "type": "ball_screw_incline"
+                 *       },
+                 *       "ratio_study": {
+                 *         "max": 50,
+                 *         "min": 1,
+                 *         "variable": "lead_mm"
+                 *       }
+                 *     }
+                 */
+                "application/json": components["schemas"]["RatioStudyRequest"];
+            };
+        };
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["RatioStudyOut"];
+                };
+            };
+            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
+            400: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the body is larger than the limit */
+            413: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
+            415: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description invalid load case or study */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_selection: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                selection_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["SelectionOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_selection_request: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                selection_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["SelectionRequest"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidates: {
+        parameters: {
+            query?: {
+                /** @description the `next_cursor` of the page before; omitted: the first page */
+                cursor?: string | null;
+                /** @description the most candidates a page lists */
+                limit?: number;
+                /** @description `jsonl`: the whole ranking from the cursor on, a line a candidate */
+                format?: "json" | "jsonl";
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description a page of the ranking (JSON), or with `format=jsonl` every candidate from the cursor on, one `CandidateOut` a line, streamed */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["CandidatePageOut"];
+                    /** @example {"model":"CHA-25A-50","verdict":"suitable",…} */
+                    "application/x-ndjson": string;
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a cursor that is not one of this selection's */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidate: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                selection_id: string;
+                model: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["CandidateDetailOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection, or a model that is no candidate of it */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the catalogue has changed since the selection */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidate_diagram: {
+        parameters: {
+            query?: {
+                /** @description with the actuator's catalogue limits and zone (false: without) */
+                catalogue?: boolean;
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+                model: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": {
+                        [key: string]: unknown;
+                    };
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection, or a model that is no candidate of it */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidate_cycle: {
+        parameters: {
+            query?: {
+                /** @description with the torque along each segment, computed again from the load case as the candidate's detail gives it (false: the stored answer's T_1, T_2, T_3 only, which also reads a selection whose catalogue has changed since) */
+                torques?: boolean;
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+                model: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": {
+                        [key: string]: unknown;
+                    };
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection, or a model that is no candidate of it */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the catalogue has changed since the selection (with torques) */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_candidate_limits: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                selection_id: string;
+                model: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description Successful Response */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["LimitsOut"];
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection, or a model that is no candidate of it */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description the catalogue has changed since the selection */
+            409: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_selection_report_csv: {
+        parameters: {
+            query?: never;
+            header?: never;
+            path: {
+                selection_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description one table, one header row, one row per check of each candidate: selection_id,catalogue_version,load_speed_rpm,load_torque_nm,load_inertia_kgm2,high_dynamics,accel_s,constant_s,decel_s,pause_s,cycle_time_s,mean_speed_rpm,duty_cycle_percent,rank,model,family,gear_ratio,verdict,accel_torque_nm,constant_torque_nm,decel_torque_nm,rms_torque_nm,check,status,reference,unit,value,limit,margin_percent,utilisation_percent,approximate,missing. Numbers are the stored answer's exactly; unknown values are empty cells. */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "text/csv": string;
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
+    get_selection_report_pdf: {
+        parameters: {
+            query?: {
+                /** @description models whose checks the report lists after its first page */
+                candidates?: string[];
+                /** @description the document's language; left out: from Accept-Language, else en */
+                lang?: ("de" | "en") | null;
+            };
+            header?: never;
+            path: {
+                selection_id: string;
+            };
+            cookie?: never;
+        };
+        requestBody?: never;
+        responses: {
+            /** @description A4, the same content as the CSV for print, with page numbers, in German or English */
+            200: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/pdf": string;
+                };
+            };
+            /** @description no API key where one is required, or an unknown, revoked or malformed key */
+            401: {
+                headers: {
+                    /** @description the challenge: Bearer realm="actuator-selection" */
+                    "WWW-Authenticate"?: string;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description unknown selection */
+            404: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description a parameter or body value breaks a rule; `loc` names it */
+            422: {
+                headers: {
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
+            429: {
+                headers: {
+                    /** @description seconds until a key is looked up again for this address */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
+            503: {
+                headers: {
+                    /** @description seconds to wait before sending the request again */
+                    "Retry-After"?: number;
+                    [name: string]: unknown;
+                };
+                content: {
+                    "application/json": components["schemas"]["ErrorOut"];
+                };
+            };
+        };
+    };
     list_actuators: {
         parameters: {
             query?: {
@@ -7714,274 +9044,6 @@ export interface operations {
             };
         };
     };
-    create_batch: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        requestBody: {
-            content: {
-                /**
-                 * @example {
-                 *       "cases": [
-                 *         {
-                 *           "cycle": {
-                 *             "accel_s": 0.1,
-                 *             "constant_s": 0.1,
-                 *             "decel_s": 0.1,
-                 *             "pause_s": 1
-                 *           },
-                 *           "load": {
-                 *             "inertia_kgm2": 1.3,
-                 *             "speed_rpm": 40,
-                 *             "torque_nm": 5
-                 *           }
-                 *         },
-                 *         {
-                 *           "cycle": {
-                 *             "accel_s": 0.2,
-                 *             "constant_s": 0.5,
-                 *             "decel_s": 0.2,
-                 *             "pause_s": 0.5
-                 *           },
-                 *           "load": {
-                 *             "efficiency": 0.9,
-                 *             "friction_coefficient": 0.1,
-                 *             "lead_m": 0.01,
-                 *             "mass_kg": 200,
-                 *             "speed_rpm": 60,
-                 *             "type": "ball_screw"
-                 *           }
-                 *         }
-                 *       ],
-                 *       "include_checks": false,
-                 *       "top": 3
-                 *     }
-                 */
-                "application/json": components["schemas"]["BatchSelectionRequest"];
-            };
-        };
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["BatchSelectionOut"];
-                };
-            };
-            /** @description with `store: true`: the cases were stored; `Location` names the first case's selection, each result's `id` its own */
-            201: {
-                headers: {
-                    /** @description the path of the resource created (of a batch: its first case's) */
-                    Location?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["BatchSelectionOut"];
-                };
-            };
-            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
-            400: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the body is larger than the limit */
-            413: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
-            415: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description an invalid case (`loc` names its index), a model the catalogue lacks, or a limit exceeded */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    create_batch_columns: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        requestBody: {
-            content: {
-                /**
-                 * @example {
-                 *       "accel_s": [
-                 *         0.1,
-                 *         0.2
-                 *       ],
-                 *       "constant_s": [
-                 *         0.1,
-                 *         0.5
-                 *       ],
-                 *       "decel_s": [
-                 *         0.1,
-                 *         0.2
-                 *       ],
-                 *       "include_checks": false,
-                 *       "inertia_kgm2": [
-                 *         1.3,
-                 *         0.4
-                 *       ],
-                 *       "pause_s": [
-                 *         1,
-                 *         0.5
-                 *       ],
-                 *       "speed_rpm": [
-                 *         40,
-                 *         60
-                 *       ],
-                 *       "top": 3,
-                 *       "torque_nm": [
-                 *         5,
-                 *         12
-                 *       ]
-                 *     }
-                 */
-                "application/json": components["schemas"]["BatchColumnsRequest"];
-            };
-        };
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["BatchColumnsOut"];
-                };
-            };
-            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
-            400: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the body is larger than the limit */
-            413: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
-            415: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a value outside its rule (`loc` names the column and the case's index), columns of unequal lengths, or a limit exceeded */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
     create_batch_job: {
         parameters: {
             query?: {
@@ -8362,1068 +9424,6 @@ export interface operations {
             };
             /** @description the job has ended */
             409: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    create_selection: {
-        parameters: {
-            query?: {
-                /** @description how many of the ranking's candidates the answer lists; the rest are read by its `next_cursor` */
-                top?: number;
-            };
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        requestBody: {
-            content: {
-                /**
-                 * @example {
-                 *       "cycle": {
-                 *         "accel_s": 0.1,
-                 *         "constant_s": 0.1,
-                 *         "decel_s": 0.1,
-                 *         "pause_s": 1
-                 *       },
-                 *       "load": {
-                 *         "inertia_kgm2": 1.3,
-                 *         "speed_rpm": 40,
-                 *         "torque_nm": 5
-                 *       }
-                 *     }
-                 */
-                "application/json": components["schemas"]["SelectionRequest"];
-            };
-        };
-        responses: {
-            /** @description Successful Response */
-            201: {
-                headers: {
-                    /** @description the path of the resource created (of a batch: its first case's) */
-                    Location?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["SelectionOut"];
-                };
-            };
-            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
-            400: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the body is larger than the limit */
-            413: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
-            415: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description invalid load case, or a model the catalogue lacks */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    solve_selection_limits: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        requestBody: {
-            content: {
-                /**
-                 * @example {
-                 *       "cycle": {
-                 *         "accel_s": 0.1,
-                 *         "constant_s": 0.1,
-                 *         "decel_s": 0.1,
-                 *         "pause_s": 1
-                 *       },
-                 *       "load": {
-                 *         "inertia_kgm2": 1.3,
-                 *         "speed_rpm": 40,
-                 *         "torque_nm": 5
-                 *       },
-                 *       "model": "FHA-25C-50-L"
-                 *     }
-                 */
-                "application/json": components["schemas"]["LimitsRequest"];
-            };
-        };
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["LimitsOut"];
-                };
-            };
-            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
-            400: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the body is larger than the limit */
-            413: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
-            415: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description invalid load case, or a model the catalogue lacks */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    solve_ratio_study: {
-        parameters: {
-            query?: {
-                /** @description with the chart (`figure`, `documents/figures.py`), in `lang`'s language */
-                figure?: boolean;
-                /** @description how many of the ranking's actuators the answer lists (their interval ends alone are bisected; every actuator's best value is searched) */
-                top?: number;
-                /** @description the document's language; left out: from Accept-Language, else en */
-                lang?: ("de" | "en") | null;
-            };
-            header?: never;
-            path?: never;
-            cookie?: never;
-        };
-        requestBody: {
-            content: {
-                /**
-                 * @example {
-                 *       "cycle": {
-                 *         "accel_s": 0.1,
-                 *         "constant_s": 0.3,
-                 *         "decel_s": 0.1,
-                 *         "pause_s": 0.5
-                 *       },
-                 *       "load": {
-                 *         "efficiency": 0.9,
-                 *         "friction_coefficient": 0.1,
-                 *         "incline_deg": 90,
-                 *         "lead_mm": 10,
-                 *         "mass_kg": 25,
-                 *         "speed": 300,
-                 *         "type": "ball_screw_incline"
-                 *       },
-                 *       "ratio_study": {
-                 *         "max": 50,
-                 *         "min": 1,
-                 *         "variable": "lead_mm"
-                 *       }
-                 *     }
-                 */
-                "application/json": components["schemas"]["RatioStudyRequest"];
-            };
-        };
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["RatioStudyOut"];
-                };
-            };
-            /** @description the body could not be parsed as JSON (malformed, or nested too deeply) */
-            400: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the body is larger than the limit */
-            413: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a Content-Type that is not accepted here (JSON bodies: application/json in UTF-8) */
-            415: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description invalid load case or study */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_selection: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path: {
-                selection_id: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["SelectionOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_selection_request: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path: {
-                selection_id: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["SelectionRequest"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_candidates: {
-        parameters: {
-            query?: {
-                /** @description the `next_cursor` of the page before; omitted: the first page */
-                cursor?: string | null;
-                /** @description the most candidates a page lists */
-                limit?: number;
-                /** @description `jsonl`: the whole ranking from the cursor on, a line a candidate */
-                format?: "json" | "jsonl";
-            };
-            header?: never;
-            path: {
-                selection_id: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description a page of the ranking (JSON), or with `format=jsonl` every candidate from the cursor on, one `CandidateOut` a line, streamed */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["CandidatePageOut"];
-                    /** @example {"model":"CHA-25A-50","verdict":"suitable",…} */
-                    "application/x-ndjson": string;
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a cursor that is not one of this selection's */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_candidate: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path: {
-                selection_id: string;
-                model: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["CandidateDetailOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection, or a model that is no candidate of it */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the catalogue has changed since the selection */
-            409: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_candidate_diagram: {
-        parameters: {
-            query?: {
-                /** @description with the actuator's catalogue limits and zone (false: without) */
-                catalogue?: boolean;
-                /** @description the document's language; left out: from Accept-Language, else en */
-                lang?: ("de" | "en") | null;
-            };
-            header?: never;
-            path: {
-                selection_id: string;
-                model: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": {
-                        [key: string]: unknown;
-                    };
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection, or a model that is no candidate of it */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_candidate_cycle: {
-        parameters: {
-            query?: {
-                /** @description with the torque along each segment, computed again from the load case as the candidate's detail gives it (false: the stored answer's T_1, T_2, T_3 only, which also reads a selection whose catalogue has changed since) */
-                torques?: boolean;
-                /** @description the document's language; left out: from Accept-Language, else en */
-                lang?: ("de" | "en") | null;
-            };
-            header?: never;
-            path: {
-                selection_id: string;
-                model: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": {
-                        [key: string]: unknown;
-                    };
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection, or a model that is no candidate of it */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the catalogue has changed since the selection (with torques) */
-            409: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_candidate_limits: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path: {
-                selection_id: string;
-                model: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description Successful Response */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["LimitsOut"];
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection, or a model that is no candidate of it */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description the catalogue has changed since the selection */
-            409: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_selection_report_csv: {
-        parameters: {
-            query?: never;
-            header?: never;
-            path: {
-                selection_id: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description one table, one header row, one row per check of each candidate: selection_id,catalogue_version,load_speed_rpm,load_torque_nm,load_inertia_kgm2,high_dynamics,accel_s,constant_s,decel_s,pause_s,cycle_time_s,mean_speed_rpm,duty_cycle_percent,rank,model,family,gear_ratio,verdict,accel_torque_nm,constant_torque_nm,decel_torque_nm,rms_torque_nm,check,status,reference,unit,value,limit,margin_percent,utilisation_percent,approximate,missing. Numbers are the stored answer's exactly; unknown values are empty cells. */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "text/csv": string;
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection */
-            404: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description a parameter or body value breaks a rule; `loc` names it */
-            422: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description too many wrong API keys from this address; retry after `Retry-After` s */
-            429: {
-                headers: {
-                    /** @description seconds until a key is looked up again for this address */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description overloaded or the database is busy; nothing was changed, retry after `Retry-After` s */
-            503: {
-                headers: {
-                    /** @description seconds to wait before sending the request again */
-                    "Retry-After"?: number;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-        };
-    };
-    get_selection_report_pdf: {
-        parameters: {
-            query?: {
-                /** @description models whose checks the report lists after its first page */
-                candidates?: string[];
-                /** @description the document's language; left out: from Accept-Language, else en */
-                lang?: ("de" | "en") | null;
-            };
-            header?: never;
-            path: {
-                selection_id: string;
-            };
-            cookie?: never;
-        };
-        requestBody?: never;
-        responses: {
-            /** @description A4, the same content as the CSV for print, with page numbers, in German or English */
-            200: {
-                headers: {
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/pdf": string;
-                };
-            };
-            /** @description no API key where one is required, or an unknown, revoked or malformed key */
-            401: {
-                headers: {
-                    /** @description the challenge: Bearer realm="actuator-selection" */
-                    "WWW-Authenticate"?: string;
-                    [name: string]: unknown;
-                };
-                content: {
-                    "application/json": components["schemas"]["ErrorOut"];
-                };
-            };
-            /** @description unknown selection */
-            404: {
                 headers: {
                     [name: string]: unknown;
                 };

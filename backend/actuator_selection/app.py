@@ -147,12 +147,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         return settings.max_bulk_body_bytes if module in bulk else settings.max_body_bytes
 
     for module in (
+        batch,
+        selections,
         actuators,
         controllers,
         mechanisms,
-        batch,
         jobs,
-        selections,
         aas,
         profiles,
         tools,
