@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 from email.message import Message
+from functools import lru_cache
 
 from fastapi import Request
 
@@ -48,6 +49,19 @@ def _is_json(media_type: str) -> bool:
     return main == "application" and (sub == "json" or sub.endswith("+json"))
 
 
+@lru_cache(maxsize=64)
+def _content_type(header: str) -> tuple[str, str | None]:
+    """A ``Content-Type`` header's media type (empty: none) and ``charset`` (lower case,
+    None: none), as the standard library's e-mail parser reads them. Clients send one or
+    two headers over and over: they are parsed once (a bounded cache)."""
+    if not header.strip():
+        return "", None
+    message = Message()
+    message["content-type"] = header
+    charset = message.get_param("charset")
+    return message.get_content_type(), charset.lower() if isinstance(charset, str) else None
+
+
 async def require_json_body(request: Request) -> None:
     """415 when the endpoint parses a JSON body and the request's is not UTF-8 JSON."""
     route = request.scope.get("route")
@@ -56,14 +70,9 @@ async def require_json_body(request: Request) -> None:
     body = await request.body()  # FastAPI has read it already (the same Request)
     if not body:
         return  # nothing to parse: the endpoint's validation names a missing body
-    header = request.headers.get("content-type", "")
-    message = Message()
-    message["content-type"] = header
-    media_type = message.get_content_type() if header.strip() else ""
+    media_type, declared = _content_type(request.headers.get("content-type", ""))
     if not _is_json(media_type):
         raise unsupported_media_type(media_type, (JSON_MEDIA_TYPE,))
-    charset = message.get_param("charset")
-    declared = charset.lower() if isinstance(charset, str) else None
     detected = json.detect_encoding(body[:4])
     encoding = declared if declared not in (None, *UTF8) else detected
     if encoding not in (*UTF8, "utf-8-sig"):
