@@ -54,7 +54,7 @@ from actuator_selection.services.presenters.selection import (
     or_none,
 )
 from actuator_selection.services.ratio import guidance
-from actuator_selection.sizing.checks import rules_for
+from actuator_selection.sizing.checks import Rule, rules_for
 from actuator_selection.sizing.engine import VERDICT_BY_CODE, FloatArray, evaluate_batch
 from actuator_selection.sizing.motion import SegmentTorque
 from actuator_selection.sizing.selection import Application, Verdict, evaluate, select
@@ -142,12 +142,15 @@ _VERDICT_VALUES = np.array([v.value for v in VERDICT_BY_CODE], dtype=object)
 
 
 def _ranked(
-    actuators: Sequence[Actuator], app: Application, catalogue: CatalogueSnapshot
+    actuators: Sequence[Actuator],
+    app: Application,
+    catalogue: CatalogueSnapshot,
+    rules: tuple[Rule, ...],
 ) -> _Ranked:
-    """The candidates of ``app`` over ``actuators``, ranked: the engine's 1 × N view of one
-    case, whatever the number of actuators."""
+    """The candidates of ``app`` over ``actuators`` by ``rules`` (``rules_for(app)``),
+    ranked: the engine's 1 × N view of one case, whatever the number of actuators."""
     asked = tuple(actuators)
-    ev = evaluate_batch(actuators, [app], arrays=catalogue.arrays(asked))
+    ev = evaluate_batch(actuators, [app], rules=rules, arrays=catalogue.arrays(asked))
     torques = (ev.accel_torque_nm[0], ev.decel_torque_nm[0], ev.rms_torque_nm[0])
     if np.isinf(torques).any():
         # Finite inputs that overflow a torque: the ranked candidates' torques name the
@@ -207,12 +210,13 @@ def _candidates(
     catalogue: CatalogueSnapshot,
     groups: presenter.DriveOptionGroups,
     top: int,
+    rules: tuple[Rule, ...],
 ) -> _Answered:
     """Every actuator's candidate for ``app``, ranked (``sizing.candidates.ranking_key``)
     by the engine: the first ``top`` as the answer lists them, the rest as stored; a
     candidate's detail is the engine's 1 × 1 view, with the checks in words."""
     speed = app.profile.peak_speed_rpm  # computed first: the engine takes its figures
-    ranked = _ranked(actuators, app, catalogue)
+    ranked = _ranked(actuators, app, catalogue, rules)
     total = len(ranked.actuators)
     shown = min(top, total)
     candidates = presenter.candidates(
@@ -248,7 +252,8 @@ def size_selection(
     where nothing fits, with the ratio study's leads or diameters that make an actuator
     fit (``binding.transmissions``; a batch's cases go without)."""
     groups = presenter.DriveOptionGroups(catalogue)
-    answered = _candidates(actuators, app, catalogue, groups, top)
+    rules = rules_for(app)
+    answered = _candidates(actuators, app, catalogue, groups, top, rules)
     binding = answered.binding
     if binding is not None and guide:  # nothing fits: where the load's own lead or
         binding["transmissions"] = guidance(body, actuators, catalogue)  # diameter would
@@ -263,7 +268,7 @@ def size_selection(
         body=body,
         request=request,
         profile=app.profile,
-        rules=rules_for(app),
+        rules=rules,
         controllers=groups.refs(),
         candidates=answered.candidates,
         total=answered.total,
