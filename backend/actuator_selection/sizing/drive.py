@@ -55,7 +55,7 @@ class DriveOptions:
     excluded: int
 
 
-def _no_voltage_data(code: str) -> Check:
+def _no_voltage_data(code: str, words: bool) -> Check:
     return Check(
         name="controller_voltage",
         status=Status.NO_DATA,
@@ -63,7 +63,7 @@ def _no_voltage_data(code: str) -> Check:
         limit=None,
         unit="V",
         reference=VOLTAGE_REFERENCE,
-        message=phrase(f"controller_voltage.{code}"),
+        message=phrase(f"controller_voltage.{code}") if words else "",
     )
 
 
@@ -114,19 +114,20 @@ def shared_voltage_check(
 ) -> Check:
     """:func:`voltage_check` for a controller that shares the bus classes ``shared``.
 
-    ``words=False`` leaves the message empty (and U_OUT at n_max, which only the message
-    reports uncomputed), for answers that list the numbers alone; status, value, limit
-    and reference are the same either way.
+    ``words=False`` leaves the message empty (U_OUT at n_max, which only the message
+    reports, is not computed; a check without data says nothing either), for answers
+    that list the numbers alone; status, value, limit and reference are the same either
+    way.
     """
     k_e = actuator.motor_voltage_constant_v_per_krpm
     i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
     l_line, poles = actuator.inductance_line_mh, actuator.pole_pairs
     if k_e is None or i_max is None or r_line is None or l_line is None or poles is None:
-        return _no_voltage_data("no_constants")
+        return _no_voltage_data("no_constants", words)
     if interface.bus_classes is None:
-        return _no_voltage_data("no_bus_class")
+        return _no_voltage_data("no_bus_class", words)
     if not shared:
-        return _no_voltage_data("no_shared_bus")
+        return _no_voltage_data("no_shared_bus", words)
 
     def required(speed: float) -> float:
         return controller_output_voltage(
