@@ -135,7 +135,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     errors.install(app)
     app.include_router(health.router, prefix=API_PREFIX)
     # Catalogue reads, selections and tools: open unless REQUIRE_API_KEY; batch before
-    # selections so that /selections/batch is not read as a selection id.
+    # selections so that /selections/batch is not read as a selection id. Selections
+    # first: FastAPI asks the routes in turn (with the catalogue's before them, a
+    # one-model selection spent ~0.3 M instructions finding its route, docs/benchmarks.md).
     # Body limits per router (413 above): bulk endpoints (batch, catalogue and price
     # imports) take larger bodies. Set on the routers rather than the app so that the
     # 413 passes through errors.UniformBodyTooLarge, which gives it the error shape.
