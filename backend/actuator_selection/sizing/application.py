@@ -71,14 +71,13 @@ class Application:
                 "cycle", "give segments or the t_1…t_p pattern with its load, not both"
             )
         require_time_constant(self.thermal_time_constant_s)
-        for name in (
-            "gear_required_life_h",
-            "momentary_torque_nm",
-            "momentary_count",
-            "min_natural_frequency_hz",
-            "emergency_stops",
+        for name, value in (
+            ("gear_required_life_h", self.gear_required_life_h),
+            ("momentary_torque_nm", self.momentary_torque_nm),
+            ("momentary_count", self.momentary_count),
+            ("min_natural_frequency_hz", self.min_natural_frequency_hz),
+            ("emergency_stops", self.emergency_stops),
         ):
-            value = getattr(self, name)
             if value is not None and not (math.isfinite(value) and value > 0):
                 raise InvalidInputError(name, f"must be a finite number > 0, got {value!r}")
         if not (math.isfinite(self.brake_safety_factor) and self.brake_safety_factor >= 1):

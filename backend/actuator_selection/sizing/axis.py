@@ -67,6 +67,15 @@ class AxisLoad:
     force_unit: str = "Nm"
 
     def __post_init__(self) -> None:
+        if (
+            0.0 <= self.inertia_kgm2 < math.inf
+            and 0.0 <= self.friction_torque_nm < math.inf
+            and -math.inf < self.gravity_torque_nm < math.inf
+            and 0.0 < self.efficiency <= 1.0
+            and 0.0 < self.speed_rpm_per_unit < math.inf
+            and 0.0 < self.torque_nm_per_force_unit < math.inf
+        ):
+            return  # every rule below holds (NaN fails each comparison)
         for name in (
             "inertia_kgm2",
             "friction_torque_nm",

@@ -72,6 +72,14 @@ class SpeedPattern:
     pause_s: float
 
     def __post_init__(self) -> None:
+        if (
+            0.0 < self.speed_rpm < math.inf
+            and 0.0 < self.accel_s < math.inf
+            and 0.0 <= self.constant_s < math.inf
+            and 0.0 < self.decel_s < math.inf
+            and 0.0 <= self.pause_s < math.inf
+        ):
+            return  # every rule below holds (NaN fails each comparison)
         for name in ("speed_rpm", "accel_s", "constant_s", "decel_s", "pause_s"):
             _require_finite(name, getattr(self, name))
         if self.speed_rpm <= 0:
@@ -128,6 +136,8 @@ class Load:
     inertia_kgm2: float
 
     def __post_init__(self) -> None:
+        if 0.0 <= self.torque_nm < math.inf and 0.0 <= self.inertia_kgm2 < math.inf:
+            return  # every rule below holds (NaN fails each comparison)
         _require_finite("torque_nm", self.torque_nm)
         _require_finite("inertia_kgm2", self.inertia_kgm2)
         if self.torque_nm < 0:

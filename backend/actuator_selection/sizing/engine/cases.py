@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
+from operator import attrgetter
 from typing import Any
 
 import numpy as np
@@ -191,6 +192,8 @@ def cases_of(apps: Sequence[Application]) -> Cases:
 
 
 _NO_OUTPUT_LOAD = (math.nan,) * len(OUTPUT_LOAD_FIELDS)
+_OUTPUT_LOAD_OF = attrgetter(*OUTPUT_LOAD_FIELDS)
+_REQUEST_OF = attrgetter(*REQUEST_FIELDS)
 
 
 def _inputs(a: Application) -> list[float | bool]:
@@ -204,11 +207,9 @@ def _inputs(a: Application) -> list[float | bool]:
         *(
             _NO_OUTPUT_LOAD
             if load is None
-            else (
-                math.nan if v is None else v for v in (getattr(load, n) for n in OUTPUT_LOAD_FIELDS)
-            )
+            else [math.nan if v is None else v for v in _OUTPUT_LOAD_OF(load)]
         ),
-        *(math.nan if v is None else v for v in (getattr(a, n) for n in REQUEST_FIELDS)),
+        *[math.nan if v is None else v for v in _REQUEST_OF(a)],
     ]
 
 
