@@ -1011,6 +1011,33 @@ def test_layout_fits_and_screenshots(
         context.close()
 
 
+@pytest.mark.parametrize("viewport", [DESKTOP, PHONE], ids=["1280px", "375px"])
+@pytest.mark.parametrize("locale", ["en-US", "de-DE"])
+def test_the_charts_are_drawn_with_the_legends_margin_given(
+    viewport: ViewportSize, locale: str, browser: Browser, base_url: str
+) -> None:
+    """The legend below each chart needs a bottom margin larger than the API's figure
+    gives; the page gives the one plotly.js would push it to (figures.js ``legendMargin``),
+    so plotly.js draws the chart once, without moving the margin and drawing again."""
+    context = browser.new_context(viewport=viewport, locale=locale, base_url=base_url)
+    try:
+        view = context.new_page()
+        view.goto("/")
+        view.locator("#example").click()
+        post_selection(view)
+        margins = view.evaluate(
+            """() => ['chart-cycle', 'chart-diagram'].map(id => {
+              const gd = document.getElementById(id);
+              return [gd.layout.margin.b, gd._fullLayout._size.b];
+            })"""
+        )
+        for given, drawn in margins:
+            assert drawn > 48  # the API's figure's margin: the legend pushes it
+            assert given == drawn
+    finally:
+        context.close()
+
+
 def test_the_quotes_link_carries_the_selection_and_the_actuator(page: Page) -> None:
     page.goto("/")
     fill_worked_example(page)

@@ -860,8 +860,7 @@ async function drawRatioChart(figure) {
     chartUnavailable(div, t("charts.unavailable"));
     return;
   }
-  const narrow = { narrow: div.clientWidth > 0 && div.clientWidth < NARROW_CHART_PX };
-  const fitted = fitFigure(figure, narrow);
+  const fitted = fitFigure(figure, chartSize(div));
   await Plotly.react(div, fitted.data, fitted.layout, { ...PLOT_CONFIG, locale: state.lang });
   div.dataset.state = "ready";
 }
@@ -998,6 +997,19 @@ function purgeCharts() {
   for (const div of document.querySelectorAll(".chart.js-plotly-plot")) window.Plotly.purge(div);
 }
 
+/**
+ * What ``fitFigure`` needs of a chart's box: whether it is narrow (a phone's chart lists its
+ * legend one entry a line) and its height as plotly.js reads it (its computed style), so
+ * that the figure's margins are given up front (figures.js).
+ */
+function chartSize(div) {
+  const width = div.clientWidth;
+  return {
+    narrow: width > 0 && width < NARROW_CHART_PX,
+    height: Number.parseFloat(window.getComputedStyle(div).height),
+  };
+}
+
 function chartUnavailable(div, text) {
   div.dataset.state = "error";
   div.replaceChildren(h("p", { class: "chart-placeholder chart-error" }, text));
@@ -1071,14 +1083,12 @@ async function drawCharts() {
   });
   const drawn = (figure) => figure && Array.isArray(figure.data) && figure.layout;
 
-  // a phone's chart lists its legend one entry a line (figures.js)
-  const narrow = { narrow: diagramDiv.clientWidth > 0 && diagramDiv.clientWidth < NARROW_CHART_PX };
   const cycle = await cyclePending;
   if (token !== drawToken) return;
   if (!drawn(cycle)) {
     chartUnavailable(cycleDiv, t("charts.unavailable"));
   } else {
-    const fitted = fitFigure(cycle, narrow);
+    const fitted = fitFigure(cycle, chartSize(cycleDiv));
     cycleDiv.replaceChildren();
     await Plotly.react(cycleDiv, fitted.data, fitted.layout, config("cycle"));
     if (token !== drawToken) return;
@@ -1106,7 +1116,7 @@ async function drawCharts() {
   if (!drawn(figure)) {
     chartUnavailable(diagramDiv, t("charts.unavailable"));
   } else {
-    const diagram = fitFigure(figure, narrow);
+    const diagram = fitFigure(figure, chartSize(diagramDiv));
     diagramDiv.replaceChildren();
     await Plotly.react(diagramDiv, diagram.data, diagram.layout, config("speed-torque"));
     diagramDiv.dataset.model = candidate.model;

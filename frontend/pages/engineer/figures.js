@@ -56,15 +56,69 @@ function isTrapezoid(selection) {
   return isNum(selection.cycle?.accel_s);
 }
 
+// plotly.js 4's sizes a legend's height is made of (its legend/constants.js and draw.js):
+// an entry is max(lines · 1.3 · font size, 16) + 3 px high, not measured, the legend's
+// inside has itemGap (5 px) above and below, and a margin pushed is the pushed size
+// plus a pad of 12 px (``Plots.autoMargin``, margins of 12 px and more).
+const LEGEND_LINE_SPACING = 1.3;
+const LEGEND_ENTRY_MIN_PX = 16;
+const LEGEND_ENTRY_EXTRA_PX = 3;
+const LEGEND_ITEM_GAP_PX = 5;
+const AUTOMARGIN_PAD_PX = 12;
+/** plotly.js's least plot height (``minreducedheight``): no margin given that leaves less. */
+const MIN_PLOT_PX = 64;
+
+/** How many lines plotly.js writes ``name`` in (a ``<br>`` breaks a line). */
+function lineCount(name) {
+  return typeof name === "string" ? (name.match(/<br\s*\/?>/gi)?.length ?? 0) + 1 : 1;
+}
+
+/**
+ * The bottom margin plotly.js pushes the legend below the plot to, given up front: plotly.js
+ * draws the plot with the figure's margin, finds the legend does not fit below it, moves the
+ * margin and draws the legend and the layout's styles again (a fifth of a chart's drawing
+ * here). Its formula (``Plots.doAutoMargin``), for a legend anchored at its top at paper
+ * height ``y`` < 0 and ``h`` high: b = (h + pad + (t − height) · y) / (1 − y), rounded as
+ * plotly.js rounds its margins, so that the chart is the same, the margin not moved.
+ * A vertical legend's height is its entries'; a horizontal one's is at least one row's,
+ * so ``b`` is then the least plotly.js can push to (a legend of more rows is pushed
+ * further by plotly.js, as before). Undefined where the figure is not of that form.
+ */
+function legendMargin(data, layout, legend, height) {
+  const margin = layout.margin;
+  const font = legend.font?.size ?? layout.font?.size;
+  const sides = [margin?.l, margin?.r, margin?.t, margin?.b];
+  if (!isNum(height) || height <= 0 || !sides.every(isNum) || !isNum(font) || !isNum(legend.y)) return undefined;
+  if (layout.showlegend !== true || legend.y >= 0 || legend.yanchor !== "top") return undefined;
+  if (legend.title !== undefined || legend.maxheight !== undefined || legend.borderwidth !== undefined) return undefined;
+  if (legend.yref !== undefined && legend.yref !== "paper") return undefined;
+  if (!Array.isArray(data) || !data.every((trace) => (trace.type ?? "scatter") === "scatter")) return undefined;
+  const entries = data
+    .filter((trace) => trace.showlegend !== false && trace.visible !== false)
+    .map((trace) => Math.max(lineCount(trace.name) * LEGEND_LINE_SPACING * font, LEGEND_ENTRY_MIN_PX) + LEGEND_ENTRY_EXTRA_PX);
+  if (!entries.length) return undefined;
+  const inside = legend.orientation === "v" ? entries.reduce((a, b) => a + b, 0) : Math.max(...entries);
+  const legendPx = Math.min(Math.ceil(inside + 2 * LEGEND_ITEM_GAP_PX), Math.max(height / 2, 30));
+  const pad = Math.min(AUTOMARGIN_PAD_PX, margin.l, margin.r, margin.t, margin.b);
+  const b = Math.round((legendPx + pad + (margin.t - height) * legend.y) / (1 - legend.y));
+  return b > margin.b && b + margin.t <= height - MIN_PLOT_PX ? b : undefined;
+}
+
 /**
  * A figure as the API defines it (``GET …/candidates/{model}/cycle`` and ``…/diagram``, the
  * figures the quote and the report print, from ``documents/figures.py``), fitted to the chart's
  * width: a narrow chart lists its legend one entry a line below the plot, names broken
- * into lines. ``figure`` is left unchanged.
+ * into lines. Given the chart's ``height`` (px, as its style has it), the figure's bottom
+ * margin is the one plotly.js would push the legend to (``legendMargin``): the same chart,
+ * drawn in one pass. ``figure`` is left unchanged.
  */
-export function fitFigure(figure, { narrow = false } = {}) {
-  const layout = { ...figure.layout, legend: legendBelow(narrow, figure.layout?.legend?.y ?? -0.2) };
-  return { data: legendNames(figure.data, narrow), layout };
+export function fitFigure(figure, { narrow = false, height = undefined } = {}) {
+  const legend = legendBelow(narrow, figure.layout?.legend?.y ?? -0.2);
+  const data = legendNames(figure.data, narrow);
+  const layout = { ...figure.layout, legend };
+  const b = legendMargin(data, layout, { ...figure.layout?.legend, ...legend }, height);
+  if (b !== undefined) layout.margin = { ...layout.margin, b };
+  return { data, layout };
 }
 
 /**
