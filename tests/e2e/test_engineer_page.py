@@ -745,6 +745,37 @@ def test_the_panel_shows_the_lean_candidate_until_its_detail_arrives(page: Page)
     assert "zone-approx" in traces(page, "chart-diagram")  # the detail's catalogue data
 
 
+def test_the_panels_parts_below_the_charts_follow_the_charts(page: Page) -> None:
+    """The segments' table and the controllers, below the charts, are built once the charts
+    are drawn (the detail in): nothing drawn before them moves."""
+    held: dict[str, list[Route]] = {"cycle": [], "diagram": []}
+    figure = re.compile(r"/api/v1/selections/[^/]+/candidates/[^/]+/(cycle|diagram)")
+
+    def hold(route: Route) -> None:
+        match = figure.search(route.request.url)
+        assert match is not None
+        held[match.group(1)].append(route)
+
+    page.route(figure, hold)
+    page.goto("/")
+    page.locator("#example").click()
+    body = cast(dict[str, Any], submit(page).json())
+    best = body["candidates"][0]
+    expect(page.locator("#detail")).to_have_attribute("data-detail", "ready")
+    while not held["cycle"]:
+        page.wait_for_timeout(20)
+    for route in held["cycle"]:
+        route.continue_()
+    page.wait_for_selector('#chart-cycle[data-state="ready"]')
+    expect(page.locator("#checks-table tbody tr")).to_have_count(len(best["checks"]))
+    assert page.locator("#controllers-table").count() == 0
+    for route in held["diagram"]:
+        route.continue_()
+    wait_for_charts(page, best["model"])
+    expect(page.locator("#controllers-table tbody tr").first).to_be_visible()
+    expect(page.locator("#detail")).not_to_have_attribute("data-below", "later")
+
+
 def test_the_ranking_draws_its_first_rows_and_the_rest_after_the_charts(page: Page) -> None:
     """The whole catalogue's ranking comes with its first rows; the others follow once the
     charts are drawn, or as soon as the user reaches for the ranking (its scroll box, its

@@ -26,6 +26,7 @@ import {
   MORE_ROWS,
   updateMoreRow,
   renderBinding,
+  fillBelowCharts,
   fillDetail,
   renderDetail,
   renderLimits,
@@ -939,7 +940,8 @@ function renderChosen() {
   if (!slot || !candidate) return;
   purgeCharts();
   const view = candidateDetail(state.selection, candidate.model);
-  slot.replaceChildren(renderDetail(state.selection, candidate, view, state.lang));
+  // the parts below the charts come after them (results.js ``fillBelowCharts``)
+  slot.replaceChildren(renderDetail(state.selection, candidate, view, state.lang, { belowCharts: false }));
   for (const row of $$as("#ranking-table tbody tr[data-model]", HTMLTableRowElement)) {
     const chosen = row.dataset.model === candidate.model;
     row.classList.toggle("chosen", chosen);
@@ -947,7 +949,18 @@ function renderChosen() {
     else row.removeAttribute("aria-current");
     row.querySelector(".model-button")?.setAttribute("aria-pressed", String(chosen));
   }
-  return drawCharts();
+  const drawn = drawCharts();
+  drawn.finally(fillBelowChartsNow);
+  return drawn;
+}
+
+/** The chosen panel's parts below its charts, where they still wait (results.js ``fillBelowCharts``). */
+function fillBelowChartsNow() {
+  const panel = html("#detail");
+  const sel = state.selection;
+  const candidate = chosenCandidate();
+  if (!panel || !sel || !candidate || panel.dataset.below !== "later" || panel.dataset.model !== candidate.model) return;
+  fillBelowCharts(panel, sel, candidate, candidateDetail(sel, candidate.model), state.lang);
 }
 
 /** A detail has arrived (or failed): the panel shows it if its candidate is still the chosen one. */
@@ -1098,6 +1111,8 @@ async function drawCharts() {
     cycleDiv.dataset.torques = cycle.layout.meta?.torques === "segments" ? "detail" : "lean";
   }
 
+  // the diagram waits for the detail: meanwhile the parts below the charts
+  if (candidateDetail(sel, candidate.model).status === "loading") fillBelowChartsNow();
   const detail = await detailPending;
   const actuator = detail?.actuator ?? null;
   if (token !== drawToken) return;

@@ -844,7 +844,9 @@ function detailStatus(view, lang) {
 
 /**
  * Fill the parts of the chosen candidate's panel that the detail adds to: the
- * status line, the checks, the reasons and the controllers. The charts are left alone.
+ * status line, the checks, the reasons and the controllers. The charts are left alone;
+ * so are the parts below them while the panel waits for its charts (``renderDetail``'s
+ * ``belowCharts: false``: ``fillBelowCharts`` fills them once the charts are drawn).
  */
 export function fillDetail(panel, sel, candidate, view, lang) {
   const slot = (name) => panel.querySelector(`[data-slot="${name}"]`);
@@ -866,6 +868,18 @@ export function fillDetail(panel, sel, candidate, view, lang) {
         ]
       : []),
   );
+  if (panel.dataset.below !== "later") fillBelowCharts(panel, sel, candidate, view, lang);
+}
+
+/**
+ * The panel's parts below its charts (the segments' table and the controllers): on a new
+ * answer a third of the results' elements, built and laid out after the charts, as the
+ * ranking's other rows are; below the charts, they move nothing drawn before them.
+ */
+export function fillBelowCharts(panel, sel, candidate, view, lang) {
+  const slot = (name) => panel.querySelector(`[data-slot="${name}"]`);
+  const detail = readyDetail(view);
+  delete panel.dataset.below;
   slot("controllers").replaceChildren(...[controllerList(sel, candidate, detail, lang)].filter(Boolean));
   slot("segments").replaceChildren(...[segmentTable(sel, detail, view, lang)].filter(Boolean));
 }
@@ -1040,8 +1054,11 @@ export function renderLimits(view, lang) {
   );
 }
 
-/** The chosen candidate: key figures, every check, reasons, controllers, chart frames. */
-export function renderDetail(sel, candidate, view, lang) {
+/**
+ * The chosen candidate: key figures, every check, reasons, controllers, chart frames. With
+ * ``belowCharts: false`` the parts below the charts are left for ``fillBelowCharts``.
+ */
+export function renderDetail(sel, candidate, view, lang, { belowCharts = true } = {}) {
   const t = (k) => translate(lang, k);
   const termWithSym = (symbol, extra) => [sym(symbol, { class: "sym" }), extra ? ` ${extra}` : ""];
   const panel = h(
@@ -1090,6 +1107,7 @@ export function renderDetail(sel, candidate, view, lang) {
     h("div", { "data-slot": "limits" }, renderLimits(null, lang)),
     h("div", { "data-slot": "controllers" }),
   );
+  if (!belowCharts) panel.dataset.below = "later";
   fillDetail(panel, sel, candidate, view, lang);
   return panel;
 }
