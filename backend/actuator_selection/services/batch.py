@@ -35,13 +35,18 @@ from actuator_selection.services.presenters.batch import (
     CodedChecks,
     actuator_body,
     batch_candidate_body,
-    cases_json,
-    coded_candidates_json,
     coded_check_columns,
     coded_summary,
     controllers_summary,
     members_json,
     result_body,
+)
+from actuator_selection.services.presenters.batch_rows import (
+    Column,
+    candidate_columns,
+    case_rows,
+    pieces,
+    rows,
 )
 from actuator_selection.services.presenters.selection import dump_json, json_items, load_columns
 from actuator_selection.services.selections import (
@@ -324,7 +329,9 @@ def _result_chunks(
                 body, actuators, arrays, apps[start:end], models[start:end], ids[start:end], drives
             )
             if written is not None:
-                yield (b"," if start else b"") + b",".join(written)
+                if not start:  # the answer's first case: no comma before it
+                    written[0] = written[0][1:]
+                yield b"".join(written)
                 continue
         selections = _select(actuators, arrays, apps[start:end], models[start:end], body.top)
         coded = CodedChecks()  # the slice's checks, written from the engine's arrays
@@ -353,13 +360,18 @@ def _coded_results(
     ids: list[tuple[str | None, str | None]],
     drives: _Drives,
 ) -> list[bytes] | None:
-    """Each case's entry of ``results`` without words (not ``include_messages``) as JSON,
-    written from the ranking's arrays (``sizing.engine.ranked_cells``) with no profile
-    per case and no candidate per cell: the bytes :func:`result_body` of
-    :func:`_select`'s selections gives. None where a cycle's figures or a candidate's
-    torques are not finite: the selections then raise the error that names the input."""
-    out: list[bytes] = [b""] * len(apps)
-    for rules, indexes in _by_rules(apps).items():
+    """The cases' entries of ``results`` without words (not ``include_messages``) as
+    JSON, each after a comma, written from the ranking's arrays (``sizing.engine.
+    ranked_cells``) with no profile per case and no candidate per cell: joined, the
+    bytes :func:`result_body` of :func:`_select`'s selections gives, comma-joined. Where
+    every case needs the same checks, the pieces of every case in turn
+    (``batch_rows.pieces``), else each case's text. None where a cycle's figures or a
+    candidate's torques are not finite: the selections then raise the error that names
+    the input."""
+    groups = _by_rules(apps)
+    whole = len(groups) == 1
+    out: list[bytes] = [] if whole else [b""] * len(apps)
+    for rules, indexes in groups.items():
         cases = [apps[i] for i in indexes]
         for ranked in ranked_cells(
             actuators,
@@ -369,18 +381,22 @@ def _coded_results(
             rules=rules,
             arrays=arrays,
         ):
-            written = _ranked_json(
+            n = len(ranked.counts)
+            columns = _ranked_json(
                 ranked,
                 actuators,
-                cases[ranked.start : ranked.start + len(ranked.counts)],
-                [ids[i] for i in indexes[ranked.start : ranked.start + len(ranked.counts)]],
+                cases[ranked.start : ranked.start + n],
+                [ids[i] for i in indexes[ranked.start : ranked.start + n]],
                 body,
                 drives,
             )
-            if written is None:
+            if columns is None:
                 return None
-            for n, text in enumerate(written):
-                out[indexes[ranked.start + n]] = text
+            if whole:  # the blocks in the cases' order
+                out += pieces(columns, n)
+                continue
+            for k, row in enumerate(rows(columns, n)):
+                out[indexes[ranked.start + k]] = b"".join(row)
     return out
 
 
@@ -391,9 +407,10 @@ def _ranked_json(
     ids: list[tuple[str | None, str | None]],
     body: BatchSelectionRequest,
     drives: _Drives,
-) -> list[bytes] | None:
-    """:func:`_coded_results` of one block of cases ranked: each member written as JSON
-    over the cells or cases at once, and each candidate and case by one template."""
+) -> list[Column] | None:
+    """:func:`_coded_results` of one block of cases ranked, as columns over its cases
+    (``batch_rows.case_rows``): each member written as JSON over the cells or cases at
+    once."""
     f = ranked.figures
     if not all(
         np.isfinite(a).all()
@@ -421,7 +438,7 @@ def _ranked_json(
             dump_json(drives.controllers(actuators[column], peaks[row]))
             for row, column in zip(ranked.rows.tolist(), columns.tolist(), strict=True)
         ]
-    candidates = coded_candidates_json(
+    candidates = candidate_columns(
         heads[columns].tolist(),
         _VERDICT_JSON[ranked.verdicts].tolist(),
         torques,
@@ -430,7 +447,7 @@ def _ranked_json(
         controllers,
         tails[columns].tolist(),
     )
-    return cases_json(
+    return case_rows(
         [dump_json(id_) for id_, _ in ids],
         [dump_json(case_id) for _, case_id in ids],
         load_columns([app.axis_load for app in apps], f.peak_speed_rpm),

@@ -8,9 +8,7 @@ more than the engineering of the whole batch (the tests validate it against the 
 
 from __future__ import annotations
 
-import itertools
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -22,7 +20,6 @@ from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.selection import (
-    LOAD_TEMPLATE,
     dump_json,
     json_items,
     resolved_load,
@@ -558,72 +555,11 @@ def coded_candidate_body(
     return figures
 
 
-def coded_candidates_json(
-    actuators: list[bytes],
-    verdicts: list[bytes],
-    torques: Sequence[list[bytes]],
-    reason_checks: list[bytes],
-    checks: list[list[bytes]] | None,
-    controllers: list[bytes] | None,
-    summaries: list[bytes],
-) -> list[bytes]:
-    """Each cell's batch candidate without words as JSON: the text :func:`dump_json`
-    writes of :func:`coded_candidate_body`, from each member's JSON over the cells (one
-    template fills them): ``actuators`` the actuator's members of :func:`figures_body`
-    (``"model":…,"family":…,"gear_ratio":…``), ``verdicts`` and ``torques`` (T_1, T_2,
-    T_3, T_rms) its values, ``reason_checks`` the list, ``checks`` each rule's check of
-    :func:`coded_check_columns` (None: not asked for), ``controllers`` the list (None:
-    not asked for), and ``summaries`` the members of :func:`coded_summary` each after a
-    comma (:func:`members_json`)."""
-    parts = [
-        b'{%b,"verdict":%b,"accel_torque_nm":%b,"constant_torque_nm":%b,'
-        b'"decel_torque_nm":%b,"rms_torque_nm":%b,"reason_checks":%b'
-    ]
-    members = [actuators, verdicts, *torques, reason_checks]
-    if checks is not None:
-        parts.append(b',"checks":[' + b",".join([b"%b"] * len(checks)) + b"]")
-        members += checks
-    if controllers is not None:
-        parts.append(b',"controllers":%b')
-        members.append(controllers)
-    parts.append(b"%b}")
-    members.append(summaries)
-    return _filled(b"".join(parts), members, len(verdicts))
-
-
 def members_json(body: dict[str, Any], *, comma: bool = False) -> bytes:
     """The members of ``body`` as :func:`dump_json` writes them inside its braces
     (``comma``: each after a comma, so that none is nothing)."""
     inner = dump_json(body)[1:-1]
     return b"," + inner if comma and inner else inner
-
-
-def cases_json(
-    ids: list[bytes],
-    case_ids: list[bytes],
-    loads: Sequence[list[bytes]],
-    figures: Sequence[list[bytes]],
-    candidates: list[bytes],
-    counts: Sequence[int],
-) -> list[bytes]:
-    """Each case's entry of ``results`` as JSON, the text :func:`dump_json` writes of
-    :func:`case_body`, from its members' JSON: ``loads`` the members of its ``load``
-    (:func:`load_columns`), ``figures`` the cycle times, mean speeds and duty cycles,
-    ``candidates`` every case's candidates in turn (``counts`` of them a case;
-    :func:`coded_candidates_json`)."""
-    head = (
-        b'{"id":%b,"case_id":%b,"load":'
-        + LOAD_TEMPLATE
-        + b',"cycle_time_s":%b,"mean_speed_rpm":%b,"duty_cycle_percent":%b,"candidates":['
-    )
-    members = [ids, case_ids, *loads, *figures]
-    if counts and min(counts) == max(counts):  # as many in every case: each one a member
-        n = counts[0]
-        members += [candidates[k::n] for k in range(n)]
-        return _filled(head + b",".join([b"%b"] * n) + b"]}", members, len(counts))
-    ends = list(itertools.accumulate(counts))
-    listed = [b",".join(candidates[end - n : end]) for end, n in zip(ends, counts, strict=True)]
-    return _filled(head + b"%b]}", [*members, listed], len(counts))
 
 
 def coded_summary(summary: dict[str, Any]) -> dict[str, Any]:
