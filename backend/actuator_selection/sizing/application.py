@@ -64,6 +64,19 @@ class Application:
     """The cycle's :class:`~actuator_selection.sizing.motion.Profile`, once computed."""
 
     def __post_init__(self) -> None:
+        if (
+            self.motion is None
+            and self.pattern is not None
+            and self.load is not None
+            and self.thermal_time_constant_s is None
+            and self.gear_required_life_h is None
+            and self.momentary_torque_nm is None
+            and self.momentary_count is None
+            and self.min_natural_frequency_hz is None
+            and self.emergency_stops is None
+            and self.brake_safety_factor == DEFAULT_BRAKE_SAFETY_FACTOR
+        ):
+            return  # the shorthand with every option at its default: each rule below holds
         if self.motion is None and (self.pattern is None or self.load is None):
             raise InvalidInputError("cycle", "needs a motion, or a speed pattern and a load")
         if self.motion is not None and (self.pattern is not None or self.load is not None):

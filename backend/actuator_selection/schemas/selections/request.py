@@ -117,20 +117,10 @@ class SelectionRequest(StrictModel):
         """The application as the core sees it: the chapter's shorthand (T_L, J_L, the
         t_1…t_p pattern) where that is what was sent, else a motion of segments."""
         speed, speed_field = _load_speed(self.load)
-        options: dict[str, Any] = {
-            "high_dynamics": self.high_dynamics,
-            "brake": self.brake,
-            "drive": self.drive,
-            "output_load": output_load_core(self.output_load),
-            "thermal_time_constant_s": self.thermal_time_constant_s,
-            "gear": self.gear is not None,
-            "gear_required_life_h": None if self.gear is None else self.gear.required_life_h,
-            "momentary_torque_nm": None if self.gear is None else self.gear.momentary_torque_nm,
-            "momentary_count": None if self.gear is None else self.gear.momentary_count,
-            "min_natural_frequency_hz": self.min_natural_frequency_hz,
-            "brake_safety_factor": self.brake_safety_factor,
-            "emergency_stops": self.emergency_stops,
-        }
+        if self._plain():  # every option at its default: the core's defaults
+            options: dict[str, Any] = {"high_dynamics": self.high_dynamics}
+        else:
+            options = self._options()
         load = self.load
         if isinstance(self.cycle, CycleIn) and isinstance(load, _LoadIn) and load.chapter_shorthand:
             if speed is None:
@@ -145,3 +135,34 @@ class SelectionRequest(StrictModel):
             return Application(pattern=pattern, load=load.to_core(), **options)
         motion = self.cycle.to_motion(speed, load.to_axis(), speed_field)
         return Application(motion=motion, **options)
+
+    def _plain(self) -> bool:
+        """Whether every option but ``high_dynamics`` is at its default (a batch's case,
+        mostly): :meth:`_options` then says nothing the core's defaults do not."""
+        return (
+            not self.brake
+            and not self.drive
+            and self.output_load is None
+            and self.thermal_time_constant_s is None
+            and self.gear is None
+            and self.min_natural_frequency_hz is None
+            and self.brake_safety_factor == DEFAULT_BRAKE_SAFETY_FACTOR
+            and self.emergency_stops is None
+        )
+
+    def _options(self) -> dict[str, Any]:
+        """The application's options beyond its motion, as the core names them."""
+        return {
+            "high_dynamics": self.high_dynamics,
+            "brake": self.brake,
+            "drive": self.drive,
+            "output_load": output_load_core(self.output_load),
+            "thermal_time_constant_s": self.thermal_time_constant_s,
+            "gear": self.gear is not None,
+            "gear_required_life_h": None if self.gear is None else self.gear.required_life_h,
+            "momentary_torque_nm": None if self.gear is None else self.gear.momentary_torque_nm,
+            "momentary_count": None if self.gear is None else self.gear.momentary_count,
+            "min_natural_frequency_hz": self.min_natural_frequency_hz,
+            "brake_safety_factor": self.brake_safety_factor,
+            "emergency_stops": self.emergency_stops,
+        }
