@@ -179,12 +179,18 @@ def _extremes(
     (extremes × cases × ends × 1: a driving, a steady, a braking piece's end): the signed
     torque of largest magnitude, the first one on a tie (``argmax``; a NaN counts for
     none), for every extreme at once."""
-    magnitude = np.abs(ends)
-    candidates = np.where(counts & (magnitude >= 0.0), magnitude, -1.0)
+    # |T| where counted, else −1 (a NaN too): two ufuncs over the broadcast shape, where
+    # np.where's broadcasting of a scalar took its slow path (the same values)
+    magnitude = np.fmax(np.abs(ends), -1.0)
+    candidates = np.minimum(magnitude, np.where(counts, math.inf, -1.0))
     largest = candidates.max(axis=2)
-    # The torque at the first largest, by indexes (take_along_axis costs more in Python).
-    cases = np.arange(ends.shape[0])[:, np.newaxis]
-    torque = ends[cases, candidates.argmax(axis=2), np.arange(ends.shape[2])]
+    # The torque at the first largest, by its place in ``ends`` flattened (one take, not
+    # three index arrays broadcast; take_along_axis costs more in Python).
+    n_cases, n_ends, n_actuators = ends.shape
+    at = candidates.argmax(axis=2)  # extremes × cases × actuators
+    at *= n_actuators
+    at += (np.arange(n_cases) * (n_ends * n_actuators))[:, np.newaxis] + np.arange(n_actuators)
+    torque = np.take(ends, at)
     if found is None:  # the first group: nothing found before
         return np.where(largest >= 0.0, torque, _NO_EXTREME), largest
     take = largest > found_abs
