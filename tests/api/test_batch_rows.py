@@ -1,24 +1,29 @@
 """A batch's cases written as rows of pieces (``services/presenters/batch_rows.py``) are
 the text ``dump_json`` writes of the cases' dicts (``case_body`` of
 ``coded_candidate_body``s), each case after a comma: with and without checks and
-controllers, as many candidates in every case or not, none at all."""
+controllers, as many candidates in every case or not, none at all; and the loads of the
+chapter's shorthand written without an axis load per case."""
 
 from __future__ import annotations
 
 import random
 from typing import Any
 
+import numpy as np
 import orjson
 import pytest
 
 from actuator_selection.services.presenters.batch import case_body, coded_candidate_body
 from actuator_selection.services.presenters.batch_rows import (
     candidate_columns,
+    case_loads,
     case_rows,
     pieces,
     rows,
 )
-from actuator_selection.services.presenters.selection import LOAD_KEYS, dump_json
+from actuator_selection.services.presenters.selection import LOAD_KEYS, dump_json, load_columns
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.cycle import Load, SpeedPattern
 
 
 def _candidate(rng: random.Random, rules: int | None, controllers: bool) -> dict[str, Any]:
@@ -109,3 +114,18 @@ def test_rows_are_the_cases_dicts_written(
         b"," + dump_json(c) for c in cases
     ]
     assert orjson.loads(b"[" + expected[1:] + b"]") == cases
+
+
+def test_shorthand_loads_are_their_axis_loads_written() -> None:
+    rng = random.Random(5)
+    apps = [
+        Application(
+            pattern=SpeedPattern(speed_rpm=40, accel_s=0.1, constant_s=0, decel_s=0.1, pause_s=1),
+            load=Load(torque_nm=rng.choice([0, 2, rng.random()]), inertia_kgm2=rng.random()),
+        )
+        for _ in range(20)
+    ]
+    peaks = np.array([rng.uniform(1, 100) for _ in apps])
+    expected = load_columns([app.axis_load for app in apps], peaks)
+    assert case_loads(apps, peaks) == expected
+    assert case_loads(apps[:1], peaks[:1]) == [column[:1] for column in expected]

@@ -44,11 +44,12 @@ from actuator_selection.services.presenters.batch import (
 from actuator_selection.services.presenters.batch_rows import (
     Column,
     candidate_columns,
+    case_loads,
     case_rows,
     pieces,
     rows,
 )
-from actuator_selection.services.presenters.selection import dump_json, json_items, load_columns
+from actuator_selection.services.presenters.selection import dump_json, json_items
 from actuator_selection.services.selections import (
     Writer,
     size_selection,
@@ -450,7 +451,7 @@ def _ranked_json(
     return case_rows(
         [dump_json(id_) for id_, _ in ids],
         [dump_json(case_id) for _, case_id in ids],
-        load_columns([app.axis_load for app in apps], f.peak_speed_rpm),
+        case_loads(apps, f.peak_speed_rpm),
         [json_items(f.cycle_s), json_items(f.mean_speed_rpm), json_items(f.duty_cycle_percent)],
         candidates,
         ranked.counts,

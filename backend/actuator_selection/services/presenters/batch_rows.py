@@ -14,7 +14,18 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator, Sequence
 
-from actuator_selection.services.presenters.selection import LOAD_TEMPLATE
+import numpy as np
+import numpy.typing as npt
+
+from actuator_selection.services.presenters.selection import (
+    LOAD_KEYS,
+    LOAD_TEMPLATE,
+    dump_json,
+    json_items,
+    load_columns,
+)
+from actuator_selection.sizing.application import Application
+from actuator_selection.sizing.axis import AxisLoad
 
 Column = bytes | list[bytes]
 """A piece of every row: the same literal text (bytes), or each row's own (a list)."""
@@ -109,6 +120,38 @@ def case_rows(
         )
     columns.append(b"]}")
     return columns
+
+
+def case_loads(apps: Sequence[Application], peaks: npt.NDArray[np.float64]) -> list[list[bytes]]:
+    """``load_columns`` of the cases' axis loads at their peak speeds ``peaks`` (each
+    member of their ``load`` as JSON over the cases); where every case is the chapter's
+    shorthand, read from its load as ``Application.axis_load`` makes it (T_L the friction,
+    J_L, no weight, η 1) without an axis load per case."""
+    loads = [app.load for app in apps if app.motion is None and app.load is not None]
+    if len(loads) < len(apps):
+        return load_columns([app.axis_load for app in apps], peaks)
+    n = len(apps)
+    return [
+        json_items(peaks),
+        _numbers([x.torque_nm for x in loads]),
+        _numbers([x.inertia_kgm2 for x in loads]),
+        _NO_WEIGHT * n,
+        _NO_LOSS * n,
+    ]
+
+
+def _numbers(figures: list[float]) -> list[bytes]:
+    """Each figure as JSON, as ``load_columns`` writes it."""
+    if all(type(x) is float for x in figures):
+        return json_items(np.array(figures, dtype=np.float64))
+    return [dump_json(x) for x in figures]
+
+
+_SHORTHAND_AXIS = AxisLoad(inertia_kgm2=0.0, friction_torque_nm=0.0)
+assert LOAD_KEYS == ("speed_rpm", "torque_nm", "inertia_kgm2", "gravity_torque_nm", "efficiency")
+_NO_WEIGHT = _numbers([_SHORTHAND_AXIS.gravity_torque_nm])
+_NO_LOSS = _numbers([_SHORTHAND_AXIS.efficiency])
+"""A shorthand's axis load's weight (0) and efficiency (1) as JSON, one item."""
 
 
 def rows(columns: Sequence[Column], n: int) -> Iterator[tuple[bytes, ...]]:
