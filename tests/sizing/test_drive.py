@@ -17,7 +17,13 @@ from actuator_selection.catalogue.controllers import (
 )
 from actuator_selection.catalogue.parts import TemperatureSensor
 from actuator_selection.sizing.compatibility import MatchVerdict, match_controllers
-from actuator_selection.sizing.drive import DriveOptions, drive_options, voltage_check
+from actuator_selection.sizing.drive import (
+    DriveOptions,
+    drive_options,
+    shared_voltage_check,
+    shared_voltage_checks,
+    voltage_check,
+)
 from actuator_selection.sizing.electrical import DcBusClass
 from actuator_selection.sizing.selection import Status
 
@@ -137,3 +143,26 @@ def test_unknown_bus_classes_leave_the_voltage_unchecked() -> None:
     assert {o.voltage.message for o in drive.options} == {
         "no data: the actuator's DC bus class is not published"
     }
+
+
+@pytest.mark.parametrize("words", [True, False])
+@pytest.mark.parametrize(
+    "actuator",
+    [CHA, Actuator(model="FHA-25C-50-L", family="FHA-C", gear_ratio=50, max_speed_rpm=90)],
+)
+def test_the_checks_of_several_bus_groups_are_each_groups_check(
+    words: bool, actuator: Actuator
+) -> None:
+    """A candidate's drive options check U_OUT once for all its bus groups: the same
+    checks, in the same order, as one group at a time (an empty group: no shared bus)."""
+    groups = [BUSES[1:2], BUSES[1:], (), BUSES[2:], BUSES[:1]]
+    checks = shared_voltage_checks(
+        actuator=actuator, interface=CHA_INTERFACE, shared=groups, speed_rpm=60.0, words=words
+    )
+    assert checks == [
+        shared_voltage_check(
+            actuator=actuator, interface=CHA_INTERFACE, shared=g, speed_rpm=60.0, words=words
+        )
+        for g in groups
+    ]
+    assert len({c.status for c in checks}) > 1 or actuator is not CHA

@@ -119,15 +119,30 @@ def shared_voltage_check(
     that list the numbers alone; status, value, limit and reference are the same either
     way.
     """
+    (check,) = shared_voltage_checks(
+        actuator=actuator, interface=interface, shared=(shared,), speed_rpm=speed_rpm, words=words
+    )
+    return check
+
+
+def shared_voltage_checks(
+    *,
+    actuator: Actuator,
+    interface: ActuatorInterface,
+    shared: Sequence[Sequence[DcBusClass]],
+    speed_rpm: float,
+    words: bool = True,
+) -> list[Check]:
+    """:func:`shared_voltage_check` for each of ``shared``, in its order: U_OUT at n_2
+    (and at n_max, for the words) computed once for the actuator, each check its bus
+    classes' (a candidate's drive options list a handful of such groups)."""
     k_e = actuator.motor_voltage_constant_v_per_krpm
     i_max, r_line = actuator.max_current_a, actuator.resistance_line_ohm
     l_line, poles = actuator.inductance_line_mh, actuator.pole_pairs
     if k_e is None or i_max is None or r_line is None or l_line is None or poles is None:
-        return _no_voltage_data("no_constants", words)
+        return [_no_voltage_data("no_constants", words)] * len(shared)
     if interface.bus_classes is None:
-        return _no_voltage_data("no_bus_class", words)
-    if not shared:
-        return _no_voltage_data("no_shared_bus", words)
+        return [_no_voltage_data("no_bus_class", words)] * len(shared)
 
     def required(speed: float) -> float:
         return controller_output_voltage(
@@ -140,39 +155,51 @@ def shared_voltage_check(
             pole_pairs=poles,
         ).total_v
 
-    u_load = required(speed_rpm)
-    bus = _best_bus(tuple(shared))
-    available = _available_v(bus)
-    message = ""
-    if words:
-        best: OutputVoltageCheck = check_output_voltage(required_voltage_v=u_load, bus=bus)
-        at_max_speed = None
-        if actuator.max_speed_rpm is not None:
-            u_max = required(actuator.max_speed_rpm)
-            at_max_speed = phrase(
-                "controller_voltage.reaches"
-                if u_max <= available
-                else "controller_voltage.does_not_reach",
-                max_speed_rpm=actuator.max_speed_rpm,
-                max_speed_voltage_v=u_max,
+    u_load = u_max = None
+    checks = []
+    for classes in shared:
+        if not classes:
+            checks.append(_no_voltage_data("no_shared_bus", words))
+            continue
+        if u_load is None:
+            u_load = required(speed_rpm)
+        bus = _best_bus(tuple(classes))
+        available = _available_v(bus)
+        message = ""
+        if words:
+            best: OutputVoltageCheck = check_output_voltage(required_voltage_v=u_load, bus=bus)
+            at_max_speed = None
+            if actuator.max_speed_rpm is not None:
+                if u_max is None:
+                    u_max = required(actuator.max_speed_rpm)
+                at_max_speed = phrase(
+                    "controller_voltage.reaches"
+                    if u_max <= available
+                    else "controller_voltage.does_not_reach",
+                    max_speed_rpm=actuator.max_speed_rpm,
+                    max_speed_voltage_v=u_max,
+                )
+            message = phrase(
+                "controller_voltage.at_speed",
+                output=best.message,
+                speed_rpm=speed_rpm,
+                at_max_speed=at_max_speed,
             )
-        message = phrase(
-            "controller_voltage.at_speed",
-            output=best.message,
-            speed_rpm=speed_rpm,
-            at_max_speed=at_max_speed,
+        checks.append(
+            Check(
+                name="controller_voltage",
+                status=Status.PASS if u_load <= available else Status.FAIL,
+                value=u_load,
+                limit=available,
+                unit="V",
+                reference=f"{VOLTAGE_REFERENCE} ({bus.bus_class.value} bus)",
+                message=message,
+            )
         )
-    return Check(
-        name="controller_voltage",
-        status=Status.PASS if u_load <= available else Status.FAIL,
-        value=u_load,
-        limit=available,
-        unit="V",
-        reference=f"{VOLTAGE_REFERENCE} ({bus.bus_class.value} bus)",
-        message=message,
-    )
+    return checks
 
 
+@lru_cache(maxsize=64)
 def _available_v(bus: DcBusClass) -> float:
     """The largest output voltage a bus class delivers (:func:`check_output_voltage`'s)."""
     return max_output_voltage_v(dc_bus_voltage_v=bus.nominal_voltage_v, modulation=MODULATION)
@@ -213,14 +240,19 @@ def drive_options(
     usable = [m for m in matching.matches if m.verdict is not MatchVerdict.EXCLUDED]
     # The voltage check depends on the controller only through the bus classes it shares
     # with the actuator, so controllers sharing the same classes share one check.
-    checks: dict[tuple[DcBusClass, ...], Check] = {}
-    options = []
-    for m in usable:
-        shared = shared_bus_classes(interface=interface, controller=m.controller, buses=buses)
-        check = checks.get(shared)
-        if check is None:
-            check = checks[shared] = shared_voltage_check(
-                actuator=actuator, interface=interface, shared=shared, speed_rpm=speed_rpm
-            )
-        options.append(DriveOption(match=m, voltage=check))
+    shared = [
+        shared_bus_classes(interface=interface, controller=m.controller, buses=buses)
+        for m in usable
+    ]
+    distinct = list(dict.fromkeys(shared))
+    checks = dict(
+        zip(
+            distinct,
+            shared_voltage_checks(
+                actuator=actuator, interface=interface, shared=distinct, speed_rpm=speed_rpm
+            ),
+            strict=True,
+        )
+    )
+    options = [DriveOption(match=m, voltage=checks[s]) for m, s in zip(usable, shared, strict=True)]
     return DriveOptions(options=tuple(options), excluded=len(matching.matches) - len(usable))
