@@ -247,7 +247,10 @@ def test_a_replica_killed_under_load_costs_no_acknowledged_write(topology: Topol
         done.set()
         for thread in threads:
             thread.join(60)
-    assert set(statuses) <= {201, 502}, statuses
+    # 0: the connection to nginx broke without an answer (seen twice in full CI runs on
+    # 2026-11-28, not reproduced alone): never an acknowledgement, so no write is lost by
+    # it; the stored-ids check below is the durability the test is about.
+    assert set(statuses) <= {201, 502, 0}, statuses
     assert statuses[-SETTLED:] == [201] * SETTLED
     with topology.deployment.engine.connect() as conn:
         stored = set(
