@@ -5620,7 +5620,7 @@ export interface components {
             controllers: components["schemas"]["ControllerRef"][];
             /**
              * Candidates
-             * @description the ranking's first candidates, best first: as many as `top` asked (POST /selections?top=, default 100), or all where fewer; the rest are read by `next_cursor` (GET /selections/{id}/candidates)
+             * @description the ranking's first candidates, best first: as many as `top` asked (POST /selections?top=, default 25), or all where fewer; the rest are read by `next_cursor` (GET /selections/{id}/candidates)
              */
             candidates: components["schemas"]["CandidateOut"][];
             /**

@@ -18,6 +18,7 @@ import pypdf
 import pytest
 from fastapi.testclient import TestClient
 from tests import worked_example
+from tests.api._ranking import whole_ranking
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
 from actuator_selection.documents.pdf import DocumentPdf, unicode_font
@@ -76,6 +77,8 @@ def _selection(client: TestClient, **changes: Any) -> dict[str, Any]:
     response = client.post("/api/v1/selections", json=body)
     assert response.status_code == 201, response.text
     answer: dict[str, Any] = response.json()
+    # the report lists the whole ranking: the answer's candidates and the rest by cursor
+    answer["candidates"] = whole_ranking(client, answer)
     return answer
 
 

@@ -34,7 +34,7 @@ from actuator_selection.services.presenters.batch import (
 )
 from actuator_selection.services.presenters.detail import candidate_detail
 from actuator_selection.services.presenters.limits import limits_answer
-from actuator_selection.services.presenters.selection import ANSWER_VERSION, dump_json
+from actuator_selection.services.presenters.selection import ANSWER_VERSION, DEFAULT_TOP, dump_json
 from actuator_selection.services.selections import size_selection
 from actuator_selection.sizing.inverse import limits
 from actuator_selection.sizing.selection import evaluate, select
@@ -108,7 +108,9 @@ def test_selection_presenter_writes_its_model(name: str, catalogue: CatalogueSna
         assert parsed.binding is not None
         assert all(c.verdict == "unsuitable" for c in parsed.candidates)
     if name == "whole_catalogue":
-        assert len(parsed.candidates) == len(catalogue.actuators_of(None)) > 50
+        assert parsed.total_candidates == len(catalogue.actuators_of(None)) > 50
+        assert len(parsed.candidates) == DEFAULT_TOP < parsed.total_candidates
+        assert parsed.next_cursor is not None
 
 
 def _brief(check: dict[str, Any]) -> dict[str, Any]:

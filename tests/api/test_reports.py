@@ -15,6 +15,7 @@ import zstandard
 from fastapi.testclient import TestClient
 from markupsafe import Markup
 from tests import worked_example
+from tests.api._ranking import whole_ranking
 
 from actuator_selection.documents.pdf import DocumentPdf, unmarked
 from actuator_selection.documents.quote_document_text import DocumentText, Language
@@ -27,6 +28,8 @@ def _selection(client: TestClient, **changes: Any) -> dict[str, Any]:
     response = client.post("/api/v1/selections", json=body)
     assert response.status_code == 201, response.text
     answer: dict[str, Any] = response.json()
+    # the report lists the whole ranking: the answer's candidates and the rest by cursor
+    answer["candidates"] = whole_ranking(client, answer)
     return answer
 
 

@@ -13,6 +13,7 @@ from fastapi.testclient import TestClient
 from tests import worked_example
 
 from actuator_selection.services import catalogue as drive
+from actuator_selection.services.presenters.selection import TOP_MAX
 from actuator_selection.sizing.compatibility import CompatibilityResult, match_controllers
 
 
@@ -83,8 +84,9 @@ def test_matching_runs_once_per_distinct_interface(
         return match_controllers(**kwargs)
 
     monkeypatch.setattr(drive, "match_controllers", counted)
-    selection = client.post("/api/v1/selections", json=worked_example.request()).json()
-    models = [c["model"] for c in selection["candidates"]]
+    whole = {"top": TOP_MAX}  # every candidate listed, each with its drive options
+    selection = client.post("/api/v1/selections", json=worked_example.request(), params=whole)
+    models = [c["model"] for c in selection.json()["candidates"]]
     interfaces = {
         _interface(client.get(f"/api/v1/actuators/{m}/controllers").json()) for m in models
     }

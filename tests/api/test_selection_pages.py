@@ -18,6 +18,7 @@ from fastapi.testclient import TestClient
 from tests.api._sales_fixtures import SalesApi, api, sales_api_with
 
 from actuator_selection.schemas.selections import CandidatePageOut, SelectionOut
+from actuator_selection.services.presenters.selection import DEFAULT_TOP, TOP_MAX
 from actuator_selection.services.selections import cursor
 
 __all__ = ["api", "sales_api_with"]
@@ -86,14 +87,19 @@ def test_counts_per_verdict_are_the_whole_rankings(client: TestClient) -> None:
     assert sum(lean["verdict_counts"].values()) == lean["total_candidates"]
 
 
-def test_the_default_lists_the_starter_catalogue_whole(client: TestClient) -> None:
+def test_the_default_lists_the_pages_first_screen_and_a_cursor(client: TestClient) -> None:
+    """Unless asked, an answer lists DEFAULT_TOP candidates (the starter catalogue has
+    more), and the first page of its ranking is the same with the same cursor on."""
     answer = _post(client)
-    assert answer["next_cursor"] is None
-    assert len(answer["candidates"]) == answer["total_candidates"]
+    assert len(answer["candidates"]) == DEFAULT_TOP < answer["total_candidates"]
+    assert answer["next_cursor"] == cursor(answer["id"], DEFAULT_TOP)
     first = client.get(f"/api/v1/selections/{answer['id']}/candidates").json()
     assert first["candidates"] == answer["candidates"]
     assert first["start"] == 0
-    assert first["next_cursor"] is None
+    assert first["next_cursor"] == answer["next_cursor"]
+    whole = _post(client, top=TOP_MAX)
+    assert whole["next_cursor"] is None
+    assert len(whole["candidates"]) == whole["total_candidates"] == answer["total_candidates"]
 
 
 def test_the_stored_answer_is_the_lean_one(client: TestClient) -> None:

@@ -19,6 +19,7 @@ from actuator_selection.app import GC_THRESHOLDS, tune_gc
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
+from actuator_selection.services.presenters.selection import TOP_MAX
 
 WORKED_EXAMPLE: dict[str, Any] = {
     **worked_example.request(),
@@ -27,8 +28,8 @@ WORKED_EXAMPLE: dict[str, Any] = {
 }
 
 
-def post(client: TestClient, body: dict[str, Any]) -> Any:
-    return client.post("/api/v1/selections", json=body)
+def post(client: TestClient, body: dict[str, Any], top: int | None = None) -> Any:
+    return client.post("/api/v1/selections", json=body, params={} if top is None else {"top": top})
 
 
 def with_changes(path: str, value: Any) -> dict[str, Any]:
@@ -208,7 +209,8 @@ def test_candidate_detail_404s(client: TestClient) -> None:
 
 
 def test_whole_catalogue_ranked(client: TestClient) -> None:
-    body = post(client, with_changes("models", None)).json()
+    # every candidate listed in the answer, each with its drive options
+    body = post(client, with_changes("models", None), top=TOP_MAX).json()
     candidates = body["candidates"]
     assert len(candidates) == len(client.get("/api/v1/actuators").json()["actuators"])
     order = {"suitable": 0, "unconfirmed": 1, "unsuitable": 2}
@@ -447,7 +449,7 @@ def test_answer_equals_the_scalar_flowchart_check_by_check(
     rng = random.Random(3)
     for _ in range(4):
         body = random_case(rng)
-        selection = post(client, body).json()
+        selection = post(client, body, top=TOP_MAX).json()
         scalar = select(actuators, SelectionRequest.model_validate(body).to_core())
         assert [c["model"] for c in selection["candidates"]] == [
             c.actuator.model for c in scalar.candidates

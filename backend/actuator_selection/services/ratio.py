@@ -153,8 +153,9 @@ def _out(result: RatioResult, curve: bool) -> RatioActuatorOut:
 
 
 DEFAULT_TOP = 100
-"""Actuators a study's answer lists unless the request asks for another number (``top``),
-as a selection's (``presenters.selection.DEFAULT_TOP``)."""
+"""Actuators a study's answer lists unless the request asks for another number (``top``).
+More than a selection lists (``presenters.selection.DEFAULT_TOP``): a study is not stored
+and has no cursor to read the rest by; the starter catalogue's 64 all fit."""
 
 
 def study(

@@ -304,7 +304,7 @@ class SelectionOut(ResponseModel):
     )
     candidates: list[CandidateOut] = Field(
         description="the ranking's first candidates, best first: as many as `top` asked "
-        "(POST /selections?top=, default 100), or all where fewer; the rest are read by "
+        "(POST /selections?top=, default 25), or all where fewer; the rest are read by "
         "`next_cursor` (GET /selections/{id}/candidates)"
     )
     total_candidates: int = Field(description="how many candidates the whole ranking holds")

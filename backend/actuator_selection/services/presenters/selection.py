@@ -59,11 +59,14 @@ field present; 3: today's ``SelectionOut``, the ranking's first ``top`` candidat
 and 1 to 2, ``0016`` 2 to 3; readers take 3 only.
 Change the answer's shape: raise this, and add a migration that upgrades the rows."""
 
-DEFAULT_TOP = 100
-"""Candidates an answer lists unless the request asks for another number (``top``): the
-page's first screen shows 12 rows and its "show more" reads the rest by the answer's
-``next_cursor``; the starter catalogue's 64 candidates all fit. A catalogue of 6,400
-answered whole wrote 5 MB (and spent most of a request's time on it)."""
+DEFAULT_TOP = 25
+"""Candidates an answer lists unless the request asks for another number (``top``), and
+a page of a stored ranking (``limit``): the page asks for as many (its first screen shows
+12 rows, "show more" reads on by the answer's ``next_cursor``). The rest of the ranking
+is stored beside the answer and read by cursor; exports read it whole
+(``services.selections.stored_answer_json``). Listing all 64 of the starter catalogue
+cost a whole-catalogue selection about a quarter more instructions (issue 32); a
+catalogue of 6,400 answered whole wrote 5 MB."""
 
 TOP_MAX = 1000
 """The most candidates an answer (``top``) or a page (``limit``) lists."""
