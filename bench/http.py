@@ -398,7 +398,8 @@ def main() -> None:
                         process.terminate()
                         process.wait(10)
                         process, base = _serve(url, {"WORKERS": "1"})
-                    for n, checks in ((10_000, False), (10_000, True), (args.batch_cases, True)):
+                    sizes = ((10_000, False), (10_000, True), (args.batch_cases, True))
+                    for n, checks in sizes[: 3 if args.batch_cases else 2]:  # 0: none more
                         _batch(base, process.pid, n, actuators, checks, columns=columns)
                     if not columns:
                         batch_server_cpu(base, process.pid, actuators, rounds=args.rounds)
