@@ -8,27 +8,26 @@ more than the engineering of the whole batch (the tests validate it against the 
 
 from __future__ import annotations
 
+import functools
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 import orjson
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
+from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
-from actuator_selection.services.presenters.selection import (
-    dump_json,
-    json_items,
-    resolved_load,
+from actuator_selection.services.presenters.batch_messages import (
+    Given,
+    message_shapes,
+    object_array,
+    pair_items,
+    text_json,
 )
-from actuator_selection.sizing.checks import Brief, Operands, Rule, Status
-from actuator_selection.sizing.checks.rule import Pick, Said, Term, Variants
+from actuator_selection.services.presenters.selection import dump_json, resolved_load
+from actuator_selection.sizing.checks import Brief, Operands, Rule
 from actuator_selection.sizing.engine import STATUS_BY_CODE
-from actuator_selection.sizing.engine.arrays import NO_DATA
-from actuator_selection.sizing.engine.codes import ARRAY_OPS
 from actuator_selection.sizing.engine.detail import DecidedCells
 from actuator_selection.sizing.selection import VALUE_OF, Candidate, Check, Selection
 
@@ -192,7 +191,7 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
     """Each rule's check of each cell of ``decided`` as JSON (a list per rule, in the
     cells' order): the text :func:`dump_json` writes of :func:`coded_check_body`, written
     rule by rule for every cell at once: orjson writes each array of numbers, and one
-    template per rule and shape of its message (:func:`_message_shapes`) takes each
+    template per rule and shape of its message (:func:`message_shapes`) takes each
     cell's members, the message's code and params among them.
     The messages' codes and params come from the same words: a rule's ``no_data``
     message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
@@ -201,67 +200,78 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
     columns = decided.columns
     cells = columns.statuses.shape[1]
     operands: list[Operands] = []  # over the cells, computed once if a rule needs them
-    written = []
-    for k, rule in enumerate(decided.rules):
-        values, limits = columns.values[k], columns.limits[k]
-        with np.errstate(all="ignore"):  # margin_percent, utilisation (sizing.checks.rule)
-            rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)
-            margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
-            share = np.where(rated, values / limits, math.nan)
-        head = (
-            b'{"name":',
-            dump_json(rule.name),
-            b',"status":',
-            None,
-            b',"value":',
-            None,
-            b',"limit":',
-            None,
-            b',"unit":',
-            dump_json(rule.unit),
-            b',"reference":',
-            dump_json(rule.reference),
-            b',"message_code":',
-        )
-        tail = (b',"approximate":', None, b',"margin_percent":', None, b',"utilisation":', None)
-        statuses = _STATUS_JSON[columns.statuses[k]]
-        truths = _TRUTH_JSON[columns.approximate[k].view(np.int8)]
-        # the values' and limits' JSON, shared with the messages' params that say them
-        given = (_object_array(json_items(values)), _object_array(json_items(limits)))
-        shapes = _message_shapes(decided, k, operands, cells, given)
-        out = None if len(shapes) == 1 else np.empty(cells, dtype=object)
-        for where, parts, members in shapes:
-            said = statuses[where].tolist()
-            filled = _filled(
-                _template(*head, *parts, *tail, b"}"),
-                [
-                    said,
-                    given[0][where].tolist(),
-                    given[1][where].tolist(),
-                    *members,
-                    truths[where].tolist(),
-                    json_items(margin[where]),
-                    json_items(share[where]),
-                ],
-                len(said),
-            )
-            if out is None:
-                written.append(filled)
-            else:
-                out[where] = filled
-        if out is not None:
-            written.append(out.tolist())
+    written: list[list[bytes]] = []
+    with np.errstate(all="ignore"):  # margin_percent, utilisation; the messages' terms
+        for k, rule in enumerate(decided.rules):
+            written.append(_rule_checks(decided, k, rule, operands, cells))
     return written
 
 
-def _object_array(items: list[bytes]) -> npt.NDArray[np.object_]:
-    out = np.empty(len(items), dtype=object)
-    out[:] = items
-    return out
+def _rule_checks(
+    decided: DecidedCells, k: int, rule: Rule, operands: list[Operands], cells: int
+) -> list[bytes]:
+    """Rule ``k``'s check of each cell of ``decided`` as JSON (:func:`coded_check_columns`)."""
+    columns = decided.columns
+    values, limits = columns.values[k], columns.limits[k]
+    rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)  # sizing.checks.rule
+    margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
+    share = np.where(rated, values / limits, math.nan)
+    head = (
+        b'{"name":',
+        text_json(rule.name),
+        b',"status":',
+        None,
+        b',"value":',
+        None,  # the value, then ',"limit":' and the limit (Given.pairs)
+        b',"unit":',
+        text_json(rule.unit),
+        b',"reference":',
+        text_json(rule.reference),
+        b',"message_code":',
+    )
+    # the margin, then ',"utilisation":' and the share
+    tail = (b',"approximate":', None, b',"margin_percent":', None, b"}")
+    statuses = _STATUS_JSON[columns.statuses[k]]
+    truths = _TRUTH_JSON[columns.approximate[k].view(np.int8)]
+    # the values' and limits' JSON, shared with the messages' params that say them
+    given = Given(values, limits)
+    shapes = message_shapes(decided, k, operands, cells, given)
+    ratings = pair_items(margin, share, b',"utilisation":')
+    if len(shapes) == 1 and isinstance(shapes[0][0], slice):  # every cell, one template
+        _, parts, members = shapes[0]
+        said = statuses.tolist()
+        return _filled(
+            _template(*head, *parts, *tail),
+            [said, given.pairs().tolist(), *members, truths.tolist(), ratings],
+            len(said),
+        )
+    out = None if len(shapes) == 1 else np.empty(cells, dtype=object)
+    by_cell = object_array(ratings)
+    for where, parts, members in shapes:
+        said = statuses[where].tolist()
+        filled = _filled(
+            _template(*head, *parts, *tail),
+            [
+                said,
+                given.pairs()[where].tolist(),
+                *members,
+                truths[where].tolist(),
+                by_cell[where].tolist(),
+            ],
+            len(said),
+        )
+        if out is None:
+            return filled
+        out[where] = filled
+    assert out is not None
+    found: list[bytes] = out.tolist()
+    return found
 
 
+@functools.lru_cache(maxsize=1024)
 def _template(*parts: bytes | None) -> bytes:
-    """A bytes template of ``parts``: each None a member (``%b``), the rest as they are."""
+    """A bytes template of ``parts``: each None a member (``%b``), the rest as they are
+    (kept: a rule's shapes recur slice after slice)."""
     return b"".join(b"%b" if p is None else p.replace(b"%", b"%%") for p in parts)
 
 
@@ -275,229 +285,6 @@ def _filled(template: bytes, members: list[list[bytes]], cells: int) -> list[byt
 _STATUS_JSON = np.array([dump_json(s.value) for s in STATUS_BY_CODE], dtype=object)
 """The API's status names as JSON strings, by status code."""
 _TRUTH_JSON = np.array([b"false", b"true"], dtype=object)
-_WORDED = np.array([s in (Status.PASS, Status.FAIL, Status.WARN) for s in STATUS_BY_CODE])
-"""By status code, whether a rule's own message words it (not no data, not not applicable)."""
-
-
-Shape = tuple[Any, list[bytes | None], list[list[bytes]]]
-"""Cells whose message is written by one template: which cells (a mask over them, or
-a slice of all), the template's parts (None: a member) and each member over those cells."""
-
-
-def _message_shapes(
-    decided: DecidedCells,
-    k: int,
-    operands: list[Operands],
-    cells: int,
-    given: tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]],
-) -> list[Shape]:
-    """Rule ``k``'s ``message_code`` and ``message_params`` members of each cell (the
-    code's JSON, then ``,"message_params":`` and the params' JSON), by shape: the cells
-    whose message is declared (:class:`~actuator_selection.sizing.checks.Said`,
-    :class:`~actuator_selection.sizing.checks.Variants`) by the clauses each says
-    (:func:`_said_shapes`), every other one (no data, not applicable, a message that is
-    a plain function) as its written text (:func:`_message_json`)."""
-    rule = decided.rules[k]
-    columns = decided.columns
-    statuses, first = columns.statuses[k], columns.first_missing[k]
-    shapes: list[Shape] = []
-    worded = np.zeros(cells, dtype=np.bool_)
-    if isinstance(rule.message, Said | Variants):
-        worded = _WORDED[statuses] & (first < 0)  # a floor's failure wraps the message
-        if worded.any():
-            if not operands:
-                operands.append(decided.operand_columns())
-            value, limit = columns.values[k], columns.limits[k]
-            cell = _Cells(operands[0], statuses, value, limit, worded, {}, given)
-            shapes = [(c.mask, parts, its) for c, parts, its in _said_shapes(rule.message, cell)]
-    if worded.all():
-        if len(shapes) == 1:  # every cell: no mask to apply
-            return [(slice(None), shapes[0][1], shapes[0][2])]
-        return shapes
-    out = np.full(cells, b"", dtype=object)
-    left = ~worded
-    no_data = statuses == NO_DATA
-    if no_data.any():
-        said = [_message_json(rule.no_data_message(r)) for r in range(len(rule.requires))]
-        out[no_data] = np.array(said, dtype=object)[first[no_data]]
-    other = left & ~no_data
-    if other.any():  # any other message: worded cell by cell, in codes only
-        values, limits = columns.values[k].tolist(), columns.limits[k].tolist()
-        with codes_only():
-            for j in np.flatnonzero(other).tolist():
-                missing = int(first[j])
-                message = rule.words(
-                    decided.operands_of(j),
-                    STATUS_BY_CODE[statuses[j]],
-                    values[j],
-                    limits[j],
-                    None if missing < 0 else missing,
-                )
-                out[j] = _message_json(message)
-    if not worded.any():
-        return [(slice(None), [None], [out.tolist()])]
-    return [*shapes, (left, [None], [out[left].tolist()])]
-
-
-def _message_json(message: str) -> bytes:
-    """A message's ``message_code`` and ``message_params`` members, the first one's name
-    left out (as :func:`_messages` writes them)."""
-    code = message.code if isinstance(message, Phrase) else None
-    return dump_json(code) + b',"message_params":' + dump_json(jsonable_params(message))
-
-
-@dataclass(frozen=True, slots=True)
-class _Cells:
-    """The cells of one rule whose declared message is written: the operands, statuses,
-    values and limits of every cell detailed, which of them (``mask``), and the terms
-    computed over every cell (by the term's identity: each computed once a rule)."""
-
-    q: Operands
-    statuses: npt.NDArray[np.int8]
-    values: npt.NDArray[np.float64]
-    limits: npt.NDArray[np.float64]
-    mask: npt.NDArray[np.bool_]
-    terms: dict[int, tuple[Any, npt.NDArray[Any]]]
-    given: tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]]
-    """The JSON of :attr:`values` and of :attr:`limits` over every cell: a term that
-    gives one of them as it is (``given_value``) is written from it."""
-
-    def term(self, term: Term) -> npt.NDArray[Any]:
-        """``term`` over the cells of :attr:`mask`."""
-        return self._computed(term)[1][self.mask]
-
-    def _computed(self, term: Term) -> tuple[Any, npt.NDArray[Any]]:
-        found = self.terms.get(id(term))
-        if found is None:
-            with np.errstate(all="ignore"):
-                computed = term(self.q, ARRAY_OPS, self.values, self.limits)
-            found = self.terms[id(term)] = (
-                computed,
-                np.broadcast_to(computed, self.mask.shape),
-            )
-        return found
-
-    def items(self, term: Term) -> list[bytes]:
-        """``term`` over the cells of :attr:`mask` as a param's JSON (:func:`_param_items`)."""
-        computed, column = self._computed(term)
-        written = (
-            self.given[0]
-            if computed is self.values
-            else self.given[1]
-            if computed is self.limits
-            else None
-        )
-        found = column[self.mask]
-        if written is None or not np.isfinite(found).all():
-            return _param_items(found)
-        shared: list[bytes] = written[self.mask].tolist()  # finite: the same text
-        return shared
-
-    def codes(self, message: Said) -> list[bytes]:
-        """``message``'s code of each cell, as JSON."""
-        codes = np.array([dump_json(c) for c in message.codes], dtype=object)
-        found: list[bytes] = codes[_STATUS_INDEX[self.statuses[self.mask]]].tolist()
-        return found
-
-    def within(self, where: npt.NDArray[np.bool_]) -> _Cells:
-        """The cells of :attr:`mask` where ``where`` (over those cells) holds."""
-        mask = self.mask.copy()
-        mask[self.mask] = where
-        return _Cells(self.q, self.statuses, self.values, self.limits, mask, self.terms, self.given)
-
-
-@dataclass(frozen=True, slots=True)
-class _Chosen:
-    """A :class:`~actuator_selection.sizing.checks.Said` clause with each of its params'
-    :class:`~actuator_selection.sizing.checks.Pick` decided (``params``)."""
-
-    said: Said
-    params: list[Any]
-
-
-def _said_shapes(
-    message: Said | Variants, cells: _Cells
-) -> list[tuple[_Cells, list[bytes | None], list[list[bytes]]]]:
-    """:func:`_message_json` of a declared message over ``cells`` (each decided pass,
-    fail or warn) by shape: the cells that take the same variant and the same branch of
-    each :class:`~actuator_selection.sizing.checks.Pick`, with one template's parts
-    (None: a member) and the members over those cells, from the arrays."""
-    if isinstance(message, Said):
-        out = []
-        for c, chosen in _chosen(message, cells):
-            parts, members = _object_parts(chosen, c)
-            out.append((c, [None, b',"message_params":', *parts], [c.codes(message), *members]))
-        return out
-    out = []
-    left = np.ones(int(np.count_nonzero(cells.mask)), dtype=np.bool_)
-    for condition, variant in message.cases:
-        holds = left if condition is None else left & cells.term(condition)
-        if holds.any():
-            out += _said_shapes(variant, cells.within(holds))
-        left &= ~holds
-    return out
-
-
-def _chosen(message: Said, cells: _Cells) -> list[tuple[_Cells, _Chosen]]:
-    """``message`` over ``cells``, split where a param's :class:`~actuator_selection.
-    sizing.checks.Pick` (or a clause's) takes another branch."""
-    leaves: list[tuple[_Cells, list[Any]]] = [(cells, [])]
-    for _, param in message.params:
-        leaves = [(c2, [*params, p]) for c, params in leaves for c2, p in _param_chosen(param, c)]
-    return [(c, _Chosen(message, params)) for c, params in leaves]
-
-
-def _param_chosen(param: Any, cells: _Cells) -> list[tuple[_Cells, Any]]:
-    """``param`` over ``cells``, each :class:`~actuator_selection.sizing.checks.Pick`
-    decided: the cells of each branch taken, with what it says there."""
-    if isinstance(param, Said):
-        return list(_chosen(param, cells))
-    if isinstance(param, Pick):
-        holds = cells.term(param.condition).astype(np.bool_)
-        out = []
-        for where, branch in ((holds, param.if_true), (~holds, param.if_false)):
-            if where.any():
-                out += _param_chosen(branch, cells.within(where))
-        return out
-    return [(cells, param)]
-
-
-def _object_parts(chosen: _Chosen, cells: _Cells) -> tuple[list[bytes | None], list[list[bytes]]]:
-    """The params of ``chosen`` over ``cells`` as one JSON object's template parts (None:
-    a member) and members, as :func:`~actuator_selection.phrases.check_messages.
-    jsonable_params` has them written."""
-    parts: list[bytes | None] = [b"{"]
-    members: list[list[bytes]] = []
-    for n, ((name, _), param) in enumerate(zip(chosen.said.params, chosen.params, strict=True)):
-        parts.append((b"," if n else b"") + dump_json(name) + b":")
-        if isinstance(param, _Chosen):  # a clause: its code and params
-            inner, its = _object_parts(param, cells)
-            parts += [b'{"code":', None, b',"params":', *inner, b"}"]
-            members += [cells.codes(param.said), *its]
-        elif callable(param):
-            parts.append(None)
-            members.append(cells.items(param))
-        else:
-            parts.append(dump_json(jsonable(param)))  # a constant: words, a clause or None
-    parts.append(b"}")
-    return parts, members
-
-
-_STATUS_INDEX = np.array([list(Status).index(s) for s in STATUS_BY_CODE], dtype=np.intp)
-"""By status code, the status's place in :class:`Status` (:attr:`Said.codes`' order)."""
-
-
-def _param_items(column: npt.NDArray[Any]) -> list[bytes]:
-    """Each item of ``column`` as :func:`~actuator_selection.phrases.check_messages.
-    jsonable_params` has it written: numbers as they are, a float that is NaN or infinite
-    as its ``repr`` (a string)."""
-    out = json_items(column)
-    if column.dtype.kind == "f":
-        odd = ~np.isfinite(column)
-        if odd.any():
-            for j, x in zip(np.flatnonzero(odd).tolist(), column[odd].tolist(), strict=True):
-                out[j] = dump_json(repr(x))
-    return out
 
 
 def batch_candidate_body(

@@ -1,0 +1,343 @@
+"""A batch's check messages as codes and params, written from the engine's arrays.
+
+A rule's declared message (:class:`~actuator_selection.sizing.checks.Said`,
+:class:`~actuator_selection.sizing.checks.Variants`) is written for every cell of a
+slice at once (:func:`message_shapes`): the cells that take the same variant and the same
+branch of each :class:`~actuator_selection.sizing.checks.Pick` share one template's parts
+(``services/presenters/batch.py`` fills it per cell), their params' numbers written by
+orjson over the cells. A message's code is rendered once per message, its params' names
+once per process; a value and its limit are one piece where they stand side by side
+(:class:`Given`).
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+import orjson
+
+from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
+from actuator_selection.services.presenters.selection import dump_json, json_items
+from actuator_selection.sizing.checks import Operands, Status
+from actuator_selection.sizing.checks.rule import Pick, Said, Term, Variants
+from actuator_selection.sizing.engine import STATUS_BY_CODE
+from actuator_selection.sizing.engine.arrays import NO_DATA
+from actuator_selection.sizing.engine.codes import ARRAY_OPS
+from actuator_selection.sizing.engine.detail import DecidedCells
+
+
+def pair_items(first: npt.NDArray[Any], second: npt.NDArray[Any], between: bytes) -> list[bytes]:
+    """Each cell's ``first`` and ``second`` as :func:`json_items` writes them, joined by
+    ``between`` (a comma and the second's name), as one piece: one orjson call and one
+    split for both."""
+    if not first.size:
+        return []
+    written = orjson.dumps(np.column_stack((first, second)), option=orjson.OPT_SERIALIZE_NUMPY)
+    # [[a,b],[a,b],…]: the rows' "],[" to "]" (no number holds it), then each comma left
+    return written[2:-2].replace(b"],[", b"]").replace(b",", between).split(b"]")
+
+
+class Given:
+    """A rule's values and limits over every cell and their JSON, written when first
+    read: each apart (:meth:`apart`, for a message's params that say one of them) and as
+    pairs (:meth:`pairs`: the check's ``value`` and ``limit``, and a message's params
+    that say both in turn)."""
+
+    __slots__ = ("_apart", "_pairs", "limits", "values")
+
+    def __init__(self, values: npt.NDArray[np.float64], limits: npt.NDArray[np.float64]) -> None:
+        self.values, self.limits = values, limits
+        self._apart: tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]] | None = None
+        self._pairs: npt.NDArray[np.object_] | None = None
+
+    def apart(self) -> tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]]:
+        """The values' and the limits' JSON (:func:`json_items`), each over every cell."""
+        if self._apart is None:
+            self._apart = (
+                object_array(json_items(self.values)),
+                object_array(json_items(self.limits)),
+            )
+        return self._apart
+
+    def pairs(self) -> npt.NDArray[np.object_]:
+        """Each cell's value, ``,"limit":`` and its limit as JSON (:func:`pair_items`)."""
+        if self._pairs is None:
+            self._pairs = object_array(pair_items(self.values, self.limits, b',"limit":'))
+        return self._pairs
+
+
+def object_array(items: list[bytes]) -> npt.NDArray[np.object_]:
+    out = np.empty(len(items), dtype=object)
+    out[:] = items
+    return out
+
+
+@functools.lru_cache(maxsize=1024)
+def text_json(text: str) -> bytes:
+    """``text`` as a JSON string (:func:`dump_json`), kept: a rule's names recur."""
+    return dump_json(text)
+
+
+_WORDED = np.array([s in (Status.PASS, Status.FAIL, Status.WARN) for s in STATUS_BY_CODE])
+"""By status code, whether a rule's own message words it (not no data, not not applicable)."""
+
+
+Shape = tuple[Any, list[bytes | None], list[list[bytes]]]
+"""Cells whose message is written by one template: which cells (a mask over them, or
+a slice of all), the template's parts (None: a member) and each member over those cells."""
+
+
+def message_shapes(
+    decided: DecidedCells,
+    k: int,
+    operands: list[Operands],
+    cells: int,
+    given: Given,
+) -> list[Shape]:
+    """Rule ``k``'s ``message_code`` and ``message_params`` members of each cell (the
+    code's JSON, then ``,"message_params":`` and the params' JSON), by shape: the cells
+    whose message is declared (:class:`~actuator_selection.sizing.checks.Said`,
+    :class:`~actuator_selection.sizing.checks.Variants`) by the clauses each says
+    (:func:`_said_shapes`), every other one (no data, not applicable, a message that is
+    a plain function) as its written text (:func:`_message_json`)."""
+    rule = decided.rules[k]
+    columns = decided.columns
+    statuses, first = columns.statuses[k], columns.first_missing[k]
+    shapes: list[Shape] = []
+    worded = np.zeros(cells, dtype=np.bool_)
+    if isinstance(rule.message, Said | Variants):
+        worded = _WORDED[statuses] & (first < 0)  # a floor's failure wraps the message
+        if worded.any():
+            if not operands:
+                operands.append(decided.operand_columns())
+            value, limit = columns.values[k], columns.limits[k]
+            cell = _Cells(operands[0], statuses, value, limit, worded, {}, given)
+            shapes = [(c.mask, parts, its) for c, parts, its in _said_shapes(rule.message, cell)]
+    if worded.all():
+        if len(shapes) == 1:  # every cell: no mask to apply
+            return [(slice(None), shapes[0][1], shapes[0][2])]
+        return shapes
+    out = np.full(cells, b"", dtype=object)
+    left = ~worded
+    no_data = statuses == NO_DATA
+    if no_data.any():
+        said = [_message_json(rule.no_data_message(r)) for r in range(len(rule.requires))]
+        out[no_data] = np.array(said, dtype=object)[first[no_data]]
+    other = left & ~no_data
+    if other.any():  # any other message: worded cell by cell, in codes only
+        values, limits = columns.values[k].tolist(), columns.limits[k].tolist()
+        with codes_only():
+            for j in np.flatnonzero(other).tolist():
+                missing = int(first[j])
+                message = rule.words(
+                    decided.operands_of(j),
+                    STATUS_BY_CODE[statuses[j]],
+                    values[j],
+                    limits[j],
+                    None if missing < 0 else missing,
+                )
+                out[j] = _message_json(message)
+    if not worded.any():
+        return [(slice(None), [None], [out.tolist()])]
+    return [*shapes, (left, [None], [out[left].tolist()])]
+
+
+def _message_json(message: str) -> bytes:
+    """A message's ``message_code`` and ``message_params`` members, the first one's name
+    left out (as :func:`_messages` writes them)."""
+    code = message.code if isinstance(message, Phrase) else None
+    return dump_json(code) + b',"message_params":' + dump_json(jsonable_params(message))
+
+
+@dataclass(frozen=True, slots=True)
+class _Cells:
+    """The cells of one rule whose declared message is written: the operands, statuses,
+    values and limits of every cell detailed, which of them (``mask``), and the terms
+    computed over every cell (by the term's identity: each computed once a rule)."""
+
+    q: Operands
+    statuses: npt.NDArray[np.int8]
+    values: npt.NDArray[np.float64]
+    limits: npt.NDArray[np.float64]
+    mask: npt.NDArray[np.bool_]
+    terms: dict[int, tuple[Any, npt.NDArray[Any]]]
+    given: Given
+    """The JSON of :attr:`values` and of :attr:`limits` over every cell: a term that
+    gives one of them as it is (``given_value``) is written from it."""
+
+    def term(self, term: Term) -> npt.NDArray[Any]:
+        """``term`` over the cells of :attr:`mask`."""
+        return self._computed(term)[1][self.mask]
+
+    def _computed(self, term: Term) -> tuple[Any, npt.NDArray[Any]]:
+        found = self.terms.get(id(term))
+        if found is None:  # numpy's errors ignored by the caller (coded_check_columns)
+            computed = term(self.q, ARRAY_OPS, self.values, self.limits)
+            shape = self.mask.shape
+            column = (
+                computed
+                if isinstance(computed, np.ndarray) and computed.shape == shape
+                else np.broadcast_to(computed, shape)
+            )
+            found = self.terms[id(term)] = (computed, column)
+        return found
+
+    def items(self, term: Term) -> list[bytes]:
+        """``term`` over the cells of :attr:`mask` as a param's JSON (:func:`param_items`)."""
+        computed, column = self._computed(term)
+        found = column[self.mask]
+        given = computed is self.values or computed is self.limits
+        if not given or not np.isfinite(found).all():
+            return param_items(found)
+        written = self.given.apart()[0 if computed is self.values else 1]
+        shared: list[bytes] = written[self.mask].tolist()  # finite: the same text
+        return shared
+
+    def pair_items(self, first: Term, second: Term) -> list[bytes] | None:
+        """The params ``first`` and ``second`` over the cells of :attr:`mask` as one
+        piece each (the value, ``,"limit":`` and the limit: :meth:`Given.pairs`) where
+        they give the value and the limit as they are, both finite; else None."""
+        if self._computed(first)[0] is not self.values:
+            return None
+        if self._computed(second)[0] is not self.limits:
+            return None
+        mask = self.mask
+        if not (np.isfinite(self.values[mask]).all() and np.isfinite(self.limits[mask]).all()):
+            return None
+        pairs: list[bytes] = self.given.pairs()[mask].tolist()
+        return pairs
+
+    def codes(self, message: Said) -> list[bytes]:
+        """``message``'s code of each cell, as JSON."""
+        found: list[bytes] = _codes_json(message)[_STATUS_INDEX[self.statuses[self.mask]]].tolist()
+        return found
+
+    def within(self, where: npt.NDArray[np.bool_]) -> _Cells:
+        """The cells of :attr:`mask` where ``where`` (over those cells) holds."""
+        mask = self.mask.copy()
+        mask[self.mask] = where
+        return _Cells(self.q, self.statuses, self.values, self.limits, mask, self.terms, self.given)
+
+
+_CODES_JSON: dict[int, tuple[Said, npt.NDArray[np.object_]]] = {}
+"""By a message's identity, the message and its codes as JSON (:func:`_codes_json`)."""
+
+
+def _codes_json(message: Said) -> npt.NDArray[np.object_]:
+    """``message``'s code for each status (:attr:`Said.codes`) as JSON, found once."""
+    found = _CODES_JSON.get(id(message))
+    if found is None or found[0] is not message:
+        codes = np.array([dump_json(c) for c in message.codes], dtype=object)
+        found = _CODES_JSON[id(message)] = (message, codes)
+    return found[1]
+
+
+@dataclass(frozen=True, slots=True)
+class _Chosen:
+    """A :class:`~actuator_selection.sizing.checks.Said` clause with each of its params'
+    :class:`~actuator_selection.sizing.checks.Pick` decided (``params``)."""
+
+    said: Said
+    params: list[Any]
+
+
+def _said_shapes(
+    message: Said | Variants, cells: _Cells
+) -> list[tuple[_Cells, list[bytes | None], list[list[bytes]]]]:
+    """:func:`_message_json` of a declared message over ``cells`` (each decided pass,
+    fail or warn) by shape: the cells that take the same variant and the same branch of
+    each :class:`~actuator_selection.sizing.checks.Pick`, with one template's parts
+    (None: a member) and the members over those cells, from the arrays."""
+    if isinstance(message, Said):
+        out = []
+        for c, chosen in _chosen(message, cells):
+            parts, members = _object_parts(chosen, c)
+            out.append((c, [None, b',"message_params":', *parts], [c.codes(message), *members]))
+        return out
+    out = []
+    left = np.ones(int(np.count_nonzero(cells.mask)), dtype=np.bool_)
+    for condition, variant in message.cases:
+        holds = left if condition is None else left & cells.term(condition)
+        if holds.any():
+            out += _said_shapes(variant, cells.within(holds))
+        left &= ~holds
+    return out
+
+
+def _chosen(message: Said, cells: _Cells) -> list[tuple[_Cells, _Chosen]]:
+    """``message`` over ``cells``, split where a param's :class:`~actuator_selection.
+    sizing.checks.Pick` (or a clause's) takes another branch."""
+    leaves: list[tuple[_Cells, list[Any]]] = [(cells, [])]
+    for _, param in message.params:
+        leaves = [(c2, [*params, p]) for c, params in leaves for c2, p in _param_chosen(param, c)]
+    return [(c, _Chosen(message, params)) for c, params in leaves]
+
+
+def _param_chosen(param: Any, cells: _Cells) -> list[tuple[_Cells, Any]]:
+    """``param`` over ``cells``, each :class:`~actuator_selection.sizing.checks.Pick`
+    decided: the cells of each branch taken, with what it says there."""
+    if isinstance(param, Said):
+        return list(_chosen(param, cells))
+    if isinstance(param, Pick):
+        holds = cells.term(param.condition).astype(np.bool_)
+        out = []
+        for where, branch in ((holds, param.if_true), (~holds, param.if_false)):
+            if where.any():
+                out += _param_chosen(branch, cells.within(where))
+        return out
+    return [(cells, param)]
+
+
+def _object_parts(chosen: _Chosen, cells: _Cells) -> tuple[list[bytes | None], list[list[bytes]]]:
+    """The params of ``chosen`` over ``cells`` as one JSON object's template parts (None:
+    a member) and members, as :func:`~actuator_selection.phrases.check_messages.
+    jsonable_params` has them written."""
+    parts: list[bytes | None] = [b"{"]
+    members: list[list[bytes]] = []
+    names = [name for name, _ in chosen.said.params]
+    params = chosen.params
+    n = 0
+    while n < len(params):
+        param = params[n]
+        parts.append((b"," if n else b"") + text_json(names[n]) + b":")
+        n += 1
+        if isinstance(param, _Chosen):  # a clause: its code and params
+            inner, its = _object_parts(param, cells)
+            parts += [b'{"code":', None, b',"params":', *inner, b"}"]
+            members += [cells.codes(param.said), *its]
+        elif callable(param):
+            parts.append(None)
+            after = params[n] if n < len(params) else None
+            pair = None
+            if after is not None and names[n] == "limit" and callable(after):
+                pair = cells.pair_items(param, after)  # "value":V,"limit":L, one member
+            if pair is not None:
+                members.append(pair)
+                n += 1
+            else:
+                members.append(cells.items(param))
+        else:
+            parts.append(dump_json(jsonable(param)))  # a constant: words, a clause or None
+    parts.append(b"}")
+    return parts, members
+
+
+_STATUS_INDEX = np.array([list(Status).index(s) for s in STATUS_BY_CODE], dtype=np.intp)
+"""By status code, the status's place in :class:`Status` (:attr:`Said.codes`' order)."""
+
+
+def param_items(column: npt.NDArray[Any]) -> list[bytes]:
+    """Each item of ``column`` as :func:`~actuator_selection.phrases.check_messages.
+    jsonable_params` has it written: numbers as they are, a float that is NaN or infinite
+    as its ``repr`` (a string)."""
+    out = json_items(column)
+    if column.dtype.kind == "f":
+        odd = ~np.isfinite(column)
+        if odd.any():
+            for j, x in zip(np.flatnonzero(odd).tolist(), column[odd].tolist(), strict=True):
+                out[j] = dump_json(repr(x))
+    return out
