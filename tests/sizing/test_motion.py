@@ -28,6 +28,8 @@ from actuator_selection.sizing.motion import (
     Segment,
     cycle_figures,
     figures_of,
+    heating_gain,
+    heating_gain_array,
     piece_arrays,
     profile_of,
     trapezoid,
@@ -408,3 +410,25 @@ def test_one_profile_sums_on_floats_what_many_sum_on_arrays(seed: int) -> None:
         for name in (f.name for f in fields(arrays)):
             expected = getattr(arrays, name)[i]
             assert np.float64(getattr(profile, name)).tobytes() == expected.tobytes(), (i, name)
+
+
+def test_heating_gains_on_arrays_are_heating_gain_bit_for_bit() -> None:
+    """The engine's gains of a block (``heating_gain_array``) are the floats' own, to the
+    last bit, for ordinary and extreme durations and time constants alike."""
+    rng = random.Random(5)
+    specials = [0.0, 5e-324, 1e-300, 1e-8, 0.1, 1.0, 600.0, 1e300, math.inf]
+    durations = [*specials, *(10 ** rng.uniform(-6, 5) for _ in range(500))]
+    taus = [
+        5e-324,
+        1e-300,
+        0.5,
+        600.0,
+        3600.0,
+        1e300,
+        *(10 ** rng.uniform(-2, 4) for _ in range(9)),
+    ]
+    table = np.array([[t, tau] for t in durations for tau in taus])
+    with np.errstate(all="ignore"):  # as the engine calls it: t/τ overflows to ∞ here
+        gains = heating_gain_array(table[:, :1], table[:, 1:]).ravel()
+    expected = np.array([heating_gain(t, tau) for t, tau in table.tolist()])
+    assert gains.view(np.uint64).tolist() == expected.view(np.uint64).tolist()

@@ -16,7 +16,7 @@ from actuator_selection.sizing.engine.arrays import BoolArray, FloatArray, Index
 from actuator_selection.sizing.engine.cases import Cases
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays
 from actuator_selection.sizing.engine.formulas import ARRAY_MATH, Math
-from actuator_selection.sizing.motion import heating_gain
+from actuator_selection.sizing.motion import heating_gain, heating_gain_array
 
 
 class Gains(Protocol):
@@ -35,7 +35,8 @@ class HeatingGains:
 
     τ_th is the actuator's catalogue value where published, else the case's (given or
     assumed). The gains are computed with ``math.expm1`` on Python floats
-    (:func:`~actuator_selection.sizing.motion.heating_gain`), as Python's floats
+    (:func:`~actuator_selection.sizing.motion.heating_gain`, on arrays
+    :func:`~actuator_selection.sizing.motion.heating_gain_array`), as Python's floats
     compute them: numpy's ``expm1`` may differ from the C library's in the last bit. Only
     the distinct τ_th values are computed: the case's, and each published one (the
     catalogue's :attr:`~CatalogueArrays.published_taus`, found once per catalogue).
@@ -139,10 +140,8 @@ def _case_gains(
             key = key[:1]
         else:
             key, where = _distinct_rows(key)
-    rows = key.tolist()
-    pieces = np.array([_gains(r[:-2], r[-1]) for r in rows], dtype=np.float64)
-    cycle = np.array([heating_gain(r[-2], r[-1]) for r in rows], dtype=np.float64)
-    return pieces.reshape(len(rows), durations.shape[1])[where], cycle[where]
+    gains = heating_gain_array(key[:, :-1], key[:, -1:])  # the pieces', then the cycle's
+    return gains[:, :-1][where], gains[:, -1][where]
 
 
 def heated_over(

@@ -61,6 +61,7 @@ from actuator_selection.sizing.motion.profile import (
     Profile,
     SegmentTorque,
     heating_gain,
+    heating_gain_array,
     mean_abs_speed_rpm,
 )
 from actuator_selection.sizing.motion.segments import (
@@ -90,6 +91,7 @@ __all__ = [
     "figure_rows",
     "figures_of",
     "heating_gain",
+    "heating_gain_array",
     "mean_abs_speed_rpm",
     "piece_arrays",
     "pieces_of",
