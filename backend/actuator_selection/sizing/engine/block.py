@@ -179,6 +179,8 @@ def _extremes(
     (extremes × cases × ends × 1: a driving, a steady, a braking piece's end): the signed
     torque of largest magnitude, the first one on a tie (``argmax``; a NaN counts for
     none), for every extreme at once."""
+    if ends.shape[1] == 1:  # one end a case (a piece of constant α: a trapezoid's)
+        return _extremes_of_one(found, found_abs, ends[:, 0], counts[:, :, 0, 0])
     # |T| where counted, else −1 (a NaN too): two ufuncs over the broadcast shape, where
     # np.where's broadcasting of a scalar took its slow path (the same values)
     magnitude = np.fmax(np.abs(ends), -1.0)
@@ -195,6 +197,29 @@ def _extremes(
         return np.where(largest >= 0.0, torque, _NO_EXTREME), largest
     take = largest > found_abs
     return np.where(take, torque, found), np.where(take, largest, found_abs)
+
+
+def _extremes_of_one(
+    found: FloatArray | None, found_abs: FloatArray, ends: FloatArray, counts: BoolArray
+) -> tuple[FloatArray, FloatArray]:
+    """:func:`_extremes` where each case has one torque (``ends``, cases × actuators;
+    ``counts`` extremes × cases): the largest of one is that one, so no maximum, argmax
+    or take; an extreme no case counts is left as it is, and one every case counts takes
+    |T| as it is. ``found`` and ``found_abs`` are updated in place, after the first group
+    (None: the first, whose arrays are made here)."""
+    magnitude = np.fmax(np.abs(ends), -1.0)  # |T|, −1 for a NaN: never taken
+    if found is None:
+        found = np.empty((len(_NO_EXTREMES), *ends.shape))
+        found[...] = _NO_EXTREME
+        found_abs = np.full(found.shape, -1.0)
+    for k, counted in enumerate(counts):
+        if not counted.any():
+            continue
+        largest = magnitude if counted.all() else np.where(counted[:, np.newaxis], magnitude, -1.0)
+        take = largest > found_abs[k]
+        np.copyto(found[k], ends, where=take)
+        np.copyto(found_abs[k], largest, where=take)
+    return found, found_abs
 
 
 _NO_EXTREMES = (0.0, math.nan, 0.0)
