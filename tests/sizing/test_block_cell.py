@@ -31,6 +31,7 @@ from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
 from actuator_selection.sizing.engine.codes import cell_codes
 from actuator_selection.sizing.engine.formulas import float_divide, float_maximum, float_sqrt
+from actuator_selection.sizing.engine.one_case import OneCase, case_floats
 from actuator_selection.sizing.selection import Application
 
 SPECIAL = (0.0, -0.0, 1.0, -2.5, 3.0, 5e-324, 1e-300, 1e300, -1e300, math.inf, -math.inf, math.nan)
@@ -53,7 +54,7 @@ def same_bits(a: Any, b: Any) -> bool:
 def assert_cell_equals_block(cat: CatalogueArrays, cases: Cases) -> None:
     with np.errstate(all="ignore"):
         block = _block_cycle(cat, cases, (1, 1), True)
-        cell = _cell_cycle(cat, cases, True)
+        cell = _cell_cycle(cat, case_floats(cases), True)
     assert len(cell) == len(block)
     for k, (x, y) in enumerate(zip(cell, block, strict=True)):
         column = np.broadcast_to(y, (1, 1))[0, 0]
@@ -200,3 +201,28 @@ def test_one_cells_codes_on_floats_equal_the_arrays(
         )
     if detail:
         assert on_floats >= 30  # the floats decide (a formula seldom raises on them)
+
+
+def test_one_trapezoid_on_floats_equals_its_arrays_read_back() -> None:
+    """A one-model selection's case built on floats straight from the application equals
+    its arrays read back, bit for bit: pieces, figures, τ_th, every operand."""
+    built = 0
+    for _, app in cells(300, 120):
+        app.profile  # noqa: B018 - the figures are the profile's
+        one = OneCase.of(app)
+        if one._cases is not None:  # not a trapezoid: from its arrays
+            continue
+        built += 1
+        x, y = one.floats, case_floats(cases_of([app]))
+        for name in ("duration", "start_rpm", "end_rpm", "accel_start", "accel_end"):
+            assert same_bits(getattr(x, name), getattr(y, name)), name
+        for name in ("static", "inertia", "figures"):
+            assert same_bits(getattr(x, name), getattr(y, name)), name
+        assert (x.braking, x.constant_speed) == (y.braking, y.constant_speed)
+        assert x.thermal_assumed is y.thermal_assumed
+        assert same_bits(x.thermal_time_constant, y.thermal_time_constant)
+        assert x.operands.keys() == y.operands.keys()
+        for name, value in x.operands.items():
+            assert type(value) is type(y.operands[name]), name
+            assert same_bits(value, y.operands[name]), name
+    assert built > 20

@@ -69,6 +69,7 @@ from actuator_selection.sizing.engine.heating import (
     heated_over,
     periodic_peak,
 )
+from actuator_selection.sizing.engine.one_case import CaseFloats, OneCase
 from actuator_selection.sizing.motion import PieceArrays, mean_abs_speed_rpm
 
 CHECK_NAMES = tuple(rule.name for rule in RULES)
@@ -258,16 +259,18 @@ def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
 
 def evaluate_block(
     cat: CatalogueArrays,
-    cases: Cases,
+    cases: Cases | OneCase,
     zone_limits: FloatArray,
     rules: Sequence[Rule],
     *,
     detail: bool = False,
     overload: bool = True,
 ) -> Block:
-    """The flowchart for ``cases`` × every actuator (rows × columns); ``detail``: the
-    checks' values and limits too; without ``overload``, the block's overload is 0 (not
-    computed: a search that reads verdicts and utilisations only).
+    """The flowchart for ``cases`` × every actuator (rows × columns; one case as
+    :class:`~actuator_selection.sizing.engine.one_case.OneCase`, its arrays built only for
+    more than one actuator); ``detail``: the checks' values and limits too; without
+    ``overload``, the block's overload is 0 (not computed: a search that reads verdicts
+    and utilisations only).
 
     The torques are :meth:`~actuator_selection.sizing.motion.Profile.torques` on arrays,
     for a group of pieces at once (cases × pieces × actuators; as many pieces as keep a
@@ -276,13 +279,16 @@ def evaluate_block(
     T = c + (J_A + J)·α at both ends of each piece, ∫T² dt summed in the pieces' order,
     T_1, T_2, T_3 the signed torques of largest magnitude (the first one on a tie).
     """
-    # cases × actuators; cases × 1 where the catalogue is a column of pairs (engine.pairs)
-    shape = (cases.size, cat.inertia.shape[-1])
     # The gear's T_av (rules.gear), summed only where a rule reads it.
     averaged = any(r.name in AVERAGE_TORQUE_RULES for r in rules)
     with np.errstate(all="ignore"):  # as in Python floats: overflow gives inf, masked NaN
-        if shape == (1, 1) and cat.inertia.size == 1:  # one cell: on its floats
-            return _cell_block(cat, cases, zone_limits, rules, averaged, detail, overload)
+        if cases.size == 1 and cat.inertia.size == 1:  # one cell: on its floats
+            one = cases if isinstance(cases, OneCase) else OneCase.of_cases(cases)
+            return _cell_block(cat, one, zone_limits, rules, averaged, detail, overload)
+        if isinstance(cases, OneCase):
+            cases = cases.cases
+        # cases × actuators; cases × 1 where the catalogue is a column of pairs (engine.pairs)
+        shape = (cases.size, cat.inertia.shape[-1])
         cycle = _block_cycle(cat, cases, shape, averaged)
         zone_torque: FloatArray | float = math.nan  # no zone in the catalogue: NaN everywhere
         if cat.zone_columns.size:
@@ -341,7 +347,7 @@ class _Cycle(NamedTuple):
 
 def _cell_block(
     cat: CatalogueArrays,
-    cases: Cases,
+    one: OneCase,
     zone_limits: FloatArray,
     rules: Sequence[Rule],
     averaged: bool,
@@ -354,18 +360,19 @@ def _cell_block(
     cell_codes`); on arrays of one cell where a rule's formula raises on floats (numpy
     gives ±∞ or NaN there). Its :attr:`Block.operands` are the floats (a check's words
     read them as floats). Called with numpy's errors ignored."""
-    cycle = _cell_cycle(cat, cases, averaged)
+    case = one.floats
+    cycle = _cell_cycle(cat, case, averaged)
     zone_torque = math.nan
     if cat.zone_columns.size:
         zone = np.full((1, 1), math.nan)
         zone[:, cat.zone_columns] = zone_limits
         zone_torque = float(zone.item())
     cell = cycle.operands(zone_torque)
-    q = operands_of(case_operands(cases, cell=True), cat.operand_floats(), cell)
+    q = operands_of(case.operands, cat.operand_floats(), cell)
 
     def on_arrays() -> Operands:
         column = {name: np.full((1, 1), value) for name, value in cell.items()}
-        return operands_of(case_operands(cases), cat.operands, column)
+        return operands_of(case_operands(one.cases), cat.operands, column)
 
     lack = cat.lacking.get(tuple(rules))
     if lack is None:  # the first time for these actuators and rules
@@ -505,7 +512,7 @@ def _block_cycle(
     )
 
 
-def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> _Cycle:
+def _cell_cycle(cat: CatalogueArrays, case: CaseFloats, averaged: bool) -> _Cycle:
     """:func:`_block_cycle` for one case × one actuator, on Python floats: the same
     formulas (:mod:`~actuator_selection.sizing.engine.formulas` with
     :data:`~actuator_selection.sizing.engine.formulas.FLOAT_MATH`, :func:`heated_over`,
@@ -515,14 +522,13 @@ def _cell_cycle(cat: CatalogueArrays, cases: Cases, averaged: bool) -> _Cycle:
     counts its start torque only (its end's is equal, at most the sign of a zero differs:
     never a larger magnitude, never the first)."""
     m = FLOAT_MATH
-    p, f = cases.pieces, cases.figures
-    columns = (p.duration, p.start_rpm, p.end_rpm, p.accel_start, p.accel_end)
-    t, n0, n1, a0, a1 = (c[0].tolist() for c in columns)
-    static, load_inertia = p.static[0].tolist(), p.inertia[0].tolist()
-    braking, steady = p.braking[0].tolist(), p.constant_speed[0].tolist()
+    t, n0, n1 = case.duration, case.start_rpm, case.end_rpm
+    a0, a1 = case.accel_start, case.accel_end
+    static, load_inertia = case.static, case.inertia
+    braking, steady = case.braking, case.constant_speed
     j_a, slope = float(cat.inertia.item()), float(cat.heating_slope.item())
-    cycle, mean = float(f.cycle_s.item()), float(f.mean_speed_rpm.item())
-    gains = CellGains(cat, cases, t)
+    cycle, mean = case.cycle_s, case.mean_speed_rpm
+    gains = CellGains(cat, case)
     inertia = [j_a + j for j in load_inertia]
     t0 = [c + j * a for c, j, a in zip(static, inertia, a0, strict=True)]
     t1 = [c + j * a for c, j, a in zip(static, inertia, a1, strict=True)]

@@ -4,7 +4,7 @@ output loads and τ_th, and each case's operands by name (:func:`case_operands`)
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, fields
 from operator import attrgetter
 from typing import Any
@@ -175,7 +175,7 @@ def cases_of(apps: Sequence[Application]) -> Cases:
     # The case's other inputs in one table (one numpy call, not one per input): τ_th, its
     # being assumed, high dynamics, the output load's fields, the request's.
     loads = 3 + len(OUTPUT_LOAD_FIELDS)
-    inputs = np.array([_inputs(a) for a in apps], dtype=np.float64).reshape(
+    inputs = np.array([case_inputs(a) for a in apps], dtype=np.float64).reshape(
         len(apps), loads + len(REQUEST_FIELDS)
     )
     flags = inputs[:, 1:3] != 0.0
@@ -196,7 +196,7 @@ _OUTPUT_LOAD_OF = attrgetter(*OUTPUT_LOAD_FIELDS)
 _REQUEST_OF = attrgetter(*REQUEST_FIELDS)
 
 
-def _inputs(a: Application) -> list[float | bool]:
+def case_inputs(a: Application) -> list[float | bool]:
     """A case's row of :func:`cases_of`'s inputs (NaN where not given)."""
     tau = a.thermal_time_constant_s
     load = a.output_load
@@ -320,40 +320,51 @@ def zone_table(actuators: Sequence[Actuator]) -> ZoneTable:
     return ZoneTable(row=row, speeds=speeds, torques=torques, last=last)
 
 
-def case_operands(cases: Cases, *, cell: bool = False) -> dict[str, Any]:
+def case_operands(cases: Cases) -> dict[str, Any]:
     """The operands of each case by name, as columns (cases × 1): its speed, load and
-    cycle figures, the output load and the swing (:func:`~actuator_selection.sizing.engine.
-    block.operands_of`); with ``cell``, those of the one case as Python floats and bools
-    (a block of one cell)."""
-    f = cases.figures
-    if cell:
+    cycle figures, the output load and the swing (:func:`named_operands`)."""
+    f, col = cases.figures, np.newaxis
+    return named_operands(
+        lambda name: getattr(f, name)[:, col],
+        load_inertia=cases.load_inertia[:, col],
+        high_dynamics=cases.high_dynamics[:, col],
+        holding=cases.pieces.holding[:, col],
+        output_load={
+            name: cases.output_load[:, k, col] for k, name in enumerate(OUTPUT_LOAD_FIELDS)
+        },
+        swing=swing_of(cases)[:, col],
+        requests={name: cases.requests[:, k, col] for k, name in enumerate(REQUEST_FIELDS)},
+    )
 
-        def column(values: Any) -> Any:
-            return values.item()
 
-        def table(values: Any, names: tuple[str, ...]) -> dict[str, Any]:
-            return dict(zip(names, values[0].tolist(), strict=True))
-    else:
-        col = np.newaxis
-
-        def column(values: Any) -> Any:
-            return values[:, col]
-
-        def table(values: Any, names: tuple[str, ...]) -> dict[str, Any]:
-            return {name: values[:, k, col] for k, name in enumerate(names)}
-
+def named_operands(
+    figure: Callable[[str], Any],
+    *,
+    load_inertia: Any,
+    high_dynamics: Any,
+    holding: Any,
+    output_load: dict[str, Any],
+    swing: Any,
+    requests: dict[str, Any],
+) -> dict[str, Any]:
+    """A case's operands by their names in :class:`~actuator_selection.sizing.checks.
+    Operands` (:func:`~actuator_selection.sizing.engine.block.operands_of`), from its
+    cycle's figures by :class:`~actuator_selection.sizing.motion.CycleFigures`' names
+    (``figure``), its J_L, high dynamics, holding torque, output load and request's fields
+    by name and swing: columns of arrays (:func:`case_operands`) or one case's floats
+    (:mod:`~actuator_selection.sizing.engine.one_case`)."""
     return {
-        "speed_rpm": column(f.peak_speed_rpm),
-        "load_inertia_kgm2": column(cases.load_inertia),
-        "high_dynamics": column(cases.high_dynamics),
-        "mean_speed_rpm": column(f.mean_speed_rpm),
-        "accel_torque_floor_nm": column(f.accel_floor_nm),
-        "decel_torque_floor_nm": column(f.decel_floor_nm),
-        "rms_torque_floor_nm": column(f.rms_floor_nm),
-        "load_torque_nm": column(cases.pieces.holding),
-        "decel_s": column(f.braking_s),
-        **table(cases.output_load, OUTPUT_LOAD_FIELDS),
-        "swing_deg": column(swing_of(cases)),
-        "cycle_s": column(f.cycle_s),
-        **table(cases.requests, REQUEST_FIELDS),
+        "speed_rpm": figure("peak_speed_rpm"),
+        "load_inertia_kgm2": load_inertia,
+        "high_dynamics": high_dynamics,
+        "mean_speed_rpm": figure("mean_speed_rpm"),
+        "accel_torque_floor_nm": figure("accel_floor_nm"),
+        "decel_torque_floor_nm": figure("decel_floor_nm"),
+        "rms_torque_floor_nm": figure("rms_floor_nm"),
+        "load_torque_nm": holding,
+        "decel_s": figure("braking_s"),
+        **output_load,
+        "swing_deg": swing,
+        "cycle_s": figure("cycle_s"),
+        **requests,
     }

@@ -58,6 +58,7 @@ from actuator_selection.sizing.engine.detail import (
     decide_cells,
     detail_cells,
 )
+from actuator_selection.sizing.engine.one_case import OneCase
 from actuator_selection.sizing.motion import CycleFigures, figure_rows, profile_from
 
 
@@ -157,13 +158,22 @@ def evaluate_batch(
     """
     rules = rules_of(apps, rules)
     cat = catalogue_arrays(actuators) if arrays is None else arrays
+    if len(apps) == 1 and len(actuators) == 1:  # one cell (a one-model selection's)
+        one = OneCase.of(apps[0])  # on floats: no arrays for its case
+        figures = one.figures
+        zones = zone_limits(actuators, cat.zone_columns, figures.mean_speed_rpm)
+        block = evaluate_block(cat, one, zones, rules, detail=True)
+        return _evaluation(block, figures, rules, cat)
     cases = cases_of(apps)
     limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))
     ranges = blocks(actuators, apps)
     if len(ranges) == 1:  # one block (a selection's): its arrays as they are
         return _evaluation(
-            evaluate_block(cat, cases, limits_of_zones, rules, detail=True), cases, rules, cat
+            evaluate_block(cat, cases, limits_of_zones, rules, detail=True),
+            cases.figures,
+            rules,
+            cat,
         )
     accel, constant, decel, rms = (np.empty(shape) for _ in range(4))
     checks = (*shape, len(rules))
@@ -190,7 +200,7 @@ def evaluate_batch(
         verdicts[start:stop] = block.verdicts()
         worst_overload[start:stop] = block.overload
     return _assembled(
-        cases,
+        cases.figures,
         rules,
         cat,
         accel_torque_nm=accel,
@@ -208,7 +218,7 @@ def evaluate_batch(
 
 
 def _evaluation(
-    block: Block, cases: Cases, rules: Sequence[Rule], cat: CatalogueArrays
+    block: Block, figures: CycleFigures, rules: Sequence[Rule], cat: CatalogueArrays
 ) -> BatchEvaluation:
     """The :class:`BatchEvaluation` of one block of every case: the block's arrays, its
     rules' axis moved last (a copy each), not copied into arrays of the whole batch."""
@@ -221,7 +231,7 @@ def _evaluation(
         return np.ascontiguousarray(rules_first.transpose(1, 2, 0))
 
     return _assembled(
-        cases,
+        figures,
         rules,
         cat,
         accel_torque_nm=block.accel_torque,
@@ -239,9 +249,10 @@ def _evaluation(
 
 
 def _assembled(
-    cases: Cases, rules: Sequence[Rule], cat: CatalogueArrays, **cells: npt.NDArray[Any]
+    figures: CycleFigures, rules: Sequence[Rule], cat: CatalogueArrays, **cells: npt.NDArray[Any]
 ) -> BatchEvaluation:
-    """The :class:`BatchEvaluation` of ``cases`` from its arrays of cells by name."""
+    """The :class:`BatchEvaluation` of the cases of ``figures`` from its arrays of cells by
+    name."""
     key = tuple(rules)
     names = _NAMES.get(key)
     if names is None:  # per rule set, once (a selection's rules are one of a few sets)
@@ -252,9 +263,9 @@ def _assembled(
             tuple(rule.name for rule in rules),
         )
     return BatchEvaluation(
-        mean_speed_rpm=cases.figures.mean_speed_rpm,
-        duty_cycle_percent=cases.figures.duty_cycle_percent,
-        cycle_time_s=cases.figures.cycle_s,
+        mean_speed_rpm=figures.mean_speed_rpm,
+        duty_cycle_percent=figures.duty_cycle_percent,
+        cycle_time_s=figures.cycle_s,
         missing_what=names[0],
         check_names=names[1],
         rank_position=cat.rank_position,

@@ -45,6 +45,8 @@ Worked example (Table 516.1 with the FHA-25C-50-L's J_A = 0.86 kgm²):
 from __future__ import annotations
 
 from actuator_selection.sizing.motion.figures import (
+    TRAPEZOID_BRAKING,
+    TRAPEZOID_CONSTANT,
     CycleFigures,
     PieceArrays,
     cycle_figures,
@@ -54,6 +56,7 @@ from actuator_selection.sizing.motion.figures import (
     profile_from,
     profile_of,
     trapezoid_piece_arrays,
+    trapezoid_piece_floats,
     trapezoid_profile,
 )
 from actuator_selection.sizing.motion.profile import (
@@ -77,6 +80,8 @@ from actuator_selection.sizing.motion.segments import (
 
 __all__ = [
     "MAX_SEGMENTS",
+    "TRAPEZOID_BRAKING",
+    "TRAPEZOID_CONSTANT",
     "BoolArray",
     "CycleFigures",
     "CycleTorques",
@@ -99,5 +104,6 @@ __all__ = [
     "profile_of",
     "trapezoid",
     "trapezoid_piece_arrays",
+    "trapezoid_piece_floats",
     "trapezoid_profile",
 ]

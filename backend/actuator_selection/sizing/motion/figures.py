@@ -98,11 +98,11 @@ def trapezoid_piece_arrays(
     without a Python object per piece, for batches of thousands of cases."""
     rows = speed_rpm.size
     tables: FloatArray
-    if rows == 1 and accel_s.item() != 0 and decel_s.item() != 0:
-        # One case (a one-model selection): its pieces on Python floats, the same IEEE
-        # operations (an overflow gives inf; no time divides by 0), in one numpy call
-        # where the arrays took a dozen.
-        one = _trapezoid_columns(
+    one = None
+    if rows == 1:
+        # One case: its pieces on Python floats, in one numpy call where the arrays took
+        # a dozen.
+        one = trapezoid_piece_floats(
             speed_rpm.item(),
             accel_s.item(),
             constant_s.item(),
@@ -110,8 +110,8 @@ def trapezoid_piece_arrays(
             pause_s.item(),
             torque_nm.item(),
             inertia_kgm2.item(),
-            0.0,
         )
+    if one is not None:
         tables = np.array(one, dtype=np.float64).reshape(len(one), 1, 4)
     else:
         with np.errstate(all="ignore"):  # as Python floats: an overflow gives inf, no error
@@ -147,12 +147,36 @@ def trapezoid_piece_arrays(
 
 
 # The trapezoid's pieces (accelerate, run, brake, pause), one row to repeat per case.
-_TRAPEZOID_BRAKING = np.array([[False, False, True, False]])
-_TRAPEZOID_CONSTANT = np.array([[False, True, False, False]])
+TRAPEZOID_BRAKING = (False, False, True, False)
+TRAPEZOID_CONSTANT = (False, True, False, False)
+"""The trapezoid's pieces that brake and that run at constant speed, as truths."""
+_TRAPEZOID_BRAKING = np.array([TRAPEZOID_BRAKING])
+_TRAPEZOID_CONSTANT = np.array([TRAPEZOID_CONSTANT])
 _TRAPEZOID_MOVING = np.array([[True, True, True, False]])
 _TRAPEZOID_DIRECTION = np.array([[1.0, 1.0, 1.0, 0.0]])
 for _row in (_TRAPEZOID_BRAKING, _TRAPEZOID_CONSTANT, _TRAPEZOID_MOVING, _TRAPEZOID_DIRECTION):
     _row.setflags(write=False)  # one case's own (not copied: four numpy calls a selection)
+
+
+def trapezoid_piece_floats(
+    speed_rpm: float,
+    accel_s: float,
+    constant_s: float,
+    decel_s: float,
+    pause_s: float,
+    torque_nm: float,
+    inertia_kgm2: float,
+) -> tuple[tuple[float, float, float, float], ...] | None:
+    """One trapezoid's row of :func:`trapezoid_piece_arrays` as Python floats, a tuple per
+    quantity (duration, start and end speed, start and end acceleration, static torque,
+    inertia) of its four pieces: the same IEEE operations (an overflow gives inf). None
+    where a ramp takes no time (its acceleration divides by 0: ±∞ or NaN on arrays,
+    where Python's floats raise)."""
+    if accel_s == 0 or decel_s == 0:
+        return None
+    return _trapezoid_columns(
+        speed_rpm, accel_s, constant_s, decel_s, pause_s, torque_nm, inertia_kgm2, 0.0
+    )
 
 
 def _repeated(row: Any, rows: int) -> Any:
