@@ -25,6 +25,7 @@ from tests.oracle.test_engine_parity import (
 )
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.sizing.bearing import OutputLoad
 from actuator_selection.sizing.checks import ALL_RULES, Rule
 from actuator_selection.sizing.engine.block import _block_cycle, _cell_cycle, evaluate_block
 from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
@@ -206,8 +207,24 @@ def test_one_cells_codes_on_floats_equal_the_arrays(
 def test_one_trapezoid_on_floats_equals_its_arrays_read_back() -> None:
     """A one-model selection's case built on floats straight from the application equals
     its arrays read back, bit for bit: pieces, figures, τ_th, every operand."""
-    built = 0
-    for _, app in cells(300, 120):
+    rng = random.Random(11)
+    built = swung = 0
+    for _, plain in cells(300, 120):
+        app = plain
+        if rng.random() < 0.6:  # an output load, τ_th and the request's further inputs
+            app = dataclasses.replace(
+                plain,
+                thermal_time_constant_s=rng.choice([None, 60.0, 900.0]),
+                min_natural_frequency_hz=rng.choice([None, 15.0]),
+                emergency_stops=rng.choice([None, 150.0]),
+                brake_safety_factor=rng.choice([1.5, 2.0]),
+                output_load=OutputLoad(
+                    radial_force_n=rng.uniform(0, 1.5e4),
+                    axial_force_n=rng.uniform(-3e4, 3e4),
+                    radial_lever_m=rng.uniform(0, 0.1),
+                    axial_lever_m=rng.uniform(0, 0.05),
+                ),
+            )
         app.profile  # noqa: B018 - the figures are the profile's
         one = OneCase.of(app)
         if one._cases is not None:  # not a trapezoid: from its arrays
@@ -222,7 +239,9 @@ def test_one_trapezoid_on_floats_equals_its_arrays_read_back() -> None:
         assert x.thermal_assumed is y.thermal_assumed
         assert same_bits(x.thermal_time_constant, y.thermal_time_constant)
         assert x.operands.keys() == y.operands.keys()
+        swung += x.operands["swing_deg"] == x.operands["swing_deg"]
         for name, value in x.operands.items():
             assert type(value) is type(y.operands[name]), name
             assert same_bits(value, y.operands[name]), name
     assert built > 20
+    assert swung > 10
