@@ -8,7 +8,7 @@ to read them back as floats cost a one-model selection some twenty numpy calls. 
 floats are those the arrays hold, bit for bit: the same conversions (``float64`` of each
 input), the same IEEE operations (:func:`~actuator_selection.sizing.motion.
 trapezoid_piece_floats`, :func:`~actuator_selection.sizing.bearing.swing_deg`), which
-``tests/sizing/test_one_case.py`` checks against :func:`case_floats` of the arrays.
+``tests/sizing/test_block_cell.py`` checks against :func:`case_floats` of the arrays.
 """
 
 from __future__ import annotations
@@ -39,6 +39,8 @@ from actuator_selection.sizing.motion import (
 
 FIGURE_FIELDS = tuple(x.name for x in fields(CycleFigures))
 """The cycle's figures in :class:`~actuator_selection.sizing.motion.CycleFigures`' order."""
+_CYCLE_S = FIGURE_FIELDS.index("cycle_s")
+_MEAN_SPEED = FIGURE_FIELDS.index("mean_speed_rpm")
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -67,11 +69,11 @@ class CaseFloats:
 
     @property
     def cycle_s(self) -> float:
-        return self.figures[0]
+        return self.figures[_CYCLE_S]
 
     @property
     def mean_speed_rpm(self) -> float:
-        return self.figures[1]
+        return self.figures[_MEAN_SPEED]
 
 
 def case_floats(cases: Cases) -> CaseFloats:
