@@ -28,7 +28,7 @@ from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.bearing import OutputLoad
 from actuator_selection.sizing.checks import ALL_RULES, Rule
 from actuator_selection.sizing.engine.block import _block_cycle, _cell_cycle, evaluate_block
-from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
+from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limit_float, zone_limits
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
 from actuator_selection.sizing.engine.codes import cell_codes
 from actuator_selection.sizing.engine.formulas import float_divide, float_maximum, float_sqrt
@@ -245,3 +245,23 @@ def test_one_trapezoid_on_floats_equals_its_arrays_read_back() -> None:
             assert same_bits(value, y.operands[name]), name
     assert built > 20
     assert swung > 10
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_one_cells_zone_edge_on_floats_equals_the_arrays(seed: int) -> None:
+    """``zone_limit_float`` (a one-model selection's zone edge) equals ``zone_limits``'
+    array bit for bit: at the zone's corners, between them, beyond the zone, at ±0,
+    negative, infinite and NaN n_av, and without a zone."""
+    rng = random.Random(400 + seed)
+    for actuator, _ in cells(400 + seed, 40):
+        cat = catalogue_arrays([actuator])
+        corners = [p.speed_rpm for p in actuator.zone.points] if actuator.zone else []
+        speeds = [
+            *SPECIAL,
+            *corners,
+            *(rng.uniform(-10, 1.2 * max(corners, default=1)) for _ in range(8)),
+        ]
+        for speed in speeds:
+            array = zone_limits([actuator], cat.zone_columns, np.array([speed], dtype=np.float64))
+            edge = array.item() if array.size else math.nan
+            assert same_bits(zone_limit_float(actuator, speed), edge), (speed, corners)

@@ -260,7 +260,7 @@ def _mean_speeds(p: PieceArrays, pieces: slice = slice(None)) -> FloatArray:
 def evaluate_block(
     cat: CatalogueArrays,
     cases: Cases | OneCase,
-    zone_limits: FloatArray,
+    zone_limits: FloatArray | float,
     rules: Sequence[Rule],
     *,
     detail: bool = False,
@@ -348,7 +348,7 @@ class _Cycle(NamedTuple):
 def _cell_block(
     cat: CatalogueArrays,
     one: OneCase,
-    zone_limits: FloatArray,
+    zone_limits: FloatArray | float,
     rules: Sequence[Rule],
     averaged: bool,
     detail: bool,
@@ -362,11 +362,12 @@ def _cell_block(
     read them as floats). Called with numpy's errors ignored."""
     case = one.floats
     cycle = _cell_cycle(cat, case, averaged)
-    zone_torque = math.nan
-    if cat.zone_columns.size:
-        zone = np.full((1, 1), math.nan)
-        zone[:, cat.zone_columns] = zone_limits
-        zone_torque = float(zone.item())
+    if isinstance(zone_limits, float):  # the zone's edge as a float (zone_limit_float)
+        zone_torque = zone_limits
+    elif cat.zone_columns.size:  # 1 × 1: the one actuator's
+        zone_torque = float(zone_limits.item())
+    else:
+        zone_torque = math.nan
     cell = cycle.operands(zone_torque)
     q = operands_of(case.operands, cat.operand_floats(), cell)
 
@@ -526,9 +527,10 @@ def _cell_cycle(cat: CatalogueArrays, case: CaseFloats, averaged: bool) -> _Cycl
     a0, a1 = case.accel_start, case.accel_end
     static, load_inertia = case.static, case.inertia
     braking, steady = case.braking, case.constant_speed
-    j_a, slope = float(cat.inertia.item()), float(cat.heating_slope.item())
+    cell = cat.cell_floats()
+    j_a, slope = cell.inertia, cell.heating_slope
     cycle, mean = case.cycle_s, case.mean_speed_rpm
-    gains = CellGains(cat, case)
+    gains = CellGains(cell, case)
     inertia = [j_a + j for j in load_inertia]
     t0 = [c + j * a for c, j, a in zip(static, inertia, a0, strict=True)]
     t1 = [c + j * a for c, j, a in zip(static, inertia, a1, strict=True)]

@@ -4,6 +4,7 @@ output loads and τ_th, and each case's operands by name (:func:`case_operands`)
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, fields
 from operator import attrgetter
@@ -243,6 +244,26 @@ def zone_limits(
         i = np.searchsorted(speeds, mean_speed, side="right")  # bisect_right
         limits[:, k] = _zone_edge(mean_speed, i, np.minimum(i, last), speeds, torques, last)
     return limits
+
+
+def zone_limit_float(actuator: Actuator, mean_speed: float) -> float:
+    """:func:`zone_limits` of one case (n_av ``mean_speed``) × one actuator as a Python
+    float, on floats: the same IEEE operations (``bisect_right`` for ``searchsorted``, the
+    points ``b − 1`` and ``b`` as there), no numpy call; NaN without a zone."""
+    zone = actuator.zone
+    if zone is None:
+        return math.nan
+    speeds = [float(p.speed_rpm) for p in zone.points]
+    last = len(speeds) - 1
+    i = bisect_right(speeds, mean_speed)
+    if not (mean_speed >= 0 and mean_speed <= speeds[last]):  # beyond the zone (NaN too)
+        return math.nan
+    torques = [float(p.torque_nm) for p in zone.points]
+    if i > last:
+        return torques[last]
+    speed_a, torque_a = speeds[i - 1], torques[i - 1]  # i ≥ 1: the first speed is 0
+    share = (mean_speed - speed_a) / (speeds[i] - speed_a)  # speeds rise strictly
+    return torque_a + share * (torques[i] - torque_a)
 
 
 def _zone_edge(

@@ -12,7 +12,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from dataclasses import field as dataclasses_field
-from typing import Final
+from typing import Final, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -92,6 +92,19 @@ class Lacking:
     Python values (a block of one cell decides on floats); else empty."""
 
 
+class CellFloats(NamedTuple):
+    """A catalogue of one actuator as a block of one cell reads it, beyond its operands
+    (:meth:`CatalogueArrays.operand_floats`): Python floats, read once
+    (:meth:`CatalogueArrays.cell_floats`) rather than by ``.item()`` per request."""
+
+    inertia: float
+    """J_A [kgm²]; NaN where not published."""
+    heating_slope: float
+    """:attr:`CatalogueArrays.heating_slope`'s."""
+    tau: float | None
+    """τ_th where published, else None (the case's then)."""
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class CatalogueArrays:
     """The actuators as columns; NaN where the catalogue gives no value."""
@@ -118,6 +131,8 @@ class CatalogueArrays:
     floats: dict[str, float | bool] = dataclasses_field(default_factory=dict)
     """One actuator's :attr:`operands` as Python floats and bools
     (:meth:`operand_floats`), filled when first read."""
+    cell: list[CellFloats] = dataclasses_field(default_factory=list)
+    """:meth:`cell_floats`, once read (a catalogue of one actuator)."""
     published_taus: tuple[float, ...] = dataclasses_field(init=False)
     """The distinct τ_th that the actuators publish, ascending."""
     tau_column: IndexArray = dataclasses_field(init=False)
@@ -159,6 +174,19 @@ class CatalogueArrays:
         if not self.floats:
             self.floats.update({name: v.item() for name, v in self.operands.items()})
         return self.floats
+
+    def cell_floats(self) -> CellFloats:
+        """A catalogue of one actuator's :class:`CellFloats`, read once."""
+        if not self.cell:
+            unpublished = bool(self.tau_unpublished.item())
+            self.cell.append(
+                CellFloats(
+                    inertia=float(self.inertia.item()),
+                    heating_slope=float(self.heating_slope.item()),
+                    tau=None if unpublished else float(self.thermal_time_constant.item()),
+                )
+            )
+        return self.cell[0]
 
     @property
     def size(self) -> int:

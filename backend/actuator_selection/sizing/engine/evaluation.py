@@ -48,7 +48,12 @@ from actuator_selection.sizing.engine.arrays import (
     IndexArray,
 )
 from actuator_selection.sizing.engine.block import CHECK_NAMES, Block, blocks, evaluate_block
-from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limits
+from actuator_selection.sizing.engine.cases import (
+    Cases,
+    cases_of,
+    zone_limit_float,
+    zone_limits,
+)
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
 from actuator_selection.sizing.engine.detail import (
     CycleOf,
@@ -160,10 +165,9 @@ def evaluate_batch(
     cat = catalogue_arrays(actuators) if arrays is None else arrays
     if len(apps) == 1 and len(actuators) == 1:  # one cell (a one-model selection's)
         one = OneCase.of(apps[0])  # on floats: no arrays for its case
-        figures = one.figures
-        zones = zone_limits(actuators, cat.zone_columns, figures.mean_speed_rpm)
-        block = evaluate_block(cat, one, zones, rules, detail=True)
-        return _evaluation(block, figures, rules, cat)
+        zone = zone_limit_float(actuators[0], one.floats.mean_speed_rpm)
+        block = evaluate_block(cat, one, zone, rules, detail=True)
+        return _evaluation(block, one.figures, rules, cat)
     cases = cases_of(apps)
     limits_of_zones = zone_limits(actuators, cat.zone_columns, cases.mean_speed)
     shape = (len(apps), len(actuators))

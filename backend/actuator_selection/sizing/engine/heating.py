@@ -14,7 +14,7 @@ import numpy as np
 
 from actuator_selection.sizing.engine.arrays import BoolArray, FloatArray, IndexArray
 from actuator_selection.sizing.engine.cases import Cases
-from actuator_selection.sizing.engine.catalogue import CatalogueArrays
+from actuator_selection.sizing.engine.catalogue import CatalogueArrays, CellFloats
 from actuator_selection.sizing.engine.formulas import ARRAY_MATH, Math
 from actuator_selection.sizing.engine.one_case import CaseFloats
 from actuator_selection.sizing.motion import heating_gain, heating_gain_array
@@ -87,17 +87,16 @@ class HeatingGains:
 
 class CellGains:
     """:class:`HeatingGains` of one case × one actuator, as floats: the gains at the
-    actuator's τ_th (published, else the case's), by :func:`heating_gain` as there."""
+    actuator's τ_th (published, else the case's), by :func:`heating_gain` as there;
+    ``cat`` the actuator's :meth:`~CatalogueArrays.cell_floats`."""
 
-    def __init__(self, cat: CatalogueArrays, case: CaseFloats) -> None:
-        column = int(cat.tau_column.item())
-        case_tau = case.thermal_time_constant
-        tau = case_tau if column == 0 else cat.published_taus[column - 1]
+    def __init__(self, cat: CellFloats, case: CaseFloats) -> None:
+        published = cat.tau
+        tau = case.thermal_time_constant if published is None else published
         self._pieces = _gains(case.duration, tau)
         self._cycle = heating_gain(case.cycle_s, tau)
-        unpublished = bool(cat.tau_unpublished.item())
-        self.time_constant = case_tau if unpublished else float(cat.thermal_time_constant.item())
-        self.assumed = unpublished and case.thermal_assumed
+        self.time_constant = tau
+        self.assumed = published is None and case.thermal_assumed
 
     def piece(self, k: int) -> float:
         return self._pieces[k]
