@@ -26,8 +26,13 @@ from tests.oracle.test_engine_parity import (
 
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.sizing.bearing import OutputLoad
-from actuator_selection.sizing.checks import ALL_RULES, Rule
-from actuator_selection.sizing.engine.block import _block_cycle, _cell_cycle, evaluate_block
+from actuator_selection.sizing.checks import ALL_RULES, Operands, Rule
+from actuator_selection.sizing.engine.block import (
+    _block_cycle,
+    _cell_cycle,
+    evaluate_block,
+    operands_of,
+)
 from actuator_selection.sizing.engine.cases import Cases, cases_of, zone_limit_float, zone_limits
 from actuator_selection.sizing.engine.catalogue import CatalogueArrays, catalogue_arrays
 from actuator_selection.sizing.engine.codes import cell_codes
@@ -265,3 +270,20 @@ def test_one_cells_zone_edge_on_floats_equals_the_arrays(seed: int) -> None:
             array = zone_limits([actuator], cat.zone_columns, np.array([speed], dtype=np.float64))
             edge = array.item() if array.size else math.nan
             assert same_bits(zone_limit_float(actuator, speed), edge), (speed, corners)
+
+
+def test_operands_by_position_equal_them_by_name_and_refuse_as_before() -> None:
+    """``operands_of`` takes the merged names by position; the same operands as by
+    keyword, and a name given twice, missing or unknown still refused (TypeError)."""
+    names: tuple[str, ...] = Operands._fields
+    case = {n: float(k) for k, n in enumerate(names[:20])}
+    cat = {n: float(k) for k, n in enumerate(names[20:60], start=20)}
+    cell = {n: float(k) for k, n in enumerate(names[60:], start=60)}
+    assert operands_of(case, cat, cell) == Operands(**case, **cat, **cell)
+    assert list(operands_of(cell, case, cat)) == [float(k) for k in range(len(names))]
+    twice = {**cell, names[0]: -1.0}
+    missing = {n: v for n, v in cell.items() if n != names[-1]}
+    unknown = {**missing, "no_such_operand": 1.0}
+    for bad in (twice, missing, unknown):
+        with pytest.raises(TypeError):
+            operands_of(case, cat, bad)

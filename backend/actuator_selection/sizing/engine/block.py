@@ -604,8 +604,21 @@ def operands_of(
     (:func:`~actuator_selection.sizing.engine.cases.case_operands`, columns of cases), the
     catalogue's (:data:`~actuator_selection.sizing.engine.catalogue.CATALOGUE_OPERANDS`,
     rows of actuators) and the cell's (cases × actuators: the cycle's torques on each
-    actuator, the zone's edge, the heating). A name given twice, or one missing, raises."""
+    actuator, the zone's edge, the heating). A name given twice, or one missing, raises.
+
+    Taken by position from the three merged (``Operands._make``): some eighty keywords
+    bound by name cost a one-model selection more than its numpy calls do; where the
+    names do not match the fields one to one, by keyword, which raises."""
+    merged = {**case, **catalogue, **cell}
+    if len(merged) == len(_OPERAND_FIELDS) == len(case) + len(catalogue) + len(cell):
+        try:
+            return Operands._make(map(merged.__getitem__, _OPERAND_FIELDS))
+        except KeyError:  # a name that is not a field, and so one missing
+            pass
     return Operands(**case, **catalogue, **cell)
+
+
+_OPERAND_FIELDS: tuple[str, ...] = Operands._fields
 
 
 def blocks(actuators: Sized, apps: Sized) -> list[tuple[int, int]]:
