@@ -17,8 +17,8 @@ from sqlalchemy.orm import Session
 from actuator_selection.phrases.check_messages import codes_only, jsonable_params, phrase
 from actuator_selection.services.catalogue import CatalogueCache
 from actuator_selection.services.presenters.batch import CodedChecks, coded_check_body
-from actuator_selection.services.presenters.batch_messages import pair_items, param_items
-from actuator_selection.services.presenters.selection import dump_json, json_items
+from actuator_selection.services.presenters.batch_messages import param_items
+from actuator_selection.services.presenters.selection import dump_json
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.checks import Rule, rules_for
 from actuator_selection.sizing.engine import select_batch
@@ -93,17 +93,3 @@ def test_params_as_numbers_are_written_as_the_dicts_write_them() -> None:
         assert item == dump_json(params["value"])
         if math.isfinite(value):
             assert item == orjson.dumps(value)
-
-
-def test_a_value_and_its_limit_as_one_piece_are_their_items_joined() -> None:
-    """``pair_items`` writes each cell's two numbers as ``json_items`` writes each (null
-    for NaN and ±∞, exponents as orjson writes them), with the text between them."""
-    import numpy as np
-
-    first = [0.1, 5.0, 1e-7, 1.5e16, 123456789.0, -2.5e-300, 1e300, math.nan, math.inf, 0.0]
-    second = [-math.inf, 2.0, math.nan, 1e-5, 3.0, 1e21, 7.25, 8.0, 1.0, -0.0]
-    a, b = np.array(first), np.array(second)
-    joined = [x + b',"limit":' + y for x, y in zip(json_items(a), json_items(b), strict=True)]
-    assert pair_items(a, b, b',"limit":') == joined
-    assert pair_items(a[:1], b[:1], b",") == [json_items(a[:1])[0] + b"," + json_items(b[:1])[0]]
-    assert pair_items(a[:0], b[:0], b",") == []

@@ -35,7 +35,7 @@ from actuator_selection.services.presenters.batch import (
     CodedChecks,
     actuator_body,
     batch_candidate_body,
-    coded_check_columns,
+    coded_checks_json,
     coded_summary,
     controllers_summary,
     members_json,
@@ -444,7 +444,7 @@ def _ranked_json(
         _VERDICT_JSON[ranked.verdicts].tolist(),
         torques,
         _reason_checks(ranked.decided),
-        coded_check_columns(ranked.decided) if body.include_checks else None,
+        coded_checks_json(ranked.decided) if body.include_checks else None,
         controllers,
         tails[columns].tolist(),
     )

@@ -20,12 +20,11 @@ from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonab
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.batch_messages import (
     Given,
+    Shape,
     message_shapes,
-    object_array,
-    pair_items,
     text_json,
 )
-from actuator_selection.services.presenters.selection import dump_json, resolved_load
+from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
 from actuator_selection.sizing.checks import Brief, Operands, Rule
 from actuator_selection.sizing.engine import STATUS_BY_CODE
 from actuator_selection.sizing.engine.detail import DecidedCells
@@ -182,17 +181,10 @@ class CodedChecks:
 
 def coded_checks_json(decided: DecidedCells) -> list[bytes]:
     """Each cell's ``checks`` of ``decided`` as JSON, in the cells' order: the text
-    :func:`dump_json` writes of :func:`coded_check_body` of each check, the cell's
-    checks of :func:`coded_check_columns` in an array."""
-    return [b"[" + b",".join(row) + b"]" for row in zip(*coded_check_columns(decided), strict=True)]
-
-
-def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
-    """Each rule's check of each cell of ``decided`` as JSON (a list per rule, in the
-    cells' order): the text :func:`dump_json` writes of :func:`coded_check_body`, written
-    rule by rule for every cell at once: orjson writes each array of numbers, and one
-    template per rule and shape of its message (:func:`message_shapes`) takes each
-    cell's members, the message's code and params among them.
+    :func:`dump_json` writes of a list of :func:`coded_check_body` of each check,
+    written for every cell at once: orjson writes each array of numbers, and one
+    template of the cell's whole array takes each cell's members, rule by rule
+    (:func:`_rule_checks`), the messages' codes and params among them.
     The messages' codes and params come from the same words: a rule's ``no_data``
     message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
     or :class:`~actuator_selection.sizing.checks.Variants` message from the arrays, any
@@ -200,70 +192,75 @@ def coded_check_columns(decided: DecidedCells) -> list[list[bytes]]:
     columns = decided.columns
     cells = columns.statuses.shape[1]
     operands: list[Operands] = []  # over the cells, computed once if a rule needs them
-    written: list[list[bytes]] = []
+    parts: list[bytes | None] = [b"["]
+    members: list[list[bytes]] = []
     with np.errstate(all="ignore"):  # margin_percent, utilisation; the messages' terms
         for k, rule in enumerate(decided.rules):
-            written.append(_rule_checks(decided, k, rule, operands, cells))
-    return written
+            if k:
+                parts.append(b",")
+            its_parts, its_members = _rule_checks(decided, k, rule, operands, cells)
+            parts += its_parts
+            members += its_members
+    parts.append(b"]")
+    return _filled(_template(*parts), members, cells)
 
 
 def _rule_checks(
     decided: DecidedCells, k: int, rule: Rule, operands: list[Operands], cells: int
-) -> list[bytes]:
-    """Rule ``k``'s check of each cell of ``decided`` as JSON (:func:`coded_check_columns`)."""
+) -> tuple[list[bytes | None], list[list[bytes]]]:
+    """Rule ``k``'s check of each cell of ``decided`` (:func:`coded_checks_json`) as a
+    template's parts (None: a member) and the members over the cells: the check's own
+    members, and its message's, filled per cell where the cells' messages take more than
+    one shape (:func:`message_shapes`)."""
     columns = decided.columns
     values, limits = columns.values[k], columns.limits[k]
     rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)  # sizing.checks.rule
     margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
     share = np.where(rated, values / limits, math.nan)
-    head = (
-        b'{"name":',
-        text_json(rule.name),
-        b',"status":',
-        None,
-        b',"value":',
-        None,  # the value, then ',"limit":' and the limit (Given.pairs)
-        b',"unit":',
-        text_json(rule.unit),
-        b',"reference":',
-        text_json(rule.reference),
-        b',"message_code":',
-    )
-    # the margin, then ',"utilisation":' and the share
-    tail = (b',"approximate":', None, b',"margin_percent":', None, b"}")
-    statuses = _STATUS_JSON[columns.statuses[k]]
-    truths = _TRUTH_JSON[columns.approximate[k].view(np.int8)]
     # the values' and limits' JSON, shared with the messages' params that say them
     given = Given(values, limits)
     shapes = message_shapes(decided, k, operands, cells, given)
-    ratings = pair_items(margin, share, b',"utilisation":')
-    if len(shapes) == 1 and isinstance(shapes[0][0], slice):  # every cell, one template
-        _, parts, members = shapes[0]
-        said = statuses.tolist()
-        return _filled(
-            _template(*head, *parts, *tail),
-            [said, given.pairs().tolist(), *members, truths.tolist(), ratings],
-            len(said),
-        )
-    out = None if len(shapes) == 1 else np.empty(cells, dtype=object)
-    by_cell = object_array(ratings)
+    if len(shapes) == 1 and isinstance(shapes[0][0], slice):  # every cell, one shape
+        _, said, members = shapes[0]
+    else:
+        said, members = [None], [_messages(shapes, cells)]
+    parts = [
+        b'{"name":' + text_json(rule.name) + b',"status":',
+        None,
+        b',"value":',
+        None,
+        b',"limit":',
+        None,
+        b',"unit":'
+        + text_json(rule.unit)
+        + b',"reference":'
+        + text_json(rule.reference)
+        + b',"message_code":',
+        *said,
+        b',"approximate":',
+        None,
+        b',"margin_percent":',
+        None,
+        b',"utilisation":',
+        None,
+        b"}",
+    ]
+    return parts, [
+        _STATUS_JSON[columns.statuses[k]].tolist(),
+        *given.items(),
+        *members,
+        _TRUTH_JSON[columns.approximate[k].view(np.int8)].tolist(),
+        json_items(margin),
+        json_items(share),
+    ]
+
+
+def _messages(shapes: list[Shape], cells: int) -> list[bytes]:
+    """Each cell's message (its code, then ``,"message_params":`` and the params) as
+    JSON, each shape's cells filled from its template."""
+    out = np.empty(cells, dtype=object)
     for where, parts, members in shapes:
-        said = statuses[where].tolist()
-        filled = _filled(
-            _template(*head, *parts, *tail),
-            [
-                said,
-                given.pairs()[where].tolist(),
-                *members,
-                truths[where].tolist(),
-                by_cell[where].tolist(),
-            ],
-            len(said),
-        )
-        if out is None:
-            return filled
-        out[where] = filled
-    assert out is not None
+        out[where] = _filled(_template(*parts), members, len(out[where]))
     found: list[bytes] = out.tolist()
     return found
 

@@ -6,8 +6,7 @@ slice at once (:func:`message_shapes`): the cells that take the same variant and
 branch of each :class:`~actuator_selection.sizing.checks.Pick` share one template's parts
 (``services/presenters/batch.py`` fills it per cell), their params' numbers written by
 orjson over the cells. A message's code is rendered once per message, its params' names
-once per process; a value and its limit are one piece where they stand side by side
-(:class:`Given`).
+once per process; a param that says the check's value or limit is its JSON (:class:`Given`).
 """
 
 from __future__ import annotations
@@ -18,7 +17,6 @@ from typing import Any
 
 import numpy as np
 import numpy.typing as npt
-import orjson
 
 from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
 from actuator_selection.services.presenters.selection import dump_json, json_items
@@ -30,44 +28,30 @@ from actuator_selection.sizing.engine.codes import ARRAY_OPS
 from actuator_selection.sizing.engine.detail import DecidedCells
 
 
-def pair_items(first: npt.NDArray[Any], second: npt.NDArray[Any], between: bytes) -> list[bytes]:
-    """Each cell's ``first`` and ``second`` as :func:`json_items` writes them, joined by
-    ``between`` (a comma and the second's name), as one piece: one orjson call and one
-    split for both."""
-    if not first.size:
-        return []
-    written = orjson.dumps(np.column_stack((first, second)), option=orjson.OPT_SERIALIZE_NUMPY)
-    # [[a,b],[a,b],…]: the rows' "],[" to "]" (no number holds it), then each comma left
-    return written[2:-2].replace(b"],[", b"]").replace(b",", between).split(b"]")
-
-
 class Given:
-    """A rule's values and limits over every cell and their JSON, written when first
-    read: each apart (:meth:`apart`, for a message's params that say one of them) and as
-    pairs (:meth:`pairs`: the check's ``value`` and ``limit``, and a message's params
-    that say both in turn)."""
+    """A rule's values and limits over every cell and their JSON (:func:`json_items`),
+    written when first read: the check's ``value`` and ``limit``, and a message's params
+    that say one of them."""
 
-    __slots__ = ("_apart", "_pairs", "limits", "values")
+    __slots__ = ("_apart", "_items", "limits", "values")
 
     def __init__(self, values: npt.NDArray[np.float64], limits: npt.NDArray[np.float64]) -> None:
         self.values, self.limits = values, limits
+        self._items: tuple[list[bytes], list[bytes]] | None = None
         self._apart: tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]] | None = None
-        self._pairs: npt.NDArray[np.object_] | None = None
+
+    def items(self) -> tuple[list[bytes], list[bytes]]:
+        """The values' and the limits' JSON (:func:`json_items`), each over every cell."""
+        if self._items is None:
+            self._items = (json_items(self.values), json_items(self.limits))
+        return self._items
 
     def apart(self) -> tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]]:
-        """The values' and the limits' JSON (:func:`json_items`), each over every cell."""
+        """:meth:`items` as arrays, for the cells of a mask."""
         if self._apart is None:
-            self._apart = (
-                object_array(json_items(self.values)),
-                object_array(json_items(self.limits)),
-            )
+            values, limits = self.items()
+            self._apart = (object_array(values), object_array(limits))
         return self._apart
-
-    def pairs(self) -> npt.NDArray[np.object_]:
-        """Each cell's value, ``,"limit":`` and its limit as JSON (:func:`pair_items`)."""
-        if self._pairs is None:
-            self._pairs = object_array(pair_items(self.values, self.limits, b',"limit":'))
-        return self._pairs
 
 
 def object_array(items: list[bytes]) -> npt.NDArray[np.object_]:
@@ -175,7 +159,7 @@ class _Cells:
 
     def _computed(self, term: Term) -> tuple[Any, npt.NDArray[Any]]:
         found = self.terms.get(id(term))
-        if found is None:  # numpy's errors ignored by the caller (coded_check_columns)
+        if found is None:  # numpy's errors ignored by the caller (coded_checks_json)
             computed = term(self.q, ARRAY_OPS, self.values, self.limits)
             shape = self.mask.shape
             column = (
@@ -196,20 +180,6 @@ class _Cells:
         written = self.given.apart()[0 if computed is self.values else 1]
         shared: list[bytes] = written[self.mask].tolist()  # finite: the same text
         return shared
-
-    def pair_items(self, first: Term, second: Term) -> list[bytes] | None:
-        """The params ``first`` and ``second`` over the cells of :attr:`mask` as one
-        piece each (the value, ``,"limit":`` and the limit: :meth:`Given.pairs`) where
-        they give the value and the limit as they are, both finite; else None."""
-        if self._computed(first)[0] is not self.values:
-            return None
-        if self._computed(second)[0] is not self.limits:
-            return None
-        mask = self.mask
-        if not (np.isfinite(self.values[mask]).all() and np.isfinite(self.limits[mask]).all()):
-            return None
-        pairs: list[bytes] = self.given.pairs()[mask].tolist()
-        return pairs
 
     def codes(self, message: Said) -> list[bytes]:
         """``message``'s code of each cell, as JSON."""
@@ -299,27 +269,15 @@ def _object_parts(chosen: _Chosen, cells: _Cells) -> tuple[list[bytes | None], l
     parts: list[bytes | None] = [b"{"]
     members: list[list[bytes]] = []
     names = [name for name, _ in chosen.said.params]
-    params = chosen.params
-    n = 0
-    while n < len(params):
-        param = params[n]
+    for n, param in enumerate(chosen.params):
         parts.append((b"," if n else b"") + text_json(names[n]) + b":")
-        n += 1
         if isinstance(param, _Chosen):  # a clause: its code and params
             inner, its = _object_parts(param, cells)
             parts += [b'{"code":', None, b',"params":', *inner, b"}"]
             members += [cells.codes(param.said), *its]
         elif callable(param):
             parts.append(None)
-            after = params[n] if n < len(params) else None
-            pair = None
-            if after is not None and names[n] == "limit" and callable(after):
-                pair = cells.pair_items(param, after)  # "value":V,"limit":L, one member
-            if pair is not None:
-                members.append(pair)
-                n += 1
-            else:
-                members.append(cells.items(param))
+            members.append(cells.items(param))
         else:
             parts.append(dump_json(jsonable(param)))  # a constant: words, a clause or None
     parts.append(b"}")

@@ -36,7 +36,7 @@ def candidate_columns(
     verdicts: list[bytes],
     torques: Sequence[list[bytes]],
     reason_checks: list[bytes],
-    checks: list[list[bytes]] | None,
+    checks: list[bytes] | None,
     controllers: list[bytes] | None,
     summaries: list[bytes],
 ) -> list[Column]:
@@ -44,8 +44,8 @@ def candidate_columns(
     ``services/presenters/batch.py`` as ``dump_json`` writes it) as columns over the
     cells, from each member's JSON over the cells: ``actuators`` the actuator's members
     (``"model":…,"family":…,"gear_ratio":…``), ``verdicts`` and ``torques`` (T_1, T_2,
-    T_3, T_rms) its values, ``reason_checks`` the list, ``checks`` each rule's check
-    (``coded_check_columns``; None: not asked for), ``controllers`` the list (None: not
+    T_3, T_rms) its values, ``reason_checks`` the list, ``checks`` the list
+    (``coded_checks_json``; None: not asked for), ``controllers`` the list (None: not
     asked for), and ``summaries`` the members of ``coded_summary`` each after a comma."""
     accel, constant, decel, rms = torques
     columns: list[Column] = [
@@ -65,11 +65,7 @@ def candidate_columns(
         reason_checks,
     ]
     if checks is not None:
-        opening = b',"checks":['
-        for rule in checks:
-            columns += [opening, rule]
-            opening = b","
-        columns.append(b"]" if checks else b',"checks":[]')
+        columns += [b',"checks":', checks]
     if controllers is not None:
         columns += [b',"controllers":', controllers]
     columns += [summaries, b"}"]
