@@ -18,6 +18,7 @@ from actuator_selection.services.presenters.batch_rows import (
     candidate_columns,
     case_loads,
     case_rows,
+    json_texts,
     pieces,
     rows,
 )
@@ -127,3 +128,8 @@ def test_shorthand_loads_are_their_axis_loads_written() -> None:
     expected = load_columns([app.axis_load for app in apps], peaks)
     assert case_loads(apps, peaks) == expected
     assert case_loads(apps[:1], peaks[:1]) == [column[:1] for column in expected]
+
+
+def test_ids_are_written_as_dump_json_writes_them() -> None:
+    values = [None, "c1", 'a "b", c', "Ω\u2028", "", None]
+    assert json_texts(values) == [dump_json(v) for v in values]

@@ -46,6 +46,7 @@ from actuator_selection.services.presenters.batch_rows import (
     candidate_columns,
     case_loads,
     case_rows,
+    json_texts,
     pieces,
     rows,
 )
@@ -449,8 +450,8 @@ def _ranked_json(
         tails[columns].tolist(),
     )
     return case_rows(
-        [dump_json(id_) for id_, _ in ids],
-        [dump_json(case_id) for _, case_id in ids],
+        json_texts([id_ for id_, _ in ids]),
+        json_texts([case_id for _, case_id in ids]),
         case_loads(apps, f.peak_speed_rpm),
         [json_items(f.cycle_s), json_items(f.mean_speed_rpm), json_items(f.duty_cycle_percent)],
         candidates,

@@ -118,6 +118,17 @@ def case_rows(
     return columns
 
 
+def json_texts(values: Sequence[object]) -> list[bytes]:
+    """Each of ``values`` as ``dump_json`` writes it (a case's ``id`` or ``case_id``),
+    None as one shared ``null``, the rest copied out of orjson's text: orjson's own small
+    answers, kept, cost several times a copy (10,000 cases' ids and case ids in slices of
+    200: 7 ms against 0.3 ms; kept 10,000 at once, 2.5 µs each against 0.2 µs)."""
+    return [_NULL if value is None else bytes(memoryview(dump_json(value))) for value in values]
+
+
+_NULL = dump_json(None)
+
+
 def case_loads(apps: Sequence[Application], peaks: npt.NDArray[np.float64]) -> list[list[bytes]]:
     """``load_columns`` of the cases' axis loads at their peak speeds ``peaks`` (each
     member of their ``load`` as JSON over the cases); where every case is the chapter's
