@@ -165,10 +165,22 @@ def _heating_square(cat: CatalogueArrays, speed: FloatArray, square: FloatArray)
 def _added_in_order(total: Any, terms: FloatArray) -> FloatArray:
     """``total`` plus the pieces' ``terms`` (cases × pieces × …, overwritten), added one
     piece after the other as a loop adds them: a cumulative sum along the pieces, whose
-    last is the sum (``np.add.reduce`` may add pairwise: another rounding)."""
-    np.add(total, terms[:, 0], out=terms[:, 0])
-    total_in_order: FloatArray = np.add.accumulate(terms, axis=1)[:, -1]
+    last is the sum (``np.add.reduce`` may add pairwise: another rounding). Where the
+    pieces' slices are large, one add per piece instead: the same sums, where
+    ``accumulate`` along a middle axis loops over every cell for a few pieces (a block
+    of 1,024 cases × 64 actuators, 4 pieces: 9 ms against 0.6 ms)."""
+    total_in_order: FloatArray = terms[:, 0]
+    np.add(total, total_in_order, out=total_in_order)
+    if total_in_order.size < _ADDED_CELLS * terms.shape[1]:
+        return np.add.accumulate(terms, axis=1)[:, -1]
+    for k in range(1, terms.shape[1]):
+        np.add(total_in_order, terms[:, k], out=total_in_order)
     return total_in_order
+
+
+_ADDED_CELLS = 64
+"""Cells of a piece's slice, per piece, from which :func:`_added_in_order` adds piece by
+piece rather than by ``np.add.accumulate`` (measured: the two cost alike near it)."""
 
 
 def _extremes(
