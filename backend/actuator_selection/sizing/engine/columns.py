@@ -240,24 +240,30 @@ def _table_rows(ranked: RankedBlock) -> tuple[Any, ...]:
     shape = block.accel_torque.shape
     rows = np.broadcast_to(np.arange(order.shape[0])[:, np.newaxis], order.shape)[ranked.kept]
     cols = order[ranked.kept]
+    flat = rows * shape[1] + cols  # each cell's place in a block's array, flattened
 
     def cells(array: Any) -> Any:
+        if array.shape == shape and array.flags.c_contiguous:  # one take of the places
+            return array.reshape(-1).take(flat)
         return np.broadcast_to(array, shape)[rows, cols]
 
     out = [
         rows + ranked.start,
         cols,
-        ranked.verdicts[rows, cols],
+        cells(ranked.verdicts),
         cells(block.accel_torque),
         cells(block.constant_torque),
         cells(block.decel_torque),
         cells(block.rms_torque),
     ]
     checks = block.checks
-    if checks is not None:  # rules × cells, in C order: numpy lays an index after a
-        # slice out cells-first, and the answer's writer (orjson) takes C order only
+    if checks is not None:  # rules × cells, in C order (the answer's writer, orjson,
+        # takes C order only): each rule's cells by one take of their flat places, where
+        # a[:, rows, cols] laid them out cells-first and a copy put them in order
         out += [
-            np.ascontiguousarray(a[:, rows, cols])
+            a.reshape(a.shape[0], -1).take(flat, axis=1)
+            if a.shape[1:] == shape
+            else np.ascontiguousarray(a[:, rows, cols])
             for a in (
                 block.statuses,
                 checks.values,
