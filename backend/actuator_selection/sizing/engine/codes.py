@@ -392,13 +392,19 @@ def _overload(codes: CodeArray, values: FloatArray, limits: FloatArray) -> Float
     failing = codes == FAIL
     if not failing.any():  # nothing fails: no overload (most cells of a selection)
         return np.zeros(codes.shape[1:])
-    no_limit = np.isnan(limits) | (limits <= 0) | np.isnan(values)
-    # np.where(no_limit, ∞, max(v/l, 1)), then 0 where it does not fail, in place (np.where
+    # A limit: above 0 (not NaN), and a value (not NaN); two passes where NaN, ≤ 0, NaN
+    # took five
+    has_limit = limits > 0.0
+    has_limit &= values == values
+    # np.where(no limit, ∞, max(v/l, 1)), then 0 where it does not fail, in place (np.where
     # of a scalar took its slow path)
     over = values / limits
     np.maximum(over, 1.0, out=over)
-    np.copyto(over, math.inf, where=no_limit)
+    np.copyto(over, math.inf, where=~has_limit)
     np.copyto(over, 0.0, where=~failing)
+    if over.shape[0] == 1:  # one rule: its overloads, each ≥ 0 (or NaN) as max() keeps it
+        only: FloatArray = over[0]
+        return only
     overload: FloatArray = over.max(axis=0, initial=0.0)
     return overload
 
