@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ctypes
 import gc
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
@@ -82,16 +83,39 @@ COMPRESSED_TYPES = ("text/csv",)
 JavaScript, plain text): the candidates as CSV."""
 
 
+_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3  # glibc's malloc.h
+MALLOC_OPTIONS = ((_M_MMAP_THRESHOLD, 32 << 20), (_M_TRIM_THRESHOLD, 64 << 20))
+"""glibc ``mallopt`` settings of a served process: ``M_MMAP_THRESHOLD`` 32 MiB (the
+largest glibc's own adjustment reaches) and ``M_TRIM_THRESHOLD`` 64 MiB. The engine's
+temporaries of a block (65,536 cells: 512 KiB each) were handed back to the kernel and
+faulted in again, page by page, numpy call after numpy call: the 10,000-case batch as
+columns with its checks spent about a tenth of its time there (in process: 176 → 153 ms
+with these settings; peak RSS unchanged). Memory above the heap's top is still handed
+back beyond 64 MiB, and arrays over 32 MiB are still mapped on their own."""
+
+
 def tune_gc() -> None:
     """Set ``GC_THRESHOLDS`` for this process; the collector stays on."""
     gc.set_threshold(*GC_THRESHOLDS)
 
 
+def tune_allocator() -> bool:
+    """Set :data:`MALLOC_OPTIONS` for this process where the C library is glibc (True);
+    elsewhere leave the allocator as it is (False)."""
+    try:
+        mallopt = ctypes.CDLL(None).mallopt
+    except (AttributeError, OSError):
+        return False
+    return all(mallopt(option, value) == 1 for option, value in MALLOC_OPTIONS)
+
+
 def serve_app() -> FastAPI:
-    """The app as ``serve`` runs it, in each worker process: the collector tuned once
-    for the process (:func:`tune_gc`), the worker bound to its supervisor's life
+    """The app as ``serve`` runs it, in each worker process: the collector and the
+    allocator tuned once for the process (:func:`tune_gc`, :func:`tune_allocator`), the
+    worker bound to its supervisor's life
     (:func:`~actuator_selection.supervision.exit_with_supervisor`), then :func:`create_app`."""
     tune_gc()
+    tune_allocator()
     exit_with_supervisor()
     return create_app()
 

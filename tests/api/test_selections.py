@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import gc
 import math
+import platform
 import random
+import sys
 from typing import Any
 
 import pytest
@@ -15,7 +17,7 @@ from sqlalchemy.orm import Session
 from tests import worked_example
 from tests.oracle.flowchart import select
 
-from actuator_selection.app import GC_THRESHOLDS, tune_gc
+from actuator_selection.app import GC_THRESHOLDS, MALLOC_OPTIONS, tune_allocator, tune_gc
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
@@ -416,6 +418,17 @@ def test_a_served_process_collects_rarely_but_never_switches_the_collector_off()
         assert gc.isenabled()
     finally:
         gc.set_threshold(*before)
+
+
+@pytest.mark.skipif(
+    not sys.platform.startswith("linux") or platform.libc_ver()[0] != "glibc",
+    reason="the allocator's options are glibc's",
+)
+def test_a_served_process_keeps_a_blocks_temporaries_in_its_heap() -> None:
+    """``serve`` sets glibc's mmap and trim thresholds (each option accepted), so that a
+    block's arrays of 512 KiB are not handed back to the kernel and faulted in again."""
+    assert dict(MALLOC_OPTIONS) == {-3: 32 << 20, -1: 64 << 20}
+    assert tune_allocator()
 
 
 def random_case(rng: random.Random) -> dict[str, Any]:
