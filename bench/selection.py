@@ -18,7 +18,7 @@ from typing import Any
 
 from fastapi.testclient import TestClient
 
-from actuator_selection.app import create_app, tune_gc
+from actuator_selection.app import create_app, tune_allocator, tune_gc
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.config import SEED_DIR, Settings
 from actuator_selection.db.engine import make_engine, make_session_factory
@@ -173,7 +173,8 @@ def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
     """
     catalogue = copied_catalogue(starter, copies)
     actuators = catalogue.actuators
-    tune_gc()  # as served (main.serve_app)
+    tune_gc()  # as served (app.serve_app): the collector's and the allocator's settings
+    tune_allocator()
     body = SelectionRequest.model_validate(http_case(random_cases(1, seed=3)[0]))
     app = body.to_core()
     size_selection(body, app, actuators, catalogue, datetime.now(UTC))  # warm the caches
