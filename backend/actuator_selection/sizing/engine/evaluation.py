@@ -346,6 +346,7 @@ def ranked_blocks(
     allowed = _allowed_columns(actuators, models) if models is not None else None
     excluded = np.int8(len(VERDICT_BY_CODE))  # a verdict code beyond every verdict
     keep = min(top, len(actuators))
+    by_position = np.argsort(cat.rank_position)  # the actuators in the static order
     for start, stop in blocks(actuators, range(cases.size)):
         rows = cases.rows(start, stop)
         block = evaluate_block(cat, rows, limits_of_zones[start:stop], rules, detail=detail)
@@ -356,12 +357,52 @@ def ranked_blocks(
             for row, mask in enumerate(allowed[start:stop]):
                 if mask is not None:
                     verdicts[row, ~mask] = excluded
-        position = np.broadcast_to(cat.rank_position, verdicts.shape)
-        order = np.lexsort((position, block.overload, verdicts), axis=-1)[:, :keep]
+        order = _best(verdicts, block.overload, cat.rank_position, by_position, keep)
         kept = np.take_along_axis(verdicts, order, axis=1) < excluded
         yield RankedBlock(
             start=start, cases=rows, block=block, verdicts=verdicts, order=order, kept=kept
         )
+
+
+_PICKED_UP_TO = 8
+"""Up to this many candidates a case, :func:`_best` picks them one by one."""
+_TAKEN = np.iinfo(np.int64).max
+_UNSUITABLE = np.int8(VERDICT_BY_CODE.index(Verdict.UNSUITABLE))
+
+
+def _best(
+    verdicts: CodeArray,
+    overload: FloatArray,
+    position: npt.NDArray[np.int32],
+    by_position: IndexArray,
+    keep: int,
+) -> IndexArray:
+    """Each row's first ``keep`` columns by verdict, worst overload, then ``position``
+    (``by_position`` its argsort): ``np.lexsort((position, overload, verdicts))[:, :keep]``.
+
+    Where few are kept, picked one by one instead: a key per cell in the static order,
+    its verdict code, an unsuitable one's overload by its bits (a float ≥ 1 or ∞: its
+    bits order as it does, above every code), a code beyond the verdicts last (in the
+    static order, where lexsort orders them by overload too: every caller drops them);
+    the first smallest (``argmin``) is the first by position. A 1,024 × 64 block, 3 kept: 0.4 ms
+    against 1.5 ms. Only there an overload is 0 but where a check fails (then ≥ 1), so an
+    overload of NaN (∞/∞) is sorted as it is."""
+    if keep > _PICKED_UP_TO or np.isnan(overload).any():
+        position_ = np.broadcast_to(position, verdicts.shape)
+        return np.lexsort((position_, overload, verdicts), axis=-1)[:, :keep]
+    codes = verdicts.take(by_position, axis=1)
+    key = codes.astype(np.int64)
+    np.copyto(key, _TAKEN - 1, where=codes > _UNSUITABLE)  # left out by a case's models
+    bits = np.broadcast_to(overload, verdicts.shape).take(by_position, axis=1)
+    np.copyto(key, bits.view(np.int64), where=codes == _UNSUITABLE)
+    rows = np.arange(key.shape[0])
+    picked = np.empty((key.shape[0], keep), dtype=np.intp)
+    for k in range(keep):
+        at = key.argmin(axis=1)
+        picked[:, k] = at
+        key[rows, at] = _TAKEN
+    best: IndexArray = by_position[picked]
+    return best
 
 
 def rules_of(apps: Sequence[Application], rules: Sequence[Rule] | None) -> Sequence[Rule]:
