@@ -32,7 +32,9 @@ DevTools' throttling shows in that CPU time too: the slowed runs' CPU is 4–7 t
 other's here, so compare CPU times within one condition. ``--baseline DIR`` serves
 another tree's ``frontend/`` (e.g. ``git archive main frontend | tar -x -C /tmp/base``)
 from a second server of this tree's code, alternates its runs with this tree's (the order
-turned each round) and reports both: an A/B of the page alone.
+turned each round) and reports both: an A/B of the page alone. With ``--baseline-backend
+DIR`` (another tree's ``backend/``, e.g. ``/work/main/backend``) that server runs that
+tree's code: an A/B of the page and the API's figures it draws.
 
 Needs Debian's Chromium (``CHROMIUM_PATH``, else ``chromium`` on the PATH, else
 ``/usr/bin/chromium``); no browser is downloaded.
@@ -243,14 +245,18 @@ uvicorn.run("actuator_selection.app:create_app", factory=True, host="127.0.0.1",
 
 
 @contextmanager
-def served(database_url: str, frontend: Path | None = None) -> Iterator[str]:
+def served(
+    database_url: str, frontend: Path | None = None, code: Path | None = None
+) -> Iterator[str]:
     """The app under uvicorn in a subprocess, its pages from ``frontend`` (default: this
-    tree's ``frontend/``); yields its base URL."""
+    tree's ``frontend/``), its code from the ``backend/`` directory ``code`` (default: this
+    tree's); yields its base URL."""
     port = free_port()
-    backend = str(Path(actuator_selection.__file__).resolve().parents[1])
+    ours = Path(actuator_selection.__file__).resolve().parents[1]
+    backend = str(code.resolve() if code is not None else ours)
     path = os.pathsep.join(p for p in (backend, os.environ.get("PYTHONPATH", "")) if p)
     env = {**os.environ, "DATABASE_URL": database_url, "PYTHONPATH": path}
-    pages = frontend or Path(backend).parent / "frontend"
+    pages = frontend or ours.parent / "frontend"
     command = [sys.executable, "-c", SERVE, str(pages.resolve()), str(port)]
     process = subprocess.Popen(command, env=env)
     url = f"http://127.0.0.1:{port}"
@@ -375,6 +381,12 @@ def main() -> None:
         help="another tree's frontend/ directory (A/B): served by a second server of this "
         "tree's code, its runs alternate with this tree's, and both are reported",
     )
+    parser.add_argument(
+        "--baseline-backend",
+        type=Path,
+        help="with --baseline: the baseline's server runs this backend/ directory's code "
+        "(another tree's), not this tree's",
+    )
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="bench-page-") as tmp, ExitStack() as stack:
         trees = (
@@ -386,7 +398,8 @@ def main() -> None:
         for n, (name, frontend) in enumerate(trees.items()):
             directory = Path(tmp) / str(n)
             directory.mkdir()
-            sites[name] = stack.enter_context(served(seeded_database(directory), frontend))
+            code = args.baseline_backend if frontend is not None else None
+            sites[name] = stack.enter_context(served(seeded_database(directory), frontend, code))
         p = stack.enter_context(sync_playwright())
         url, raw, packed = plotly_size(next(iter(sites.values())))
         print(f"plotly.js {url}: {raw / 1e6:.2f} MB raw, {packed / 1e6:.2f} MB gzip")
