@@ -69,6 +69,15 @@ def test_without_a_zone_the_checks_rectangle_up_to_the_rated_speed() -> None:
     assert rectangle["y"] == [0, 3.1, 3.1, 0, 0]
     assert rectangle["x"] == [0, 0, 40, 40, 0]
     assert "and allowable continuous speed" in rectangle["name"]
+    # its value as a text label just below the zone's edge, not an annotation (plotly.js
+    # draws those twice on a chart's first draw)
+    label = _by_uid(figure)["zone-label"]
+    assert label["mode"] == "text"
+    assert label["showlegend"] is False
+    assert label["x"] == [30]
+    assert label["y"] == [2.9]
+    assert label["text"] == ["≈ zul. Dauerdrehmoment = 2,9 Nm (näherungsweise)"]
+    assert figure["layout"]["annotations"] == []
 
 
 def test_no_zone_says_no_data_and_no_catalogue_draws_no_limits() -> None:
@@ -144,7 +153,7 @@ def test_the_cycle_is_the_chapters_trapezoid_with_the_answers_torques(
     candidate = stored.candidates[0]
     figure = cycle_figure(stored, candidate, DE)
     traces = _by_uid(figure)
-    assert list(traces) == ["cycle-speed", "cycle-torque", "cycle-rms"]
+    assert list(traces) == ["cycle-speed", "cycle-torque", "cycle-rms", "cycle-phases"]
     assert traces["cycle-speed"]["x"] == [0.0, 0.1, 0.2, 0.30000000000000004, 1.3]
     assert traces["cycle-speed"]["y"] == [0.0, 40, 40, 0.0, 0.0]
     torque = traces["cycle-torque"]["y"]
@@ -163,12 +172,22 @@ def test_the_cycle_is_the_chapters_trapezoid_with_the_answers_torques(
     assert layout["separators"] == ",."
     assert layout["xaxis"]["title"]["text"] == "Zeit t [s]"
     assert layout["yaxis"]["domain"][0] > layout["yaxis2"]["domain"][1]  # speed above
-    assert [a["text"] for a in layout["annotations"][-4:]] == [
-        "t<sub>1</sub>",
-        "t<sub>2</sub>",
-        "t<sub>3</sub>",
-        "t<sub>p</sub>",
+    # the phases named above the speed panel: text, drawn once (plotly.js draws an
+    # annotation twice on a chart's first draw); the steps' T_1, T_2, T_3 annotations
+    assert [a["text"] for a in layout["annotations"]] == [
+        "T<sub>1</sub>",
+        "T<sub>2</sub>",
+        "T<sub>3</sub>",
     ]
+    phases = traces["cycle-phases"]
+    assert phases["text"] == ["t<sub>1</sub>", "t<sub>2</sub>", "t<sub>3</sub>", "t<sub>p</sub>"]
+    assert phases["y"] == [layout["yaxis"]["range"][1]] * 4  # the speed panel's top
+    # each panel's range given (no autorange to run when drawn), holding what it draws
+    assert layout["yaxis"]["range"][0] == 0
+    assert layout["yaxis"]["range"][1] > 40
+    low, high = layout["yaxis2"]["range"]
+    assert low < candidate.decel_torque_nm
+    assert high > candidate.accel_torque_nm
     # a candidate without torques (no J_A): the speed, and a note why there is no torque
     bare = candidate.model_copy(
         update={
@@ -179,7 +198,7 @@ def test_the_cycle_is_the_chapters_trapezoid_with_the_answers_torques(
         }
     )
     empty = cycle_figure(stored, bare, DE)
-    assert list(_by_uid(empty)) == ["cycle-speed"]
+    assert list(_by_uid(empty)) == ["cycle-speed", "cycle-phases"]
     assert empty["layout"]["meta"] == {"torques": "none"}
     assert any("keine Daten" in a["text"] for a in empty["layout"]["annotations"])
 
@@ -197,6 +216,10 @@ def test_the_served_cycle_carries_the_torque_along_each_segment(client: TestClie
     assert served.headers["content-language"] == "de"
     figure = served.json()
     assert figure["layout"]["meta"] == {"torques": "segments"}
+    # drawn in one pass: no annotation (plotly.js draws each twice on a chart's first draw,
+    # once to measure it for the autorange) and no axis left to autorange
+    assert figure["layout"]["annotations"] == []
+    assert all(len(figure["layout"][axis]["range"]) == 2 for axis in ("xaxis", "yaxis", "yaxis2"))
     detail = client.get(f"/api/v1/selections/{ident}/candidates/FHA-25C-50-L").json()
     torque = _by_uid(figure)["cycle-torque"]
     assert torque["x"] == [x for s in detail["segment_torques"] for x in s["times_s"]]

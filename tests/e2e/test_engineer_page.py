@@ -54,9 +54,15 @@ TRACES_JS = """id => {
     y: Array.from(t.y ?? [], Number),
   }));
 }"""
-ANNOTATIONS_JS = (
-    """id => (document.getElementById(id).layout.annotations || []).map(a => String(a.text))"""
-)
+# the texts written on the plot: its annotations, and its traces of text (the phases' and
+# steps' labels, the approximate zone's value: text traces, which plotly.js draws once)
+ANNOTATIONS_JS = """id => {
+  const gd = document.getElementById(id);
+  return [
+    ...(gd.layout.annotations || []).map(a => String(a.text)),
+    ...(gd.data || []).filter(t => t.mode === "text").flatMap(t => Array.from(t.text, String)),
+  ];
+}"""
 
 
 def shown(text: str) -> float:
@@ -138,6 +144,7 @@ def traces(page: Page, chart_id: str) -> dict[str, dict[str, Any]]:
 
 
 def plot_annotations(page: Page, chart_id: str) -> list[str]:
+    """The texts written on the chart's plot (annotations and labels)."""
     return cast(list[str], page.evaluate(ANNOTATIONS_JS, chart_id))
 
 

@@ -4,7 +4,8 @@ once for the page, the quote document and the selection report.
 :func:`cycle_figure` gives the cycle as a plotly figure of two panels sharing the time
 axis: the speed n(t) above, the torque T(t) below (``GET
 /selections/{id}/candidates/{model}/cycle``; the report PDF draws it with its own lines).
-Its trace uids: "cycle-speed", "cycle-torque", "cycle-rms"; ``layout.meta.torques`` says
+Its trace uids: "cycle-speed", "cycle-torque", "cycle-rms", and "cycle-phases" (text, no
+legend: t_1 … t_p or the segments' numbers above the speed panel); ``layout.meta.torques`` says
 what the torque panel holds ("segments": the torque along each segment, "steps": the
 chapter's T_1, T_2, T_3, "none": a note why not).
 
@@ -17,7 +18,8 @@ catalogue entry; the only shapes laid through them are the chapter's (the rectan
 approximate zone).
 
 Trace uids name what a trace is, so that tests and readers can find it: "zone" |
-"zone-approx", "t-max", "n-max", "operating-point", "peak-accel", "peak-decel".
+"zone-approx", "zone-label" (the approximate zone's value, text), "t-max", "n-max",
+"operating-point", "peak-accel", "peak-decel".
 
 :func:`ratio_figure` gives the ratio study's chart (``POST /selections/ratio-study`` with
 ``figure=true``): for each actuator that carries its curve (the best ones), the binding
@@ -187,6 +189,7 @@ def diagram_figure(
 
     zone = _zone_points(actuator)
     approx = approximate_zone(actuator, t)
+    labels: list[tuple[float, float, str, str]] = []
     if len(zone) >= 2:
         (first_speed, _), (last_speed, _) = zone[0], zone[-1]
         data.append(
@@ -226,20 +229,10 @@ def diagram_figure(
         xs.append(speed)
         ys.append(torque)
         layout["meta"] = {"zone": "approximate", **approx}
-        layout["annotations"].append(
-            {
-                "x": speed / 2,
-                "y": torque,
-                "xref": "x",
-                "yref": "y",
-                "yanchor": "top",
-                "text": _sym(
-                    f"≈ {approx['what']} = {t.number(torque, number)} Nm ({t('fig_approximate')})"
-                ),
-                "showarrow": False,
-                "font": {"size": 11, "color": COLORS["zone_line"]},
-            }
-        )
+        zone_label = f"≈ {approx['what']} = {t.number(torque, number)} Nm ({t('fig_approximate')})"
+        # below the zone's upper edge, halfway along it (where the edge falls with speed)
+        edge = max(torque - approx["slope"] * speed / 2, 0.0)
+        labels.append((speed / 2, edge, zone_label, "bottom center"))
     else:
         # above the plot area, where it can never hide a point; two lines without the
         # catalogue, so that the box fits a narrow chart
@@ -322,6 +315,8 @@ def diagram_figure(
             }
         )
 
+    if labels:
+        data.append(_labels("zone-label", labels, color=COLORS["zone_line"]))
     if trms is not None and n_av is not None:
         point("operating-point", t("point_rms"), n_av, trms, "continuous_duty", "circle")
     if t1 is not None and n2 is not None:
@@ -343,6 +338,50 @@ def _base_layout(t: DocumentText) -> dict[str, Any]:
         "hovermode": "closest",
         "annotations": [],
         "shapes": [],
+    }
+
+
+LINE_PAD = 0.06
+"""Room beyond the lines of a panel whose range is given, a share of the values' span (plotly.js's
+autorange leaves 5 % of the axis's length to a line)."""
+LABEL_PAD = 0.25
+"""The same where the panel's highest and lowest values have a label above or below them (T_1
+and T_3 of the cycle's steps, 10 px off their line)."""
+
+
+def _panel_range(values: Sequence[float], pad: float) -> list[float]:
+    """A panel's range from 0 and ``values``, ``pad`` × their span beyond any end that is not 0
+    (a panel of speeds or torques starts at 0, as plotly.js's ``rangemode`` "tozero")."""
+    finite = [v for v in (_num(x) for x in values) if v is not None]
+    low, high = min([0.0, *finite]), max([0.0, *finite])
+    if not high > low:
+        return [0.0, 1.0]
+    span = high - low
+    return [low - pad * span if low < 0 else 0.0, high + pad * span if high > 0 else 0.0]
+
+
+def _labels(
+    uid: str, at: Sequence[tuple[float, float, str, str]], *, color: str = "#555"
+) -> dict[str, Any]:
+    """Short labels on the plot as one trace of text (plotly's ``mode`` "text"), each at
+    (x, y, text, position): drawn once and not measured, where plotly.js draws an
+    annotation twice when it first draws a chart, the first time to measure it for the
+    autorange. Not in the legend, no hover; the PDFs leave them out."""
+    return {
+        "uid": uid,
+        "name": "",
+        "type": "scatter",
+        "mode": "text",
+        "x": [x for x, _, _, _ in at],
+        "y": [y for _, y, _, _ in at],
+        "text": [_sym(text) for _, _, text, _ in at],
+        "textposition": [position for _, _, _, position in at],
+        "textfont": {"size": 11, "color": color},
+        "xaxis": "x",
+        "yaxis": "y",
+        "cliponaxis": False,
+        "showlegend": False,
+        "hoverinfo": "skip",
     }
 
 
@@ -451,7 +490,8 @@ def cycle_figure(
             )
         )
 
-        # short labels centred on their phase; the values are in hover and caption
+        # short labels centred on their phase, 10 px off the step (annotations: plotly.js's
+        # text traces cannot be shifted by pixels); the values are in hover and caption
         def label(x: float, y: float, symbol: str, yshift: int) -> dict[str, Any]:
             return {
                 "x": x,
@@ -497,25 +537,26 @@ def cycle_figure(
                 "font": {"size": 14, "color": COLORS["fail"]},
             }
         )
-    if drawn == "none":
-        layout["yaxis2"]["range"] = [-1, 1]
+    # each panel's range given here, so that plotly.js draws the figure without its
+    # autorange (which first draws the annotations to measure them); the PDF uses it too
+    layout["yaxis"]["range"] = _panel_range(speed_y, LINE_PAD)
+    torque_values = [y for trace in data[1:] for y in trace["y"]]
+    layout["yaxis2"]["range"] = (
+        _panel_range(torque_values, LABEL_PAD if drawn == "steps" else LINE_PAD)
+        if drawn != "none"
+        else [-1, 1]
+    )
     layout["meta"] = {"torques": drawn}
 
     # the phases (t_1 … t_p) or segments (1 … n) named above the speed panel, split by lines
-    for symbol, start, stop in bounds:
-        if stop > start:
-            layout["annotations"].append(
-                {
-                    "x": (start + stop) / 2,
-                    "y": 1,
-                    "xref": "x",
-                    "yref": "paper",
-                    "yanchor": "bottom",
-                    "text": _sym(symbol),
-                    "showarrow": False,
-                    "font": {"size": 11, "color": "#555"},
-                }
-            )
+    top = layout["yaxis"]["range"][1]
+    phases = [
+        ((start + stop) / 2, top, symbol, "top center")
+        for symbol, start, stop in bounds
+        if stop > start
+    ]
+    if phases:
+        data.append(_labels("cycle-phases", phases))
     for _, _, stop in bounds[:-1]:
         layout["shapes"].append(
             {

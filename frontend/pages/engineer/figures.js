@@ -127,7 +127,7 @@ export function fitFigure(figure, { narrow = false, height = undefined } = {}) {
  * the API's, two tick labels an axis): it takes plotly.js's first-use costs, and as
  * plotly.js measures each text in the page (a layout each), no more texts than it takes
  * to run that code once. The second has the rest (two panels of lines, a filled area,
- * markers, a shape and annotations).
+ * markers, a shape and labels as text, as the API's figures label their phases).
  */
 export const WARM_FIGURES = [
   {
@@ -145,13 +145,24 @@ export const WARM_FIGURES = [
       { type: "scatter", mode: "lines", x: [0, 1, 2], y: [0, 1, 0], fill: "toself", yaxis: "y" },
       { type: "scatter", mode: "lines", x: [0, 1, 2], y: [1, -1, 0], line: { dash: "dash" }, yaxis: "y2" },
       { type: "scatter", mode: "markers", x: [1], y: [0.5], marker: { symbol: "triangle-up" }, yaxis: "y" },
+      {
+        type: "scatter",
+        mode: "text",
+        x: [1],
+        y: [1],
+        text: ["t<sub>1</sub>"],
+        textposition: ["top center"],
+        cliponaxis: false,
+        showlegend: false,
+        hoverinfo: "skip",
+        yaxis: "y",
+      },
     ],
     layout: {
       xaxis: { anchor: "y2" },
       yaxis: { domain: [0.58, 1], anchor: "x" },
       yaxis2: { domain: [0, 0.46], anchor: "x" },
       shapes: [{ type: "line", xref: "x", yref: "paper", x0: 1, x1: 1, y0: 0, y1: 1 }],
-      annotations: [{ x: 1, y: 1, xref: "x", yref: "paper", text: "T<sub>1</sub>", showarrow: false }],
     },
   },
 ];
