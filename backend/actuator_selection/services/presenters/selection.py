@@ -11,6 +11,7 @@ selection cost more than the engineering.
 from __future__ import annotations
 
 import math
+import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from datetime import datetime
@@ -568,6 +569,18 @@ def verdict_counts(codes: npt.NDArray[np.integer[Any]]) -> dict[str, int]:
 RANKING_COMPRESSION = 1
 """zstd level of the stored rest of a ranking (:func:`ranking_rest`)."""
 
+_COMPRESSORS = threading.local()
+"""Each thread's zstd compressor of rests (:func:`ranking_rest`), made once: not shared
+between threads; a new one per selection cost 0.13 M instructions of 14.9 M."""
+
+
+def _rest_compressor() -> zstandard.ZstdCompressor:
+    found: zstandard.ZstdCompressor | None = getattr(_COMPRESSORS, "zstd", None)
+    if found is None:
+        found = _COMPRESSORS.zstd = zstandard.ZstdCompressor(level=RANKING_COMPRESSION)
+    return found
+
+
 RANKING_MAGIC = b"RNK1"
 """The first bytes of a stored rest of a ranking in columns (:func:`ranking_rest`); a rest
 upgraded from an answer that listed every candidate (migration 0018) is JSON."""
@@ -617,7 +630,7 @@ def ranking_rest(
     written = orjson.dumps(header)
     parts = [RANKING_MAGIC, len(written).to_bytes(4, "little"), written]
     parts += [np.ascontiguousarray(a).tobytes() for a in arrays.values()]
-    return zstandard.ZstdCompressor(level=RANKING_COMPRESSION).compress(b"".join(parts))
+    return _rest_compressor().compress(b"".join(parts))
 
 
 def ranked_candidates(stored: bytes, start: int, stop: int) -> list[JSON]:
