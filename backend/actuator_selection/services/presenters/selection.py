@@ -181,21 +181,15 @@ class RankedChecks:
             ]
             for status, value, limit in zip(statuses, values, limits, strict=True)
         ]
-        approximate, missing = self.approximate[start:stop], self.first_missing[start:stop]
-        if missing.size <= _LISTED_UP_TO:  # a few candidates' checks: read in Python
-            for row, flags, firsts in zip(
-                rows, approximate.tolist(), missing.tolist(), strict=True
-            ):
-                for k, (flag, first) in enumerate(zip(flags, firsts, strict=True)):
-                    if flag:
-                        row[k]["approximate"] = True
-                    if first >= 0:
-                        row[k]["missing"] = self.missing_what[k][first]
-            return rows
-        for j, k in zip(*np.nonzero(approximate), strict=True):
+        # The flags where they are set: fewer than the checks, whatever their number.
+        places = np.nonzero(self.approximate[start:stop])
+        for j, k in zip(*(p.tolist() for p in places), strict=True):
             rows[j][k]["approximate"] = True
-        for j, k in zip(*np.nonzero(missing >= 0), strict=True):
-            rows[j][k]["missing"] = self.missing_what[k][missing[j, k]]
+        missing = self.first_missing[start:stop]
+        found = missing >= 0
+        places = np.nonzero(found)
+        for j, k, first in zip(*(p.tolist() for p in places), missing[found].tolist(), strict=True):
+            rows[j][k]["missing"] = self.missing_what[k][first]
         return rows
 
 
