@@ -35,7 +35,6 @@ from actuator_selection.services.catalogue import CatalogueSnapshot
 from actuator_selection.sizing.axis import AxisLoad
 from actuator_selection.sizing.checks import Check, Rule
 from actuator_selection.sizing.drive import shared_voltage_checks
-from actuator_selection.sizing.electrical import DcBusClass
 from actuator_selection.sizing.engine import (
     STATUS_BY_CODE,
     VERDICT_BY_CODE,
@@ -270,25 +269,18 @@ class DriveOptionGroups:
 
     def groups(self, actuator: Actuator, speed_rpm: float) -> list[JSON]:
         """``actuator``'s drive options at n_2 = ``speed_rpm``, best first."""
-        interface = self._catalogue.interfaces[actuator.model]
-        match_groups = self._catalogue.match_groups(interface)
-        shared = list(dict.fromkeys(g.shared for g in match_groups))
+        interface, match_groups, shared, where = self._catalogue.drive_groups(actuator.model)
         checks = shared_voltage_checks(
             actuator=actuator, interface=interface, shared=shared, speed_rpm=speed_rpm, words=False
         )
-        voltages: dict[tuple[DcBusClass, ...], JSON] = {
-            classes: {
-                "status": v.status.value,
-                "value": v.value,
-                "limit": v.limit,
-                "reference": v.reference,
-            }
-            for classes, v in zip(shared, checks, strict=True)
-        }
+        voltages = [
+            {"status": v.status.value, "value": v.value, "limit": v.limit, "reference": v.reference}
+            for v in checks
+        ]
         merged: dict[tuple[Any, ...], JSON] = {}
         places: dict[tuple[Any, ...], tuple[tuple[int, int], ...]] = {}
-        for g in match_groups:
-            voltage = voltages[g.shared]
+        for g, at in zip(match_groups, where, strict=True):
+            voltage = voltages[at]
             key = (g.level, g.missing, *voltage.values())
             if key not in merged:
                 merged[key] = {"level": g.level, "missing": list(g.missing), "voltage": voltage}
