@@ -159,13 +159,16 @@ async def create_batch_job(
     )
 
     def store() -> dict[str, Any]:
+        # The answer is the job as committed, read before it is queued: once queued, a
+        # worker (in this process on SQLite) may already have started it, and a 202
+        # reading it back raced that worker ("running" in one CI run).
         with factory.begin() as session:
             begin_write(session)
             job = jobs.create_job(session, intake, options, version)
             job_id, chunks = job.id, job.chunks
+            body = jobs.job_body(session, job)
         request.app.state.job_queue.enqueue(job_id, chunks)
-        with read_transaction(request) as session:
-            return jobs.job_body(session, jobs.get_job(session, job_id))
+        return body
 
     body = await anyio.to_thread.run_sync(store)
     location = route_path(request, "get_batch_job", job_id=body["id"])
