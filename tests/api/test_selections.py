@@ -6,7 +6,9 @@ import gc
 import math
 import platform
 import random
+import subprocess
 import sys
+import textwrap
 from typing import Any
 
 import pytest
@@ -17,7 +19,7 @@ from sqlalchemy.orm import Session
 from tests import worked_example
 from tests.oracle.flowchart import select
 
-from actuator_selection.app import GC_THRESHOLDS, MALLOC_OPTIONS, tune_allocator, tune_gc
+from actuator_selection.app import GC_THRESHOLDS, tune_gc
 from actuator_selection.db.repositories import CatalogueRepository
 from actuator_selection.schemas.selections import SelectionOut, SelectionRequest
 from actuator_selection.services.catalogue import CatalogueSnapshot
@@ -424,11 +426,53 @@ def test_a_served_process_collects_rarely_but_never_switches_the_collector_off()
     not sys.platform.startswith("linux") or platform.libc_ver()[0] != "glibc",
     reason="the allocator's options are glibc's",
 )
-def test_a_served_process_keeps_a_blocks_temporaries_in_its_heap() -> None:
-    """``serve`` sets glibc's mmap and trim thresholds (each option accepted), so that a
-    block's arrays of 512 KiB are not handed back to the kernel and faulted in again."""
-    assert dict(MALLOC_OPTIONS) == {-3: 32 << 20, -1: 64 << 20}
-    assert tune_allocator()
+def test_a_served_process_keeps_a_blocks_temporaries_and_hands_back_the_rest() -> None:
+    """With ``serve``'s allocator options (:func:`tune_allocator`), a block's arrays of
+    512 KiB are reused from the heap, not faulted in again block after block, and 40 MiB
+    freed at once go back to the kernel. Measured in a process of its own, before and
+    after the options: untuned, the blocks fault; with a 64 MiB trim threshold, the 40 MiB
+    stay resident."""
+    probe = textwrap.dedent(
+        """
+        import resource, sys
+        import numpy as np
+        from actuator_selection.app import tune_allocator
+
+        def resident():
+            return int(open("/proc/self/statm").read().split()[1]) * 4096
+
+        if sys.argv[1] == "tuned":
+            assert tune_allocator()
+
+        def block():  # eight temporaries of 65,536 cells
+            arrays = [np.ones(65_536) for _ in range(8)]
+            return sum(float(a[-1]) for a in arrays)
+
+        block()
+        faults = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
+        for _ in range(20):
+            block()
+        faults = resource.getrusage(resource.RUSAGE_SELF).ru_minflt - faults
+        before = resident()
+        freed = [np.ones(65_536) for _ in range(80)]
+        held = resident() - before
+        del freed
+        print(faults, held >> 20, (resident() - before) >> 20)
+        """
+    )
+
+    def run(mode: str) -> tuple[int, int, int]:
+        done = subprocess.run(
+            [sys.executable, "-c", probe, mode], capture_output=True, text=True, check=True
+        )
+        faults, held, kept = map(int, done.stdout.split())
+        return faults, held, kept
+
+    untuned, tuned = run("untuned"), run("tuned")
+    assert untuned[0] > 20 * 8  # a fault or more per temporary: the probe can tell
+    assert tuned[0] < untuned[0] / 100
+    assert tuned[1] >= 32  # the 40 MiB were resident …
+    assert tuned[2] < 8  # … and were handed back
 
 
 def random_case(rng: random.Random) -> dict[str, Any]:
