@@ -40,6 +40,7 @@ from actuator_selection.catalogue.files import ACTUATORS, CATALOGUE_SPECS, FAMIL
 from actuator_selection.config import REPO_ROOT
 from actuator_selection.db.engine import make_engine, make_session_factory
 from actuator_selection.db.sales import ApiKeyRepository
+from bench import targets
 from bench.batch import synthetic_catalogue
 from bench.http import WORKED_EXAMPLE, _peak_rss_mb, _postgres_database, _serve
 from bench.selection import starter_catalogue
@@ -198,6 +199,11 @@ def measure(n: int, url: str, folder: Path) -> None:
             f"  server RSS {rss_before:.0f} → {rss_after:.0f} MB, peak {peak:.0f} MB; "
             f"{(rss_after - rss_before) * 1e6 / n:.0f} bytes per actuator"
         )
+        if n == 64_000:
+            print(
+                f"  reload after a change: {targets.RELOAD_64000.verdict(reload_s)}; "
+                f"peak RSS: {targets.PEAK_RSS_64000.verdict(peak)}"
+            )
     finally:
         process.terminate()
         process.wait(30)

@@ -47,6 +47,7 @@ from actuator_selection.app import GZIP_LEVEL, ZSTD_LEVEL
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.config import REPO_ROOT
 from actuator_selection.db.engine import normalise_url
+from bench import targets
 from bench.reference import disagreements, numpy_reference, snapshot_actuators
 from bench.selection import http_case, http_columns, random_cases, starter_catalogue
 
@@ -175,6 +176,8 @@ def _batch(
     else:
         service = [[c["model"] for c in r["candidates"]] for r in answer["results"]]
     differ = disagreements(actuators, numpy_reference(actuators, apps, 3), service)
+    ratio = elapsed / reference_s
+    verdict = f"; {targets.BATCH_COLUMNS.verdict(ratio)}" if columns and checks else ""
     print(
         f"  POST {path}, {n} cases, checks {'yes' if checks else 'no '}  "
         f"{elapsed:6.2f} s  HTTP {response.status_code}  answer "
@@ -182,7 +185,7 @@ def _batch(
         f"{_peak_rss_mb(pid):.0f} MB\n"
         f"    numpy reference {reference_s * 1e3:6.1f} ms "
         f"(top 3 differs in {differ} of {n} cases): "
-        f"the request takes {elapsed / reference_s:4.1f}× the reference"
+        f"the request takes {ratio:4.1f}× the reference{verdict}"
     )
     if not columns:
         coding = response.headers.get("content-encoding")
@@ -251,10 +254,13 @@ def batch_server_cpu(
                     f"server CPU {cpu:6.2f} s, reference CPU {reference * 1e3:5.0f} ms: "
                     f"{cpu / reference:5.1f}×; top {top} differs in {differ} of {n} cases"
                 )
-    for name, measured in ratios.items():
+    for (name, options), measured in zip(variants, ratios.values(), strict=True):
+        median = statistics.median(measured)
+        target = targets.BATCH_PER_CASE if options == {"include_checks": True} else None
         print(
             f"  {name:<25} server CPU × the reference's: {min(measured):.1f}–"
-            f"{max(measured):.1f} (median {statistics.median(measured):.1f})"
+            f"{max(measured):.1f} (median {median:.1f})"
+            + (f"; {target.verdict(median)}" if target else "")
         )
 
 
@@ -348,17 +354,18 @@ def main() -> None:
                 f"{make_url(url).get_backend_name()}, {args.workers} worker(s), "
                 f"{args.clients} clients, {args.seconds:g} s each in {args.rounds} rounds"
             )
-            cases = [
-                ("GET /health", "GET", "/api/v1/health", None),
+            # Each endpoint with the target of its requests per second ÷ /health's.
+            cases: list[tuple[str, str, str, dict[str, Any] | None, targets.Target | None]] = [
+                ("GET /health", "GET", "/api/v1/health", None, None),
                 ("POST /selections, one model", "POST", "/api/v1/selections",
-                 {**WORKED_EXAMPLE, "models": ["FHA-25C-50-L"]}),
+                 {**WORKED_EXAMPLE, "models": ["FHA-25C-50-L"]}, targets.ONE_MODEL),
                 ("POST /selections, whole catalogue", "POST", "/api/v1/selections",
-                 WORKED_EXAMPLE),
+                 WORKED_EXAMPLE, targets.WHOLE_CATALOGUE),
             ]  # fmt: skip
             stored = httpx.post(f"{base}/api/v1/selections", json=WORKED_EXAMPLE).json()["id"]
             cases.append(("GET /selections/{id}, whole catalogue", "GET",
-                          f"/api/v1/selections/{stored}", None))  # fmt: skip
-            for _, method, path, body in cases:  # warm up: routes built, caches filled
+                          f"/api/v1/selections/{stored}", None, None))  # fmt: skip
+            for _, method, path, body, _ in cases:  # warm up: routes built, caches filled
                 _load(base, method, path, body, clients=4, seconds=1.0)
             # Rounds, each endpoint in turn within each: a change in the machine's load
             # (it is shared) then shifts every endpoint of a round alike, and the median
@@ -366,7 +373,7 @@ def main() -> None:
             window = args.seconds / args.rounds
             runs: dict[str, list[tuple[float, float, Counter[str], int]]] = {}
             for _ in range(args.rounds):
-                for name, method, path, body in cases:
+                for name, method, path, body, _ in cases:
                     cpu = _cpu_s(process.pid)
                     rate, failures, size = _load(
                         base, method, path, body, clients=args.clients, seconds=window
@@ -375,11 +382,12 @@ def main() -> None:
                     runs.setdefault(name, []).append((rate, cpu_ms, failures, size))
             health = [rate for rate, _, _, _ in runs[cases[0][0]]]
             health_cpu = statistics.median(c for _, c, _, _ in runs[cases[0][0]])
-            for name, measured in runs.items():
+            for (name, *_, target), measured in zip(cases, runs.values(), strict=True):
                 rates = [rate for rate, _, _, _ in measured]
                 ratios = [rate / h for rate, h in zip(rates, health, strict=True)]
                 cpu_ms = statistics.median(c for _, c, _, _ in measured)
                 failures = sum((f for _, _, f, _ in measured), Counter())
+                verdict = f"; {target.verdict(statistics.median(ratios))}" if target else ""
                 # The CPU ratio leaves out the clients, which share the machine and spend
                 # more on a larger answer (its gzip and JSON).
                 print(
@@ -387,7 +395,7 @@ def main() -> None:
                     f"{statistics.median(ratios):5.2f}× /health (rounds "
                     f"{' '.join(f'{r:.2f}' for r in ratios)})  server CPU "
                     f"{cpu_ms:5.2f} ms/req ({health_cpu / cpu_ms:4.2f}× /health's)  answer "
-                    f"{measured[0][3] / 1024:6.1f} KiB  non-2xx {dict(failures) or 0}"
+                    f"{measured[0][3] / 1024:6.1f} KiB  non-2xx {dict(failures) or 0}{verdict}"
                 )
             print(f"  stored selection row (answer gzip + request): "
                   f"{_stored_row_bytes(url) / 1024:.1f} KiB on average")  # fmt: skip

@@ -31,6 +31,7 @@ from actuator_selection.services.presenters.selection import DEFAULT_TOP
 from actuator_selection.services.selections import size_selection
 from actuator_selection.sizing.cycle import Load, SpeedPattern
 from actuator_selection.sizing.selection import Application, select
+from bench import targets
 from bench.reference import numpy_reference
 
 
@@ -187,12 +188,14 @@ def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
         numpy_reference(actuators, [app], DEFAULT_TOP)
         reference.append(time.perf_counter() - started)
     stored = len(sized.ranking or b"")
+    target = {100: targets.SELECTION_6400, 1000: targets.SELECTION_64000}.get(copies)
     print(
         f"one selection over {len(actuators)} actuators (server side, no DB/HTTP): "
         f"{min(times) * 1e3:.1f} ms (best of 5), numpy reference {min(reference) * 1e3:.1f} ms: "
         f"{min(times) / min(reference):.1f}× the reference; answer (top {DEFAULT_TOP}) "
         f"{len(sized.answer) / 1e6:.2f} MB, {len(sized.answer_gzip) / 1e3:.0f} kB gzip; the "
         f"rest of the ranking stored {stored / 1e3:.0f} kB"
+        + (f"; {target.verdict(min(times) * 1e3)}" if target else "")
     )
 
 
