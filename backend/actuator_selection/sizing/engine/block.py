@@ -88,6 +88,11 @@ _BLOCK_CELLS = 1 << 16
 """Cases × actuators evaluated per block: the block's arrays stay in the CPU cache,
 and memory stays bounded whatever the number of cases."""
 
+_EACH_END_CELLS = 4096
+"""Cells (cases × actuators) from which :func:`_extremes` takes a group's piece ends one
+at a time rather than by ``argmax`` over them: about where the two cost the same (50
+cases × 64 actuators × 4 ends: 227 µs against 207 µs)."""
+
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Block:
@@ -191,9 +196,16 @@ def _extremes(
     ``ends`` (cases × ends × actuators, in the pieces' order) where ``counts``
     (extremes × cases × ends × 1: a driving, a steady, a braking piece's end): the signed
     torque of largest magnitude, the first one on a tie (``argmax``; a NaN counts for
-    none), for every extreme at once."""
-    if ends.shape[1] == 1:  # one end a case (a piece of constant α: a trapezoid's)
-        return _extremes_of_one(found, found_abs, ends[:, 0], counts[:, :, 0, 0])
+    none), for every extreme at once. Where each end has :data:`_EACH_END_CELLS` cells
+    or more, the ends are taken one after the other instead (:func:`_extremes_of_one`;
+    a later end replaces an extreme only where its magnitude is larger, so the first of
+    equals stays, as ``argmax`` keeps it): the same values, in half the time for a
+    block of 200 cases × 64 actuators × 4 ends, and a third more for 1 case."""
+    if ends.shape[1] == 1 or ends[:, 0].size >= _EACH_END_CELLS:
+        for j in range(ends.shape[1]):  # one end a case at a time
+            found, found_abs = _extremes_of_one(found, found_abs, ends[:, j], counts[:, :, j, 0])
+        assert found is not None, "a group has an end"
+        return found, found_abs
     # |T| where counted, else −1 (a NaN too): two ufuncs over the broadcast shape, where
     # np.where's broadcasting of a scalar took its slow path (the same values)
     magnitude = np.fmax(np.abs(ends), -1.0)
