@@ -9,7 +9,6 @@ from contextlib import asynccontextmanager
 from types import ModuleType
 
 from fastapi import Depends, FastAPI
-from fastapi.staticfiles import StaticFiles
 from fastapi_offline import FastAPIOffline
 from starlette_compress import CompressMiddleware, add_compress_type
 
@@ -228,7 +227,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     if settings.cors_origins():
         app.add_middleware(methods.PreflightForListedOrigins, origins=settings.cors_origins())
     if FRONTEND_DIR.is_dir():
-        app.mount("/", StaticFiles(directory=FRONTEND_DIR, html=True), name="frontend")
+        app.mount("/", static.FrontendFiles(directory=FRONTEND_DIR, html=True), name="frontend")
     security_headers.install(app, docs_paths=DOCS_PATHS)
     openapi.install(app)  # one error schema, security, examples (see http/openapi.py)
     return app
