@@ -362,6 +362,9 @@ def main() -> None:
                 ("POST /selections, whole catalogue", "POST", "/api/v1/selections",
                  WORKED_EXAMPLE, targets.WHOLE_CATALOGUE),
             ]  # fmt: skip
+            # a file of the page (a cold load of the engineer's page asks for 21 of them)
+            cases.append(("GET a page file, /pages/engineer/app.js", "GET",
+                          "/pages/engineer/app.js", None, None))  # fmt: skip
             stored = httpx.post(f"{base}/api/v1/selections", json=WORKED_EXAMPLE).json()["id"]
             cases.append(("GET /selections/{id}, whole catalogue", "GET",
                           f"/api/v1/selections/{stored}", None, None))  # fmt: skip
