@@ -154,6 +154,7 @@ def test_each_page_file_is_served_as_on_disk_in_each_coding(tmp_path: Path) -> N
                 assert _decoded(wire, used) == raw, (name, coding)
                 if used is not None:
                     assert headers["vary"] == "Accept-Encoding"
+                assert "accept-ranges" not in headers, name  # whole files, no ranges
                 if coding in sent:
                     sent[coding] += len(wire)
                 etags.add(headers["etag"])

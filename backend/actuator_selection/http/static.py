@@ -209,11 +209,16 @@ class FrontendFiles(StaticFiles):
         return Response(held.forms[coding], headers=headers)
 
 
+_NOT_HELD = frozenset({"content-length", "accept-ranges"})
+"""``FileResponse``'s headers a held file's answer does not take: its length is its form's."""
+
+
 def _held(found: FileResponse) -> _Held | None:
     """The file ``StaticFiles`` found, read and compressed; None where it changed meanwhile
     (then served as ``StaticFiles`` serves it, and held at a later request)."""
     assert found.stat_result is not None
-    headers = {k: v for k, v in found.headers.items() if k != "content-length"}
+    # whole files only: no ranges offered (a Range asked for is answered with the whole)
+    headers = {k: v for k, v in found.headers.items() if k not in _NOT_HELD}
     try:
         with open(found.path, "rb") as file:
             raw, now = file.read(), os.fstat(file.fileno())
