@@ -8,6 +8,7 @@ from __future__ import annotations
 import zipfile
 from io import BytesIO
 from pathlib import Path
+from urllib.parse import parse_qs, urlsplit
 
 import pytest
 from bench.profile import cam_table
@@ -39,6 +40,23 @@ def test_a_profile_upload_shows_its_chart_and_sizes(page: Page, tmp_path: Path) 
     assert status == 201, body
     assert body["mean_speed_rpm"] == pytest.approx(80 / 13, rel=0.005)  # Eq. 514.3
     assert traces(page, "chart-cycle")
+
+
+def test_units_chosen_on_the_form_go_with_the_upload(page: Page, tmp_path: Path) -> None:
+    """A plain CSV whose headings carry no unit: the units a person picks beside the file
+    input are sent with it (``?velocity_unit=…``), and the profile is read with them."""
+    page.goto("/")
+    page.locator("#profile-velocity-unit").select_option("rpm")
+    page.locator("#profile-load-unit").select_option("N*m")
+    file = tmp_path / "plain.csv"
+    file.write_bytes(b"Zeit;Drehzahl;Moment\n0,0;0;2\n0,1;40;2\n0,2;40;2\n0,3;0;2\n1,3;0;2\n")
+    with page.expect_response("**/api/v1/profiles*") as uploaded:
+        page.locator("#profile-file").set_input_files(str(file))
+    assert uploaded.value.status == 201
+    query = parse_qs(urlsplit(uploaded.value.url).query)
+    assert query == {"velocity_unit": ["rpm"], "load_unit": ["N*m"]}
+    expect(page.locator("#profile-summary")).to_contain_text("5 samples read")
+    expect(page.locator('input[name="cycle-mode"][value="segments"]')).to_be_checked()
 
 
 def test_a_bad_profile_names_the_line(page: Page, tmp_path: Path) -> None:

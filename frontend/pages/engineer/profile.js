@@ -1,4 +1,3 @@
-// @ts-nocheck -- TODO(checkJs): type its DOM lookups; see docs/testing.md
 // Files on the form: a measured motion profile (CSV: a PLC trace, a CAM table, the IDTA
 // 02021 motion file) read by POST /profiles into the segments the flowchart sizes, its
 // cycle chart shown before sizing and its segments put into the segment editor; and an
@@ -7,7 +6,7 @@
 // (docs/profiles.md, docs/aas.md); this module only shows them.
 
 import { createClient } from "../../lib/api.js";
-import { h } from "../../lib/dom.js";
+import { $$as, $as, h } from "../../lib/dom.js";
 import { num } from "../../lib/format.js";
 import { translate } from "../../lib/i18n.js";
 import { loadPlotly } from "../../lib/plotly.js";
@@ -157,7 +156,7 @@ async function chart() {
 
 function useProfile() {
   fillSegments(profile.cycle.segments, profile.cycle.start_speed);
-  const radio = document.querySelector('input[name="cycle-mode"][value="segments"]');
+  const radio = $as('input[name="cycle-mode"][value="segments"]', HTMLInputElement);
   if (radio && !radio.checked) {
     radio.checked = true;
     radio.dispatchEvent(new Event("change", { bubbles: true }));
@@ -166,7 +165,7 @@ function useProfile() {
 
 async function uploadProfile(file) {
   const params = new URLSearchParams();
-  for (const el of document.querySelectorAll("[data-profile-unit]")) {
+  for (const el of $$as("[data-profile-unit]", HTMLSelectElement)) {
     if (el.value) params.set(el.dataset.profileUnit, el.value);
   }
   const query = params.toString() ? `?${params}` : "";
@@ -195,6 +194,11 @@ async function uploadRecord(file) {
   }
 }
 
+/** The file a file input's ``change`` event chose, if any. @param {Event} event */
+function chosenFile(event) {
+  return event.target instanceof HTMLInputElement ? event.target.files?.[0] : undefined;
+}
+
 /** Build the uploads into ``#profile-slot`` and wire them (called once by app.js). */
 export function initProfile() {
   const slot = document.getElementById("profile-slot");
@@ -207,16 +211,16 @@ export function initProfile() {
     }
   }
   document.getElementById("profile-file").addEventListener("change", (event) => {
-    const file = event.target.files?.[0];
+    const file = chosenFile(event);
     if (file) uploadProfile(file);
   });
   document.getElementById("aas-file").addEventListener("change", (event) => {
-    const file = event.target.files?.[0];
+    const file = chosenFile(event);
     if (file) uploadRecord(file);
   });
   // the words follow the page's language (app.js sets <html lang>)
   new MutationObserver(() => {
-    for (const el of slot.querySelectorAll("[data-i18n]")) el.textContent = t(el.dataset.i18n);
+    for (const el of $$as("[data-i18n]", HTMLElement, slot)) el.textContent = t(el.dataset.i18n);
     summary();
     chart();
   }).observe(document.documentElement, { attributes: true, attributeFilter: ["lang"] });
