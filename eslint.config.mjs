@@ -14,6 +14,11 @@ export default [
       sourceType: "module",
       globals: globals.browser,
     },
+    rules: {
+      ...js.configs.recommended.rules,
+      // every page module's types are checked (docs/decisions/0021-checkjs-scope.md)
+      "no-warning-comments": ["error", { terms: ["@ts-nocheck", "@ts-ignore"], location: "start" }],
+    },
   },
   {
     files: ["eslint.config.mjs"],
