@@ -112,13 +112,21 @@ def tune_allocator() -> bool:
     return all(mallopt(option, value) == 1 for option, value in MALLOC_OPTIONS)
 
 
-def serve_app() -> FastAPI:
-    """The app as ``serve`` runs it, in each worker process: the collector and the
-    allocator tuned once for the process (:func:`tune_gc`, :func:`tune_allocator`), the
-    worker bound to its supervisor's life
-    (:func:`~actuator_selection.supervision.exit_with_supervisor`), then :func:`create_app`."""
+def tune_process() -> bool:
+    """The collector and the allocator tuned once for a process that sizes batches
+    (:func:`tune_gc`, :func:`tune_allocator`): each of ``serve``'s worker processes
+    (:func:`serve_app`) and each job ``worker``, whose chunks are the same batch engine's
+    work (a chunk of 2,000 cases without checks, in process: 0.42 → 0.32 s of CPU). True
+    where the allocator was tuned (glibc)."""
     tune_gc()
-    tune_allocator()
+    return tune_allocator()
+
+
+def serve_app() -> FastAPI:
+    """The app as ``serve`` runs it, in each worker process: the process tuned
+    (:func:`tune_process`), the worker bound to its supervisor's life
+    (:func:`~actuator_selection.supervision.exit_with_supervisor`), then :func:`create_app`."""
+    tune_process()
     exit_with_supervisor()
     return create_app()
 

@@ -124,10 +124,12 @@ def _serve(args: argparse.Namespace) -> int:
 
 
 def _worker(args: argparse.Namespace) -> int:
+    import gc
     import logging
 
     from sqlalchemy.engine import make_url
 
+    from actuator_selection.app import tune_process
     from actuator_selection.db.engine import make_engine, make_session_factory
     from actuator_selection.i18n.localize import localizer
     from actuator_selection.job_queue import run_worker
@@ -140,6 +142,10 @@ def _worker(args: argparse.Namespace) -> int:
         )
         return 2
     logging.basicConfig(level=logging.INFO, format="%(asctime)s %(name)s %(message)s")
+    allocator = "tuned" if tune_process() else "as the C library has it"
+    logging.getLogger("actuator_selection.worker").info(
+        "worker: collector thresholds %s, allocator %s", gc.get_threshold(), allocator
+    )
     settings = get_settings()
     engine = make_engine(args.database_url, settings.engine_limits())
     try:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import io
+import platform
 import socket
 import subprocess
 import sys
@@ -24,6 +25,7 @@ from tests.server.jobs_harness import (
     wait_for,
 )
 
+from actuator_selection.app import GC_THRESHOLDS
 from actuator_selection.config import REPO_ROOT
 
 CASES = 3000
@@ -99,6 +101,16 @@ def test_two_workers_share_a_job_and_one_killed_mid_chunk_loses_nothing(
     with d.engine.connect() as conn:
         writers = set(conn.scalars(text("SELECT DISTINCT worker FROM batch_job_results")))
     assert writers == {f"{host}:{first.pid}", f"{host}:{second.pid}"}
+
+
+def test_a_worker_process_is_tuned_as_a_served_one(deploy: Deploy) -> None:
+    """A job worker sizes the same batches as ``serve`` does: its process starts with the
+    served process's collector thresholds and allocator settings (``app.tune_process``),
+    and says so in its log."""
+    d = deploy("postgresql")
+    said = d.worker().log()  # registered with the queue: its start is logged before that
+    allocator = "tuned" if platform.libc_ver()[0] == "glibc" else "as the C library has it"
+    assert f"collector thresholds {GC_THRESHOLDS}, allocator {allocator}" in said
 
 
 def test_a_cancelled_job_stops_and_keeps_nothing(deploy: Deploy) -> None:
