@@ -58,9 +58,8 @@ def test_answer_from_arrays_is_the_answer_from_selections(
     def drives() -> batch._Drives:
         return batch._Drives(DriveContext(catalogue), localize)
 
-    written = b"".join(
-        batch._result_chunks(body, actuators, arrays, apps, models, ids, drives(), localize)
-    )
+    cases = batch._Cases(body, actuators, arrays, apps, models, ids, drives(), localize)
+    written = b"".join(batch._result_chunks(cases))
     if not messages:  # written from the arrays, not from selections
         assert batch._coded_results(body, actuators, arrays, apps, models, ids, drives())
     expected = []

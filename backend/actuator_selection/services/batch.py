@@ -143,26 +143,10 @@ def size_batch(
     answer and a 2xx means the cases are committed; the rest is computed while the
     answer is sent.
     """
-    actuators = tuple(catalogue.actuators)
-    context = DriveContext(catalogue)
     ids: list[str | None] = [None] * len(apps)
     if body.store:
         ids = _store(body, apps, catalogue, writer)
-    models = [case.models for case in body.cases]
-    case_ids = [case.case_id for case in body.cases]
-    # The cases are in ``apps`` now; their request models (36 MB for 20,000 cases) are let
-    # go before the answer streams, which keeps the peak memory of a large batch down.
-    body.cases.clear()
-    chunks = _result_chunks(
-        body,
-        actuators,
-        catalogue.arrays(actuators),
-        apps,
-        models,
-        list(zip(ids, case_ids, strict=True)),
-        _Drives(context, localize),
-        localize,
-    )
+    chunks = _result_chunks(_Cases.taken(body, apps, ids, catalogue, localize))
     head = (
         b'{"catalogue_version":'
         + pydantic_core.to_json(catalogue.version)
@@ -309,48 +293,116 @@ def _select(
     return [s for s in out if s is not None]
 
 
-def _result_chunks(
-    body: BatchSelectionRequest,
-    actuators: Sequence[Actuator],
-    arrays: CatalogueArrays,
-    apps: list[Application],
-    models: list[list[str] | None],
-    ids: list[tuple[str | None, str | None]],
-    drives: _Drives,
-    localize: Localize,
-) -> Iterator[bytes]:
+class _Cases(NamedTuple):
+    """A batch's cases and what answering them needs, their request models let go."""
+
+    body: BatchSelectionRequest
+    actuators: tuple[Actuator, ...]
+    arrays: CatalogueArrays
+    apps: list[Application]
+    models: list[list[str] | None]
+    ids: list[tuple[str | None, str | None]]
+    """Each case's stored selection's id (None: not stored) and ``case_id``."""
+    drives: _Drives
+    localize: Localize
+
+    @classmethod
+    def taken(
+        cls,
+        body: BatchSelectionRequest,
+        apps: list[Application],
+        ids: list[str | None],
+        catalogue: CatalogueSnapshot,
+        localize: Localize,
+    ) -> _Cases:
+        """The cases of ``body`` (as the core sees them: ``apps``) with their stored
+        ``ids``, taken out of ``body``: their request models (36 MB for 20,000 cases)
+        are let go before the answer streams, which keeps the peak memory of a large
+        batch down."""
+        actuators = tuple(catalogue.actuators)
+        models = [case.models for case in body.cases]
+        case_ids = [case.case_id for case in body.cases]
+        body.cases.clear()
+        return cls(
+            body,
+            actuators,
+            catalogue.arrays(actuators),
+            apps,
+            models,
+            list(zip(ids, case_ids, strict=True)),
+            _Drives(DriveContext(catalogue), localize),
+            localize,
+        )
+
+
+def _result_chunks(cases: _Cases) -> Iterator[bytes]:
     """The ``results`` array's JSON, :data:`STREAM_CASES` cases at a time, comma-joined.
 
     These dicts are BatchSelectionOut's JSON (the tests validate them); validating
     them again as models would take longer than the whole flowchart.
     """
+    body, apps, models, ids = cases.body, cases.apps, cases.models, cases.ids
     for start in range(0, len(apps), STREAM_CASES):
         end = start + STREAM_CASES
         if not body.include_messages:
             written = _coded_results(
-                body, actuators, arrays, apps[start:end], models[start:end], ids[start:end], drives
+                body,
+                cases.actuators,
+                cases.arrays,
+                apps[start:end],
+                models[start:end],
+                ids[start:end],
+                cases.drives,
             )
             if written is not None:
                 if not start:  # the answer's first case: no comma before it
                     written[0] = written[0][1:]
                 yield b"".join(written)
                 continue
-        selections = _select(actuators, arrays, apps[start:end], models[start:end], body.top)
-        coded = CodedChecks()  # the slice's checks, written from the engine's arrays
-        results = [
-            dump_json(
-                result_body(
-                    id=id_,
-                    case_id=case_id,
-                    selection=selection,
-                    candidates=_candidates(
-                        selection, selection.profile.peak_speed_rpm, body, drives, localize, coded
-                    ),
-                )
+        yield (b"," if start else b"") + b",".join(_worded(cases, slice(start, end)))
+
+
+def worded_results(
+    body: BatchSelectionRequest,
+    apps: list[Application],
+    *,
+    catalogue: CatalogueSnapshot,
+    localize: Localize,
+) -> Iterator[bytes]:
+    """Each case's entry of ``results`` in words (as with ``include_messages``), one JSON
+    text a case in the cases' order, nothing stored: what :func:`size_batch` writes
+    between the commas of ``results``, for a batch job's chunk, which writes a line a
+    case (``services.jobs.chunk_answer``) and so need not read an answer back."""
+    cases = _Cases.taken(body, apps, [None] * len(apps), catalogue, localize)
+    for start in range(0, len(apps), STREAM_CASES):
+        yield from _worded(cases, slice(start, start + STREAM_CASES))
+
+
+def _worded(cases: _Cases, part: slice) -> list[bytes]:
+    """The entries of ``results`` of the cases ``part``, in words, one JSON text each."""
+    body = cases.body
+    selections = _select(
+        cases.actuators, cases.arrays, cases.apps[part], cases.models[part], body.top
+    )
+    coded = CodedChecks()  # the slice's checks, written from the engine's arrays
+    return [
+        dump_json(
+            result_body(
+                id=id_,
+                case_id=case_id,
+                selection=selection,
+                candidates=_candidates(
+                    selection,
+                    selection.profile.peak_speed_rpm,
+                    body,
+                    cases.drives,
+                    cases.localize,
+                    coded,
+                ),
             )
-            for (id_, case_id), selection in zip(ids[start:end], selections, strict=True)
-        ]
-        yield (b"," if start else b"") + b",".join(results)
+        )
+        for (id_, case_id), selection in zip(cases.ids[part], selections, strict=True)
+    ]
 
 
 def _coded_results(

@@ -36,10 +36,9 @@ from actuator_selection.db.models.jobs import BatchJobChunkRow, BatchJobResultRo
 from actuator_selection.schemas.batch import BatchCaseIn, BatchSelectionRequest
 from actuator_selection.schemas.checks import Localize
 from actuator_selection.schemas.selections import CandidateFigures
-from actuator_selection.services.batch import size_batch
+from actuator_selection.services.batch import worded_results
 from actuator_selection.services.catalogue import CatalogueCache, CatalogueSnapshot
 from actuator_selection.services.errors import UseCaseError, conflict, entry, not_found
-from actuator_selection.services.presenters.selection import dump_json
 
 ACTIVE = ("queued", "running")
 """States of a job whose chunks are still to be computed."""
@@ -331,9 +330,9 @@ def chunk_answer(
     first_case: int,
     localizer: Callable[[str], Localize],
 ) -> bytes:
-    """A chunk's answer as JSON lines: each case's result of the batch engine
-    (``services.batch.size_batch``, the one place a job calls it), with ``case``, the
-    case's index in the job, first."""
+    """A chunk's answer as JSON lines: each case's result of the batch engine in the
+    job's language (``services.batch.worded_results``, the one place a job calls it),
+    with ``case``, the case's index in the job, first."""
     cases = [BatchCaseIn.model_validate_json(line) for line in cases_json.split(b"\n")]
     body = BatchSelectionRequest(
         cases=cases,
@@ -342,21 +341,13 @@ def chunk_answer(
         include_messages=True,  # a job's results are in its language (options["language"])
     )
     apps = [case.to_core() for case in body.cases]
-    answer = size_batch(
-        body,
-        apps,
-        catalogue=catalogue,
-        writer=_no_writes,
-        localize=localizer(options["language"]),
+    results = worded_results(
+        body, apps, catalogue=catalogue, localize=localizer(options["language"])
     )
-    results = pydantic_core.from_json(b"".join(answer.chunks))["results"]
+    # each result is a JSON object: "case" goes in after its brace
     return b"".join(
-        dump_json({"case": first_case + k, **result}) + b"\n" for k, result in enumerate(results)
+        b'{"case":%d,%b\n' % (first_case + k, result[1:]) for k, result in enumerate(results)
     )
-
-
-def _no_writes() -> Any:
-    raise AssertionError("a batch job stores no selections")
 
 
 def pending_chunks(session: Session, limit: int = 64) -> list[tuple[str, int]]:
