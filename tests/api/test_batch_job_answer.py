@@ -59,7 +59,7 @@ def test_a_jobs_lines_are_the_batchs_results_in_words(
     body = cases(max(per_chunk, 200) + 30)  # two chunks, two slices of the batch engine's
     queue = EagerQueue(client.app)
     client.app.state.job_queue, before = queue, client.app.state.job_queue  # type: ignore[attr-defined]
-    params = {"top": top, "include_checks": str(checks).lower()}
+    params: dict[str, str | int] = {"top": top, "include_checks": str(checks).lower()}
     words = {"Accept-Language": language}
     try:
         response = client.post(
