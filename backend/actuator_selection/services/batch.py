@@ -372,7 +372,10 @@ def worded_results(
     """Each case's entry of ``results`` in words (as with ``include_messages``), one JSON
     text a case in the cases' order, nothing stored: what :func:`size_batch` writes
     between the commas of ``results``, for a batch job's chunk, which writes a line a
-    case (``services.jobs.chunk_answer``) and so need not read an answer back."""
+    case (``services.jobs.chunk_answer``) and so need not read an answer back. ``body``
+    asks for the words (``include_messages``)."""
+    if not body.include_messages:
+        raise ValueError("worded_results writes the words: include_messages must be set")
     cases = _Cases.taken(body, apps, [None] * len(apps), catalogue, localize)
     for start in range(0, len(apps), STREAM_CASES):
         yield from _worded(cases, slice(start, start + STREAM_CASES))
