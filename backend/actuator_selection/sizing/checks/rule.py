@@ -602,7 +602,7 @@ class Said:
 
     def __call__(self, q: Operands, status: Status, value: Any, limit: Any) -> str:
         params = {name: said(p, q, status, value, limit) for name, p in self.params}
-        return phrase(self.codes[_STATUS_INDEX[status]], **params)
+        return Phrase(self.codes[_STATUS_INDEX[status]], params)  # phrase(), its dict built
 
 
 _STATUS_INDEX: Final = {s: i for i, s in enumerate(Status)}
