@@ -261,8 +261,8 @@ def run_chunk(
     """Compute chunk ``chunk`` of the job and write its answer unless it is written
     already or the job is no longer active; True when this call wrote it.
 
-    The answer is computed outside any transaction and written in a short one, which
-    marks the job done when its last chunk is in.
+    The answer is computed (and compressed) outside any transaction and written in a
+    short one, which marks the job done when its last chunk is in.
     """
     with factory.begin() as session:
         begin_write(session)
@@ -285,6 +285,8 @@ def run_chunk(
     except Exception as exc:  # a fault in the computation fails the job, not the queue
         _fail(factory, job_id, f"chunk {chunk}: {type(exc).__name__}: {exc}")
         return False
+    # compressed before the job's row is locked: another worker's chunk waits on that lock
+    packed, cases = zlib.compress(lines, ZLIB_LEVEL), lines.count(b"\n")
     with factory.begin() as session:
         begin_write(session)
         job = session.execute(
@@ -298,11 +300,11 @@ def run_chunk(
             BatchJobResultRow(
                 job_id=job_id,
                 chunk=chunk,
-                cases=lines.count(b"\n"),
+                cases=cases,
                 catalogue_version=snapshot.version,
                 worker=WORKER_NAME,
                 created_at=datetime.now(UTC),
-                lines_zlib=zlib.compress(lines, ZLIB_LEVEL),
+                lines_zlib=packed,
             )
         )
         session.flush()
