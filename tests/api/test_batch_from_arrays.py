@@ -55,8 +55,8 @@ def test_answer_from_arrays_is_the_answer_from_selections(
     )
     localize = localizer(language)
 
-    def drives() -> batch._Drives:
-        return batch._Drives(DriveContext(catalogue), localize)
+    def drives() -> batch.Drives:
+        return batch.Drives(DriveContext(catalogue), localize)
 
     cases = batch._Cases(body, actuators, arrays, apps, models, ids, drives(), localize)
     written = b"".join(batch._result_chunks(cases))

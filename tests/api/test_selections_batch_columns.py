@@ -15,7 +15,7 @@ from tests import worked_example
 from actuator_selection.app import API_PREFIX
 from actuator_selection.schemas.batch import MAX_BATCH_CANDIDATES, MAX_BATCH_CASES
 from actuator_selection.schemas.batch_columns import COLUMNS_EXAMPLE, BatchColumnsOut
-from actuator_selection.services.batch import _coalesced, _json_pieces
+from actuator_selection.services.batch_columns import _coalesced, _json_pieces
 from actuator_selection.services.presenters.selection import dump_json
 
 URL = f"{API_PREFIX}/selections/batch/columns"

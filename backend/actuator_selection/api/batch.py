@@ -34,12 +34,8 @@ from actuator_selection.i18n.localize import localizer
 from actuator_selection.schemas.batch import BatchSelectionOut, BatchSelectionRequest
 from actuator_selection.schemas.batch_columns import BatchColumnsOut, BatchColumnsRequest
 from actuator_selection.schemas.selections import RANKING_RULE
-from actuator_selection.services.batch import (
-    check_columns,
-    check_limits,
-    size_batch,
-    size_columns,
-)
+from actuator_selection.services.batch import check_limits, size_batch
+from actuator_selection.services.batch_columns import check_columns, size_columns
 from actuator_selection.services.profiles import with_profiles
 from actuator_selection.sizing.selection import Application
 
