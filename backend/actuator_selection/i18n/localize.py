@@ -23,7 +23,7 @@ from __future__ import annotations
 import functools
 import math
 import re
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from decimal import Decimal
 from pathlib import Path
 from typing import Any, Final
@@ -508,17 +508,30 @@ def render_check(message: str, language: str) -> str:
 
 
 @functools.cache
-def _check_renderer(language: str) -> Callable[[str], str]:
+def _check_renderer(language: str) -> check_messages.Renderer:
     """The check messages' renderer of ``language``, made once."""
     return check_messages.renderer(
         translate=functools.partial(translate, language=language), number=_spec_number(language)
     )
 
 
-def localizer(language: str) -> Callable[[str], str]:
+class Localizer(check_messages.Wording):
+    """:func:`render_check` in one language (a schema's ``localize``), with the renderer
+    that words its messages (:attr:`phrases`): a batch writes many cells' words at once
+    from a message's template."""
+
+    __slots__ = ("language",)
+
+    def __init__(self, language: str) -> None:
+        super().__init__(
+            check_messages.ENGLISH if language == DEFAULT_LANGUAGE else _check_renderer(language)
+        )
+        self.language = language
+
+    def __call__(self, message: str) -> str:
+        return render_check(message, self.language)
+
+
+def localizer(language: str) -> Localizer:
     """:func:`render_check` in ``language``, for the schemas' ``localize``."""
-    return functools.partial(_render_in, language=language)
-
-
-def _render_in(message: str, *, language: str) -> str:
-    return render_check(message, language)
+    return Localizer(language)

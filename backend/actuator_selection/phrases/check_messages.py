@@ -18,6 +18,7 @@ by " / "), or None (a clause left out: rendered as nothing).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from contextlib import contextmanager
@@ -100,14 +101,33 @@ NumberFormat = Callable[[float, str], str]
 """A number as a language writes it, from the value and its format spec."""
 
 
-class _Renderer:
-    """``str.format`` whose fields are numbers, words and clauses in one language."""
+class Renderer:
+    """The check messages in one language: ``str.format`` whose fields are numbers, words
+    and clauses, each written in that language. Called with a message, it renders a
+    :class:`Phrase` and leaves any other text as it is; a batch that words many cells of
+    one message at once reads a code's :meth:`template` and writes each field by
+    :meth:`format_field` (``services/presenters/batch_messages.py``)."""
 
     def __init__(self, translate: Callable[[str], str], number: NumberFormat | None) -> None:
         self._translate = translate
         self._number = number
 
+    def __call__(self, message: str) -> str:
+        return self.render(message) if isinstance(message, Phrase) else message
+
+    def template(self, code: str) -> str:
+        """The template of the message ``code`` in this language."""
+        return self._translate(CHECK_MESSAGES[code])
+
+    def numbers(self, values: list[float], spec: str) -> list[str]:
+        """Each of ``values`` (floats) as :meth:`format_field` writes it with ``spec``."""
+        if self._number is None:
+            return list(map(format, values, itertools.repeat(spec)))
+        number = self._number
+        return [number(v, spec) for v in values]
+
     def format_field(self, value: Any, format_spec: str) -> str:
+        """One param of a message as this language writes it, by the template's spec."""
         if type(value) is float and self._number is not None:  # most fields: first
             return self._number(value, format_spec)
         if value is None:
@@ -129,10 +149,11 @@ class _Renderer:
         return str(format(value, format_spec))
 
     def render(self, message: Phrase) -> str:
+        """``message`` in this language."""
         # str.format_map in C, each field written by format_field through _Field.__format__
         # (string.Formatter would parse the template in Python on every call).
         fields = {k: _Field(self, v) for k, v in message.params.items()}
-        return self._translate(CHECK_MESSAGES[message.code]).format_map(fields)
+        return self.template(message.code).format_map(fields)
 
 
 class _Field:
@@ -140,25 +161,37 @@ class _Field:
 
     __slots__ = ("_renderer", "_value")
 
-    def __init__(self, renderer: _Renderer, value: Any) -> None:
+    def __init__(self, renderer: Renderer, value: Any) -> None:
         self._renderer, self._value = renderer, value
 
     def __format__(self, format_spec: str) -> str:
         return self._renderer.format_field(self._value, format_spec)
 
 
-def renderer(
-    *, translate: Callable[[str], str], number: NumberFormat | None = None
-) -> Callable[[str], str]:
+def renderer(*, translate: Callable[[str], str], number: NumberFormat | None = None) -> Renderer:
     """A message with its template and words passed through ``translate`` and its
     numbers written by ``number`` (``format(value, spec)`` where None); a message that
     is no :class:`Phrase` (a rule written elsewhere) stays as it is."""
-    phrases = _Renderer(translate, number)
+    return Renderer(translate, number)
 
-    def render(message: str) -> str:
-        return phrases.render(message) if isinstance(message, Phrase) else message
 
-    return render
+class Wording:
+    """A language's words for the check messages: called with a message, its text (a
+    schema's ``localize``, ``i18n.localize.Localizer``); its renderer (:attr:`phrases`)
+    words many cells of one message at once (a batch's, from the engine's arrays)."""
+
+    __slots__ = ("phrases",)
+
+    def __init__(self, phrases: Renderer) -> None:
+        self.phrases = phrases
+
+    def __call__(self, message: str) -> str:
+        return self.phrases(message)
+
+
+ENGLISH: Final = Renderer(str, None)
+"""The messages in English: each :class:`Phrase` as its own text reads (a test holds
+the two to the same words)."""
 
 
 def jsonable_params(message: str) -> dict[str, Any] | None:
