@@ -1,5 +1,7 @@
 """A batch's checks written from the engine's arrays (``CodedChecks``) are the text the
-check-by-check path writes (a dict per check, ``coded_check_body``), byte for byte."""
+check-by-check path writes (a dict per check, ``coded_check_body``), byte for byte; so
+are their words and the candidates' reasons written from the arrays (``check_body``,
+``candidate_body``), in English and in German."""
 
 from __future__ import annotations
 
@@ -14,9 +16,16 @@ from bench.batch import synthetic_catalogue
 from bench.selection import random_cases
 from sqlalchemy.orm import Session
 
+from actuator_selection.i18n.localize import localizer
 from actuator_selection.phrases.check_messages import codes_only, jsonable_params, phrase
 from actuator_selection.services.catalogue import CatalogueCache
-from actuator_selection.services.presenters.batch import CodedChecks, coded_check_body
+from actuator_selection.services.presenters.batch import (
+    CodedChecks,
+    check_body,
+    coded_check_body,
+    coded_checks_json,
+    worded_reasons,
+)
 from actuator_selection.services.presenters.batch_messages import param_items
 from actuator_selection.services.presenters.selection import dump_json
 from actuator_selection.sizing.application import Application
@@ -78,6 +87,47 @@ def test_checks_from_arrays_are_the_checks_one_by_one(session: Session, seed: in
         "no_data",
     ):
         assert code in codes
+
+
+@pytest.mark.parametrize(("seed", "language"), [(3, "en"), (11, "de"), (5, "de")])
+def test_words_from_arrays_are_the_checks_worded_one_by_one(
+    session: Session, seed: int, language: str
+) -> None:
+    """Each check's ``message`` and each candidate's ``reasons`` written over the cells
+    at once (``coded_checks_json`` with words, ``worded_reasons``) are what the checks
+    built one by one say in that language (``check_body``, ``Candidate.reasons``)."""
+    catalogue = CatalogueCache().snapshot(session)
+    actuators = [*catalogue.actuators, *synthetic_catalogue(40, seed=seed)]
+    words = localizer(language)
+    groups: dict[tuple[Rule, ...], list[Application]] = {}
+    for app in _varied(40, seed):
+        groups.setdefault(rules_for(app), []).append(app)
+    reasons = worded = 0
+    for rules, cases in groups.items():
+        kept: dict[int, tuple[Any, list[bytes], list[bytes], list[bytes]]] = {}
+        for selection in select_batch(actuators, cases, top=len(actuators), rules=rules):
+            for candidate in selection.candidates:
+                found = candidate.decided()
+                assert found is not None
+                decided, cell = found
+                if id(decided) not in kept:  # the cells detailed together, written at once
+                    written = coded_checks_json(decided, words)
+                    kept[id(decided)] = (
+                        decided,
+                        written.checks,
+                        written.reasons(decided.not_passing),
+                        worded_reasons(decided, words),
+                    )
+                _, checks, its_reasons, reasons_alone = kept[id(decided)]
+                one_by_one = [check_body(c, words) for c in candidate.checks]
+                assert checks[cell] == dump_json(one_by_one)
+                said = dump_json([words(r) for r in candidate.reasons])
+                assert its_reasons[cell] == said
+                assert reasons_alone[cell] == said
+                reasons += len(candidate.reasons)
+                worded += len(one_by_one)
+    assert reasons > 0
+    assert worded > 1000
 
 
 def test_params_as_numbers_are_written_as_the_dicts_write_them() -> None:

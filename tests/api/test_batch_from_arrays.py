@@ -1,5 +1,5 @@
 """A per-case batch's answer written from the ranking's arrays (``services.batch.
-_coded_results``: no profile per case, no candidate per cell) is the answer written from
+_ranked_results``: no profile per case, no candidate per cell) is the answer written from
 the selections (``_select``, ``result_body``), byte for byte: varied cases (a brake, the
 drive, a thermal time constant, a model list, case ids), with and without checks and
 controllers, in English and German, with and without ``include_messages``."""
@@ -30,6 +30,8 @@ from actuator_selection.sizing.engine import catalogue_arrays
         ("de", False, True, False, 1),
         ("en", True, True, True, 3),
         ("de", True, False, True, 4),
+        ("en", False, False, True, 2),
+        ("de", False, True, True, 3),
     ],
 )
 def test_answer_from_arrays_is_the_answer_from_selections(
@@ -60,8 +62,8 @@ def test_answer_from_arrays_is_the_answer_from_selections(
 
     cases = batch._Cases(body, actuators, arrays, apps, models, ids, drives(), localize)
     written = b"".join(batch._result_chunks(cases))
-    if not messages:  # written from the arrays, not from selections
-        assert batch._coded_results(body, actuators, arrays, apps, models, ids, drives())
+    # written from the arrays, not from selections, in words too (a language's Localizer)
+    assert batch._from_arrays(cases, slice(0, n), each=False) is not None
     expected = []
     for start in range(0, n, batch.STREAM_CASES):
         end = start + batch.STREAM_CASES

@@ -19,6 +19,7 @@ import numpy as np
 import pydantic_core
 
 from actuator_selection.catalogue.actuators import Actuator
+from actuator_selection.phrases.check_messages import Wording
 from actuator_selection.schemas.batch import (
     MAX_BATCH_CANDIDATES,
     MAX_CANDIDATES_WITH_CONTROLLERS,
@@ -39,6 +40,7 @@ from actuator_selection.services.presenters.batch import (
     controllers_summary,
     members_json,
     result_body,
+    worded_reasons,
 )
 from actuator_selection.services.presenters.batch_rows import (
     Column,
@@ -335,25 +337,16 @@ def _result_chunks(cases: _Cases) -> Iterator[bytes]:
     These dicts are BatchSelectionOut's JSON (the tests validate them); validating
     them again as models would take longer than the whole flowchart.
     """
-    body, apps, models, ids = cases.body, cases.apps, cases.models, cases.ids
+    apps = cases.apps
     for start in range(0, len(apps), STREAM_CASES):
-        end = start + STREAM_CASES
-        if not body.include_messages:
-            written = _coded_results(
-                body,
-                cases.actuators,
-                cases.arrays,
-                apps[start:end],
-                models[start:end],
-                ids[start:end],
-                cases.drives,
-            )
-            if written is not None:
-                if not start:  # the answer's first case: no comma before it
-                    written[0] = written[0][1:]
-                yield b"".join(written)
-                continue
-        yield (b"," if start else b"") + b",".join(_worded(cases, slice(start, end)))
+        part = slice(start, start + STREAM_CASES)
+        written = _from_arrays(cases, part, each=False)
+        if written is not None:
+            if not start:  # the answer's first case: no comma before it
+                written[0] = written[0][1:]
+            yield b"".join(written)
+            continue
+        yield (b"," if start else b"") + b",".join(_worded(cases, part))
 
 
 def worded_results(
@@ -372,7 +365,31 @@ def worded_results(
         raise ValueError("worded_results writes the words: include_messages must be set")
     cases = _Cases.taken(body, apps, [None] * len(apps), catalogue, localize)
     for start in range(0, len(apps), STREAM_CASES):
-        yield from _worded(cases, slice(start, start + STREAM_CASES))
+        part = slice(start, start + STREAM_CASES)
+        written = _from_arrays(cases, part, each=True)
+        yield from _worded(cases, part) if written is None else written
+
+
+def _from_arrays(cases: _Cases, part: slice, *, each: bool) -> list[bytes] | None:
+    """:func:`_ranked_results` of the cases ``part``, where they can be written from the
+    ranking's arrays: without words, or in the words of a :class:`Wording` (a
+    language's, not any function of a message); else None."""
+    body, words = cases.body, None
+    if body.include_messages:
+        if not isinstance(cases.localize, Wording):
+            return None
+        words = cases.localize
+    return _ranked_results(
+        body,
+        cases.actuators,
+        cases.arrays,
+        cases.apps[part],
+        cases.models[part],
+        cases.ids[part],
+        cases.drives,
+        words,
+        each=each,
+    )
 
 
 def _worded(cases: _Cases, part: slice) -> list[bytes]:
@@ -402,7 +419,7 @@ def _worded(cases: _Cases, part: slice) -> list[bytes]:
     ]
 
 
-def _coded_results(
+def _ranked_results(
     body: BatchSelectionRequest,
     actuators: Sequence[Actuator],
     arrays: CatalogueArrays,
@@ -410,17 +427,20 @@ def _coded_results(
     models: Sequence[list[str] | None],
     ids: list[tuple[str | None, str | None]],
     drives: Drives,
+    words: Wording | None,
+    *,
+    each: bool,
 ) -> list[bytes] | None:
-    """The cases' entries of ``results`` without words (not ``include_messages``) as
-    JSON, each after a comma, written from the ranking's arrays (``sizing.engine.
-    ranked_cells``) with no profile per case and no candidate per cell: joined, the
-    bytes :func:`result_body` of :func:`_select`'s selections gives, comma-joined. Where
-    every case needs the same checks, the pieces of every case in turn
-    (``batch_rows.pieces``), else each case's text. None where a cycle's figures or a
-    candidate's torques are not finite: the selections then raise the error that names
-    the input."""
+    """The cases' entries of ``results`` as JSON, written from the ranking's arrays
+    (``sizing.engine.ranked_cells``) with no profile per case and no candidate per cell:
+    the bytes :func:`result_body` of :func:`_select`'s selections gives, without words
+    (``words`` None) or in ``words``' language. With ``each``, one JSON text a case;
+    else pieces that, joined, are the cases each after a comma: where every case needs
+    the same checks, the pieces of every case in turn (``batch_rows.pieces``), else each
+    case's text. None where a cycle's figures or a candidate's torques are not finite:
+    the selections then raise the error that names the input."""
     groups = _by_rules(apps)
-    whole = len(groups) == 1
+    whole = len(groups) == 1 and not each
     out: list[bytes] = [] if whole else [b""] * len(apps)
     for rules, indexes in groups.items():
         cases = [apps[i] for i in indexes]
@@ -440,6 +460,7 @@ def _coded_results(
                 [ids[i] for i in indexes[ranked.start : ranked.start + n]],
                 body,
                 drives,
+                words,
             )
             if columns is None:
                 return None
@@ -448,6 +469,8 @@ def _coded_results(
                 continue
             for k, row in enumerate(rows(columns, n)):
                 out[indexes[ranked.start + k]] = b"".join(row)
+    if each:  # each case's text, not after a comma
+        return [case[1:] for case in out]
     return out
 
 
@@ -458,8 +481,9 @@ def _ranked_json(
     ids: list[tuple[str | None, str | None]],
     body: BatchSelectionRequest,
     drives: Drives,
+    words: Wording | None,
 ) -> list[Column] | None:
-    """:func:`_coded_results` of one block of cases ranked, as columns over its cases
+    """:func:`_ranked_results` of one block of cases ranked, as columns over its cases
     (``batch_rows.case_rows``): each member written as JSON over the cells or cases at
     once."""
     f = ranked.figures
@@ -479,24 +503,37 @@ def _ranked_json(
     named, first = np.unique(columns, return_index=True)
     heads = np.empty(len(actuators), dtype=object)
     tails = np.empty(len(actuators), dtype=object)
+    summary = drives.coded_summary if words is None else drives.summary
     for j, row in zip(named.tolist(), ranked.rows[first].tolist(), strict=True):
         a = actuators[j]
         heads[j] = members_json(actuator_body(a))
-        tails[j] = members_json(drives.coded_summary(a, peaks[row]), comma=True)
+        tails[j] = members_json(summary(a, peaks[row]), comma=True)
     controllers = None
     if body.include_controllers:
         controllers = [
             dump_json(drives.controllers(actuators[column], peaks[row]))
             for row, column in zip(ranked.rows.tolist(), columns.tolist(), strict=True)
         ]
+    decided = ranked.decided
+    checks: list[bytes] | None = None
+    if words is None:
+        reasons = None
+        if body.include_checks:
+            checks = coded_checks_json(decided).checks
+    elif body.include_checks:
+        written = coded_checks_json(decided, words)
+        checks, reasons = written.checks, written.reasons(decided.not_passing)
+    else:
+        reasons = worded_reasons(decided, words)
     candidates = candidate_columns(
         heads[columns].tolist(),
         _VERDICT_JSON[ranked.verdicts].tolist(),
         torques,
-        _reason_checks(ranked.decided),
-        coded_checks_json(ranked.decided) if body.include_checks else None,
+        _reason_checks(decided),
+        checks,
         controllers,
         tails[columns].tolist(),
+        reasons,
     )
     return case_rows(
         json_texts([id_ for id_, _ in ids]),

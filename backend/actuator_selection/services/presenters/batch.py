@@ -8,25 +8,28 @@ more than the engineering of the whole batch (the tests validate it against the 
 
 from __future__ import annotations
 
-import functools
 import math
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 import orjson
 
 from actuator_selection.catalogue.actuators import Actuator
-from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable_params
+from actuator_selection.phrases.check_messages import Phrase, Wording, codes_only, jsonable_params
 from actuator_selection.schemas.checks import Localize, english, message_code
 from actuator_selection.services.presenters.batch_messages import (
     Given,
     Shape,
+    filled,
     message_shapes,
+    message_words,
+    template_of,
     text_json,
 )
 from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
 from actuator_selection.sizing.checks import Brief, Operands, Rule
 from actuator_selection.sizing.engine import STATUS_BY_CODE
+from actuator_selection.sizing.engine.arrays import PASS
 from actuator_selection.sizing.engine.detail import DecidedCells
 from actuator_selection.sizing.selection import VALUE_OF, Candidate, Check, Selection
 
@@ -175,55 +178,109 @@ class CodedChecks:
         cell: int = found[1]
         written = self._written.get(id(decided))
         if written is None:
-            written = self._written[id(decided)] = (decided, coded_checks_json(decided))
+            written = self._written[id(decided)] = (decided, coded_checks_json(decided).checks)
         return orjson.Fragment(written[1][cell])
 
 
-def coded_checks_json(decided: DecidedCells) -> list[bytes]:
+def coded_checks_json(decided: DecidedCells, words: Wording | None = None) -> CellChecks:
     """Each cell's ``checks`` of ``decided`` as JSON, in the cells' order: the text
-    :func:`dump_json` writes of a list of :func:`coded_check_body` of each check,
-    written for every cell at once: orjson writes each array of numbers, and one
+    :func:`dump_json` writes of a list of :func:`coded_check_body` of each check (with
+    ``words``, of :func:`check_body` in ``words``' language: each check's ``message``
+    too), written for every cell at once: orjson writes each array of numbers, and one
     template of the cell's whole array takes each cell's members, rule by rule
     (:func:`_rule_checks`), the messages' codes and params among them.
     The messages' codes and params come from the same words: a rule's ``no_data``
     message once per requirement, a :class:`~actuator_selection.sizing.checks.Said`
     or :class:`~actuator_selection.sizing.checks.Variants` message from the arrays, any
-    other message cell by cell in codes only."""
+    other message cell by cell in codes only; their words likewise
+    (:func:`~.batch_messages.message_words`)."""
     columns = decided.columns
     cells = columns.statuses.shape[1]
     operands: list[Operands] = []  # over the cells, computed once if a rule needs them
     parts: list[bytes | None] = [b"["]
     members: list[list[bytes]] = []
+    messages: list[list[bytes]] = []
     with np.errstate(all="ignore"):  # margin_percent, utilisation; the messages' terms
         for k, rule in enumerate(decided.rules):
             if k:
                 parts.append(b",")
-            its_parts, its_members = _rule_checks(decided, k, rule, operands, cells)
+            given = Given(columns.values[k], columns.limits[k])
+            if words is not None:
+                messages.append(message_words(decided, k, operands, cells, given, words))
+            its_parts, its_members = _rule_checks(
+                decided, k, rule, operands, cells, given, messages[k] if messages else None
+            )
             parts += its_parts
             members += its_members
     parts.append(b"]")
-    return _filled(_template(*parts), members, cells)
+    return CellChecks(filled(template_of(*parts), members, cells), messages)
+
+
+class CellChecks(NamedTuple):
+    """:func:`coded_checks_json` of a set of cells: each cell's checks, and each rule's
+    message of each cell in words (a JSON string; none without words)."""
+
+    checks: list[bytes]
+    messages: list[list[bytes]]
+
+    def reasons(self, not_passing: list[list[int]]) -> list[bytes]:
+        """Each cell's ``reasons`` as JSON: the words of its checks that do not pass
+        (``not_passing``, the rules' indexes of each cell), in the rules' order, each
+        text once (as :attr:`~actuator_selection.sizing.candidates.Candidate.reasons`
+        has them: two checks may lack the same value)."""
+        written = self.messages
+        return [
+            b"[" + b",".join(dict.fromkeys([written[k][j] for k in open_rules])) + b"]"
+            for j, open_rules in enumerate(not_passing)
+        ]
+
+
+def worded_reasons(decided: DecidedCells, words: Wording) -> list[bytes]:
+    """Each cell's ``reasons`` (:meth:`CellChecks.reasons`) where its checks are not
+    asked for: only the rules that some cell does not pass are worded."""
+    columns = decided.columns
+    cells = columns.statuses.shape[1]
+    operands: list[Operands] = []
+    messages: list[list[bytes]] = []
+    with np.errstate(all="ignore"):  # the messages' terms
+        for k in range(len(decided.rules)):
+            if (columns.statuses[k] > PASS).any():
+                given = Given(columns.values[k], columns.limits[k])
+                messages.append(message_words(decided, k, operands, cells, given, words))
+            else:
+                messages.append([])  # no cell's reason
+    return CellChecks([], messages).reasons(decided.not_passing)
 
 
 def _rule_checks(
-    decided: DecidedCells, k: int, rule: Rule, operands: list[Operands], cells: int
+    decided: DecidedCells,
+    k: int,
+    rule: Rule,
+    operands: list[Operands],
+    cells: int,
+    given: Given,
+    words: list[bytes] | None,
 ) -> tuple[list[bytes | None], list[list[bytes]]]:
     """Rule ``k``'s check of each cell of ``decided`` (:func:`coded_checks_json`) as a
     template's parts (None: a member) and the members over the cells: the check's own
-    members, and its message's, filled per cell where the cells' messages take more than
-    one shape (:func:`message_shapes`)."""
+    members, its message's words (``words``; None: without), and its message's code and
+    params, filled per cell where the cells' messages take more than one shape
+    (:func:`message_shapes`); ``given`` the values' and limits' JSON, shared with the
+    messages' params that say them."""
     columns = decided.columns
     values, limits = columns.values[k], columns.limits[k]
     rated = ~np.isnan(values) & ~np.isnan(limits) & (limits > 0)  # sizing.checks.rule
     margin = np.where(rated, (limits - values) / limits * 100.0, math.nan)
     share = np.where(rated, values / limits, math.nan)
-    # the values' and limits' JSON, shared with the messages' params that say them
-    given = Given(values, limits)
     shapes = message_shapes(decided, k, operands, cells, given)
     if len(shapes) == 1 and isinstance(shapes[0][0], slice):  # every cell, one shape
         _, said, members = shapes[0]
     else:
         said, members = [None], [_messages(shapes, cells)]
+    worded: list[bytes | None] = []
+    if words is not None:
+        worded = [b',"message":', None]
+        members = [words, *members]
     parts = [
         b'{"name":' + text_json(rule.name) + b',"status":',
         None,
@@ -231,11 +288,9 @@ def _rule_checks(
         None,
         b',"limit":',
         None,
-        b',"unit":'
-        + text_json(rule.unit)
-        + b',"reference":'
-        + text_json(rule.reference)
-        + b',"message_code":',
+        b',"unit":' + text_json(rule.unit) + b',"reference":' + text_json(rule.reference),
+        *worded,
+        b',"message_code":',
         *said,
         b',"approximate":',
         None,
@@ -260,23 +315,9 @@ def _messages(shapes: list[Shape], cells: int) -> list[bytes]:
     JSON, each shape's cells filled from its template."""
     out = np.empty(cells, dtype=object)
     for where, parts, members in shapes:
-        out[where] = _filled(_template(*parts), members, len(out[where]))
+        out[where] = filled(template_of(*parts), members, len(out[where]))
     found: list[bytes] = out.tolist()
     return found
-
-
-@functools.lru_cache(maxsize=1024)
-def _template(*parts: bytes | None) -> bytes:
-    """A bytes template of ``parts``: each None a member (``%b``), the rest as they are
-    (kept: a rule's shapes recur slice after slice)."""
-    return b"".join(b"%b" if p is None else p.replace(b"%", b"%%") for p in parts)
-
-
-def _filled(template: bytes, members: list[list[bytes]], cells: int) -> list[bytes]:
-    """``template`` filled with each cell's ``members``."""
-    if not members:
-        return [template % ()] * cells
-    return list(map(template.__mod__, zip(*members, strict=True)))
 
 
 _STATUS_JSON = np.array([dump_json(s.value) for s in STATUS_BY_CODE], dtype=object)

@@ -12,13 +12,21 @@ once per process; a param that says the check's value or limit is its JSON (:cla
 from __future__ import annotations
 
 import functools
+import string
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
-from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable, jsonable_params
+from actuator_selection.phrases.check_messages import (
+    Phrase,
+    Renderer,
+    Wording,
+    codes_only,
+    jsonable,
+    jsonable_params,
+)
 from actuator_selection.services.presenters.selection import dump_json, json_items
 from actuator_selection.sizing.checks import Operands, Status
 from actuator_selection.sizing.checks.rule import Pick, Said, Term, Variants
@@ -222,18 +230,24 @@ def _said_shapes(
     fail or warn) by shape: the cells that take the same variant and the same branch of
     each :class:`~actuator_selection.sizing.checks.Pick`, with one template's parts
     (None: a member) and the members over those cells, from the arrays."""
+    out = []
+    for c, chosen in _said_leaves(message, cells):
+        parts, members = _object_parts(chosen, c)
+        out.append((c, [None, b',"message_params":', *parts], [c.codes(chosen.said), *members]))
+    return out
+
+
+def _said_leaves(message: Said | Variants, cells: _Cells) -> list[tuple[_Cells, _Chosen]]:
+    """A declared message over ``cells`` by shape (:func:`_said_shapes`): the cells of
+    each variant and branch, and the message said there."""
     if isinstance(message, Said):
-        out = []
-        for c, chosen in _chosen(message, cells):
-            parts, members = _object_parts(chosen, c)
-            out.append((c, [None, b',"message_params":', *parts], [c.codes(message), *members]))
-        return out
+        return _chosen(message, cells)
     out = []
     left = np.ones(int(np.count_nonzero(cells.mask)), dtype=np.bool_)
     for condition, variant in message.cases:
         holds = left if condition is None else left & cells.term(condition)
         if holds.any():
-            out += _said_shapes(variant, cells.within(holds))
+            out += _said_leaves(variant, cells.within(holds))
         left &= ~holds
     return out
 
@@ -299,3 +313,139 @@ def param_items(column: npt.NDArray[Any]) -> list[bytes]:
             for j, x in zip(np.flatnonzero(odd).tolist(), column[odd].tolist(), strict=True):
                 out[j] = dump_json(repr(x))
     return out
+
+
+def message_words(
+    decided: DecidedCells,
+    k: int,
+    operands: list[Operands],
+    cells: int,
+    given: Given,
+    localize: Wording,
+) -> list[bytes]:
+    """Rule ``k``'s message of each cell in words (``localize``'s language) as a JSON
+    string: what ``dump_json(localize(check.message))`` writes of each cell's check.
+
+    A declared message (:class:`~actuator_selection.sizing.checks.Said`,
+    :class:`~actuator_selection.sizing.checks.Variants`) is written by shape as
+    :func:`message_shapes` writes its code and params, and within a shape by status (the
+    status names the code): the code's template in the language, its clauses' templates
+    put in place, its words and constants written once, and each number written over the
+    cells by the template's format spec (:meth:`Renderer.numbers`), each cell's text one
+    bytes template filled. Every other message (no data, a failure at the least value
+    for any J_A, a message that is a plain function) is worded cell by cell, as a
+    candidate's check is."""
+    rule = decided.rules[k]
+    columns = decided.columns
+    statuses, first = columns.statuses[k], columns.first_missing[k]
+    out = np.empty(cells, dtype=object)
+    worded = np.zeros(cells, dtype=np.bool_)
+    if isinstance(rule.message, Said | Variants):
+        worded = _WORDED[statuses] & (first < 0)  # as message_shapes
+        if worded.any():
+            if not operands:
+                operands.append(decided.operand_columns())
+            value, limit = columns.values[k], columns.limits[k]
+            cell = _Cells(operands[0], statuses, value, limit, worded, {}, given)
+            for c, chosen in _said_leaves(rule.message, cell):
+                out[c.mask] = _texts(chosen, c, localize.phrases)
+    left = ~worded
+    no_data = left & (statuses == NO_DATA)
+    if no_data.any():
+        said = [dump_json(localize(rule.no_data_message(r))) for r in range(len(rule.requires))]
+        out[no_data] = np.array(said, dtype=object)[first[no_data]]
+    other = left & ~no_data
+    if other.any():
+        values, limits = columns.values[k].tolist(), columns.limits[k].tolist()
+        for j in np.flatnonzero(other).tolist():
+            missing = int(first[j])
+            message = rule.words(
+                decided.operands_of(j),
+                STATUS_BY_CODE[statuses[j]],
+                values[j],
+                limits[j],
+                None if missing < 0 else missing,
+            )
+            out[j] = dump_json(localize(message))
+    found: list[bytes] = out.tolist()
+    return found
+
+
+def _texts(chosen: _Chosen, cells: _Cells, phrases: Renderer) -> list[bytes]:
+    """``chosen``'s text over ``cells`` (:func:`message_words`), status by status."""
+    places = _STATUS_INDEX[cells.statuses[cells.mask]]
+    out = np.empty(len(places), dtype=object)
+    for place in np.unique(places).tolist():
+        where = places == place
+        its = cells if where.all() else cells.within(where)
+        parts: list[bytes | None] = [b'"']
+        terms: list[tuple[Term, str]] = []
+        _text_parts(chosen, place, phrases, parts, terms)
+        parts.append(b'"')
+        members = [_field_items(its.term(term).tolist(), spec, phrases) for term, spec in terms]
+        out[where] = filled(template_of(*parts), members, int(np.count_nonzero(where)))
+    found: list[bytes] = out.tolist()
+    return found
+
+
+def _text_parts(
+    chosen: _Chosen,
+    place: int,
+    phrases: Renderer,
+    parts: list[bytes | None],
+    terms: list[tuple[Term, str]],
+) -> None:
+    """The JSON string's parts of ``chosen`` said with status ``place`` (its place in
+    :class:`Status`): the literal text of its template (JSON-escaped), a clause's parts
+    in its field, a constant written in its field, and None for each number, whose term
+    and format spec go to ``terms``."""
+    params = dict(zip([name for name, _ in chosen.said.params], chosen.params, strict=True))
+    for literal, name, spec, _ in _fields(phrases.template(chosen.said.codes[place])):
+        if literal:
+            parts.append(dump_json(literal)[1:-1])
+        if name is None:
+            continue
+        param = params[name]
+        if isinstance(param, _Chosen):  # a clause: its text where its field stands
+            _text_parts(param, place, phrases, parts, terms)
+        elif callable(param):
+            parts.append(None)
+            terms.append((param, spec))
+        else:  # a constant: words, a clause or None
+            parts.append(dump_json(phrases.format_field(param, spec))[1:-1])
+
+
+@functools.lru_cache(maxsize=1024)
+def _fields(template: str) -> list[tuple[str, str | None, str, str | None]]:
+    """``template``'s literal text and fields (``string.Formatter.parse``), kept."""
+    return [
+        (literal, name, spec or "", conversion)
+        for literal, name, spec, conversion in string.Formatter().parse(template)
+    ]
+
+
+def _field_items(values: list[Any], spec: str, phrases: Renderer) -> list[bytes]:
+    """Each of ``values`` as its field of a message's JSON string reads: written by
+    ``phrases`` with ``spec``, JSON-escaped."""
+    if all(type(v) is float for v in values):
+        texts = phrases.numbers(values, spec)
+    else:
+        texts = [phrases.format_field(v, spec) for v in values]
+    joined = "\x00".join(texts)
+    if '"' in joined or "\\" in joined or not joined.replace("\x00", "").isprintable():
+        return [dump_json(t)[1:-1] for t in texts]  # anything JSON escapes: escaped
+    return joined.encode().split(b"\x00") if texts else []
+
+
+@functools.lru_cache(maxsize=1024)
+def template_of(*parts: bytes | None) -> bytes:
+    """A bytes template of ``parts``: each None a member (``%b``), the rest as they are
+    (kept: a rule's shapes recur slice after slice)."""
+    return b"".join(b"%b" if p is None else p.replace(b"%", b"%%") for p in parts)
+
+
+def filled(template: bytes, members: list[list[bytes]], cells: int) -> list[bytes]:
+    """``template`` filled with each cell's ``members``."""
+    if not members:
+        return [template % ()] * cells
+    return list(map(template.__mod__, zip(*members, strict=True)))

@@ -39,14 +39,18 @@ def candidate_columns(
     checks: list[bytes] | None,
     controllers: list[bytes] | None,
     summaries: list[bytes],
+    reasons: list[bytes] | None = None,
 ) -> list[Column]:
-    """Each cell's batch candidate without words (``coded_candidate_body`` of
+    """Each cell's batch candidate (``batch_candidate_body`` of
     ``services/presenters/batch.py`` as ``dump_json`` writes it) as columns over the
     cells, from each member's JSON over the cells: ``actuators`` the actuator's members
     (``"model":…,"family":…,"gear_ratio":…``), ``verdicts`` and ``torques`` (T_1, T_2,
     T_3, T_rms) its values, ``reason_checks`` the list, ``checks`` the list
     (``coded_checks_json``; None: not asked for), ``controllers`` the list (None: not
-    asked for), and ``summaries`` the members of ``coded_summary`` each after a comma."""
+    asked for), ``summaries`` the members of the controllers' summary each after a
+    comma, and ``reasons`` the list of words (None: without words, as
+    ``coded_candidate_body`` has it; with words ``reason_checks`` comes last, as
+    ``candidate_body`` and then ``batch_candidate_body`` put it)."""
     accel, constant, decel, rms = torques
     columns: list[Column] = [
         b"{",
@@ -61,14 +65,18 @@ def candidate_columns(
         decel,
         b',"rms_torque_nm":',
         rms,
-        b',"reason_checks":',
-        reason_checks,
     ]
+    columns += (
+        [b',"reason_checks":', reason_checks] if reasons is None else [b',"reasons":', reasons]
+    )
     if checks is not None:
         columns += [b',"checks":', checks]
     if controllers is not None:
         columns += [b',"controllers":', controllers]
-    columns += [summaries, b"}"]
+    columns.append(summaries)
+    if reasons is not None:
+        columns += [b',"reason_checks":', reason_checks]
+    columns.append(b"}")
     return columns
 
 
