@@ -227,7 +227,10 @@ class CellChecks(NamedTuple):
         """Each cell's ``reasons`` as JSON: the words of its checks that do not pass
         (``not_passing``, the rules' indexes of each cell), in the rules' order, each
         text once (as :attr:`~actuator_selection.sizing.candidates.Candidate.reasons`
-        has them: two checks may lack the same value)."""
+        has them: two checks may lack the same value). Each text is compared in the
+        answer's language, where a candidate compares the English texts: the two could
+        differ only if two messages of one candidate read alike in one language and not
+        in the other."""
         written = self.messages
         return [
             b"[" + b",".join(dict.fromkeys([written[k][j] for k in open_rules])) + b"]"
