@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import string
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -115,24 +116,8 @@ def message_shapes(
         return shapes
     out = np.full(cells, b"", dtype=object)
     left = ~worded
-    no_data = statuses == NO_DATA
-    if no_data.any():
-        said = [_message_json(rule.no_data_message(r)) for r in range(len(rule.requires))]
-        out[no_data] = np.array(said, dtype=object)[first[no_data]]
-    other = left & ~no_data
-    if other.any():  # any other message: worded cell by cell, in codes only
-        values, limits = columns.values[k].tolist(), columns.limits[k].tolist()
-        with codes_only():
-            for j in np.flatnonzero(other).tolist():
-                missing = int(first[j])
-                message = rule.words(
-                    decided.operands_of(j),
-                    STATUS_BY_CODE[statuses[j]],
-                    values[j],
-                    limits[j],
-                    None if missing < 0 else missing,
-                )
-                out[j] = _message_json(message)
+    with codes_only():  # any other message: in codes only
+        _written_apart(decided, k, left, out, _message_json)
     if not worded.any():
         return [(slice(None), [None], [out.tolist()])]
     return [*shapes, (left, [None], [out[left].tolist()])]
@@ -349,10 +334,26 @@ def message_words(
             cell = _Cells(operands[0], statuses, value, limit, worded, {}, given)
             for c, chosen in _said_leaves(rule.message, cell):
                 out[c.mask] = _texts(chosen, c, localize.phrases)
-    left = ~worded
+    _written_apart(decided, k, ~worded, out, lambda message: dump_json(localize(message)))
+    found: list[bytes] = out.tolist()
+    return found
+
+
+def _written_apart(
+    decided: DecidedCells,
+    k: int,
+    left: npt.NDArray[np.bool_],
+    out: npt.NDArray[np.object_],
+    write: Callable[[str], bytes],
+) -> None:
+    """Rule ``k``'s messages of the cells ``left`` (those not written by shape) into
+    ``out``, each as ``write`` writes it: a no data message once per requirement, any
+    other message cell by cell, as the cell's check words it (:meth:`Rule.words`)."""
+    rule, columns = decided.rules[k], decided.columns
+    statuses, first = columns.statuses[k], columns.first_missing[k]
     no_data = left & (statuses == NO_DATA)
     if no_data.any():
-        said = [dump_json(localize(rule.no_data_message(r))) for r in range(len(rule.requires))]
+        said = [write(rule.no_data_message(r)) for r in range(len(rule.requires))]
         out[no_data] = np.array(said, dtype=object)[first[no_data]]
     other = left & ~no_data
     if other.any():
@@ -366,9 +367,7 @@ def message_words(
                 limits[j],
                 None if missing < 0 else missing,
             )
-            out[j] = dump_json(localize(message))
-    found: list[bytes] = out.tolist()
-    return found
+            out[j] = write(message)
 
 
 def _texts(chosen: _Chosen, cells: _Cells, phrases: Renderer) -> list[bytes]:
