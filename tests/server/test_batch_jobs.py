@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import csv
 import io
+import os
 import platform
+import signal
 import socket
 import subprocess
 import sys
@@ -78,15 +80,21 @@ def test_two_workers_share_a_job_and_one_killed_mid_chunk_loses_nothing(
     second = d.worker()
     with server.client() as client:
         location = submit(client, cases(CASES), top=5, include_checks="true")
-        # A has written a chunk of its share and is inside the next one
+        # A has written a chunk of its share and is inside the next one: A is stopped
+        # (SIGSTOP) while this is read, so that it is killed in the state read (a chunk
+        # takes a few milliseconds), and let go on where it is between two chunks
         a_wrote = f"{socket.gethostname()}:{first.pid}"
-        wait_for(
-            lambda: _wrote(d.engine, a_wrote) and _doing(d.engine, first_id),
-            "worker A to be in a chunk after one written",
-        )
-        first.kill()
-        lost = _doing(d.engine, first_id)  # frozen: A will never write them
-        assert lost, "A was killed between two chunks"
+
+        def stopped_in_a_chunk() -> list[int]:
+            os.kill(first.pid, signal.SIGSTOP)
+            doing = _doing(d.engine, first_id) if _wrote(d.engine, a_wrote) else []
+            if not doing:
+                os.kill(first.pid, signal.SIGCONT)
+            return doing
+
+        lost = wait_for(stopped_in_a_chunk, "worker A to be in a chunk after one written")
+        first.kill()  # A will never write the chunks it holds
+        assert lost == _doing(d.engine, first_id)
         assert first.process is not None
         assert first.process.returncode == -9
         job = finished(client, location)
