@@ -381,7 +381,7 @@ def _texts(chosen: _Chosen, cells: _Cells, phrases: Renderer) -> list[bytes]:
         terms: list[tuple[Term, str]] = []
         _text_parts(chosen, place, phrases, parts, terms)
         parts.append(b'"')
-        members = [_field_items(its.term(term).tolist(), spec, phrases) for term, spec in terms]
+        members = [_field_items(its.term(term), spec, phrases) for term, spec in terms]
         out[where] = filled(template_of(*parts), members, int(np.count_nonzero(where)))
     found: list[bytes] = out.tolist()
     return found
@@ -423,10 +423,11 @@ def _fields(template: str) -> list[tuple[str, str | None, str, str | None]]:
     ]
 
 
-def _field_items(values: list[Any], spec: str, phrases: Renderer) -> list[bytes]:
-    """Each of ``values`` as its field of a message's JSON string reads: written by
+def _field_items(column: npt.NDArray[Any], spec: str, phrases: Renderer) -> list[bytes]:
+    """Each item of ``column`` as its field of a message's JSON string reads: written by
     ``phrases`` with ``spec``, JSON-escaped."""
-    if all(type(v) is float for v in values):
+    values = column.tolist()
+    if column.dtype == np.float64:  # floats, each: the most fields
         texts = phrases.numbers(values, spec)
     else:
         texts = [phrases.format_field(v, spec) for v in values]
