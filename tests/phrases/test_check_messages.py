@@ -8,7 +8,13 @@ import math
 import orjson
 import pytest
 
-from actuator_selection.phrases.check_messages import Phrase, codes_only, jsonable_params, phrase
+from actuator_selection.phrases.check_messages import (
+    ENGLISH,
+    Phrase,
+    codes_only,
+    jsonable_params,
+    phrase,
+)
 from actuator_selection.phrases.messages import Text
 
 
@@ -69,3 +75,38 @@ def test_codes_only_keeps_code_and_params_and_writes_no_words() -> None:
     with pytest.raises(RuntimeError), codes_only():
         raise RuntimeError
     assert str(phrase("peak_torque.fail", value=95.48, limit=151.0)) != ""
+
+
+def test_the_english_renderer_writes_a_phrase_as_its_own_text() -> None:
+    """``ENGLISH`` (what a batch words its English messages with, field by field) reads
+    as the :class:`Phrase` itself: numbers by their spec, words, a clause, a clause left
+    out, lists and alternatives, counts and non-finite numbers; and its numbers over a
+    column are its fields one by one."""
+    clause = phrase("thermal_peak.short", rms_torque_nm=math.inf)
+    messages = [
+        phrase("peak_torque.fail", value=95.48123, limit=151.0),
+        phrase(
+            "continuous_duty.approximate_pass",
+            value=17.25,
+            limit=float("nan"),
+            mean_speed_rpm=-math.inf,
+            what=Text("continuous stall torque T_0"),
+            speed_rpm=3,
+            speed_what=clause,
+        ),
+        phrase("fail_for_any_inertia", message=clause),
+        phrase("controller_voltage.at_speed", output="U_OUT", speed_rpm=12.0, at_max_speed=None),
+        Phrase(
+            "controllers_note.unconfirmed",
+            {"count": 2, "excluded": 1, "missing": [Text("feedback system"), Text("DC bus")]},
+        ),
+        Phrase(
+            "criterion.excluded",
+            {"criterion": Text("sensor"), "options": ("A", "B"), "reference": "Table 521.1"},
+        ),
+    ]
+    for message in messages:
+        assert ENGLISH(message) == str(message)
+    assert ENGLISH("a rule's own words") == "a rule's own words"
+    values = [95.48123, 1e-7, 123456.0, -0.0, math.nan]
+    assert ENGLISH.numbers(values, ".4g") == [ENGLISH.format_field(v, ".4g") for v in values]
