@@ -240,16 +240,19 @@ class CellChecks(NamedTuple):
 
 def worded_reasons(decided: DecidedCells, words: Wording) -> list[bytes]:
     """Each cell's ``reasons`` (:meth:`CellChecks.reasons`) where its checks are not
-    asked for: only the rules that some cell does not pass are worded."""
+    asked for: only the checks that do not pass are worded."""
     columns = decided.columns
     cells = columns.statuses.shape[1]
     operands: list[Operands] = []
     messages: list[list[bytes]] = []
     with np.errstate(all="ignore"):  # the messages' terms
         for k in range(len(decided.rules)):
-            if (columns.statuses[k] > PASS).any():
+            open_cells = columns.statuses[k] > PASS
+            if open_cells.any():
                 given = Given(columns.values[k], columns.limits[k])
-                messages.append(message_words(decided, k, operands, cells, given, words))
+                messages.append(
+                    message_words(decided, k, operands, cells, given, words, open_cells)
+                )
             else:
                 messages.append([])  # no cell's reason
     return CellChecks([], messages).reasons(decided.not_passing)

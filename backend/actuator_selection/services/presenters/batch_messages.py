@@ -307,9 +307,11 @@ def message_words(
     cells: int,
     given: Given,
     localize: Wording,
+    only: npt.NDArray[np.bool_] | None = None,
 ) -> list[bytes]:
     """Rule ``k``'s message of each cell in words (``localize``'s language) as a JSON
-    string: what ``dump_json(localize(check.message))`` writes of each cell's check.
+    string: what ``dump_json(localize(check.message))`` writes of each cell's check;
+    with ``only``, of those cells alone (the others None).
 
     A declared message (:class:`~actuator_selection.sizing.checks.Said`,
     :class:`~actuator_selection.sizing.checks.Variants`) is written by shape as
@@ -324,9 +326,10 @@ def message_words(
     columns = decided.columns
     statuses, first = columns.statuses[k], columns.first_missing[k]
     out = np.empty(cells, dtype=object)
+    asked = np.ones(cells, dtype=np.bool_) if only is None else only
     worded = np.zeros(cells, dtype=np.bool_)
     if isinstance(rule.message, Said | Variants):
-        worded = _WORDED[statuses] & (first < 0)  # as message_shapes
+        worded = _WORDED[statuses] & (first < 0) & asked  # as message_shapes
         if worded.any():
             if not operands:
                 operands.append(decided.operand_columns())
@@ -334,7 +337,7 @@ def message_words(
             cell = _Cells(operands[0], statuses, value, limit, worded, {}, given)
             for c, chosen in _said_leaves(rule.message, cell):
                 out[c.mask] = _texts(chosen, c, localize.phrases)
-    _written_apart(decided, k, ~worded, out, lambda message: dump_json(localize(message)))
+    _written_apart(decided, k, asked & ~worded, out, lambda message: dump_json(localize(message)))
     found: list[bytes] = out.tolist()
     return found
 
