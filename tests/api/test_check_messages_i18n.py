@@ -441,6 +441,18 @@ def test_the_german_templates_keep_the_fields_and_their_formats() -> None:
         assert "rpm" not in words, template
 
 
+def test_every_template_is_names_and_format_specs_only() -> None:
+    """A batch words a message field by field from its template (``batch_messages.
+    message_words``): each field a plain name with a format spec at most, no
+    conversion (``!r``) and no attribute or index, in English and in German."""
+    german = _german_catalog()
+    for template in CHECK_MESSAGES.values():
+        for text in (template, german[template]):
+            for _, name, _, conversion in string.Formatter().parse(text):
+                assert conversion is None, text
+                assert name is None or name.isidentifier(), text
+
+
 def test_german_numbers_use_a_decimal_comma_and_infinity_a_sign() -> None:
     q = _base_operands(radial_force_n=0.0, axial_force_n=0.0)
     static = BEARING_STATIC.check(q).message

@@ -419,11 +419,13 @@ def _text_parts(
 
 @functools.lru_cache(maxsize=1024)
 def _fields(template: str) -> list[tuple[str, str | None, str, str | None]]:
-    """``template``'s literal text and fields (``string.Formatter.parse``), kept."""
-    return [
-        (literal, name, spec or "", conversion)
-        for literal, name, spec, conversion in string.Formatter().parse(template)
-    ]
+    """``template``'s literal text and fields (``string.Formatter.parse``), kept. A check
+    message's field is a name with a format spec at most (``{value:.4g}``): a conversion
+    (``{value!r}``), which the fields here would not apply, is refused."""
+    fields = list(string.Formatter().parse(template))
+    if any(conversion for _, _, _, conversion in fields):
+        raise ValueError(f"{template!r}: a check message's field takes no conversion")
+    return [(literal, name, spec or "", conversion) for literal, name, spec, conversion in fields]
 
 
 def _field_items(column: npt.NDArray[Any], spec: str, phrases: Renderer) -> list[bytes]:
