@@ -170,8 +170,10 @@ class _Cells:
         given = computed is self.values or computed is self.limits
         if not given or not np.isfinite(found).all():
             return param_items(found)
-        written = self.given.apart()[0 if computed is self.values else 1]
-        shared: list[bytes] = written[self.mask].tolist()  # finite: the same text
+        which = 0 if computed is self.values else 1  # finite: the same text
+        if len(found) == len(column):  # every cell
+            return self.given.items()[which]
+        shared: list[bytes] = self.given.apart()[which][self.mask].tolist()
         return shared
 
     def codes(self, message: Said) -> list[bytes]:
