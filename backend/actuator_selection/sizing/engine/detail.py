@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -242,8 +242,9 @@ class DecidedCells:
         self._lists: list[Column] | None = None
 
     def operand_columns(self) -> Operands:
-        """Each of :class:`Operands`' fields as an array over the cells detailed."""
-        return Operands._make([self._cell_arrays(operand) for operand in self._source])
+        """Each of :class:`Operands`' fields as an array over the cells detailed, cut
+        from the block's arrays when first read (a rule's message reads a few of them)."""
+        return cast(Operands, _CutOperands(self._source, self._cell_arrays))
 
     def operands_of(self, cell: int) -> Operands:
         """What the rules computed from for ``cell``: needed only to word a check, so
@@ -374,3 +375,17 @@ def _cycle_torques(
         decel_torque_nm=decel,
         rms_torque_nm=rms,
     )
+
+
+class _CutOperands:
+    """:class:`Operands` over the cells detailed, read by name (as a rule's terms read
+    them): each field cut by ``cut`` from ``source``'s when first read, then kept."""
+
+    def __init__(self, source: Operands, cut: Callable[[Any], npt.NDArray[Any]]) -> None:
+        self._source, self._cut = source, cut
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):  # not an operand: no such attribute
+            raise AttributeError(name)
+        found = self.__dict__[name] = self._cut(getattr(self._source, name))
+        return found
