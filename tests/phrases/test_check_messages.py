@@ -18,18 +18,22 @@ from actuator_selection.phrases.check_messages import (
 from actuator_selection.phrases.messages import Text
 
 
-def test_params_travel_as_json_with_clauses_words_and_non_finite_numbers_spelled_out() -> None:
-    clause = phrase("thermal_peak.short", rms_torque_nm=math.inf)
-    message = phrase(
+def _of_every_kind() -> Phrase:
+    """A message whose params are numbers (NaN and −∞ among them), words, a count and a
+    clause (with +∞)."""
+    return phrase(
         "continuous_duty.approximate_pass",
         value=17.25,
         limit=float("nan"),
         mean_speed_rpm=-math.inf,
         what=Text("continuous stall torque T_0"),
         speed_rpm=3,
-        speed_what=clause,
+        speed_what=phrase("thermal_peak.short", rms_torque_nm=math.inf),
     )
-    params = jsonable_params(message)
+
+
+def test_params_travel_as_json_with_clauses_words_and_non_finite_numbers_spelled_out() -> None:
+    params = jsonable_params(_of_every_kind())
     assert params == {
         "value": 17.25,
         "limit": "nan",
@@ -82,19 +86,10 @@ def test_the_english_renderer_writes_a_phrase_as_its_own_text() -> None:
     as the :class:`Phrase` itself: numbers by their spec, words, a clause, a clause left
     out, lists and alternatives, counts and non-finite numbers; and its numbers over a
     column are its fields one by one."""
-    clause = phrase("thermal_peak.short", rms_torque_nm=math.inf)
     messages = [
         phrase("peak_torque.fail", value=95.48123, limit=151.0),
-        phrase(
-            "continuous_duty.approximate_pass",
-            value=17.25,
-            limit=float("nan"),
-            mean_speed_rpm=-math.inf,
-            what=Text("continuous stall torque T_0"),
-            speed_rpm=3,
-            speed_what=clause,
-        ),
-        phrase("fail_for_any_inertia", message=clause),
+        _of_every_kind(),
+        phrase("fail_for_any_inertia", message=phrase("thermal_peak.short", rms_torque_nm=1.5)),
         phrase("controller_voltage.at_speed", output="U_OUT", speed_rpm=12.0, at_max_speed=None),
         Phrase(
             "controllers_note.unconfirmed",
