@@ -16,7 +16,12 @@ from fastapi.testclient import TestClient
 from tests import worked_example
 from tests.oracle.flowchart import operands
 
-from actuator_selection.i18n.localize import catalog_path, check_templates, render_check
+from actuator_selection.i18n.localize import (
+    catalog_path,
+    check_templates,
+    localizer,
+    render_check,
+)
 from actuator_selection.phrases.check_messages import CHECK_MESSAGES, Phrase
 from actuator_selection.sizing.checks import ALL_RULES, BEARING_STATIC, RULES, Operands, Status
 from actuator_selection.sizing.checks.rule import _floor_message
@@ -451,6 +456,16 @@ def test_every_template_is_names_and_format_specs_only() -> None:
             for _, name, _, conversion in string.Formatter().parse(text):
                 assert conversion is None, text
                 assert name is None or name.isidentifier(), text
+
+
+@pytest.mark.parametrize("spec", [".4g", ".3g", "g", ".6g", ".0f", ""])
+def test_a_column_of_numbers_reads_as_its_numbers_one_by_one(spec: str) -> None:
+    """A batch writes a message's numbers a column at a time (``Renderer.numbers``):
+    each as the message writes it alone, in German and in English."""
+    values = [95.48123, -0.0, 1e-7, 123456.7, 2.5e17, -3.25, math.inf, -math.inf, math.nan]
+    for language in ("de", "en"):
+        phrases = localizer(language).phrases
+        assert phrases.numbers(values, spec) == [phrases.format_field(v, spec) for v in values]
 
 
 def test_german_numbers_use_a_decimal_comma_and_infinity_a_sign() -> None:

@@ -21,6 +21,7 @@ A message without a template (free text from a use case) keeps its English text;
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 import re
 from collections.abc import Iterable, Mapping, Sequence
@@ -474,10 +475,31 @@ def _spec_number(language: str) -> check_messages.NumberFormat:
         if language == DEFAULT_LANGUAGE:
             return english
         if not math.isfinite(value):
-            return "∞" if value > 0 else "−∞" if value < 0 else english
+            return _not_finite(value, english)
         return _decimal_in(english, language)
 
     return number
+
+
+def _spec_numbers(language: str) -> check_messages.NumberFormats:
+    """:func:`_spec_number` over many values with one spec (a batch's column): the same
+    texts, in one call for all of them."""
+
+    def numbers(values: list[float], spec: str) -> list[str]:
+        english = list(map(format, values, itertools.repeat(spec)))
+        if language == DEFAULT_LANGUAGE:
+            return english
+        return [
+            _decimal_in(text, language) if value - value == 0.0 else _not_finite(value, text)
+            for value, text in zip(values, english, strict=True)
+        ]  # value − value is NaN for ±∞ and NaN, 0 for every finite value
+
+    return numbers
+
+
+def _not_finite(value: float, english: str) -> str:
+    """±∞ as a sign and ∞ in every language; NaN as English writes it."""
+    return "∞" if value > 0 else "−∞" if value < 0 else english
 
 
 @functools.lru_cache(maxsize=1 << 16)
@@ -511,7 +533,9 @@ def render_check(message: str, language: str) -> str:
 def _check_renderer(language: str) -> check_messages.Renderer:
     """The check messages' renderer of ``language``, made once."""
     return check_messages.renderer(
-        translate=functools.partial(translate, language=language), number=_spec_number(language)
+        translate=functools.partial(translate, language=language),
+        number=_spec_number(language),
+        numbers=_spec_numbers(language),
     )
 
 

@@ -100,6 +100,9 @@ def phrase(code: str, **params: Any) -> Phrase:
 NumberFormat = Callable[[float, str], str]
 """A number as a language writes it, from the value and its format spec."""
 
+NumberFormats = Callable[[list[float], str], list[str]]
+"""A :data:`NumberFormat` over many values with one format spec, in one call."""
+
 
 class Renderer:
     """The check messages in one language: ``str.format`` whose fields are numbers, words
@@ -108,9 +111,15 @@ class Renderer:
     one message at once reads a code's :meth:`template` and writes each field by
     :meth:`format_field` (``services/presenters/batch_messages.py``)."""
 
-    def __init__(self, translate: Callable[[str], str], number: NumberFormat | None) -> None:
+    def __init__(
+        self,
+        translate: Callable[[str], str],
+        number: NumberFormat | None,
+        numbers: NumberFormats | None = None,
+    ) -> None:
         self._translate = translate
         self._number = number
+        self._numbers = numbers
 
     def __call__(self, message: str) -> str:
         return self.render(message) if isinstance(message, Phrase) else message
@@ -123,6 +132,8 @@ class Renderer:
         """Each of ``values`` (floats) as :meth:`format_field` writes it with ``spec``."""
         if self._number is None:
             return list(map(format, values, itertools.repeat(spec)))
+        if self._numbers is not None:
+            return self._numbers(values, spec)
         number = self._number
         return [number(v, spec) for v in values]
 
@@ -168,11 +179,17 @@ class _Field:
         return self._renderer.format_field(self._value, format_spec)
 
 
-def renderer(*, translate: Callable[[str], str], number: NumberFormat | None = None) -> Renderer:
+def renderer(
+    *,
+    translate: Callable[[str], str],
+    number: NumberFormat | None = None,
+    numbers: NumberFormats | None = None,
+) -> Renderer:
     """A message with its template and words passed through ``translate`` and its
-    numbers written by ``number`` (``format(value, spec)`` where None); a message that
-    is no :class:`Phrase` (a rule written elsewhere) stays as it is."""
-    return Renderer(translate, number)
+    numbers written by ``number`` (``format(value, spec)`` where None; ``numbers``, the
+    same over many values at once, where given); a message that is no :class:`Phrase`
+    (a rule written elsewhere) stays as it is."""
+    return Renderer(translate, number, numbers)
 
 
 class Wording:
