@@ -9,6 +9,9 @@ than a few normal selections take (SQLite and PostgreSQL).
 
 from __future__ import annotations
 
+import json
+import select
+import socket
 import statistics
 import threading
 import time
@@ -17,6 +20,7 @@ from typing import Any
 import httpx
 from tests.server.conftest import StartServer
 
+from actuator_selection.schemas.batch import MAX_BATCH_CASES
 from actuator_selection.schemas.quantities import MAX_QUANTITY_TEXT
 
 RATIO = 50
@@ -82,3 +86,67 @@ def test_adversarial_unit_text_leaves_health_answering(start_server: StartServer
     assert [status for status, _ in answers] == [422] * ATTACKS
     assert max(elapsed for _, elapsed in answers) <= budget, (answers, budget)
     assert max(health) <= budget, (health, budget)
+
+
+SEGMENTS = [
+    {"speed": 30, "duration_s": 0.2},
+    {"duration_s": 0.4},
+    {"speed": 0, "duration_s": 0.2},
+    {"duration_s": 0.3},
+] * 10
+"""A cycle of 40 segments: a batch of 20,000 such cases (21 MB, within the bulk limit)
+took seconds to validate."""
+
+
+def test_a_batch_being_validated_leaves_health_answering(start_server: StartServer) -> None:
+    """The per-case batch's cases are validated off the event loop: ``/health``, asked
+    once the batch's body is sent, is answered while the batch is still being validated
+    (its 422 not yet come). Validated on the event loop (as FastAPI does by itself), the
+    process answered the 422 first and ``/health`` only after it."""
+    server, _ = start_server()
+    case = {"load": {"torque_nm": 5, "inertia_kgm2": 1.3}, "cycle": {"segments": SEGMENTS}}
+    last = {**case, "load": {"torque_nm": -1, "inertia_kgm2": 1.3}}  # refused, at the end
+    cases = [case] * (MAX_BATCH_CASES - 1) + [last]
+    body = json.dumps({"cases": cases, "top": 1}, separators=(",", ":")).encode()
+    url = httpx.URL(server.url)
+    head = (
+        f"POST /api/v1/selections/batch HTTP/1.1\r\nHost: {url.host}:{url.port}\r\n"
+        f"Content-Type: application/json\r\nContent-Length: {len(body)}\r\n"
+        "Connection: close\r\n\r\n"
+    ).encode()
+    with socket.create_connection((url.host, url.port), timeout=TIMEOUT_S) as batch:
+        batch.sendall(head + body)
+        with server.client() as checker:
+            health = checker.get("/api/v1/health")
+        answered_first = select.select([batch], [], [], 0)[0] == []
+        answer = _read_all(batch)
+    assert health.status_code == 200, health.text
+    status_line, _, rest = answer.partition(b"\r\n")
+    assert status_line.split()[1] == b"422", answer[:2000]
+    assert ["body", "cases", len(cases) - 1, "load", "torque_nm"] in [
+        error["loc"] for error in json.loads(_body_of(rest))["detail"]
+    ]
+    assert answered_first, "/health was answered only after the batch's validation"
+
+
+def _read_all(sock: socket.socket) -> bytes:
+    """Everything the server sends until it closes the connection."""
+    pieces = []
+    while piece := sock.recv(1 << 16):
+        pieces.append(piece)
+    return b"".join(pieces)
+
+
+def _body_of(after_status: bytes) -> bytes:
+    """The body of an HTTP/1.1 answer (after its status line), chunked or not."""
+    headers, _, body = after_status.partition(b"\r\n\r\n")
+    if b"transfer-encoding: chunked" not in headers.lower():
+        return body
+    out: list[bytes] = []
+    while True:
+        size, _, body = body.partition(b"\r\n")
+        n = int(size, 16)
+        if not n:
+            return b"".join(out)
+        out.append(body[:n])
+        body = body[n + 2 :]
