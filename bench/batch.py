@@ -6,8 +6,9 @@ synthetic catalogue of 1,000 actuators, their ratio, and the end-to-end time of
 POST /api/v1/selections/batch for 10,000 cases without checks, with checks and with
 checks in words, sent to a real server process (``bench.http``'s): its CPU time as a
 ratio to the numpy reference's (``bench/reference.py``) timed in the same run, with the
-count of cases whose best three differ from it. Runs on a throw-away SQLite database
-seeded with the starter catalogue.
+count of cases whose best three differ from it; and how long ``/health`` waits while the
+same server validates the largest batch body (:func:`health_while_validating`). Runs on
+a throw-away SQLite database seeded with the starter catalogue.
 
 The synthetic actuators are made up (model names ``SYN-…``): plausible magnitudes
 only, so that the scaling with catalogue size can be measured. They are not data.
@@ -17,16 +18,22 @@ from __future__ import annotations
 
 import argparse
 import gc
+import json
 import math
 import random
+import statistics
 import tempfile
+import threading
 import time
 from collections.abc import Callable
 from pathlib import Path
 
+import httpx
+
 from actuator_selection.app import tune_gc
 from actuator_selection.catalogue.actuators import Actuator
 from actuator_selection.catalogue.zones import ContinuousDutyZone, ZonePoint
+from actuator_selection.schemas.batch import MAX_BATCH_CASES
 from actuator_selection.sizing.engine import evaluate_batch, rank_batch, select_batch
 from actuator_selection.sizing.selection import select
 from bench.http import _serve, batch_server_cpu
@@ -146,9 +153,66 @@ def http(url: str) -> None:
         batch_server_cpu(
             base, process.pid, snapshot_actuators(url), n=BATCH_CASES, rounds=HTTP_ROUNDS, top=TOP
         )
+        health_while_validating(base)
     finally:
         process.terminate()
         process.wait(10)
+
+
+SEGMENTS = [
+    {"speed": 30, "duration_s": 0.2},
+    {"duration_s": 0.4},
+    {"speed": 0, "duration_s": 0.2},
+    {"duration_s": 0.3},
+] * 10
+"""A cycle of 40 segments: a batch of 20,000 such cases is 21 MB, within the bulk limit."""
+
+
+def health_while_validating(base: str, rounds: int = HTTP_ROUNDS) -> None:
+    """``GET /health`` asked again and again (5 ms apart) while the server at ``base``
+    validates a batch of 20,000 cases of 40 segments, the last one refused (a 422: the
+    validation is all the request does): the slowest answer meanwhile and the median, in
+    each of ``rounds`` rounds. A process validating on its event loop answers nothing
+    else until it is done."""
+    case: dict[str, object] = {
+        "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
+        "cycle": {"segments": SEGMENTS},
+    }
+    refused = {**case, "load": {"torque_nm": -1, "inertia_kgm2": 1.3}}
+    cases = [case] * (MAX_BATCH_CASES - 1) + [refused]
+    body = json.dumps({"cases": cases, "top": 1}, separators=(",", ":")).encode()
+    print(
+        f"GET /api/v1/health while POST /api/v1/selections/batch is validated ({len(cases)} "
+        f"cases of {len(SEGMENTS)} segments, {len(body) / 1e6:.0f} MB, refused at its last "
+        f"case), {rounds} rounds:"
+    )
+    headers = {"content-type": "application/json"}
+    for _ in range(rounds):
+        waits: list[float] = []
+        done = threading.Event()
+        asker = threading.Thread(target=_ask_health, args=(base, waits, done))
+        asker.start()
+        with httpx.Client(base_url=base, timeout=600) as client:
+            started = time.perf_counter()
+            answer = client.post("/api/v1/selections/batch", content=body, headers=headers)
+            seconds = time.perf_counter() - started
+        done.set()
+        asker.join()
+        print(
+            f"  the batch {answer.status_code} in {seconds:5.2f} s; /health answered "
+            f"{len(waits)} times, the slowest in {max(waits) * 1e3:6.0f} ms "
+            f"(median {statistics.median(waits) * 1e3:4.1f} ms)"
+        )
+
+
+def _ask_health(base: str, waits: list[float], done: threading.Event) -> None:
+    """``GET /health`` until ``done``, each answer's time into ``waits`` [s]."""
+    with httpx.Client(base_url=base, timeout=600) as client:
+        while not done.is_set():
+            started = time.perf_counter()
+            client.get("/api/v1/health").raise_for_status()
+            waits.append(time.perf_counter() - started)
+            time.sleep(0.005)
 
 
 def main() -> None:
