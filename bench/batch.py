@@ -165,26 +165,33 @@ SEGMENTS = [
     {"speed": 0, "duration_s": 0.2},
     {"duration_s": 0.3},
 ] * 10
-"""A cycle of 40 segments: a batch of 20,000 such cases is 21 MB, within the bulk limit."""
+"""A cycle of 40 segments."""
 
 
-def health_while_validating(base: str, rounds: int = HTTP_ROUNDS) -> None:
-    """``GET /health`` asked again and again (5 ms apart) while the server at ``base``
-    validates a batch of 20,000 cases of 40 segments, the last one refused (a 422: the
-    validation is all the request does): the slowest answer meanwhile and the median, in
-    each of ``rounds`` rounds. A process validating on its event loop answers nothing
-    else until it is done."""
+def slow_to_validate() -> tuple[int, bytes]:
+    """A per-case batch that takes seconds to validate, within the limits: 20,000 cases
+    of 40 segments (21 MB against the bulk limit of 32 MiB), the last one refused (T_L
+    below 0), so that a server answers 422 when it has validated them all. The number of
+    cases and the body."""
     case: dict[str, object] = {
         "load": {"torque_nm": 5, "inertia_kgm2": 1.3},
         "cycle": {"segments": SEGMENTS},
     }
     refused = {**case, "load": {"torque_nm": -1, "inertia_kgm2": 1.3}}
     cases = [case] * (MAX_BATCH_CASES - 1) + [refused]
-    body = json.dumps({"cases": cases, "top": 1}, separators=(",", ":")).encode()
+    return len(cases), json.dumps({"cases": cases, "top": 1}, separators=(",", ":")).encode()
+
+
+def health_while_validating(base: str, rounds: int = HTTP_ROUNDS) -> None:
+    """``GET /health`` asked again and again (5 ms apart) while the server at ``base``
+    validates :func:`slow_to_validate`'s batch (a 422: the validation is all the request
+    does): the slowest answer meanwhile and the median, in each of ``rounds`` rounds. A
+    process validating on its event loop answers nothing else until it is done."""
+    n, body = slow_to_validate()
     print(
-        f"GET /api/v1/health while POST /api/v1/selections/batch is validated ({len(cases)} "
-        f"cases of {len(SEGMENTS)} segments, {len(body) / 1e6:.0f} MB, refused at its last "
-        f"case), {rounds} rounds:"
+        f"GET /api/v1/health while POST /api/v1/selections/batch is validated ({n} cases of "
+        f"{len(SEGMENTS)} segments, {len(body) / 1e6:.0f} MB, refused at its last case), "
+        f"{rounds} rounds:"
     )
     headers = {"content-type": "application/json"}
     for _ in range(rounds):

@@ -4,7 +4,8 @@ Unit text used to be matched by a pattern with nested quantifiers: ``"1 aaaa…a
 field held the event loop for seconds, doubling with each letter, and nothing else was
 answered, ``/health`` included. Here the longest such text goes to the server, again and
 again from one thread, while another asks ``/health``: both answer, each in no more time
-than a few normal selections take (SQLite and PostgreSQL).
+than a few normal selections take (SQLite and PostgreSQL). Likewise a batch body that
+takes seconds to validate leaves ``/health`` answering while it is validated.
 """
 
 from __future__ import annotations
@@ -18,9 +19,9 @@ import time
 from typing import Any
 
 import httpx
+from bench.batch import slow_to_validate
 from tests.server.conftest import StartServer
 
-from actuator_selection.schemas.batch import MAX_BATCH_CASES
 from actuator_selection.schemas.quantities import MAX_QUANTITY_TEXT
 
 RATIO = 50
@@ -88,26 +89,13 @@ def test_adversarial_unit_text_leaves_health_answering(start_server: StartServer
     assert max(health) <= budget, (health, budget)
 
 
-SEGMENTS = [
-    {"speed": 30, "duration_s": 0.2},
-    {"duration_s": 0.4},
-    {"speed": 0, "duration_s": 0.2},
-    {"duration_s": 0.3},
-] * 10
-"""A cycle of 40 segments: a batch of 20,000 such cases (21 MB, within the bulk limit)
-took seconds to validate."""
-
-
 def test_a_batch_being_validated_leaves_health_answering(start_server: StartServer) -> None:
     """The per-case batch's cases are validated off the event loop: ``/health``, asked
     once the batch's body is sent, is answered while the batch is still being validated
     (its 422 not yet come). Validated on the event loop (as FastAPI does by itself), the
     process answered the 422 first and ``/health`` only after it."""
     server, _ = start_server()
-    case = {"load": {"torque_nm": 5, "inertia_kgm2": 1.3}, "cycle": {"segments": SEGMENTS}}
-    last = {**case, "load": {"torque_nm": -1, "inertia_kgm2": 1.3}}  # refused, at the end
-    cases = [case] * (MAX_BATCH_CASES - 1) + [last]
-    body = json.dumps({"cases": cases, "top": 1}, separators=(",", ":")).encode()
+    n, body = slow_to_validate()  # seconds of validation, the last case refused
     url = httpx.URL(server.url)
     head = (
         f"POST /api/v1/selections/batch HTTP/1.1\r\nHost: {url.host}:{url.port}\r\n"
@@ -123,7 +111,7 @@ def test_a_batch_being_validated_leaves_health_answering(start_server: StartServ
     assert health.status_code == 200, health.text
     status_line, _, rest = answer.partition(b"\r\n")
     assert status_line.split()[1] == b"422", answer[:2000]
-    assert ["body", "cases", len(cases) - 1, "load", "torque_nm"] in [
+    assert ["body", "cases", n - 1, "load", "torque_nm"] in [
         error["loc"] for error in json.loads(_body_of(rest))["detail"]
     ]
     assert answered_first, "/health was answered only after the batch's validation"
