@@ -63,6 +63,27 @@ def test_require_api_key_closes_reads_and_selections(
     )
 
 
+def test_a_batch_is_refused_for_its_key_before_its_cases_are_validated(
+    sales_api_with: Callable[..., SalesApi],
+) -> None:
+    """The per-case batch's cases are validated off the event loop by a dependency of
+    its route (``api/batch.py``), after the key is checked, as FastAPI validates a body:
+    a refused case is the 422 with a key and a 401 without one."""
+    api = sales_api_with(require_api_key=True)
+    case = {
+        "load": {"speed_rpm": 40, "torque_nm": -5, "inertia_kgm2": 1.3},
+        "cycle": {"accel_s": 0.1, "constant_s": 0.1, "decel_s": 0.1, "pause_s": 1.0},
+    }
+    body = {"cases": [case]}
+    refused = api.client.post("/api/v1/selections/batch", json=body)
+    assert refused.status_code == 401, refused.text
+    invalid = api.post("/api/v1/selections/batch", role="sales", json=body)
+    assert invalid.status_code == 422, invalid.text
+    assert [e["loc"] for e in invalid.json()["detail"]] == [
+        ["body", "cases", 0, "load", "torque_nm"]
+    ]
+
+
 def test_every_bad_key_gets_the_same_401(sales_api_with: Callable[..., SalesApi]) -> None:
     """Unknown, revoked, malformed: one body, one challenge, even on open endpoints
     (with an allowance of wrong keys that the 24 requests stay within)."""
