@@ -177,7 +177,10 @@ def _batch(
         service = [[c["model"] for c in r["candidates"]] for r in answer["results"]]
     differ = disagreements(actuators, numpy_reference(actuators, apps, 3), service)
     ratio = elapsed / reference_s
-    verdict = f"; {targets.BATCH_COLUMNS.verdict(ratio)}" if columns and checks else ""
+    verdict = ""
+    if columns and checks:
+        judged = targets.BATCH_COLUMNS.judged(ratio, f"numpy {reference_s * 1e3:.0f} ms")
+        verdict = f"; {judged}"
     print(
         f"  POST {path}, {n} cases, checks {'yes' if checks else 'no '}  "
         f"{elapsed:6.2f} s  HTTP {response.status_code}  answer "
@@ -231,6 +234,7 @@ def batch_server_cpu(
     payload = [http_case(app) for app in apps]
     expected = numpy_reference(actuators, apps, top)
     ratios: dict[str, list[float]] = {}
+    references: dict[str, list[float]] = {}
     with httpx.Client(base_url=f"{base}/api/v1", timeout=600) as client:
         for _ in range(rounds):
             for name, options in variants:
@@ -249,6 +253,7 @@ def batch_server_cpu(
                 service = [[c["model"] for c in r["candidates"]] for r in results]
                 differ = disagreements(actuators, expected, service)
                 ratios.setdefault(name, []).append(cpu / reference)
+                references.setdefault(name, []).append(reference)
                 print(
                     f"  {name:<25} {len(response.content) / 1e6:5.1f} MB  {seconds:6.2f} s, "
                     f"server CPU {cpu:6.2f} s, reference CPU {reference * 1e3:5.0f} ms: "
@@ -260,8 +265,13 @@ def batch_server_cpu(
         print(
             f"  {name:<25} server CPU × the reference's: {min(measured):.1f}–"
             f"{max(measured):.1f} (median {median:.1f})"
-            + (f"; {target.verdict(median)}" if target else "")
+            + (f"; {target.judged(median, _numpy(references[name]))}" if target else "")
         )
+
+
+def _numpy(references: list[float]) -> str:
+    """The numpy reference's CPU times [s] as the results of ``make bench`` name them."""
+    return f"numpy {statistics.median(references) * 1e3:.0f} ms"
 
 
 def _cpu(run: Callable[[], object]) -> float:
@@ -390,7 +400,10 @@ def main() -> None:
                 ratios = [rate / h for rate, h in zip(rates, health, strict=True)]
                 cpu_ms = statistics.median(c for _, c, _, _ in measured)
                 failures = sum((f for _, _, f, _ in measured), Counter())
-                verdict = f"; {target.verdict(statistics.median(ratios))}" if target else ""
+                verdict = ""
+                if target:
+                    against = f"/health {statistics.median(health):.0f} req/s"
+                    verdict = f"; {target.judged(statistics.median(ratios), against)}"
                 # The CPU ratio leaves out the clients, which share the machine and spend
                 # more on a larger answer (its gzip and JSON).
                 print(

@@ -195,7 +195,11 @@ def large_catalogue(starter: CatalogueSnapshot, copies: int) -> None:
         f"{min(times) / min(reference):.1f}× the reference; answer (top {DEFAULT_TOP}) "
         f"{len(sized.answer) / 1e6:.2f} MB, {len(sized.answer_gzip) / 1e3:.0f} kB gzip; the "
         f"rest of the ranking stored {stored / 1e3:.0f} kB"
-        + (f"; {target.verdict(min(times) * 1e3)}" if target else "")
+        + (
+            f"; {target.judged(min(times) * 1e3, f'numpy {min(reference) * 1e3:.1f} ms')}"
+            if target
+            else ""
+        )
     )
 
 
