@@ -68,8 +68,11 @@ pytest: install
 	$(BIN)/python -m pytest -n auto
 
 ## Throughput of the selection engine, and the engineer's page's cold load to both
-## charts in headless Chromium (not part of the tests).
+## charts in headless Chromium (not part of the tests). Each bench adds its verdicts on
+## issue 32's targets to BENCH_RESULTS; the last command prints them as the issue's table.
+bench: export BENCH_RESULTS := $(abspath .bench-results.jsonl)
 bench: install
+	rm -f $(BENCH_RESULTS)
 	$(BIN)/python -m bench.selection
 	$(BIN)/python -m bench.fixed_cost
 	$(BIN)/python -m bench.instructions
@@ -80,6 +83,7 @@ bench: install
 	$(BIN)/python -m bench.http
 	$(BIN)/python -m bench.profile
 	$(BIN)/python -m bench.jobs
+	$(BIN)/python -m bench.targets $(BENCH_RESULTS)
 
 ## A longer fuzz run than the suite's (not part of `make test`): schemathesis gives every
 ## operation FUZZ_MAX_EXAMPLES requests and walks the OpenAPI links in stateful chains of
