@@ -43,7 +43,10 @@ class Target:
         set), with the ``reference`` it was measured against (``/health 148 req/s``)."""
         where = os.environ.get(RESULTS)
         if where:
-            name = next(n for n, t in declared().items() if t is self)
+            names = [n for n, t in declared().items() if t is self]
+            if not names:
+                raise ValueError(f"{self} is not one of issue 32's targets (bench/targets.py)")
+            (name,) = names
             line = {"target": name, "measured": measured, "reference": reference}
             with Path(where).open("a", encoding="utf-8") as out:
                 out.write(json.dumps(line) + "\n")

@@ -69,3 +69,12 @@ def test_a_measure_is_judged_without_a_results_file(
     monkeypatch.chdir(tmp_path)
     assert targets.SELECTION_6400.judged(5.3) == "target ≤ 20 ms: met"
     assert list(tmp_path.iterdir()) == []
+
+
+def test_only_a_declared_target_is_kept_for_the_summary(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv(targets.RESULTS, str(tmp_path / "results.jsonl"))
+    with pytest.raises(ValueError, match="not one of issue 32's targets"):
+        targets.Target(5, "×").judged(4.0)  # equal to BATCH_PER_CASE, not it
+    assert not (tmp_path / "results.jsonl").exists()
