@@ -26,7 +26,7 @@ from actuator_selection.services.presenters.batch import (
     coded_checks_json,
     worded_reasons,
 )
-from actuator_selection.services.presenters.batch_messages import param_items
+from actuator_selection.services.presenters.batch_messages import filled, param_items
 from actuator_selection.services.presenters.selection import dump_json
 from actuator_selection.sizing.application import Application
 from actuator_selection.sizing.checks import Rule, rules_for
@@ -143,3 +143,20 @@ def test_params_as_numbers_are_written_as_the_dicts_write_them() -> None:
         assert item == dump_json(params["value"])
         if math.isfinite(value):
             assert item == orjson.dumps(value)
+
+
+def test_cells_are_their_parts_and_members_joined() -> None:
+    """Each cell's text is the parts with each None taken by the next member's item of
+    that cell, literal text as it is (a ``%`` too); members that do not fit are refused."""
+    parts = [b'{"a":', None, b',"b":"100%"', b',"c":', None, None, b"}"]
+    members = [[b"1", b"2", b"3"], [b"x", b"", b"z"], [b"!", b"?", b"."]]
+    assert filled(parts, members, 3) == [
+        b'{"a":1,"b":"100%","c":x!}',
+        b'{"a":2,"b":"100%","c":?}',
+        b'{"a":3,"b":"100%","c":z.}',
+    ]
+    assert filled([b"[]"], [], 2) == [b"[]", b"[]"]
+    with pytest.raises(ValueError, match="more members"):
+        filled([None], [[b"1"], [b"2"]], 1)
+    with pytest.raises(ValueError, match="each of the 3 cells"):
+        filled([None, None], [[b"1", b"2", b"3"], [b"1", b"2"]], 3)

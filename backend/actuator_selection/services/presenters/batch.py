@@ -23,7 +23,6 @@ from actuator_selection.services.presenters.batch_messages import (
     filled,
     message_shapes,
     message_words,
-    template_of,
     text_json,
 )
 from actuator_selection.services.presenters.selection import dump_json, json_items, resolved_load
@@ -213,7 +212,7 @@ def coded_checks_json(decided: DecidedCells, words: Wording | None = None) -> Ce
             parts += its_parts
             members += its_members
     parts.append(b"]")
-    return CellChecks(filled(template_of(*parts), members, cells), messages)
+    return CellChecks(filled(parts, members, cells), messages)
 
 
 class CellChecks(NamedTuple):
@@ -321,7 +320,7 @@ def _messages(shapes: list[Shape], cells: int) -> list[bytes]:
     JSON, each shape's cells filled from its template."""
     out = np.empty(cells, dtype=object)
     for where, parts, members in shapes:
-        out[where] = filled(template_of(*parts), members, len(out[where]))
+        out[where] = filled(parts, members, len(out[where]))
     found: list[bytes] = out.tolist()
     return found
 

@@ -12,8 +12,9 @@ once per process; a param that says the check's value or limit is its JSON (:cla
 from __future__ import annotations
 
 import functools
+import itertools
 import string
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -320,8 +321,8 @@ def message_words(
     :func:`message_shapes` writes its code and params, and within a shape by status (the
     status names the code): the code's template in the language, its clauses' templates
     put in place, its words and constants written once, and each number written over the
-    cells by the template's format spec (:meth:`Renderer.numbers`), each cell's text one
-    bytes template filled. Every other message (no data, a failure at the least value
+    cells by the template's format spec (:meth:`Renderer.numbers`), each cell's text its
+    parts joined (:func:`filled`). Every other message (no data, a failure at the least value
     for any J_A, a message that is a plain function) is worded cell by cell, as a
     candidate's check is."""
     rule = decided.rules[k]
@@ -387,7 +388,7 @@ def _texts(chosen: _Chosen, cells: _Cells, phrases: Renderer) -> list[bytes]:
         _text_parts(chosen, place, phrases, parts, terms)
         parts.append(b'"')
         members = [_field_items(its.term(term), spec, phrases) for term, spec in terms]
-        out[where] = filled(template_of(*parts), members, int(np.count_nonzero(where)))
+        out[where] = filled(parts, members, int(np.count_nonzero(where)))
     found: list[bytes] = out.tolist()
     return found
 
@@ -444,15 +445,31 @@ def _field_items(column: npt.NDArray[Any], spec: str, phrases: Renderer) -> list
     return joined.encode().split(b"\x00") if texts else []
 
 
-@functools.lru_cache(maxsize=1024)
-def template_of(*parts: bytes | None) -> bytes:
-    """A bytes template of ``parts``: each None a member (``%b``), the rest as they are
-    (kept: a rule's shapes recur slice after slice)."""
-    return b"".join(b"%b" if p is None else p.replace(b"%", b"%%") for p in parts)
-
-
-def filled(template: bytes, members: list[list[bytes]], cells: int) -> list[bytes]:
-    """``template`` filled with each cell's ``members``."""
-    if not members:
-        return [template % ()] * cells
-    return list(map(template.__mod__, zip(*members, strict=True)))
+def filled(
+    parts: Sequence[bytes | None], members: Sequence[list[bytes]], cells: int
+) -> list[bytes]:
+    """Each of ``cells`` cells' text: ``parts`` joined, each None taken by the next of
+    ``members`` (each cell's item). One ``b"".join`` a cell, the literal text between two
+    members joined once beforehand. A bytes template filled by ``%`` parsed itself again
+    for each cell: the checks of 2,000 cases took 13 % more instructions so."""
+    columns: list[Iterable[bytes]] = []
+    literal = b""
+    taken = iter(members)
+    for part in parts:
+        if part is None:
+            if literal:
+                columns.append(itertools.repeat(literal))
+                literal = b""
+            columns.append(next(taken))
+        else:
+            literal += part
+    if next(taken, None) is not None:
+        raise ValueError("more members than the parts take")
+    if any(len(m) != cells for m in members):
+        raise ValueError(f"each member takes an item of each of the {cells} cells")
+    if not columns:
+        return [literal] * cells
+    if literal:
+        columns.append(itertools.repeat(literal))
+    # the members' lengths checked above: the literals repeat without end
+    return list(map(b"".join, zip(*columns, strict=False)))
