@@ -11,6 +11,10 @@ both charts say ``data-state="ready"``. Times are the page's own clock
   so the form can be used;
 - *charts drawn*: both charts of the best candidate are drawn.
 
+Between the two, the user's clicks (form ready to submit) and the server's answers as the
+page had them (its Resource Timing: the selection, then the best candidate's detail and
+figures) are printed too, so that the page's own share of the way is seen (``Answers``).
+
 The user of this run clicks as soon as the form can be used, which leaves the page no
 time of its own. A second cold load waits ``PAUSE_MS`` with the form untouched (a person
 reading it; the page warms plotly.js up meanwhile, ``warmCharts`` in app.js) and times
@@ -59,6 +63,7 @@ from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, cast
+from urllib.parse import urlsplit
 
 import httpx
 from playwright.sync_api import Browser, BrowserContext, Page, sync_playwright
@@ -137,6 +142,43 @@ class Run:
     """The same tasks' wall-clock time (the CPU time and the waits of a busy machine)."""
     paused_cpu_after_submit_ms: float
     """The second load's main-thread CPU time from the submit to both charts drawn."""
+    submitted_ms: float
+    """The first load's submit (the user's two clicks come between form ready and it)."""
+    paused_clicks_ms: float
+    """The second load's two clicks, from the end of its pause to its submit: what the
+    clicks take where the page has had its time (its start and warm-up done)."""
+    answers: Answers
+    """The first load's waits for the server after the submit (:class:`Answers`)."""
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class Answers:
+    """What a load waited for the server after its submit, as the page's Resource Timing
+    has it (``performance.getEntriesByType("resource")``, in ms since navigation start):
+    the selection (``POST /api/v1/selections``), from its request to its last byte; then
+    the best candidate's detail and figures, asked once it answered, from the first's
+    request to the last one's last byte. Neither is the server's time alone: an answer
+    the page's busy main thread reads late counts as late."""
+
+    selection_ms: float
+    detail_ms: float
+
+    @classmethod
+    def of(cls, entries: list[dict[str, Any]], submitted_ms: float) -> Answers:
+        """From the page's API resource entries (``name``, ``start``, ``end``)."""
+        after = [e for e in entries if e["start"] >= submitted_ms]
+        selection = next(
+            (e for e in after if urlsplit(e["name"]).path == "/api/v1/selections"), None
+        )
+        if selection is None:
+            return cls(selection_ms=math.nan, detail_ms=math.nan)
+        later = [e for e in after if e["start"] >= selection["end"]]
+        return cls(
+            selection_ms=selection["end"] - selection["start"],
+            detail_ms=max(e["end"] for e in later) - min(e["start"] for e in later)
+            if later
+            else math.nan,
+        )
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
@@ -330,6 +372,10 @@ def charts_load(
             page.evaluate(
                 """() => ({form: window.__formReadyAt, submitted: window.__submittedAt,
                            charts: window.__chartsDrawnAt,
+                           api: performance.getEntriesByType("resource")
+                                .filter((e) => new URL(e.name).pathname.startsWith("/api/"))
+                                .map((e) => ({name: e.name, start: e.startTime,
+                                              end: e.responseEnd})),
                            warm: [document.documentElement.dataset.chartsWarm ?? "none",
                                  document.documentElement.dataset.chartsWarmSubmit]
                                 .filter(Boolean).join(", at submit ")})"""
@@ -356,6 +402,9 @@ def measure(browser: Browser, base_url: str, slowdown: float = 1) -> Run:
         charts_cpu_ms=eager["main"].cpu_ms,
         charts_task_ms=eager["main"].task_ms,
         paused_cpu_after_submit_ms=paused["main"].cpu_after_submit_ms,
+        submitted_ms=float(eager["submitted"]),
+        paused_clicks_ms=float(paused["submitted"]) - float(paused["form"]) - PAUSE_MS,
+        answers=Answers.of(eager["api"], float(eager["submitted"])),
     )
 
 
@@ -474,6 +523,16 @@ def _report(
         f"  main thread to both charts: CPU {statistics.median(cpu):6.1f} ms "
         f"({_spread(cpu, '.0f')}), its tasks' wall clock "
         f"{statistics.median(r.charts_task_ms for r in runs):6.1f} ms"
+    )
+    clicks = statistics.median(r.submitted_ms - r.form_ready_ms for r in runs)
+    selection = statistics.median(r.answers.selection_ms for r in runs)
+    detail = statistics.median(r.answers.detail_ms for r in runs)
+    idle_clicks = statistics.median(r.paused_clicks_ms for r in runs)
+    print(
+        f"  of the way to both charts: the user's clicks (form ready to submit) {clicks:.0f} "
+        f"ms, {idle_clicks:.0f} ms after the pause below; then the server's answers as "
+        f"the page had them: the selection {selection:.0f} ms, the best candidate's detail "
+        f"and figures {detail:.0f} ms"
     )
     paused = statistics.median(r.paused_submit_to_charts_ms for r in runs)
     print(
